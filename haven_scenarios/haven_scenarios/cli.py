@@ -1,0 +1,94 @@
+"""The `haven` command: starts HAVEN's nodes as plain Python processes and supervises them.
+
+    haven sim  [--world W] [--rtf X] [--duration S]   simulator + velocity mux until Ctrl-C
+    haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
+
+Discovery stays on this machine unless --network is given (study data stays local).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Sequence
+
+from haven_scenarios.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
+from haven_sim.world import WorldError, load_world, resolve_world_path
+
+
+def _positive(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"must be positive, got {text}")
+    return value
+
+
+def _common(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--world", default="small_test", help="packaged world name or world YAML path (default: small_test)")
+    p.add_argument("--rtf", type=_positive, default=1.0, help="real-time factor of the simulation (default: 1)")
+    p.add_argument("--domain-id", type=int, default=None, help="ROS_DOMAIN_ID for the nodes (default: inherited)")
+    p.add_argument("--network", action="store_true", help="allow DDS discovery beyond localhost")
+    p.add_argument("--params-file", default=None, help="ROS parameter YAML passed to every node")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
+    sub = parser.add_subparsers(dest="command", required=True)
+    sim = sub.add_parser("sim", help="run the simulator and the velocity mux until Ctrl-C")
+    _common(sim)
+    sim.add_argument("--duration", type=_positive, default=None, help="stop after this many wall seconds")
+    demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
+    _common(demo)
+    demo.set_defaults(rtf=4.0)
+    demo.add_argument("--laps", type=int, default=1)
+    return parser
+
+
+def _suite(args: argparse.Namespace) -> list[ProcessSpec]:
+    world = str(resolve_world_path(args.world))
+    extra = ["--params-file", args.params_file] if args.params_file else []
+    return [
+        ProcessSpec("sim", node_argv("haven_sim.nodes.sim_node", {"world": world, "real_time_factor": args.rtf}, extra)),
+        ProcessSpec("mux", node_argv("haven_sim.nodes.mux_node", {"use_sim_time": True}, extra)),
+    ]
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        load_world(resolve_world_path(args.world))  # fail before starting anything
+    except WorldError as e:
+        print(f"haven: error: {e}", file=sys.stderr)
+        return 2
+    specs = _suite(args)
+    until = None
+    timeout = getattr(args, "duration", None)
+    if args.command == "demo":
+        specs.append(ProcessSpec("demo_driver", node_argv("haven_scenarios.nodes.demo_driver", {"use_sim_time": True, "laps": args.laps})))
+        until = "demo_driver"
+        timeout = 300.0
+    env = ros_environment(network=args.network, domain_id=args.domain_id)
+    with Supervisor(env) as sup:
+        sup.install_signal_handlers()
+        for spec in specs:
+            sup.start(spec)
+        print(f"haven: started {', '.join(f'{n} (pid {p})' for n, p in sup.pids().items())}; Ctrl-C stops all", flush=True)
+        exited = sup.wait(timeout_s=timeout, until_exit_of=until)
+        codes = sup.stop()
+    if exited is not None and not (exited.name == until and exited.code == 0):
+        print(f"haven: {exited.name} exited with code {exited.code}; stopped the others", file=sys.stderr)
+        return exited.code or 1
+    if until is not None and exited is None:
+        print(f"haven: {until} did not finish; stopped everything", file=sys.stderr)
+        return 1
+    bad = {n: c for n, c in codes.items() if c not in (0, -2)}
+    if bad and until is None:
+        print(f"haven: unclean exit codes: {bad}", file=sys.stderr)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,80 @@
+"""Drives the robot around a square through /cmd_vel_teleop and prints a summary when done.
+
+Shows the pattern for teleoperating HAVEN's robot from any node: publish geometry_msgs/Twist on
+/cmd_vel_teleop (it overrides navigation in the velocity mux), read /odom.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+
+from geometry_msgs.msg import Twist
+from nav_msgs.msg import Odometry
+from rclpy.node import Node
+from sensor_msgs.msg import BatteryState
+from std_msgs.msg import String
+
+from haven_scenarios.square_drive import SquareDriver
+from haven_sim.geometry import Pose2D
+from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import qos
+from haven_sim.nodes.runner import run_node
+
+
+class DemoDriver(Node):
+    def __init__(self) -> None:
+        super().__init__("demo_driver")
+        side = self.declare_parameter("side_m", 1.5).value
+        laps = self.declare_parameter("laps", 1).value
+        self.driver = SquareDriver(side_m=side, laps=laps)
+        self.pose: Pose2D | None = None
+        self.first_odom_t: float | None = None
+        self.odom_count = 0
+        self.battery = None
+        self.contacts = 0
+        self.pub = self.create_publisher(Twist, "cmd_vel_teleop", qos.RELIABLE)
+        self.create_subscription(Odometry, "odom", self._on_odom, qos.RELIABLE)
+        self.create_subscription(BatteryState, "battery_state", self._on_battery, qos.RELIABLE)
+        self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
+        self.create_timer(0.05, self._tick)
+
+    def _on_odom(self, msg: Odometry) -> None:
+        self.pose = conv.pose_from_msg(msg.pose.pose)
+        t = conv.time_from_msg(msg.header.stamp)
+        if self.first_odom_t is None:
+            self.first_odom_t = t
+        self.last_odom_t = t
+        self.odom_count += 1
+
+    def _on_battery(self, msg: BatteryState) -> None:
+        self.battery = msg.percentage
+
+    def _on_event(self, msg: String) -> None:
+        if conv.event_from_msg(msg).get("type") == "contact_begin":
+            self.contacts += 1
+
+    def _tick(self) -> None:
+        if self.pose is None:
+            return
+        self.pub.publish(conv.twist_msg(self.driver.command(self.pose)))
+        if self.driver.done:
+            span = (self.last_odom_t - self.first_odom_t) if self.first_odom_t is not None else 0.0
+            summary = {
+                "legs": self.driver.legs_done,
+                "distance_m": round(self.driver.distance_m, 3),
+                "final_pose": [round(v, 3) for v in self.pose],
+                "battery": None if self.battery is None else round(self.battery, 4),
+                "contacts": self.contacts,
+                "odom_rate_hz_sim": round((self.odom_count - 1) / span, 2) if span > 0 else None,
+            }
+            print(json.dumps(summary), flush=True)
+            raise SystemExit(0)
+
+
+def main(args: list[str] | None = None) -> None:
+    sys.exit(run_node(DemoDriver, args))
+
+
+if __name__ == "__main__":
+    main()

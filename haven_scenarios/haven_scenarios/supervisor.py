@@ -1,0 +1,121 @@
+"""Starts node processes from plain Python (no launch files), watches them, and stops them all.
+
+Each child runs in its own session, so a terminal's Ctrl-C reaches only the supervisor, which then
+stops the children in order: SIGINT (the nodes' clean shutdown), then SIGTERM, then SIGKILL.
+When one child exits on its own, the rest are stopped too: a study never runs half a suite.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from importlib import resources
+from types import FrameType, TracebackType
+
+
+@dataclass(frozen=True)
+class ProcessSpec:
+    name: str
+    argv: Sequence[str]
+    env: Mapping[str, str] = field(default_factory=dict)
+
+
+def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args: Sequence[str] = ()) -> list[str]:
+    """Command line that runs a node module with this interpreter and `-p name:=value` parameters."""
+    argv = [sys.executable, "-m", module, "--ros-args"]
+    for k, v in (params or {}).items():
+        if isinstance(v, bool):
+            v = "true" if v else "false"
+        argv += ["-p", f"{k}:={v}"]
+    return argv + list(ros_args)
+
+
+def ros_environment(base: Mapping[str, str] | None = None, network: bool = False, domain_id: int | None = None) -> dict[str, str]:
+    """The environment for node processes: discovery on localhost unless `network`, and the
+    quick-discovery Fast DDS profile unless the user chose one."""
+    env = dict(os.environ if base is None else base)
+    env["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "SUBNET" if network else env.get("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
+    if domain_id is not None:
+        env["ROS_DOMAIN_ID"] = str(domain_id)
+    profile = resources.files("haven_sim") / "config" / "fastdds.xml"
+    env.setdefault("FASTRTPS_DEFAULT_PROFILES_FILE", str(profile))
+    env.setdefault("PYTHONUNBUFFERED", "1")
+    return env
+
+
+@dataclass
+class Exited:
+    name: str
+    code: int
+
+
+class Supervisor:
+    def __init__(self, env: Mapping[str, str] | None = None, grace_s: float = 5.0) -> None:
+        self.env = dict(env) if env is not None else ros_environment()
+        self.grace_s = grace_s
+        self.procs: dict[str, subprocess.Popen[bytes]] = {}
+        self._stop_requested = False
+
+    def __enter__(self) -> Supervisor:
+        return self
+
+    def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
+        self.stop()
+
+    def start(self, spec: ProcessSpec) -> subprocess.Popen[bytes]:
+        env = {**self.env, **spec.env}
+        proc = subprocess.Popen(list(spec.argv), env=env, start_new_session=True)
+        self.procs[spec.name] = proc
+        return proc
+
+    def pids(self) -> dict[str, int]:
+        return {n: p.pid for n, p in self.procs.items()}
+
+    def poll(self) -> Exited | None:
+        """The first child found to have exited, if any."""
+        for name, proc in self.procs.items():
+            code = proc.poll()
+            if code is not None:
+                return Exited(name, code)
+        return None
+
+    def request_stop(self, signum: int | None = None, frame: FrameType | None = None) -> None:
+        self._stop_requested = True
+
+    def install_signal_handlers(self) -> None:
+        signal.signal(signal.SIGINT, self.request_stop)
+        signal.signal(signal.SIGTERM, self.request_stop)
+
+    def wait(self, timeout_s: float | None = None, until_exit_of: str | None = None) -> Exited | None:
+        """Block until a stop is requested, the timeout passes, or a child exits (only
+        `until_exit_of`, if given, when it exits cleanly); returns the child that ended it."""
+        deadline = None if timeout_s is None else time.monotonic() + timeout_s
+        while not self._stop_requested:
+            exited = self.poll()
+            if exited is not None and (until_exit_of is None or exited.name == until_exit_of or exited.code != 0):
+                return exited
+            if deadline is not None and time.monotonic() >= deadline:
+                return None
+            time.sleep(0.05)
+        return None
+
+    def stop(self) -> dict[str, int]:
+        """Stop every child that still runs; returns each child's exit code."""
+        for sig, wait_s in ((signal.SIGINT, self.grace_s), (signal.SIGTERM, 2.0), (signal.SIGKILL, 2.0)):
+            alive = [p for p in self.procs.values() if p.poll() is None]
+            if not alive:
+                break
+            for p in alive:
+                try:
+                    os.killpg(p.pid, sig)
+                except ProcessLookupError:
+                    pass
+            deadline = time.monotonic() + wait_s
+            while time.monotonic() < deadline and any(p.poll() is None for p in alive):
+                time.sleep(0.02)
+        return {n: p.wait() for n, p in self.procs.items()}

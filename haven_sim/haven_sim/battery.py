@@ -1,0 +1,98 @@
+"""Battery as range: a full charge is `capacity_m` metres of travel (HAVEN's 100 units ~ 100 m).
+
+It drains per metre travelled, optionally per radian turned and per second of idling, and charges
+at `charge_rate_per_s` (fraction of full per second) while the robot sits on the charging base.
+The level never goes below 0, and at 0 the robot cannot drive. Voltage and charge are derived from
+the level so the published sensor_msgs/BatteryState is self-consistent.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+
+@dataclass(frozen=True)
+class BatteryParams:
+    capacity_m: float = 100.0
+    drain_per_rad: float = 0.0  # fraction of full per radian turned
+    idle_drain_per_s: float = 0.0  # fraction of full per second, always
+    charge_rate_per_s: float = 0.05  # fraction of full per second on the base (20 s from empty)
+    base_radius_m: float = 0.5
+    charge_max_speed_mps: float = 0.02  # "nearly stopped"
+    initial_level: float = 1.0
+    # Kobuki 4S Li-ion pack: 2.2 Ah, 16.8 V full, 13.2 V empty (kobuki_node's thresholds).
+    design_capacity_ah: float = 2.2
+    voltage_full_v: float = 16.8
+    voltage_empty_v: float = 13.2
+
+    def validate(self) -> None:
+        if self.capacity_m <= 0:
+            raise ValueError(f"battery capacity_m must be positive, got {self.capacity_m}")
+        if not 0.0 <= self.initial_level <= 1.0:
+            raise ValueError(f"battery initial_level must be within 0..1, got {self.initial_level}")
+        for name in ("drain_per_rad", "idle_drain_per_s", "charge_rate_per_s"):
+            if getattr(self, name) < 0:
+                raise ValueError(f"battery {name} must not be negative, got {getattr(self, name)}")
+
+
+class PowerStatus(Enum):
+    CHARGING = "charging"
+    DISCHARGING = "discharging"
+    FULL = "full"
+
+
+@dataclass(frozen=True)
+class BatteryReading:
+    level: float  # 0..1
+    status: PowerStatus
+    voltage_v: float
+    charge_ah: float
+    capacity_ah: float
+    range_m: float  # metres of travel left
+
+
+class Battery:
+    def __init__(self, params: BatteryParams | None = None) -> None:
+        self.params = params or BatteryParams()
+        self.params.validate()
+        self.level = self.params.initial_level
+        self.charging = False
+
+    def reset(self) -> None:
+        self.level = self.params.initial_level
+        self.charging = False
+
+    @property
+    def empty(self) -> bool:
+        return self.level <= 0.0
+
+    @property
+    def range_m(self) -> float:
+        return self.level * self.params.capacity_m
+
+    def update(self, dt: float, distance_m: float, rotation_rad: float, speed_mps: float, distance_to_base_m: float) -> None:
+        """Account for one step: what the robot did during dt and where it is now."""
+        p = self.params
+        on_base = distance_to_base_m <= p.base_radius_m and speed_mps <= p.charge_max_speed_mps
+        drain = distance_m / p.capacity_m + abs(rotation_rad) * p.drain_per_rad + dt * p.idle_drain_per_s
+        self.charging = on_base and self.level < 1.0
+        gain = p.charge_rate_per_s * dt if on_base else 0.0
+        self.level = min(1.0, max(0.0, self.level - drain + gain))
+
+    def reading(self) -> BatteryReading:
+        p = self.params
+        if self.level >= 1.0:
+            status = PowerStatus.FULL
+        elif self.charging:
+            status = PowerStatus.CHARGING
+        else:
+            status = PowerStatus.DISCHARGING
+        return BatteryReading(
+            level=self.level,
+            status=status,
+            voltage_v=p.voltage_empty_v + self.level * (p.voltage_full_v - p.voltage_empty_v),
+            charge_ah=self.level * p.design_capacity_ah,
+            capacity_ah=p.design_capacity_ah,
+            range_m=self.range_m,
+        )

@@ -1,0 +1,110 @@
+"""Plain 2-D geometry types shared by the core modules (REP-103: x forward, y left, yaw CCW)."""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+import numpy.typing as npt
+
+Point = tuple[float, float]
+FloatArray = npt.NDArray[np.float64]
+
+
+class Pose2D(NamedTuple):
+    """A pose in the plane (a NamedTuple: cheap to create in the physics loop)."""
+
+    x: float
+    y: float
+    yaw: float = 0.0
+
+    def distance_to(self, other: Pose2D | Point) -> float:
+        return math.hypot(other[0] - self.x, other[1] - self.y)
+
+
+class Twist2D(NamedTuple):
+    """Body-frame velocity: linear x (forward), linear y (left, humans only), angular z."""
+
+    vx: float = 0.0
+    vy: float = 0.0
+    wz: float = 0.0
+
+    def is_finite(self) -> bool:
+        return math.isfinite(self.vx) and math.isfinite(self.vy) and math.isfinite(self.wz)
+
+
+ZERO_TWIST = Twist2D()
+
+
+def wrap_angle(a: float) -> float:
+    """Angle wrapped to [-pi, pi)."""
+    return (a + math.pi) % (2.0 * math.pi) - math.pi
+
+
+def yaw_to_quaternion(yaw: float) -> tuple[float, float, float, float]:
+    """(x, y, z, w) of a rotation about z."""
+    return (0.0, 0.0, math.sin(yaw / 2.0), math.cos(yaw / 2.0))
+
+
+def quaternion_to_yaw(x: float, y: float, z: float, w: float) -> float:
+    return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
+
+
+def polygon_edges(polygon: list[Point]) -> FloatArray:
+    """Closed polygon -> (N, 4) array of edges x0, y0, x1, y1."""
+    pts = np.asarray(polygon, dtype=float)
+    nxt = np.roll(pts, -1, axis=0)
+    return np.hstack([pts, nxt])
+
+
+def points_in_polygon(xs: FloatArray, ys: FloatArray, polygon: list[Point]) -> npt.NDArray[np.bool_]:
+    """Even-odd rule, vectorised over the query points."""
+    inside = np.zeros(xs.shape, dtype=bool)
+    n = len(polygon)
+    for i in range(n):
+        x0, y0 = polygon[i]
+        x1, y1 = polygon[(i + 1) % n]
+        if y0 == y1:
+            continue
+        crosses = (ys < y0) != (ys < y1)
+        x_at = x0 + (ys - y0) * (x1 - x0) / (y1 - y0)
+        inside ^= crosses & (xs < x_at)
+    return inside
+
+
+def segment_to_polygon(a: Point, b: Point, thickness: float) -> list[Point]:
+    """A wall given as a centre line with thickness, as a rectangle (ends extended by half the thickness)."""
+    ax, ay = a
+    bx, by = b
+    length = math.hypot(bx - ax, by - ay)
+    ux, uy = (bx - ax) / length, (by - ay) / length
+    h = thickness / 2.0
+    nx, ny = -uy * h, ux * h
+    ax, ay = ax - ux * h, ay - uy * h
+    bx, by = bx + ux * h, by + uy * h
+    return [(ax + nx, ay + ny), (ax - nx, ay - ny), (bx - nx, by - ny), (bx + nx, by + ny)]
+
+
+def polygon_area(polygon: list[Point]) -> float:
+    """Signed area (positive counter-clockwise)."""
+    s = 0.0
+    n = len(polygon)
+    for i in range(n):
+        x0, y0 = polygon[i]
+        x1, y1 = polygon[(i + 1) % n]
+        s += x0 * y1 - x1 * y0
+    return s / 2.0
+
+
+def distance_point_to_edges(x: float, y: float, edges: FloatArray) -> float:
+    """Smallest distance from a point to any of the edges (N, 4)."""
+    if len(edges) == 0:
+        return math.inf
+    a = edges[:, 0:2]
+    d = edges[:, 2:4] - a
+    p = np.array([x, y])
+    ln2 = np.einsum("ij,ij->i", d, d)
+    t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.where(ln2 > 0, ln2, 1.0), 0.0, 1.0)
+    closest = a + d * t[:, None]
+    return float(np.min(np.hypot(closest[:, 0] - x, closest[:, 1] - y)))

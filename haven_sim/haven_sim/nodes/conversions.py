@@ -1,0 +1,168 @@
+"""Core types <-> ROS messages. The only place in haven_sim that builds or reads messages."""
+
+from __future__ import annotations
+
+import json
+import math
+from typing import Any
+
+import numpy as np
+from builtin_interfaces.msg import Time
+from geometry_msgs.msg import Pose, PoseArray, Quaternion, Twist
+from nav_msgs.msg import OccupancyGrid, Odometry
+from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import BatteryState, LaserScan
+from std_msgs.msg import String
+
+from haven_sim.battery import BatteryReading, PowerStatus
+from haven_sim.geometry import FloatArray, Pose2D, Twist2D, quaternion_to_yaw, yaw_to_quaternion
+from haven_sim.occupancy import OccupancyGridData
+from haven_sim.scan import ScanParams
+
+
+def time_msg(t: float) -> Time:
+    sec = int(math.floor(t))
+    return Time(sec=sec, nanosec=min(int(round((t - sec) * 1e9)), 999_999_999))
+
+
+def time_from_msg(msg: Time) -> float:
+    return msg.sec + msg.nanosec * 1e-9
+
+
+def clock_msg(t: float) -> Clock:
+    return Clock(clock=time_msg(t))
+
+
+def quaternion_msg(yaw: float) -> Quaternion:
+    x, y, z, w = yaw_to_quaternion(yaw)
+    return Quaternion(x=x, y=y, z=z, w=w)
+
+
+def pose_msg(p: Pose2D) -> Pose:
+    msg = Pose()
+    msg.position.x, msg.position.y = p.x, p.y
+    msg.orientation = quaternion_msg(p.yaw)
+    return msg
+
+
+def pose_from_msg(msg: Pose) -> Pose2D:
+    q = msg.orientation
+    return Pose2D(msg.position.x, msg.position.y, quaternion_to_yaw(q.x, q.y, q.z, q.w))
+
+
+def twist_from_msg(msg: Twist) -> Twist2D:
+    return Twist2D(msg.linear.x, msg.linear.y, msg.angular.z)
+
+
+def twist_msg(t: Twist2D) -> Twist:
+    msg = Twist()
+    msg.linear.x, msg.linear.y, msg.angular.z = t.vx, t.vy, t.wz
+    return msg
+
+
+def odometry_msg(
+    stamp: float, pose: Pose2D, twist: Twist2D, frame_id: str = "odom", child_frame_id: str = "base_footprint"
+) -> Odometry:
+    msg = Odometry()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = frame_id
+    msg.child_frame_id = child_frame_id
+    msg.pose.pose = pose_msg(pose)
+    msg.twist.twist = twist_msg(twist)
+    # Small fixed covariances (x, y, yaw) so consumers that require them (e.g. robot_localization) accept the message.
+    cov = [0.0] * 36
+    cov[0] = cov[7] = 1e-4
+    cov[35] = 1e-3
+    for c in (14, 21, 28):
+        cov[c] = 1e6  # z, roll, pitch are not measured
+    msg.pose.covariance = cov
+    msg.twist.covariance = cov
+    return msg
+
+
+def scan_msg(stamp: float, ranges: FloatArray, params: ScanParams, scan_period_s: float, frame_id: str = "base_scan") -> LaserScan:
+    msg = LaserScan()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = frame_id
+    msg.angle_min = params.angle_min
+    msg.angle_max = params.angle_max
+    msg.angle_increment = params.angle_increment
+    msg.time_increment = 0.0
+    msg.scan_time = scan_period_s
+    msg.range_min = params.range_min_m
+    msg.range_max = params.range_max_m
+    msg.ranges = np.asarray(ranges, dtype=np.float32)
+    return msg
+
+
+_STATUS = {
+    PowerStatus.CHARGING: BatteryState.POWER_SUPPLY_STATUS_CHARGING,
+    PowerStatus.DISCHARGING: BatteryState.POWER_SUPPLY_STATUS_DISCHARGING,
+    PowerStatus.FULL: BatteryState.POWER_SUPPLY_STATUS_FULL,
+}
+
+
+def battery_msg(stamp: float, r: BatteryReading, frame_id: str = "base_link") -> BatteryState:
+    msg = BatteryState()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = frame_id
+    msg.voltage = r.voltage_v
+    msg.temperature = math.nan
+    msg.current = math.nan
+    msg.charge = r.charge_ah
+    msg.capacity = r.capacity_ah
+    msg.design_capacity = r.capacity_ah
+    msg.percentage = r.level
+    msg.power_supply_status = _STATUS[r.status]
+    msg.power_supply_health = BatteryState.POWER_SUPPLY_HEALTH_GOOD
+    msg.power_supply_technology = BatteryState.POWER_SUPPLY_TECHNOLOGY_LION
+    msg.present = True
+    return msg
+
+
+def power_status_from_msg(value: int) -> PowerStatus:
+    return {v: k for k, v in _STATUS.items()}[value]
+
+
+def humans_msg(stamp: float, poses: dict[str, Pose2D], frame_id: str = "map") -> PoseArray:
+    """Humans in id order (the order of the world file's `humans`)."""
+    msg = PoseArray()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = frame_id
+    msg.poses = [pose_msg(p) for p in poses.values()]
+    return msg
+
+
+def occupancy_msg(stamp: float, grid: OccupancyGridData, frame_id: str = "map") -> OccupancyGrid:
+    msg = OccupancyGrid()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = frame_id
+    msg.info.map_load_time = time_msg(stamp)
+    msg.info.resolution = grid.resolution_m
+    msg.info.width = grid.width
+    msg.info.height = grid.height
+    msg.info.origin.position.x = grid.origin_x
+    msg.info.origin.position.y = grid.origin_y
+    msg.info.origin.orientation.w = 1.0
+    msg.data = grid.data.reshape(-1).astype(np.int8).tolist()
+    return msg
+
+
+def occupancy_from_msg(msg: OccupancyGrid) -> OccupancyGridData:
+    return OccupancyGridData(
+        resolution_m=msg.info.resolution,
+        width=msg.info.width,
+        height=msg.info.height,
+        origin_x=msg.info.origin.position.x,
+        origin_y=msg.info.origin.position.y,
+        data=np.asarray(msg.data, dtype=np.int8).reshape(msg.info.height, msg.info.width),
+    )
+
+
+def event_msg(event: dict[str, Any]) -> String:
+    return String(data=json.dumps(event, sort_keys=True))
+
+
+def event_from_msg(msg: String) -> dict[str, Any]:
+    out: dict[str, Any] = json.loads(msg.data)
+    return out

@@ -1,0 +1,25 @@
+"""QoS profiles by topic role (DESIGN.md topic table), defined once for every node."""
+
+from rclpy.qos import (
+    DurabilityPolicy,
+    HistoryPolicy,
+    QoSProfile,
+    ReliabilityPolicy,
+    qos_profile_sensor_data,
+)
+
+# Latched state: /map, /plan, /haven/thought, /haven/world_markers, /haven/estop.
+LATCHED = QoSProfile(
+    depth=1,
+    history=HistoryPolicy.KEEP_LAST,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.TRANSIENT_LOCAL,
+)
+# Commands and state streams: /cmd_vel*, /odom, /battery_state, /humans, /goal_pose.
+RELIABLE = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
+# /clock: the rosgraph default (reliable, depth 10) so every use_sim_time node matches.
+CLOCK = RELIABLE
+# /scan
+SENSOR = qos_profile_sensor_data
+# /haven/events: nothing may be dropped on the way to the recorder.
+EVENTS = QoSProfile(depth=100, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)

@@ -1,0 +1,35 @@
+"""The Jazzy-safe node `main()` shared by every HAVEN node (ros2/examples `composed.py` shape)."""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Callable, Sequence
+
+import rclpy
+from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.node import Node
+
+from haven_sim.world import WorldError
+
+
+def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:
+    """Init, build, spin until Ctrl-C or shutdown, clean up. Configuration errors become one line
+    on stderr and exit code 2, never a traceback."""
+    rclpy.init(args=list(args) if args is not None else None)
+    node: Node | None = None
+    code = 0
+    try:
+        node = factory()
+        executor = SingleThreadedExecutor()
+        executor.add_node(node)
+        executor.spin()
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    except (WorldError, ValueError) as e:
+        print(f"error: {e}", file=sys.stderr)
+        code = 2
+    finally:
+        if node is not None:
+            node.destroy_node()
+        rclpy.try_shutdown()
+    return code

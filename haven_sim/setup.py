@@ -1,0 +1,35 @@
+from glob import glob
+
+from setuptools import find_packages, setup
+
+package_name = "haven_sim"
+
+setup(
+    name=package_name,
+    version="0.1.0",
+    packages=find_packages(exclude=["test"]),
+    package_data={package_name: ["worlds/*.yaml", "config/*.yaml", "config/*.xml", "py.typed"]},
+    data_files=[
+        ("share/ament_index/resource_index/packages", [f"resource/{package_name}"]),
+        (f"share/{package_name}", ["package.xml"]),
+        (f"share/{package_name}/config", glob("haven_sim/config/*")),
+        (f"share/{package_name}/worlds", glob("haven_sim/worlds/*.yaml")),
+    ],
+    install_requires=["setuptools", "numpy", "pymunk", "PyYAML"],
+    zip_safe=True,
+    maintainer="HAVEN maintainers",
+    maintainer_email="haven@example.org",
+    description="HAVEN simulator: world model, physics, sensors, battery, velocity mux",
+    license="Apache-2.0",
+    tests_require=["pytest"],
+    entry_points={
+        "console_scripts": [
+            # `ros2 run haven_sim <name>` on a ROS install
+            "sim_node = haven_sim.nodes.sim_node:main",
+            "mux_node = haven_sim.nodes.mux_node:main",
+            # the same nodes as plain commands for the pip setup
+            "haven-sim = haven_sim.nodes.sim_node:main",
+            "haven-mux = haven_sim.nodes.mux_node:main",
+        ],
+    },
+)

@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# One-time (and idempotent) setup: a Python 3.12 (else 3.11) venv in .venv with the locked
+# dependencies and the three HAVEN packages installed in editable mode. Nothing outside the
+# project folder is touched.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+VENV=.venv
+
+works() {  # a usable interpreter of a version Jazzy supports, with venv and pip available
+  "$1" -c 'import sys, venv, ensurepip; sys.exit(0 if sys.version_info[:2] in ((3, 12), (3, 11)) else 1)' >/dev/null 2>&1
+}
+
+find_python() {
+  local c root
+  local candidates=("${HAVEN_PYTHON:-}")
+  root=$(pyenv root 2>/dev/null || echo "$HOME/.pyenv")
+  for minor in 12 11; do
+    candidates+=("python3.$minor" "/usr/bin/python3.$minor" "/usr/local/bin/python3.$minor")
+    for c in "$root"/versions/3."$minor".*/bin/python3."$minor"; do candidates+=("$c"); done
+  done
+  candidates+=(python3)
+  for c in "${candidates[@]}"; do
+    [ -n "$c" ] || continue
+    if works "$c"; then command -v "$c" || echo "$c"; return 0; fi
+  done
+  return 1
+}
+
+if [ ! -x "$VENV/bin/python" ] || ! works "$VENV/bin/python"; then
+  PY=$(find_python) || { echo "setup: no working Python 3.12 or 3.11 found (set HAVEN_PYTHON=/path/to/python3.12)" >&2; exit 1; }
+  echo "setup: creating $VENV with $PY ($("$PY" -c 'import platform; print(platform.python_version())'))"
+  rm -rf "$VENV"
+  "$PY" -m venv "$VENV"
+fi
+
+stamp="$VENV/.haven-installed"
+want=$(cat requirements.lock haven_sim/setup.py haven_viz/setup.py haven_scenarios/setup.py | cksum)
+if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
+  export PIP_DISABLE_PIP_VERSION_CHECK=1
+  "$VENV/bin/python" -m pip install --quiet -r requirements.lock
+  "$VENV/bin/python" -m pip install --quiet --no-deps --no-build-isolation \
+    -e haven_sim -e haven_viz -e haven_scenarios
+  echo "$want" > "$stamp"
+  echo "setup: installed the locked dependencies and the HAVEN packages into $VENV"
+fi
