@@ -20,6 +20,7 @@ class SquareDriver:
         self.legs_done = 0
         self._leg_start: Pose2D | None = None
         self._turn_goal: float | None = None
+        self._heading: float | None = None  # the ideal heading of the current leg
         self.distance_m = 0.0
         self._last: Pose2D | None = None
 
@@ -36,18 +37,23 @@ class SquareDriver:
             return Twist2D()
         if self._turn_goal is not None:
             err = wrap_angle(self._turn_goal - pose.yaw)
-            if abs(err) < math.radians(2.0):
+            if abs(err) < math.radians(1.0):
+                self._heading = self._turn_goal
                 self._turn_goal = None
                 self._leg_start = pose
             else:
                 return Twist2D(0.0, 0.0, math.copysign(min(self.turn_rps, 2.0 * abs(err) + 0.1), err))
         if self._leg_start is None:
             self._leg_start = pose
+        if self._heading is None:
+            self._heading = pose.yaw
         left = self.side_m - pose.distance_to(self._leg_start)
         if left <= 0.01:
             self.legs_done += 1
-            self._turn_goal = wrap_angle(self._leg_start.yaw + math.pi / 2.0)
+            self._turn_goal = wrap_angle(self._heading + math.pi / 2.0)
             self._leg_start = None
             return Twist2D()
-        heading_err = wrap_angle(self._leg_start.yaw - pose.yaw)
-        return Twist2D(min(self.speed_mps, 1.0 * left + 0.05), 0.0, 2.0 * heading_err)
+        heading_err = wrap_angle(self._heading - pose.yaw)
+        # Slow down in time for the 0.5 m/s^2 deceleration of the TurtleBot2.
+        speed = min(self.speed_mps, math.sqrt(2.0 * 0.4 * left) + 0.02)
+        return Twist2D(speed, 0.0, 2.0 * heading_err)

@@ -50,6 +50,7 @@ class _DrivenBody:
         self.shape.collision_type = collision_type
         self.shape.friction = 0.3
         self.control = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
+        self._dt = 0.0
         pivot = pymunk.PivotJoint(self.control, self.body, (0, 0), (0, 0))
         pivot.max_bias = 0.0
         pivot.max_force = spec.max_force_n
@@ -66,8 +67,12 @@ class _DrivenBody:
             b.velocity = (0.0, 0.0)
             b.angular_velocity = 0.0
 
-    def drive(self, cmd: Twist2D) -> None:
-        c, s = math.cos(self.body.angle), math.sin(self.body.angle)
+    def drive(self, cmd: Twist2D, dt: float) -> None:
+        self._dt = dt
+        # Chipmunk moves bodies with the velocity solved in the previous step, so this velocity is
+        # integrated from angle + w*dt to angle + 2*w*dt: aim along the middle of that (the arc's chord).
+        heading = self.body.angle + 1.5 * cmd.wz * dt
+        c, s = math.cos(heading), math.sin(heading)
         self.control.velocity = (c * cmd.vx - s * cmd.vy, s * cmd.vx + c * cmd.vy)
         self.control.angular_velocity = cmd.wz
 
@@ -76,9 +81,10 @@ class _DrivenBody:
         return Pose2D(p.x, p.y, self.body.angle)
 
     def body_twist(self) -> Twist2D:
-        """Velocity in the body frame."""
+        """Velocity in the body frame (relative to the heading it will be integrated about)."""
         vx, vy = self.body.velocity
-        c, s = math.cos(self.body.angle), math.sin(self.body.angle)
+        heading = self.body.angle + 0.5 * self.body.angular_velocity * self._dt
+        c, s = math.cos(heading), math.sin(heading)
         return Twist2D(c * vx + s * vy, -s * vx + c * vy, self.body.angular_velocity)
 
 
@@ -143,9 +149,9 @@ class Physics:
         return sorted(self._touching)
 
     def step(self, robot_cmd: Twist2D, human_cmds: dict[str, Twist2D], dt: float) -> None:
-        self.robot.drive(robot_cmd)
+        self.robot.drive(robot_cmd, dt)
         for hid, body in self.humans.items():
-            body.drive(human_cmds.get(hid, Twist2D()))
+            body.drive(human_cmds.get(hid, Twist2D()), dt)
         self.space.step(dt)
 
     def human_poses(self) -> dict[str, Pose2D]:

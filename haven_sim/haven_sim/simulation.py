@@ -75,10 +75,9 @@ class Simulation:
 
     def _build(self) -> None:
         w = self.world
-        self.physics = Physics(w.edges(), w.robot_start, {h.id: h.start for h in w.humans})
-        for o in w.obstructions:
+        self.physics = Physics(w.edges(obstructions=False), w.robot_start, {h.id: h.start for h in w.humans})
+        for o in w.obstructions:  # kept apart so that each can be removed
             self.physics.add_obstruction(o.id, o.shape.edges())
-        # Physics owns obstruction edges separately; the scanner sees the static world plus live obstructions.
         self.scanner = LaserScanner(self.config.scan, w.edges(), seed=self.config.seed)
         self.removed = set()
         self._battery_was_empty = self.battery.empty

@@ -133,8 +133,9 @@ class World:
         live = [o.shape for o in self.obstructions if o.id not in removed]
         return [*self.walls, *self.obstacles, *live]
 
-    def edges(self, removed: frozenset[str] = frozenset()) -> FloatArray:
-        shapes = self.solid_shapes(removed)
+    def edges(self, removed: frozenset[str] = frozenset(), obstructions: bool = True) -> FloatArray:
+        """Edges (N, 4) of every solid shape; without obstructions when `obstructions` is False."""
+        shapes = self.solid_shapes(removed) if obstructions else [*self.walls, *self.obstacles]
         if not shapes:
             return np.zeros((0, 4))
         return np.vstack([s.edges() for s in shapes])

@@ -1,0 +1,55 @@
+"""The layout contract: versions agree, ament metadata exists, the core never imports ROS."""
+
+import ast
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+PACKAGES = ["haven_sim", "haven_viz", "haven_scenarios"]
+ROS_MODULES = {
+    "rclpy", "std_msgs", "geometry_msgs", "nav_msgs", "sensor_msgs", "visualization_msgs",
+    "rosgraph_msgs", "std_srvs", "builtin_interfaces", "tf2_msgs",
+}
+
+
+@pytest.mark.parametrize("pkg", PACKAGES)
+def test_package_is_an_ament_python_package_with_one_version(pkg):
+    root = ROOT / pkg
+    xml = ET.parse(root / "package.xml").getroot()
+    assert xml.findtext("name") == pkg
+    assert xml.find("export/build_type").text == "ament_python"
+    assert (root / "resource" / pkg).is_file()
+    assert (root / "test").is_dir()
+    setup_version = re.search(r'version="([^"]+)"', (root / "setup.py").read_text()).group(1)
+    init_version = re.search(r'__version__ = "([^"]+)"', (root / pkg / "__init__.py").read_text()).group(1)
+    assert xml.findtext("version") == setup_version == init_version
+    assert (ROOT / "ros2_ws" / "src" / pkg).resolve() == root
+
+
+@pytest.mark.parametrize("pkg", PACKAGES)
+def test_core_modules_import_no_ros(pkg):
+    offenders = []
+    for path in (ROOT / pkg / pkg).rglob("*.py"):
+        if "nodes" in path.relative_to(ROOT / pkg / pkg).parts:
+            continue
+        for node in ast.walk(ast.parse(path.read_text())):
+            names = []
+            if isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.module:
+                names = [node.module]
+            offenders += [f"{path.name}: {n}" for n in names if n.split(".")[0] in ROS_MODULES]
+    assert offenders == []
+
+
+def test_rosdep_keys_cover_what_the_nodes_import():
+    """Every message package a node imports is declared in that package's package.xml."""
+    for pkg in PACKAGES:
+        declared = {e.text for e in ET.parse(ROOT / pkg / "package.xml").getroot().iter("exec_depend")}
+        for path in (ROOT / pkg / pkg).rglob("*.py"):
+            for node in ast.walk(ast.parse(path.read_text())):
+                if isinstance(node, ast.ImportFrom) and node.module and node.module.split(".")[0] in ROS_MODULES:
+                    assert node.module.split(".")[0] in declared, f"{pkg}/package.xml lacks {node.module.split('.')[0]}"

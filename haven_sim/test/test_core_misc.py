@@ -1,0 +1,65 @@
+"""Odometry noise, the real-time pacer and the velocity mux: small rules with time as an argument."""
+
+import math
+
+import pytest
+
+from haven_sim.geometry import Pose2D, Twist2D
+from haven_sim.mux import ESTOP, IDLE, NAV, TELEOP, VelocityMux
+from haven_sim.odometry import Odometry, OdometryNoise
+from haven_sim.pacer import Pacer
+
+
+def _circle(n=500):
+    return [Pose2D(math.cos(k * 0.01), math.sin(k * 0.01), k * 0.01 + math.pi / 2) for k in range(n)]
+
+
+def test_noise_free_odometry_is_ground_truth():
+    path = _circle()
+    odo = Odometry(path[0])
+    for p in path:
+        assert odo.update(p) == p
+
+
+def test_noisy_odometry_drifts_reproducibly():
+    path = _circle()
+    finals = []
+    for seed in (1, 1, 2):
+        odo = Odometry(path[0], OdometryNoise(0.05, 0.05), seed=seed)
+        for p in path[1:]:
+            odo.update(p)
+        finals.append(odo.pose)
+    assert finals[0] == finals[1] != finals[2]
+    drift = finals[0].distance_to(path[-1])
+    assert 1e-4 < drift < 0.2
+
+
+def test_pacer_keeps_average_rate_and_caps_catch_up():
+    pacer = Pacer(step_s=0.02, real_time_factor=2.0, max_catch_up_steps=10)
+    assert pacer.tick_period_s == pytest.approx(0.01)
+    assert pacer.due_steps(100.0) == 0
+    assert sum(pacer.due_steps(100.0 + k * 0.013) for k in range(1, 101)) == 130  # 1.3 s wall = 2.6 s sim
+    assert pacer.due_steps(200.0) == 10  # a stall: no burst beyond the cap
+    assert pacer.due_steps(200.01) == 1
+    with pytest.raises(ValueError):
+        Pacer(0.02, 0.0)
+
+
+def test_mux_priorities_and_timeouts():
+    mux = VelocityMux(teleop_timeout_s=0.5, nav_timeout_s=0.5)
+    assert mux.output(0.0).source == IDLE
+    mux.on_nav(Twist2D(0.2, 0, 0), 1.0)
+    assert mux.output(1.1) == mux.output(1.1) and mux.output(1.1).source == NAV
+    mux.on_teleop(Twist2D(-0.1, 0, 0.5), 1.2)
+    mux.on_nav(Twist2D(0.2, 0, 0), 1.3)
+    out = mux.output(1.3)
+    assert out.source == TELEOP and out.twist == Twist2D(-0.1, 0, 0.5)
+    assert mux.output(1.7).source == TELEOP
+    mux.on_nav(Twist2D(0.2, 0, 0), 1.7)
+    assert mux.output(1.71).source == NAV  # teleop quiet for 0.51 s: control returns to nav
+    mux.set_estop(True)
+    mux.on_teleop(Twist2D(0.3, 0, 0), 1.8)
+    assert mux.output(1.8).source == ESTOP and mux.output(1.8).twist == Twist2D()
+    mux.set_estop(False)
+    assert mux.output(1.8).source == TELEOP
+    assert mux.output(5.0).source == IDLE
