@@ -17,7 +17,6 @@ setup(
     maintainer_email="haven@example.org",
     description="HAVEN study scenarios, sessions and the haven command",
     license="Apache-2.0",
-    tests_require=["pytest"],
     entry_points={
         "console_scripts": [
             "haven = haven_scenarios.cli:main",

@@ -21,7 +21,6 @@ setup(
     maintainer_email="haven@example.org",
     description="HAVEN simulator: world model, physics, sensors, battery, velocity mux",
     license="Apache-2.0",
-    tests_require=["pytest"],
     entry_points={
         "console_scripts": [
             # `ros2 run haven_sim <name>` on a ROS install

@@ -17,6 +17,5 @@ setup(
     maintainer_email="haven@example.org",
     description="HAVEN AR cue markers and viewer configs",
     license="Apache-2.0",
-    tests_require=["pytest"],
     entry_points={"console_scripts": []},
 )

@@ -38,7 +38,9 @@ want=$(cat requirements.lock haven_sim/setup.py haven_viz/setup.py haven_scenari
 if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   export PIP_DISABLE_PIP_VERSION_CHECK=1
   "$VENV/bin/python" -m pip install --quiet -r requirements.lock
-  "$VENV/bin/python" -m pip install --quiet --no-deps --no-build-isolation \
+  # compat mode puts each package folder on sys.path, so `python -m haven_sim...` also works from the
+  # repository root (where the outer haven_sim/ folder would otherwise shadow the package).
+  "$VENV/bin/python" -m pip install --quiet --no-deps --no-build-isolation --config-settings editable_mode=compat \
     -e haven_sim -e haven_viz -e haven_scenarios
   echo "$want" > "$stamp"
   echo "setup: installed the locked dependencies and the HAVEN packages into $VENV"

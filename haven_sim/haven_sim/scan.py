@@ -111,7 +111,7 @@ class LaserScanner:
                 disc = np.maximum(proj * proj - (dist[owner] ** 2 - r[owner] ** 2), 0.0)
                 np.minimum.at(ring, beams, proj - np.sqrt(disc))
 
-        ranges = np.minimum(ring[: p.beams], ring[p.beams :])
+        ranges: FloatArray = np.minimum(ring[: p.beams], ring[p.beams :])
         if p.noise_std_m > 0.0:
             finite = np.isfinite(ranges)
             ranges[finite] += self._rng.normal(0.0, p.noise_std_m, int(finite.sum()))

@@ -1,0 +1,91 @@
+"""The `haven` command as a user runs it: a separate process, stopped with Ctrl-C (SIGINT)."""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+from nav_msgs.msg import Odometry
+
+from haven_sim.nodes import qos
+
+pytestmark = pytest.mark.ros
+HAVEN = [sys.executable, "-m", "haven_scenarios.cli"]
+
+
+def children_of(pid):
+    out = subprocess.run(["ps", "-o", "pid=", "--ppid", str(pid)], capture_output=True, text=True).stdout
+    return [int(p) for p in out.split()]
+
+
+def alive(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    return subprocess.run(["ps", "-o", "stat=", "-p", str(pid)], capture_output=True, text=True).stdout.strip()[:1] != "Z"
+
+
+def start_haven(ros, *args):
+    proc = subprocess.Popen([*HAVEN, *args, "--domain-id", str(ros.domain_id)], env=ros.env, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, start_new_session=True)
+    ros.procs.append(proc)
+    return proc
+
+
+def test_sim_runs_and_ctrl_c_stops_every_process(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    proc = start_haven(ros, "sim", "--rtf", "2")
+    ros.wait_for_messages(odom, 10)
+    kids = children_of(proc.pid)
+    assert len(kids) == 2
+    os.killpg(proc.pid, signal.SIGINT)  # what a terminal's Ctrl-C does
+    assert proc.wait(timeout=20) == 0
+    assert not [k for k in kids if alive(k)]
+    assert "Traceback" not in proc.stderr.read()
+
+
+def test_a_node_that_dies_takes_the_suite_down_with_a_message(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    proc = start_haven(ros, "sim")
+    ros.wait_for_messages(odom, 1)
+    kids = children_of(proc.pid)
+    sim_pid = max(kids, key=lambda k: "sim_node" in open(f"/proc/{k}/cmdline").read())
+    os.kill(sim_pid, signal.SIGKILL)
+    code = proc.wait(timeout=20)
+    assert code != 0
+    assert "sim exited with code -9; stopped the others" in proc.stderr.read()
+    deadline = time.monotonic() + 5
+    while time.monotonic() < deadline and any(alive(k) for k in kids):
+        time.sleep(0.05)
+    assert not [k for k in kids if alive(k)]
+
+
+def test_invalid_world_is_refused_before_anything_starts(tmp_path):
+    bad = tmp_path / "w.yaml"
+    bad.write_text("name: w\nwalls:\n  - {segment: [[0, 0], [1, 0]], thickness: zero}\nrobot: {start: [0, 1]}\n")
+    r = subprocess.run([*HAVEN, "sim", "--world", str(bad)], capture_output=True, text=True, timeout=30)
+    assert r.returncode == 2
+    assert r.stderr.strip() == f"haven: error: {bad}: walls[0].thickness: must be a finite number, got 'zero'"
+    assert r.stdout == ""
+
+
+def test_bad_arguments_get_one_line(tmp_path):
+    r = subprocess.run([*HAVEN, "sim", "--rtf", "-1"], capture_output=True, text=True, timeout=30)
+    assert r.returncode == 2 and "must be positive" in r.stderr.splitlines()[-1]
+
+
+@pytest.mark.slow
+def test_demo_drives_a_square_and_reports(ros):
+    proc = start_haven(ros, "demo", "--rtf", "4")
+    out, err = proc.communicate(timeout=120)
+    assert proc.returncode == 0, err
+    summary = json.loads(out.strip().splitlines()[-1])
+    assert summary["legs"] == 4
+    assert summary["distance_m"] == pytest.approx(6.0, abs=0.3)
+    assert summary["contacts"] == 0
+    assert summary["battery"] == pytest.approx(1.0 - 6.0 / 100.0, abs=0.01)
+    assert summary["odom_rate_hz_sim"] == pytest.approx(50.0, rel=0.05)

@@ -1,0 +1,202 @@
+"""Cross-process tests: the simulator and mux nodes as separate processes, driven from this test."""
+
+import math
+import signal
+
+import pytest
+from geometry_msgs.msg import PoseArray, Twist
+from nav_msgs.msg import OccupancyGrid, Odometry
+from rosgraph_msgs.msg import Clock
+from sensor_msgs.msg import BatteryState, LaserScan
+from std_msgs.msg import Bool, String
+from std_srvs.srv import Trigger
+
+from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import qos
+from haven_sim.world import load_world, packaged_world
+
+pytestmark = pytest.mark.ros
+SIM = "haven_sim.nodes.sim_node"
+MUX = "haven_sim.nodes.mux_node"
+
+
+def twist(vx=0.0, wz=0.0):
+    return conv.twist_msg(conv.Twist2D(vx, 0.0, wz))
+
+
+def drive(ros, pub, msg, odom, sim_seconds):
+    """Publish `msg` every 0.05 s of sim time (as a 20 Hz controller would) for sim_seconds."""
+    start = conv.time_from_msg(odom[-1].header.stamp)
+    next_t = start
+    while True:
+        now = conv.time_from_msg(odom[-1].header.stamp)
+        if now - start >= sim_seconds:
+            return
+        if now >= next_t:
+            pub.publish(msg)
+            next_t = now + 0.05
+        ros.executor.spin_once(timeout_sec=0.005)
+
+
+def test_odom_rate_pose_scan_and_topics(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    scans = ros.collect(LaserScan, "/scan", qos.SENSOR)
+    clock = ros.collect(Clock, "/clock", qos.CLOCK)
+    humans = ros.collect(PoseArray, "/humans", qos.RELIABLE)
+    battery = ros.collect(BatteryState, "/battery_state", qos.RELIABLE)
+    ros.start(SIM, {"real_time_factor": 2.0})
+    ros.wait_matched(odom)
+    ros.wait_for_messages(odom, 60)
+    ros.wait_for_messages(scans, 3)
+    ros.wait_for_messages(battery, 2)
+    ros.wait_for_messages(humans, 2)
+    stamps = [conv.time_from_msg(m.header.stamp) for m in odom[-50:]]
+    gaps = [b - a for a, b in zip(stamps, stamps[1:])]
+    assert all(g == pytest.approx(0.02, abs=1e-6) for g in gaps)  # 50 Hz in sim time, none lost
+    assert clock and conv.time_from_msg(clock[-1].clock) >= stamps[0]
+    m = odom[-1]
+    assert (m.header.frame_id, m.child_frame_id) == ("odom", "base_footprint")
+    assert conv.pose_from_msg(m.pose.pose) == pytest.approx((1.0, 2.5, 0.0), abs=1e-6)
+    s = scans[-1]
+    assert s.header.frame_id == "base_scan" and len(s.ranges) == 360
+    assert (s.range_min, s.range_max) == pytest.approx((0.12, 3.5))
+    assert s.ranges[0] == pytest.approx(1.0 - 0.05, abs=1e-4)  # beam 0 looks backwards at the west wall
+    assert math.isinf(s.ranges[180])  # straight ahead through the door: nothing within 3.5 m
+    ss = conv.time_from_msg(scans[-1].header.stamp) - conv.time_from_msg(scans[-2].header.stamp)
+    assert ss == pytest.approx(0.1, abs=1e-6)
+    assert humans[-1].header.frame_id == "map" and len(humans[-1].poses) == 1
+    b = battery[-1]
+    assert b.percentage == pytest.approx(1.0) and b.power_supply_status == BatteryState.POWER_SUPPLY_STATUS_FULL
+
+
+def test_cmd_vel_drives_and_watchdog_stops(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    pub = ros.node.create_publisher(Twist, "/cmd_vel", qos.RELIABLE)
+    ros.start(SIM, {"real_time_factor": 2.0})
+    ros.wait_matched(pub)
+    ros.wait_for_messages(odom, 5)
+    drive(ros, pub, twist(0.4, 0.0), odom, 2.0)
+    x_cmd_end = odom[-1].pose.pose.position.x
+    assert odom[-1].twist.twist.linear.x == pytest.approx(0.4, abs=0.01)
+    assert x_cmd_end - 1.0 == pytest.approx(0.4 * 2.0 - 0.4**2 / (2 * 0.5), abs=0.08)  # with the 0.5 m/s^2 ramp
+    # No more commands: the robot keeps going for 0.5 s of sim time, then brakes to a stop.
+    n = len(odom)
+    ros.spin_until(lambda: conv.time_from_msg(odom[-1].header.stamp) > conv.time_from_msg(odom[n - 1].header.stamp) + 2.0)
+    assert odom[-1].twist.twist.linear.x == pytest.approx(0.0, abs=1e-3)
+    moving = [conv.time_from_msg(m.header.stamp) for m in odom[n:] if m.twist.twist.linear.x > 0.39]
+    assert 0.4 <= moving[-1] - conv.time_from_msg(odom[n - 1].header.stamp) <= 0.6
+
+
+def test_non_finite_command_is_dropped_with_a_warning(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    pub = ros.node.create_publisher(Twist, "/cmd_vel", qos.RELIABLE)
+    proc = ros.start(SIM, {"real_time_factor": 2.0}, capture=True)
+    ros.wait_matched(pub)
+    ros.wait_for_messages(odom, 5)
+    drive(ros, pub, twist(math.nan, 0.5), odom, 1.0)
+    assert conv.pose_from_msg(odom[-1].pose.pose) == pytest.approx((1.0, 2.5, 0.0), abs=1e-6)
+    drive(ros, pub, twist(0.0, 1.0), odom, 1.0)  # still obeys finite commands
+    assert odom[-1].twist.twist.angular.z == pytest.approx(1.0, abs=0.01)
+    assert ros.stop(proc) == 0
+    err = proc.stderr.read()
+    assert "dropped a non-finite command on /cmd_vel" in err
+    assert err.count("non-finite") < 5  # throttled
+    assert "Traceback" not in err
+
+
+def test_latched_map_reaches_a_late_subscriber_and_reset_service(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    events = ros.collect(String, "/haven/events", qos.EVENTS)
+    pub = ros.node.create_publisher(Twist, "/cmd_vel", qos.RELIABLE)
+    ros.start(SIM, {"real_time_factor": 2.0})
+    ros.wait_for_messages(odom, 5)
+    ros.wait_matched(pub)
+    drive(ros, pub, twist(0.5, 0.0), odom, 3.0)
+    maps = ros.collect(OccupancyGrid, "/map", qos.LATCHED)  # subscribes only now
+    ros.wait_for_messages(maps, 1)
+    world = load_world(packaged_world("small_test"))
+    grid = conv.occupancy_from_msg(maps[0])
+    assert maps[0].header.frame_id == "map" and grid.resolution_m == pytest.approx(0.05)
+    assert grid.is_occupied(4.0, 1.0) and not grid.is_occupied(2.0, 2.5)
+    assert grid.width * grid.resolution_m > world.bounds()[2] - world.bounds()[0]
+    client = ros.node.create_client(Trigger, "/haven/reset")
+    assert client.wait_for_service(timeout_sec=10.0)
+    future = client.call_async(Trigger.Request())
+    ros.spin_until(future.done)
+    assert future.result().success
+    ros.spin_until(lambda: conv.pose_from_msg(odom[-1].pose.pose).x == pytest.approx(1.0, abs=1e-6))
+    assert any(conv.event_from_msg(e)["type"] == "reset" for e in events)
+
+
+def test_wall_contact_is_an_event(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    events = ros.collect(String, "/haven/events", qos.EVENTS)
+    pub = ros.node.create_publisher(Twist, "/cmd_vel", qos.RELIABLE)
+    ros.start(SIM, {"real_time_factor": 4.0})
+    ros.wait_matched(pub)
+    ros.wait_matched(events)
+    ros.wait_for_messages(odom, 5)
+    drive(ros, pub, twist(-0.5, 0.0), odom, 3.0)  # backwards into the west wall, 0.95 m behind
+    kinds = [conv.event_from_msg(e) for e in events]
+    assert {"type": "contact_begin", "other": "wall", "source": "sim"}.items() <= kinds[0].items()
+
+
+def test_mux_teleop_beats_nav_then_hands_back_and_estop(ros):
+    out = ros.collect(Twist, "/cmd_vel", qos.RELIABLE)
+    nav = ros.node.create_publisher(Twist, "/cmd_vel_nav", qos.RELIABLE)
+    teleop = ros.node.create_publisher(Twist, "/cmd_vel_teleop", qos.RELIABLE)
+    estop = ros.node.create_publisher(Bool, "/haven/estop", qos.LATCHED)
+    ros.start(MUX)  # wall time: no simulator needed
+    for e in (out, nav, teleop, estop):
+        ros.wait_matched(e)
+
+    def last_after(pub, msg, expect_vx):
+        pub.publish(msg)
+        return ros.spin_until(lambda: out and out[-1].linear.x == pytest.approx(expect_vx), 5.0)
+
+    assert last_after(nav, twist(0.2), 0.2)
+    assert last_after(teleop, twist(-0.3), -0.3)
+    nav.publish(twist(0.2))
+    ros.spin_for(0.1)
+    assert out[-1].linear.x == pytest.approx(-0.3)  # teleop still holds control
+    # keep nav alive; teleop goes quiet and control returns to nav after 0.5 s
+    ros.spin_until(lambda: (nav.publish(twist(0.2)) or True) and out[-1].linear.x == pytest.approx(0.2), 3.0)
+    assert out[-1].linear.x == pytest.approx(0.2)
+    estop.publish(Bool(data=True))
+    ros.spin_until(lambda: (nav.publish(twist(0.2)) or True) and out[-1].linear.x == 0.0, 3.0)
+    for _ in range(5):
+        nav.publish(twist(0.2))
+        teleop.publish(twist(0.3))
+        ros.spin_for(0.05)
+        assert out[-1].linear.x == 0.0
+    estop.publish(Bool(data=False))
+    assert ros.spin_until(lambda: (teleop.publish(twist(0.3)) or True) and out[-1].linear.x == pytest.approx(0.3), 3.0)
+
+
+def test_teleop_from_another_node_drives_the_simulated_robot(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    teleop = ros.node.create_publisher(Twist, "/cmd_vel_teleop", qos.RELIABLE)
+    ros.start(SIM, {"real_time_factor": 2.0})
+    ros.start(MUX, {"use_sim_time": True})
+    ros.wait_matched(teleop)
+    ros.wait_for_messages(odom, 5)
+    drive(ros, teleop, twist(0.0, 1.0), odom, 2.0)
+    assert odom[-1].twist.twist.angular.z == pytest.approx(1.0, abs=0.02)
+    assert conv.pose_from_msg(odom[-1].pose.pose).yaw > 1.0
+
+
+def test_invalid_world_fails_fast_with_one_line(ros, tmp_path):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("name: bad\nwalls: []\nrobot: {start: [0, 0, 0]}\n")
+    proc = ros.start(SIM, {"world": str(bad)}, capture=True)
+    assert proc.wait(timeout=30) == 2
+    err = proc.stderr.read().strip()
+    assert err == f"error: {bad}: walls: needs at least one wall"
+
+
+def test_sigint_shuts_the_node_down_cleanly(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    proc = ros.start(SIM, capture=True)
+    ros.wait_for_messages(odom, 1)
+    assert ros.stop(proc, signal.SIGINT) == 0
+    assert "Traceback" not in proc.stderr.read()
