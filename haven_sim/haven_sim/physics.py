@@ -17,6 +17,10 @@ import pymunk
 from haven_sim.geometry import FloatArray, Pose2D, Twist2D
 
 ROBOT, HUMAN, WALL = 1, 2, 3
+# The property setters themselves: pymunk's attribute-name guard on Body.__setattr__ costs more
+# than the update in this per-step path.
+_set_velocity = pymunk.Body.velocity.fset
+_set_angular_velocity = pymunk.Body.angular_velocity.fset
 
 
 @dataclass(frozen=True)
@@ -51,6 +55,7 @@ class _DrivenBody:
         self.shape.friction = 0.3
         self.control = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
         self._dt = 0.0
+        self._moving = True
         pivot = pymunk.PivotJoint(self.control, self.body, (0, 0), (0, 0))
         pivot.max_bias = 0.0
         pivot.max_force = spec.max_force_n
@@ -61,6 +66,7 @@ class _DrivenBody:
         self.place(pose)
 
     def place(self, pose: Pose2D) -> None:
+        self._moving = True
         for b in (self.body, self.control):
             b.position = (pose.x, pose.y)
             b.angle = pose.yaw
@@ -69,16 +75,19 @@ class _DrivenBody:
 
     def drive(self, cmd: Twist2D, dt: float) -> None:
         self._dt = dt
+        if not (cmd.vx or cmd.vy or cmd.wz or self._moving):
+            return  # standing still stays standing still: nothing to update
+        self._moving = bool(cmd.vx or cmd.vy or cmd.wz)
         # Chipmunk moves bodies with the velocity solved in the previous step, so this velocity is
         # integrated from angle + w*dt to angle + 2*w*dt: aim along the middle of that (the arc's chord).
         heading = self.body.angle + 1.5 * cmd.wz * dt
         c, s = math.cos(heading), math.sin(heading)
-        self.control.velocity = (c * cmd.vx - s * cmd.vy, s * cmd.vx + c * cmd.vy)
-        self.control.angular_velocity = cmd.wz
+        _set_velocity(self.control, (c * cmd.vx - s * cmd.vy, s * cmd.vx + c * cmd.vy))
+        _set_angular_velocity(self.control, cmd.wz)
 
     def pose(self) -> Pose2D:
-        p = self.body.position
-        return Pose2D(p.x, p.y, self.body.angle)
+        x, y = self.body.position
+        return Pose2D(x, y, self.body.angle)
 
     def body_twist(self) -> Twist2D:
         """Velocity in the body frame (relative to the heading it will be integrated about)."""

@@ -37,9 +37,12 @@ class ScanParams:
 
 class LaserScanner:
     """Ray casting by angular intervals: each wall edge facing the scanner, and each human circle,
-    covers a contiguous run of beams, so only those (beam, object) pairs are intersected. Edges must
-    come from counter-clockwise polygons, as `World.edges()` gives them: a ray enters a solid only
-    through an edge that faces the scanner."""
+    covers a contiguous run of beams, so only those (beam, object) pairs are intersected.
+
+    Edges must come from counter-clockwise polygons, as `World.edges()` gives them: a ray enters a
+    solid only through an edge that faces the scanner. Candidate edges are looked up in a grid of
+    range_max-sized cells (built lazily), so large maps cost no more per scan than small ones.
+    """
 
     def __init__(self, params: ScanParams, edges: FloatArray, seed: int | None = None) -> None:
         self.params = params
@@ -47,55 +50,75 @@ class LaserScanner:
         # Beam directions in the scanner frame, repeated once for runs that wrap past angle_max.
         self._cos2 = np.tile(np.cos(angles), 2)
         self._sin2 = np.tile(np.sin(angles), 2)
+        self._inv_inc = 1.0 / params.angle_increment
+        self._count = np.arange(params.beams + 1)
         self._rng = np.random.default_rng(seed)
         self.set_edges(edges)
 
     def set_edges(self, edges: FloatArray) -> None:
         e = np.asarray(edges, dtype=float).reshape(-1, 4)
-        self._a = e[:, 0:2].copy()
-        self._b = e[:, 2:4].copy()
-        self._xmin = np.minimum(e[:, 0], e[:, 2])
-        self._xmax = np.maximum(e[:, 0], e[:, 2])
-        self._ymin = np.minimum(e[:, 1], e[:, 3])
-        self._ymax = np.maximum(e[:, 1], e[:, 3])
+        self._edges = e
+        self._lo = np.minimum(e[:, 0:2], e[:, 2:4])
+        self._hi = np.maximum(e[:, 0:2], e[:, 2:4])
+        self._cells: dict[tuple[int, int], tuple[FloatArray, ...]] = {}
 
-    def _beam_runs(self, start: FloatArray, sweep: FloatArray) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
-        """(beam, object) pairs for every beam whose angle lies in [start, start + sweep], as indices
-        into a doubled ring of 2 * beams so that runs crossing angle_max need no wrap-around."""
-        p = self.params
-        f0 = np.mod(start - p.angle_min, 2.0 * np.pi) / p.angle_increment
-        k0 = np.ceil(f0 - 1e-9).astype(np.intp)
-        counts = np.floor(f0 + sweep / p.angle_increment + 1e-9).astype(np.intp) - k0 + 1
-        np.maximum(counts, 0, out=counts)
-        owner = np.repeat(np.arange(len(start)), counts)
-        beams = np.arange(len(owner)) + np.repeat(k0 - np.cumsum(counts) + counts, counts)
-        return beams, owner
+    def _candidates(self, x: float, y: float) -> tuple[FloatArray, ...]:
+        """Edges that can be within range_max of any point of the cell holding (x, y)."""
+        size = self.params.range_max_m
+        key = (math.floor(x / size), math.floor(y / size))
+        cell = self._cells.get(key)
+        if cell is None:
+            x0, y0 = key[0] * size - size, key[1] * size - size
+            x1, y1 = x0 + 3 * size, y0 + 3 * size
+            near = (self._lo[:, 0] <= x1) & (self._hi[:, 0] >= x0) & (self._lo[:, 1] <= y1) & (self._hi[:, 1] >= y0)
+            e = self._edges[near]
+            ex, ey = e[:, 2] - e[:, 0], e[:, 3] - e[:, 1]
+            # Per edge: start point, direction, 1/length and the angle of its inward normal (-n).
+            cell = (e[:, 0].copy(), e[:, 1].copy(), ex, ey, 1.0 / np.hypot(ex, ey), np.arctan2(ex, -ey))
+            self._cells[key] = cell
+        return cell
+
+    def _runs(
+        self, start: FloatArray, sweep: FloatArray, skip: npt.NDArray[np.bool_] | None
+    ) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
+        """(beam, object) pairs for every beam whose index (a float: beam steps from beam 0) lies in
+        [start, start + sweep]; start >= 0. Beams index a doubled ring (0 .. 2 * beams) so a run
+        crossing angle_max needs no wrap-around."""
+        k0 = (start + (1.0 - 1e-9)).astype(np.intp)  # ceil, for start >= 0
+        counts = (start + sweep + 1e-9).astype(np.intp) - k0 + 1  # floor(end) - ceil(start) + 1 >= 0
+        if skip is not None:
+            counts[skip] = 0
+        lanes = self._count[: counts.max()] if len(counts) else self._count[:0]
+        owner, offset = np.nonzero(lanes < counts[:, None])
+        return k0[owner] + offset, owner
 
     def scan(self, pose: Pose2D, circles: FloatArray | None = None) -> FloatArray:
         """Ranges for a scanner at `pose`; circles are rows (x, y, radius) of other bodies."""
         p = self.params
         rmax = p.range_max_m
+        two_pi = 2.0 * math.pi
         ring = np.full(2 * p.beams, np.inf)
         c, s = math.cos(pose.yaw), math.sin(pose.yaw)
-        cos2, sin2 = self._cos2, self._sin2
+        base = pose.yaw + p.angle_min  # world angle of beam 0
+        cos2, sin2, inv_inc = self._cos2, self._sin2, self._inv_inc
 
-        # Edges in the scanner frame; keep those facing the scanner whose bounding box is within range.
-        near = (self._xmin <= pose.x + rmax) & (self._xmax >= pose.x - rmax)
-        near &= (self._ymin <= pose.y + rmax) & (self._ymax >= pose.y - rmax)
-        a = self._a[near] - (pose.x, pose.y)
-        b = self._b[near] - (pose.x, pose.y)
-        ax, ay = c * a[:, 0] + s * a[:, 1], c * a[:, 1] - s * a[:, 0]
-        bx, by = c * b[:, 0] + s * b[:, 1], c * b[:, 1] - s * b[:, 0]
-        ex, ey = bx - ax, by - ay
-        cross = ax * ey - ay * ex  # < 0: the scanner sees the edge's outer side; b -> a runs counter-clockwise
-        front = cross < -1e-12
-        if front.any():
-            ax, ay, bx, by, ex, ey, cross = ax[front], ay[front], bx[front], by[front], ex[front], ey[front], cross[front]
-            start = np.arctan2(by, bx)
-            sweep = np.mod(np.arctan2(ay, ax) - start, 2.0 * np.pi)
-            beams, owner = self._beam_runs(start, sweep)
-            t = cross[owner] / (cos2[beams] * ey[owner] - sin2[beams] * ex[owner])
-            np.minimum.at(ring, beams, t)
+        ax, ay, ex, ey, inv_len, inward = self._candidates(pose.x, pose.y)
+        if len(ax):
+            rx = ax - pose.x
+            ry = ay - pose.y
+            # Distance from the scanner to each edge's line, positive on the edge's outer side:
+            # only those edges face the scanner, and from there b -> a runs counter-clockwise.
+            h = (ry * ex - rx * ey) * inv_len
+            ang_a = np.arctan2(ry, rx)
+            ang_b = np.arctan2(ry + ey, rx + ex)
+            start = np.mod(ang_b - base, two_pi) * inv_inc
+            sweep = np.mod(ang_a - ang_b, two_pi) * inv_inc
+            beams, owner = self._runs(start, sweep, h < 1e-12)
+            if len(beams):
+                # A beam at world angle phi meets the line at h / cos(phi - inward normal angle).
+                phase = base - inward
+                t = h[owner] / np.cos(beams * p.angle_increment + phase[owner])
+                np.minimum.at(ring, beams, t)
 
         if circles is not None and len(circles):
             cc = np.asarray(circles, dtype=float).reshape(-1, 3)
@@ -104,9 +127,10 @@ class LaserScanner:
             seen = (dist > r) & (dist - r <= rmax)
             if seen.any():
                 mx, my, r, dist = mx[seen], my[seen], r[seen], dist[seen]
-                lx, ly = c * mx + s * my, c * my - s * mx
                 half = np.arcsin(r / dist)
-                beams, owner = self._beam_runs(np.arctan2(ly, lx) - half, 2.0 * half)
+                start = np.mod(np.arctan2(my, mx) - half - base, two_pi) * inv_inc
+                beams, owner = self._runs(start, 2.0 * half * inv_inc, None)
+                lx, ly = c * mx + s * my, c * my - s * mx  # centres in the scanner frame
                 proj = cos2[beams] * lx[owner] + sin2[beams] * ly[owner]
                 disc = np.maximum(proj * proj - (dist[owner] ** 2 - r[owner] ** 2), 0.0)
                 np.minimum.at(ring, beams, proj - np.sqrt(disc))

@@ -81,6 +81,7 @@ class Simulation:
         self.scanner = LaserScanner(self.config.scan, w.edges(), seed=self.config.seed)
         self.removed = set()
         self._battery_was_empty = self.battery.empty
+        self._robot_pose = self.physics.robot.pose()
 
     # -- inputs --------------------------------------------------------------------------------
     def command_robot(self, cmd: Twist2D) -> CommandStatus:
@@ -118,10 +119,10 @@ class Simulation:
         now = self.time
         robot_cmd = self.robot_gate.update(now, dt, enabled=not self.battery.empty)
         human_cmds = {hid: g.update(now, dt) for hid, g in self.human_gates.items()}
-        before = self.physics.robot.pose()
+        before = self._robot_pose
         self.physics.step(robot_cmd, human_cmds, dt)
         self.time = now + dt
-        after = self.physics.robot.pose()
+        after = self._robot_pose = self.physics.robot.pose()
         dist = math.hypot(after.x - before.x, after.y - before.y)
         base = self.world.charging_base
         to_base = math.hypot(after.x - base.position[0], after.y - base.position[1]) if base else math.inf
@@ -148,7 +149,7 @@ class Simulation:
     # -- outputs -------------------------------------------------------------------------------
     def robot_pose(self) -> Pose2D:
         """Ground truth in `map`."""
-        return self.physics.robot.pose()
+        return self._robot_pose
 
     def robot_twist(self) -> Twist2D:
         return self.physics.robot.body_twist()

@@ -1,0 +1,25 @@
+# HAVEN for ROS 2. `make demo` sets everything up and runs the main job; `make test` runs every test.
+.PHONY: setup demo test test-core bench lock clean
+
+setup:
+	@./scripts/setup.sh
+
+demo: setup
+	.venv/bin/haven demo
+
+test: setup
+	./scripts/test.sh
+
+# Core unit tests only (no ROS processes): seconds.
+test-core: setup
+	.venv/bin/pytest -q -m "not ros and not slow"
+
+bench: setup
+	.venv/bin/python bench/sim_speed.py
+	.venv/bin/python bench/odom_rate.py
+
+lock:
+	./scripts/lock.sh
+
+clean:
+	rm -rf .venv ros2_ws/build ros2_ws/install ros2_ws/log .pytest_cache .mypy_cache
