@@ -71,22 +71,21 @@ def run_case(world: World, rooms: list[str] | None, scan_every: int, steps: int)
     walkers = Wanderers(sim, rooms)
     cmd = Twist2D(0.5, 0.0, 0.3)
 
-    def loop(n: int) -> int:
-        hits = 0
+    def loop(n: int) -> None:
         for k in range(n):
             if k % 2 == 0:
                 sim.command_robot(cmd)
                 walkers.command()
             sim.step()
             if k % scan_every == 0:
-                hits = int(np.isfinite(sim.scan()).sum())
-        return hits
+                sim.scan()
 
     loop(50)
     start = [sim.human_poses()[h] for h in walkers.ids]
     t0 = time.perf_counter()
-    hits = loop(steps)
+    loop(steps)
     wall = time.perf_counter() - t0
+    hits = int(np.isfinite(sim.scan()).sum())
     moved = sum(1 for h, p in zip(walkers.ids, start) if sim.human_poses()[h].distance_to(p) > 0.05)
     sim_s = steps * sim.config.step_s
     return {"wall_s": wall, "rtf": sim_s / wall, "ms_per_step": 1e3 * wall / steps, "humans_moved": moved,

@@ -35,12 +35,8 @@ class CommandStatus(Enum):
 
 
 def clamp(cmd: Twist2D, limits: VelocityLimits) -> Twist2D:
-    def c(v: float, m: float) -> float:
-        return max(-m, min(m, v))
-
-    return Twist2D(
-        c(cmd.vx, limits.max_linear_mps), c(cmd.vy, limits.max_lateral_mps), c(cmd.wz, limits.max_angular_rps)
-    )
+    v, l, w = limits.max_linear_mps, limits.max_lateral_mps, limits.max_angular_rps
+    return Twist2D(max(-v, min(v, cmd.vx)), max(-l, min(l, cmd.vy)), max(-w, min(w, cmd.wz)))
 
 
 def _approach(current: float, target: float, max_step: float) -> float:
@@ -94,6 +90,7 @@ class CommandGate:
 
     def update(self, now: float, dt: float, enabled: bool = True) -> Twist2D:
         """Advance the ramp by dt; returns the velocity to apply during the next step."""
-        goal = self.target(now) if enabled else ZERO_TWIST
-        self.applied = ramp(self.applied, goal, self.limits, dt)
+        goal = self._target if enabled and now - self._stamp <= self.timeout_s else ZERO_TWIST
+        if goal != self.applied:
+            self.applied = ramp(self.applied, goal, self.limits, dt)
         return self.applied

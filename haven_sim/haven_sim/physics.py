@@ -9,6 +9,7 @@ directly would allow.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -19,8 +20,8 @@ from haven_sim.geometry import FloatArray, Pose2D, Twist2D
 ROBOT, HUMAN, WALL = 1, 2, 3
 # The property setters themselves: pymunk's attribute-name guard on Body.__setattr__ costs more
 # than the update in this per-step path.
-_set_velocity = pymunk.Body.velocity.fset
-_set_angular_velocity = pymunk.Body.angular_velocity.fset
+_set_velocity: Callable[[pymunk.Body, tuple[float, float]], None] = vars(pymunk.Body)["velocity"].fset
+_set_angular_velocity: Callable[[pymunk.Body, float], None] = vars(pymunk.Body)["angular_velocity"].fset
 
 
 @dataclass(frozen=True)
@@ -55,7 +56,8 @@ class _DrivenBody:
         self.shape.friction = 0.3
         self.control = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
         self._dt = 0.0
-        self._moving = True
+        self._last_cmd: Twist2D | None = None
+        self._last_heading = math.nan
         pivot = pymunk.PivotJoint(self.control, self.body, (0, 0), (0, 0))
         pivot.max_bias = 0.0
         pivot.max_force = spec.max_force_n
@@ -66,7 +68,7 @@ class _DrivenBody:
         self.place(pose)
 
     def place(self, pose: Pose2D) -> None:
-        self._moving = True
+        self._last_cmd = None
         for b in (self.body, self.control):
             b.position = (pose.x, pose.y)
             b.angle = pose.yaw
@@ -75,12 +77,12 @@ class _DrivenBody:
 
     def drive(self, cmd: Twist2D, dt: float) -> None:
         self._dt = dt
-        if not (cmd.vx or cmd.vy or cmd.wz or self._moving):
-            return  # standing still stays standing still: nothing to update
-        self._moving = bool(cmd.vx or cmd.vy or cmd.wz)
         # Chipmunk moves bodies with the velocity solved in the previous step, so this velocity is
         # integrated from angle + w*dt to angle + 2*w*dt: aim along the middle of that (the arc's chord).
         heading = self.body.angle + 1.5 * cmd.wz * dt
+        if cmd == self._last_cmd and heading == self._last_heading:
+            return  # the control body already moves exactly so
+        self._last_cmd, self._last_heading = cmd, heading
         c, s = math.cos(heading), math.sin(heading)
         _set_velocity(self.control, (c * cmd.vx - s * cmd.vy, s * cmd.vx + c * cmd.vy))
         _set_angular_velocity(self.control, cmd.wz)

@@ -6,6 +6,7 @@ Readings follow REP-117: +inf for no return within range_max, -inf for a return 
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -52,6 +53,7 @@ class LaserScanner:
         self._sin2 = np.tile(np.sin(angles), 2)
         self._inv_inc = 1.0 / params.angle_increment
         self._count = np.arange(params.beams + 1)
+        self._ring = np.empty(2 * params.beams)
         self._rng = np.random.default_rng(seed)
         self.set_edges(edges)
 
@@ -92,12 +94,13 @@ class LaserScanner:
         owner, offset = np.nonzero(lanes < counts[:, None])
         return k0[owner] + offset, owner
 
-    def scan(self, pose: Pose2D, circles: FloatArray | None = None) -> FloatArray:
-        """Ranges for a scanner at `pose`; circles are rows (x, y, radius) of other bodies."""
+    def scan(self, pose: Pose2D, circles: Sequence[tuple[float, float, float]] | FloatArray | None = None) -> FloatArray:
+        """Ranges for a scanner at `pose`; circles are (x, y, radius) of other bodies."""
         p = self.params
         rmax = p.range_max_m
         two_pi = 2.0 * math.pi
-        ring = np.full(2 * p.beams, np.inf)
+        ring = self._ring
+        ring.fill(np.inf)
         c, s = math.cos(pose.yaw), math.sin(pose.yaw)
         base = pose.yaw + p.angle_min  # world angle of beam 0
         cos2, sin2, inv_inc = self._cos2, self._sin2, self._inv_inc
@@ -121,16 +124,18 @@ class LaserScanner:
                 np.minimum.at(ring, beams, t)
 
         if circles is not None and len(circles):
-            cc = np.asarray(circles, dtype=float).reshape(-1, 3)
-            mx, my, r = cc[:, 0] - pose.x, cc[:, 1] - pose.y, cc[:, 2]
-            dist = np.hypot(mx, my)
-            seen = (dist > r) & (dist - r <= rmax)
-            if seen.any():
-                mx, my, r, dist = mx[seen], my[seen], r[seen], dist[seen]
+            # Few people are ever in range: pick them out in plain Python before going to numpy.
+            seen = []
+            for cx, cy, cr in circles:
+                dx, dy = cx - pose.x, cy - pose.y
+                d = math.hypot(dx, dy)
+                if cr < d <= rmax + cr:
+                    seen.append((c * dx + s * dy, c * dy - s * dx, cr, d))  # centre in the scanner frame
+            if seen:
+                lx, ly, r, dist = np.array(seen).T
                 half = np.arcsin(r / dist)
-                start = np.mod(np.arctan2(my, mx) - half - base, two_pi) * inv_inc
+                start = np.mod(np.arctan2(ly, lx) - half - p.angle_min, two_pi) * inv_inc
                 beams, owner = self._runs(start, 2.0 * half * inv_inc, None)
-                lx, ly = c * mx + s * my, c * my - s * mx  # centres in the scanner frame
                 proj = cos2[beams] * lx[owner] + sin2[beams] * ly[owner]
                 disc = np.maximum(proj * proj - (dist[owner] ** 2 - r[owner] ** 2), 0.0)
                 np.minimum.at(ring, beams, proj - np.sqrt(disc))

@@ -10,7 +10,6 @@ import math
 from dataclasses import dataclass, field
 from typing import Any
 
-import numpy as np
 
 from haven_sim.battery import Battery, BatteryParams, BatteryReading
 from haven_sim.commands import CommandGate, CommandStatus, VelocityLimits
@@ -160,9 +159,9 @@ class Simulation:
     def human_poses(self) -> dict[str, Pose2D]:
         return self.physics.human_poses()
 
-    def human_circles(self) -> FloatArray:
-        poses = self.human_poses().values()
-        return np.array([(p.x, p.y, HUMAN_BODY.radius_m) for p in poses]).reshape(-1, 3)
+    def human_circles(self) -> list[tuple[float, float, float]]:
+        r = HUMAN_BODY.radius_m
+        return [(p.x, p.y, r) for p in self.physics.human_poses().values()]
 
     def scan(self) -> FloatArray:
         return self.scanner.scan(self.robot_pose(), self.human_circles())

@@ -68,6 +68,12 @@ class DemoDriver(Node):
                 "contacts": self.contacts,
                 "odom_rate_hz_sim": round((self.odom_count - 1) / span, 2) if span > 0 else None,
             }
+            battery = "n/a" if self.battery is None else f"{100 * self.battery:.1f} %"
+            print(
+                f"demo: drove {summary['legs']} legs, {summary['distance_m']:.2f} m, battery {battery}, "
+                f"{self.contacts} contact(s), /odom at {summary['odom_rate_hz_sim']} Hz of sim time",
+                flush=True,
+            )
             print(json.dumps(summary), flush=True)
             raise SystemExit(0)
 
