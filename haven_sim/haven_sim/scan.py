@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 import numpy.typing as npt
@@ -62,9 +63,9 @@ class LaserScanner:
         self._edges = e
         self._lo = np.minimum(e[:, 0:2], e[:, 2:4])
         self._hi = np.maximum(e[:, 0:2], e[:, 2:4])
-        self._cells: dict[tuple[int, int], tuple[FloatArray, ...]] = {}
+        self._cells: dict[tuple[int, int], tuple[npt.NDArray[Any], ...]] = {}
 
-    def _candidates(self, x: float, y: float) -> tuple[FloatArray, ...]:
+    def _candidates(self, x: float, y: float) -> tuple[npt.NDArray[Any], ...]:
         """Edges that can be within range_max of any point of the cell holding (x, y)."""
         size = self.params.range_max_m
         key = (math.floor(x / size), math.floor(y / size))
@@ -74,9 +75,11 @@ class LaserScanner:
             x1, y1 = x0 + 3 * size, y0 + 3 * size
             near = (self._lo[:, 0] <= x1) & (self._hi[:, 0] >= x0) & (self._lo[:, 1] <= y1) & (self._hi[:, 1] >= y0)
             e = self._edges[near]
-            ex, ey = e[:, 2] - e[:, 0], e[:, 3] - e[:, 1]
-            # Per edge: start point, direction, 1/length and the angle of its inward normal (-n).
-            cell = (e[:, 0].copy(), e[:, 1].copy(), ex, ey, 1.0 / np.hypot(ex, ey), np.arctan2(ex, -ey))
+            a = e[:, 0] + 1j * e[:, 1]
+            b = e[:, 2] + 1j * e[:, 3]
+            # Per edge, as complex numbers: end points, the conjugate unit direction, and the
+            # angle of the inward normal (to the left of a counter-clockwise edge).
+            cell = (a, b, np.conj(b - a) / np.abs(b - a), np.angle(1j * (b - a)))
             self._cells[key] = cell
         return cell
 
@@ -87,7 +90,7 @@ class LaserScanner:
         [start, start + sweep]; start >= 0. Beams index a doubled ring (0 .. 2 * beams) so a run
         crossing angle_max needs no wrap-around."""
         k0 = (start + (1.0 - 1e-9)).astype(np.intp)  # ceil, for start >= 0
-        counts = (start + sweep + 1e-9).astype(np.intp) - k0 + 1  # floor(end) - ceil(start) + 1 >= 0
+        counts = (start + sweep + (1.0 + 1e-9)).astype(np.intp) - k0  # floor(end) - ceil(start) + 1 >= 0
         if skip is not None:
             counts[skip] = 0
         lanes = self._count[: counts.max()] if len(counts) else self._count[:0]
@@ -105,22 +108,20 @@ class LaserScanner:
         base = pose.yaw + p.angle_min  # world angle of beam 0
         cos2, sin2, inv_inc = self._cos2, self._sin2, self._inv_inc
 
-        ax, ay, ex, ey, inv_len, inward = self._candidates(pose.x, pose.y)
-        if len(ax):
-            rx = ax - pose.x
-            ry = ay - pose.y
+        a, b, conj_unit, inward = self._candidates(pose.x, pose.y)
+        if len(a):
+            here = complex(pose.x, pose.y)
+            za, zb = a - here, b - here
             # Distance from the scanner to each edge's line, positive on the edge's outer side:
             # only those edges face the scanner, and from there b -> a runs counter-clockwise.
-            h = (ry * ex - rx * ey) * inv_len
-            ang_a = np.arctan2(ry, rx)
-            ang_b = np.arctan2(ry + ey, rx + ex)
-            start = np.mod(ang_b - base, two_pi) * inv_inc
-            sweep = np.mod(ang_a - ang_b, two_pi) * inv_inc
-            beams, owner = self._runs(start, sweep, h < 1e-12)
+            h = (za * conj_unit).imag
+            fa = np.arctan2(za.imag, za.real) * inv_inc  # angles in beam steps
+            fb = np.arctan2(zb.imag, zb.real) * inv_inc
+            start = np.mod(fb - base * inv_inc, p.beams)
+            beams, owner = self._runs(start, np.mod(fa - fb, p.beams), h < 1e-12)
             if len(beams):
                 # A beam at world angle phi meets the line at h / cos(phi - inward normal angle).
-                phase = base - inward
-                t = h[owner] / np.cos(beams * p.angle_increment + phase[owner])
+                t = h[owner] / np.cos(beams * p.angle_increment + (base - inward)[owner])
                 np.minimum.at(ring, beams, t)
 
         if circles is not None and len(circles):
