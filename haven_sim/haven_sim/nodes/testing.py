@@ -13,7 +13,7 @@ import signal
 import subprocess
 import sys
 import time
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from importlib import resources
 from typing import Any
 
@@ -136,3 +136,12 @@ class RosHarness:
     def wait_for_messages(self, received: list[Any], count: int = 1, timeout_s: float = 15.0) -> None:
         if not self.spin_until(lambda: len(received) >= count, timeout_s):
             raise TimeoutError(f"got {len(received)} of {count} messages within {timeout_s} s")
+
+
+def harness() -> Iterator[RosHarness]:
+    """Body of the `ros` pytest fixture: a harness on a domain of its own, closed afterwards."""
+    h = RosHarness()
+    try:
+        yield h
+    finally:
+        h.close()
