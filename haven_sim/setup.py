@@ -26,9 +26,13 @@ setup(
             # `ros2 run haven_sim <name>` on a ROS install
             "sim_node = haven_sim.nodes.sim_node:main",
             "mux_node = haven_sim.nodes.mux_node:main",
+            "planner_node = haven_sim.nodes.planner_node:main",
+            "controller_node = haven_sim.nodes.controller_node:main",
             # the same nodes as plain commands for the pip setup
             "haven-sim = haven_sim.nodes.sim_node:main",
             "haven-mux = haven_sim.nodes.mux_node:main",
+            "haven-planner = haven_sim.nodes.planner_node:main",
+            "haven-controller = haven_sim.nodes.controller_node:main",
         ],
     },
 )

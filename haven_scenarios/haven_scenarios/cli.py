@@ -1,6 +1,6 @@
 """The `haven` command: starts HAVEN's nodes as plain Python processes and supervises them.
 
-    haven sim  [--world W] [--rtf X] [--duration S]   simulator + velocity mux until Ctrl-C
+    haven sim  [--world W] [--rtf X] [--duration S]   simulator, mux, planner, controller until Ctrl-C
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
 
 Discovery stays on this machine unless --network is given (study data stays local).
@@ -14,6 +14,9 @@ from collections.abc import Sequence
 
 from haven_scenarios.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 from haven_sim.world import WorldError, load_world, resolve_world_path
+
+
+SUITE = ("sim", "mux", "planner", "controller")
 
 
 def _positive(text: str) -> float:
@@ -32,12 +35,14 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--domain-id", type=int, default=None, help="ROS_DOMAIN_ID for the nodes (default: inherited)")
     p.add_argument("--network", action="store_true", help="allow DDS discovery beyond localhost")
     p.add_argument("--params-file", default=None, help="ROS parameter YAML passed to every node")
+    p.add_argument("--without", nargs="+", default=[], choices=SUITE[1:], metavar="NODE",
+                   help="leave out our planner, controller or mux (to run your own in their place)")
 
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    sim = sub.add_parser("sim", help="run the simulator and the velocity mux until Ctrl-C")
+    sim = sub.add_parser("sim", help="run the simulator, velocity mux, planner and controller until Ctrl-C")
     _common(sim)
     sim.add_argument("--duration", type=_positive, default=None, help="stop after this many wall seconds")
     demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
@@ -50,10 +55,14 @@ def build_parser() -> argparse.ArgumentParser:
 def _suite(args: argparse.Namespace) -> list[ProcessSpec]:
     world = str(resolve_world_path(args.world))
     extra = ["--params-file", args.params_file] if args.params_file else []
-    return [
-        ProcessSpec("sim", node_argv("haven_sim.nodes.sim_node", {"world": world, "real_time_factor": args.rtf}, extra)),
-        ProcessSpec("mux", node_argv("haven_sim.nodes.mux_node", {"use_sim_time": True}, extra)),
-    ]
+    sim_time = {"use_sim_time": True}
+    nodes = {
+        "sim": node_argv("haven_sim.nodes.sim_node", {"world": world, "real_time_factor": args.rtf}, extra),
+        "mux": node_argv("haven_sim.nodes.mux_node", sim_time, extra),
+        "planner": node_argv("haven_sim.nodes.planner_node", sim_time, extra),
+        "controller": node_argv("haven_sim.nodes.controller_node", sim_time, extra),
+    }
+    return [ProcessSpec(name, argv) for name, argv in nodes.items() if name not in args.without]
 
 
 def main(argv: Sequence[str] | None = None) -> int:

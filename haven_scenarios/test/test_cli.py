@@ -41,7 +41,7 @@ def test_sim_runs_and_ctrl_c_stops_every_process(ros):
     proc = start_haven(ros, "sim", "--rtf", "2")
     ros.wait_for_messages(odom, 10)
     kids = children_of(proc.pid)
-    assert len(kids) == 2
+    assert len(kids) == 4  # sim, mux, planner, controller
     os.killpg(proc.pid, signal.SIGINT)  # what a terminal's Ctrl-C does
     assert proc.wait(timeout=20) == 0
     assert not [k for k in kids if alive(k)]

@@ -223,9 +223,11 @@ class Navigator:
         g = self.grid
         data = g.data.copy()
         res = g.resolution_m
-        r_cells = int(math.ceil(self.params.human_radius_m / res))
+        # As wide as the "on the path" test, so that the detour itself does not count as blocked.
+        radius = self.params.human_radius_m + self.params.path_clearance_m
+        r_cells = int(math.ceil(radius / res))
         rr, cc = np.mgrid[-r_cells : r_cells + 1, -r_cells : r_cells + 1]
-        disk = rr**2 + cc**2 <= (self.params.human_radius_m / res) ** 2
+        disk = rr**2 + cc**2 <= (radius / res) ** 2
         marks: list[tuple[int, int]] = []
         for hx, hy in humans:
             r0, c0 = g.cell_of(hx, hy)

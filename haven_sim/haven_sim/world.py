@@ -381,4 +381,5 @@ class _Parser:
             for s in shapes:
                 if points_in_polygon(xs, ys, list(s.polygon))[0]:
                     what = f"{s.kind} {s.id}".strip()
-                    raise self.fail(key, f"({pose.x:g}, {pose.y:g}) lies inside a {what}")
+                    article = "an" if what[0] in "aeiou" else "a"
+                    raise self.fail(key, f"({pose.x:g}, {pose.y:g}) lies inside {article} {what}")

@@ -48,7 +48,7 @@ BAD = [
     (lambda d: d["gems"][1].update(id="r1"), "gems[1].id", "duplicate"),
     (lambda d: d["gems"][0].update(owner="dog"), "gems[0].owner", "must be one of"),
     (lambda d: d["robot"].update(start=[4.0, 1.0, 0.0]), "robot.start", "inside a wall"),
-    (lambda d: d["humans"][0].update(start=[6.3, 3.8]), "humans[0].start", "inside a obstacle"),
+    (lambda d: d["humans"][0].update(start=[6.3, 3.8]), "humans[0].start", "inside an obstacle"),
     (lambda d: d["rooms"][0].update(centre=[1, "x"]), "rooms[0].centre[1]", "finite number"),
     (lambda d: d["hallways"][0].update(centreline=[[0, 0]]), "hallways[0].centreline", "at least 2"),
     (

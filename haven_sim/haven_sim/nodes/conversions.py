@@ -8,8 +8,8 @@ from typing import Any
 
 import numpy as np
 from builtin_interfaces.msg import Time
-from geometry_msgs.msg import Pose, PoseArray, Quaternion, Twist
-from nav_msgs.msg import OccupancyGrid, Odometry
+from geometry_msgs.msg import Pose, PoseArray, PoseStamped, Quaternion, Twist
+from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import String
@@ -166,3 +166,23 @@ def event_msg(event: dict[str, Any]) -> String:
 def event_from_msg(msg: String) -> dict[str, Any]:
     out: dict[str, Any] = json.loads(msg.data)
     return out
+
+
+def path_msg(stamp: float, poses: list[Pose2D], frame_id: str = "map") -> Path:
+    msg = Path()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = frame_id
+    for p in poses:
+        ps = PoseStamped()
+        ps.header = msg.header
+        ps.pose = pose_msg(p)
+        msg.poses.append(ps)
+    return msg
+
+
+def path_from_msg(msg: Path) -> list[Pose2D]:
+    return [pose_from_msg(ps.pose) for ps in msg.poses]
+
+
+def humans_from_msg(msg: PoseArray) -> list[Pose2D]:
+    return [pose_from_msg(p) for p in msg.poses]
