@@ -1,0 +1,124 @@
+"""Cross-process navigation: goal in -> /plan out -> the simulated robot arrives; humans; foreign paths."""
+
+import math
+
+import pytest
+import yaml
+from geometry_msgs.msg import PoseStamped
+from nav_msgs.msg import Odometry, Path
+from std_msgs.msg import Bool, String
+
+from haven_sim.geometry import Pose2D
+from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import qos
+from haven_sim.path_style import SegmentKind, classify
+
+pytestmark = [pytest.mark.ros, pytest.mark.slow]
+SIM, MUX, PLANNER, CONTROLLER = (f"haven_sim.nodes.{n}" for n in ("sim_node", "mux_node", "planner_node", "controller_node"))
+
+
+def start_suite(ros, world="small_test", rtf=4.0, planner=True):
+    ros.start(SIM, {"world": world, "real_time_factor": rtf})
+    ros.start(MUX, {"use_sim_time": True})
+    ros.start(CONTROLLER, {"use_sim_time": True})
+    if planner:
+        ros.start(PLANNER, {"use_sim_time": True})
+
+
+def goal_msg(x, y, yaw=0.0, frame="map"):
+    msg = PoseStamped()
+    msg.header.frame_id = frame
+    msg.pose = conv.pose_msg(Pose2D(x, y, yaw))
+    return msg
+
+
+def events_of(received, kind):
+    return [e for e in map(conv.event_from_msg, received) if e["type"] == kind]
+
+
+def test_goal_pose_to_plan_to_arrival_without_touching_walls(ros):
+    events = ros.collect(String, "/haven/events", qos.EVENTS)
+    plans = ros.collect(Path, "/plan", qos.LATCHED)
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    goal = ros.node.create_publisher(PoseStamped, "/goal_pose", qos.RELIABLE)
+    start_suite(ros)
+    ros.wait_matched(goal)
+    ros.wait_for_messages(odom, 5)
+    goal.publish(goal_msg(7.2, 4.5, math.pi / 2))
+    assert ros.spin_until(lambda: events_of(events, "goal_reached"), 120)
+    path = conv.path_from_msg(plans[-1])
+    assert plans[-1].header.frame_id == "map"
+    assert [s.kind for s in classify(path)][0] in (SegmentKind.ARC, SegmentKind.ROTATE, SegmentKind.STRAIGHT)
+    p = conv.pose_from_msg(odom[-1].pose.pose)
+    assert math.hypot(p.x - 7.2, p.y - 4.5) <= 0.1
+    assert abs(math.remainder(p.yaw - math.pi / 2, 2 * math.pi)) <= math.radians(6)
+    made = events_of(events, "plan_made")
+    assert len(made) == 1 and made[0]["goal"] == [7.2, 4.5]
+    assert events_of(events, "contact_begin") == []
+
+
+def test_unreachable_goal_is_refused_with_an_event(ros):
+    events = ros.collect(String, "/haven/events", qos.EVENTS)
+    goal = ros.node.create_publisher(PoseStamped, "/goal_pose", qos.RELIABLE)
+    start_suite(ros)
+    ros.wait_matched(goal)
+    goal.publish(goal_msg(6.3, 3.8))  # inside the pillar
+    assert ros.spin_until(lambda: events_of(events, "plan_refused"), 30)
+    assert "inside an obstacle" in events_of(events, "plan_refused")[0]["reason"]
+    goal.publish(goal_msg(1.0, 1.0, frame="base_link"))
+    assert ros.spin_until(lambda: len(events_of(events, "plan_refused")) == 2, 30)
+    assert "frame 'base_link'" in events_of(events, "plan_refused")[1]["reason"]
+
+
+def corridor_world(tmp_path, human):
+    data = {
+        "name": "corridor",
+        "walls": [
+            {"segment": [[0, 0], [12, 0]], "thickness": 0.1},
+            {"segment": [[12, 0], [12, 3]], "thickness": 0.1},
+            {"segment": [[12, 3], [0, 3]], "thickness": 0.1},
+            {"segment": [[0, 3], [0, 0]], "thickness": 0.1},
+        ],
+        "robot": {"start": [1.0, 1.5, 0.0]},
+        "humans": [{"id": "h1", "start": list(human)}],
+    }
+    path = tmp_path / "corridor.yaml"
+    path.write_text(yaml.safe_dump(data))
+    return str(path)
+
+
+@pytest.mark.parametrize("human,expected", [((2.8, 1.5, 3.14), "waiting"), ((6.0, 1.25, 3.14), "replanned")])
+def test_human_on_the_path_makes_the_robot_wait_or_detour(ros, tmp_path, human, expected):
+    events = ros.collect(String, "/haven/events", qos.EVENTS)
+    waits = ros.collect(Bool, "/haven/wait", qos.LATCHED)
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    goal = ros.node.create_publisher(PoseStamped, "/goal_pose", qos.RELIABLE)
+    start_suite(ros, world=corridor_world(tmp_path, human))
+    ros.wait_matched(goal)
+    ros.wait_for_messages(odom, 5)
+    goal.publish(goal_msg(11.0, 1.5))
+    assert ros.spin_until(lambda: events_of(events, expected), 60)
+    if expected == "waiting":
+        assert ros.spin_until(lambda: waits and waits[-1].data, 10)
+        t0 = conv.time_from_msg(odom[-1].header.stamp)
+        ros.spin_until(lambda: conv.time_from_msg(odom[-1].header.stamp) > t0 + 3.0, 30)
+        assert conv.pose_from_msg(odom[-1].pose.pose).distance_to((1.0, 1.5)) < 0.05  # held still
+        assert "from the robot" in events_of(events, "waiting")[0]["reason"]
+    else:
+        assert events_of(events, "replanned")[0]["side"] == "left"
+        assert ros.spin_until(lambda: events_of(events, "goal_reached"), 120)
+        assert events_of(events, "contact_begin") == []
+
+
+def test_controller_follows_a_path_published_by_someone_else(ros):
+    """No planner of ours: the test is the planner and publishes /plan itself."""
+    events = ros.collect(String, "/haven/events", qos.EVENTS)
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    plan = ros.node.create_publisher(Path, "/plan", qos.LATCHED)
+    start_suite(ros, planner=False)
+    ros.wait_matched(plan)
+    ros.wait_for_messages(odom, 5)
+    poses = [Pose2D(1.0 + 0.1 * i, 2.5 - 0.04 * i, -0.38) for i in range(26)]  # 2.8 m, slightly downhill
+    plan.publish(conv.path_msg(0.0, poses))
+    assert ros.spin_until(lambda: events_of(events, "goal_reached"), 90)
+    assert conv.pose_from_msg(odom[-1].pose.pose).distance_to((3.5, 1.5)) <= 0.1
