@@ -21,6 +21,7 @@ setup(
         "console_scripts": [
             "haven = haven_scenarios.cli:main",
             "demo_driver = haven_scenarios.nodes.demo_driver:main",
+            "goal_client = haven_scenarios.nodes.goal_client:main",
         ],
     },
 )

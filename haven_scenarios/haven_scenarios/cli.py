@@ -1,6 +1,7 @@
 """The `haven` command: starts HAVEN's nodes as plain Python processes and supervises them.
 
     haven sim  [--world W] [--rtf X] [--duration S]   simulator, mux, planner, controller until Ctrl-C
+    haven goto X Y [YAW]                              send a goal to a running suite, wait for arrival
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
 
 Discovery stays on this machine unless --network is given (study data stays local).
@@ -45,6 +46,13 @@ def build_parser() -> argparse.ArgumentParser:
     sim = sub.add_parser("sim", help="run the simulator, velocity mux, planner and controller until Ctrl-C")
     _common(sim)
     sim.add_argument("--duration", type=_positive, default=None, help="stop after this many wall seconds")
+    goto = sub.add_parser("goto", help="send a goal to a running suite (like RViz's 2D Goal Pose) and wait for it")
+    goto.add_argument("x", type=float)
+    goto.add_argument("y", type=float)
+    goto.add_argument("yaw", type=float, nargs="?", default=0.0, help="radians (default 0)")
+    goto.add_argument("--timeout", type=_positive, default=120.0, help="sim seconds to wait for arrival")
+    goto.add_argument("--domain-id", type=int, default=None)
+    goto.add_argument("--network", action="store_true")
     demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
     _common(demo)
     demo.set_defaults(rtf=4.0)
@@ -65,8 +73,21 @@ def _suite(args: argparse.Namespace) -> list[ProcessSpec]:
     return [ProcessSpec(name, argv) for name, argv in nodes.items() if name not in args.without]
 
 
+def _goto(args: argparse.Namespace) -> int:
+    params = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
+    env = ros_environment(network=args.network, domain_id=args.domain_id)
+    with Supervisor(env) as sup:
+        sup.install_signal_handlers()
+        sup.start(ProcessSpec("goal_client", node_argv("haven_scenarios.nodes.goal_client", params)))
+        exited = sup.wait()
+        sup.stop()
+    return 1 if exited is None else exited.code
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if args.command == "goto":
+        return _goto(args)
     try:
         load_world(resolve_world_path(args.world))  # fail before starting anything
     except WorldError as e:

@@ -89,3 +89,17 @@ def test_demo_drives_a_square_and_reports(ros):
     assert summary["contacts"] == 0
     assert summary["battery"] == pytest.approx(1.0 - 6.0 / 100.0, abs=0.01)
     assert summary["odom_rate_hz_sim"] == pytest.approx(50.0, rel=0.05)
+
+
+@pytest.mark.slow
+def test_goto_sends_a_goal_to_a_running_suite_and_waits_for_arrival(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    start_haven(ros, "sim", "--rtf", "4")
+    ros.wait_for_messages(odom, 5)
+    r = ros.run([*HAVEN, "goto", "6.5", "1.5", "--domain-id", str(ros.domain_id)], timeout_s=120)
+    assert r.returncode == 0, r.stdout + r.stderr
+    lines = r.stdout.splitlines()
+    assert lines[0].startswith("goto: sent goal (6.50, 1.50")
+    assert any("plan_made" in line for line in lines) and "goal_reached" in lines[-1]
+    refused = ros.run([*HAVEN, "goto", "6.3", "3.8", "--domain-id", str(ros.domain_id)], timeout_s=60)
+    assert refused.returncode == 1 and "inside an obstacle" in refused.stdout

@@ -1,0 +1,70 @@
+"""Sends one goal on /goal_pose (as RViz's "2D Goal Pose" does) and reports what became of it.
+
+Exits 0 when the controller reports `goal_reached`, 1 when the planner refuses the goal or the
+timeout (sim seconds) passes; prints the planner's and controller's events as they come.
+"""
+
+from __future__ import annotations
+
+import sys
+
+from geometry_msgs.msg import PoseStamped
+from rclpy.node import Node
+from std_msgs.msg import String
+
+from haven_sim.geometry import Pose2D
+from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import qos
+from haven_sim.nodes.runner import run_node
+
+SHOWN = {"plan_made", "plan_refused", "waiting", "resumed", "replanned", "reverted", "goal_reached"}
+
+
+class GoalClient(Node):
+    def __init__(self) -> None:
+        super().__init__("goal_client")
+        d = self.declare_parameter
+        self.goal = Pose2D(d("x", 0.0).value, d("y", 0.0).value, d("yaw", 0.0).value)
+        self.timeout_s = d("timeout_s", 120.0).value
+        self.pub = self.create_publisher(PoseStamped, "goal_pose", qos.RELIABLE)
+        self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
+        self.sent_at: float | None = None
+        self.create_timer(0.1, self._tick)
+
+    def _now(self) -> float:
+        return self.get_clock().now().nanoseconds * 1e-9
+
+    def _tick(self) -> None:
+        if self.sent_at is None:
+            if self.pub.get_subscription_count() == 0:
+                return  # wait for the planner to be there
+            msg = PoseStamped()
+            msg.header.frame_id = "map"
+            msg.header.stamp = conv.time_msg(self._now())
+            msg.pose = conv.pose_msg(self.goal)
+            self.pub.publish(msg)
+            self.sent_at = self._now()
+            print(f"goto: sent goal ({self.goal.x:.2f}, {self.goal.y:.2f}, yaw {self.goal.yaw:.2f})", flush=True)
+        elif self._now() - self.sent_at > self.timeout_s:
+            print(f"goto: no arrival within {self.timeout_s:g} s", flush=True)
+            raise SystemExit(1)
+
+    def _on_event(self, msg: String) -> None:
+        event = conv.event_from_msg(msg)
+        kind = event.get("type")
+        if self.sent_at is None or kind not in SHOWN:
+            return
+        detail = ", ".join(f"{k}={v}" for k, v in event.items() if k not in ("type", "source", "stamp"))
+        print(f"goto: {kind} at t={event.get('stamp')} {detail}", flush=True)
+        if kind == "goal_reached":
+            raise SystemExit(0)
+        if kind == "plan_refused":
+            raise SystemExit(1)
+
+
+def main(args: list[str] | None = None) -> None:
+    sys.exit(run_node(GoalClient, args))
+
+
+if __name__ == "__main__":
+    main()
