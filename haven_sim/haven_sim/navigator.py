@@ -159,7 +159,8 @@ class Navigator:
                 out.events.append({"type": "resumed"})
             return out
         if self.state is NavState.DETOUR and self._progress < self._diverge:
-            if self._blocker(self.original, 0, humans) is None:
+            _, behind = distance_to_polyline(_poly(self.original), robot.x, robot.y)
+            if self._blocker(self.original, behind, humans) is None:
                 # The human left the original path before the robot reached the detour: go back.
                 self.active, self.state, self._progress, self.detour_side = self.original, NavState.FOLLOWING, 0, ""
                 self._advance(robot)

@@ -87,8 +87,12 @@ class PlannerNode(Node):
     def _on_goal(self, msg: PoseStamped) -> None:
         goal = conv.pose_from_msg(msg.pose)
         frame = msg.header.frame_id or self.map_frame
-        if frame not in (self.map_frame, "odom") or not all(math.isfinite(v) for v in goal):
-            reason = f"goal frame '{frame}' is not '{self.map_frame}'" if frame not in (self.map_frame, "odom") else "goal has non-finite values"
+        reason = None
+        if frame not in (self.map_frame, "odom"):  # odom coincides with map here (no drift by default)
+            reason = f"goal frame '{frame}' is not '{self.map_frame}'"
+        elif not all(math.isfinite(v) for v in goal):
+            reason = "goal has non-finite values"
+        if reason is not None:
             self._emit({"type": "plan_refused", "reason": reason})
             self.get_logger().warning(f"refused goal: {reason}")
             return
