@@ -1,3 +1,5 @@
+from glob import glob
+
 from setuptools import find_packages, setup
 
 package_name = "haven_viz"
@@ -6,16 +8,23 @@ setup(
     name=package_name,
     version="0.1.0",
     packages=find_packages(exclude=["test"]),
-    package_data={package_name: ["py.typed"]},
+    package_data={package_name: ["py.typed", "rviz/*.rviz", "foxglove/*.json"]},
     data_files=[
         ("share/ament_index/resource_index/packages", [f"resource/{package_name}"]),
         (f"share/{package_name}", ["package.xml"]),
+        (f"share/{package_name}/rviz", glob("haven_viz/rviz/*.rviz")),
+        (f"share/{package_name}/foxglove", glob("haven_viz/foxglove/*.json")),
     ],
-    install_requires=["setuptools", "haven_sim"],
+    install_requires=["setuptools", "haven_sim", "matplotlib"],
     zip_safe=True,
     maintainer="HAVEN maintainers",
     maintainer_email="haven@example.org",
     description="HAVEN AR cue markers and viewer configs",
     license="Apache-2.0",
-    entry_points={"console_scripts": []},
+    entry_points={
+        "console_scripts": [
+            "viz_node = haven_viz.nodes.viz_node:main",
+            "haven-viz = haven_viz.nodes.viz_node:main",
+        ],
+    },
 )

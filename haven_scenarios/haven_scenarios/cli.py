@@ -1,6 +1,6 @@
 """The `haven` command: starts HAVEN's nodes as plain Python processes and supervises them.
 
-    haven sim  [--world W] [--rtf X] [--duration S]   simulator, mux, planner, controller until Ctrl-C
+    haven sim  [--world W] [--rtf X] [--duration S]   simulator, mux, planner, controller, viz until Ctrl-C
     haven goto X Y [YAW]                              send a goal to a running suite, wait for arrival
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
 
@@ -17,7 +17,7 @@ from haven_scenarios.supervisor import ProcessSpec, Supervisor, node_argv, ros_e
 from haven_sim.world import WorldError, load_world, resolve_world_path
 
 
-SUITE = ("sim", "mux", "planner", "controller")
+SUITE = ("sim", "mux", "planner", "controller", "viz")
 
 
 def _positive(text: str) -> float:
@@ -37,13 +37,13 @@ def _common(p: argparse.ArgumentParser) -> None:
     p.add_argument("--network", action="store_true", help="allow DDS discovery beyond localhost")
     p.add_argument("--params-file", default=None, help="ROS parameter YAML passed to every node")
     p.add_argument("--without", nargs="+", default=[], choices=SUITE[1:], metavar="NODE",
-                   help="leave out our planner, controller or mux (to run your own in their place)")
+                   help="leave out our mux, planner, controller or viz (to run your own in their place)")
 
 
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    sim = sub.add_parser("sim", help="run the simulator, velocity mux, planner and controller until Ctrl-C")
+    sim = sub.add_parser("sim", help="run the simulator, velocity mux, planner, controller and viz until Ctrl-C")
     _common(sim)
     sim.add_argument("--duration", type=_positive, default=None, help="stop after this many wall seconds")
     goto = sub.add_parser("goto", help="send a goal to a running suite (like RViz's 2D Goal Pose) and wait for it")
@@ -69,6 +69,7 @@ def _suite(args: argparse.Namespace) -> list[ProcessSpec]:
         "mux": node_argv("haven_sim.nodes.mux_node", sim_time, extra),
         "planner": node_argv("haven_sim.nodes.planner_node", sim_time, extra),
         "controller": node_argv("haven_sim.nodes.controller_node", sim_time, extra),
+        "viz": node_argv("haven_viz.nodes.viz_node", {**sim_time, "world": world}, extra),
     }
     return [ProcessSpec(name, argv) for name, argv in nodes.items() if name not in args.without]
 

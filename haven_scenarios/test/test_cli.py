@@ -6,6 +6,7 @@ import signal
 import subprocess
 import sys
 import time
+from importlib import resources
 
 import pytest
 from nav_msgs.msg import Odometry
@@ -37,11 +38,15 @@ def start_haven(ros, *args):
 
 
 def test_sim_runs_and_ctrl_c_stops_every_process(ros):
+    """With the packaged parameter file, which every node must accept."""
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
-    proc = start_haven(ros, "sim", "--rtf", "2")
+    params = resources.files("haven_sim") / "config" / "haven.yaml"
+    proc = start_haven(ros, "sim", "--rtf", "2", "--params-file", str(params))
     ros.wait_for_messages(odom, 10)
+    ros.spin_until(lambda: ros.node.count_publishers("/haven/ar_markers") > 0 and ros.node.count_publishers("/plan") > 0, 20)
+    assert ros.node.count_publishers("/cmd_vel_nav") == 1  # controller up
     kids = children_of(proc.pid)
-    assert len(kids) == 4  # sim, mux, planner, controller
+    assert len(kids) == 5  # sim, mux, planner, controller, viz
     os.killpg(proc.pid, signal.SIGINT)  # what a terminal's Ctrl-C does
     assert proc.wait(timeout=20) == 0
     assert not [k for k in kids if alive(k)]

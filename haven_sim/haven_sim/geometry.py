@@ -37,6 +37,12 @@ class Twist2D(NamedTuple):
 ZERO_TWIST = Twist2D()
 
 
+def stamp_parts(t: float) -> tuple[int, int]:
+    """Seconds as (sec, nanosec) for a builtin_interfaces/Time."""
+    sec = int(math.floor(t))
+    return sec, min(int(round((t - sec) * 1e9)), 999_999_999)
+
+
 def wrap_angle(a: float) -> float:
     """Angle wrapped to [-pi, pi)."""
     return (a + math.pi) % (2.0 * math.pi) - math.pi

@@ -46,7 +46,7 @@ class Segment:
 class StyleParams:
     arc_max_angle_rad: float = math.radians(60.0)
     too_close_distance_m: float = 0.5
-    marker_spacing_m: float = 0.25
+    marker_spacing_m: float = 0.4
     rotate_step_rad: float = math.radians(15.0)
     max_arc_radius_m: float = 1.0
     min_arc_radius_m: float = 0.15

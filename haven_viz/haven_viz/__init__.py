@@ -1,7 +1,4 @@
-"""HAVEN AR cue geometry (rclpy-free) and the visualization node (in `haven_viz.nodes`).
-
-The cues themselves arrive with the AR-cue issue; this package exists now so the workspace layout,
-dependencies and versions are fixed from the start.
-"""
+"""HAVEN's AR cues as marker data (rclpy-free), the top-down renderer, and the visualization node
+(in `haven_viz.nodes`), with RViz and Foxglove configurations as package data."""
 
 __version__ = "0.1.0"

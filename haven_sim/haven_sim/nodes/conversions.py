@@ -15,14 +15,14 @@ from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import String
 
 from haven_sim.battery import BatteryReading, PowerStatus
-from haven_sim.geometry import FloatArray, Pose2D, Twist2D, quaternion_to_yaw, yaw_to_quaternion
+from haven_sim.geometry import FloatArray, Pose2D, Twist2D, quaternion_to_yaw, stamp_parts, yaw_to_quaternion
 from haven_sim.occupancy import OccupancyGridData
 from haven_sim.scan import ScanParams
 
 
 def time_msg(t: float) -> Time:
-    sec = int(math.floor(t))
-    return Time(sec=sec, nanosec=min(int(round((t - sec) * 1e9)), 999_999_999))
+    sec, nanosec = stamp_parts(t)
+    return Time(sec=sec, nanosec=nanosec)
 
 
 def time_from_msg(msg: Time) -> float:

@@ -36,7 +36,7 @@ class PlannerNode(Node):
         self.style = StyleParams(
             arc_max_angle_rad=math.radians(d("arc_max_angle_deg", 60.0).value),
             too_close_distance_m=d("too_close_distance_m", 0.5).value,
-            marker_spacing_m=d("marker_spacing_m", 0.25).value,
+            marker_spacing_m=d("marker_spacing_m", 0.4).value,
             rotate_step_rad=math.radians(d("rotate_step_deg", 15.0).value),
             max_arc_radius_m=d("max_arc_radius_m", 1.0).value,
         )

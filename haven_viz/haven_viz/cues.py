@@ -1,0 +1,274 @@
+"""HAVEN's AR cues as marker data: path projection, turn signals, thought bubble, battery indicator.
+
+Inputs are plain values (robot pose, path poses, humans, battery level, thought text); outputs are
+`MarkerSpec`s in frame `map`, one namespace per cue with stable ids, so a viewer shows what a HAVEN
+participant saw:
+
+  * path projection: markers every `marker_spacing_m` along the remaining path, spheres on straight
+    parts and cubes on arcs (the shared classifier of haven_sim), `steps_ahead` of them (0 = all),
+    consumed as the robot passes them;
+  * turn signals: an arrow on the robot's left or right while the heading error to the path ahead
+    (or to the end of a rotation in place) is at least `turn_signal_threshold` (11 deg);
+  * thought bubble: the robot's current thought as view-facing text above it, shown while a human
+    is within `thought_radius_m`, with hysteresis so it does not flicker at the edge;
+  * battery indicator: a level bar coloured by HAVEN's thresholds, and the percentage.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from haven_sim.geometry import Point, Pose2D, wrap_angle
+from haven_sim.path_style import SegmentKind, classify
+from haven_viz.markers import Color, MarkerSpec, Shape
+
+PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS = "path_projection", "turn_signals", "thought_bubble", "battery_indicator"
+CUES = (PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS)
+
+SCHEMES: dict[str, Color] = {
+    "yellow": (0.934, 0.923, 0.0, 1.0),  # HAVEN's marker material
+    "white": (1.0, 1.0, 1.0, 1.0),  # the paper's figures
+    "cyan": (0.0, 0.9, 1.0, 1.0),
+}
+BATTERY_BANDS: tuple[tuple[float, Color], ...] = (  # HAVEN's indicator: level above -> colour
+    (0.8, (0.0, 0.8, 0.0, 1.0)),  # green
+    (0.6, (0.55, 0.9, 0.3, 1.0)),  # light green
+    (0.4, (1.0, 0.9, 0.0, 1.0)),  # yellow
+    (0.2, (1.0, 0.55, 0.0, 1.0)),  # orange
+)
+BATTERY_LOW: Color = (0.9, 0.0, 0.0, 1.0)  # red
+
+
+@dataclass(frozen=True)
+class CueParams:
+    marker_spacing_m: float = 0.4
+    steps_ahead: int = 0  # 0 = the whole remaining path
+    marker_size_m: float = 0.2
+    consume_distance_m: float = 0.2  # a marker this far ahead of the robot along the path is used up
+    scheme: str = "yellow"
+    turn_signal_threshold_rad: float = math.radians(11.0)
+    signal_lookahead_m: float = 0.5
+    thought_radius_m: float = 3.0
+    thought_hysteresis_m: float = 0.5
+    thought_backdrop: bool = True
+    robot_height_m: float = 0.4
+
+    def validate(self) -> None:
+        if self.marker_spacing_m <= 0 or self.marker_size_m <= 0:
+            raise ValueError("marker_spacing_m and marker_size_m must be positive")
+        if self.steps_ahead < 0:
+            raise ValueError(f"steps_ahead must be 0 (all) or more, got {self.steps_ahead}")
+        if self.scheme not in SCHEMES:
+            raise ValueError(f"scheme must be one of {', '.join(SCHEMES)}, got {self.scheme!r}")
+        if self.thought_radius_m <= 0 or self.thought_hysteresis_m < 0:
+            raise ValueError("thought_radius_m must be positive and thought_hysteresis_m not negative")
+
+
+@dataclass(frozen=True)
+class Toggles:
+    """The study condition: which cues the participant sees."""
+
+    path_projection: bool = True
+    turn_signals: bool = True
+    thought_bubble: bool = True
+    battery_indicator: bool = True
+
+
+def battery_color(level: float) -> Color:
+    for above, color in BATTERY_BANDS:
+        if level > above:
+            return color
+    return BATTERY_LOW
+
+
+@dataclass(frozen=True)
+class _PathMarker:
+    x: float
+    y: float
+    s: float  # arc length along the path
+    arc: bool
+
+
+@dataclass(frozen=True)
+class _Rotation:
+    x: float
+    y: float
+    s: float
+    yaw: float  # where the rotation ends
+
+
+def _layout(poses: Sequence[Pose2D], spacing: float) -> tuple[list[_PathMarker], list[_Rotation], np.ndarray, np.ndarray]:
+    """Marker positions every `spacing` along the path, the rotations in place, and the path as a
+    polyline with cumulative arc length."""
+    if not poses:
+        return [], [], np.zeros((0, 2)), np.zeros(0)
+    pts = np.array([(p.x, p.y) for p in poses], dtype=float)
+    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
+    arc_pairs = np.zeros(max(len(poses) - 1, 0), dtype=bool)
+    rotations = []
+    for seg in classify(poses):
+        if seg.kind is SegmentKind.ARC:
+            arc_pairs[seg.start : seg.end] = True
+        elif seg.kind is SegmentKind.ROTATE:
+            end = poses[seg.end]
+            rotations.append(_Rotation(end.x, end.y, float(cum[seg.end]), end.yaw))
+    markers = []
+    total = float(cum[-1])
+    for k in range(1, int(total / spacing + 1e-9) + 1):
+        s = k * spacing
+        i = min(len(pts) - 2, int(np.searchsorted(cum, s, side="right")) - 1)
+        while i > 0 and cum[i + 1] - cum[i] <= 1e-12:  # skip rotations (no length)
+            i -= 1
+        f = (s - cum[i]) / max(cum[i + 1] - cum[i], 1e-12)
+        x, y = pts[i] + (pts[i + 1] - pts[i]) * f
+        markers.append(_PathMarker(float(x), float(y), s, bool(arc_pairs[i])))
+    return markers, rotations, pts, cum
+
+
+class ArCues:
+    """The cue state of one robot: the path it follows, what is consumed, whether the bubble shows."""
+
+    def __init__(self, params: CueParams | None = None) -> None:
+        self.params = params or CueParams()
+        self.params.validate()
+        self.bubble_shown = False
+        self.set_path([])
+
+    def set_path(self, poses: Sequence[Pose2D]) -> None:
+        self._markers, self._rotations, self._pts, self._cum = _layout(poses, self.params.marker_spacing_m)
+        self._progress = 0.0
+        self._rotations_done = 0
+
+    # -- state updates ---------------------------------------------------------------------------
+    def _advance(self, robot: Pose2D) -> None:
+        """Arc length reached along the path (monotonic, searched near the last value)."""
+        pts, cum = self._pts, self._cum
+        if len(pts) < 2:
+            return
+        lo = max(0, int(np.searchsorted(cum, self._progress, side="right")) - 1)
+        hi = min(len(pts) - 1, int(np.searchsorted(cum, self._progress + 2.0, side="right")) + 1)
+        a, b = pts[lo:hi], pts[lo + 1 : hi + 1]
+        if len(a) == 0:
+            return
+        d = b - a
+        ln2 = np.einsum("ij,ij->i", d, d)
+        t = np.clip(np.einsum("ij,ij->i", np.array([robot.x, robot.y]) - a, d) / np.where(ln2 > 0, ln2, 1.0), 0, 1)
+        c = a + d * t[:, None]
+        k = int(np.argmin(np.hypot(c[:, 0] - robot.x, c[:, 1] - robot.y)))
+        self._progress = max(self._progress, float(cum[lo + k] + t[k] * math.sqrt(ln2[k])))
+
+    @property
+    def remaining(self) -> int:
+        """Path markers not consumed yet."""
+        limit = self._progress + self.params.consume_distance_m
+        return sum(1 for m in self._markers if m.s > limit)
+
+    def turn_error(self, robot: Pose2D) -> float | None:
+        """Signed heading error (rad, + = left) the turn signals show, or None without a path."""
+        p = self.params
+        # A rotation in place at (or just behind) the robot that has not finished yet.
+        while self._rotations_done < len(self._rotations):
+            rot = self._rotations[self._rotations_done]
+            if rot.s > self._progress + p.consume_distance_m:
+                break
+            err = wrap_angle(rot.yaw - robot.yaw)
+            if abs(err) < p.turn_signal_threshold_rad or math.hypot(rot.x - robot.x, rot.y - robot.y) > 0.3:
+                self._rotations_done += 1
+                continue
+            return err
+        if len(self._pts) < 2 or self._progress >= self._cum[-1] - 1e-6:
+            return None
+        s = min(float(self._cum[-1]), self._progress + p.signal_lookahead_m)
+        i = min(len(self._pts) - 2, int(np.searchsorted(self._cum, s, side="right")) - 1)
+        f = (s - self._cum[i]) / max(self._cum[i + 1] - self._cum[i], 1e-12)
+        x, y = self._pts[i] + (self._pts[i + 1] - self._pts[i]) * f
+        if math.hypot(x - robot.x, y - robot.y) < 0.05:
+            return None
+        return wrap_angle(math.atan2(y - robot.y, x - robot.x) - robot.yaw)
+
+    def _update_bubble(self, robot: Pose2D, humans: Sequence[Point]) -> bool:
+        p = self.params
+        nearest = min((math.hypot(h[0] - robot.x, h[1] - robot.y) for h in humans), default=math.inf)
+        if self.bubble_shown:
+            self.bubble_shown = nearest <= p.thought_radius_m + p.thought_hysteresis_m
+        else:
+            self.bubble_shown = nearest <= p.thought_radius_m
+        return self.bubble_shown
+
+    # -- markers ---------------------------------------------------------------------------------
+    def markers(
+        self,
+        robot: Pose2D,
+        humans: Sequence[Point] = (),
+        battery_level: float | None = None,
+        thought: str = "",
+        toggles: Toggles = Toggles(),
+    ) -> list[MarkerSpec]:
+        """Every cue marker for this moment (cues that are off are simply absent)."""
+        self._advance(robot)
+        shown_bubble = self._update_bubble(robot, humans)  # tracked even while the cue is off
+        out: list[MarkerSpec] = []
+        if toggles.path_projection:
+            out += self._path_markers()
+        if toggles.turn_signals:
+            out += self._signal_markers(robot)
+        if toggles.thought_bubble and shown_bubble and thought:
+            out += self._thought_markers(robot, thought)
+        if toggles.battery_indicator and battery_level is not None:
+            out += self._battery_markers(robot, battery_level)
+        return out
+
+    def _path_markers(self) -> list[MarkerSpec]:
+        p = self.params
+        limit = self._progress + p.consume_distance_m
+        color = SCHEMES[p.scheme]
+        size = p.marker_size_m
+        out = []
+        for i, m in enumerate(self._markers):
+            if m.s <= limit:
+                continue
+            shape = Shape.CUBE if m.arc else Shape.SPHERE
+            out.append(MarkerSpec(PATH_NS, i, shape, (m.x, m.y, size / 2.0), 0.0, (size, size, size), color))
+            if p.steps_ahead and len(out) >= p.steps_ahead:
+                break
+        return out
+
+    def _signal_markers(self, robot: Pose2D) -> list[MarkerSpec]:
+        err = self.turn_error(robot)
+        if err is None or abs(err) < self.params.turn_signal_threshold_rad:
+            return []
+        side = 1.0 if err > 0 else -1.0  # left / right
+        # An arrow beside the robot pointing outward, like HAVEN's arrows on the robot's sides.
+        out_yaw = robot.yaw + side * math.pi / 2.0
+        base = 0.25
+        x = robot.x + base * math.cos(out_yaw)
+        y = robot.y + base * math.sin(out_yaw)
+        color = SCHEMES[self.params.scheme]
+        return [MarkerSpec(SIGNAL_NS, 0 if side > 0 else 1, Shape.ARROW, (x, y, self.params.robot_height_m + 0.05), out_yaw, (0.3, 0.08, 0.08), color)]
+
+    def _thought_markers(self, robot: Pose2D, thought: str) -> list[MarkerSpec]:
+        z = self.params.robot_height_m + 0.6
+        out = [MarkerSpec(THOUGHT_NS, 0, Shape.TEXT_VIEW_FACING, (robot.x, robot.y, z), 0.0, (0.0, 0.0, 0.15), (0.05, 0.05, 0.05, 1.0), thought)]
+        if self.params.thought_backdrop:
+            width = max(0.6, 0.085 * len(thought))
+            out.append(MarkerSpec(THOUGHT_NS, 1, Shape.SPHERE, (robot.x, robot.y, z), robot.yaw, (width, width, 0.35), (1.0, 1.0, 1.0, 0.85)))
+        return out
+
+    def _battery_markers(self, robot: Pose2D, level: float) -> list[MarkerSpec]:
+        level = min(1.0, max(0.0, level))
+        z = self.params.robot_height_m + 0.25
+        full, thick = 0.4, 0.08
+        color = battery_color(level)
+        # A bar along the map's x axis (a cube cannot face the viewer the way HAVEN's sprite did),
+        # filled from its left end.
+        filled = max(level * full, 0.005)
+        bx, by = robot.x - full / 2.0 + filled / 2.0, robot.y
+        return [
+            MarkerSpec(BATTERY_NS, 0, Shape.CUBE, (robot.x, robot.y, z), 0.0, (full + 0.02, thick + 0.02, thick + 0.02), (0.15, 0.15, 0.15, 0.6)),
+            MarkerSpec(BATTERY_NS, 1, Shape.CUBE, (bx, by, z), 0.0, (filled, thick, thick + 0.03), color),
+            MarkerSpec(BATTERY_NS, 2, Shape.TEXT_VIEW_FACING, (robot.x, robot.y, z + 0.15), 0.0, (0.0, 0.0, 0.12), color, f"{round(100 * level)} %"),
+        ]
