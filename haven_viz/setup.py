@@ -25,6 +25,7 @@ setup(
         "console_scripts": [
             "viz_node = haven_viz.nodes.viz_node:main",
             "haven-viz = haven_viz.nodes.viz_node:main",
+            "snapshot = haven_viz.nodes.snapshot:main",
         ],
     },
 )

@@ -2,6 +2,7 @@
 
     haven sim  [--world W] [--rtf X] [--duration S]   simulator, mux, planner, controller, viz until Ctrl-C
     haven goto X Y [YAW]                              send a goal to a running suite, wait for arrival
+    haven snapshot [OUT.png]                          save what the viewers show as a picture
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
 
 Discovery stays on this machine unless --network is given (study data stays local).
@@ -12,6 +13,7 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Sequence
+from pathlib import Path
 
 from haven_scenarios.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 from haven_sim.world import WorldError, load_world, resolve_world_path
@@ -53,6 +55,11 @@ def build_parser() -> argparse.ArgumentParser:
     goto.add_argument("--timeout", type=_positive, default=120.0, help="sim seconds to wait for arrival")
     goto.add_argument("--domain-id", type=int, default=None)
     goto.add_argument("--network", action="store_true")
+    snap = sub.add_parser("snapshot", help="save what a running suite's viewers show as a top-down PNG")
+    snap.add_argument("output", nargs="?", default="haven_snapshot.png")
+    snap.add_argument("--world", default="small_test", help="the world the suite runs (for the walls)")
+    snap.add_argument("--domain-id", type=int, default=None)
+    snap.add_argument("--network", action="store_true")
     demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
     _common(demo)
     demo.set_defaults(rtf=4.0)
@@ -74,12 +81,12 @@ def _suite(args: argparse.Namespace) -> list[ProcessSpec]:
     return [ProcessSpec(name, argv) for name, argv in nodes.items() if name not in args.without]
 
 
-def _goto(args: argparse.Namespace) -> int:
-    params = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
+def _client(args: argparse.Namespace, name: str, module: str, params: dict[str, object]) -> int:
+    """Run one client node against a running suite until it exits; its exit code is ours."""
     env = ros_environment(network=args.network, domain_id=args.domain_id)
     with Supervisor(env) as sup:
         sup.install_signal_handlers()
-        sup.start(ProcessSpec("goal_client", node_argv("haven_scenarios.nodes.goal_client", params)))
+        sup.start(ProcessSpec(name, node_argv(module, params)))
         exited = sup.wait()
         sup.stop()
     return 1 if exited is None else exited.code
@@ -88,7 +95,17 @@ def _goto(args: argparse.Namespace) -> int:
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if args.command == "goto":
-        return _goto(args)
+        params = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
+        return _client(args, "goal_client", "haven_scenarios.nodes.goal_client", params)
+    if args.command == "snapshot":
+        try:
+            world = str(resolve_world_path(args.world))
+            load_world(world)
+        except WorldError as e:
+            print(f"haven: error: {e}", file=sys.stderr)
+            return 2
+        out = str(Path(args.output).resolve())
+        return _client(args, "snapshot", "haven_viz.nodes.snapshot", {"world": world, "output": out})
     try:
         load_world(resolve_world_path(args.world))  # fail before starting anything
     except WorldError as e:

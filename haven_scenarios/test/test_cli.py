@@ -108,3 +108,14 @@ def test_goto_sends_a_goal_to_a_running_suite_and_waits_for_arrival(ros):
     assert any("plan_made" in line for line in lines) and "goal_reached" in lines[-1]
     refused = ros.run([*HAVEN, "goto", "6.3", "3.8", "--domain-id", str(ros.domain_id)], timeout_s=60)
     assert refused.returncode == 1 and "inside an obstacle" in refused.stdout
+
+
+@pytest.mark.slow
+def test_snapshot_saves_what_the_viewers_show(ros, tmp_path):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    start_haven(ros, "sim", "--rtf", "2")
+    ros.wait_for_messages(odom, 5)
+    out = tmp_path / "snap.png"
+    r = ros.run([*HAVEN, "snapshot", str(out), "--domain-id", str(ros.domain_id)], timeout_s=60)
+    assert r.returncode == 0, r.stderr
+    assert out.stat().st_size > 10_000 and "markers" in r.stdout

@@ -1,0 +1,62 @@
+"""Saves what the viewers show right now as a top-down PNG: listens to /haven/world_markers and
+/haven/ar_markers until the viz node's next full refresh, then renders them with the world's walls."""
+
+from __future__ import annotations
+
+import sys
+
+from rclpy.node import Node
+from visualization_msgs.msg import Marker, MarkerArray
+
+from haven_sim.nodes import qos
+from haven_sim.nodes.runner import run_node
+from haven_sim.world import load_world, resolve_world_path
+from haven_viz.markers import MarkerSpec
+from haven_viz.nodes.conversions import spec_from_msg
+from haven_viz.render import render_scene
+
+
+class Snapshot(Node):
+    def __init__(self) -> None:
+        super().__init__("snapshot")
+        self.world = load_world(resolve_world_path(self.declare_parameter("world", "small_test").value))
+        self.out = self.declare_parameter("output", "haven_snapshot.png").value
+        self.wait_s = self.declare_parameter("wait_s", 2.5).value  # one refresh period of the viz node, and a bit
+        self.live: dict[tuple[str, int], MarkerSpec] = {}
+        self.have_world = False
+        self.start: float | None = None
+        self.create_subscription(MarkerArray, "haven/world_markers", self._on_world, qos.LATCHED)
+        self.create_subscription(MarkerArray, "haven/ar_markers", self._on_ar, qos.RELIABLE)
+        self.create_timer(0.1, self._tick)
+
+    def _apply(self, msg: MarkerArray) -> None:
+        for m in msg.markers:
+            if m.action == Marker.DELETE:
+                self.live.pop((m.ns, m.id), None)
+            elif m.action == Marker.ADD:
+                self.live[(m.ns, m.id)] = spec_from_msg(m)
+
+    def _on_world(self, msg: MarkerArray) -> None:
+        self.have_world = True
+        self._apply(msg)
+
+    def _on_ar(self, msg: MarkerArray) -> None:
+        self._apply(msg)
+
+    def _tick(self) -> None:
+        now = self.get_clock().now().nanoseconds * 1e-9
+        if self.start is None:
+            self.start = now
+        if not self.have_world or now - self.start < self.wait_s:
+            return
+        path = render_scene(self.world, list(self.live.values()), self.out, title=f"{self.world.name} (live snapshot)")
+        print(f"snapshot: wrote {path} ({len(self.live)} markers)", flush=True)
+        raise SystemExit(0)
+
+
+def main(args: list[str] | None = None) -> None:
+    sys.exit(run_node(Snapshot, args))
+
+
+if __name__ == "__main__":
+    main()
