@@ -15,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.axes import Axes  # noqa: E402
 from matplotlib.patches import Circle, FancyArrow, Polygon, Rectangle  # noqa: E402
 from matplotlib.transforms import Affine2D  # noqa: E402
 
@@ -32,7 +33,7 @@ def _rgb(c: Sequence[float]) -> tuple[float, float, float, float]:
     return (c[0], c[1], c[2], c[3])
 
 
-def _draw(ax: plt.Axes, m: MarkerSpec) -> None:
+def _draw(ax: Axes, m: MarkerSpec) -> None:
     x, y, _ = m.position
     z = 10 + _LAYER.get(m.ns, 5)
     color = _rgb(m.color)
