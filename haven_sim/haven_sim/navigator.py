@@ -99,7 +99,8 @@ class Navigator:
 
     # -- planning ----------------------------------------------------------------------------------
     def _shape(self, plan: Plan, robot: Pose2D, planner: GridPlanner) -> list[Pose2D]:
-        goal_yaw = self.goal.yaw if (self.goal is not None and self.params.use_goal_yaw) else None
+        # A NaN goal yaw means "any heading": no final rotation.
+        goal_yaw = self.goal.yaw if (self.goal is not None and self.params.use_goal_yaw and math.isfinite(self.goal.yaw)) else None
         hard = planner.hard_clear
         return shape_path(plan.points, robot.yaw, self.style, hard, goal_yaw)
 

@@ -34,6 +34,9 @@ def clock_msg(t: float) -> Clock:
 
 
 def quaternion_msg(yaw: float) -> Quaternion:
+    """A NaN yaw ("any heading", e.g. of a goal) becomes the all-zero quaternion, and back."""
+    if math.isnan(yaw):
+        return Quaternion(x=0.0, y=0.0, z=0.0, w=0.0)
     x, y, z, w = yaw_to_quaternion(yaw)
     return Quaternion(x=x, y=y, z=z, w=w)
 
@@ -47,6 +50,8 @@ def pose_msg(p: Pose2D) -> Pose:
 
 def pose_from_msg(msg: Pose) -> Pose2D:
     q = msg.orientation
+    if abs(q.x) + abs(q.y) + abs(q.z) + abs(q.w) < 1e-9:
+        return Pose2D(msg.position.x, msg.position.y, math.nan)
     return Pose2D(msg.position.x, msg.position.y, quaternion_to_yaw(q.x, q.y, q.z, q.w))
 
 

@@ -90,8 +90,8 @@ class PlannerNode(Node):
         reason = None
         if frame not in (self.map_frame, "odom"):  # odom coincides with map here (no drift by default)
             reason = f"goal frame '{frame}' is not '{self.map_frame}'"
-        elif not all(math.isfinite(v) for v in goal):
-            reason = "goal has non-finite values"
+        elif not (math.isfinite(goal.x) and math.isfinite(goal.y)):
+            reason = "goal position is not finite"
         if reason is not None:
             self._emit({"type": "plan_refused", "reason": reason})
             self.get_logger().warning(f"refused goal: {reason}")
