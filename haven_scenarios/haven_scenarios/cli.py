@@ -3,6 +3,7 @@
     haven sim  [--world W] [--rtf X] [--duration S]   simulator, mux, planner, controller, viz until Ctrl-C
     haven goto X Y [YAW]                              send a goal to a running suite, wait for arrival
     haven snapshot [OUT.png]                          save what the viewers show as a picture
+    haven batch SCENARIO --trials N --seed S          simulated trials without ROS, one CSV row each
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
 
 Discovery stays on this machine unless --network is given (study data stays local).
@@ -12,10 +13,14 @@ from __future__ import annotations
 
 import argparse
 import sys
+import time
 from collections.abc import Sequence
 from pathlib import Path
 
+from haven_scenarios.batch import progress_bar, run_batch, summary
+from haven_scenarios.scenario import ScenarioError, load_scenario, scenario_names
 from haven_scenarios.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
+from haven_scenarios.trial import condition_name, parse_condition
 from haven_sim.world import WorldError, load_world, resolve_world_path
 
 
@@ -60,6 +65,13 @@ def build_parser() -> argparse.ArgumentParser:
     snap.add_argument("--world", default="small_test", help="the world the suite runs (for the walls)")
     snap.add_argument("--domain-id", type=int, default=None)
     snap.add_argument("--network", action="store_true")
+    batch = sub.add_parser("batch", help="run many simulated trials without ROS, one CSV row per trial")
+    batch.add_argument("scenario", help=f"a shipped scenario ({', '.join(scenario_names())}) or a scenario YAML")
+    batch.add_argument("--trials", type=int, default=10)
+    batch.add_argument("--seed", type=int, default=0)
+    batch.add_argument("--condition", nargs="+", default=["all"], metavar="CUE",
+                       help="cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator")
+    batch.add_argument("--out", default=None, help="CSV path (default: sessions/batch_<scenario>_<time>.csv)")
     demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
     _common(demo)
     demo.set_defaults(rtf=4.0)
@@ -92,8 +104,30 @@ def _client(args: argparse.Namespace, name: str, module: str, params: dict[str, 
     return 1 if exited is None else exited.code
 
 
+def _batch(args: argparse.Namespace) -> int:
+    try:
+        scenario = load_scenario(args.scenario)
+        toggles = parse_condition(args.condition)
+        if args.trials < 1:
+            raise ValueError(f"--trials must be at least 1, got {args.trials}")
+        if any(h.model == "teleop" for h in scenario.humans):
+            raise ValueError(f"scenario {scenario.name} has a teleoperated participant: run it with `haven run`")
+    except (ScenarioError, ValueError) as e:
+        print(f"haven: error: {e}", file=sys.stderr)
+        return 2
+    out = Path(args.out) if args.out else Path("sessions") / f"batch_{scenario.name}_{time.strftime('%Y%m%d_%H%M%S')}.csv"
+    started = time.monotonic()
+    progress_bar(0, args.trials, started)
+    rows = run_batch(scenario, args.trials, args.seed, toggles, out, lambda i, _: progress_bar(i + 1, args.trials, started))
+    print(f"haven: {scenario.name}, condition {condition_name(toggles)}: {summary(rows)}")
+    print(f"haven: wrote {out}")
+    return 0
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if args.command == "batch":
+        return _batch(args)
     if args.command == "goto":
         params = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
         return _client(args, "goal_client", "haven_scenarios.nodes.goal_client", params)

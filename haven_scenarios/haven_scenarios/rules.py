@@ -41,7 +41,7 @@ class GemRules:
     def update(self, now: float, robot: Pose2D, humans: Mapping[str, Pose2D]) -> list[Event]:
         events: list[Event] = []
         target = self.gems.get(self.robot_target or "")
-        if target is not None and target.id not in self.collected and _near(robot, target.position, target.radius):
+        if target is not None and target.owner == "robot" and target.id not in self.collected and _near(robot, target.position, target.radius):
             self.collected[target.id] = "robot"
             events.append({"type": "gem_collected", "gem": target.id, "by": "robot"})
             self.robot_target = None

@@ -1,0 +1,62 @@
+"""Whole trials in batch mode: every scenario completes; seeds reproduce; conditions; the CSV."""
+
+import csv
+
+import pytest
+
+from haven_scenarios.batch import run_batch
+from haven_scenarios.scenario import ScenarioError, load_scenario
+from haven_scenarios.trial import parse_condition, run_trial
+from haven_viz.cues import Toggles
+
+
+@pytest.mark.parametrize("name", ["hallway", "hallway_hard", "shared_room"])
+def test_every_shipped_scenario_completes_without_contact(name):
+    r = run_trial(load_scenario(name), seed=0)
+    m = r.metrics
+    assert r.end_reason == "completed", m
+    assert m["human_contacts"] == 0 and m["wall_contacts"] == 0
+    assert m["robot_time_to_finish_s"] is not None and m["h1_time_to_finish_s"] is not None
+    if name == "shared_room":
+        assert (m["gems_robot"], m["gems_human"]) == (4, 8)
+        assert m["charge_trips"] >= 1  # a 12 m battery forces a trip to the base
+    if name == "hallway_hard":
+        assert any(e["type"] == "obstruction_removed" for e in r.log.events)
+
+
+def test_same_seed_same_trial_and_seeds_vary_the_participant():
+    s = load_scenario("shared_room")
+    a, b, c = run_trial(s, 4).metrics, run_trial(s, 4).metrics, run_trial(s, 5).metrics
+    assert a == b
+    assert a["h1_path_length_m"] != c["h1_path_length_m"]
+
+
+def test_condition_switches_cues_and_their_exposure():
+    s = load_scenario("shared_room")
+    none = run_trial(s, 0, Toggles(False, False, False, False)).metrics
+    assert none["thought_bubble_shown_s"] == 0 and none["turns_signalled"] == 0
+    assert none["condition"] == "none"
+    assert parse_condition(["turn_signals", "path_projection"]) == Toggles(True, True, False, False)
+    with pytest.raises(ValueError, match="unknown cue 'sparkles'"):
+        parse_condition(["sparkles"])
+
+
+def test_batch_writes_one_csv_row_per_trial(tmp_path):
+    out = tmp_path / "b.csv"
+    rows = run_batch(load_scenario("shared_room"), 3, 10, Toggles(), out)
+    with out.open() as f:
+        read = list(csv.DictReader(f))
+    assert [r["trial"] for r in read] == ["0", "1", "2"] and [r["seed"] for r in read] == ["10", "11", "12"]
+    assert read[0]["robot_gem_order"] == rows[0]["robot_gem_order"]
+
+
+def test_bad_scenario_files_get_one_line(tmp_path):
+    p = tmp_path / "s.yaml"
+    p.write_text("name: x\nworld: hallway\nkind: hallway\nrobot: {route: [B, Q]}\n")
+    with pytest.raises(ScenarioError, match=r"s.yaml: robot.route\[1\]: names no room"):
+        load_scenario(p)
+    p.write_text("name: x\nworld: hallway\nkind: maze\n")
+    with pytest.raises(ScenarioError, match="kind: must be one of hallway, retrieval"):
+        load_scenario(p)
+    with pytest.raises(ScenarioError, match="no such scenario"):
+        load_scenario("atlantis")
