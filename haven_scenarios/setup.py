@@ -1,3 +1,5 @@
+from glob import glob
+
 from setuptools import find_packages, setup
 
 package_name = "haven_scenarios"
@@ -6,10 +8,12 @@ setup(
     name=package_name,
     version="0.1.0",
     packages=find_packages(exclude=["test"]),
-    package_data={package_name: ["py.typed"]},
+    package_data={package_name: ["py.typed", "worlds/*.yaml", "scenarios/*.yaml"]},
     data_files=[
         ("share/ament_index/resource_index/packages", [f"resource/{package_name}"]),
         (f"share/{package_name}", ["package.xml"]),
+        (f"share/{package_name}/worlds", glob("haven_scenarios/worlds/*.yaml")),
+        (f"share/{package_name}/scenarios", glob("haven_scenarios/scenarios/*.yaml")),
     ],
     install_requires=["setuptools", "haven_sim", "haven_viz"],
     zip_safe=True,
@@ -22,6 +26,8 @@ setup(
             "haven = haven_scenarios.cli:main",
             "demo_driver = haven_scenarios.nodes.demo_driver:main",
             "goal_client = haven_scenarios.nodes.goal_client:main",
+            "scenario_node = haven_scenarios.nodes.scenario_node:main",
+            "recorder = haven_scenarios.nodes.recorder:main",
         ],
     },
 )

@@ -3,6 +3,9 @@
     haven sim  [--world W] [--rtf X] [--duration S]   simulator, mux, planner, controller, viz until Ctrl-C
     haven goto X Y [YAW]                              send a goal to a running suite, wait for arrival
     haven snapshot [OUT.png]                          save what the viewers show as a picture
+    haven run [SCENARIO] [--participant ID] [--condition CUE...] [--rtf X] [--seed S] [--teleop [HUMAN...]]
+                                                      one recorded trial -> a session folder
+    haven report SESSION... [--out CSV]               metrics recomputed from recordings
     haven batch SCENARIO --trials N --seed S          simulated trials without ROS, one CSV row each
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
 
@@ -15,12 +18,17 @@ import argparse
 import sys
 import time
 from collections.abc import Sequence
+from dataclasses import replace
 from pathlib import Path
 
+import yaml
+
 from haven_scenarios.batch import progress_bar, run_batch, summary
-from haven_scenarios.scenario import ScenarioError, load_scenario, scenario_names
+from haven_scenarios.scenario import Scenario, ScenarioError, load_scenario, scenario_names
+from haven_scenarios.session import analyse, new_session_dir, report_csv, trajectory_picture, versions, write_json
 from haven_scenarios.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 from haven_scenarios.trial import condition_name, parse_condition
+from haven_viz.cues import CUES
 from haven_sim.world import WorldError, load_world, resolve_world_path
 
 
@@ -65,6 +73,21 @@ def build_parser() -> argparse.ArgumentParser:
     snap.add_argument("--world", default="small_test", help="the world the suite runs (for the walls)")
     snap.add_argument("--domain-id", type=int, default=None)
     snap.add_argument("--network", action="store_true")
+    run = sub.add_parser("run", help="run one recorded trial of a scenario (default: hallway, simulated participant)")
+    run.add_argument("scenario", nargs="?", default="hallway", help=f"a shipped scenario ({', '.join(scenario_names())}) or a YAML")
+    run.add_argument("--participant", default="sim", help="participant id for the session (default: sim)")
+    run.add_argument("--condition", nargs="+", default=["all"], metavar="CUE",
+                     help="cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator")
+    run.add_argument("--rtf", type=_positive, default=None, help="real-time factor (default: 5 with simulated participants, 1 with a person)")
+    run.add_argument("--seed", type=int, default=0)
+    run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN",
+                     help="these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`")
+    run.add_argument("--sessions", default="sessions", help="folder for session folders (default: ./sessions)")
+    run.add_argument("--domain-id", type=int, default=None)
+    run.add_argument("--network", action="store_true")
+    report = sub.add_parser("report", help="recompute metrics from session folders or bags into one CSV")
+    report.add_argument("paths", nargs="+", type=Path)
+    report.add_argument("--out", type=Path, default=Path("report.csv"))
     batch = sub.add_parser("batch", help="run many simulated trials without ROS, one CSV row per trial")
     batch.add_argument("scenario", help=f"a shipped scenario ({', '.join(scenario_names())}) or a scenario YAML")
     batch.add_argument("--trials", type=int, default=10)
@@ -104,6 +127,93 @@ def _client(args: argparse.Namespace, name: str, module: str, params: dict[str, 
     return 1 if exited is None else exited.code
 
 
+def _run(args: argparse.Namespace) -> int:
+    try:
+        scenario = load_scenario(args.scenario)
+        toggles = parse_condition(args.condition)
+        if args.teleop is not None:
+            ids = args.teleop or [h.id for h in scenario.humans]
+            unknown = [i for i in ids if i not in {h.id for h in scenario.humans}]
+            if unknown:
+                raise ValueError(f"--teleop: no human {unknown[0]!r} in scenario {scenario.name}")
+            scenario = replace(scenario, humans=tuple(replace(h, model="teleop") if h.id in ids else h for h in scenario.humans))
+    except (ScenarioError, ValueError) as e:
+        print(f"haven: error: {e}", file=sys.stderr)
+        return 2
+    people = any(h.model == "teleop" for h in scenario.humans)
+    rtf = args.rtf if args.rtf is not None else (1.0 if people else 5.0)
+    folder = new_session_dir(Path(args.sessions), scenario.name, args.participant)
+    scenario_file = folder / "scenario.yaml"
+    scenario_file.write_text(_scenario_yaml(scenario))
+    info = {
+        "participant": args.participant, "condition": condition_name(toggles), "cues": {c: getattr(toggles, c) for c in CUES},
+        "seed": args.seed, "scenario": scenario.name, "scenario_file": str(scenario_file.resolve()),
+        "world_file": scenario.world_path, "real_time_factor": rtf, "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
+        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "versions": versions(), "command": sys.argv,
+    }
+    write_json(folder / "session.json", info)
+    sim_time = {"use_sim_time": True}
+    specs = [
+        ProcessSpec("recorder", node_argv("haven_scenarios.nodes.recorder", {**sim_time, "session_dir": str(folder.resolve())})),
+        ProcessSpec("sim", node_argv("haven_sim.nodes.sim_node", {"world": scenario.world_path, "real_time_factor": rtf,
+                                                                   "battery_capacity_m": scenario.battery.capacity_m, "seed": args.seed})),
+        ProcessSpec("mux", node_argv("haven_sim.nodes.mux_node", sim_time)),
+        ProcessSpec("planner", node_argv("haven_sim.nodes.planner_node", sim_time)),
+        ProcessSpec("controller", node_argv("haven_sim.nodes.controller_node", sim_time)),
+        ProcessSpec("viz", node_argv("haven_viz.nodes.viz_node", {**sim_time, "world": scenario.world_path,
+                                                                 **{c: getattr(toggles, c) for c in CUES}})),
+        ProcessSpec("scenario", node_argv("haven_scenarios.nodes.scenario_node", {**sim_time, "scenario": str(scenario_file.resolve()),
+                                                                                "seed": args.seed}, ["-p", "wait_for:=[planner,recorder]"])),
+    ]
+    env = ros_environment(network=args.network, domain_id=args.domain_id)
+    print(f"haven: {scenario.name} trial, participant {args.participant}, condition {condition_name(toggles)}, "
+          f"seed {args.seed}, {rtf:g}x real time -> {folder}", flush=True)
+    started = time.monotonic()
+    with Supervisor(env) as sup:
+        sup.install_signal_handlers()
+        for spec in specs:
+            sup.start(spec)
+        exited = sup.wait(timeout_s=scenario.timeout_s / rtf + 120.0, until_exit_of="scenario")
+        sup.stop()
+    wall = time.monotonic() - started
+    try:
+        metrics, world = analyse(folder)
+    except Exception as e:  # noqa: BLE001 - a damaged recording must not hide the session folder
+        print(f"haven: could not read the session's bag: {e}", file=sys.stderr)
+        return 1
+    write_json(folder / "metrics.json", metrics)
+    info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1))
+    write_json(folder / "session.json", info)
+    if world is not None:
+        trajectory_picture(folder, world, f"{scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
+    print(f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall:.0f} s wall): "
+          f"robot finished at {metrics['robot_time_to_finish_s']} s, closest approach {metrics['min_human_distance_m']} m, "
+          f"{metrics['waits']} wait(s), {metrics['replans']} re-plan(s), {metrics['human_contacts']} contact(s)")
+    print(f"haven: session in {folder} (bag/, events.jsonl, metrics.json, session.json, trajectory.png)")
+    if exited is not None and exited.name != "scenario":
+        print(f"haven: {exited.name} exited with code {exited.code}; the trial was cut short", file=sys.stderr)
+        return 1
+    return 0 if metrics["end_reason"] != "interrupted" else 1
+
+
+def _scenario_yaml(scenario: Scenario) -> str:
+    """The scenario as run (teleop overrides included), for the session folder."""
+    data = yaml.safe_load(Path(scenario.source).read_text())
+    data["world"] = scenario.world_path
+    data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps} for h in scenario.humans]
+    return yaml.safe_dump(data, sort_keys=False)
+
+
+def _report(args: argparse.Namespace) -> int:
+    missing = [p for p in args.paths if not p.exists()]
+    if missing:
+        print(f"haven: error: {missing[0]}: no such session folder or bag", file=sys.stderr)
+        return 2
+    rows = report_csv(args.paths, args.out)
+    print(f"haven: {len(rows)} session(s) -> {args.out}")
+    return 0
+
+
 def _batch(args: argparse.Namespace) -> int:
     try:
         scenario = load_scenario(args.scenario)
@@ -128,6 +238,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if args.command == "batch":
         return _batch(args)
+    if args.command == "run":
+        return _run(args)
+    if args.command == "report":
+        return _report(args)
     if args.command == "goto":
         params = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
         return _client(args, "goal_client", "haven_scenarios.nodes.goal_client", params)

@@ -105,6 +105,7 @@ class ScenarioCore:
         self.end_rule = EndRule(scenario.timeout_s, scenario.end_on_contact)
         self.humans_done: set[str] = set()
         self.contact = False
+        self.stranded = False  # the battery ran out: the robot cannot move any more
         self.waiting = False
         self.arrived = False  # the controller reached the last goal sent
         self.start_time: float | None = None
@@ -145,6 +146,8 @@ class ScenarioCore:
             self.arrived = True
         elif kind == "contact_begin" and str(event.get("other", "")).startswith("human"):
             self.contact = True
+        elif kind == "battery_empty":
+            self.stranded = True
         elif kind == "obstruction_removed":
             self._merge(out, self.mission.resend())
         return out
@@ -176,7 +179,7 @@ class ScenarioCore:
         self._merge(out, self.mission.tick(robot, level, at_base, self.waiting))
         all_done = self.mission.phase is Phase.DONE and self.humans_done >= set(self.participants)
         elapsed = now - (self.start_time if self.start_time is not None else now)
-        self.ended = out.end = self.end_rule.reason(elapsed, all_done, self.contact)
+        self.ended = out.end = "battery_empty" if self.stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)
         if out.end is not None:
             out.events.append({"source": "scenario", "type": "trial_end", "reason": out.end})
         return out

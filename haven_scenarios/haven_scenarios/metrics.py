@@ -87,17 +87,26 @@ def signal_lead_times(t: FloatArray, wz: FloatArray, signal: Sequence[int]) -> l
 
 
 def compute(log: TrialLog, scenario: str = "", end_reason: str = "") -> dict[str, Any]:
-    t = np.asarray(log.t, dtype=float)
-    robot = np.asarray(log.robot, dtype=float).reshape(-1, 4)
-    events = log.events
+    """Times are seconds since the trial started (the `trial_start` event; in a recording the
+    simulation may have run a little before it)."""
+    start = _first(log.events, type="trial_start")
+    t0 = start if start is not None else (log.t[0] if log.t else 0.0)
+    keep = [i for i, ti in enumerate(log.t) if ti >= t0 - 1e-9]
+    t = np.asarray([log.t[i] for i in keep], dtype=float) - t0
+    robot = np.asarray([log.robot[i] for i in keep], dtype=float).reshape(-1, 4)
+    humans = {h: [xy[i] for i in keep if i < len(xy)] for h, xy in log.humans.items()}
+    events = [{**e, "stamp": float(e["stamp"]) - t0} for e in log.events if "stamp" in e and float(e["stamp"]) >= t0 - 1e-9]
+    battery = [log.battery[i] for i in keep]
+    bubble_log = [log.bubble[i] for i in keep]
+    signal_log = [log.signal[i] for i in keep]
     end_t = float(t[-1]) if len(t) else 0.0
     m: dict[str, Any] = {"scenario": scenario, "end_reason": end_reason, "duration_s": round(end_t, 2)}
     robot_done = _first(events, type="task_done", by="robot")
     m["robot_time_to_finish_s"] = None if robot_done is None else round(robot_done, 2)
     m["robot_path_length_m"] = round(_path_length(robot[:, :2]), 3)
     dmin = math.inf
-    for hid, xy in log.humans.items():
-        h = np.asarray(xy, dtype=float)
+    for hid, xy in humans.items():
+        h = np.asarray(xy, dtype=float).reshape(-1, 2)
         done = _first(events, type="task_done", by=hid)
         m[f"{hid}_time_to_finish_s"] = None if done is None else round(done, 2)
         m[f"{hid}_path_length_m"] = round(_path_length(h), 3)
@@ -117,7 +126,7 @@ def compute(log: TrialLog, scenario: str = "", end_reason: str = "") -> dict[str
     m["replans"] = sum(1 for e in events if e.get("type") == "replanned")
     m["reverts"] = sum(1 for e in events if e.get("type") == "reverted")
     m["plans_refused"] = sum(1 for e in events if e.get("type") == "plan_refused")
-    levels = np.asarray(log.battery, dtype=float)
+    levels = np.asarray(battery, dtype=float)
     m["battery_used"] = round(float(np.sum(np.clip(-np.diff(levels), 0, None))), 4) if len(levels) > 1 else 0.0
     m["battery_final"] = round(float(levels[-1]), 4) if len(levels) else None
     m["charge_trips"] = sum(1 for e in events if e.get("type") == "charge_trip")
@@ -126,8 +135,8 @@ def compute(log: TrialLog, scenario: str = "", end_reason: str = "") -> dict[str
     m["gems_human"] = sum(1 for e in collected if e.get("by") != "robot")
     m["robot_gem_order"] = " ".join(str(e["gem"]) for e in collected if e.get("by") == "robot")
     dt_all = np.diff(t, append=t[-1]) if len(t) else np.zeros(0)
-    m["thought_bubble_shown_s"] = round(float(np.sum(dt_all[np.asarray(log.bubble, dtype=bool)])), 2) if len(t) else 0.0
-    leads = signal_lead_times(t, robot[:, 3], log.signal) if len(t) else []
+    m["thought_bubble_shown_s"] = round(float(np.sum(dt_all[np.asarray(bubble_log, dtype=bool)])), 2) if len(t) else 0.0
+    leads = signal_lead_times(t, robot[:, 3], signal_log) if len(t) else []
     m["turns"] = len(leads)
     m["turn_signal_lead_s_mean"] = round(float(np.mean(leads)), 3) if leads else None
     m["turns_signalled"] = sum(1 for x in leads if x > 0)

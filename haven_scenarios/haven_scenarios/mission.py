@@ -5,8 +5,9 @@ thought bubble's text), picks the next robot gem (`nearest` by planned path leng
 `random` order, uniform, unlike HAVEN's biased shuffle), and runs HAVEN's two battery modes with
 planned path lengths instead of straight lines:
 
-  * `on_arrival`: before leaving for a target, if path(robot -> target) + path(target -> base)
-    exceeds the remaining range, go and charge first;
+  * `on_arrival`: before leaving for a target, if path(robot -> target) + path(target -> base),
+    times `safety_factor` (planned paths leave out turns and detours; HAVEN used 1), exceeds the
+    remaining range, go and charge first;
   * `continuous`: at every tick, when the remaining range falls to `safety_factor` x path(robot ->
     base), abandon the target and go and charge.
 
@@ -119,7 +120,8 @@ class Mission:
             out.events.append({"type": "task_done", "by": "robot"})
             return
         if self.battery.mode == "on_arrival" and self.base is not None:
-            need = self.path_length((robot.x, robot.y), target.xy) + self.path_length(target.xy, self.base)
+            # Planned lengths leave out turns, arcs and detours: keep `safety_factor` in hand.
+            need = self.battery.safety_factor * (self.path_length((robot.x, robot.y), target.xy) + self.path_length(target.xy, self.base))
             if need > self._range(1.0) and level >= self.battery.charge_until - 1e-6:
                 # Not even a full charge covers it: charging again would loop forever, so go.
                 out.events.append({"type": "battery_insufficient", "target": target.id, "need_m": round(need, 2)})

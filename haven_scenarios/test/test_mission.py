@@ -33,13 +33,14 @@ def test_thought_says_what_the_robot_does():
 
 
 def test_on_arrival_goes_to_charge_first_then_resumes_the_same_target():
-    battery = BatteryPlan(mode="on_arrival", capacity_m=25.0, charge_until=1.0)
+    battery = BatteryPlan(mode="on_arrival", capacity_m=25.0, charge_until=1.0, safety_factor=1.2)
     m = Mission([T[0]], straight, "fixed", battery, BASE)
     robot = Pose2D(3.0, 0.0)
-    out = m.start(robot, level=0.5)  # 12.5 m left; needs 7 + 10 = 17 m
+    out = m.start(robot, level=0.6)  # 15 m left; needs 1.2 x (7 + 10) = 20.4 m
     assert m.phase is Phase.TO_BASE and out.goal[:2] == BASE and out.thought == "Low battery: going to charge"
     assert out.events[0]["type"] == "charge_trip"
     assert m.tick(Pose2D(0, 0), 0.5, at_base_goal=True).thought == "Charging: 50 %"
+    assert out.events[0]["reason"] == "needs 20.4 m, has 15.0 m"
     assert m.phase is Phase.CHARGING
     assert m.tick(Pose2D(0, 0), 0.8).goal is None
     resumed = m.tick(Pose2D(0, 0), 1.0)

@@ -165,7 +165,7 @@ class PathFollower:
         (a path that loops back on itself is still followed in order)."""
         pts, cum = action.points, action.cumulative
         window = self._progress + 2.0 * self.params.lookahead_m + 0.5
-        i0 = max(0, int(np.searchsorted(cum, self._progress, side="right")) - 1)
+        i0 = min(len(pts) - 2, max(0, int(np.searchsorted(cum, self._progress, side="right")) - 1))
         i1 = max(i0 + 1, min(len(pts) - 1, int(np.searchsorted(cum, window, side="right"))))
         a, b = pts[i0:i1], pts[i0 + 1 : i1 + 1]
         d = b - a

@@ -104,3 +104,13 @@ def test_big_heading_error_mid_path_stops_and_rotates_first():
 def test_invalid_params_are_refused():
     with pytest.raises(ValueError, match="lookahead_m"):
         PathFollower(ControllerParams(lookahead_m=0.0))
+
+
+def test_projection_at_the_very_end_of_a_piece_does_not_fail():
+    """A robot pushed onto the last point of a two-pose piece (seen in a 10x ROS trial)."""
+    follower = PathFollower()
+    follower.set_path([Pose2D(0, 0, 0), Pose2D(1, 0, 0), Pose2D(1, 0, 1.0), Pose2D(2, 0, 1.0)])
+    for x in (0.5, 0.97, 1.0, 1.0):
+        follower.command(Pose2D(x, 0.0, 0.0))
+    follower._progress = 10.0  # beyond the piece's end
+    assert follower.command(Pose2D(1.0, 0.0, 0.0)) is not None

@@ -19,15 +19,16 @@ def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> 
     node: Node | None = None
     code = 0
     try:
-        node = factory()
+        try:
+            node = factory()
+        except (WorldError, ValueError) as e:  # bad world or parameters: one line, no traceback
+            print(f"error: {e}", file=sys.stderr)
+            return 2
         executor = SingleThreadedExecutor()
         executor.add_node(node)
         executor.spin()
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
-    except (WorldError, ValueError) as e:
-        print(f"error: {e}", file=sys.stderr)
-        code = 2
     finally:
         if node is not None:
             node.destroy_node()

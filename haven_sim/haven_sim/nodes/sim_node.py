@@ -1,7 +1,8 @@
 """Simulator node: steps the core Simulation at real_time_factor x wall time and publishes its state.
 
 Publishes /clock, /map (latched), /odom (every physics step, 50 Hz), /scan, /battery_state, /humans
-and /haven/events; subscribes /cmd_vel and /humans/<id>/cmd_vel; serves /haven/reset.
+and /haven/events; subscribes /cmd_vel, /humans/<id>/cmd_vel and /haven/events (obstructions a
+scenario clears); serves /haven/reset.
 """
 
 from __future__ import annotations
@@ -123,6 +124,8 @@ class SimNode(Node):
                 Twist, f"humans/{h.id}/cmd_vel", lambda msg, hid=h.id: self._on_human_cmd(hid, msg), qos.RELIABLE
             )
         self.create_service(Trigger, "haven/reset", self._on_reset)
+        # A scenario rule clears an obstruction (e.g. when a participant reaches a room first).
+        self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
         self._publish_map()
         # Wall-clock timer: this node is the clock, so it must not wait on /clock itself.
         steady = Clock(clock_type=ClockType.STEADY_TIME)
@@ -142,6 +145,16 @@ class SimNode(Node):
     def _check(self, status: CommandStatus, topic: str) -> None:
         if status is CommandStatus.REJECTED:
             self.get_logger().warning(f"dropped a non-finite command on {topic}", throttle_duration_sec=2.0)
+
+    def _on_event(self, msg: String) -> None:
+        event = conv.event_from_msg(msg)
+        if event.get("type") == "obstruction_cleared" and event.get("id") not in self.sim.removed:
+            try:
+                self.sim.remove_obstruction(str(event.get("id")))
+            except KeyError:
+                self.get_logger().warning(f"no obstruction '{event.get('id')}' in this world")
+                return
+            self._publish_events()
 
     def _on_reset(self, request: Trigger.Request, response: Trigger.Response) -> Trigger.Response:
         self.sim.reset()
