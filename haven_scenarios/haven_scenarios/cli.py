@@ -174,6 +174,7 @@ def _run(args: argparse.Namespace) -> int:
         for spec in specs:
             sup.start(spec)
         exited = sup.wait(timeout_s=scenario.timeout_s / rtf + 120.0, until_exit_of="scenario")
+        _wait_for_recorded_end(folder / "events.jsonl", 5.0)
         sup.stop()
     wall = time.monotonic() - started
     try:
@@ -194,6 +195,15 @@ def _run(args: argparse.Namespace) -> int:
         print(f"haven: {exited.name} exited with code {exited.code}; the trial was cut short", file=sys.stderr)
         return 1
     return 0 if metrics["end_reason"] != "interrupted" else 1
+
+
+def _wait_for_recorded_end(events: Path, timeout_s: float) -> None:
+    """Give the recorder a moment to receive the `trial_end` event before everything stops."""
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline:
+        if events.exists() and '"trial_end"' in events.read_text():
+            return
+        time.sleep(0.05)
 
 
 def _scenario_yaml(scenario: Scenario) -> str:

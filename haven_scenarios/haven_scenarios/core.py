@@ -105,7 +105,7 @@ class ScenarioCore:
         self.end_rule = EndRule(scenario.timeout_s, scenario.end_on_contact)
         self.humans_done: set[str] = set()
         self.contact = False
-        self.stranded = False  # the battery ran out: the robot cannot move any more
+        self.empty_since: float | None = None  # when the battery ran out (the robot cannot drive)
         self.waiting = False
         self.arrived = False  # the controller reached the last goal sent
         self.start_time: float | None = None
@@ -147,7 +147,7 @@ class ScenarioCore:
         elif kind == "contact_begin" and str(event.get("other", "")).startswith("human"):
             self.contact = True
         elif kind == "battery_empty":
-            self.stranded = True
+            self.empty_since = float(event.get("stamp", 0.0))
         elif kind == "obstruction_removed":
             self._merge(out, self.mission.resend())
         return out
@@ -176,10 +176,16 @@ class ScenarioCore:
                 out.events.append({"source": "scenario", "type": "task_done", "by": hid})
         base = self.scenario.world.charging_base
         at_base = base is not None and self.arrived and robot.distance_to(base.position) <= base.radius
+        if base is not None and self.arrived and not at_base and self.mission.phase is Phase.TO_BASE:
+            self._merge(out, self.mission.resend())  # stopped short of (or past) the base: once more
         self._merge(out, self.mission.tick(robot, level, at_base, self.waiting))
         all_done = self.mission.phase is Phase.DONE and self.humans_done >= set(self.participants)
         elapsed = now - (self.start_time if self.start_time is not None else now)
-        self.ended = out.end = "battery_empty" if self.stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)
+        if level > 0.0:
+            self.empty_since = None
+        # Empty and not charging for a while (a robot that made it onto the base recharges).
+        stranded = self.empty_since is not None and now - self.empty_since > 5.0
+        self.ended = out.end = "battery_empty" if stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)
         if out.end is not None:
             out.events.append({"source": "scenario", "type": "trial_end", "reason": out.end})
         return out

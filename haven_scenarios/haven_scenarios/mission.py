@@ -81,6 +81,7 @@ class Mission:
         self.done_ids: list[str] = []
         self.thought = ""
         self.charge_trips = 0
+        self._charge_level, self._charge_ticks = 0.0, 0  # charging progress, to notice a stall
 
     # -- decisions -------------------------------------------------------------------------------
     def _range(self, level: float) -> float:
@@ -162,12 +163,22 @@ class Mission:
         p = self.battery
         if self.phase is Phase.TO_BASE and at_base_goal:
             self.phase = Phase.CHARGING
+            self._charge_level, self._charge_ticks = level, 0
             out.events.append({"type": "charging_started", "level": round(level, 3)})
         if self.phase is Phase.CHARGING:
             if level >= p.charge_until - 1e-6:
                 out.events.append({"type": "charging_done", "level": round(level, 3)})
                 self._next(out, robot, level)
+            elif level <= self._charge_level + 1e-4 and self._charge_ticks >= 25:
+                # Not charging (e.g. stopped just off the base): drive onto it again.
+                out.events.append({"type": "charging_stalled", "level": round(level, 3)})
+                self.phase = Phase.TO_BASE
+                assert self.base is not None
+                out.goal = Pose2D(self.base[0], self.base[1], math.nan)
             else:
+                if level > self._charge_level + 1e-4:
+                    self._charge_level, self._charge_ticks = level, 0
+                self._charge_ticks += 1
                 self._say(out, f"Charging: {round(100 * level)} %")
             return out
         if self.phase is Phase.GOING and p.mode == "continuous" and self.base is not None:

@@ -51,9 +51,9 @@ class ScenarioNode(Node):
             h.id: self.create_publisher(Twist, f"humans/{h.id}/cmd_vel", qos.RELIABLE) for h in self.scenario.humans if h.model != "teleop"
         }
         self.create_subscription(OccupancyGrid, "map", self._on_map, qos.LATCHED)
-        self.create_subscription(Odometry, "odom", self._on_odom, qos.RELIABLE)
-        self.create_subscription(PoseArray, "humans", self._on_humans, qos.RELIABLE)
-        self.create_subscription(BatteryState, "battery_state", self._on_battery, qos.RELIABLE)
+        self.create_subscription(Odometry, "odom", self._on_odom, qos.LATEST)
+        self.create_subscription(PoseArray, "humans", self._on_humans, qos.LATEST)
+        self.create_subscription(BatteryState, "battery_state", self._on_battery, qos.LATEST)
         self.create_subscription(Path, "plan", self._on_plan, qos.LATCHED)
         self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
         self.create_timer(1.0 / rate, self._tick)

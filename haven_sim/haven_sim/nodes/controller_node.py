@@ -42,7 +42,7 @@ class ControllerNode(Node):
         self.pub = self.create_publisher(Twist, "cmd_vel_nav", qos.RELIABLE)
         self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS)
         self.create_subscription(Path, "plan", self._on_plan, qos.LATCHED)
-        self.create_subscription(Odometry, "odom", self._on_odom, qos.RELIABLE)
+        self.create_subscription(Odometry, "odom", self._on_odom, qos.LATEST)
         self.create_subscription(Bool, "haven/wait", self._on_wait, qos.LATCHED)
         self.create_timer(1.0 / rate, self._tick)
 

@@ -60,8 +60,8 @@ class PlannerNode(Node):
         self.wait_pub = self.create_publisher(Bool, "haven/wait", qos.LATCHED)
         self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS)
         self.create_subscription(OccupancyGrid, "map", self._on_map, qos.LATCHED)
-        self.create_subscription(Odometry, "odom", self._on_odom, qos.RELIABLE)
-        self.create_subscription(PoseArray, "humans", self._on_humans, qos.RELIABLE)
+        self.create_subscription(Odometry, "odom", self._on_odom, qos.LATEST)
+        self.create_subscription(PoseArray, "humans", self._on_humans, qos.LATEST)
         self.create_subscription(PoseStamped, "goal_pose", self._on_goal, qos.RELIABLE)
         self.create_timer(1.0 / rate, self._check)
 

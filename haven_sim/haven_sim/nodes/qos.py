@@ -17,6 +17,9 @@ LATCHED = QoSProfile(
 )
 # Commands and state streams: /cmd_vel*, /odom, /battery_state, /humans, /goal_pose.
 RELIABLE = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
+# Subscribers that act on the current state (controller, planner, viz, scenario) keep only the latest
+# /odom, /humans or /battery_state: at 10x real time a backlog would make them act on old poses.
+LATEST = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # /clock: the rosgraph default (reliable, depth 10) so every use_sim_time node matches.
 CLOCK = RELIABLE
 # /scan

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import sys
+import time
 from collections.abc import Callable, Sequence
 
 import rclpy
@@ -29,6 +30,13 @@ def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> 
         executor.spin()
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    except RuntimeError:
+        # rclpy can fail to take a message that arrives while Ctrl-C shuts the context down;
+        # that is a clean stop (the shutdown completes a moment later), anything else is a bug
+        # and keeps its traceback.
+        time.sleep(0.1)
+        if rclpy.ok():
+            raise
     finally:
         if node is not None:
             node.destroy_node()
