@@ -28,6 +28,7 @@ setup(
             "goal_client = haven_scenarios.nodes.goal_client:main",
             "scenario_node = haven_scenarios.nodes.scenario_node:main",
             "recorder = haven_scenarios.nodes.recorder:main",
+            "keyboard_teleop = haven_scenarios.nodes.keyboard_teleop:main",
         ],
     },
 )

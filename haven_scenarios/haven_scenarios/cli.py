@@ -5,6 +5,7 @@
     haven snapshot [OUT.png]                          save what the viewers show as a picture
     haven run [SCENARIO] [--participant ID] [--condition CUE...] [--rtf X] [--seed S] [--teleop [HUMAN...]]
                                                       one recorded trial -> a session folder
+    haven teleop [HUMAN]                              drive a participant's avatar from the keyboard
     haven report SESSION... [--out CSV]               metrics recomputed from recordings
     haven batch SCENARIO --trials N --seed S          simulated trials without ROS, one CSV row each
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
@@ -15,6 +16,7 @@ Discovery stays on this machine unless --network is given (study data stays loca
 from __future__ import annotations
 
 import argparse
+import subprocess
 import sys
 import time
 from collections.abc import Sequence
@@ -85,6 +87,11 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--sessions", default="sessions", help="folder for session folders (default: ./sessions)")
     run.add_argument("--domain-id", type=int, default=None)
     run.add_argument("--network", action="store_true")
+    teleop = sub.add_parser("teleop", help="drive a human avatar of a running trial from this terminal")
+    teleop.add_argument("human", nargs="?", default="h1")
+    teleop.add_argument("--speed", type=_positive, default=1.0, help="walking speed, m/s (default 1)")
+    teleop.add_argument("--domain-id", type=int, default=None)
+    teleop.add_argument("--network", action="store_true")
     report = sub.add_parser("report", help="recompute metrics from session folders or bags into one CSV")
     report.add_argument("paths", nargs="+", type=Path)
     report.add_argument("--out", type=Path, default=Path("report.csv"))
@@ -255,6 +262,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command == "goto":
         params = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
         return _client(args, "goal_client", "haven_scenarios.nodes.goal_client", params)
+    if args.command == "teleop":
+        # In this terminal's process group, so that it reads the keyboard; Ctrl-C or x ends it.
+        argv = node_argv("haven_scenarios.nodes.keyboard_teleop", {"human": args.human, "speed_mps": args.speed})
+        env = ros_environment(network=args.network, domain_id=args.domain_id)
+        try:
+            return subprocess.call(argv, env=env)
+        except KeyboardInterrupt:
+            return 0
     if args.command == "snapshot":
         try:
             world = str(resolve_world_path(args.world))

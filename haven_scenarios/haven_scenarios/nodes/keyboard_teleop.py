@@ -1,0 +1,55 @@
+"""Drive a human avatar from this terminal: keys -> geometry_msgs/Twist on /humans/<human>/cmd_vel.
+
+Works against `haven run --teleop` (or any running suite); the terminal is restored on exit.
+"""
+
+from __future__ import annotations
+
+import select
+import sys
+import termios
+import time
+import tty
+
+from geometry_msgs.msg import Twist
+from rclpy.node import Node
+
+from haven_scenarios.keys import HELP, KeyMapper
+from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import qos
+from haven_sim.nodes.runner import run_node
+
+
+class KeyboardTeleop(Node):
+    def __init__(self) -> None:
+        super().__init__("keyboard_teleop")
+        human = self.declare_parameter("human", "h1").value
+        self.keys = KeyMapper(speed_mps=self.declare_parameter("speed_mps", 1.0).value)
+        self.pub = self.create_publisher(Twist, f"humans/{human}/cmd_vel", qos.RELIABLE)
+        if not sys.stdin.isatty():
+            raise ValueError("keyboard teleop needs a terminal (stdin is not one)")
+        self._saved = termios.tcgetattr(sys.stdin)
+        tty.setcbreak(sys.stdin.fileno())
+        print(f"teleop {human}: {HELP}", flush=True)
+        self.create_timer(0.05, self._tick)
+
+    def _tick(self) -> None:
+        now = time.monotonic()
+        while select.select([sys.stdin], [], [], 0.0)[0]:
+            key = sys.stdin.read(1)
+            if key == "x":
+                raise SystemExit(0)
+            self.keys.press(key, now)
+        self.pub.publish(conv.twist_msg(self.keys.command(now)))
+
+    def destroy_node(self) -> None:
+        termios.tcsetattr(sys.stdin, termios.TCSADRAIN, self._saved)
+        super().destroy_node()
+
+
+def main(args: list[str] | None = None) -> None:
+    sys.exit(run_node(KeyboardTeleop, args))
+
+
+if __name__ == "__main__":
+    main()
