@@ -1,11 +1,12 @@
-# HAVEN for ROS 2. `make demo` sets everything up and runs the main job; `make test` runs every test.
+# HAVEN for ROS 2. `make demo` sets everything up and runs the main job (one recorded hallway trial);
+# `make test` runs every test.
 .PHONY: setup demo test test-core bench lock clean
 
 setup:
 	@./scripts/setup.sh
 
 demo: setup
-	.venv/bin/haven demo
+	.venv/bin/haven run
 
 test: setup
 	./scripts/test.sh
@@ -17,6 +18,8 @@ test-core: setup
 bench: setup
 	.venv/bin/python bench/sim_speed.py
 	.venv/bin/python bench/odom_rate.py
+	.venv/bin/python bench/planner_latency.py
+	.venv/bin/python bench/trials.py
 
 lock:
 	./scripts/lock.sh
