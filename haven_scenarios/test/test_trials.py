@@ -60,3 +60,26 @@ def test_bad_scenario_files_get_one_line(tmp_path):
         load_scenario(p)
     with pytest.raises(ScenarioError, match="no such scenario"):
         load_scenario("atlantis")
+
+
+def test_several_participants_with_different_models(tmp_path):
+    """Three people in the room: a walker, a blocker that steps onto the robot's path, a yielder."""
+    import yaml
+
+    from haven_scenarios.scenario import resolve_world
+
+    world = yaml.safe_load(resolve_world("shared_room").read_text())
+    world["humans"] += [{"id": "h2", "start": [8.0, 2.0, 3.14]}, {"id": "h3", "start": [8.5, 8.5, 3.14]}]
+    (tmp_path / "room3.yaml").write_text(yaml.safe_dump(world))
+    scenario = {
+        "name": "room3", "world": str(tmp_path / "room3.yaml"), "kind": "retrieval", "timeout_s": 400,
+        "robot": {"order": "nearest"},
+        "humans": [{"id": "h1", "model": "walker"}, {"id": "h2", "model": "blocker"}, {"id": "h3", "model": "yielder"}],
+    }
+    (tmp_path / "s.yaml").write_text(yaml.safe_dump(scenario))
+    r = run_trial(load_scenario(tmp_path / "s.yaml"), seed=2)
+    m = r.metrics
+    assert r.end_reason == "completed", m
+    assert all(m[f"{h}_path_length_m"] > 1.0 for h in ("h1", "h2", "h3"))
+    assert m["gems_human"] == 8 and m["gems_robot"] == 4
+    assert m["waits"] + m["replans"] >= 1  # the blocker got in the robot's way
