@@ -13,16 +13,15 @@ usage: python bench/odom_rate.py [--seconds 20] [--rtf 1 10]
 from __future__ import annotations
 
 import argparse
-import json
 import os
+import sys
 import time
 from pathlib import Path
 
-from nav_msgs.msg import Odometry
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from common import OUT, save  # noqa: E402
 
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
-from haven_sim.nodes.testing import RosHarness
+from haven_sim.nodes.testing import RosHarness  # noqa: E402
 
 
 def cpu_seconds(pid: int) -> float:
@@ -33,25 +32,19 @@ def cpu_seconds(pid: int) -> float:
 def measure(rtf: float, seconds: float) -> dict[str, float]:
     ros = RosHarness()
     try:
-        stamps: list[float] = []
-        arrivals: list[float] = []
-
-        def on_odom(msg: Odometry) -> None:
-            arrivals.append(time.monotonic())
-            stamps.append(conv.time_from_msg(msg.header.stamp))
-
-        ros.node.create_subscription(Odometry, "/odom", on_odom, qos.RELIABLE)
+        received = ros.stamps("/odom", "nav_msgs/msg/Odometry")  # (arrival, header stamp) per message
         proc = ros.start("haven_sim.nodes.sim_node", {"real_time_factor": rtf})
-        ros.spin_until(lambda: len(stamps) > 50, 30)
+        ros.spin_until(lambda: len(received) > 50, 30)
         ros.spin_for(2.0)  # warm-up
-        n0, cpu0, t0 = len(stamps), cpu_seconds(proc.pid), time.monotonic()
+        n0, cpu0, t0 = len(received), cpu_seconds(proc.pid), time.monotonic()
         ros.spin_for(seconds)
-        n1, cpu1, t1 = len(stamps), cpu_seconds(proc.pid), time.monotonic()
-        window = stamps[n0:n1]
-        wall = arrivals[n1 - 1] - arrivals[n0]
+        n1, cpu1, t1 = len(received), cpu_seconds(proc.pid), time.monotonic()
+        arrivals = [a for a, _ in received[n0:n1]]
+        window = [s for _, s in received[n0:n1]]
+        wall = arrivals[-1] - arrivals[0]
         sim = window[-1] - window[0]
         gaps = [b - a for a, b in zip(window, window[1:])]
-        arrived = sorted(b - a for a, b in zip(arrivals[n0:n1], arrivals[n0 + 1 : n1]))
+        arrived = sorted(b - a for a, b in zip(arrivals, arrivals[1:]))
         return {
             "rtf_requested": rtf,
             "messages": len(window),
@@ -72,7 +65,7 @@ def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--seconds", type=float, default=20.0)
     ap.add_argument("--rtf", type=float, nargs="+", default=[1.0, 10.0])
-    ap.add_argument("--json", default=str(Path(__file__).resolve().parent / "out" / "odom_rate.json"))
+    ap.add_argument("--json", default=str(OUT / "odom_rate.json"))
     args = ap.parse_args()
     rows = []
     for rtf in args.rtf:
@@ -84,10 +77,7 @@ def main() -> None:
               f"achieved rtf {row['rtf_achieved']:.3f}, largest stamp gap {row['max_sim_gap_s']} s, "
               f"arrival gaps p50 {row['arrival_gap_p50_ms']} ms p99 {row['arrival_gap_p99_ms']} ms, "
               f"node CPU {row['node_cpu_percent']} %")
-    out = Path(args.json)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps(rows, indent=2))
-    print(f"wrote {out}")
+    save(rows, args.json)
 
 
 if __name__ == "__main__":

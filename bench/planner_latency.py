@@ -22,6 +22,7 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from common import OUT, save  # noqa: E402
 from w1_map import w1_world  # noqa: E402
 
 from haven_sim.geometry import Pose2D, distance_point_to_edges  # noqa: E402
@@ -95,7 +96,7 @@ def main() -> None:
     ap.add_argument("--n", type=int, default=200)
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--pairs", default=None, help="JSON pairs for the W1 map (e.g. the peers' sample)")
-    ap.add_argument("--json", default=str(Path(__file__).resolve().parent / "out" / "planner_latency.json"))
+    ap.add_argument("--json", default=str(OUT / "planner_latency.json"))
     args = ap.parse_args()
     rows = [run("W1 map 20x20", w1_world(0), args.n, args.seed, args.pairs),
             run("small test world", load_world(packaged_world("small_test")), args.n, args.seed, None)]
@@ -105,10 +106,7 @@ def main() -> None:
               f"({r['corner_nodes']} nodes)  plan median {r['median_ms']:.2f} ms p90 {r['p90_ms']:.2f} p99 {r['p99_ms']:.2f} "
               f"max {r['max_ms']:.2f}  mean length {r['mean_length_m']:.2f} m  min clearance {r['min_wall_clearance_m']:.3f} m  "
               f"| plan+style median {st['median_ms']:.2f} p99 {st['p99_ms']:.2f} ms")  # type: ignore[index]
-    out = Path(args.json)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps(rows, indent=2))
-    print(f"wrote {out}")
+    save(rows, args.json)
 
 
 if __name__ == "__main__":

@@ -14,8 +14,11 @@ import tempfile
 import time
 from pathlib import Path
 
-from haven_scenarios.scenario import load_scenario, scenario_names
-from haven_scenarios.trial import run_trial
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from common import OUT, save  # noqa: E402
+
+from haven_scenarios.scenario import load_scenario, scenario_names  # noqa: E402
+from haven_scenarios.trial import run_trial  # noqa: E402
 
 
 def batch(name: str, trials: int) -> dict[str, float]:
@@ -57,7 +60,7 @@ def main() -> None:
     ap.add_argument("--trials", type=int, default=20)
     ap.add_argument("--ros-rtf", type=float, default=10.0)
     ap.add_argument("--skip-ros", action="store_true")
-    ap.add_argument("--json", default=str(Path(__file__).resolve().parent / "out" / "trials.json"))
+    ap.add_argument("--json", default=str(OUT / "trials.json"))
     args = ap.parse_args()
     rows = []
     for name in scenario_names():
@@ -71,10 +74,7 @@ def main() -> None:
             rows.append(row)
             print(f"ros   {name:13} requested {args.ros_rtf:g}x: trial of {row['sim_s']} s simulated in {row['wall_s']} s of wall time "
                   f"= {row['rtf_achieved']}x, {row['end_reason']}")
-    out = Path(args.json)
-    out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps(rows, indent=2))
-    print(f"wrote {out}")
+    save(rows, args.json)
 
 
 if __name__ == "__main__":

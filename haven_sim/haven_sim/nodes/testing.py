@@ -7,6 +7,7 @@ matching, a message, an exit code. Never a bare sleep.
 
 from __future__ import annotations
 
+import importlib
 import itertools
 import os
 import signal
@@ -119,6 +120,19 @@ class RosHarness:
         received = Collected()
         received.subscription = self.node.create_subscription(msg_type, topic, received.append, qos)
         return received
+
+    def stamps(self, topic: str, msgtype: str, qos: QoSProfile | None = None) -> list[tuple[float, float]]:
+        """Subscribe to a topic of a stamped type (named like 'nav_msgs/msg/Odometry'); the returned
+        list receives (monotonic arrival time, header stamp in seconds) per message."""
+        package, kind, cls = msgtype.split("/")
+        msg_class = getattr(importlib.import_module(f"{package}.{kind}"), cls)
+        rows: list[tuple[float, float]] = []
+
+        def on_message(msg: Any) -> None:
+            rows.append((time.monotonic(), msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9))
+
+        self.node.create_subscription(msg_class, topic, on_message, qos or QoSProfile(depth=100))
+        return rows
 
     def wait_matched(self, entity: Collected | Publisher, timeout_s: float = 15.0) -> None:
         """Wait until a subscription (a `collect` result) or a publisher has a matched peer."""
