@@ -60,14 +60,18 @@ class Walker:
         except PlanningError:
             self._waypoints = [(stop.x, stop.y)]
 
-    def _walk_to(self, me: Pose2D, x: float, y: float, speed: float) -> Twist2D:
+    def _walk_to(self, me: Pose2D, x: float, y: float, speed: float, hold_s: float = 0.1) -> Twist2D:
+        """Straight at (x, y) while turning to face it. The command holds for `hold_s` (the 10 Hz
+        tick) and is in the person's own frame, so it is aimed along the heading they will have
+        half-way through, or the walk would curl as they turn."""
         dx, dy = x - me.x, y - me.y
         d = math.hypot(dx, dy)
         v = min(speed, 1.5 * d + 0.05)
-        heading = math.atan2(dy, dx)
-        c, s = math.cos(me.yaw), math.sin(me.yaw)
+        wz = max(-3.0, min(3.0, 2.0 * wrap_angle(math.atan2(dy, dx) - me.yaw)))
+        mid = me.yaw + 0.5 * wz * hold_s
+        c, s = math.cos(mid), math.sin(mid)
         vx, vy = v * (c * dx + s * dy) / max(d, 1e-9), v * (-s * dx + c * dy) / max(d, 1e-9)
-        return Twist2D(vx, vy, 2.0 * wrap_angle(heading - me.yaw))
+        return Twist2D(vx, vy, wz)
 
     def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
         return self._keep_clear(me, robot, self._task(now, me))
