@@ -7,6 +7,7 @@
                                                       one recorded trial -> a session folder
     haven teleop [HUMAN]                              drive a participant's avatar from the keyboard
     haven report SESSION... [--out CSV]               metrics recomputed from recordings
+    haven topics | echo TOPIC | hz TOPIC              graph inspection without the ros2 command
     haven batch SCENARIO --trials N --seed S          simulated trials without ROS, one CSV row each
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
 
@@ -92,6 +93,14 @@ def build_parser() -> argparse.ArgumentParser:
     teleop.add_argument("--speed", type=_positive, default=1.0, help="walking speed, m/s (default 1)")
     teleop.add_argument("--domain-id", type=int, default=None)
     teleop.add_argument("--network", action="store_true")
+    for name, text in (("topics", "list the graph's topics with types and publisher/subscriber counts"),
+                       ("echo", "print the messages on a topic"), ("hz", "measure a topic's message rate")):
+        g = sub.add_parser(name, help=text + " (for installs without the ros2 command)")
+        if name != "topics":
+            g.add_argument("topic")
+        g.add_argument("--count", type=int, default=0, help=argparse.SUPPRESS if name != "echo" else "stop after N messages")
+        g.add_argument("--domain-id", type=int, default=None)
+        g.add_argument("--network", action="store_true")
     report = sub.add_parser("report", help="recompute metrics from session folders or bags into one CSV")
     report.add_argument("paths", nargs="+", type=Path)
     report.add_argument("--out", type=Path, default=Path("report.csv"))
@@ -262,6 +271,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command == "goto":
         params = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
         return _client(args, "goal_client", "haven_scenarios.nodes.goal_client", params)
+    if args.command in ("topics", "echo", "hz"):
+        argv = [sys.executable, "-m", "haven_scenarios.nodes.graph_tools", args.command]
+        argv += [args.topic] if args.command != "topics" else []
+        argv += ["--count", str(args.count)] if args.count else []
+        try:
+            return subprocess.call(argv, env=ros_environment(network=args.network, domain_id=args.domain_id))
+        except KeyboardInterrupt:
+            return 0
     if args.command == "teleop":
         # In this terminal's process group, so that it reads the keyboard; Ctrl-C or x ends it.
         argv = node_argv("haven_scenarios.nodes.keyboard_teleop", {"human": args.human, "speed_mps": args.speed})

@@ -119,3 +119,26 @@ def test_snapshot_saves_what_the_viewers_show(ros, tmp_path):
     r = ros.run([*HAVEN, "snapshot", str(out), "--domain-id", str(ros.domain_id)], timeout_s=60)
     assert r.returncode == 0, r.stderr
     assert out.stat().st_size > 10_000 and "markers" in r.stdout
+
+
+def test_graph_inspection_without_the_ros2_command(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    ros.start("haven_sim.nodes.sim_node")
+    ros.wait_for_messages(odom, 5)
+    topics = ros.run([*HAVEN, "topics", "--domain-id", str(ros.domain_id)], timeout_s=60)
+    assert topics.returncode == 0
+    assert "/odom [nav_msgs/msg/Odometry] publishers: 1" in topics.stdout
+    echo = ros.run([*HAVEN, "echo", "/battery_state", "--count", "1", "--domain-id", str(ros.domain_id)], timeout_s=60)
+    assert echo.returncode == 0 and "percentage: 1.0" in echo.stdout and "frame_id: 'base_link'" in echo.stdout
+    hz = subprocess.Popen([*HAVEN, "hz", "/odom", "--domain-id", str(ros.domain_id)], env=ros.env, stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, text=True, start_new_session=True)
+    ros.procs.append(hz)
+    deadline = time.monotonic() + 30
+    lines = []
+    while time.monotonic() < deadline and len([x for x in lines if "average rate" in x]) < 3:
+        lines.append(hz.stdout.readline())
+    os.killpg(hz.pid, signal.SIGINT)
+    rates = [float(x.split(":")[1]) for x in lines if "average rate" in x]
+    assert rates and 45.0 < rates[-1] < 55.0
+    missing = ros.run([*HAVEN, "echo", "/nope", "--domain-id", str(ros.domain_id)], timeout_s=60)
+    assert missing.returncode == 1 and "no topic /nope" in missing.stderr
