@@ -29,6 +29,7 @@ setup(
             "scenario_node = haven_scenarios.nodes.scenario_node:main",
             "recorder = haven_scenarios.nodes.recorder:main",
             "keyboard_teleop = haven_scenarios.nodes.keyboard_teleop:main",
+            "foxglove_bridge = haven_scenarios.nodes.bridge:main",
         ],
     },
 )

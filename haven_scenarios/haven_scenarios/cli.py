@@ -8,6 +8,7 @@
     haven teleop [HUMAN]                              drive a participant's avatar from the keyboard
     haven report SESSION... [--out CSV]               metrics recomputed from recordings
     haven topics | echo TOPIC | hz TOPIC              graph inspection without the ros2 command
+    haven bridge [--host H] [--port P]                live Foxglove WebSocket view of a running suite
     haven batch SCENARIO --trials N --seed S          simulated trials without ROS, one CSV row each
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
 
@@ -101,6 +102,12 @@ def build_parser() -> argparse.ArgumentParser:
         g.add_argument("--count", type=int, default=0, help=argparse.SUPPRESS if name != "echo" else "stop after N messages")
         g.add_argument("--domain-id", type=int, default=None)
         g.add_argument("--network", action="store_true")
+    bridge = sub.add_parser("bridge", help="relay the running suite's topics to a Foxglove WebSocket server")
+    bridge.add_argument("--host", default="127.0.0.1", help="address to bind (default 127.0.0.1: this machine only)")
+    bridge.add_argument("--port", type=int, default=8765)
+    bridge.add_argument("--topics", nargs="+", default=None, help="only these topics (default: every topic)")
+    bridge.add_argument("--domain-id", type=int, default=None)
+    bridge.add_argument("--network", action="store_true")
     report = sub.add_parser("report", help="recompute metrics from session folders or bags into one CSV")
     report.add_argument("paths", nargs="+", type=Path)
     report.add_argument("--out", type=Path, default=Path("report.csv"))
@@ -132,12 +139,12 @@ def _suite(args: argparse.Namespace) -> list[ProcessSpec]:
     return [ProcessSpec(name, argv) for name, argv in nodes.items() if name not in args.without]
 
 
-def _client(args: argparse.Namespace, name: str, module: str, params: dict[str, object]) -> int:
-    """Run one client node against a running suite until it exits; its exit code is ours."""
+def _client(args: argparse.Namespace, name: str, module: str, params: dict[str, object], extra: Sequence[str] = ()) -> int:
+    """Run one client node against a running suite until it exits (or Ctrl-C); its exit code is ours."""
     env = ros_environment(network=args.network, domain_id=args.domain_id)
     with Supervisor(env) as sup:
         sup.install_signal_handlers()
-        sup.start(ProcessSpec(name, node_argv(module, params)))
+        sup.start(ProcessSpec(name, node_argv(module, params, extra)))
         exited = sup.wait()
         sup.stop()
     return 1 if exited is None else exited.code
@@ -287,6 +294,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             return subprocess.call(argv, env=env)
         except KeyboardInterrupt:
             return 0
+    if args.command == "bridge":
+        params: dict[str, object] = {"host": args.host, "port": args.port}
+        extra = ["-p", f"topics:=[{','.join(args.topics)}]"] if args.topics else []
+        return _client(args, "bridge", "haven_scenarios.nodes.bridge", params, extra)
     if args.command == "snapshot":
         try:
             world = str(resolve_world_path(args.world))

@@ -1,5 +1,6 @@
 """haven_viz is installed, importable, and depends on nothing of ours but haven_sim (DESIGN.md)."""
 
+import json
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
@@ -20,3 +21,27 @@ def test_depends_only_on_haven_sim_among_our_packages():
     assert ours == {"haven_sim"}
     requires = re.search(r"install_requires=\[([^\]]*)\]", (ROOT / "setup.py").read_text()).group(1)
     assert "haven_scenarios" not in requires
+
+
+def test_shipped_foxglove_layout_is_what_the_generator_makes():
+    import importlib.util
+
+    script = ROOT.parent / "scripts" / "foxglove_layout.py"
+    spec = importlib.util.spec_from_file_location("foxglove_layout", script)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    shipped = (ROOT / "haven_viz" / "foxglove" / "haven_layout.json").read_text()
+    assert module.build().to_json() + "\n" == shipped
+    layout = json.loads(shipped)
+    topics = layout["content"]["items"][0]["content"]["config"]["topics"]
+    assert {"/map", "/haven/ar_markers", "/haven/world_markers", "/plan", "/scan"} <= set(topics)
+
+
+def test_rviz_config_shows_the_suite_in_frame_map():
+    import yaml
+
+    cfg = yaml.safe_load((ROOT / "haven_viz" / "rviz" / "haven.rviz").read_text())
+    manager = cfg["Visualization Manager"]
+    assert manager["Global Options"]["Fixed Frame"] == "map"
+    topics = {d["Topic"]["Value"] for d in manager["Displays"] if "Topic" in d}
+    assert {"/map", "/haven/ar_markers", "/haven/world_markers", "/plan", "/scan", "/odom"} <= topics

@@ -4,7 +4,6 @@ graph API and a generic subscription do what `ros2 topic list -t -v`, `echo` and
 from __future__ import annotations
 
 import argparse
-import importlib
 import sys
 import time
 from collections.abc import Sequence
@@ -13,14 +12,9 @@ from typing import Any
 import rclpy
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
-from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
+from haven_scenarios.nodes.raw_topics import matching_qos, message_class
 from haven_scenarios.rates import rate_stats
-
-
-def message_class(type_name: str) -> Any:
-    package, kind, cls = type_name.split("/")
-    return getattr(importlib.import_module(f"{package}.{kind}"), cls)
 
 
 def to_plain(msg: Any) -> Any:
@@ -47,18 +41,6 @@ def _yaml(value: Any, indent: int = 0) -> str:
             return f"{pad}- '<sequence of {len(value)} values, first {value[:4]}>'"
         return "\n".join(f"{pad}-\n{_yaml(v, indent + 1)}" if isinstance(v, (dict, list)) else f"{pad}- {v}" for v in value)
     return f"{pad}{value}"
-
-
-def _qos_for(node: Node, topic: str) -> QoSProfile:
-    """Match what the publishers offer (a latched /map needs transient local to be seen late)."""
-    infos = node.get_publishers_info_by_topic(topic)
-    latched = bool(infos) and all(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in infos)
-    best_effort = any(i.qos_profile.reliability == ReliabilityPolicy.BEST_EFFORT for i in infos)
-    return QoSProfile(
-        depth=10,
-        reliability=ReliabilityPolicy.BEST_EFFORT if best_effort else ReliabilityPolicy.RELIABLE,
-        durability=DurabilityPolicy.TRANSIENT_LOCAL if latched else DurabilityPolicy.VOLATILE,
-    )
 
 
 def _wait_for_graph(node: Node, seconds: float) -> None:
@@ -113,7 +95,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                 if len(arrivals) > args.window:
                     del arrivals[0]
 
-        node.create_subscription(message_class(type_name), topic, on_message, _qos_for(node, topic))
+        node.create_subscription(message_class(type_name), topic, on_message, matching_qos(node, topic, depth=10))
         last_report = time.monotonic()
         while rclpy.ok() and not (args.count and seen[0] >= args.count):
             rclpy.spin_once(node, timeout_sec=0.1)

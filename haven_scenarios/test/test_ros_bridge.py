@@ -1,0 +1,76 @@
+"""`haven bridge`: a real WebSocket client lists the channels and decodes an Odometry and a MarkerArray."""
+
+import asyncio
+import json
+import socket
+import struct
+
+import pytest
+import websockets
+from nav_msgs.msg import Odometry
+
+from haven_scenarios.bag import TYPESTORE
+from haven_sim.nodes import qos
+
+pytestmark = [pytest.mark.ros, pytest.mark.slow]
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+async def fetch(port, topics, timeout_s=30.0):
+    """Connect, wait for the channels, subscribe to `topics`, return (channels, {topic: decoded message})."""
+    async with websockets.connect(f"ws://127.0.0.1:{port}", subprotocols=["foxglove.sdk.v1", "foxglove.websocket.v1"]) as ws:
+        channels, got, subs = {}, {}, {}
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + timeout_s
+        while loop.time() < deadline and len(got) < len(topics):
+            try:
+                frame = await asyncio.wait_for(ws.recv(), timeout=1.0)
+            except asyncio.TimeoutError:
+                continue
+            if isinstance(frame, str):
+                msg = json.loads(frame)
+                if msg.get("op") == "advertise":
+                    for ch in msg["channels"]:
+                        channels[ch["topic"]] = ch
+                        if ch["topic"] in topics and ch["topic"] not in subs.values():
+                            sub_id = len(subs) + 1
+                            subs[sub_id] = ch["topic"]
+                            await ws.send(json.dumps({"op": "subscribe", "subscriptions": [{"id": sub_id, "channelId": ch["id"]}]}))
+            elif frame[0] == 1:  # message data: opcode, subscription id, log time, payload
+                sub_id, _ = struct.unpack_from("<IQ", frame, 1)
+                topic = subs[sub_id]
+                got[topic] = TYPESTORE.deserialize_cdr(frame[13:], channels[topic]["schemaName"])
+        return channels, got
+
+
+def test_a_websocket_client_sees_the_channels_and_decodes_messages(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    ros.start("haven_sim.nodes.sim_node", {"real_time_factor": 2.0})
+    ros.start("haven_viz.nodes.viz_node", {"use_sim_time": True, "world": "small_test"})
+    port = free_port()
+    ros.start("haven_scenarios.nodes.bridge", {"port": port})
+    ros.wait_for_messages(odom, 5)
+    ros.spin_until(lambda: ros.node.count_subscribers("/haven/world_markers") > 0, 20)
+    channels, got = asyncio.run(fetch(port, ["/odom", "/haven/ar_markers", "/haven/world_markers"]))
+    assert {"/odom", "/scan", "/map", "/haven/ar_markers", "/haven/world_markers"} <= set(channels)
+    ch = channels["/odom"]
+    assert (ch["encoding"], ch["schemaEncoding"], ch["schemaName"]) == ("cdr", "ros2msg", "nav_msgs/msg/Odometry")
+    assert "MSG: std_msgs/Header" in ch["schema"]
+    o = got["/odom"]
+    assert o.child_frame_id == "base_footprint" and abs(o.pose.pose.position.x - 1.0) < 1e-6
+    namespaces = {m.ns for m in got["/haven/ar_markers"].markers}
+    assert "robot" in namespaces
+    # The latched world markers reach this late client too.
+    assert "walls" in {m.ns for m in got["/haven/world_markers"].markers}
+
+
+def test_bridge_is_local_by_default():
+    from haven_scenarios.cli import build_parser
+
+    args = build_parser().parse_args(["bridge"])
+    assert args.host == "127.0.0.1" and args.port == 8765
