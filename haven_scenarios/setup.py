@@ -15,7 +15,7 @@ setup(
         (f"share/{package_name}/worlds", glob("haven_scenarios/worlds/*.yaml")),
         (f"share/{package_name}/scenarios", glob("haven_scenarios/scenarios/*.yaml")),
     ],
-    install_requires=["setuptools", "haven_sim", "haven_viz"],
+    install_requires=["setuptools", "haven_sim", "haven_viz", "PyYAML", "numpy", "rosbags", "foxglove-sdk"],
     zip_safe=True,
     maintainer="HAVEN maintainers",
     maintainer_email="haven@example.org",
