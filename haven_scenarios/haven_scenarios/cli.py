@@ -276,8 +276,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     if args.command == "report":
         return _report(args)
     if args.command == "goto":
-        params = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
-        return _client(args, "goal_client", "haven_scenarios.nodes.goal_client", params)
+        goal = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
+        return _client(args, "goal_client", "haven_scenarios.nodes.goal_client", goal)
     if args.command in ("topics", "echo", "hz"):
         argv = [sys.executable, "-m", "haven_scenarios.nodes.graph_tools", args.command]
         argv += [args.topic] if args.command != "topics" else []
@@ -295,9 +295,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         except KeyboardInterrupt:
             return 0
     if args.command == "bridge":
-        params: dict[str, object] = {"host": args.host, "port": args.port}
         extra = ["-p", f"topics:=[{','.join(args.topics)}]"] if args.topics else []
-        return _client(args, "bridge", "haven_scenarios.nodes.bridge", params, extra)
+        return _client(args, "bridge", "haven_scenarios.nodes.bridge", {"host": args.host, "port": args.port}, extra)
     if args.command == "snapshot":
         try:
             world = str(resolve_world_path(args.world))
