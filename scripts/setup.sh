@@ -45,3 +45,9 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   echo "$want" > "$stamp"
   echo "setup: installed the locked dependencies and the HAVEN packages into $VENV"
 fi
+
+# tf2_msgs is not on PyPI: build it into the venv once (needs cmake and a C compiler). Without it
+# everything works except TF (/tf, /tf_static), which the simulator then skips with a warning.
+if ! "$VENV/bin/python" -c "import tf2_msgs.msg" >/dev/null 2>&1; then
+  "$VENV/bin/python" scripts/build_interfaces.py || echo "setup: continuing without TF" >&2
+fi

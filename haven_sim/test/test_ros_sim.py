@@ -200,3 +200,27 @@ def test_sigint_shuts_the_node_down_cleanly(ros):
     ros.wait_for_messages(odom, 1)
     assert ros.stop(proc, signal.SIGINT) == 0
     assert "Traceback" not in proc.stderr.read()
+
+
+def test_tf_tree_follows_rep105(ros):
+    from tf2_msgs.msg import TFMessage
+
+    static = ros.collect(TFMessage, "/tf_static", qos.LATCHED)
+    tf = ros.collect(TFMessage, "/tf", qos.TF)
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    pub = ros.node.create_publisher(Twist, "/cmd_vel", qos.RELIABLE)
+    ros.start(SIM, {"real_time_factor": 2.0})
+    ros.wait_for_messages(static, 1)
+    ros.wait_matched(pub)
+    ros.wait_for_messages(odom, 5)
+    drive(ros, pub, twist(0.3, 0.5), odom, 1.0)
+    pairs = {(t.header.frame_id, t.child_frame_id) for t in static[0].transforms}
+    assert pairs == {("map", "odom"), ("base_footprint", "base_link"), ("base_link", "base_scan")}
+    ros.wait_for_messages(tf, 20)
+    robot = [t for m in tf for t in m.transforms if (t.header.frame_id, t.child_frame_id) == ("odom", "base_footprint")]
+    last = robot[-1]
+    match = next(o for o in reversed(odom) if o.header.stamp == last.header.stamp)
+    assert last.transform.translation.x == pytest.approx(match.pose.pose.position.x)
+    assert last.transform.rotation.z == pytest.approx(match.pose.pose.orientation.z)
+    humans = {t.child_frame_id for m in tf for t in m.transforms if t.header.frame_id == "map"}
+    assert humans == {"human_h1"}

@@ -21,6 +21,8 @@ KNOWN = [
     ("/clock", "rosgraph_msgs/msg/Clock", qos.CLOCK),
     ("/map", "nav_msgs/msg/OccupancyGrid", qos.LATCHED),
     ("/odom", "nav_msgs/msg/Odometry", qos.RELIABLE),
+    ("/tf", "tf2_msgs/msg/TFMessage", qos.TF),
+    ("/tf_static", "tf2_msgs/msg/TFMessage", qos.LATCHED),
     ("/scan", "sensor_msgs/msg/LaserScan", qos.SENSOR),
     ("/battery_state", "sensor_msgs/msg/BatteryState", qos.RELIABLE),
     ("/humans", "geometry_msgs/msg/PoseArray", qos.RELIABLE),
@@ -83,6 +85,10 @@ class RawTopics:
 
     def _subscribe(self, topic: str, msgtype: str, profile: QoSProfile) -> None:
         self.handled.add(topic)
+        try:
+            cls = message_class(msgtype)
+        except (ImportError, AttributeError):  # e.g. tf2_msgs where the pip setup could not build it
+            return
         if not self.add(topic, msgtype, profile.durability == DurabilityPolicy.TRANSIENT_LOCAL):
             return
-        self.node.create_subscription(message_class(msgtype), topic, lambda data, t=topic: self.on_message(t, data), profile, raw=True)
+        self.node.create_subscription(cls, topic, lambda data, t=topic: self.on_message(t, data), profile, raw=True)

@@ -8,13 +8,14 @@ from typing import Any
 
 import numpy as np
 from builtin_interfaces.msg import Time
-from geometry_msgs.msg import Pose, PoseArray, PoseStamped, Quaternion, Twist
+from geometry_msgs.msg import Pose, PoseArray, PoseStamped, Quaternion, TransformStamped, Twist
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import String
 
 from haven_sim.battery import BatteryReading, PowerStatus
+from haven_sim.frames import Frame
 from haven_sim.geometry import FloatArray, Pose2D, Twist2D, quaternion_to_yaw, stamp_parts, yaw_to_quaternion
 from haven_sim.occupancy import OccupancyGridData
 from haven_sim.scan import ScanParams
@@ -191,3 +192,13 @@ def path_from_msg(msg: Path) -> list[Pose2D]:
 
 def humans_from_msg(msg: PoseArray) -> list[Pose2D]:
     return [pose_from_msg(p) for p in msg.poses]
+
+
+def transform_msg(stamp: float, f: Frame) -> TransformStamped:
+    msg = TransformStamped()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = f.parent
+    msg.child_frame_id = f.child
+    msg.transform.translation.x, msg.transform.translation.y, msg.transform.translation.z = f.x, f.y, f.z
+    msg.transform.rotation = quaternion_msg(f.yaw)
+    return msg

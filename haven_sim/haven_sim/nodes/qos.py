@@ -24,5 +24,7 @@ LATEST = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=Reliab
 CLOCK = RELIABLE
 # /scan
 SENSOR = qos_profile_sensor_data
+# /tf: what tf2_ros broadcasters use (reliable, depth 100); /tf_static is LATCHED.
+TF = QoSProfile(depth=100, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # /haven/events: nothing may be dropped on the way to the recorder.
 EVENTS = QoSProfile(depth=100, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)

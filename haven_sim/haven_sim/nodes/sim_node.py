@@ -1,6 +1,7 @@
 """Simulator node: steps the core Simulation at real_time_factor x wall time and publishes its state.
 
-Publishes /clock, /map (latched), /odom (every physics step, 50 Hz), /scan, /battery_state, /humans
+Publishes /clock, /map (latched), /odom (every physics step, 50 Hz) with odom -> base_footprint on
+/tf, the fixed frames on /tf_static, /scan, /battery_state, /humans (and map -> human_<id> on /tf)
 and /haven/events; subscribes /cmd_vel, /humans/<id>/cmd_vel and /haven/events (obstructions a
 scenario clears); serves /haven/reset.
 """
@@ -21,6 +22,7 @@ from std_msgs.msg import String
 from std_srvs.srv import Trigger
 
 from haven_sim.battery import BatteryParams
+from haven_sim.frames import human_frames, robot_frame, static_frames
 from haven_sim.commands import CommandStatus, VelocityLimits
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
@@ -30,6 +32,11 @@ from haven_sim.pacer import Pacer
 from haven_sim.scan import ScanParams
 from haven_sim.simulation import SimConfig, Simulation
 from haven_sim.world import load_world, resolve_world_path
+
+try:  # not on PyPI: the pip setup builds it with colcon (scripts/build_interfaces.py)
+    from tf2_msgs.msg import TFMessage
+except ImportError:  # pragma: no cover - depends on the machine
+    TFMessage = None
 
 
 class SimNode(Node):
@@ -123,6 +130,14 @@ class SimNode(Node):
             self.create_subscription(
                 Twist, f"humans/{h.id}/cmd_vel", lambda msg, hid=h.id: self._on_human_cmd(hid, msg), qos.RELIABLE
             )
+        self.tf_pub = self.tf_static_pub = None
+        if TFMessage is not None:
+            self.tf_pub = self.create_publisher(TFMessage, "/tf", qos.TF)
+            self.tf_static_pub = self.create_publisher(TFMessage, "/tf_static", qos.LATCHED)
+            frames = static_frames(p["map_frame"], p["odom_frame"], p["base_frame"], p["scan_frame"])
+            self.tf_static_pub.publish(TFMessage(transforms=[conv.transform_msg(0.0, f) for f in frames]))
+        else:
+            self.get_logger().warning("tf2_msgs is not installed: no /tf or /tf_static (run scripts/build_interfaces.py)")
         self.create_service(Trigger, "haven/reset", self._on_reset)
         # A scenario rule clears an obstruction (e.g. when a participant reaches a room first).
         self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
@@ -180,6 +195,11 @@ class SimNode(Node):
             conv.odometry_msg(now, sim.odometry_pose(), sim.robot_twist(), p["odom_frame"], p["base_frame"])
         )
         n = self._step_count
+        if self.tf_pub is not None:
+            frames = [robot_frame(sim.odometry_pose(), p["odom_frame"], p["base_frame"])]
+            if n % self._humans_every == 0:
+                frames += human_frames(sim.human_poses(), p["map_frame"])
+            self.tf_pub.publish(TFMessage(transforms=[conv.transform_msg(now, f) for f in frames]))
         if n % self._scan_every == 0:
             period = self._scan_every * sim.config.step_s
             self.scan_pub.publish(conv.scan_msg(now, sim.scan(), sim.config.scan, period, p["scan_frame"]))
