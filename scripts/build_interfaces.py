@@ -1,5 +1,5 @@
 """Builds tf2_msgs (TFMessage) into the venv with colcon, for the pip-only setup: PyPI has no
-tf2_msgs wheel. Per ROS_PIP_NOTES: the ROS build wheels must be installed (requirements-build.lock),
+tf2_msgs wheel. Per ROS_PIP_NOTES: the ROS build wheels must be installed (they are in the lock file),
 and the include paths of the wheels' build machine baked into their *Export.cmake files rewritten
 to this machine's. Installs with --merge-install into the venv prefix, where rclpy already finds
 messages. Exits non-zero with one line if anything is missing; setup.sh then carries on without TF.
@@ -9,6 +9,7 @@ usage: .venv/bin/python scripts/build_interfaces.py
 
 from __future__ import annotations
 
+import os
 import re
 import shutil
 import subprocess
@@ -44,10 +45,10 @@ def main() -> int:
     fixed = fix_export_paths()
     with tempfile.TemporaryDirectory() as tmp:
         cmd = [str(PREFIX / "bin" / "colcon"), "--log-base", f"{tmp}/log", "build", "--merge-install",
-               "--base-paths", str(ROOT / "ros2_ws" / "pip_only"), "--build-base", f"{tmp}/build", "--install-base", str(PREFIX),
+               "--base-paths", str(ROOT / "scripts" / "interfaces"), "--build-base", f"{tmp}/build", "--install-base", str(PREFIX),
                "--cmake-args", f"-DPython3_EXECUTABLE={sys.executable}", "-DBUILD_TESTING=OFF",
                "--event-handlers", "console_direct-"]
-        r = subprocess.run(cmd, capture_output=True, text=True, env={**__import__("os").environ, "AMENT_PREFIX_PATH": str(PREFIX), "CMAKE_PREFIX_PATH": str(PREFIX)})
+        r = subprocess.run(cmd, capture_output=True, text=True, env={**os.environ, "AMENT_PREFIX_PATH": str(PREFIX), "CMAKE_PREFIX_PATH": str(PREFIX)})
         if r.returncode != 0:
             tail = (r.stdout + r.stderr).strip().splitlines()[-15:]
             print("build_interfaces: colcon build of tf2_msgs failed:\n" + "\n".join(tail), file=sys.stderr)
