@@ -12,6 +12,7 @@ import pytest
 from nav_msgs.msg import Odometry
 
 from haven_sim.nodes import qos
+from haven_sim.nodes.testing import tracebacks
 
 pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.cli"]
@@ -50,7 +51,7 @@ def test_sim_runs_and_ctrl_c_stops_every_process(ros):
     os.killpg(proc.pid, signal.SIGINT)  # what a terminal's Ctrl-C does
     assert proc.wait(timeout=20) == 0
     assert not [k for k in kids if alive(k)]
-    assert "Traceback" not in proc.stderr.read()
+    assert tracebacks(proc.stderr.read()) == []
 
 
 def test_a_node_that_dies_takes_the_suite_down_with_a_message(ros):

@@ -65,7 +65,8 @@ def test_cues_in_the_running_suite(ros):
     goal.publish(msg)
     assert ros.spin_until(lambda: live.count("path_projection") > 5, 30)
     first = live.count("path_projection")
-    assert {k[0] for k in live.live} >= {"path_projection", "battery_indicator", "thought_bubble", "robot", "humans"}
+    wanted = {"path_projection", "battery_indicator", "thought_bubble", "robot", "humans"}
+    assert ros.spin_until(lambda: {k[0] for k in live.live} >= wanted, 20), {k[0] for k in live.live}
     assert all(m.header.frame_id == "map" for m in live.live.values())
     assert ros.spin_until(lambda: live.count("path_projection") < first - 3, 60)  # eaten up as it drives
     # The study condition, switched at run time: the path projection goes away with explicit DELETEs.

@@ -159,3 +159,14 @@ def harness() -> Iterator[RosHarness]:
         yield h
     finally:
         h.close()
+
+
+def tracebacks(stderr: str) -> list[str]:
+    """Tracebacks in a process's stderr, leaving out rclpy's "Exception ignored in" destructor
+    noise at interpreter exit (an rclpy shutdown artefact, not an error of the node)."""
+    lines = stderr.splitlines()
+    found = []
+    for i, line in enumerate(lines):
+        if line.startswith("Traceback") and not (i > 0 and lines[i - 1].startswith("Exception ignored in")):
+            found.append("\n".join(lines[i : i + 12]))
+    return found
