@@ -80,13 +80,11 @@ class MarkerDiff:
     def __init__(self) -> None:
         self.sent: dict[tuple[str, int], MarkerSpec] = {}
 
-    def update(self, markers: list[MarkerSpec]) -> Update:
+    def update(self, markers: list[MarkerSpec], resend_all: bool = False) -> Update:
+        """The changes since the last update; with `resend_all`, every current marker (for viewers
+        that joined late) together with the deletes still due."""
         current = {m.key: m.rounded() for m in markers}
-        upsert = [m for k, m in current.items() if self.sent.get(k) != m]
+        upsert = [m for k, m in current.items() if resend_all or self.sent.get(k) != m]
         delete = sorted(k for k in self.sent if k not in current)
         self.sent = current
         return Update(upsert, delete)
-
-    def reset(self) -> None:
-        """Forget what was sent (e.g. for a viewer that needs everything again)."""
-        self.sent = {}

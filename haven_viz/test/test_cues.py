@@ -124,3 +124,14 @@ def test_invalid_params_are_refused():
         ArCues(CueParams(scheme="pink"))
     with pytest.raises(ValueError, match="steps_ahead"):
         ArCues(CueParams(steps_ahead=-1))
+
+
+def test_a_full_resend_still_carries_the_deletes():
+    cues = ArCues()
+    cues.set_path(STRAIGHT)
+    diff = MarkerDiff()
+    robot = Pose2D(0, 0.0, 0.0)
+    diff.update(cues.markers(robot, battery_level=0.9))
+    again = diff.update(cues.markers(robot, battery_level=0.9, toggles=Toggles(path_projection=False)), resend_all=True)
+    assert {m.ns for m in again.upsert} == {BATTERY_NS}
+    assert len([k for k in again.delete if k[0] == PATH_NS]) == 10

@@ -105,7 +105,14 @@ class ScenarioNode(Node):
             self.finished = True
 
     def _everyone_listening(self) -> bool:
-        listeners = {i.node_name for t in ("/haven/events", "/goal_pose") for i in self.get_subscriptions_info_by_topic(t)}
+        """The nodes in `wait_for` subscribe, and our publishers have matched every subscription the
+        graph knows of (seeing a reader in the graph comes before being able to deliver to it)."""
+        listeners: set[str] = set()
+        for topic, pub in (("/haven/events", self.events_pub), ("/goal_pose", self.goal_pub)):
+            infos = self.get_subscriptions_info_by_topic(topic)
+            if pub.get_subscription_count() < len(infos):
+                return False
+            listeners |= {i.node_name for i in infos}
         return all(name in listeners for name in self.wait_for)
 
     def _apply(self, out: CoreOutput) -> None:

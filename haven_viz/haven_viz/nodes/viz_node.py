@@ -29,7 +29,7 @@ from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
 from haven_sim.world import World, load_world, resolve_world_path
 from haven_viz.cues import ArCues, CueParams, Toggles
-from haven_viz.markers import MarkerDiff, Update
+from haven_viz.markers import MarkerDiff
 from haven_viz.nodes.conversions import marker_array
 from haven_viz.world_markers import body_markers, world_markers
 
@@ -143,10 +143,9 @@ class VizNode(Node):
         if self.world is None:
             return
         markers = world_markers(self.world, self.collected, self.removed)
-        update = self.world_diff.update(markers)
+        # Latched with depth 1: a late viewer gets only the last message, so it carries everything.
+        update = self.world_diff.update(markers, resend_all=True)
         if update:
-            # Latched with depth 1: a late viewer gets only the last message, so it carries everything.
-            update = Update([m.rounded() for m in markers], update.delete)
             self.world_pub.publish(marker_array(update, self._now(), self.frame))
 
     def _tick(self) -> None:
@@ -160,11 +159,11 @@ class VizNode(Node):
         # A viewer (or recorder) that joins late, or plays a bag from the middle, must get the markers
         # that have not changed since: resend everything when one joins and every refresh_period_s.
         now, viewers = self._now(), self.ar_pub.get_subscription_count()
-        if viewers > self._viewers or now - self._last_refresh >= self.refresh_period_s:
-            self.ar_diff.reset()
+        refresh = viewers > self._viewers or now - self._last_refresh >= self.refresh_period_s
+        if refresh:
             self._last_refresh = now
         self._viewers = viewers
-        update = self.ar_diff.update(markers)
+        update = self.ar_diff.update(markers, resend_all=refresh)
         if update:
             self.ar_pub.publish(marker_array(update, self._now(), self.frame))
 
