@@ -28,7 +28,8 @@ def test_a_dying_child_is_reported_and_the_rest_stopped():
         exited = sup.wait(timeout_s=20)
         assert exited is not None and (exited.name, exited.code) == ("crasher", 3)
         codes = sup.stop()
-    assert codes["sleeper"] == -signal.SIGINT
+    # Stopped by our SIGINT: -SIGINT, or 1 when it lands while Python is still starting up.
+    assert codes["sleeper"] in (-signal.SIGINT, 1)
     assert sleeper.poll() is not None
 
 
