@@ -95,7 +95,8 @@ def compute(log: TrialLog, scenario: str = "", end_reason: str = "") -> dict[str
     t = np.asarray([log.t[i] for i in keep], dtype=float) - t0
     robot = np.asarray([log.robot[i] for i in keep], dtype=float).reshape(-1, 4)
     humans = {h: [xy[i] for i in keep if i < len(xy)] for h, xy in log.humans.items()}
-    events = [{**e, "stamp": float(e["stamp"]) - t0} for e in log.events if "stamp" in e and float(e["stamp"]) >= t0 - 1e-9]
+    # In stamp order: a recorder may receive some events late (kept for it by their publishers).
+    events = sorted(({**e, "stamp": float(e["stamp"]) - t0} for e in log.events if "stamp" in e and float(e["stamp"]) >= t0 - 1e-9), key=lambda e: e["stamp"])
     battery = [log.battery[i] for i in keep]
     bubble_log = [log.bubble[i] for i in keep]
     signal_log = [log.signal[i] for i in keep]

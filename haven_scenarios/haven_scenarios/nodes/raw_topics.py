@@ -31,7 +31,7 @@ KNOWN = [
     ("/plan", "nav_msgs/msg/Path", qos.LATCHED),
     ("/haven/wait", "std_msgs/msg/Bool", qos.LATCHED),
     ("/haven/thought", "std_msgs/msg/String", qos.LATCHED),
-    ("/haven/events", "std_msgs/msg/String", qos.EVENTS),
+    ("/haven/events", "std_msgs/msg/String", qos.EVENTS_HISTORY),
     ("/haven/ar_markers", "visualization_msgs/msg/MarkerArray", qos.RELIABLE),
     ("/haven/world_markers", "visualization_msgs/msg/MarkerArray", qos.LATCHED),
 ]

@@ -46,7 +46,7 @@ class ScenarioNode(Node):
         self.finished = False
         self.goal_pub = self.create_publisher(PoseStamped, "goal_pose", qos.RELIABLE)
         self.thought_pub = self.create_publisher(String, "haven/thought", qos.LATCHED)
-        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS)
+        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS_PUB)
         self.human_pubs = {
             h.id: self.create_publisher(Twist, f"humans/{h.id}/cmd_vel", qos.RELIABLE) for h in self.scenario.humans if h.model != "teleop"
         }

@@ -40,7 +40,7 @@ class ControllerNode(Node):
         self.robot: Pose2D | None = None
         self._last_status = self.follower.status
         self.pub = self.create_publisher(Twist, "cmd_vel_nav", qos.RELIABLE)
-        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS)
+        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS_PUB)
         self.create_subscription(Path, "plan", self._on_plan, qos.LATCHED)
         self.create_subscription(Odometry, "odom", self._on_odom, qos.LATEST)
         self.create_subscription(Bool, "haven/wait", self._on_wait, qos.LATCHED)

@@ -30,7 +30,7 @@ class MuxNode(Node):
         self.mux = VelocityMux(teleop_timeout, nav_timeout)
         self._last_source = IDLE
         self.pub = self.create_publisher(Twist, "cmd_vel", qos.RELIABLE)
-        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS)
+        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS_PUB)
         self.create_subscription(Twist, "cmd_vel_nav", self._on_nav, qos.RELIABLE)
         self.create_subscription(Twist, "cmd_vel_teleop", self._on_teleop, qos.RELIABLE)
         self.create_subscription(Bool, "haven/estop", self._on_estop, qos.LATCHED)

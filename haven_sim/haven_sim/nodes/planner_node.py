@@ -58,7 +58,7 @@ class PlannerNode(Node):
         self.pending: Pose2D | None = None
         self.plan_pub = self.create_publisher(Path, "plan", qos.LATCHED)
         self.wait_pub = self.create_publisher(Bool, "haven/wait", qos.LATCHED)
-        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS)
+        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS_PUB)
         self.create_subscription(OccupancyGrid, "map", self._on_map, qos.LATCHED)
         self.create_subscription(Odometry, "odom", self._on_odom, qos.LATEST)
         self.create_subscription(PoseArray, "humans", self._on_humans, qos.LATEST)

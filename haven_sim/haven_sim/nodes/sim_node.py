@@ -124,7 +124,7 @@ class SimNode(Node):
         self.scan_pub = self.create_publisher(LaserScan, "scan", qos.SENSOR)
         self.battery_pub = self.create_publisher(BatteryState, "battery_state", qos.RELIABLE)
         self.humans_pub = self.create_publisher(PoseArray, "humans", qos.RELIABLE)
-        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS)
+        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS_PUB)
         self.create_subscription(Twist, "cmd_vel", self._on_cmd_vel, qos.RELIABLE)
         for h in world.humans:
             self.create_subscription(

@@ -71,7 +71,7 @@ class VizNode(Node):
         self.removed: set[str] = set()
         self.ar_pub = self.create_publisher(MarkerArray, "haven/ar_markers", qos.RELIABLE)
         self.world_pub = self.create_publisher(MarkerArray, "haven/world_markers", qos.LATCHED)
-        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS)
+        self.events_pub = self.create_publisher(String, "haven/events", qos.EVENTS_PUB)
         self.create_subscription(Path, "plan", self._on_plan, qos.LATCHED)
         self.create_subscription(Odometry, "odom", self._on_odom, qos.LATEST)
         self.create_subscription(BatteryState, "battery_state", self._on_battery, qos.LATEST)
