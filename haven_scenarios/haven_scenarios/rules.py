@@ -62,11 +62,6 @@ class GemRules:
                     break
         return events
 
-    def dwell_progress(self, human_id: str, now: float) -> float:
-        """Seconds the human has stood on a gem so far (HAVEN's "Time till collected" counts down from this)."""
-        times = [now - t for (g, h), t in self._dwell.items() if h == human_id]
-        return max(times, default=0.0)
-
 
 @dataclass
 class RouteRules:

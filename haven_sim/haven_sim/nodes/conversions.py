@@ -126,10 +126,6 @@ def battery_msg(stamp: float, r: BatteryReading, frame_id: str = "base_link") ->
     return msg
 
 
-def power_status_from_msg(value: int) -> PowerStatus:
-    return {v: k for k, v in _STATUS.items()}[value]
-
-
 def humans_msg(stamp: float, poses: dict[str, Pose2D], frame_id: str = "map") -> PoseArray:
     """Humans in id order (the order of the world file's `humans`)."""
     msg = PoseArray()
