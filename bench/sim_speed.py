@@ -28,9 +28,9 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from w1_map import human_rooms, room_box, w1_world  # noqa: E402
 
-from haven_sim.geometry import Twist2D  # noqa: E402
-from haven_sim.simulation import Simulation  # noqa: E402
-from haven_sim.world import World, load_world, packaged_world  # noqa: E402
+from haven_sim.common.geometry import Twist2D  # noqa: E402
+from haven_sim.sim.simulation import Simulation  # noqa: E402
+from haven_sim.sim.world import World, load_world, packaged_world  # noqa: E402
 
 
 class Wanderers:

@@ -17,8 +17,8 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from common import OUT, save  # noqa: E402
 
-from haven_scenarios.scenario import load_scenario, scenario_names  # noqa: E402
-from haven_scenarios.trial import run_trial  # noqa: E402
+from haven_scenarios.study.scenario import load_scenario, scenario_names  # noqa: E402
+from haven_scenarios.run.trial import run_trial  # noqa: E402
 
 
 def batch(name: str, trials: int) -> dict[str, float]:
@@ -39,7 +39,7 @@ def ros(name: str, rtf: float) -> dict[str, object]:
     """One `haven run`; the achieved factor is the sim time between the trial_start and trial_end
     events over the wall time between their appearance in the session's events.jsonl."""
     with tempfile.TemporaryDirectory() as tmp:
-        proc = subprocess.Popen([sys.executable, "-m", "haven_scenarios.cli", "run", name, "--rtf", str(rtf), "--sessions", tmp],
+        proc = subprocess.Popen([sys.executable, "-m", "haven_scenarios.tools.cli", "run", name, "--rtf", str(rtf), "--sessions", tmp],
                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         seen: dict[str, tuple[float, float]] = {}  # event -> (sim stamp, wall time first seen)
         while proc.poll() is None:

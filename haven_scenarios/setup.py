@@ -23,7 +23,7 @@ setup(
     license="Apache-2.0",
     entry_points={
         "console_scripts": [
-            "haven = haven_scenarios.cli:main",
+            "haven = haven_scenarios.tools.cli:main",
             "demo_driver = haven_scenarios.nodes.demo_driver:main",
             "goal_client = haven_scenarios.nodes.goal_client:main",
             "scenario_node = haven_scenarios.nodes.scenario_node:main",

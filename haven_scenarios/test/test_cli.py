@@ -12,10 +12,10 @@ import pytest
 from nav_msgs.msg import Odometry
 
 from haven_sim.nodes import qos
-from haven_sim.nodes.testing import tracebacks
+from ros_harness import tracebacks
 
 pytestmark = pytest.mark.ros
-HAVEN = [sys.executable, "-m", "haven_scenarios.cli"]
+HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 
 
 def children_of(pid):

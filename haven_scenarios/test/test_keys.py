@@ -1,5 +1,5 @@
-from haven_scenarios.keys import KeyMapper
-from haven_sim.geometry import Twist2D
+from haven_scenarios.tools.keys import KeyMapper
+from haven_sim.common.geometry import Twist2D
 
 
 def test_held_keys_combine_and_release_after_the_auto_repeat_stops():

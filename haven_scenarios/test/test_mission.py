@@ -2,9 +2,9 @@
 
 import math
 
-from haven_scenarios.mission import Mission, Phase, Target
-from haven_scenarios.scenario import BatteryPlan
-from haven_sim.geometry import Pose2D
+from haven_scenarios.study.mission import Mission, Phase, Target
+from haven_scenarios.study.scenario import BatteryPlan
+from haven_sim.common.geometry import Pose2D
 
 BASE = (0.0, 0.0)
 T = [Target("a", 10.0, 0.0, "gem a"), Target("b", 2.0, 0.0, "gem b"), Target("c", 5.0, 0.0, "gem c")]

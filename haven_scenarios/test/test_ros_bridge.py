@@ -9,7 +9,7 @@ import pytest
 import websockets
 from nav_msgs.msg import Odometry
 
-from haven_scenarios.bag import TYPESTORE
+from haven_scenarios.record.bag import TYPESTORE
 from haven_sim.nodes import qos
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
@@ -76,7 +76,7 @@ def test_a_websocket_client_sees_the_channels_and_decodes_messages(ros):
 
 
 def test_bridge_is_local_by_default():
-    from haven_scenarios.cli import build_parser
+    from haven_scenarios.tools.cli import build_parser
 
     args = build_parser().parse_args(["bridge"])
     assert args.host == "127.0.0.1" and args.port == 8765

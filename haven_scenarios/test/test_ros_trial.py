@@ -12,12 +12,12 @@ import time
 import pytest
 from mcap.reader import make_reader
 
-from haven_scenarios.scenario import load_scenario
-from haven_scenarios.trial import parse_condition, run_trial
-from haven_sim.nodes.testing import tracebacks
+from haven_scenarios.study.scenario import load_scenario
+from haven_scenarios.run.trial import parse_condition, run_trial
+from ros_harness import tracebacks
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
-HAVEN = [sys.executable, "-m", "haven_scenarios.cli"]
+HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 
 
 def mcap_counts(bag_dir):

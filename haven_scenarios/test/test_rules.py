@@ -2,10 +2,10 @@
 
 import pytest
 
-from haven_scenarios.rules import EndRule, GemRules, ObstructionRules, RouteRules
-from haven_scenarios.scenario import load_scenario
-from haven_sim.geometry import Pose2D
-from haven_sim.world import Gem
+from haven_scenarios.study.rules import EndRule, GemRules, ObstructionRules, RouteRules
+from haven_scenarios.study.scenario import load_scenario
+from haven_sim.common.geometry import Pose2D
+from haven_sim.sim.world import Gem
 
 GEMS = [Gem("r1", "robot", (2.0, 0.0), 0.3), Gem("r2", "robot", (1.0, 0.0), 0.3), Gem("m1", "human", (5.0, 5.0), 0.35)]
 

@@ -2,9 +2,9 @@
 
 import pytest
 
-from haven_scenarios.square_drive import SquareDriver
-from haven_sim.simulation import Simulation
-from haven_sim.world import load_world, packaged_world
+from haven_scenarios.tools.square_drive import SquareDriver
+from haven_sim.sim.simulation import Simulation
+from haven_sim.sim.world import load_world, packaged_world
 
 
 def test_square_returns_to_start_without_contact():

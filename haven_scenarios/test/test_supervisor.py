@@ -2,7 +2,7 @@ import signal
 import sys
 import time
 
-from haven_scenarios.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
+from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 
 SLEEPER = [sys.executable, "-c", "import time; time.sleep(60)"]
 IGNORES_SIGINT = [sys.executable, "-c", "import signal, time; signal.signal(signal.SIGINT, signal.SIG_IGN); print('ready', flush=True); time.sleep(60)"]

@@ -4,9 +4,9 @@ import csv
 
 import pytest
 
-from haven_scenarios.batch import run_batch
-from haven_scenarios.scenario import ScenarioError, load_scenario
-from haven_scenarios.trial import parse_condition, run_trial
+from haven_scenarios.run.batch import run_batch
+from haven_scenarios.study.scenario import ScenarioError, load_scenario
+from haven_scenarios.run.trial import parse_condition, run_trial
 from haven_viz.cues import Toggles
 
 
@@ -66,7 +66,7 @@ def test_several_participants_with_different_models(tmp_path):
     """Three people in the room: a walker, a blocker that steps onto the robot's path, a yielder."""
     import yaml
 
-    from haven_scenarios.scenario import resolve_world
+    from haven_scenarios.study.scenario import resolve_world
 
     world = yaml.safe_load(resolve_world("shared_room").read_text())
     world["humans"] += [{"id": "h2", "start": [8.0, 2.0, 3.14]}, {"id": "h3", "start": [8.5, 8.5, 3.14]}]

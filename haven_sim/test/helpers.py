@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from haven_sim.world import World, parse_world
+from haven_sim.sim.world import World, parse_world
 
 
 def box_world(size: float = 10.0, thickness: float = 0.1, **extra: Any) -> World:
@@ -39,7 +39,7 @@ def corridor(length: float = 12.0, width: float = 3.0, humans: list[dict[str, An
 def drive_closed_loop(sim: Any, follower: Any, seconds: float, navigator: Any = None, on_tick: Any = None) -> list[dict[str, Any]]:
     """Run follower (20 Hz) and navigator (5 Hz) on the simulator core; returns navigator events
     with their times. Stops early when the follower arrives."""
-    from haven_sim.controller import Status
+    from haven_sim.nav.follower import Status
 
     events: list[dict[str, Any]] = []
     ticks = int(seconds * 20)

@@ -6,13 +6,13 @@ import numpy as np
 import pytest
 from helpers import box_world, drive_closed_loop
 
-from haven_sim.controller import ControllerParams, PathFollower, Status
-from haven_sim.geometry import Pose2D, Twist2D
-from haven_sim.occupancy import rasterise
-from haven_sim.path_style import shape_path
-from haven_sim.planner import GridPlanner
-from haven_sim.simulation import Simulation
-from haven_sim.world import load_world, packaged_world
+from haven_sim.nav.follower import ControllerParams, PathFollower, Status
+from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.sim.occupancy import rasterise
+from haven_sim.nav.path_style import shape_path
+from haven_sim.nav.planner import GridPlanner
+from haven_sim.sim.simulation import Simulation
+from haven_sim.sim.world import load_world, packaged_world
 
 
 def contacts(sim):

@@ -4,10 +4,10 @@ import math
 
 import pytest
 
-from haven_sim.geometry import Pose2D, Twist2D
-from haven_sim.mux import ESTOP, IDLE, NAV, TELEOP, VelocityMux
-from haven_sim.odometry import Odometry, OdometryNoise
-from haven_sim.pacer import Pacer
+from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.nav.mux import ESTOP, IDLE, NAV, TELEOP, VelocityMux
+from haven_sim.sim.odometry import Odometry, OdometryNoise
+from haven_sim.sim.pacer import Pacer
 
 
 def _circle(n=500):

@@ -3,7 +3,7 @@ import math
 import numpy as np
 import pytest
 
-from haven_sim.geometry import (
+from haven_sim.common.geometry import (
     Pose2D,
     distance_point_to_edges,
     points_in_polygon,

@@ -5,10 +5,10 @@ import math
 import pytest
 from helpers import corridor, drive_closed_loop
 
-from haven_sim.controller import PathFollower, Status
-from haven_sim.geometry import Pose2D, Twist2D
-from haven_sim.navigator import Navigator, NavigatorParams, NavState
-from haven_sim.simulation import Simulation
+from haven_sim.nav.follower import PathFollower, Status
+from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.nav.navigator import Navigator, NavigatorParams, NavState
+from haven_sim.sim.simulation import Simulation
 
 GOAL = Pose2D(11.0, 1.5, 0.0)
 

@@ -2,8 +2,8 @@ import numpy as np
 import pytest
 from helpers import box_world
 
-from haven_sim.occupancy import OCCUPIED, rasterise
-from haven_sim.world import load_world, packaged_world
+from haven_sim.sim.occupancy import OCCUPIED, rasterise
+from haven_sim.sim.world import load_world, packaged_world
 
 
 def test_grid_covers_world_with_padding_and_marks_walls():

@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from haven_sim.geometry import Pose2D, wrap_angle
-from haven_sim.path_style import SegmentKind, StyleParams, classify, shape_path
+from haven_sim.common.geometry import Pose2D, wrap_angle
+from haven_sim.nav.path_style import SegmentKind, StyleParams, classify, shape_path
 
 R, A, S = SegmentKind.ROTATE, SegmentKind.ARC, SegmentKind.STRAIGHT
 

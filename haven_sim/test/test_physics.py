@@ -5,9 +5,9 @@ import math
 import pytest
 from helpers import box_world
 
-from haven_sim.commands import VelocityLimits
-from haven_sim.geometry import Pose2D, Twist2D
-from haven_sim.simulation import SimConfig, Simulation
+from haven_sim.sim.commands import VelocityLimits
+from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.sim.simulation import SimConfig, Simulation
 
 INSTANT = VelocityLimits(max_linear_accel_mps2=1e6, max_angular_accel_rps2=1e6)
 

@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 from helpers import box_world
 
-from haven_sim.geometry import distance_point_to_edges
-from haven_sim.occupancy import OccupancyGridData, rasterise
-from haven_sim.planner import GridPlanner, PlannerParams, PlanningError, convex_corners, inflate_square
-from haven_sim.world import load_world, packaged_world
+from haven_sim.common.geometry import distance_point_to_edges
+from haven_sim.sim.occupancy import OccupancyGridData, rasterise
+from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError, convex_corners, inflate_square
+from haven_sim.sim.world import load_world, packaged_world
 
 
 def min_clearance(world, points):

@@ -8,10 +8,10 @@ from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import Odometry, Path
 from std_msgs.msg import Bool, String
 
-from haven_sim.geometry import Pose2D
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
-from haven_sim.path_style import SegmentKind, classify
+from haven_sim.nav.path_style import SegmentKind, classify
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
 SIM, MUX, PLANNER, CONTROLLER = (f"haven_sim.nodes.{n}" for n in ("sim_node", "mux_node", "planner_node", "controller_node"))

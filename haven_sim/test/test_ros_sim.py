@@ -13,8 +13,8 @@ from std_srvs.srv import Trigger
 
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
-from haven_sim.nodes.testing import tracebacks
-from haven_sim.world import load_world, packaged_world
+from ros_harness import tracebacks
+from haven_sim.sim.world import load_world, packaged_world
 
 pytestmark = pytest.mark.ros
 SIM = "haven_sim.nodes.sim_node"

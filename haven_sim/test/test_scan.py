@@ -7,11 +7,11 @@ import pymunk
 import pytest
 from helpers import box_world
 
-from haven_sim.geometry import Pose2D, distance_point_to_edges, points_in_polygon
-from haven_sim.physics import ROBOT
-from haven_sim.scan import LaserScanner, ScanParams
-from haven_sim.simulation import Simulation
-from haven_sim.world import load_world, packaged_world
+from haven_sim.common.geometry import Pose2D, distance_point_to_edges, points_in_polygon
+from haven_sim.sim.physics import ROBOT
+from haven_sim.sim.scan import LaserScanner, ScanParams
+from haven_sim.sim.simulation import Simulation
+from haven_sim.sim.world import load_world, packaged_world
 
 
 def beam(params, angle):

@@ -1,7 +1,7 @@
 import pytest
 import yaml
 
-from haven_sim.world import WorldError, load_world, packaged_world, resolve_world_path
+from haven_sim.sim.world import WorldError, load_world, packaged_world, resolve_world_path
 
 
 def test_packaged_world_loads():
@@ -16,7 +16,7 @@ def test_packaged_world_loads():
 
 
 def test_polygons_are_stored_counter_clockwise():
-    from haven_sim.geometry import polygon_area
+    from haven_sim.common.geometry import polygon_area
 
     w = load_world(packaged_world("small_test"))
     assert all(polygon_area(list(s.polygon)) > 0 for s in w.solid_shapes())
@@ -83,7 +83,7 @@ def test_yaml_syntax_error_and_missing_file(tmp_path):
 def test_obstructions_are_solid_until_removed():
     d = _base()
     d["obstructions"] = [{"id": "door", "segment": [[4, 1.9], [4, 3.1]], "thickness": 0.05, "removed_when_human_reaches": "west"}]
-    from haven_sim.world import parse_world
+    from haven_sim.sim.world import parse_world
 
     w = parse_world(d)
     assert len(w.solid_shapes()) == len(w.solid_shapes(frozenset({"door"}))) + 1

@@ -22,8 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from haven_sim.geometry import Point, Pose2D, wrap_angle
-from haven_sim.path_style import SegmentKind, classify
+from haven_sim.common.geometry import Point, Pose2D, wrap_angle
+from haven_sim.nav.path_style import SegmentKind, classify
 from haven_viz.markers import Color, MarkerSpec, Shape
 
 PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS = "path_projection", "turn_signals", "thought_bubble", "battery_indicator"

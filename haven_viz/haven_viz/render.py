@@ -19,8 +19,8 @@ from matplotlib.axes import Axes  # noqa: E402
 from matplotlib.patches import Circle, FancyArrow, Polygon, Rectangle  # noqa: E402
 from matplotlib.transforms import Affine2D  # noqa: E402
 
-from haven_sim.geometry import FloatArray  # noqa: E402
-from haven_sim.world import World  # noqa: E402
+from haven_sim.common.geometry import FloatArray  # noqa: E402
+from haven_sim.sim.world import World  # noqa: E402
 from haven_viz.cues import BATTERY_NS, THOUGHT_NS  # noqa: E402
 from haven_viz.markers import MarkerSpec, Shape  # noqa: E402
 from haven_viz.world_markers import COLORS  # noqa: E402

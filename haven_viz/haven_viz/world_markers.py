@@ -6,9 +6,9 @@ from __future__ import annotations
 import math
 from collections.abc import Collection, Sequence
 
-from haven_sim.geometry import Point, Pose2D, polygon_area
-from haven_sim.physics import HUMAN_BODY, ROBOT_BODY
-from haven_sim.world import World
+from haven_sim.common.geometry import Point, Pose2D, polygon_area
+from haven_sim.sim.physics import HUMAN_BODY, ROBOT_BODY
+from haven_sim.sim.world import World
 from haven_viz.markers import Color, MarkerSpec, Point3, Shape
 
 WALL_HEIGHT_M = 0.5

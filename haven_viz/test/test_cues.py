@@ -4,8 +4,8 @@ import math
 
 import pytest
 
-from haven_sim.geometry import Pose2D
-from haven_sim.path_style import shape_path
+from haven_sim.common.geometry import Pose2D
+from haven_sim.nav.path_style import shape_path
 from haven_viz.cues import PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS, ArCues, CueParams, Toggles, battery_color
 from haven_viz.markers import MarkerDiff, Shape
 

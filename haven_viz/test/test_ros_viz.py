@@ -10,7 +10,7 @@ from rcl_interfaces.srv import SetParameters
 from std_msgs.msg import String
 from visualization_msgs.msg import Marker, MarkerArray
 
-from haven_sim.geometry import Pose2D
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_viz.markers import MarkerSpec, Shape

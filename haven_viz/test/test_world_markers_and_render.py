@@ -4,8 +4,8 @@ import matplotlib.image as mpimg
 import numpy as np
 import pytest
 
-from haven_sim.geometry import Pose2D, polygon_area
-from haven_sim.world import load_world, packaged_world
+from haven_sim.common.geometry import Pose2D, polygon_area
+from haven_sim.sim.world import load_world, packaged_world
 from haven_viz.cues import ArCues
 from haven_viz.render import render_scene
 from haven_viz.world_markers import COLORS, body_markers, triangulate, world_markers
@@ -40,7 +40,7 @@ def test_body_markers_for_robot_and_each_human():
 def test_render_writes_a_picture_of_the_scene(tmp_path):
     world = load_world(packaged_world("small_test"))
     cues = ArCues()
-    from haven_sim.path_style import shape_path
+    from haven_sim.nav.path_style import shape_path
 
     cues.set_path(shape_path([(1.0, 2.5), (6.5, 1.5)], math.pi / 2))
     robot = Pose2D(1.0, 2.5, math.pi / 2)

@@ -15,8 +15,8 @@ from rclpy.node import Node
 from sensor_msgs.msg import BatteryState
 from std_msgs.msg import String
 
-from haven_scenarios.square_drive import SquareDriver
-from haven_sim.geometry import Pose2D
+from haven_scenarios.tools.square_drive import SquareDriver
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node

@@ -12,7 +12,7 @@ from geometry_msgs.msg import PoseStamped
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from haven_sim.geometry import Pose2D
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node

@@ -14,7 +14,7 @@ import tty
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
 
-from haven_scenarios.keys import HELP, KeyMapper
+from haven_scenarios.tools.keys import HELP, KeyMapper
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node

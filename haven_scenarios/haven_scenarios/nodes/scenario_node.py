@@ -17,9 +17,9 @@ from rclpy.node import Node
 from sensor_msgs.msg import BatteryState
 from std_msgs.msg import String
 
-from haven_scenarios.core import CoreOutput, ScenarioCore
-from haven_scenarios.scenario import load_scenario
-from haven_sim.geometry import Pose2D
+from haven_scenarios.study.director import CoreOutput, ScenarioCore
+from haven_scenarios.study.scenario import load_scenario
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node

@@ -14,8 +14,8 @@ from nav_msgs.msg import Odometry, Path
 from rclpy.node import Node
 from std_msgs.msg import Bool, String
 
-from haven_sim.controller import ControllerParams, PathFollower, Status
-from haven_sim.geometry import Pose2D
+from haven_sim.nav.follower import ControllerParams, PathFollower, Status
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node

@@ -14,11 +14,11 @@ from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import String
 
-from haven_sim.battery import BatteryReading, PowerStatus
-from haven_sim.frames import Frame
-from haven_sim.geometry import FloatArray, Pose2D, Twist2D, quaternion_to_yaw, stamp_parts, yaw_to_quaternion
-from haven_sim.occupancy import OccupancyGridData
-from haven_sim.scan import ScanParams
+from haven_sim.sim.battery import BatteryReading, PowerStatus
+from haven_sim.sim.frames import Frame
+from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, quaternion_to_yaw, stamp_parts, yaw_to_quaternion
+from haven_sim.sim.occupancy import OccupancyGridData
+from haven_sim.sim.scan import ScanParams
 
 
 def time_msg(t: float) -> Time:

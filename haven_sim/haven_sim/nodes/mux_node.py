@@ -13,7 +13,7 @@ from geometry_msgs.msg import Twist
 from rclpy.node import Node
 from std_msgs.msg import Bool, String
 
-from haven_sim.mux import IDLE, VelocityMux
+from haven_sim.nav.mux import IDLE, VelocityMux
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node

@@ -15,13 +15,13 @@ from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rclpy.node import Node
 from std_msgs.msg import Bool, String
 
-from haven_sim.geometry import Pose2D
-from haven_sim.navigator import Navigator, NavigatorParams, NavOutput
+from haven_sim.common.geometry import Pose2D
+from haven_sim.nav.navigator import Navigator, NavigatorParams, NavOutput
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
-from haven_sim.path_style import StyleParams
-from haven_sim.planner import PlannerParams
+from haven_sim.nav.path_style import StyleParams
+from haven_sim.nav.planner import PlannerParams
 
 
 class PlannerNode(Node):

@@ -10,7 +10,7 @@ import rclpy
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 
-from haven_sim.world import WorldError
+from haven_sim.sim.world import WorldError
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:

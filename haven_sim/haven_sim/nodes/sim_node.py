@@ -21,17 +21,17 @@ from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import String
 from std_srvs.srv import Trigger
 
-from haven_sim.battery import BatteryParams
-from haven_sim.frames import human_frames, robot_frame, static_frames
-from haven_sim.commands import CommandStatus, VelocityLimits
+from haven_sim.sim.battery import BatteryParams
+from haven_sim.sim.frames import human_frames, robot_frame, static_frames
+from haven_sim.sim.commands import CommandStatus, VelocityLimits
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
-from haven_sim.odometry import OdometryNoise
-from haven_sim.pacer import Pacer
-from haven_sim.scan import ScanParams
-from haven_sim.simulation import SimConfig, Simulation
-from haven_sim.world import load_world, resolve_world_path
+from haven_sim.sim.odometry import OdometryNoise
+from haven_sim.sim.pacer import Pacer
+from haven_sim.sim.scan import ScanParams
+from haven_sim.sim.simulation import SimConfig, Simulation
+from haven_sim.sim.world import load_world, resolve_world_path
 
 try:  # not on PyPI: the pip setup builds it with colcon (scripts/build_interfaces.py)
     from tf2_msgs.msg import TFMessage

@@ -6,7 +6,7 @@ from geometry_msgs.msg import Point
 from std_msgs.msg import ColorRGBA
 from visualization_msgs.msg import Marker, MarkerArray
 
-from haven_sim.geometry import quaternion_to_yaw
+from haven_sim.common.geometry import quaternion_to_yaw
 from haven_sim.nodes.conversions import quaternion_msg, time_msg
 from haven_viz.markers import MarkerSpec, Shape, Update
 

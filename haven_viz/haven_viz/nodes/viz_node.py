@@ -23,11 +23,11 @@ from sensor_msgs.msg import BatteryState
 from std_msgs.msg import String
 from visualization_msgs.msg import MarkerArray
 
-from haven_sim.geometry import Pose2D
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as sim_conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
-from haven_sim.world import World, load_world, resolve_world_path
+from haven_sim.sim.world import World, load_world, resolve_world_path
 from haven_viz.cues import ArCues, CueParams, Toggles
 from haven_viz.markers import MarkerDiff
 from haven_viz.nodes.conversions import marker_array

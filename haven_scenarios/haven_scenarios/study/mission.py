@@ -1,0 +1,191 @@
+"""The mission executive: which target next, when to go and charge, what the robot is thinking.
+
+It sends goals (a room centre, a gem, the charging base), says what the robot is doing (the
+thought bubble's text), picks the next robot gem (`nearest` by planned path length, or a seeded
+`random` order, uniform, unlike HAVEN's biased shuffle), and runs HAVEN's two battery modes with
+planned path lengths instead of straight lines:
+
+  * `on_arrival`: before leaving for a target, if path(robot -> target) + path(target -> base),
+    times `safety_factor` (planned paths leave out turns and detours; HAVEN used 1), exceeds the
+    remaining range, go and charge first;
+  * `continuous`: at every tick, when the remaining range falls to `safety_factor` x path(robot ->
+    base), abandon the target and go and charge.
+
+Charging lasts until the level reaches `charge_until`; then the remaining targets resume, the
+abandoned one first. (The original wiped its target list on a detour and never charged.)
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from enum import Enum
+from typing import Any
+
+from haven_scenarios.study.scenario import BatteryPlan
+from haven_sim.common.geometry import Point, Pose2D
+
+PathLength = Callable[[Point, Point], float]  # planned length, math.inf when unreachable
+
+
+@dataclass(frozen=True)
+class Target:
+    id: str
+    x: float
+    y: float
+    label: str  # for the thought bubble: "gem rg3", "room B"
+
+    @property
+    def xy(self) -> Point:
+        return (self.x, self.y)
+
+
+class Phase(Enum):
+    IDLE = "idle"
+    GOING = "going"
+    TO_BASE = "to_base"
+    CHARGING = "charging"
+    DONE = "done"
+
+
+@dataclass
+class MissionOutput:
+    goal: Pose2D | None = None  # a goal to send now
+    thought: str | None = None  # a new thought text
+    events: list[dict[str, Any]] = field(default_factory=list)
+
+
+class Mission:
+    def __init__(
+        self,
+        targets: Sequence[Target],
+        path_length: PathLength,
+        order: str = "fixed",  # fixed (the given order) | nearest | random
+        battery: BatteryPlan | None = None,
+        base: Point | None = None,
+        seed: int = 0,
+    ) -> None:
+        self.battery = battery or BatteryPlan()
+        if self.battery.mode != "off" and base is None:
+            raise ValueError("a battery mode other than 'off' needs a charging base")
+        self.path_length = path_length
+        self.order = order
+        self.base = base
+        self.pending = list(targets)
+        if order == "random":
+            random.Random(seed).shuffle(self.pending)
+        self.phase = Phase.IDLE
+        self.current: Target | None = None
+        self.done_ids: list[str] = []
+        self.thought = ""
+        self.charge_trips = 0
+        self._charge_level, self._charge_ticks = 0.0, 0  # charging progress, to notice a stall
+
+    # -- decisions -------------------------------------------------------------------------------
+    def _range(self, level: float) -> float:
+        return level * self.battery.capacity_m
+
+    def _pick(self, robot: Pose2D) -> Target | None:
+        if not self.pending:
+            return None
+        if self.order == "nearest":
+            return min(self.pending, key=lambda t: self.path_length((robot.x, robot.y), t.xy))
+        return self.pending[0]
+
+    def _say(self, out: MissionOutput, text: str) -> None:
+        if text != self.thought:
+            self.thought = text
+            out.thought = text
+
+    def _go(self, out: MissionOutput, target: Target) -> None:
+        self.current, self.phase = target, Phase.GOING
+        out.goal = Pose2D(target.x, target.y, math.nan)
+        self._say(out, f"Going to {target.label}")
+        out.events.append({"type": "target_selected", "target": target.id})
+
+    def _to_base(self, out: MissionOutput, reason: str) -> None:
+        assert self.base is not None
+        self.phase = Phase.TO_BASE
+        self.charge_trips += 1
+        out.goal = Pose2D(self.base[0], self.base[1], math.nan)
+        self._say(out, "Low battery: going to charge")
+        out.events.append({"type": "charge_trip", "reason": reason, "abandoned": self.current.id if self.current else None})
+
+    def _next(self, out: MissionOutput, robot: Pose2D, level: float) -> None:
+        target = self.current if self.current is not None else self._pick(robot)
+        if target is None:
+            self.phase, self.current = Phase.DONE, None
+            self._say(out, "All done")
+            out.events.append({"type": "task_done", "by": "robot"})
+            return
+        if self.battery.mode == "on_arrival" and self.base is not None:
+            # Planned lengths leave out turns, arcs and detours: keep `safety_factor` in hand.
+            need = self.battery.safety_factor * (self.path_length((robot.x, robot.y), target.xy) + self.path_length(target.xy, self.base))
+            if need > self._range(1.0) and level >= self.battery.charge_until - 1e-6:
+                # Not even a full charge covers it: charging again would loop forever, so go.
+                out.events.append({"type": "battery_insufficient", "target": target.id, "need_m": round(need, 2)})
+            elif need > self._range(level):
+                self.current = target
+                self._to_base(out, f"needs {need:.1f} m, has {self._range(level):.1f} m")
+                return
+        self._go(out, target)
+
+    # -- inputs ----------------------------------------------------------------------------------
+    def start(self, robot: Pose2D, level: float = 1.0) -> MissionOutput:
+        out = MissionOutput()
+        self._next(out, robot, level)
+        return out
+
+    def target_done(self, target_id: str, robot: Pose2D, level: float) -> MissionOutput:
+        """A rule says the current target is finished (gem collected, room reached)."""
+        out = MissionOutput()
+        self.pending = [t for t in self.pending if t.id != target_id]
+        self.done_ids.append(target_id)
+        if self.current is not None and self.current.id == target_id:
+            self.current = None
+            if self.phase is Phase.GOING:
+                self._next(out, robot, level)
+        return out
+
+    def resend(self) -> MissionOutput:
+        """The world changed (an obstruction went away): ask for the current goal again."""
+        out = MissionOutput()
+        if self.phase is Phase.GOING and self.current is not None:
+            out.goal = Pose2D(self.current.x, self.current.y, math.nan)
+        elif self.phase is Phase.TO_BASE and self.base is not None:
+            out.goal = Pose2D(self.base[0], self.base[1], math.nan)
+        return out
+
+    def tick(self, robot: Pose2D, level: float, at_base_goal: bool = False, waiting: bool = False) -> MissionOutput:
+        out = MissionOutput()
+        p = self.battery
+        if self.phase is Phase.TO_BASE and at_base_goal:
+            self.phase = Phase.CHARGING
+            self._charge_level, self._charge_ticks = level, 0
+            out.events.append({"type": "charging_started", "level": round(level, 3)})
+        if self.phase is Phase.CHARGING:
+            if level >= p.charge_until - 1e-6:
+                out.events.append({"type": "charging_done", "level": round(level, 3)})
+                self._next(out, robot, level)
+            elif level <= self._charge_level + 1e-4 and self._charge_ticks >= 25:
+                # Not charging (e.g. stopped just off the base): drive onto it again.
+                out.events.append({"type": "charging_stalled", "level": round(level, 3)})
+                self.phase = Phase.TO_BASE
+                assert self.base is not None
+                out.goal = Pose2D(self.base[0], self.base[1], math.nan)
+            else:
+                if level > self._charge_level + 1e-4:
+                    self._charge_level, self._charge_ticks = level, 0
+                self._charge_ticks += 1
+                self._say(out, f"Charging: {round(100 * level)} %")
+            return out
+        if self.phase is Phase.GOING and p.mode == "continuous" and self.base is not None:
+            home = self.path_length((robot.x, robot.y), self.base)
+            if self._range(level) <= p.safety_factor * home:
+                self._to_base(out, f"range {self._range(level):.1f} m <= {p.safety_factor:g} x {home:.1f} m home")
+                return out
+        if self.phase is Phase.GOING and self.current is not None:
+            self._say(out, "Waiting for you to pass" if waiting else f"Going to {self.current.label}")
+        return out

@@ -1,0 +1,165 @@
+"""Simulated participants for unattended trials, as velocity commands for /humans/<id>/cmd_vel.
+
+  * `Walker`: walks its task (room centres in order, or the human gems, standing on each for the
+    dwell time) along planned paths, with seeded variation in speed and, for gems, in route;
+  * `Blocker`: a walker that first steps into the robot's projected path a few metres ahead of the
+    robot and stands there a while (the case that makes HAVEN's robot wait or detour);
+  * `Yielder`: a walker that stops and steps aside when the robot comes close in front of it.
+
+They see what a participant sees: the robot's pose and its projected path.
+"""
+
+from __future__ import annotations
+
+import math
+import random
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from haven_sim.common.geometry import Point, Pose2D, Twist2D, wrap_angle
+from haven_sim.nav.planner import GridPlanner, PlanningError
+
+
+@dataclass(frozen=True)
+class Stop:
+    """A place to walk to and how long to stand there."""
+
+    x: float
+    y: float
+    dwell_s: float = 0.0
+    reach_m: float = 0.15
+
+
+class Walker:
+    def __init__(self, human_id: str, stops: Sequence[Stop], planner: GridPlanner, speed_mps: float = 1.0, seed: int = 0) -> None:
+        self.id = human_id
+        self.rng = random.Random(seed)
+        self.speed = speed_mps * self.rng.uniform(0.85, 1.15)
+        self.stops = list(stops)
+        self.planner = planner
+        self._waypoints: list[Point] = []
+        self._arrived_at: float | None = None
+        self.done = not self.stops
+
+    @staticmethod
+    def shuffled_nearest(stops: Sequence[Stop], start: Point, seed: int) -> list[Stop]:
+        """A route through `stops`: nearest next, with seeded randomness (people do not plan tours)."""
+        rng = random.Random(seed)
+        left, here, route = list(stops), start, []
+        while left:
+            left.sort(key=lambda s: math.hypot(s.x - here[0], s.y - here[1]) * rng.uniform(0.7, 1.3))
+            nxt = left.pop(0)
+            route.append(nxt)
+            here = (nxt.x, nxt.y)
+        return route
+
+    def _plan(self, me: Pose2D) -> None:
+        stop = self.stops[0]
+        try:
+            self._waypoints = self.planner.plan((me.x, me.y), (stop.x, stop.y)).points[1:]
+        except PlanningError:
+            self._waypoints = [(stop.x, stop.y)]
+
+    def _walk_to(self, me: Pose2D, x: float, y: float, speed: float, hold_s: float = 0.1) -> Twist2D:
+        """Straight at (x, y) while turning to face it. The command holds for `hold_s` (the 10 Hz
+        tick) and is in the person's own frame, so it is aimed along the heading they will have
+        half-way through, or the walk would curl as they turn."""
+        dx, dy = x - me.x, y - me.y
+        d = math.hypot(dx, dy)
+        v = min(speed, 1.5 * d + 0.05)
+        wz = max(-3.0, min(3.0, 2.0 * wrap_angle(math.atan2(dy, dx) - me.yaw)))
+        mid = me.yaw + 0.5 * wz * hold_s
+        c, s = math.cos(mid), math.sin(mid)
+        vx, vy = v * (c * dx + s * dy) / max(d, 1e-9), v * (-s * dx + c * dy) / max(d, 1e-9)
+        return Twist2D(vx, vy, wz)
+
+    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
+        return self._keep_clear(me, robot, self._task(now, me))
+
+    @staticmethod
+    def _keep_clear(me: Pose2D, robot: Pose2D, cmd: Twist2D, radius_m: float = 0.9) -> Twist2D:
+        """People do not walk into robots: within `radius_m`, stop closing in and edge away."""
+        dx, dy = me.x - robot.x, me.y - robot.y
+        d = math.hypot(dx, dy)
+        if d >= radius_m or d < 1e-6:
+            return cmd
+        ux, uy = dx / d, dy / d  # away from the robot, world frame
+        c, s = math.cos(me.yaw), math.sin(me.yaw)
+        vx, vy = c * cmd.vx - s * cmd.vy, s * cmd.vx + c * cmd.vy
+        toward = vx * ux + vy * uy
+        if toward < 0:  # drop the part of the motion that closes in on the robot
+            vx, vy = vx - toward * ux, vy - toward * uy
+        push = 0.6 * (radius_m - d) / radius_m
+        vx, vy = vx + push * ux, vy + push * uy
+        return Twist2D(c * vx + s * vy, -s * vx + c * vy, cmd.wz)
+
+    def _task(self, now: float, me: Pose2D) -> Twist2D:
+        if self.done:
+            return Twist2D()
+        stop = self.stops[0]
+        if math.hypot(stop.x - me.x, stop.y - me.y) <= stop.reach_m:
+            if self._arrived_at is None:
+                self._arrived_at = now
+            if now - self._arrived_at >= stop.dwell_s:
+                self.stops.pop(0)
+                self._waypoints, self._arrived_at = [], None
+                self.done = not self.stops
+            return Twist2D()
+        self._arrived_at = None
+        if not self._waypoints:
+            self._plan(me)
+        while len(self._waypoints) > 1 and math.hypot(self._waypoints[0][0] - me.x, self._waypoints[0][1] - me.y) < 0.2:
+            self._waypoints.pop(0)
+        x, y = self._waypoints[0]
+        return self._walk_to(me, x, y, self.speed)
+
+
+class Blocker(Walker):
+    """Steps onto the robot's projected path `ahead_m` in front of the robot, stands `block_s`,
+    then goes about its task."""
+
+    def __init__(self, *args: object, ahead_m: float = 3.0, block_s: float = 8.0, **kwargs: object) -> None:
+        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
+        self.ahead_m, self.block_s = ahead_m, block_s
+        self._spot: Point | None = None
+        self._blocking_since: float | None = None
+        self.blocked = False
+
+    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
+        if self.blocked:
+            return self._keep_clear(me, robot, self._task(now, me))
+        if self._spot is None and len(robot_path) >= 2:
+            walked = 0.0
+            for a, b in zip(robot_path, robot_path[1:]):
+                walked += math.hypot(b.x - a.x, b.y - a.y)
+                if walked >= self.ahead_m and math.hypot(b.x - robot.x, b.y - robot.y) >= self.ahead_m * 0.8:
+                    self._spot = (b.x, b.y)
+                    break
+        if self._spot is None:
+            return self._keep_clear(me, robot, self._task(now, me))
+        if math.hypot(self._spot[0] - me.x, self._spot[1] - me.y) > 0.15:
+            return self._keep_clear(me, robot, self._walk_to(me, self._spot[0], self._spot[1], self.speed))
+        if self._blocking_since is None:
+            self._blocking_since = now
+        if now - self._blocking_since >= self.block_s:
+            self.blocked = True
+            self._waypoints = []
+        return Twist2D()
+
+
+class Yielder(Walker):
+    """Stops and steps to its right when the robot is within `yield_m` in front of it."""
+
+    def __init__(self, *args: object, yield_m: float = 1.5, **kwargs: object) -> None:
+        super().__init__(*args, **kwargs)  # type: ignore[arg-type]
+        self.yield_m = yield_m
+
+    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
+        dx, dy = robot.x - me.x, robot.y - me.y
+        d = math.hypot(dx, dy)
+        if d < self.yield_m and abs(wrap_angle(math.atan2(dy, dx) - me.yaw)) < math.radians(70):
+            right = (math.sin(me.yaw), -math.cos(me.yaw))
+            room = self.planner.free_run((me.x, me.y), right, 1.0)
+            step = 0.4 if room > 0.5 else 0.0  # step aside if there is room, else just stand
+            return Twist2D(0.0, -step, 0.0)
+        return self._keep_clear(me, robot, self._task(now, me))

@@ -1,0 +1,230 @@
+"""Any-angle shortest paths on an occupancy grid, like the NavMesh paths HAVEN's robot followed.
+
+The grid (ours from the world file, or any nav_msgs/OccupancyGrid) is inflated by the robot radius
+plus a safety margin with a square kernel, which keeps axis-aligned walls axis-aligned. The convex
+corners of the inflated obstacles are the nodes of a visibility graph; line of sight is tested by
+sampling the inflated grid. All-pairs shortest paths between the nodes are computed once per map,
+so a query only tests what the start and the goal can see and picks the best pair of nodes.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from haven_sim.common.geometry import FloatArray, Point
+from haven_sim.sim.occupancy import OccupancyGridData
+
+BoolGrid = npt.NDArray[np.bool_]
+
+
+@dataclass(frozen=True)
+class PlannerParams:
+    robot_radius_m: float = 0.177
+    safety_margin_m: float = 0.05
+    occupied_threshold: int = 50  # cells at or above are obstacles
+    unknown_is_obstacle: bool = True  # -1 cells
+    snap_radius_m: float = 0.3  # a start or goal this close to free space is moved onto it
+
+    @property
+    def inflation_m(self) -> float:
+        return self.robot_radius_m + self.safety_margin_m
+
+
+class PlanningError(Exception):
+    """A goal that cannot be reached; the message is the reason, for the user and the events."""
+
+
+def inflate_square(occupied: BoolGrid, cells: int) -> BoolGrid:
+    """Every cell within `cells` (Chebyshev distance) of an occupied cell."""
+    out = occupied.copy()
+    for axis in (0, 1):
+        src = out.copy()
+        for k in range(1, cells + 1):
+            if axis == 0:
+                out[k:, :] |= src[:-k, :]
+                out[:-k, :] |= src[k:, :]
+            else:
+                out[:, k:] |= src[:, :-k]
+                out[:, :-k] |= src[:, k:]
+    return out
+
+
+def convex_corners(blocked: BoolGrid) -> npt.NDArray[np.intp]:
+    """(row, col) of free cells diagonally next to an obstacle corner that sticks out toward them."""
+    h, w = blocked.shape
+    pad = np.ones((h + 2, w + 2), dtype=bool)
+    pad[1:-1, 1:-1] = blocked
+    free = ~pad[1:-1, 1:-1]
+    found = np.zeros((h, w), dtype=bool)
+    for dr in (-1, 1):
+        for dc in (-1, 1):
+            diag = pad[1 + dr : h + 1 + dr, 1 + dc : w + 1 + dc]
+            side_r = pad[1 + dr : h + 1 + dr, 1 : w + 1]
+            side_c = pad[1 : h + 1, 1 + dc : w + 1 + dc]
+            found |= free & diag & ~side_r & ~side_c
+    return np.argwhere(found)
+
+
+@dataclass(frozen=True)
+class Plan:
+    points: list[Point]  # start, corners..., goal (start/goal possibly snapped onto free space)
+    length_m: float
+
+
+class GridPlanner:
+    def __init__(self, grid: OccupancyGridData, params: PlannerParams | None = None) -> None:
+        self.grid = grid
+        self.params = params or PlannerParams()
+        data = grid.data
+        occupied = data >= self.params.occupied_threshold
+        if self.params.unknown_is_obstacle:
+            occupied |= data < 0
+        self.occupied = occupied
+        self.cells = int(math.ceil(self.params.inflation_m / grid.resolution_m))
+        self.blocked = inflate_square(occupied, self.cells)
+        # Without the safety margin: what the robot's body itself must not touch (for arcs).
+        self.hard_blocked = inflate_square(occupied, int(math.ceil(self.params.robot_radius_m / grid.resolution_m)))
+        rc = convex_corners(self.blocked)
+        self.nodes = self._centres(rc)  # (N, 2) world coordinates
+        self._step = grid.resolution_m / 2.0
+        self._all_pairs()
+
+    # -- geometry helpers ------------------------------------------------------------------------
+    def _centres(self, rc: npt.NDArray[np.intp]) -> FloatArray:
+        g = self.grid
+        return np.column_stack([g.origin_x + (rc[:, 1] + 0.5) * g.resolution_m, g.origin_y + (rc[:, 0] + 0.5) * g.resolution_m]).astype(float)
+
+    def is_free(self, x: float, y: float) -> bool:
+        r, c = self.grid.cell_of(x, y)
+        return 0 <= r < self.grid.height and 0 <= c < self.grid.width and not bool(self.blocked[r, c])
+
+    def _cells_of(self, pts: FloatArray) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp], npt.NDArray[np.bool_]]:
+        g = self.grid
+        cols = np.floor((pts[:, 0] - g.origin_x) / g.resolution_m).astype(np.intp)
+        rows = np.floor((pts[:, 1] - g.origin_y) / g.resolution_m).astype(np.intp)
+        inside = (rows >= 0) & (rows < g.height) & (cols >= 0) & (cols < g.width)
+        return rows, cols, inside
+
+    def hard_clear(self, pts: FloatArray) -> bool:
+        """True if the robot's body (no safety margin) fits at every point."""
+        rows, cols, inside = self._cells_of(np.asarray(pts, dtype=float).reshape(-1, 2))
+        return bool(inside.all() and not self.hard_blocked[rows, cols].any())
+
+    def free_run(self, start: Point, direction: Point, max_m: float = 10.0) -> float:
+        """How far one can go from `start` along the unit vector `direction` before hitting an
+        obstacle of the map (not inflated)."""
+        step = self.grid.resolution_m / 2.0
+        s = np.arange(0.0, max_m + step, step)
+        pts = np.column_stack([start[0] + direction[0] * s, start[1] + direction[1] * s])
+        rows, cols, inside = self._cells_of(pts)
+        hit = ~inside
+        hit[inside] = self.occupied[rows[inside], cols[inside]]
+        idx = np.flatnonzero(hit)
+        return float(s[idx[0]]) if len(idx) else max_m
+
+    def visible(self, a: FloatArray, b: FloatArray) -> npt.NDArray[np.bool_]:
+        """Line of sight for each segment a[i] -> b[i] (arrays (M, 2)) through the inflated grid."""
+        a = np.asarray(a, dtype=float).reshape(-1, 2)
+        b = np.asarray(b, dtype=float).reshape(-1, 2)
+        if len(a) == 0:
+            return np.zeros(0, dtype=bool)
+        lengths = np.hypot(*(b - a).T)
+        counts = np.maximum(2, np.ceil(lengths / self._step).astype(np.intp) + 1)
+        seg = np.repeat(np.arange(len(a)), counts)
+        first = np.cumsum(counts) - counts
+        frac = (np.arange(len(seg)) - np.repeat(first, counts)) / np.repeat(counts - 1, counts)
+        pts = a[seg] + (b - a)[seg] * frac[:, None]
+        rows, cols, inside = self._cells_of(pts)
+        hit = np.ones(len(seg), dtype=bool)
+        hit[inside] = self.blocked[rows[inside], cols[inside]]
+        return ~np.logical_or.reduceat(hit, first)
+
+    def _all_pairs(self) -> None:
+        """Visibility between every pair of nodes, then Floyd-Warshall with next-hop tracking."""
+        n = len(self.nodes)
+        dist = np.full((n, n), np.inf)
+        np.fill_diagonal(dist, 0.0)
+        if n > 1:
+            i, j = np.triu_indices(n, 1)
+            ok = np.zeros(len(i), dtype=bool)
+            chunk = 20000
+            for s in range(0, len(i), chunk):
+                ok[s : s + chunk] = self.visible(self.nodes[i[s : s + chunk]], self.nodes[j[s : s + chunk]])
+            i, j = i[ok], j[ok]
+            d = np.hypot(*(self.nodes[i] - self.nodes[j]).T)
+            dist[i, j] = d
+            dist[j, i] = d
+        nxt = np.where(np.isfinite(dist), np.arange(n)[None, :], -1)
+        for k in range(n):
+            via = dist[:, k, None] + dist[None, k, :]
+            better = via < dist
+            if better.any():
+                dist = np.where(better, via, dist)
+                nxt = np.where(better, nxt[:, k, None], nxt)
+        self.dist = dist
+        self.next_hop = nxt
+
+    def _snap(self, p: Point, what: str) -> Point:
+        g = self.grid
+        x, y = p
+        r, c = g.cell_of(x, y)
+        if not (0 <= r < g.height and 0 <= c < g.width):
+            raise PlanningError(f"{what} ({x:.2f}, {y:.2f}) is outside the map")
+        if not self.blocked[r, c]:
+            return p
+        k = int(math.ceil(self.params.snap_radius_m / g.resolution_m))
+        r0, r1, c0, c1 = max(0, r - k), min(g.height, r + k + 1), max(0, c - k), min(g.width, c + k + 1)
+        free = np.argwhere(~self.blocked[r0:r1, c0:c1])
+        if len(free):
+            pts = self._centres(free + (r0, c0))
+            d = np.hypot(pts[:, 0] - x, pts[:, 1] - y)
+            best = int(np.argmin(d))
+            if d[best] <= self.params.snap_radius_m:
+                return (float(pts[best, 0]), float(pts[best, 1]))
+        raise PlanningError(
+            f"{what} ({x:.2f}, {y:.2f}) is inside an obstacle or within {self.params.inflation_m:.2f} m of one"
+        )
+
+    # -- queries ---------------------------------------------------------------------------------
+    def plan(self, start: Point, goal: Point) -> Plan:
+        s = self._snap(start, "start")
+        g = self._snap(goal, "goal")
+        sa, ga = np.array([s], dtype=float), np.array([g], dtype=float)
+        if self.visible(sa, ga)[0]:
+            return self._finish(start, [s, g], goal)
+        n = len(self.nodes)
+        if n == 0:
+            raise PlanningError(f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is not reachable from the start")
+        vis = self.visible(np.vstack([np.repeat(sa, n, 0), np.repeat(ga, n, 0)]), np.vstack([self.nodes, self.nodes]))
+        vs, vg = np.flatnonzero(vis[:n]), np.flatnonzero(vis[n:])
+        if len(vs) == 0 or len(vg) == 0:
+            who = "start" if len(vs) == 0 else "goal"
+            raise PlanningError(f"{who} ({(s if who == 'start' else g)[0]:.2f}, {(s if who == 'start' else g)[1]:.2f}) sees no way out")
+        ds = np.hypot(*(self.nodes[vs] - sa).T)
+        dg = np.hypot(*(self.nodes[vg] - ga).T)
+        total = ds[:, None] + self.dist[np.ix_(vs, vg)] + dg[None, :]
+        flat = int(np.argmin(total))
+        if not np.isfinite(total.flat[flat]):
+            raise PlanningError(f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is not reachable from the start")
+        i, j = vs[flat // len(vg)], vg[flat % len(vg)]
+        pts = [s]
+        while i != j:
+            pts.append((float(self.nodes[i, 0]), float(self.nodes[i, 1])))
+            i = self.next_hop[i, j]
+        pts += [(float(self.nodes[j, 0]), float(self.nodes[j, 1])), g]
+        return self._finish(start, pts, goal)
+
+    @staticmethod
+    def _finish(start: Point, pts: list[Point], goal: Point) -> Plan:
+        """Put the true start back in front (a robot nudged against a wall starts there) and drop
+        repeated points."""
+        out: list[Point] = [start]
+        for p in pts:
+            if math.hypot(p[0] - out[-1][0], p[1] - out[-1][1]) > 1e-9:
+                out.append(p)
+        length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(out, out[1:]))
+        return Plan(out, length)

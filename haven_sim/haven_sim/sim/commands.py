@@ -1,0 +1,96 @@
+"""Velocity commands: limits, clamping, acceleration ramps and the command watchdog.
+
+Time is always an argument (`now`, `dt`), so every rule here is unit-tested without a clock.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from enum import Enum
+
+from haven_sim.common.geometry import ZERO_TWIST, Twist2D
+
+
+@dataclass(frozen=True)
+class VelocityLimits:
+    """Speed and acceleration limits; defaults are a TurtleBot2 (Kobuki)."""
+
+    max_linear_mps: float = 0.7
+    max_lateral_mps: float = 0.0  # differential drive: no sideways motion
+    max_angular_rps: float = math.pi
+    max_linear_accel_mps2: float = 0.5
+    max_angular_accel_rps2: float = 3.5
+
+    @staticmethod
+    def human(max_speed_mps: float = 1.5) -> VelocityLimits:
+        """A walking person: holonomic, quick to start and stop."""
+        return VelocityLimits(max_speed_mps, max_speed_mps, 2.0 * math.pi, 3.0, 12.0)
+
+
+class CommandStatus(Enum):
+    ACCEPTED = "accepted"
+    CLAMPED = "clamped"
+    REJECTED = "rejected"  # non-finite
+
+
+def clamp(cmd: Twist2D, limits: VelocityLimits) -> Twist2D:
+    v, l, w = limits.max_linear_mps, limits.max_lateral_mps, limits.max_angular_rps
+    return Twist2D(max(-v, min(v, cmd.vx)), max(-l, min(l, cmd.vy)), max(-w, min(w, cmd.wz)))
+
+
+def _approach(current: float, target: float, max_step: float) -> float:
+    if target > current:
+        return min(target, current + max_step)
+    return max(target, current - max_step)
+
+
+def ramp(current: Twist2D, target: Twist2D, limits: VelocityLimits, dt: float) -> Twist2D:
+    """Move `current` toward `target` no faster than the acceleration limits allow."""
+    if current == target:
+        return current
+    dv = limits.max_linear_accel_mps2 * dt
+    return Twist2D(
+        _approach(current.vx, target.vx, dv),
+        _approach(current.vy, target.vy, dv),
+        _approach(current.wz, target.wz, limits.max_angular_accel_rps2 * dt),
+    )
+
+
+class CommandGate:
+    """One agent's command input: drops non-finite commands, clamps to limits, stops after a timeout,
+    and ramps the applied velocity within the acceleration limits."""
+
+    def __init__(self, limits: VelocityLimits, timeout_s: float = 0.5) -> None:
+        self.limits = limits
+        self.timeout_s = timeout_s
+        self.reset()
+
+    def reset(self) -> None:
+        self._target = ZERO_TWIST
+        self._stamp = -math.inf
+        self.applied = ZERO_TWIST
+
+    def command(self, cmd: Twist2D, now: float) -> CommandStatus:
+        if not cmd.is_finite():
+            return CommandStatus.REJECTED
+        limited = clamp(cmd, self.limits)
+        self._target = limited
+        self._stamp = now
+        return CommandStatus.ACCEPTED if limited == cmd else CommandStatus.CLAMPED
+
+    def target(self, now: float) -> Twist2D:
+        """The commanded velocity, or zero when the last command is older than the timeout."""
+        if now - self._stamp > self.timeout_s:
+            return ZERO_TWIST
+        return self._target
+
+    def is_stale(self, now: float) -> bool:
+        return now - self._stamp > self.timeout_s
+
+    def update(self, now: float, dt: float, enabled: bool = True) -> Twist2D:
+        """Advance the ramp by dt; returns the velocity to apply during the next step."""
+        goal = self._target if enabled and now - self._stamp <= self.timeout_s else ZERO_TWIST
+        if goal != self.applied:
+            self.applied = ramp(self.applied, goal, self.limits, dt)
+        return self.applied

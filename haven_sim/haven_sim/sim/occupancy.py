@@ -1,0 +1,75 @@
+"""Occupancy grid rasterised from the world's solid shapes (the /map the planner and viewers use)."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import numpy.typing as npt
+
+from haven_sim.common.geometry import points_in_polygon
+from haven_sim.sim.world import World
+
+OCCUPIED = 100
+FREE = 0
+
+
+@dataclass(frozen=True)
+class OccupancyGridData:
+    """Row-major cells (row = y index) as in nav_msgs/OccupancyGrid; origin is the lower-left corner."""
+
+    resolution_m: float
+    width: int
+    height: int
+    origin_x: float
+    origin_y: float
+    data: npt.NDArray[np.int8]  # shape (height, width)
+
+    def cell_of(self, x: float, y: float) -> tuple[int, int]:
+        """(row, col) of a point, possibly outside the grid."""
+        return (
+            int(math.floor((y - self.origin_y) / self.resolution_m)),
+            int(math.floor((x - self.origin_x) / self.resolution_m)),
+        )
+
+    def is_occupied(self, x: float, y: float) -> bool:
+        r, c = self.cell_of(x, y)
+        if not (0 <= r < self.height and 0 <= c < self.width):
+            return True
+        return bool(self.data[r, c] >= 50)
+
+
+def rasterise(
+    world: World, resolution_m: float = 0.05, padding_m: float = 0.5, removed: frozenset[str] = frozenset()
+) -> OccupancyGridData:
+    if resolution_m <= 0:
+        raise ValueError(f"map resolution must be positive, got {resolution_m}")
+    xmin, ymin, xmax, ymax = world.bounds()
+    ox = math.floor((xmin - padding_m) / resolution_m) * resolution_m
+    oy = math.floor((ymin - padding_m) / resolution_m) * resolution_m
+    width = int(math.ceil((xmax + padding_m - ox) / resolution_m))
+    height = int(math.ceil((ymax + padding_m - oy) / resolution_m))
+    grid = np.zeros((height, width), dtype=np.int8)
+    for shape in world.solid_shapes(removed):
+        poly = list(shape.polygon)
+        pts = np.asarray(poly)
+        c0 = max(0, int((pts[:, 0].min() - ox) / resolution_m) - 1)
+        c1 = min(width, int((pts[:, 0].max() - ox) / resolution_m) + 2)
+        r0 = max(0, int((pts[:, 1].min() - oy) / resolution_m) - 1)
+        r1 = min(height, int((pts[:, 1].max() - oy) / resolution_m) + 2)
+        cols = np.arange(c0, c1)
+        rows = np.arange(r0, r1)
+        xs, ys = np.meshgrid(ox + (cols + 0.5) * resolution_m, oy + (rows + 0.5) * resolution_m)
+        inside = points_in_polygon(xs, ys, poly)
+        grid[r0:r1, c0:c1][inside] = OCCUPIED
+        # Shapes thinner than a cell may contain no cell centre: also mark the cells their edges cross.
+        for x0, y0, x1, y1 in shape.edges():
+            n = max(2, int(math.hypot(x1 - x0, y1 - y0) / (resolution_m / 2.0)) + 1)
+            sx = np.linspace(x0, x1, n)
+            sy = np.linspace(y0, y1, n)
+            cc = np.floor((sx - ox) / resolution_m).astype(int)
+            rr = np.floor((sy - oy) / resolution_m).astype(int)
+            ok = (cc >= 0) & (cc < width) & (rr >= 0) & (rr < height)
+            grid[rr[ok], cc[ok]] = OCCUPIED
+    return OccupancyGridData(resolution_m, width, height, ox, oy, grid)

@@ -1,0 +1,180 @@
+"""The simulator core: world + physics + sensors + battery, advanced in fixed steps of sim time.
+
+Used the same way by the ROS simulator node (one step per pacer tick) and by batch mode (a plain
+loop). Commands are stamped with the current sim time, so the 0.5 s watchdog is in sim time too.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+
+from haven_sim.sim.battery import Battery, BatteryParams, BatteryReading
+from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits
+from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, wrap_angle
+from haven_sim.sim.occupancy import OccupancyGridData, rasterise
+from haven_sim.sim.odometry import Odometry, OdometryNoise
+from haven_sim.sim.physics import HUMAN_BODY, ROBOT_BODY, Physics
+from haven_sim.sim.scan import LaserScanner, ScanParams
+from haven_sim.sim.world import World
+
+
+@dataclass(frozen=True)
+class SimConfig:
+    step_s: float = 0.02
+    robot_limits: VelocityLimits = field(default_factory=VelocityLimits)
+    human_limits: VelocityLimits = field(default_factory=VelocityLimits.human)
+    cmd_timeout_s: float = 0.5
+    scan: ScanParams = field(default_factory=ScanParams)
+    battery: BatteryParams = field(default_factory=BatteryParams)
+    odom_noise: OdometryNoise = field(default_factory=OdometryNoise)
+    seed: int = 0
+
+    def validate(self) -> None:
+        if not self.step_s > 0:
+            raise ValueError(f"step_s must be positive, got {self.step_s}")
+        if not self.cmd_timeout_s > 0:
+            raise ValueError(f"cmd_timeout_s must be positive, got {self.cmd_timeout_s}")
+        if self.scan.beams < 1 or not 0 <= self.scan.range_min_m < self.scan.range_max_m:
+            raise ValueError("scan needs beams >= 1 and 0 <= range_min_m < range_max_m")
+        self.battery.validate()
+
+
+@dataclass(frozen=True)
+class SimEvent:
+    """Something that happened at `stamp` (sim seconds); becomes one JSON object on /haven/events."""
+
+    stamp: float
+    type: str
+    data: dict[str, Any] = field(default_factory=dict)
+
+    def as_dict(self) -> dict[str, Any]:
+        return {"stamp": round(self.stamp, 4), "source": "sim", "type": self.type, **self.data}
+
+
+class UnknownHumanError(KeyError):
+    pass
+
+
+class Simulation:
+    def __init__(self, world: World, config: SimConfig | None = None) -> None:
+        self.world = world
+        self.config = config or SimConfig()
+        self.config.validate()
+        self.time = 0.0
+        self.robot_gate = CommandGate(self.config.robot_limits, self.config.cmd_timeout_s)
+        self.human_gates = {h.id: CommandGate(self.config.human_limits, self.config.cmd_timeout_s) for h in world.humans}
+        self.battery = Battery(self.config.battery)
+        self.odometry = Odometry(world.robot_start, self.config.odom_noise, seed=self.config.seed)
+        self._events: list[SimEvent] = []
+        self.removed: set[str] = set()
+        self._build()
+
+    def _build(self) -> None:
+        w = self.world
+        self.physics = Physics(w.edges(obstructions=False), w.robot_start, {h.id: h.start for h in w.humans})
+        for o in w.obstructions:  # kept apart so that each can be removed
+            self.physics.add_obstruction(o.id, o.shape.edges())
+        self.scanner = LaserScanner(self.config.scan, w.edges(), seed=self.config.seed)
+        self.removed = set()
+        self._battery_was_empty = self.battery.empty
+        self._robot_pose = self.physics.robot.pose()
+
+    # -- inputs --------------------------------------------------------------------------------
+    def command_robot(self, cmd: Twist2D) -> CommandStatus:
+        return self.robot_gate.command(cmd, self.time)
+
+    def command_human(self, human_id: str, cmd: Twist2D) -> CommandStatus:
+        gate = self.human_gates.get(human_id)
+        if gate is None:
+            raise UnknownHumanError(human_id)
+        return gate.command(cmd, self.time)
+
+    def remove_obstruction(self, obstruction_id: str) -> None:
+        if obstruction_id in self.removed:
+            return
+        if obstruction_id not in {o.id for o in self.world.obstructions}:
+            raise KeyError(obstruction_id)
+        self.removed.add(obstruction_id)
+        self.physics.remove_obstruction(obstruction_id)
+        self.scanner.set_edges(self.world.edges(frozenset(self.removed)))
+        self._emit("obstruction_removed", id=obstruction_id)
+
+    def reset(self) -> None:
+        """Back to the world's start state; sim time keeps running (a /clock never goes backwards)."""
+        self.robot_gate.reset()
+        for g in self.human_gates.values():
+            g.reset()
+        self.battery.reset()
+        self.odometry.reset(self.world.robot_start)
+        self._build()
+        self._emit("reset")
+
+    # -- stepping ------------------------------------------------------------------------------
+    def step(self) -> None:
+        dt = self.config.step_s
+        now = self.time
+        robot_cmd = self.robot_gate.update(now, dt, enabled=not self.battery.empty)
+        human_cmds = {hid: g.update(now, dt) for hid, g in self.human_gates.items()}
+        before = self._robot_pose
+        self.physics.step(robot_cmd, human_cmds, dt)
+        self.time = now + dt
+        after = self._robot_pose = self.physics.robot.pose()
+        dist = math.hypot(after.x - before.x, after.y - before.y)
+        base = self.world.charging_base
+        to_base = math.hypot(after.x - base.position[0], after.y - base.position[1]) if base else math.inf
+        self.battery.update(dt, dist, wrap_angle(after.yaw - before.yaw), dist / dt, to_base)
+        self.odometry.update(after)
+        for e in self.physics.events:
+            self._emit(e.kind, other=e.other)
+        self.physics.events.clear()
+        if self.battery.empty and not self._battery_was_empty:
+            self._emit("battery_empty")
+        self._battery_was_empty = self.battery.empty
+
+    def run(self, duration_s: float) -> None:
+        for _ in range(int(round(duration_s / self.config.step_s))):
+            self.step()
+
+    def _emit(self, type_: str, **data: Any) -> None:
+        self._events.append(SimEvent(self.time, type_, data))
+
+    def pop_events(self) -> list[SimEvent]:
+        out, self._events = self._events, []
+        return out
+
+    # -- outputs -------------------------------------------------------------------------------
+    def robot_pose(self) -> Pose2D:
+        """Ground truth in `map`."""
+        return self._robot_pose
+
+    def robot_twist(self) -> Twist2D:
+        return self.physics.robot.body_twist()
+
+    def odometry_pose(self) -> Pose2D:
+        return self.odometry.pose
+
+    def human_poses(self) -> dict[str, Pose2D]:
+        return self.physics.human_poses()
+
+    def human_circles(self) -> list[tuple[float, float, float]]:
+        r = HUMAN_BODY.radius_m
+        return [(p.x, p.y, r) for p in self.physics.human_poses().values()]
+
+    def scan(self) -> FloatArray:
+        return self.scanner.scan(self.robot_pose(), self.human_circles())
+
+    def battery_reading(self) -> BatteryReading:
+        return self.battery.reading()
+
+    def contacts(self) -> list[str]:
+        return self.physics.in_contact()
+
+    def occupancy(self, resolution_m: float = 0.05) -> OccupancyGridData:
+        return rasterise(self.world, resolution_m, removed=frozenset(self.removed))
+
+    @property
+    def robot_radius_m(self) -> float:
+        return ROBOT_BODY.radius_m
