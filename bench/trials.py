@@ -19,6 +19,7 @@ from common import OUT, save  # noqa: E402
 
 from haven_scenarios.study.scenario import load_scenario, scenario_names  # noqa: E402
 from haven_scenarios.run.trial import run_trial  # noqa: E402
+from haven_sim.common.events import Event, EventKind  # noqa: E402
 
 
 def batch(name: str, trials: int) -> dict[str, float]:
@@ -45,12 +46,12 @@ def ros(name: str, rtf: float) -> dict[str, object]:
         while proc.poll() is None:
             for events in Path(tmp).glob("*/events.jsonl"):
                 for line in events.read_text().splitlines():
-                    e = json.loads(line)
-                    if e["type"] in ("trial_start", "trial_end") and e["type"] not in seen:
-                        seen[e["type"]] = (float(e["stamp"]), time.perf_counter())
+                    e = Event.from_json(line)
+                    if e.kind in (EventKind.TRIAL_START, EventKind.TRIAL_END) and e.kind not in seen:
+                        seen[e.kind] = (e.stamp, time.perf_counter())
             time.sleep(0.02)
         metrics = json.loads(next(Path(tmp).glob("*/metrics.json")).read_text())
-    (s0, w0), (s1, w1) = seen["trial_start"], seen["trial_end"]
+    (s0, w0), (s1, w1) = seen[EventKind.TRIAL_START], seen[EventKind.TRIAL_END]
     return {"scenario": name, "rtf_requested": rtf, "end_reason": metrics["end_reason"], "sim_s": round(s1 - s0, 1),
             "wall_s": round(w1 - w0, 2), "rtf_achieved": round((s1 - s0) / (w1 - w0), 2)}
 

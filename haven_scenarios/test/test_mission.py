@@ -4,6 +4,7 @@ import math
 
 from haven_scenarios.study.mission import Mission, Phase, Target
 from haven_scenarios.study.scenario import BatteryPlan
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
 
 BASE = (0.0, 0.0)
@@ -16,19 +17,19 @@ def straight(a, b):
 
 def test_nearest_fixed_and_seeded_random_orders():
     robot = Pose2D(0, 0)
-    assert Mission(T, straight, "nearest").start(robot).goal[:2] == (2.0, 0.0)
-    assert Mission(T, straight, "fixed").start(robot).goal[:2] == (10.0, 0.0)
-    first = {Mission(T, straight, "random", seed=s).start(robot).goal[:2] for s in range(20)}
+    assert Mission(T, straight, "nearest").start(0.0, robot).goal[:2] == (2.0, 0.0)
+    assert Mission(T, straight, "fixed").start(0.0, robot).goal[:2] == (10.0, 0.0)
+    first = {Mission(T, straight, "random", seed=s).start(0.0, robot).goal[:2] for s in range(20)}
     assert len(first) == 3  # every gem can come first (HAVEN's shuffle never put the last one first)
     assert Mission(T, straight, "random", seed=3).pending == Mission(T, straight, "random", seed=3).pending
 
 
 def test_thought_says_what_the_robot_does():
     m = Mission(T, straight, "nearest")
-    out = m.start(Pose2D(0, 0))
+    out = m.start(0.0, Pose2D(0, 0))
     assert out.thought == "Going to gem b"
-    assert m.tick(Pose2D(1, 0), 1.0, waiting=True).thought == "Waiting for you to pass"
-    done = m.target_done("b", Pose2D(2, 0), 1.0)
+    assert m.tick(0.0, Pose2D(1, 0), 1.0, waiting=True).thought == "Waiting for you to pass"
+    done = m.target_done(0.0, "b", Pose2D(2, 0), 1.0)
     assert done.goal[:2] == (5.0, 0.0) and done.thought == "Going to gem c"
 
 
@@ -36,14 +37,14 @@ def test_on_arrival_goes_to_charge_first_then_resumes_the_same_target():
     battery = BatteryPlan(mode="on_arrival", capacity_m=25.0, charge_until=1.0, safety_factor=1.2)
     m = Mission([T[0]], straight, "fixed", battery, BASE)
     robot = Pose2D(3.0, 0.0)
-    out = m.start(robot, level=0.6)  # 15 m left; needs 1.2 x (7 + 10) = 20.4 m
+    out = m.start(0.0, robot, level=0.6)  # 15 m left; needs 1.2 x (7 + 10) = 20.4 m
     assert m.phase is Phase.TO_BASE and out.goal[:2] == BASE and out.thought == "Low battery: going to charge"
-    assert out.events[0]["type"] == "charge_trip"
-    assert m.tick(Pose2D(0, 0), 0.5, at_base_goal=True).thought == "Charging: 50 %"
+    assert out.events[0].kind is EventKind.CHARGE_TRIP
+    assert m.tick(0.0, Pose2D(0, 0), 0.5, at_base=True).thought == "Charging: 50 %"
     assert out.events[0]["reason"] == "needs 20.4 m, has 15.0 m"
     assert m.phase is Phase.CHARGING
-    assert m.tick(Pose2D(0, 0), 0.8).goal is None
-    resumed = m.tick(Pose2D(0, 0), 1.0)
+    assert m.tick(0.0, Pose2D(0, 0), 0.8).goal is None
+    resumed = m.tick(0.0, Pose2D(0, 0), 1.0)
     assert resumed.goal[:2] == (10.0, 0.0) and m.phase is Phase.GOING and m.current.id == "a"
     assert m.charge_trips == 1
 
@@ -51,25 +52,25 @@ def test_on_arrival_goes_to_charge_first_then_resumes_the_same_target():
 def test_continuous_abandons_the_target_when_range_runs_low_and_resumes_it():
     battery = BatteryPlan(mode="continuous", capacity_m=20.0, safety_factor=1.5)
     m = Mission([T[0]], straight, "fixed", battery, BASE)
-    m.start(Pose2D(0, 0), 1.0)
-    assert m.tick(Pose2D(4.0, 0.0), 0.5).goal is None  # 10 m range > 1.5 x 4 m home
-    out = m.tick(Pose2D(6.0, 0.0), 0.45)  # 9 m range <= 1.5 x 6 m home
+    m.start(0.0, Pose2D(0, 0), 1.0)
+    assert m.tick(0.0, Pose2D(4.0, 0.0), 0.5).goal is None  # 10 m range > 1.5 x 4 m home
+    out = m.tick(0.0, Pose2D(6.0, 0.0), 0.45)  # 9 m range <= 1.5 x 6 m home
     assert out.goal[:2] == BASE and m.phase is Phase.TO_BASE
     assert out.events[0]["abandoned"] == "a"
-    m.tick(Pose2D(0, 0), 0.44, at_base_goal=True)
-    assert m.tick(Pose2D(0, 0), 1.0).goal[:2] == (10.0, 0.0)
+    m.tick(0.0, Pose2D(0, 0), 0.44, at_base=True)
+    assert m.tick(0.0, Pose2D(0, 0), 1.0).goal[:2] == (10.0, 0.0)
 
 
 def test_a_trip_longer_than_a_full_battery_does_not_loop_on_the_charger():
     battery = BatteryPlan(mode="on_arrival", capacity_m=5.0)
     m = Mission([T[0]], straight, "fixed", battery, BASE)
-    out = m.start(Pose2D(0, 0), 1.0)
-    assert m.phase is Phase.GOING and out.events[0]["type"] == "battery_insufficient"
+    out = m.start(0.0, Pose2D(0, 0), 1.0)
+    assert m.phase is Phase.GOING and out.events[0].kind is EventKind.BATTERY_INSUFFICIENT
 
 
 def test_done_when_every_target_is_done():
     m = Mission([T[1]], straight)
-    m.start(Pose2D(0, 0))
-    out = m.target_done("b", Pose2D(2, 0), 1.0)
+    m.start(0.0, Pose2D(0, 0))
+    out = m.target_done(0.0, "b", Pose2D(2, 0), 1.0)
     assert m.phase is Phase.DONE and out.thought == "All done"
-    assert {"type": "task_done", "by": "robot"} in out.events
+    assert [(e.kind, e["by"]) for e in out.events] == [(EventKind.TASK_DONE, "robot")]

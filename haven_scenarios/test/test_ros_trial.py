@@ -47,7 +47,7 @@ def test_run_records_a_session_that_agrees_with_batch_mode(ros, tmp_path):
     assert counts["/odom"] > 1000 and counts["/haven/events"] > 10 and counts["/haven/ar_markers"] > 10
     assert {"/map", "/plan", "/goal_pose", "/humans", "/battery_state", "/scan", "/haven/thought", "/tf", "/tf_static"} <= set(counts)
     events = [json.loads(line) for line in (folder / "events.jsonl").read_text().splitlines()]
-    kinds = [e["type"] for e in events]
+    kinds = [e["type"] for e in events]  # the events.jsonl lines as written
     assert kinds.count("trial_start") == 1 and kinds.count("trial_end") == 1 and kinds.index("trial_start") < kinds.index("trial_end")
     assert (folder / "trajectory.png").stat().st_size > 20_000
     ros_m = json.loads((folder / "metrics.json").read_text())

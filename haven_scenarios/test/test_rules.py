@@ -4,6 +4,7 @@ import pytest
 
 from haven_scenarios.study.rules import EndRule, GemRules, ObstructionRules, RouteRules
 from haven_scenarios.study.scenario import load_scenario
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
 from haven_sim.sim.world import Gem
 
@@ -15,7 +16,7 @@ def test_robot_collects_only_its_target_not_gems_it_brushes_past():
     rules.robot_target = "r1"
     assert rules.update(0.0, Pose2D(1.0, 0.0), {}) == []  # on top of r2, which is not the target
     events = rules.update(0.1, Pose2D(1.9, 0.1), {})
-    assert events == [{"type": "gem_collected", "gem": "r1", "by": "robot"}]
+    assert [e.to_dict() for e in events] == [{"stamp": 0.1, "source": "scenario", "type": "gem_collected", "gem": "r1", "by": "robot"}]
     assert [g.id for g in rules.remaining("robot")] == ["r2"] and rules.robot_target is None
 
 
@@ -30,8 +31,8 @@ def test_human_dwell_must_be_continuous_and_restarts_on_leaving():
     on, off = Pose2D(5.1, 5.0), Pose2D(6.0, 5.0)
     types = []
     for t, pose in [(0.0, on), (2.9, on), (3.0, off), (4.0, on), (6.9, on), (7.0, on)]:
-        types += [(t, e["type"]) for e in rules.update(t, Pose2D(0, 0), {"h1": pose})]
-    assert types == [(0.0, "dwell_started"), (3.0, "dwell_reset"), (4.0, "dwell_started"), (7.0, "gem_collected")]
+        types += [(t, e.kind) for e in rules.update(t, Pose2D(0, 0), {"h1": pose})]
+    assert types == [(0.0, EventKind.DWELL_STARTED), (3.0, EventKind.DWELL_RESET), (4.0, EventKind.DWELL_STARTED), (7.0, EventKind.GEM_COLLECTED)]
     assert rules.collected == {"m1": "h1"}
     assert rules.update(8.0, Pose2D(0, 0), {"h1": on}) == []  # gone: collected once
 
@@ -40,10 +41,11 @@ def test_routes_in_order():
     scenario = load_scenario("hallway")
     rules = RouteRules(scenario.world, {"robot": ["B", "C"]})
     c = scenario.world.room("C").centre
-    assert rules.update({"robot": Pose2D(*c)}) == []  # C before B does not count
+    assert rules.update(0.0, {"robot": Pose2D(*c)}) == []  # C before B does not count
     b = scenario.world.room("B").centre
-    assert rules.update({"robot": Pose2D(*b)})[0] == {"type": "room_reached", "room": "B", "by": "robot", "index": 1}
-    rules.update({"robot": Pose2D(*c)})
+    reached = rules.update(1.0, {"robot": Pose2D(*b)})[0]
+    assert (reached.kind, reached.data) == (EventKind.ROOM_REACHED, {"room": "B", "by": "robot", "index": 1})
+    rules.update(2.0, {"robot": Pose2D(*c)})
     assert rules.done("robot")
     with pytest.raises(ValueError, match="rooms not in world"):
         RouteRules(scenario.world, {"robot": ["Z"]})
@@ -53,9 +55,10 @@ def test_obstruction_cleared_when_a_human_reaches_its_room():
     scenario = load_scenario("hallway_hard")
     rules = ObstructionRules(scenario.world)
     b = scenario.world.room("B").centre
-    assert rules.update({"h1": Pose2D(b[0] + 2.0, b[1])}) == []
-    assert rules.update({"h1": Pose2D(*b)}) == [{"type": "obstruction_cleared", "id": "crate", "by": "h1", "room": "B"}]
-    assert rules.update({"h1": Pose2D(*b)}) == []
+    assert rules.update(0.0, {"h1": Pose2D(b[0] + 2.0, b[1])}) == []
+    (cleared,) = rules.update(1.0, {"h1": Pose2D(*b)})
+    assert (cleared.kind, cleared.data) == (EventKind.OBSTRUCTION_CLEARED, {"id": "crate", "by": "h1", "room": "B"})
+    assert rules.update(2.0, {"h1": Pose2D(*b)}) == []
 
 
 def test_trial_end_reasons():

@@ -7,6 +7,7 @@ import pytest
 from haven_scenarios.run.batch import run_batch
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_sim.common.events import EventKind
 from haven_viz.cues import Toggles
 
 
@@ -21,7 +22,7 @@ def test_every_shipped_scenario_completes_without_contact(name):
         assert (m["gems_robot"], m["gems_human"]) == (4, 8)
         assert m["charge_trips"] >= 1  # a 12 m battery forces a trip to the base
     if name == "hallway_hard":
-        assert any(e["type"] == "obstruction_removed" for e in r.log.events)
+        assert any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in r.log.events)
 
 
 def test_same_seed_same_trial_and_seeds_vary_the_participant():

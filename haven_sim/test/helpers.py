@@ -38,21 +38,21 @@ def corridor(length: float = 12.0, width: float = 3.0, humans: list[dict[str, An
 
 def drive_closed_loop(sim: Any, follower: Any, seconds: float, navigator: Any = None, on_tick: Any = None) -> list[dict[str, Any]]:
     """Run follower (20 Hz) and navigator (5 Hz) on the simulator core; returns navigator events
-    with their times. Stops early when the follower arrives."""
+    (stamped with sim time). Stops early when the follower arrives."""
     from haven_sim.nav.follower import Status
 
-    events: list[dict[str, Any]] = []
+    events: list[Any] = []
     ticks = int(seconds * 20)
     for k in range(ticks):
         if on_tick is not None:
             on_tick(sim, k / 20.0)
         if navigator is not None and k % 4 == 0:
-            out = navigator.update(sim.robot_pose(), [(p.x, p.y) for p in sim.human_poses().values()])
+            out = navigator.update(sim.robot_pose(), [(p.x, p.y) for p in sim.human_poses().values()], sim.time)
             if out.path is not None:
                 follower.set_path(out.path)
             if out.waiting is not None:
                 follower.waiting = out.waiting
-            events += [{**e, "t": round(sim.time, 2)} for e in out.events]
+            events += out.events
         cmd = follower.command(sim.robot_pose())
         sim.command_robot(cmd)
         sim.step()

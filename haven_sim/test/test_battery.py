@@ -5,6 +5,7 @@ from helpers import box_world
 
 from haven_sim.sim.battery import Battery, BatteryParams, PowerStatus
 from haven_sim.sim.commands import VelocityLimits
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Twist2D
 from haven_sim.sim.simulation import SimConfig, Simulation
 
@@ -54,7 +55,7 @@ def test_empty_battery_stops_the_robot_in_the_simulation():
     assert sim.battery.empty
     assert sim.robot_pose().x - 10.0 == pytest.approx(2.0, abs=0.05)
     assert sim.robot_twist().vx == pytest.approx(0.0, abs=1e-6)
-    assert [e.type for e in sim.pop_events()].count("battery_empty") == 1
+    assert [e.kind for e in sim.pop_events()].count(EventKind.BATTERY_EMPTY) == 1
 
 
 def test_robot_recharges_on_the_base_in_the_simulation():

@@ -31,6 +31,6 @@ def test_gate_rejects_non_finite_and_keeps_last_command():
 def test_gate_watchdog_stops_after_timeout():
     gate = CommandGate(VelocityLimits(), timeout_s=0.5)
     gate.command(Twist2D(0.3, 0, 0.2), 1.0)
-    assert gate.target(1.5) == Twist2D(0.3, 0, 0.2)
-    assert gate.target(1.51) == Twist2D()
-    assert gate.is_stale(1.51)
+    assert gate.target(1.48) == Twist2D(0.3, 0, 0.2)
+    assert gate.target(1.5) == Twist2D()  # exactly 0.5 s without a command: stopped
+    assert gate.is_stale(1.5) and not gate.is_stale(1.48)

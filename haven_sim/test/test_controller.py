@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 from helpers import box_world, drive_closed_loop
 
-from haven_sim.nav.follower import ControllerParams, PathFollower, Status
+from haven_sim.nav.follower import FollowerParams, PathFollower, Status
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.sim.occupancy import rasterise
 from haven_sim.nav.path_style import shape_path
@@ -16,7 +17,7 @@ from haven_sim.sim.world import load_world, packaged_world
 
 
 def contacts(sim):
-    return [e for e in sim.pop_events() if e.type == "contact_begin"]
+    return [e for e in sim.pop_events() if e.kind is EventKind.CONTACT_BEGIN]
 
 
 def test_reaches_goal_through_the_door_without_touching_anything():
@@ -95,7 +96,7 @@ def test_waiting_holds_still_and_empty_path_is_idle():
 
 
 def test_big_heading_error_mid_path_stops_and_rotates_first():
-    follower = PathFollower(ControllerParams())
+    follower = PathFollower(FollowerParams())
     follower.set_path([Pose2D(0, 0, 0), Pose2D(3, 0, 0)])
     cmd = follower.command(Pose2D(1.0, 0.0, math.radians(120.0)))  # pushed round by someone
     assert cmd.vx == 0.0 and cmd.wz < 0 and follower.status is Status.ROTATING
@@ -103,7 +104,7 @@ def test_big_heading_error_mid_path_stops_and_rotates_first():
 
 def test_invalid_params_are_refused():
     with pytest.raises(ValueError, match="lookahead_m"):
-        PathFollower(ControllerParams(lookahead_m=0.0))
+        FollowerParams(lookahead_m=0.0)
 
 
 def test_projection_at_the_very_end_of_a_piece_does_not_fail():

@@ -6,6 +6,7 @@ import pytest
 from helpers import corridor, drive_closed_loop
 
 from haven_sim.nav.follower import PathFollower, Status
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.nav.navigator import Navigator, NavigatorParams, NavState
 from haven_sim.sim.simulation import Simulation
@@ -18,14 +19,14 @@ def setup(human_xy, width=3.0):
     sim = Simulation(world)
     nav = Navigator(sim.occupancy())
     follower = PathFollower()
-    out = nav.set_goal(sim.robot_pose(), GOAL)
+    out = nav.set_goal(sim.robot_pose(), GOAL, 0.0)
     follower.set_path(out.path)
-    assert out.events[0]["type"] == "plan_made"
+    assert out.events[0].kind is EventKind.PLAN_MADE
     return sim, nav, follower
 
 
 def types(events):
-    return [e["type"] for e in events]
+    return [e.kind for e in events]
 
 
 def walk_away_after(seconds, vy=1.0):
@@ -40,12 +41,12 @@ def walk_away_after(seconds, vy=1.0):
 def test_waits_for_a_human_near_the_robot_or_the_goal_then_resumes(human, near):
     sim, nav, follower = setup(human)
     events = drive_closed_loop(sim, follower, 60.0, nav, walk_away_after(6.0))
-    assert types(events)[:2] == ["waiting", "resumed"]
+    assert types(events)[:2] == [EventKind.WAITING, EventKind.RESUMED]
     assert near in events[0]["reason"]
-    assert events[1]["t"] >= 6.0
+    assert events[1].stamp >= 6.0
     assert follower.status is Status.ARRIVED
     assert sim.robot_pose().distance_to((GOAL.x, GOAL.y)) <= 0.1
-    assert not [e for e in sim.pop_events() if e.type == "contact_begin"]
+    assert not [e for e in sim.pop_events() if e.kind is EventKind.CONTACT_BEGIN]
 
 
 def test_robot_does_not_move_while_waiting():
@@ -59,25 +60,25 @@ def test_robot_does_not_move_while_waiting():
 def test_detours_around_a_human_on_the_side_with_more_room(human_y, side):
     sim, nav, follower = setup((6.0, human_y))
     events = drive_closed_loop(sim, follower, 60.0, nav)
-    assert types(events) == ["replanned"] and events[0]["side"] == side
+    assert types(events) == [EventKind.REPLANNED] and events[0]["side"] == side
     ys = [p.y for p in nav.active if 5.5 < p.x < 6.5]
     assert all((y > human_y) if side == "left" else (y < human_y) for y in ys)
     assert follower.status is Status.ARRIVED
-    assert not [e for e in sim.pop_events() if e.type == "contact_begin"]
+    assert not [e for e in sim.pop_events() if e.kind is EventKind.CONTACT_BEGIN]
 
 
 def test_human_leaving_before_the_detour_sends_the_robot_back_to_the_original_path():
     sim, nav, follower = setup((7.0, 1.5), width=4.0)  # more room on the left: the detour goes there
     events = drive_closed_loop(sim, follower, 60.0, nav, walk_away_after(0.5, vy=-1.0))  # human goes right
-    assert types(events)[:2] == ["replanned", "reverted"]
+    assert types(events)[:2] == [EventKind.REPLANNED, EventKind.REVERTED]
     assert nav.active is nav.original
     assert follower.status is Status.ARRIVED
 
 
 def test_unreachable_goal_is_refused_with_a_reason():
     sim, nav, follower = setup((6.0, 2.5))
-    out = nav.set_goal(sim.robot_pose(), Pose2D(30.0, 1.5, 0.0))
-    assert out.path == [] and out.events[0]["type"] == "plan_refused"
+    out = nav.set_goal(sim.robot_pose(), Pose2D(30.0, 1.5, 0.0), 0.0)
+    assert out.path == [] and out.events[0].kind is EventKind.PLAN_REFUSED
     assert "outside the map" in out.events[0]["reason"]
     assert nav.state is NavState.IDLE
 
@@ -86,7 +87,7 @@ def test_wait_distance_is_a_parameter():
     world = corridor(humans=[{"id": "h", "start": [4.5, 1.5, 0.0]}])
     sim = Simulation(world)
     nav = Navigator(sim.occupancy(), params=NavigatorParams(wait_distance_m=4.0))
-    nav.set_goal(sim.robot_pose(), GOAL)
-    out = nav.update(sim.robot_pose(), [(4.5, 1.5)])
-    assert types(out.events) == ["waiting"] and out.waiting is True
+    nav.set_goal(sim.robot_pose(), GOAL, 0.0)
+    out = nav.update(sim.robot_pose(), [(4.5, 1.5)], 0.2)
+    assert types(out.events) == [EventKind.WAITING] and out.waiting is True
     assert math.isclose(nav.params.wait_distance_m, 4.0)

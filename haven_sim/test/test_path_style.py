@@ -6,7 +6,9 @@ import numpy as np
 import pytest
 
 from haven_sim.common.geometry import Pose2D, wrap_angle
-from haven_sim.nav.path_style import SegmentKind, StyleParams, classify, shape_path
+from haven_sim.common.paths import SegmentKind, classify
+from haven_sim.nav.motion_style import MotionStyle
+from haven_sim.nav.path_style import ShapeParams, shape_path
 
 R, A, S = SegmentKind.ROTATE, SegmentKind.ARC, SegmentKind.STRAIGHT
 
@@ -27,9 +29,9 @@ def test_corner_arc_or_rotate_by_the_60_degree_rule(deg, expected):
 
 
 def test_short_next_leg_rotates_in_place():
-    p = StyleParams(too_close_distance_m=0.5)
-    assert kinds(shape_path(corner(30.0, leg=0.4), 0.0, p)) == [S, R, S]
-    assert kinds(shape_path(corner(30.0, leg=0.6), 0.0, p)) == [S, A, S]
+    style = MotionStyle(too_close_distance_m=0.5)
+    assert kinds(shape_path(corner(30.0, leg=0.4), 0.0, style)) == [S, R, S]
+    assert kinds(shape_path(corner(30.0, leg=0.6), 0.0, style)) == [S, A, S]
 
 
 @pytest.mark.parametrize("start_deg,expected", [(0.0, [S]), (40.0, [A, S]), (-55.0, [A, S]), (70.0, [R, S]), (180.0, [R, S])])
@@ -54,8 +56,8 @@ def test_arc_is_tangent_smooth_and_removes_the_heading_change():
 
 
 def test_spacing_goal_yaw_and_endpoints():
-    p = StyleParams(marker_spacing_m=0.25)
-    poses = shape_path([(0.0, 0.0), (2.0, 0.0), (2.0, 3.0)], 0.0, p, goal_yaw=math.pi)
+    p = ShapeParams(marker_spacing_m=0.25)
+    poses = shape_path([(0.0, 0.0), (2.0, 0.0), (2.0, 3.0)], 0.0, params=p, goal_yaw=math.pi)
     steps = [math.dist(a[:2], b[:2]) for a, b in zip(poses, poses[1:])]
     assert max(steps) <= 0.25 + 1e-9
     assert kinds(poses) == [S, R, S, R]
@@ -103,4 +105,6 @@ def test_classify_round_trips_shape_path():
 
 def test_invalid_style_is_refused():
     with pytest.raises(ValueError, match="marker_spacing"):
-        shape_path([(0, 0), (1, 0)], 0.0, StyleParams(marker_spacing_m=0.0))
+        ShapeParams(marker_spacing_m=0.0)
+    with pytest.raises(ValueError, match="arc_max_angle_deg"):
+        MotionStyle(arc_max_angle_deg=0.0)

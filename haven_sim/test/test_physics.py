@@ -5,6 +5,8 @@ import math
 import pytest
 from helpers import box_world
 
+from haven_sim.common.bodies import ROBOT_BODY
+from haven_sim.common.events import EventKind
 from haven_sim.sim.commands import VelocityLimits
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.sim.simulation import SimConfig, Simulation
@@ -52,13 +54,13 @@ def test_wall_stops_robot_without_tunnelling_and_reports_contact():
     sim = Simulation(box_world(4.0, thickness=0.1), SimConfig(robot_limits=INSTANT))
     drive(sim, Twist2D(0.7, 0, 0), 8.0)
     x = sim.robot_pose().x
-    limit = 4.0 - 0.05 - sim.robot_radius_m
+    limit = 4.0 - 0.05 - ROBOT_BODY.radius_m
     assert limit - 0.03 < x <= limit + 0.005
     events = sim.pop_events()
-    assert [e.type for e in events] == ["contact_begin"] and events[0].data == {"other": "wall"}
+    assert [e.kind for e in events] == [EventKind.CONTACT_BEGIN] and events[0].data == {"other": "wall"}
     assert sim.contacts() == ["wall"]
     drive(sim, Twist2D(-0.3, 0, 0), 1.0)
-    assert [(e.type, e.data["other"]) for e in sim.pop_events()] == [("contact_end", "wall")]
+    assert [(e.kind, e["other"]) for e in sim.pop_events()] == [(EventKind.CONTACT_END, "wall")]
 
 
 def test_watchdog_stops_robot_half_a_second_after_last_command():
@@ -82,8 +84,8 @@ def test_human_moves_holonomically_within_its_speed_limit_and_bumps_robot():
     h = sim.human_poses()["ann"]
     assert sim.human_poses()["ann"].x < 8.0 - 1.5 * 1.5
     assert h.y == pytest.approx(5.0, abs=0.05)
-    types = [(e.type, e.data.get("other")) for e in sim.pop_events()]
-    assert ("contact_begin", "human:ann") in types
+    types = [(e.kind, e.get("other")) for e in sim.pop_events()]
+    assert (EventKind.CONTACT_BEGIN, "human:ann") in types
     # sideways (linear.y) works for humans, not for the differential-drive robot
     sim2 = Simulation(world)
     drive(sim2, Twist2D(0.0, 0.5, 0.0), 1.0, "ann", Twist2D(0.0, 1.0, 0.0))
@@ -101,7 +103,7 @@ def test_reset_restores_start_state_but_time_runs_on():
     assert sim.human_poses()["ann"] == Pose2D(8.0, 5.0, 0.0)
     assert sim.battery.level == 1.0
     assert sim.time == t
-    assert [e.type for e in sim.pop_events()][-1] == "reset"
+    assert [e.kind for e in sim.pop_events()][-1] is EventKind.RESET
     sim.run(1.0)
     assert sim.robot_pose() == pytest.approx(Pose2D(5.0, 5.0, 0.0), abs=1e-6)
 
@@ -122,5 +124,5 @@ def test_removed_obstruction_lets_robot_pass():
     sim.remove_obstruction("gate")
     drive(sim, Twist2D(0.7, 0, 0), 3.0)
     assert sim.robot_pose().x > 7.5
-    assert any(e.type == "obstruction_removed" for e in sim.pop_events())
+    assert any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in sim.pop_events())
     assert sim.occupancy().is_occupied(7.0, 5.0) is False

@@ -86,7 +86,7 @@ def test_plans_on_a_map_it_did_not_make():
     data[:45, 50] = 100  # a wall from the bottom with a gap at the top
     data[20:25, 70:75] = -1  # an unknown patch
     grid = OccupancyGridData(0.1, 100, 60, -2.0, 1.0, data)
-    planner = GridPlanner(grid, PlannerParams(robot_radius_m=0.2, safety_margin_m=0.05))
+    planner = GridPlanner(grid, PlannerParams(safety_margin_m=0.05, body_radius_m=0.2))
     plan = planner.plan((0.0, 2.0), (6.0, 2.0))
     assert max(p[1] for p in plan.points) > 1.0 + 4.5  # over the top of the wall
     assert all(planner.visible(np.array([a]), np.array([b]))[0] for a, b in zip(plan.points, plan.points[1:]))

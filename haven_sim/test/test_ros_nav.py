@@ -8,10 +8,11 @@ from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import Odometry, Path
 from std_msgs.msg import Bool, String
 
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
-from haven_sim.nav.path_style import SegmentKind, classify
+from haven_sim.common.paths import SegmentKind, classify
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
 SIM, MUX, PLANNER, CONTROLLER = (f"haven_sim.nodes.{n}" for n in ("sim_node", "mux_node", "planner_node", "controller_node"))
@@ -33,7 +34,7 @@ def goal_msg(x, y, yaw=0.0, frame="map"):
 
 
 def events_of(received, kind):
-    return [e for e in map(conv.event_from_msg, received) if e["type"] == kind]
+    return [e for e in map(conv.event_from_msg, received) if e.kind is kind]
 
 
 def test_goal_pose_to_plan_to_arrival_without_touching_walls(ros):
@@ -45,16 +46,16 @@ def test_goal_pose_to_plan_to_arrival_without_touching_walls(ros):
     ros.wait_matched(goal)
     ros.wait_for_messages(odom, 5)
     goal.publish(goal_msg(7.2, 4.5, math.pi / 2))
-    assert ros.spin_until(lambda: events_of(events, "goal_reached"), 120)
+    assert ros.spin_until(lambda: events_of(events, EventKind.GOAL_REACHED), 120)
     path = conv.path_from_msg(plans[-1])
     assert plans[-1].header.frame_id == "map"
     assert [s.kind for s in classify(path)][0] in (SegmentKind.ARC, SegmentKind.ROTATE, SegmentKind.STRAIGHT)
     p = conv.pose_from_msg(odom[-1].pose.pose)
     assert math.hypot(p.x - 7.2, p.y - 4.5) <= 0.1
     assert abs(math.remainder(p.yaw - math.pi / 2, 2 * math.pi)) <= math.radians(6)
-    made = events_of(events, "plan_made")
+    made = events_of(events, EventKind.PLAN_MADE)
     assert len(made) == 1 and made[0]["goal"] == [7.2, 4.5]
-    assert events_of(events, "contact_begin") == []
+    assert events_of(events, EventKind.CONTACT_BEGIN) == []
 
 
 def test_unreachable_goal_is_refused_with_an_event(ros):
@@ -63,11 +64,11 @@ def test_unreachable_goal_is_refused_with_an_event(ros):
     start_suite(ros)
     ros.wait_matched(goal)
     goal.publish(goal_msg(6.3, 3.8))  # inside the pillar
-    assert ros.spin_until(lambda: events_of(events, "plan_refused"), 30)
-    assert "inside an obstacle" in events_of(events, "plan_refused")[0]["reason"]
+    assert ros.spin_until(lambda: events_of(events, EventKind.PLAN_REFUSED), 30)
+    assert "inside an obstacle" in events_of(events, EventKind.PLAN_REFUSED)[0]["reason"]
     goal.publish(goal_msg(1.0, 1.0, frame="base_link"))
-    assert ros.spin_until(lambda: len(events_of(events, "plan_refused")) == 2, 30)
-    assert "frame 'base_link'" in events_of(events, "plan_refused")[1]["reason"]
+    assert ros.spin_until(lambda: len(events_of(events, EventKind.PLAN_REFUSED)) == 2, 30)
+    assert "frame 'base_link'" in events_of(events, EventKind.PLAN_REFUSED)[1]["reason"]
 
 
 def corridor_world(tmp_path, human):
@@ -87,7 +88,7 @@ def corridor_world(tmp_path, human):
     return str(path)
 
 
-@pytest.mark.parametrize("human,expected", [((2.8, 1.5, 3.14), "waiting"), ((6.0, 1.25, 3.14), "replanned")])
+@pytest.mark.parametrize("human,expected", [((2.8, 1.5, 3.14), EventKind.WAITING), ((6.0, 1.25, 3.14), EventKind.REPLANNED)])
 def test_human_on_the_path_makes_the_robot_wait_or_detour(ros, tmp_path, human, expected):
     events = ros.collect(String, "/haven/events", qos.EVENTS)
     waits = ros.collect(Bool, "/haven/wait", qos.LATCHED)
@@ -98,16 +99,16 @@ def test_human_on_the_path_makes_the_robot_wait_or_detour(ros, tmp_path, human, 
     ros.wait_for_messages(odom, 5)
     goal.publish(goal_msg(11.0, 1.5))
     assert ros.spin_until(lambda: events_of(events, expected), 60)
-    if expected == "waiting":
+    if expected is EventKind.WAITING:
         assert ros.spin_until(lambda: waits and waits[-1].data, 10)
         t0 = conv.time_from_msg(odom[-1].header.stamp)
         ros.spin_until(lambda: conv.time_from_msg(odom[-1].header.stamp) > t0 + 3.0, 30)
         assert conv.pose_from_msg(odom[-1].pose.pose).distance_to((1.0, 1.5)) < 0.05  # held still
-        assert "from the robot" in events_of(events, "waiting")[0]["reason"]
+        assert "from the robot" in events_of(events, EventKind.WAITING)[0]["reason"]
     else:
-        assert events_of(events, "replanned")[0]["side"] == "left"
-        assert ros.spin_until(lambda: events_of(events, "goal_reached"), 120)
-        assert events_of(events, "contact_begin") == []
+        assert events_of(events, EventKind.REPLANNED)[0]["side"] == "left"
+        assert ros.spin_until(lambda: events_of(events, EventKind.GOAL_REACHED), 120)
+        assert events_of(events, EventKind.CONTACT_BEGIN) == []
 
 
 def test_controller_follows_a_path_published_by_someone_else(ros):
@@ -120,5 +121,5 @@ def test_controller_follows_a_path_published_by_someone_else(ros):
     ros.wait_for_messages(odom, 5)
     poses = [Pose2D(1.0 + 0.1 * i, 2.5 - 0.04 * i, -0.38) for i in range(26)]  # 2.8 m, slightly downhill
     plan.publish(conv.path_msg(0.0, poses))
-    assert ros.spin_until(lambda: events_of(events, "goal_reached"), 90)
+    assert ros.spin_until(lambda: events_of(events, EventKind.GOAL_REACHED), 90)
     assert conv.pose_from_msg(odom[-1].pose.pose).distance_to((3.5, 1.5)) <= 0.1

@@ -11,6 +11,7 @@ from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import Bool, String
 from std_srvs.srv import Trigger
 
+from haven_sim.common.events import EventKind
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from ros_harness import tracebacks
@@ -126,7 +127,7 @@ def test_latched_map_reaches_a_late_subscriber_and_reset_service(ros):
     ros.spin_until(future.done)
     assert future.result().success
     ros.spin_until(lambda: conv.pose_from_msg(odom[-1].pose.pose).x == pytest.approx(1.0, abs=1e-6))
-    assert any(conv.event_from_msg(e)["type"] == "reset" for e in events)
+    assert any(conv.event_from_msg(e).kind is EventKind.RESET for e in events)
 
 
 def test_wall_contact_is_an_event(ros):
@@ -138,8 +139,8 @@ def test_wall_contact_is_an_event(ros):
     ros.wait_matched(events)
     ros.wait_for_messages(odom, 5)
     drive(ros, pub, twist(-0.5, 0.0), odom, 3.0)  # backwards into the west wall, 0.95 m behind
-    kinds = [conv.event_from_msg(e) for e in events]
-    assert {"type": "contact_begin", "other": "wall", "source": "sim"}.items() <= kinds[0].items()
+    first = conv.event_from_msg(events[0])
+    assert (first.kind, first["other"], first.source) == (EventKind.CONTACT_BEGIN, "wall", "sim")
 
 
 def test_mux_teleop_beats_nav_then_hands_back_and_estop(ros):

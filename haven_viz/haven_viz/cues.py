@@ -12,18 +12,24 @@ participant saw:
   * thought bubble: the robot's current thought as view-facing text above it, shown while a human
     is within `thought_radius_m`, with hysteresis so it does not flicker at the edge;
   * battery indicator: a level bar coloured by HAVEN's thresholds, and the percentage.
+
+Each update also says what is shown as data (`CueState`), which the viz node publishes on
+/haven/cue_state and metrics read: nothing has to be inferred from marker namespaces and ids.
 """
 
 from __future__ import annotations
 
+import dataclasses
+import json
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
-import numpy as np
-
+from haven_sim.common.bodies import ROBOT_BODY
 from haven_sim.common.geometry import Point, Pose2D, wrap_angle
-from haven_sim.nav.path_style import SegmentKind, classify
+from haven_sim.common.params import param
+from haven_sim.common.paths import SegmentKind, classify
+from haven_sim.common.polyline import Polyline
 from haven_viz.markers import Color, MarkerSpec, Shape
 
 PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS = "path_projection", "turn_signals", "thought_bubble", "battery_indicator"
@@ -45,19 +51,18 @@ BATTERY_LOW: Color = (0.9, 0.0, 0.0, 1.0)  # red
 
 @dataclass(frozen=True)
 class CueParams:
-    marker_spacing_m: float = 0.4
-    steps_ahead: int = 0  # 0 = the whole remaining path
-    marker_size_m: float = 0.2
-    consume_distance_m: float = 0.2  # a marker this far ahead of the robot along the path is used up
-    scheme: str = "yellow"
-    turn_signal_threshold_rad: float = math.radians(11.0)
-    signal_lookahead_m: float = 0.5
-    thought_radius_m: float = 3.0
-    thought_hysteresis_m: float = 0.5
-    thought_backdrop: bool = True
-    robot_height_m: float = 0.4
+    marker_spacing_m: float = param(0.4, "HAVEN: 1 m at its 2.6x robot scale")
+    steps_ahead: int = param(0, "projected markers shown ahead; 0 = the whole remaining path")
+    marker_size_m: float = param(0.2, "HAVEN's 0.2 m spheres and cubes")
+    consume_distance_m: float = param(0.2, "a marker this close ahead of the robot along the path is used up")
+    scheme: str = param("yellow", "marker colour: yellow (HAVEN), white (the paper's figures), cyan")
+    turn_signal_threshold_deg: float = param(11.0, "HAVEN: a heading error this large lights the turn signal")
+    signal_lookahead_m: float = param(0.5, "the turn signals point at the path this far ahead")
+    thought_radius_m: float = param(3.0, "a human this close shows the thought bubble ...")
+    thought_hysteresis_m: float = param(0.5, "... which hides again only beyond radius + this")
+    thought_backdrop: bool = param(True, "a white bubble behind the thought's text")
 
-    def validate(self) -> None:
+    def __post_init__(self) -> None:
         if self.marker_spacing_m <= 0 or self.marker_size_m <= 0:
             raise ValueError("marker_spacing_m and marker_size_m must be positive")
         if self.steps_ahead < 0:
@@ -66,16 +71,56 @@ class CueParams:
             raise ValueError(f"scheme must be one of {', '.join(SCHEMES)}, got {self.scheme!r}")
         if self.thought_radius_m <= 0 or self.thought_hysteresis_m < 0:
             raise ValueError("thought_radius_m must be positive and thought_hysteresis_m not negative")
+        if not 0 < self.turn_signal_threshold_deg < 180:
+            raise ValueError(f"turn_signal_threshold_deg must be within (0, 180), got {self.turn_signal_threshold_deg}")
+
+    @property
+    def turn_signal_threshold_rad(self) -> float:
+        return math.radians(self.turn_signal_threshold_deg)
 
 
 @dataclass(frozen=True)
 class Toggles:
-    """The study condition: which cues the participant sees."""
+    """The study condition: which cues the participant sees (the viz node's run-time parameters)."""
 
-    path_projection: bool = True
-    turn_signals: bool = True
-    thought_bubble: bool = True
-    battery_indicator: bool = True
+    path_projection: bool = param(True, "cue toggle (study condition), settable at run time")
+    turn_signals: bool = param(True, "cue toggle (study condition), settable at run time")
+    thought_bubble: bool = param(True, "cue toggle (study condition), settable at run time")
+    battery_indicator: bool = param(True, "cue toggle (study condition), settable at run time")
+
+
+@dataclass(frozen=True)
+class CueState:
+    """What the participant is shown at one moment (the cue is on in the condition and has
+    something to show)."""
+
+    toggles: Toggles = field(default_factory=Toggles)
+    path_markers: int = 0  # projected path markers shown
+    turn_signal: int = 0  # +1 left, -1 right, 0 dark
+    thought: str = ""  # the bubble's text, "" while hidden
+    battery_level: float | None = None  # the level shown, None while hidden
+
+
+    def to_json(self, stamp: float) -> str:
+        return json.dumps({"stamp": round(stamp, 4), **dataclasses.asdict(self)}, sort_keys=True)
+
+    @staticmethod
+    def from_json(text: str) -> tuple[float, CueState]:
+        """(stamp, state) of a /haven/cue_state message; ValueError on anything else."""
+        try:
+            d = json.loads(text)
+            toggles = Toggles(**{k: bool(v) for k, v in d["toggles"].items() if k in CUES})
+            level = d["battery_level"]
+            state = CueState(toggles, int(d["path_markers"]), int(d["turn_signal"]), str(d["thought"]), None if level is None else float(level))
+            return float(d["stamp"]), state
+        except (ValueError, KeyError, TypeError, AttributeError) as e:
+            raise ValueError(f"not a cue state: {str(e)[:80]}") from None
+
+
+@dataclass(frozen=True)
+class CueFrame:
+    markers: list[MarkerSpec]
+    state: CueState
 
 
 def battery_color(level: float) -> Color:
@@ -101,32 +146,26 @@ class _Rotation:
     yaw: float  # where the rotation ends
 
 
-def _layout(poses: Sequence[Pose2D], spacing: float) -> tuple[list[_PathMarker], list[_Rotation], np.ndarray, np.ndarray]:
+def _layout(poses: Sequence[Pose2D], spacing: float) -> tuple[list[_PathMarker], list[_Rotation], Polyline]:
     """Marker positions every `spacing` along the path, the rotations in place, and the path as a
-    polyline with cumulative arc length."""
+    polyline."""
+    line = Polyline(poses)
     if not poses:
-        return [], [], np.zeros((0, 2)), np.zeros(0)
-    pts = np.array([(p.x, p.y) for p in poses], dtype=float)
-    cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(pts, axis=0).T))])
-    arc_pairs = np.zeros(max(len(poses) - 1, 0), dtype=bool)
+        return [], [], line
+    arc_segments: set[int] = set()
     rotations = []
     for seg in classify(poses):
         if seg.kind is SegmentKind.ARC:
-            arc_pairs[seg.start : seg.end] = True
+            arc_segments.update(range(seg.start, seg.end))
         elif seg.kind is SegmentKind.ROTATE:
             end = poses[seg.end]
-            rotations.append(_Rotation(end.x, end.y, float(cum[seg.end]), end.yaw))
+            rotations.append(_Rotation(end.x, end.y, float(line.cumulative[seg.end]), end.yaw))
     markers = []
-    total = float(cum[-1])
-    for k in range(1, int(total / spacing + 1e-9) + 1):
+    for k in range(1, int(line.length / spacing + 1e-9) + 1):
         s = k * spacing
-        i = min(len(pts) - 2, int(np.searchsorted(cum, s, side="right")) - 1)
-        while i > 0 and cum[i + 1] - cum[i] <= 1e-12:  # skip rotations (no length)
-            i -= 1
-        f = (s - cum[i]) / max(cum[i + 1] - cum[i], 1e-12)
-        x, y = pts[i] + (pts[i + 1] - pts[i]) * f
-        markers.append(_PathMarker(float(x), float(y), s, bool(arc_pairs[i])))
-    return markers, rotations, pts, cum
+        x, y = line.point_at(s)
+        markers.append(_PathMarker(x, y, s, line.moving_segment_at(s) in arc_segments))
+    return markers, rotations, line
 
 
 class ArCues:
@@ -134,32 +173,19 @@ class ArCues:
 
     def __init__(self, params: CueParams | None = None) -> None:
         self.params = params or CueParams()
-        self.params.validate()
         self.bubble_shown = False
         self.set_path([])
 
     def set_path(self, poses: Sequence[Pose2D]) -> None:
-        self._markers, self._rotations, self._pts, self._cum = _layout(poses, self.params.marker_spacing_m)
+        self._markers, self._rotations, self._line = _layout(poses, self.params.marker_spacing_m)
         self._progress = 0.0
         self._rotations_done = 0
 
     # -- state updates ---------------------------------------------------------------------------
     def _advance(self, robot: Pose2D) -> None:
         """Arc length reached along the path (monotonic, searched near the last value)."""
-        pts, cum = self._pts, self._cum
-        if len(pts) < 2:
-            return
-        lo = max(0, int(np.searchsorted(cum, self._progress, side="right")) - 1)
-        hi = min(len(pts) - 1, int(np.searchsorted(cum, self._progress + 2.0, side="right")) + 1)
-        a, b = pts[lo:hi], pts[lo + 1 : hi + 1]
-        if len(a) == 0:
-            return
-        d = b - a
-        ln2 = np.einsum("ij,ij->i", d, d)
-        t = np.clip(np.einsum("ij,ij->i", np.array([robot.x, robot.y]) - a, d) / np.where(ln2 > 0, ln2, 1.0), 0, 1)
-        c = a + d * t[:, None]
-        k = int(np.argmin(np.hypot(c[:, 0] - robot.x, c[:, 1] - robot.y)))
-        self._progress = max(self._progress, float(cum[lo + k] + t[k] * math.sqrt(ln2[k])))
+        if len(self._line) >= 2:
+            self._progress = max(self._progress, self._line.project(robot.x, robot.y, self._progress, self._progress + 2.0).s)
 
     @property
     def remaining(self) -> int:
@@ -180,12 +206,10 @@ class ArCues:
                 self._rotations_done += 1
                 continue
             return err
-        if len(self._pts) < 2 or self._progress >= self._cum[-1] - 1e-6:
+        line = self._line
+        if len(line) < 2 or self._progress >= line.length - 1e-6:
             return None
-        s = min(float(self._cum[-1]), self._progress + p.signal_lookahead_m)
-        i = min(len(self._pts) - 2, int(np.searchsorted(self._cum, s, side="right")) - 1)
-        f = (s - self._cum[i]) / max(self._cum[i + 1] - self._cum[i], 1e-12)
-        x, y = self._pts[i] + (self._pts[i + 1] - self._pts[i]) * f
+        x, y = line.point_at(min(line.length, self._progress + p.signal_lookahead_m))
         if math.hypot(x - robot.x, y - robot.y) < 0.05:
             return None
         return wrap_angle(math.atan2(y - robot.y, x - robot.x) - robot.yaw)
@@ -200,27 +224,36 @@ class ArCues:
         return self.bubble_shown
 
     # -- markers ---------------------------------------------------------------------------------
-    def markers(
+    def frame(
         self,
         robot: Pose2D,
         humans: Sequence[Point] = (),
         battery_level: float | None = None,
         thought: str = "",
         toggles: Toggles = Toggles(),
-    ) -> list[MarkerSpec]:
-        """Every cue marker for this moment (cues that are off are simply absent)."""
+    ) -> CueFrame:
+        """Every cue marker for this moment (cues that are off are simply absent) and what they show."""
         self._advance(robot)
         shown_bubble = self._update_bubble(robot, humans)  # tracked even while the cue is off
         out: list[MarkerSpec] = []
+        path, side, text, level = 0, 0, "", None
         if toggles.path_projection:
-            out += self._path_markers()
+            path_markers = self._path_markers()
+            path = len(path_markers)
+            out += path_markers
         if toggles.turn_signals:
-            out += self._signal_markers(robot)
+            side = self.signal_side(robot)
+            out += self._signal_markers(robot, side)
         if toggles.thought_bubble and shown_bubble and thought:
+            text = thought
             out += self._thought_markers(robot, thought)
         if toggles.battery_indicator and battery_level is not None:
-            out += self._battery_markers(robot, battery_level)
-        return out
+            level = min(1.0, max(0.0, battery_level))
+            out += self._battery_markers(robot, level)
+        return CueFrame(out, CueState(toggles, path, side, text, level))
+
+    def markers(self, robot: Pose2D, humans: Sequence[Point] = (), battery_level: float | None = None, thought: str = "", toggles: Toggles = Toggles()) -> list[MarkerSpec]:
+        return self.frame(robot, humans, battery_level, thought, toggles).markers
 
     def _path_markers(self) -> list[MarkerSpec]:
         p = self.params
@@ -237,21 +270,26 @@ class ArCues:
                 break
         return out
 
-    def _signal_markers(self, robot: Pose2D) -> list[MarkerSpec]:
+    def signal_side(self, robot: Pose2D) -> int:
+        """+1 (left) or -1 (right) while the heading error reaches the threshold, else 0."""
         err = self.turn_error(robot)
         if err is None or abs(err) < self.params.turn_signal_threshold_rad:
+            return 0
+        return 1 if err > 0 else -1
+
+    def _signal_markers(self, robot: Pose2D, side: int) -> list[MarkerSpec]:
+        if side == 0:
             return []
-        side = 1.0 if err > 0 else -1.0  # left / right
         # An arrow beside the robot pointing outward, like HAVEN's arrows on the robot's sides.
         out_yaw = robot.yaw + side * math.pi / 2.0
         base = 0.25
         x = robot.x + base * math.cos(out_yaw)
         y = robot.y + base * math.sin(out_yaw)
         color = SCHEMES[self.params.scheme]
-        return [MarkerSpec(SIGNAL_NS, 0 if side > 0 else 1, Shape.ARROW, (x, y, self.params.robot_height_m + 0.05), out_yaw, (0.3, 0.08, 0.08), color)]
+        return [MarkerSpec(SIGNAL_NS, 0 if side > 0 else 1, Shape.ARROW, (x, y, ROBOT_BODY.height_m + 0.05), out_yaw, (0.3, 0.08, 0.08), color)]
 
     def _thought_markers(self, robot: Pose2D, thought: str) -> list[MarkerSpec]:
-        z = self.params.robot_height_m + 0.6
+        z = ROBOT_BODY.height_m + 0.6
         out = [MarkerSpec(THOUGHT_NS, 0, Shape.TEXT_VIEW_FACING, (robot.x, robot.y, z), 0.0, (0.0, 0.0, 0.15), (0.05, 0.05, 0.05, 1.0), thought)]
         if self.params.thought_backdrop:
             width = max(0.6, 0.085 * len(thought))
@@ -260,7 +298,7 @@ class ArCues:
 
     def _battery_markers(self, robot: Pose2D, level: float) -> list[MarkerSpec]:
         level = min(1.0, max(0.0, level))
-        z = self.params.robot_height_m + 0.25
+        z = ROBOT_BODY.height_m + 0.25
         full, thick = 0.4, 0.08
         color = battery_color(level)
         # A bar along the map's x axis (a cube cannot face the viewer the way HAVEN's sprite did),

@@ -4,7 +4,8 @@ A `MarkerSpec` mirrors what visualization_msgs/Marker needs (namespace, id, type
 colour, text, points) without depending on ROS; `haven_viz.nodes.conversions` makes the message.
 `MarkerDiff` remembers what a viewer was last sent, so each cycle only new or changed markers go
 out, plus an explicit DELETE for every marker that disappeared (no reliance on lifetimes, which
-viewers render differently).
+viewers render differently). A full refresh re-sends every current marker and a DELETE for every
+marker ever sent that is gone, so a viewer that missed a message (or joined late) is repaired.
 """
 
 from __future__ import annotations
@@ -79,12 +80,15 @@ class Update:
 class MarkerDiff:
     def __init__(self) -> None:
         self.sent: dict[tuple[str, int], MarkerSpec] = {}
+        self._ever: set[tuple[str, int]] = set()  # every key ever sent (bounded by the ids in use)
 
     def update(self, markers: list[MarkerSpec], resend_all: bool = False) -> Update:
-        """The changes since the last update; with `resend_all`, every current marker (for viewers
-        that joined late) together with the deletes still due."""
+        """The changes since the last update; with `resend_all`, every current marker and a DELETE
+        for every marker ever sent that is not current."""
         current = {m.key: m.rounded() for m in markers}
         upsert = [m for k, m in current.items() if resend_all or self.sent.get(k) != m]
-        delete = sorted(k for k in self.sent if k not in current)
+        gone = self._ever if resend_all else self.sent.keys()
+        delete = sorted(k for k in gone if k not in current)
+        self._ever.update(current)
         self.sent = current
         return Update(upsert, delete)

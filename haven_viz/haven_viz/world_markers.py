@@ -4,10 +4,10 @@ owner (blue robot, red human), the charging base; and the moving bodies (robot, 
 from __future__ import annotations
 
 import math
-from collections.abc import Collection, Sequence
+from collections.abc import Collection, Mapping, Sequence
 
+from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
 from haven_sim.common.geometry import Point, Pose2D, polygon_area
-from haven_sim.sim.physics import HUMAN_BODY, ROBOT_BODY
 from haven_sim.sim.world import World
 from haven_viz.markers import Color, MarkerSpec, Point3, Shape
 
@@ -96,15 +96,15 @@ def world_markers(world: World, collected: Collection[str] = (), removed: Collec
     return out
 
 
-def body_markers(robot: Pose2D, humans: Sequence[tuple[str, Pose2D]]) -> list[MarkerSpec]:
+def body_markers(robot: Pose2D, humans: Mapping[str, Pose2D]) -> list[MarkerSpec]:
     """The robot (a Kobuki-sized cylinder with a heading arrow) and each human (a tall cylinder)."""
-    r = ROBOT_BODY.radius_m
+    r, rh = ROBOT_BODY.radius_m, ROBOT_BODY.height_m
     out = [
-        MarkerSpec("robot", 0, Shape.CYLINDER, (robot.x, robot.y, 0.2), robot.yaw, (2 * r, 2 * r, 0.4), COLORS["robot"]),
-        MarkerSpec("robot", 1, Shape.ARROW, (robot.x, robot.y, 0.42), robot.yaw, (0.25, 0.05, 0.05), (1.0, 1.0, 1.0, 1.0)),
+        MarkerSpec("robot", 0, Shape.CYLINDER, (robot.x, robot.y, rh / 2), robot.yaw, (2 * r, 2 * r, rh), COLORS["robot"]),
+        MarkerSpec("robot", 1, Shape.ARROW, (robot.x, robot.y, rh + 0.02), robot.yaw, (0.25, 0.05, 0.05), (1.0, 1.0, 1.0, 1.0)),
     ]
-    h = HUMAN_BODY.radius_m
-    for i, (hid, p) in enumerate(humans):
-        out.append(MarkerSpec("humans", i, Shape.CYLINDER, (p.x, p.y, 0.85), p.yaw, (2 * h, 2 * h, 1.7), COLORS["human"]))
-        out.append(MarkerSpec("human_names", i, Shape.TEXT_VIEW_FACING, (p.x, p.y, 1.9), 0.0, (0.0, 0.0, 0.2), (0.1, 0.1, 0.1, 1.0), hid))
+    h, hh = HUMAN_BODY.radius_m, HUMAN_BODY.height_m
+    for i, (hid, p) in enumerate(humans.items()):
+        out.append(MarkerSpec("humans", i, Shape.CYLINDER, (p.x, p.y, hh / 2), p.yaw, (2 * h, 2 * h, hh), COLORS["human"]))
+        out.append(MarkerSpec("human_names", i, Shape.TEXT_VIEW_FACING, (p.x, p.y, hh + 0.2), 0.0, (0.0, 0.0, 0.2), (0.1, 0.1, 0.1, 1.0), hid))
     return out

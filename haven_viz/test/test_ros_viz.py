@@ -11,6 +11,7 @@ from std_msgs.msg import String
 from visualization_msgs.msg import Marker, MarkerArray
 
 from haven_sim.common.geometry import Pose2D
+from haven_sim.common.events import EventKind
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_viz.markers import MarkerSpec, Shape
@@ -78,7 +79,7 @@ def test_cues_in_the_running_suite(ros):
     assert future.result().results[0].successful
     assert ros.spin_until(lambda: live.count("path_projection") == 0, 10)
     assert any(ns == "path_projection" for ns, _ in live.deleted)
-    toggled = [conv.event_from_msg(e) for e in events if '"cue_toggled"' in e.data]
+    toggled = [e for e in map(conv.event_from_msg, events) if e.kind is EventKind.CUE_TOGGLED]
     assert toggled and toggled[0]["cue"] == "path_projection" and toggled[0]["on"] is False
     bad = SetParameters.Request(parameters=[ParameterMsg(name="marker_size_m", value=ParameterValue(type=ParameterType.PARAMETER_DOUBLE, double_value=0.5))])
     future = client.call_async(bad)

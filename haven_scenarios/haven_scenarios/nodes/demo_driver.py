@@ -16,6 +16,7 @@ from sensor_msgs.msg import BatteryState
 from std_msgs.msg import String
 
 from haven_scenarios.tools.square_drive import SquareDriver
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
@@ -51,8 +52,11 @@ class DemoDriver(Node):
         self.battery = msg.percentage
 
     def _on_event(self, msg: String) -> None:
-        if conv.event_from_msg(msg).get("type") == "contact_begin":
-            self.contacts += 1
+        try:
+            if conv.event_from_msg(msg).kind is EventKind.CONTACT_BEGIN:
+                self.contacts += 1
+        except ValueError:
+            pass
 
     def _tick(self) -> None:
         if self.pose is None:

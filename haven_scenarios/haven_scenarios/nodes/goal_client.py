@@ -12,12 +12,13 @@ from geometry_msgs.msg import PoseStamped
 from rclpy.node import Node
 from std_msgs.msg import String
 
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
 
-SHOWN = {"plan_made", "plan_refused", "waiting", "resumed", "replanned", "reverted", "goal_reached"}
+SHOWN = {EventKind.PLAN_MADE, EventKind.PLAN_REFUSED, EventKind.WAITING, EventKind.RESUMED, EventKind.REPLANNED, EventKind.REVERTED, EventKind.GOAL_REACHED}
 
 
 class GoalClient(Node):
@@ -50,15 +51,17 @@ class GoalClient(Node):
             raise SystemExit(1)
 
     def _on_event(self, msg: String) -> None:
-        event = conv.event_from_msg(msg)
-        kind = event.get("type")
-        if self.sent_at is None or kind not in SHOWN:
+        try:
+            event = conv.event_from_msg(msg)
+        except ValueError:
             return
-        detail = ", ".join(f"{k}={v}" for k, v in event.items() if k not in ("type", "source", "stamp"))
-        print(f"goto: {kind} at t={event.get('stamp')} {detail}", flush=True)
-        if kind == "goal_reached":
+        if self.sent_at is None or event.kind not in SHOWN:
+            return
+        detail = ", ".join(f"{k}={v}" for k, v in event.data.items())
+        print(f"goto: {event.kind} at t={round(event.stamp, 4)} {detail}", flush=True)
+        if event.kind is EventKind.GOAL_REACHED:
             raise SystemExit(0)
-        if kind == "plan_refused":
+        if event.kind is EventKind.PLAN_REFUSED:
             raise SystemExit(1)
 
 

@@ -7,7 +7,6 @@ sim time. The bag is closed properly on Ctrl-C or SIGTERM.
 
 from __future__ import annotations
 
-import json
 import sys
 from pathlib import Path
 
@@ -40,8 +39,12 @@ class Recorder(Node):
     def _on_message(self, topic: str, data: bytes) -> None:
         self.bag.write(topic, self.get_clock().now().nanoseconds, data)
         if topic == "/haven/events":
-            event = conv.event_from_msg(deserialize_message(data, String))
-            self.events.write(json.dumps(event, sort_keys=True) + "\n")
+            try:
+                event = conv.event_from_msg(deserialize_message(data, String))
+            except ValueError as e:  # kept in the bag as received; left out of events.jsonl
+                self.get_logger().warning(f"not an event on /haven/events: {e}", throttle_duration_sec=5.0)
+                return
+            self.events.write(event.to_json() + "\n")
             self.events.flush()
 
     def destroy_node(self) -> None:

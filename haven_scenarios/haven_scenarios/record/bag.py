@@ -1,5 +1,5 @@
 """Session bags: written as rosbag2 (MCAP storage, metadata version 9) with `rosbags`, read back
-into a `TrialLog` so metrics can be recomputed from any recording.
+as the trial's messages (core payloads) so metrics can be recomputed from any recording.
 
 Messages arrive as raw CDR bytes (the recorder node subscribes with raw=True), so recording costs
 no Python message conversion; reading deserialises only the topics the metrics need.
@@ -7,19 +7,24 @@ no Python message conversion; reading deserialises only the topics the metrics n
 
 from __future__ import annotations
 
-import json
 from collections.abc import Iterator, Sequence
 from pathlib import Path
 from types import TracebackType
 from typing import Any
 
 from rosbags.highlevel import AnyReader
-from rosbags.rosbag2 import StoragePlugin, Writer
 from rosbags.interfaces import Connection
+from rosbags.rosbag2 import StoragePlugin, Writer
 from rosbags.typesys import Stores, get_typestore
 
-from haven_scenarios.record.metrics import TrialLog
-from haven_sim.common.geometry import quaternion_to_yaw
+from haven_scenarios.record.log import LogBuilder, TrialLog
+from haven_sim.common import topics
+from haven_sim.common.events import Event, EventError
+from haven_sim.common.geometry import Pose2D, Twist2D, quaternion_to_yaw
+from haven_sim.common.state import RobotState, name_humans
+from haven_sim.runtime.component import Message
+from haven_sim.sim.battery import BatteryReading, PowerStatus
+from haven_viz.cues import CueState
 
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
 
@@ -45,9 +50,6 @@ class BagWriter:
             self._writer.close()
             self._writer = None  # type: ignore[assignment]
 
-    def knows(self, topic: str) -> bool:
-        return topic in self._connections
-
     def add_topic(self, topic: str, msgtype: str) -> bool:
         """Register a topic; False for types this ROS distribution's typestore does not know."""
         if topic in self._connections:
@@ -63,48 +65,44 @@ class BagWriter:
         self.counts[topic] += 1
 
 
-def _messages(bag: Path, topics: Sequence[str]) -> Iterator[tuple[str, int, Any]]:
+def _pose(p: Any) -> Pose2D:
+    q = p.orientation
+    return Pose2D(p.position.x, p.position.y, quaternion_to_yaw(q.x, q.y, q.z, q.w))
+
+
+def _payload(topic: str, msg: Any, human_ids: Sequence[str]) -> Any:
+    """A recorded message as the core payload the components and metrics use."""
+    if topic == topics.ODOM:
+        t = msg.twist.twist
+        return RobotState(_pose(msg.pose.pose), Twist2D(t.linear.x, t.linear.y, t.angular.z))
+    if topic == topics.HUMANS:
+        return name_humans([_pose(p) for p in msg.poses], human_ids)
+    if topic == topics.BATTERY:
+        return BatteryReading(float(msg.percentage), PowerStatus.DISCHARGING, float(msg.voltage), float(msg.charge), float(msg.capacity), float("nan"))
+    if topic == topics.CUE_STATE:
+        return CueState.from_json(msg.data)[1]
+    return Event.from_json(msg.data)
+
+
+READ = {"/" + t: t for t in (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.EVENTS, topics.CUE_STATE)}
+
+
+def read_messages(bag: Path, human_ids: Sequence[str] = ()) -> Iterator[Message]:
+    """The trial's messages in bag order; recorded strings that are not valid events are skipped."""
     with AnyReader([bag], default_typestore=TYPESTORE) as reader:
-        connections = [c for c in reader.connections if c.topic in topics]
+        connections = [c for c in reader.connections if c.topic in READ]
         for conn, stamp, raw in reader.messages(connections=connections):
-            yield conn.topic, stamp, reader.deserialize(raw, conn.msgtype)
+            topic = READ[conn.topic]
+            try:
+                data = _payload(topic, reader.deserialize(raw, conn.msgtype), human_ids)
+            except (EventError, ValueError):
+                continue
+            yield Message(topic, data, stamp * 1e-9)
 
 
 def read_log(bag: Path, human_ids: Sequence[str] = (), rate_hz: float = 10.0) -> TrialLog:
     """The trial as `TrialLog` samples (at `rate_hz` of bag time) plus every event."""
-    log = TrialLog()
-    robot: tuple[float, float, float, float] | None = None
-    humans: dict[str, tuple[float, float]] = {}
-    battery = 1.0
-    live: dict[tuple[str, int], Any] = {}
-    step_ns = int(1e9 / rate_hz)
-    next_ns: int | None = None
-    topics = ["/odom", "/humans", "/battery_state", "/haven/events", "/haven/ar_markers"]
-    for topic, stamp, msg in _messages(bag, topics):
-        if topic == "/haven/events":
-            log.events.append(json.loads(msg.data))
-            continue
-        if next_ns is not None and robot is not None:
-            while stamp >= next_ns:
-                bubble = any(ns == "thought_bubble" for ns, _ in live)
-                signal = 1 if ("turn_signals", 0) in live else (-1 if ("turn_signals", 1) in live else 0)
-                log.sample(next_ns * 1e-9, robot, dict(humans), battery, bubble, signal)
-                next_ns += step_ns
-        if topic == "/odom":
-            p, q = msg.pose.pose.position, msg.pose.pose.orientation
-            robot = (p.x, p.y, quaternion_to_yaw(q.x, q.y, q.z, q.w), msg.twist.twist.angular.z)
-            if next_ns is None:
-                next_ns = stamp - stamp % step_ns + step_ns
-        elif topic == "/humans":
-            for i, pose in enumerate(msg.poses):
-                hid = human_ids[i] if i < len(human_ids) else f"h{i}"
-                humans[hid] = (pose.position.x, pose.position.y)
-        elif topic == "/battery_state":
-            battery = float(msg.percentage)
-        elif topic == "/haven/ar_markers":
-            for m in msg.markers:
-                if m.action == 2:  # DELETE
-                    live.pop((m.ns, m.id), None)
-                elif m.action == 0:
-                    live[(m.ns, m.id)] = True
-    return log
+    builder = LogBuilder(rate_hz)
+    for m in read_messages(bag, human_ids):
+        builder.add(m)
+    return builder.log

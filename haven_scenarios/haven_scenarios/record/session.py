@@ -24,6 +24,7 @@ import numpy as np
 from haven_scenarios.record.bag import read_log
 from haven_scenarios.record.metrics import compute
 from haven_scenarios.study.scenario import load_scenario
+from haven_sim.common.events import EventKind
 from haven_sim.sim.world import World, load_world
 from haven_viz.render import render_scene
 from haven_viz.world_markers import world_markers
@@ -76,7 +77,7 @@ def analyse(folder_or_bag: Path) -> tuple[dict[str, Any], World | None]:
         world = load_world(info["world_file"])
         human_ids = [h.id for h in world.humans]
     log = read_log(bag, human_ids)
-    ends = [e for e in log.events if e.get("type") == "trial_end"]
+    ends = [e for e in log.events if e.kind is EventKind.TRIAL_END]
     metrics = compute(log, str(info.get("scenario", "")), ends[-1]["reason"] if ends else "interrupted")
     for key in ("participant", "condition", "seed"):
         if key in info:
@@ -96,14 +97,14 @@ def trajectory_picture(folder: Path, world: World, title: str) -> Path:
         trails[hid] = (np.asarray(xy, dtype=float), colors[i % len(colors)])
     marks = []
     t = np.asarray(log.t)
+    labels = {EventKind.WAITING: "wait", EventKind.REPLANNED: "detour", EventKind.CONTACT_BEGIN: "contact", EventKind.CHARGE_TRIP: "to charge"}
     for e in log.events:
-        kind = e.get("type")
-        if kind in ("waiting", "replanned", "contact_begin", "charge_trip") and len(t):
-            i = min(int(np.searchsorted(t, float(e.get("stamp", 0.0)))), len(t) - 1)
-            label = {"waiting": "wait", "replanned": f"detour {e.get('side', '')}", "contact_begin": "contact", "charge_trip": "to charge"}[kind]
-            marks.append((float(robot[i, 0]), float(robot[i, 1]), label, "tab:blue" if kind != "contact_begin" else "red"))
-    collected = {str(e.get("gem")) for e in log.events if e.get("type") == "gem_collected"}
-    removed = {str(e.get("id")) for e in log.events if e.get("type") == "obstruction_removed"}
+        if e.kind in labels and len(t):
+            i = min(int(np.searchsorted(t, e.stamp)), len(t) - 1)
+            label = f"detour {e.get('side', '')}" if e.kind is EventKind.REPLANNED else labels[e.kind]
+            marks.append((float(robot[i, 0]), float(robot[i, 1]), label, "red" if e.kind is EventKind.CONTACT_BEGIN else "tab:blue"))
+    collected = {str(e["gem"]) for e in log.events if e.kind is EventKind.GEM_COLLECTED}
+    removed = {str(e["id"]) for e in log.events if e.kind is EventKind.OBSTRUCTION_REMOVED}
     markers = [m for m in world_markers(world, collected, removed) if m.ns in ("gems", "gem_areas", "charging_base", "rooms")]
     subtitle = f"participant {info.get('participant', '?')}, condition {info.get('condition', '?')}"
     return render_scene(world, markers, folder / "trajectory.png", title=f"{title}\n{subtitle}", trails=trails, points=marks, removed=sorted(removed))

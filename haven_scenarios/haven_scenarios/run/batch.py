@@ -9,8 +9,9 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, TextIO
 
-from haven_scenarios.study.scenario import Scenario
+from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.trial import TrialResult, run_trial
+from haven_scenarios.study.scenario import Scenario
 from haven_viz.cues import Toggles
 
 
@@ -32,6 +33,7 @@ def run_batch(
     toggles: Toggles,
     csv_path: Path,
     on_trial: Callable[[int, TrialResult], None] | None = None,
+    suite: SuiteConfig | None = None,
 ) -> list[dict[str, Any]]:
     """Trials with seeds seed, seed + 1, ...; the CSV is written row by row (a crash loses nothing)."""
     rows: list[dict[str, Any]] = []
@@ -39,7 +41,7 @@ def run_batch(
     with csv_path.open("w", newline="") as f:
         writer: csv.DictWriter[str] | None = None
         for i in range(trials):
-            result = run_trial(scenario, seed + i, toggles)
+            result = run_trial(scenario, seed + i, toggles, suite)
             row = {"trial": i, **result.metrics}
             if writer is None:
                 writer = csv.DictWriter(f, fieldnames=list(row), extrasaction="ignore")

@@ -1,28 +1,54 @@
-"""The scenario side of a trial, shared by batch mode and the ROS scenario node.
+"""The trial director: runs one trial of a scenario, shared by batch mode and the scenario node.
 
-`ScenarioCore` holds the mission executive, the scenario rules and the simulated participants. It is
-fed what a node would receive (poses, battery level, the robot's path, other nodes' events) and
-returns what a node would publish (a goal, the thought text, participants' velocity commands,
-events, obstructions to clear, the end of the trial). Batch mode wires it to in-process simulator
-and navigation objects; the scenario node wires it to topics. Neither adds behaviour of its own.
+`TrialDirector` holds the mission executive, the study rules and the simulated participants. It reads
+what any node can read (the map, /odom, /humans, /battery_state, /plan, /haven/wait, and contacts on
+the study log) and publishes what the scenario node publishes: goals, the thought text, the simulated
+participants' velocities, obstruction removals (a control topic, not the event log) and the study's
+events. It starts the trial once it has the state it needs and `start_allowed` is set (the node
+waits for every listener first), and ends it by the scenario's rules with a `trial_end` event.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 from haven_scenarios.study.mission import Mission, MissionOutput, Phase, Target
-from haven_scenarios.study.participants import Blocker, Stop, Walker, Yielder
+from haven_scenarios.study.participants import HUMAN_PLANNER, Participant, Stop, make_walker, shuffled_nearest
 from haven_scenarios.study.rules import EndRule, GemRules, ObstructionRules, RouteRules
 from haven_scenarios.study.scenario import Scenario
+from haven_sim.common import topics
+from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D, Twist2D
+from haven_sim.common.params import group, param
+from haven_sim.common.state import Goal, HumanPoses, RobotState
+from haven_sim.nav.planner import GridPlanner, PlanningError
+from haven_sim.runtime.component import Handler, Message
+from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.occupancy import OccupancyGridData
-from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError
 
-HUMAN_PLANNER = PlannerParams(robot_radius_m=0.25, safety_margin_m=0.05, snap_radius_m=0.5)
+STOPPED_MPS = 0.02  # the robot counts as standing still (the battery charges only then)
+STRANDED_S = 5.0  # a flat battery off the base for this long ends the trial
+RESEND_AFTER_S = 1.0  # standing still short of the base this long: ask for the base once more
+
+
+@dataclass(frozen=True)
+class DirectorConfig:
+    scenario: str = param("hallway", "a shipped scenario name or a scenario YAML")
+    seed: int = param(0, "seed of the simulated participants and the random gem order")
+    rate_hz: float = param(10.0, "rules, participants and mission (sim time)")
+
+    def __post_init__(self) -> None:
+        if not self.rate_hz > 0:
+            raise ValueError(f"rate_hz must be positive, got {self.rate_hz}")
+
+
+@dataclass(frozen=True)
+class ScenarioNodeConfig:
+    director: DirectorConfig = group(DirectorConfig)
+    wait_for: tuple[str, ...] = param(("planner",), "nodes that must be listening before the trial starts")
 
 
 def robot_targets(scenario: Scenario) -> list[Target]:
@@ -41,12 +67,12 @@ def _aside(planner: GridPlanner, stop: Stop, offset_m: float = 1.2) -> Stop:
     return stop
 
 
-def make_participants(scenario: Scenario, grid: OccupancyGridData, seed: int) -> dict[str, Walker]:
+def make_participants(scenario: Scenario, grid: OccupancyGridData, seed: int) -> dict[str, Participant]:
     """The simulated participants (teleoperated ones are driven by a person, not here)."""
     planner = GridPlanner(grid, HUMAN_PLANNER)
     w = scenario.world
     starts = {h.id: h.start for h in w.humans}
-    out: dict[str, Walker] = {}
+    out: dict[str, Participant] = {}
     for k, task in enumerate(scenario.humans):
         if task.model == "teleop":
             continue
@@ -58,44 +84,23 @@ def make_participants(scenario: Scenario, grid: OccupancyGridData, seed: int) ->
         else:
             gems = [Stop(g.position[0], g.position[1], dwell_s=scenario.dwell_time_s + 0.5, reach_m=0.12) for g in w.gems if g.owner == "human"]
             start = starts[task.id]
-            stops = Walker.shuffled_nearest(gems, (start.x, start.y), s)
-        cls = {"walker": Walker, "blocker": Blocker, "yielder": Yielder}[task.model]
-        out[task.id] = cls(task.id, stops, planner, task.speed_mps, s)
+            stops = shuffled_nearest(gems, (start.x, start.y), s)
+        out[task.id] = make_walker(task.model, task.id, stops, planner, task.speed_mps, s)
     return out
 
 
-@dataclass
-class CoreOutput:
-    goal: Pose2D | None = None
-    thought: str | None = None
-    human_cmds: dict[str, Twist2D] = field(default_factory=dict)
-    events: list[dict[str, Any]] = field(default_factory=list)
-    clear_obstructions: list[str] = field(default_factory=list)
-    end: str | None = None
+class TrialDirector:
+    name = "scenario"
+    unread: frozenset[str] = frozenset()
 
-    def merge(self, m: MissionOutput) -> None:
-        if m.goal is not None:
-            self.goal = m.goal
-        if m.thought is not None:
-            self.thought = m.thought
-        self.events += [{"source": "mission", **e} for e in m.events]
-
-
-class ScenarioCore:
-    def __init__(self, scenario: Scenario, grid: OccupancyGridData, seed: int = 0, robot_planner: GridPlanner | None = None) -> None:
+    def __init__(self, scenario: Scenario, seed: int = 0, rate_hz: float = 10.0) -> None:
         self.scenario = scenario
+        self.seed = seed
+        self.rate_hz = rate_hz
+        self.start_allowed = True  # the scenario node holds the start until every listener is there
+        self.planner: GridPlanner | None = None
+        self.participants: dict[str, Participant] = {}
         w = scenario.world
-        self.planner = robot_planner or GridPlanner(grid)
-        self.participants = make_participants(scenario, grid, seed)
-        base = w.charging_base
-        self.mission = Mission(
-            robot_targets(scenario),
-            self.path_length,
-            "fixed" if scenario.kind == "hallway" else scenario.robot_order,
-            scenario.battery,
-            base.position if base else None,
-            seed,
-        )
         self.gems = GemRules(w.gems, scenario.dwell_time_s)
         routes: dict[str, Sequence[str]] = {}
         if scenario.kind == "hallway":
@@ -103,92 +108,173 @@ class ScenarioCore:
         self.routes = RouteRules(w, routes)
         self.obstructions = ObstructionRules(w)
         self.end_rule = EndRule(scenario.timeout_s, scenario.end_on_contact)
+        self.mission: Mission | None = None
         self.humans_done: set[str] = set()
         self.contact = False
-        self.empty_since: float | None = None  # when the battery ran out (the robot cannot drive)
+        self.robot: RobotState | None = None
+        self.humans: HumanPoses = {}
+        self.level: float | None = None
+        self.path: list[Pose2D] = []
         self.waiting = False
-        self.arrived = False  # the controller reached the last goal sent
+        self.empty_since: float | None = None  # when the battery ran out (the robot cannot drive)
+        self.still_since: float | None = None  # when the robot last stopped moving
         self.start_time: float | None = None
         self.ended: str | None = None
 
+    @property
+    def period_s(self) -> float:
+        return 1.0 / self.rate_hz
+
+    def handlers(self) -> Mapping[str, Handler]:
+        return {
+            topics.MAP: self.on_map,
+            topics.ODOM: self.on_odom,
+            topics.HUMANS: self.on_humans,
+            topics.BATTERY: self.on_battery,
+            topics.PLAN: self.on_plan,
+            topics.WAIT: self.on_wait,
+            topics.EVENTS: self.on_event,
+        }
+
+    def outputs(self) -> Sequence[str]:
+        simulated = [topics.human_cmd_vel(h.id) for h in self.scenario.humans if h.model != "teleop"]
+        return (topics.GOAL, topics.THOUGHT, topics.EVENTS, topics.REMOVE_OBSTRUCTION, *simulated)
+
+    # -- inputs ----------------------------------------------------------------------------------
+    def on_map(self, grid: OccupancyGridData, now: float) -> list[Message]:
+        first = self.planner is None
+        self.planner = GridPlanner(grid)
+        if first:
+            self.participants = make_participants(self.scenario, grid, self.seed)
+            base = self.scenario.world.charging_base
+            kind = self.scenario
+            self.mission = Mission(
+                robot_targets(kind),
+                self.path_length,
+                "fixed" if kind.kind == "hallway" else kind.robot_order,
+                kind.battery,
+                base.position if base else None,
+                self.seed,
+            )
+            return []
+        # The world changed (an obstruction went away): plan the current goal again.
+        return self._mission_messages(self.mission.resend() if self.mission else MissionOutput(), now)
+
+    def on_odom(self, state: RobotState, now: float) -> list[Message]:
+        moving = abs(state.twist.vx) > STOPPED_MPS or abs(state.twist.wz) > 0.05
+        if moving or self.still_since is None:
+            self.still_since = None if moving else now
+        self.robot = state
+        return []
+
+    def on_humans(self, humans: HumanPoses, now: float) -> list[Message]:
+        self.humans = dict(humans)
+        return []
+
+    def on_battery(self, reading: BatteryReading, now: float) -> list[Message]:
+        self.level = reading.level
+        if reading.level > 0.0:
+            self.empty_since = None
+        elif self.empty_since is None:
+            self.empty_since = now
+        return []
+
+    def on_plan(self, poses: Sequence[Pose2D], now: float) -> list[Message]:
+        self.path = list(poses)
+        return []
+
+    def on_wait(self, waiting: bool, now: float) -> list[Message]:
+        self.waiting = waiting
+        return []
+
+    def on_event(self, e: Event, now: float) -> list[Message]:
+        """The study log is read for one rule only: a robot-human contact can end a trial."""
+        if e.kind is EventKind.CONTACT_BEGIN and str(e["other"]).startswith("human"):
+            self.contact = True
+        return []
+
+    # -- the trial ---------------------------------------------------------------------------------
     def path_length(self, a: Point, b: Point) -> float:
+        if self.planner is None:
+            return math.inf
         try:
             return self.planner.plan(a, b).length_m
         except PlanningError:
             return math.inf
 
-    def set_map(self, grid: OccupancyGridData) -> None:
-        self.planner = GridPlanner(grid, self.planner.params)
+    def _ready(self) -> bool:
+        have_humans = bool(self.humans) or not self.scenario.world.humans
+        return self.mission is not None and self.robot is not None and self.level is not None and have_humans
 
-    def _merge(self, out: CoreOutput, m: MissionOutput) -> None:
-        out.merge(m)
+    def _event(self, kind: EventKind, now: float, **data: Any) -> Message:
+        return Message(topics.EVENTS, event(kind, now, Source.SCENARIO, **data), now)
+
+    def _mission_messages(self, m: MissionOutput, now: float) -> list[Message]:
+        out = [Message(topics.EVENTS, e, now) for e in m.events]
+        if m.thought is not None:
+            out.append(Message(topics.THOUGHT, m.thought, now))
         if m.goal is not None:
-            self.arrived = False
-            if self.mission.current is not None and self.mission.phase is Phase.GOING and self.scenario.kind == "retrieval":
-                self.gems.robot_target = self.mission.current.id
-
-    def start(self, now: float, robot: Pose2D, level: float) -> CoreOutput:
-        self.start_time = now
-        out = CoreOutput()
-        out.events.append({"source": "scenario", "type": "trial_start", "scenario": self.scenario.name})
-        self._merge(out, self.mission.start(robot, level))
+            mission = self.mission
+            assert mission is not None
+            self.still_since = None
+            if mission.current is not None and mission.phase is Phase.GOING and self.scenario.kind == "retrieval":
+                self.gems.robot_target = mission.current.id
+            out.append(Message(topics.GOAL, Goal(m.goal), now))
         return out
 
-    def on_event(self, event: Mapping[str, Any], robot: Pose2D) -> CoreOutput:
-        """Events of the other nodes: planner waits, controller arrivals, contacts, map changes."""
-        out = CoreOutput()
-        kind = event.get("type")
-        if kind == "waiting":
-            self.waiting = True
-        elif kind in ("resumed", "plan_made", "replanned"):
-            self.waiting = False
-        elif kind == "goal_reached":
-            self.arrived = True
-        elif kind == "contact_begin" and str(event.get("other", "")).startswith("human"):
-            self.contact = True
-        elif kind == "battery_empty":
-            self.empty_since = float(event.get("stamp", 0.0))
-        elif kind == "obstruction_removed":
-            self._merge(out, self.mission.resend())
-        return out
+    def tick(self, now: float) -> list[Message]:
+        if self.ended is not None or not self._ready():
+            return []
+        mission, robot, level = self.mission, self.robot, self.level
+        assert mission is not None and robot is not None and level is not None
+        if self.start_time is None:
+            if not self.start_allowed:
+                return []
+            self.start_time = now
+            return [self._event(EventKind.TRIAL_START, now, scenario=self.scenario.name)] + self._mission_messages(
+                mission.start(now, robot.pose, level), now
+            )
+        return self._step(now, mission, robot.pose, level)
 
-    def tick(self, now: float, robot: Pose2D, humans: Mapping[str, Pose2D], level: float, robot_path: Sequence[Pose2D]) -> CoreOutput:
+    def _step(self, now: float, mission: Mission, robot: Pose2D, level: float) -> list[Message]:
         """The 10 Hz step: participants move, rules fire, the mission decides, the end is checked."""
-        out = CoreOutput()
-        if self.ended is not None:
-            return out
+        out: list[Message] = []
         for hid, walker in self.participants.items():
-            if hid in humans:
-                out.human_cmds[hid] = walker.command(now, humans[hid], robot, robot_path)
-        events = self.gems.update(now, robot, humans) + self.routes.update({"robot": robot, **humans})
-        events += self.obstructions.update(humans)
-        out.events += [{"source": "scenario", **e} for e in events]
-        for e in events:
-            if e["type"] == "obstruction_cleared":
-                out.clear_obstructions.append(e["id"])
-            elif e["type"] == "gem_collected" and e["by"] == "robot":
-                self._merge(out, self.mission.target_done(e["gem"], robot, level))
-            elif e["type"] == "room_reached" and e["by"] == "robot" and self.mission.current is not None and e["room"] == self.mission.current.id:
-                self._merge(out, self.mission.target_done(e["room"], robot, level))
+            if hid in self.humans:
+                out.append(Message(topics.human_cmd_vel(hid), walker.command(now, self.humans[hid], robot, self.path), now))
+        fired = self.gems.update(now, robot, self.humans) + self.routes.update(now, {"robot": robot, **self.humans})
+        fired += self.obstructions.update(now, self.humans)
+        out += [Message(topics.EVENTS, e, now) for e in fired]
+        for e in fired:
+            if e.kind is EventKind.OBSTRUCTION_CLEARED:
+                out.append(Message(topics.REMOVE_OBSTRUCTION, e["id"], now))
+            elif e.kind is EventKind.GEM_COLLECTED and e["by"] == "robot":
+                out += self._mission_messages(mission.target_done(now, e["gem"], robot, level), now)
+            elif e.kind is EventKind.ROOM_REACHED and e["by"] == "robot" and mission.current is not None and e["room"] == mission.current.id:
+                out += self._mission_messages(mission.target_done(now, e["room"], robot, level), now)
         for hid in self.participants:
             if hid not in self.humans_done and self._human_finished(hid):
                 self.humans_done.add(hid)
-                out.events.append({"source": "scenario", "type": "task_done", "by": hid})
-        base = self.scenario.world.charging_base
-        at_base = base is not None and self.arrived and robot.distance_to(base.position) <= base.radius
-        if base is not None and self.arrived and not at_base and self.mission.phase is Phase.TO_BASE:
-            self._merge(out, self.mission.resend())  # stopped short of (or past) the base: once more
-        self._merge(out, self.mission.tick(robot, level, at_base, self.waiting))
-        all_done = self.mission.phase is Phase.DONE and self.humans_done >= set(self.participants)
+                out.append(self._event(EventKind.TASK_DONE, now, by=hid))
+        out += self._charging(now, mission, robot, level)
+        all_done = mission.phase is Phase.DONE and self.humans_done >= set(self.participants)
         elapsed = now - (self.start_time if self.start_time is not None else now)
-        if level > 0.0:
-            self.empty_since = None
-        # Empty and not charging for a while (a robot that made it onto the base recharges).
-        stranded = self.empty_since is not None and now - self.empty_since > 5.0
-        self.ended = out.end = "battery_empty" if stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)
-        if out.end is not None:
-            out.events.append({"source": "scenario", "type": "trial_end", "reason": out.end})
+        stranded = self.empty_since is not None and now - self.empty_since > STRANDED_S
+        self.ended = "battery_empty" if stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)
+        if self.ended is not None:
+            out.append(self._event(EventKind.TRIAL_END, now, reason=self.ended))
         return out
+
+    def _charging(self, now: float, mission: Mission, robot: Pose2D, level: float) -> list[Message]:
+        """Tell the mission when the robot stands on the base; send it there again if it stopped short."""
+        base = self.scenario.world.charging_base
+        still = self.still_since is not None
+        at_base = base is not None and still and robot.distance_to(base.position) <= base.radius
+        out: list[Message] = []
+        stuck = self.still_since is not None and now - self.still_since >= RESEND_AFTER_S and not self.waiting
+        if base is not None and stuck and not at_base and mission.phase is Phase.TO_BASE:
+            out += self._mission_messages(mission.resend(), now)  # stopped short of (or past) the base
+        return out + self._mission_messages(mission.tick(now, robot, level, at_base, self.waiting), now)
 
     def _human_finished(self, hid: str) -> bool:
         if self.scenario.kind == "hallway":

@@ -25,6 +25,7 @@ from enum import Enum
 from typing import Any
 
 from haven_scenarios.study.scenario import BatteryPlan
+from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
 
 PathLength = Callable[[Point, Point], float]  # planned length, math.inf when unreachable
@@ -54,7 +55,7 @@ class Phase(Enum):
 class MissionOutput:
     goal: Pose2D | None = None  # a goal to send now
     thought: str | None = None  # a new thought text
-    events: list[dict[str, Any]] = field(default_factory=list)
+    events: list[Event] = field(default_factory=list)
 
 
 class Mission:
@@ -82,6 +83,10 @@ class Mission:
         self.thought = ""
         self.charge_trips = 0
         self._charge_level, self._charge_ticks = 0.0, 0  # charging progress, to notice a stall
+        self._now = 0.0  # the time of the call being answered (stamps its events)
+
+    def _event(self, out: MissionOutput, kind: EventKind, **data: Any) -> None:
+        out.events.append(event(kind, self._now, Source.MISSION, **data))
 
     # -- decisions -------------------------------------------------------------------------------
     def _range(self, level: float) -> float:
@@ -103,7 +108,7 @@ class Mission:
         self.current, self.phase = target, Phase.GOING
         out.goal = Pose2D(target.x, target.y, math.nan)
         self._say(out, f"Going to {target.label}")
-        out.events.append({"type": "target_selected", "target": target.id})
+        self._event(out, EventKind.TARGET_SELECTED, target=target.id)
 
     def _to_base(self, out: MissionOutput, reason: str) -> None:
         assert self.base is not None
@@ -111,21 +116,21 @@ class Mission:
         self.charge_trips += 1
         out.goal = Pose2D(self.base[0], self.base[1], math.nan)
         self._say(out, "Low battery: going to charge")
-        out.events.append({"type": "charge_trip", "reason": reason, "abandoned": self.current.id if self.current else None})
+        self._event(out, EventKind.CHARGE_TRIP, reason=reason, abandoned=self.current.id if self.current else None)
 
     def _next(self, out: MissionOutput, robot: Pose2D, level: float) -> None:
         target = self.current if self.current is not None else self._pick(robot)
         if target is None:
             self.phase, self.current = Phase.DONE, None
             self._say(out, "All done")
-            out.events.append({"type": "task_done", "by": "robot"})
+            self._event(out, EventKind.TASK_DONE, by="robot")
             return
         if self.battery.mode == "on_arrival" and self.base is not None:
             # Planned lengths leave out turns, arcs and detours: keep `safety_factor` in hand.
             need = self.battery.safety_factor * (self.path_length((robot.x, robot.y), target.xy) + self.path_length(target.xy, self.base))
             if need > self._range(1.0) and level >= self.battery.charge_until - 1e-6:
                 # Not even a full charge covers it: charging again would loop forever, so go.
-                out.events.append({"type": "battery_insufficient", "target": target.id, "need_m": round(need, 2)})
+                self._event(out, EventKind.BATTERY_INSUFFICIENT, target=target.id, need_m=round(need, 2))
             elif need > self._range(level):
                 self.current = target
                 self._to_base(out, f"needs {need:.1f} m, has {self._range(level):.1f} m")
@@ -133,13 +138,15 @@ class Mission:
         self._go(out, target)
 
     # -- inputs ----------------------------------------------------------------------------------
-    def start(self, robot: Pose2D, level: float = 1.0) -> MissionOutput:
+    def start(self, now: float, robot: Pose2D, level: float = 1.0) -> MissionOutput:
+        self._now = now
         out = MissionOutput()
         self._next(out, robot, level)
         return out
 
-    def target_done(self, target_id: str, robot: Pose2D, level: float) -> MissionOutput:
+    def target_done(self, now: float, target_id: str, robot: Pose2D, level: float) -> MissionOutput:
         """A rule says the current target is finished (gem collected, room reached)."""
+        self._now = now
         out = MissionOutput()
         self.pending = [t for t in self.pending if t.id != target_id]
         self.done_ids.append(target_id)
@@ -158,20 +165,21 @@ class Mission:
             out.goal = Pose2D(self.base[0], self.base[1], math.nan)
         return out
 
-    def tick(self, robot: Pose2D, level: float, at_base_goal: bool = False, waiting: bool = False) -> MissionOutput:
+    def tick(self, now: float, robot: Pose2D, level: float, at_base: bool = False, waiting: bool = False) -> MissionOutput:
+        self._now = now
         out = MissionOutput()
         p = self.battery
-        if self.phase is Phase.TO_BASE and at_base_goal:
+        if self.phase is Phase.TO_BASE and at_base:
             self.phase = Phase.CHARGING
             self._charge_level, self._charge_ticks = level, 0
-            out.events.append({"type": "charging_started", "level": round(level, 3)})
+            self._event(out, EventKind.CHARGING_STARTED, level=round(level, 3))
         if self.phase is Phase.CHARGING:
             if level >= p.charge_until - 1e-6:
-                out.events.append({"type": "charging_done", "level": round(level, 3)})
+                self._event(out, EventKind.CHARGING_DONE, level=round(level, 3))
                 self._next(out, robot, level)
             elif level <= self._charge_level + 1e-4 and self._charge_ticks >= 25:
                 # Not charging (e.g. stopped just off the base): drive onto it again.
-                out.events.append({"type": "charging_stalled", "level": round(level, 3)})
+                self._event(out, EventKind.CHARGING_STALLED, level=round(level, 3))
                 self.phase = Phase.TO_BASE
                 assert self.base is not None
                 out.goal = Pose2D(self.base[0], self.base[1], math.nan)

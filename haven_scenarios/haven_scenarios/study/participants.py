@@ -15,9 +15,23 @@ import math
 import random
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol
 
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, Twist2D, wrap_angle
-from haven_sim.nav.planner import GridPlanner, PlanningError
+from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
+
+# How a simulated participant plans their own walks: their body, a little margin, generous snapping.
+HUMAN_PLANNER = PlannerParams(safety_margin_m=0.05, snap_radius_m=0.5, body_radius_m=HUMAN_BODY.radius_m)
+
+
+class Participant(Protocol):
+    """A simulated participant model: a velocity for /humans/<id>/cmd_vel from what they see."""
+
+    id: str
+    done: bool  # their task is finished
+
+    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D: ...
 
 
 @dataclass(frozen=True)
@@ -30,8 +44,20 @@ class Stop:
     reach_m: float = 0.15
 
 
+def shuffled_nearest(stops: Sequence[Stop], start: Point, seed: int) -> list[Stop]:
+    """A route through `stops`: nearest next, with seeded randomness (people do not plan tours)."""
+    rng = random.Random(seed)
+    left, here, route = list(stops), start, []
+    while left:
+        left.sort(key=lambda s: math.hypot(s.x - here[0], s.y - here[1]) * rng.uniform(0.7, 1.3))
+        nxt = left.pop(0)
+        route.append(nxt)
+        here = (nxt.x, nxt.y)
+    return route
+
+
 class Walker:
-    def __init__(self, human_id: str, stops: Sequence[Stop], planner: GridPlanner, speed_mps: float = 1.0, seed: int = 0) -> None:
+    def __init__(self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float = 1.0, seed: int = 0) -> None:
         self.id = human_id
         self.rng = random.Random(seed)
         self.speed = speed_mps * self.rng.uniform(0.85, 1.15)
@@ -40,18 +66,6 @@ class Walker:
         self._waypoints: list[Point] = []
         self._arrived_at: float | None = None
         self.done = not self.stops
-
-    @staticmethod
-    def shuffled_nearest(stops: Sequence[Stop], start: Point, seed: int) -> list[Stop]:
-        """A route through `stops`: nearest next, with seeded randomness (people do not plan tours)."""
-        rng = random.Random(seed)
-        left, here, route = list(stops), start, []
-        while left:
-            left.sort(key=lambda s: math.hypot(s.x - here[0], s.y - here[1]) * rng.uniform(0.7, 1.3))
-            nxt = left.pop(0)
-            route.append(nxt)
-            here = (nxt.x, nxt.y)
-        return route
 
     def _plan(self, me: Pose2D) -> None:
         stop = self.stops[0]
@@ -163,3 +177,11 @@ class Yielder(Walker):
             step = 0.4 if room > 0.5 else 0.0  # step aside if there is room, else just stand
             return Twist2D(0.0, -step, 0.0)
         return self._keep_clear(me, robot, self._task(now, me))
+
+
+MODELS: dict[str, type[Walker]] = {"walker": Walker, "blocker": Blocker, "yielder": Yielder}
+
+
+def make_walker(model: str, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int) -> Participant:
+    """A simulated participant of the named model (the names a scenario file uses)."""
+    return MODELS[model](human_id, stops, planner, speed_mps, seed)

@@ -15,10 +15,13 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
+from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.sim.world import Gem, World
 
-Event = dict[str, Any]
+
+def _rule(kind: EventKind, now: float, **data: Any) -> Event:
+    return event(kind, now, Source.SCENARIO, **data)
 
 
 def _near(p: Pose2D, xy: tuple[float, float], radius: float) -> bool:
@@ -43,7 +46,7 @@ class GemRules:
         target = self.gems.get(self.robot_target or "")
         if target is not None and target.owner == "robot" and target.id not in self.collected and _near(robot, target.position, target.radius):
             self.collected[target.id] = "robot"
-            events.append({"type": "gem_collected", "gem": target.id, "by": "robot"})
+            events.append(_rule(EventKind.GEM_COLLECTED, now, gem=target.id, by="robot"))
             self.robot_target = None
         for gem in self.remaining("human"):
             for hid, pose in humans.items():
@@ -51,13 +54,13 @@ class GemRules:
                 inside = _near(pose, gem.position, gem.radius)
                 if inside and key not in self._dwell:
                     self._dwell[key] = now
-                    events.append({"type": "dwell_started", "gem": gem.id, "by": hid})
+                    events.append(_rule(EventKind.DWELL_STARTED, now, gem=gem.id, by=hid))
                 elif not inside and key in self._dwell:
                     stayed = now - self._dwell.pop(key)
-                    events.append({"type": "dwell_reset", "gem": gem.id, "by": hid, "after_s": round(stayed, 3)})
+                    events.append(_rule(EventKind.DWELL_RESET, now, gem=gem.id, by=hid, after_s=round(stayed, 3)))
                 if key in self._dwell and now - self._dwell[key] >= self.dwell_time_s - 1e-9:
                     self.collected[gem.id] = hid
-                    events.append({"type": "gem_collected", "gem": gem.id, "by": hid})
+                    events.append(_rule(EventKind.GEM_COLLECTED, now, gem=gem.id, by=hid))
                     self._dwell = {k: v for k, v in self._dwell.items() if k[0] != gem.id}
                     break
         return events
@@ -88,13 +91,13 @@ class RouteRules:
     def done(self, who: str) -> bool:
         return self.next_room(who) is None
 
-    def update(self, poses: Mapping[str, Pose2D]) -> list[Event]:
+    def update(self, now: float, poses: Mapping[str, Pose2D]) -> list[Event]:
         events: list[Event] = []
         for who, pose in poses.items():
             room = self.next_room(who)
             if room is not None and _near(pose, self.world.room(room).centre, self.reach_m):
                 self.progress[who] += 1
-                events.append({"type": "room_reached", "room": room, "by": who, "index": self.progress[who]})
+                events.append(_rule(EventKind.ROOM_REACHED, now, room=room, by=who, index=self.progress[who]))
         return events
 
 
@@ -106,7 +109,7 @@ class ObstructionRules:
     reach_m: float = 0.5
     cleared: set[str] = field(default_factory=set)
 
-    def update(self, humans: Mapping[str, Pose2D]) -> list[Event]:
+    def update(self, now: float, humans: Mapping[str, Pose2D]) -> list[Event]:
         events: list[Event] = []
         for o in self.world.obstructions:
             if o.id in self.cleared or o.removed_when_human_reaches is None:
@@ -115,7 +118,7 @@ class ObstructionRules:
             for hid, pose in humans.items():
                 if _near(pose, centre, self.reach_m):
                     self.cleared.add(o.id)
-                    events.append({"type": "obstruction_cleared", "id": o.id, "by": hid, "room": o.removed_when_human_reaches})
+                    events.append(_rule(EventKind.OBSTRUCTION_CLEARED, now, id=o.id, by=hid, room=o.removed_when_human_reaches))
                     break
         return events
 

@@ -28,6 +28,7 @@ from pathlib import Path
 import yaml
 
 from haven_scenarios.run.batch import progress_bar, run_batch, summary
+from haven_scenarios.run.suite import load_suite_config
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
 from haven_scenarios.record.session import analyse, new_session_dir, report_csv, trajectory_picture, versions, write_json
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
@@ -87,6 +88,7 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN",
                      help="these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`")
     run.add_argument("--sessions", default="sessions", help="folder for session folders (default: ./sessions)")
+    run.add_argument("--params-file", default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
     run.add_argument("--domain-id", type=int, default=None)
     run.add_argument("--network", action="store_true")
     teleop = sub.add_parser("teleop", help="drive a human avatar of a running trial from this terminal")
@@ -118,6 +120,7 @@ def build_parser() -> argparse.ArgumentParser:
     batch.add_argument("--condition", nargs="+", default=["all"], metavar="CUE",
                        help="cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator")
     batch.add_argument("--out", default=None, help="CSV path (default: sessions/batch_<scenario>_<time>.csv)")
+    batch.add_argument("--params-file", default=None, help="ROS parameter YAML (the same file `haven run` takes)")
     demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
     _common(demo)
     demo.set_defaults(rtf=4.0)
@@ -127,14 +130,14 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _suite(args: argparse.Namespace) -> list[ProcessSpec]:
     world = str(resolve_world_path(args.world))
-    extra = ["--params-file", args.params_file] if args.params_file else []
+    pfile = str(Path(args.params_file).resolve()) if args.params_file else None
     sim_time = {"use_sim_time": True}
     nodes = {
-        "sim": node_argv("haven_sim.nodes.sim_node", {"world": world, "real_time_factor": args.rtf}, extra),
-        "mux": node_argv("haven_sim.nodes.mux_node", sim_time, extra),
-        "planner": node_argv("haven_sim.nodes.planner_node", sim_time, extra),
-        "controller": node_argv("haven_sim.nodes.controller_node", sim_time, extra),
-        "viz": node_argv("haven_viz.nodes.viz_node", {**sim_time, "world": world}, extra),
+        "sim": node_argv("haven_sim.nodes.sim_node", {"world": world, "real_time_factor": args.rtf}, params_file=pfile),
+        "mux": node_argv("haven_sim.nodes.mux_node", sim_time, params_file=pfile),
+        "planner": node_argv("haven_sim.nodes.planner_node", sim_time, params_file=pfile),
+        "controller": node_argv("haven_sim.nodes.controller_node", sim_time, params_file=pfile),
+        "viz": node_argv("haven_viz.nodes.viz_node", {**sim_time, "world": world}, params_file=pfile),
     }
     return [ProcessSpec(name, argv) for name, argv in nodes.items() if name not in args.without]
 
@@ -160,6 +163,7 @@ def _run(args: argparse.Namespace) -> int:
             if unknown:
                 raise ValueError(f"--teleop: no human {unknown[0]!r} in scenario {scenario.name}")
             scenario = replace(scenario, humans=tuple(replace(h, model="teleop") if h.id in ids else h for h in scenario.humans))
+        load_suite_config(args.params_file)  # a bad parameter file is refused before anything starts
     except (ScenarioError, ValueError) as e:
         print(f"haven: error: {e}", file=sys.stderr)
         return 2
@@ -176,17 +180,20 @@ def _run(args: argparse.Namespace) -> int:
     }
     write_json(folder / "session.json", info)
     sim_time = {"use_sim_time": True}
+    pfile = str(Path(args.params_file).resolve()) if args.params_file else None
     specs = [
         ProcessSpec("recorder", node_argv("haven_scenarios.nodes.recorder", {**sim_time, "session_dir": str(folder.resolve())})),
         ProcessSpec("sim", node_argv("haven_sim.nodes.sim_node", {"world": scenario.world_path, "real_time_factor": rtf,
-                                                                   "battery_capacity_m": scenario.battery.capacity_m, "seed": args.seed})),
-        ProcessSpec("mux", node_argv("haven_sim.nodes.mux_node", sim_time)),
-        ProcessSpec("planner", node_argv("haven_sim.nodes.planner_node", sim_time)),
-        ProcessSpec("controller", node_argv("haven_sim.nodes.controller_node", sim_time)),
+                                                                   "battery_capacity_m": scenario.battery.capacity_m, "seed": args.seed},
+                                     params_file=pfile)),
+        ProcessSpec("mux", node_argv("haven_sim.nodes.mux_node", sim_time, params_file=pfile)),
+        ProcessSpec("planner", node_argv("haven_sim.nodes.planner_node", sim_time, params_file=pfile)),
+        ProcessSpec("controller", node_argv("haven_sim.nodes.controller_node", sim_time, params_file=pfile)),
         ProcessSpec("viz", node_argv("haven_viz.nodes.viz_node", {**sim_time, "world": scenario.world_path,
-                                                                 **{c: getattr(toggles, c) for c in CUES}})),
+                                                                 **{c: getattr(toggles, c) for c in CUES}}, params_file=pfile)),
         ProcessSpec("scenario", node_argv("haven_scenarios.nodes.scenario_node", {**sim_time, "scenario": str(scenario_file.resolve()),
-                                                                                "seed": args.seed}, ["-p", "wait_for:=[planner,recorder]"])),
+                                                                                "seed": args.seed}, ["-p", "wait_for:=[planner,recorder]"],
+                                          params_file=pfile)),
     ]
     env = ros_environment(network=args.network, domain_id=args.domain_id)
     print(f"haven: {scenario.name} trial, participant {args.participant}, condition {condition_name(toggles)}, "
@@ -255,13 +262,14 @@ def _batch(args: argparse.Namespace) -> int:
             raise ValueError(f"--trials must be at least 1, got {args.trials}")
         if any(h.model == "teleop" for h in scenario.humans):
             raise ValueError(f"scenario {scenario.name} has a teleoperated participant: run it with `haven run`")
+        suite = load_suite_config(args.params_file)
     except (ScenarioError, ValueError) as e:
         print(f"haven: error: {e}", file=sys.stderr)
         return 2
     out = Path(args.out) if args.out else Path("sessions") / f"batch_{scenario.name}_{time.strftime('%Y%m%d_%H%M%S')}.csv"
     started = time.monotonic()
     progress_bar(0, args.trials, started)
-    rows = run_batch(scenario, args.trials, args.seed, toggles, out, lambda i, _: progress_bar(i + 1, args.trials, started))
+    rows = run_batch(scenario, args.trials, args.seed, toggles, out, lambda i, _: progress_bar(i + 1, args.trials, started), suite)
     print(f"haven: {scenario.name}, condition {condition_name(toggles)}: {summary(rows)}")
     print(f"haven: wrote {out}")
     return 0

@@ -25,9 +25,12 @@ class ProcessSpec:
     env: Mapping[str, str] = field(default_factory=dict)
 
 
-def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args: Sequence[str] = ()) -> list[str]:
-    """Command line that runs a node module with this interpreter and `-p name:=value` parameters."""
+def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args: Sequence[str] = (), params_file: str | None = None) -> list[str]:
+    """Command line that runs a node module with this interpreter, a parameter file, and
+    `-p name:=value` parameters (which come after the file, so they win)."""
     argv = [sys.executable, "-m", module, "--ros-args"]
+    if params_file is not None:
+        argv += ["--params-file", params_file]
     for k, v in (params or {}).items():
         if isinstance(v, bool):
             v = "true" if v else "false"

@@ -1,17 +1,38 @@
 """Velocity multiplexer: teleop beats navigation, an emergency stop beats both.
 
 Teleop holds control while its commands keep coming and hands it back `teleop_timeout_s` after the
-last one; navigation commands go stale after `nav_timeout_s`. Time is an argument.
+last one; navigation commands go stale after `nav_timeout_s`. `MuxComponent` is the whole mux node
+without ROS: it forwards the winning command on every input and at `rate_hz`, sends one zero when
+every source has gone quiet (so the robot stops at once instead of waiting for the simulator's
+watchdog), and reports every change of source as a `cmd_source` event (a teleop takeover is part
+of a study's record). Time is an argument.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
+from haven_sim.common import topics
+from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
+from haven_sim.common.params import param
+from haven_sim.runtime.component import Handler, Message
 
 NAV, TELEOP, ESTOP, IDLE = "nav", "teleop", "estop", "idle"
+
+
+@dataclass(frozen=True)
+class MuxConfig:
+    teleop_timeout_s: float = param(0.5, "teleop hands control back this long after its last command")
+    nav_timeout_s: float = param(0.5, "navigation commands older than this are stale")
+    rate_hz: float = param(20.0, "/cmd_vel is re-sent at this rate while a source is active")
+
+    def __post_init__(self) -> None:
+        for name, value in vars(self).items():
+            if not value > 0:
+                raise ValueError(f"{name} must be positive, got {value}")
 
 
 @dataclass(frozen=True)
@@ -47,3 +68,46 @@ class VelocityMux:
         if now - stamp <= self.nav_timeout_s:
             return MuxOutput(twist, NAV)
         return MuxOutput(ZERO_TWIST, IDLE)
+
+
+class MuxComponent:
+    name = "velocity_mux"
+    unread: frozenset[str] = frozenset()
+
+    def __init__(self, config: MuxConfig | None = None) -> None:
+        self.config = config or MuxConfig()
+        self.mux = VelocityMux(self.config.teleop_timeout_s, self.config.nav_timeout_s)
+        self._last_source = IDLE
+
+    @property
+    def period_s(self) -> float:
+        return 1.0 / self.config.rate_hz
+
+    def handlers(self) -> Mapping[str, Handler]:
+        return {topics.CMD_VEL_NAV: self.on_nav, topics.CMD_VEL_TELEOP: self.on_teleop, topics.ESTOP: self.on_estop}
+
+    def outputs(self) -> Sequence[str]:
+        return (topics.CMD_VEL, topics.EVENTS)
+
+    def on_nav(self, twist: Twist2D, now: float) -> list[Message]:
+        self.mux.on_nav(twist, now)
+        return self.tick(now)
+
+    def on_teleop(self, twist: Twist2D, now: float) -> list[Message]:
+        self.mux.on_teleop(twist, now)
+        return self.tick(now)
+
+    def on_estop(self, engaged: bool, now: float) -> list[Message]:
+        self.mux.set_estop(engaged)
+        return self.tick(now)
+
+    def tick(self, now: float) -> list[Message]:
+        out = self.mux.output(now)
+        msgs: list[Message] = []
+        if out.source != self._last_source:
+            change = event(EventKind.CMD_SOURCE, now, Source.MUX, **{"from": self._last_source, "to": out.source})
+            msgs.append(Message(topics.EVENTS, change, now))
+        if out.source != IDLE or self._last_source != IDLE:
+            msgs.append(Message(topics.CMD_VEL, out.twist, now))
+        self._last_source = out.source
+        return msgs

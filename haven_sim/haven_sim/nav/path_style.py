@@ -1,18 +1,10 @@
 """HAVEN's motion style as a path: rotate in place, drive arcs, drive straight.
 
-`shape_path` turns a planner's polyline into poses. At the start and at every corner, a heading
-change larger than `arc_max_angle` (60 deg), or a next leg shorter than `too_close_distance`, means
-stopping and rotating in place; otherwise the corner is replaced by a circular arc tangent to both
-legs (at the start: an arc from the robot's heading onto a straight line to the next point), shrunk
+`shape_path` turns a planner's polyline into poses. At the start and at every corner the motion
+style (`motion_style.MotionStyle`) decides between rotating in place and an arc; an arc is tangent
+to both legs (at the start: from the robot's heading onto a straight line to the next point), shrunk
 until it is collision-free, or dropped for a rotation if it cannot be. The poses are spaced
-`marker_spacing` apart and carry the segment kinds in nav_msgs/Path terms:
-
-  * consecutive poses at one position with changing yaw: rotate in place;
-  * yaw changing while moving: arc;
-  * constant yaw while moving: straight.
-
-`classify` reads any pose list back into those segments, so the controller and the AR cues treat a
-swapped-in planner's path exactly like ours.
+`marker_spacing_m` apart and carry the segment kinds in the /plan convention (`common.paths`).
 """
 
 from __future__ import annotations
@@ -20,46 +12,38 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from enum import Enum
 
 import numpy as np
 
 from haven_sim.common.geometry import FloatArray, Point, Pose2D, wrap_angle
+from haven_sim.common.params import param
+from haven_sim.nav.motion_style import MotionStyle
 
 ClearFn = Callable[[FloatArray], bool]  # are all these (N, 2) points safe for the robot?
 
 
-class SegmentKind(Enum):
-    ROTATE = "rotate"
-    ARC = "arc"
-    STRAIGHT = "straight"
-
-
 @dataclass(frozen=True)
-class Segment:
-    kind: SegmentKind
-    start: int  # index of the first pose
-    end: int  # index of the last pose (inclusive)
+class ShapeParams:
+    marker_spacing_m: float = param(0.4, "pose spacing of /plan along straight parts and arcs")
+    rotate_step_deg: float = param(15.0, "pose spacing of /plan's rotations in place")
+    max_arc_radius_m: float = param(1.0, "corners become arcs of at most this radius")
+    min_arc_radius_m: float = param(0.15, "an arc that must be tighter than this to clear obstacles becomes a rotation")
+    straight_tolerance_deg: float = param(2.0, "heading changes smaller than this are not corners")
 
-
-@dataclass(frozen=True)
-class StyleParams:
-    arc_max_angle_rad: float = math.radians(60.0)
-    too_close_distance_m: float = 0.5
-    marker_spacing_m: float = 0.4
-    rotate_step_rad: float = math.radians(15.0)
-    max_arc_radius_m: float = 1.0
-    min_arc_radius_m: float = 0.15
-    straight_tolerance_rad: float = math.radians(2.0)  # smaller heading changes are not corners
-
-    def validate(self) -> None:
-        if not 0 < self.arc_max_angle_rad <= math.pi:
-            raise ValueError("arc_max_angle must be within (0, 180] degrees")
-        for name in ("marker_spacing_m", "rotate_step_rad", "max_arc_radius_m", "min_arc_radius_m"):
+    def __post_init__(self) -> None:
+        for name in ("marker_spacing_m", "rotate_step_deg", "max_arc_radius_m", "min_arc_radius_m"):
             if not getattr(self, name) > 0:
                 raise ValueError(f"{name} must be positive, got {getattr(self, name)}")
-        if self.too_close_distance_m < 0:
-            raise ValueError("too_close_distance_m must not be negative")
+        if not 0 <= self.straight_tolerance_deg < 90:
+            raise ValueError(f"straight_tolerance_deg must be within [0, 90), got {self.straight_tolerance_deg}")
+
+    @property
+    def rotate_step_rad(self) -> float:
+        return math.radians(self.rotate_step_deg)
+
+    @property
+    def straight_tolerance_rad(self) -> float:
+        return math.radians(self.straight_tolerance_deg)
 
 
 def _heading(a: Point, b: Point) -> float:
@@ -73,7 +57,7 @@ def _dist(a: Point, b: Point) -> float:
 class _Builder:
     """Accumulates poses; every piece starts where the previous one ended."""
 
-    def __init__(self, start: Pose2D, params: StyleParams) -> None:
+    def __init__(self, start: Pose2D, params: ShapeParams) -> None:
         self.p = params
         self.poses: list[Pose2D] = [start]
 
@@ -137,48 +121,49 @@ def _start_arc(here: Pose2D, target: Point, radius: float) -> tuple[list[Pose2D]
 def shape_path(
     points: Sequence[Point],
     start_yaw: float,
-    params: StyleParams | None = None,
+    style: MotionStyle | None = None,
+    params: ShapeParams | None = None,
     is_clear: ClearFn | None = None,
     goal_yaw: float | None = None,
 ) -> list[Pose2D]:
     """Poses in HAVEN's style along the polyline `points` (points[0] is the robot's position)."""
-    p = params or StyleParams()
-    p.validate()
+    m = style or MotionStyle()
+    p = params or ShapeParams()
     clear = is_clear or (lambda pts: True)
     pts = [points[0]] + [q for a, q in zip(points, points[1:]) if _dist(a, q) > 1e-9]
     b = _Builder(Pose2D(pts[0][0], pts[0][1], wrap_angle(start_yaw)), p)
     if len(pts) >= 2:
-        _start(b, pts[1], p, clear)
+        _start(b, pts[1], m, p, clear)
         for k in range(1, len(pts)):
             target = pts[k]
             if k == len(pts) - 1:
                 b.straight_to(target)
             else:
-                _corner(b, target, pts[k + 1], p, clear)
+                _corner(b, target, pts[k + 1], m, p, clear)
     if goal_yaw is not None and abs(wrap_angle(goal_yaw - b.last.yaw)) > p.straight_tolerance_rad:
         b.rotate_to(goal_yaw)
-    return _resample(b.poses, p)
+    return _without_repeats(b.poses)
 
 
-def _start(b: _Builder, target: Point, p: StyleParams, clear: ClearFn) -> None:
+def _start(b: _Builder, target: Point, m: MotionStyle, p: ShapeParams, clear: ClearFn) -> None:
     here = b.last
     turn = wrap_angle(_heading((here.x, here.y), target) - here.yaw)
     if abs(turn) <= p.straight_tolerance_rad:
         return
-    if abs(turn) <= p.arc_max_angle_rad and _dist((here.x, here.y), target) >= p.too_close_distance_m:
+    if not m.rotates_in_place(turn, _dist((here.x, here.y), target)):
         radius = p.max_arc_radius_m
         while radius >= p.min_arc_radius_m:
             found = _start_arc(here, target, radius)
             if found is not None:
                 arc, arc_turn = found
-                if abs(arc_turn) <= p.arc_max_angle_rad and clear(np.array([(q.x, q.y) for q in arc])):
+                if not m.rotates_in_place(arc_turn) and clear(np.array([(q.x, q.y) for q in arc])):
                     b.arc(_arc_poses(here, radius, arc_turn, p.marker_spacing_m))
                     return
             radius /= 2.0
     b.rotate_to(_heading((here.x, here.y), target))
 
 
-def _corner(b: _Builder, corner: Point, after: Point, p: StyleParams, clear: ClearFn) -> None:
+def _corner(b: _Builder, corner: Point, after: Point, m: MotionStyle, p: ShapeParams, clear: ClearFn) -> None:
     here = b.last
     yaw_in = _heading((here.x, here.y), corner)
     yaw_out = _heading(corner, after)
@@ -187,7 +172,7 @@ def _corner(b: _Builder, corner: Point, after: Point, p: StyleParams, clear: Cle
         b.straight_to(corner)
         return
     leg_in, leg_out = _dist((here.x, here.y), corner), _dist(corner, after)
-    if abs(turn) <= p.arc_max_angle_rad and leg_out >= p.too_close_distance_m:
+    if not m.rotates_in_place(turn, leg_out):
         half = math.tan(abs(turn) / 2.0)
         # Tangent points may use all of the incoming leg but only half of the outgoing one (the
         # rest belongs to the next corner).
@@ -205,34 +190,11 @@ def _corner(b: _Builder, corner: Point, after: Point, p: StyleParams, clear: Cle
     b.rotate_to(yaw_out)
 
 
-def _resample(poses: list[Pose2D], p: StyleParams) -> list[Pose2D]:
-    """Drop exact repeats (straight pieces already come spaced; arcs and rotations too)."""
+def _without_repeats(poses: list[Pose2D]) -> list[Pose2D]:
+    """Drop exact repeats where one piece ends and the next begins."""
     out = [poses[0]]
     for q in poses[1:]:
         last = out[-1]
         if math.hypot(q.x - last.x, q.y - last.y) > 1e-9 or abs(wrap_angle(q.yaw - last.yaw)) > 1e-9:
             out.append(q)
     return out
-
-
-def classify(
-    poses: Sequence[Pose2D], position_eps_m: float = 1e-3, yaw_eps_rad: float = math.radians(0.5)
-) -> list[Segment]:
-    """Rotate / arc / straight segments of any pose list (ours or another planner's)."""
-    kinds: list[SegmentKind | None] = []
-    for a, q in zip(poses, poses[1:]):
-        moved = math.hypot(q.x - a.x, q.y - a.y) > position_eps_m
-        turned = abs(wrap_angle(q.yaw - a.yaw)) > yaw_eps_rad
-        if not moved:
-            kinds.append(SegmentKind.ROTATE if turned else None)
-        else:
-            kinds.append(SegmentKind.ARC if turned else SegmentKind.STRAIGHT)
-    segments: list[Segment] = []
-    for i, kind in enumerate(kinds):
-        if kind is None:
-            continue
-        if segments and segments[-1].kind is kind and segments[-1].end == i:
-            segments[-1] = Segment(kind, segments[-1].start, i + 1)
-        else:
-            segments.append(Segment(kind, i, i + 1))
-    return segments

@@ -10,12 +10,15 @@ so a query only tests what the start and the goal can see and picks the best pai
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+from typing import Protocol
 
 import numpy as np
 import numpy.typing as npt
 
+from haven_sim.common.bodies import ROBOT_BODY
 from haven_sim.common.geometry import FloatArray, Point
+from haven_sim.common.params import param
 from haven_sim.sim.occupancy import OccupancyGridData
 
 BoolGrid = npt.NDArray[np.bool_]
@@ -23,15 +26,22 @@ BoolGrid = npt.NDArray[np.bool_]
 
 @dataclass(frozen=True)
 class PlannerParams:
-    robot_radius_m: float = 0.177
-    safety_margin_m: float = 0.05
-    occupied_threshold: int = 50  # cells at or above are obstacles
-    unknown_is_obstacle: bool = True  # -1 cells
-    snap_radius_m: float = 0.3  # a start or goal this close to free space is moved onto it
+    safety_margin_m: float = param(0.05, "added to the body radius when inflating the map")
+    snap_radius_m: float = param(0.3, "a start or goal this close to free space is moved onto it")
+    occupied_threshold: int = param(50, "map cells at or above this are obstacles")
+    unknown_is_obstacle: bool = param(True, "map cells of -1 (unknown) are obstacles")
+    # The body to plan for (not a parameter: the simulated robot, or a participant for their walks).
+    body_radius_m: float = field(default=ROBOT_BODY.radius_m, metadata={"internal": True})
+
+    def __post_init__(self) -> None:
+        if self.safety_margin_m < 0 or self.snap_radius_m < 0:
+            raise ValueError("safety_margin_m and snap_radius_m must not be negative")
+        if not 0 < self.occupied_threshold <= 100:
+            raise ValueError(f"occupied_threshold must be within 1..100, got {self.occupied_threshold}")
 
     @property
     def inflation_m(self) -> float:
-        return self.robot_radius_m + self.safety_margin_m
+        return self.body_radius_m + self.safety_margin_m
 
 
 class PlanningError(Exception):
@@ -75,7 +85,21 @@ class Plan:
     length_m: float
 
 
+class Planner(Protocol):
+    """What the navigator, the mission executive and the simulated participants need of a planner."""
+
+    def plan(self, start: Point, goal: Point) -> Plan: ...
+
+    def is_free(self, x: float, y: float) -> bool: ...
+
+    def hard_clear(self, pts: FloatArray) -> bool: ...
+
+    def free_run(self, start: Point, direction: Point, max_m: float = 10.0) -> float: ...
+
+
 class GridPlanner:
+    """The visibility-graph planner (the default and only built-in `Planner`)."""
+
     def __init__(self, grid: OccupancyGridData, params: PlannerParams | None = None) -> None:
         self.grid = grid
         self.params = params or PlannerParams()
@@ -87,7 +111,7 @@ class GridPlanner:
         self.cells = int(math.ceil(self.params.inflation_m / grid.resolution_m))
         self.blocked = inflate_square(occupied, self.cells)
         # Without the safety margin: what the robot's body itself must not touch (for arcs).
-        self.hard_blocked = inflate_square(occupied, int(math.ceil(self.params.robot_radius_m / grid.resolution_m)))
+        self.hard_blocked = inflate_square(occupied, int(math.ceil(self.params.body_radius_m / grid.resolution_m)))
         rc = convex_corners(self.blocked)
         self.nodes = self._centres(rc)  # (N, 2) world coordinates
         self._step = grid.resolution_m / 2.0

@@ -2,8 +2,8 @@
 
 from __future__ import annotations
 
-import json
 import math
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -14,11 +14,13 @@ from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import String
 
+from haven_sim.common.events import Event
+from haven_sim.common.geometry import Pose2D, Twist2D, quaternion_to_yaw, stamp_parts, yaw_to_quaternion
+from haven_sim.common.state import Goal, HumanPoses, RobotState, name_humans
 from haven_sim.sim.battery import BatteryReading, PowerStatus
 from haven_sim.sim.frames import Frame
-from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, quaternion_to_yaw, stamp_parts, yaw_to_quaternion
 from haven_sim.sim.occupancy import OccupancyGridData
-from haven_sim.sim.scan import ScanParams
+from haven_sim.sim.simulator import ScanData
 
 
 def time_msg(t: float) -> Time:
@@ -66,15 +68,13 @@ def twist_msg(t: Twist2D) -> Twist:
     return msg
 
 
-def odometry_msg(
-    stamp: float, pose: Pose2D, twist: Twist2D, frame_id: str = "odom", child_frame_id: str = "base_footprint"
-) -> Odometry:
+def odometry_msg(stamp: float, state: RobotState, frame_id: str = "odom", child_frame_id: str = "base_footprint") -> Odometry:
     msg = Odometry()
     msg.header.stamp = time_msg(stamp)
     msg.header.frame_id = frame_id
     msg.child_frame_id = child_frame_id
-    msg.pose.pose = pose_msg(pose)
-    msg.twist.twist = twist_msg(twist)
+    msg.pose.pose = pose_msg(state.pose)
+    msg.twist.twist = twist_msg(state.twist)
     # Small fixed covariances (x, y, yaw) so consumers that require them (e.g. robot_localization) accept the message.
     cov = [0.0] * 36
     cov[0] = cov[7] = 1e-4
@@ -86,18 +86,23 @@ def odometry_msg(
     return msg
 
 
-def scan_msg(stamp: float, ranges: FloatArray, params: ScanParams, scan_period_s: float, frame_id: str = "base_scan") -> LaserScan:
+def odometry_from_msg(msg: Odometry) -> RobotState:
+    return RobotState(pose_from_msg(msg.pose.pose), twist_from_msg(msg.twist.twist))
+
+
+def scan_msg(stamp: float, scan: ScanData, frame_id: str = "base_scan") -> LaserScan:
     msg = LaserScan()
     msg.header.stamp = time_msg(stamp)
     msg.header.frame_id = frame_id
-    msg.angle_min = params.angle_min
-    msg.angle_max = params.angle_max
-    msg.angle_increment = params.angle_increment
+    p = scan.params
+    msg.angle_min = p.angle_min
+    msg.angle_max = p.angle_max
+    msg.angle_increment = p.angle_increment
     msg.time_increment = 0.0
-    msg.scan_time = scan_period_s
-    msg.range_min = params.range_min_m
-    msg.range_max = params.range_max_m
-    msg.ranges = np.asarray(ranges, dtype=np.float32)
+    msg.scan_time = scan.period_s
+    msg.range_min = p.range_min_m
+    msg.range_max = p.range_max_m
+    msg.ranges = np.asarray(scan.ranges, dtype=np.float32)
     return msg
 
 
@@ -126,7 +131,12 @@ def battery_msg(stamp: float, r: BatteryReading, frame_id: str = "base_link") ->
     return msg
 
 
-def humans_msg(stamp: float, poses: dict[str, Pose2D], frame_id: str = "map") -> PoseArray:
+def battery_from_msg(msg: BatteryState) -> BatteryReading:
+    status = {v: k for k, v in _STATUS.items()}.get(msg.power_supply_status, PowerStatus.DISCHARGING)
+    return BatteryReading(float(msg.percentage), status, float(msg.voltage), float(msg.charge), float(msg.capacity), math.nan)
+
+
+def humans_msg(stamp: float, poses: HumanPoses, frame_id: str = "map") -> PoseArray:
     """Humans in id order (the order of the world file's `humans`)."""
     msg = PoseArray()
     msg.header.stamp = time_msg(stamp)
@@ -161,16 +171,28 @@ def occupancy_from_msg(msg: OccupancyGrid) -> OccupancyGridData:
     )
 
 
-def event_msg(event: dict[str, Any]) -> String:
-    return String(data=json.dumps(event, sort_keys=True))
+def event_msg(event: Event) -> String:
+    return String(data=event.to_json())
 
 
-def event_from_msg(msg: String) -> dict[str, Any]:
-    out: dict[str, Any] = json.loads(msg.data)
-    return out
+def event_from_msg(msg: String) -> Event:
+    """Raises EventError (a ValueError) on anything that is not a valid event."""
+    return Event.from_json(msg.data)
 
 
-def path_msg(stamp: float, poses: list[Pose2D], frame_id: str = "map") -> Path:
+def goal_msg(stamp: float, goal: Goal) -> PoseStamped:
+    msg = PoseStamped()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = goal.frame
+    msg.pose = pose_msg(goal.pose)
+    return msg
+
+
+def goal_from_msg(msg: PoseStamped) -> Goal:
+    return Goal(pose_from_msg(msg.pose), msg.header.frame_id)
+
+
+def path_msg(stamp: float, poses: Sequence[Pose2D], frame_id: str = "map") -> Path:
     msg = Path()
     msg.header.stamp = time_msg(stamp)
     msg.header.frame_id = frame_id
@@ -186,8 +208,8 @@ def path_from_msg(msg: Path) -> list[Pose2D]:
     return [pose_from_msg(ps.pose) for ps in msg.poses]
 
 
-def humans_from_msg(msg: PoseArray) -> list[Pose2D]:
-    return [pose_from_msg(p) for p in msg.poses]
+def humans_from_msg(msg: PoseArray, ids: Sequence[str] = ()) -> HumanPoses:
+    return name_humans([pose_from_msg(p) for p in msg.poses], ids)
 
 
 def transform_msg(stamp: float, f: Frame) -> TransformStamped:
@@ -198,3 +220,10 @@ def transform_msg(stamp: float, f: Frame) -> TransformStamped:
     msg.transform.translation.x, msg.transform.translation.y, msg.transform.translation.z = f.x, f.y, f.z
     msg.transform.rotation = quaternion_msg(f.yaw)
     return msg
+
+
+def tf_msg(stamp: float, frames: Sequence[Frame]) -> Any:
+    """tf2_msgs/TFMessage (imported here: in the pip setup it exists only once built)."""
+    from tf2_msgs.msg import TFMessage
+
+    return TFMessage(transforms=[transform_msg(stamp, f) for f in frames])

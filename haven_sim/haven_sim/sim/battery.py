@@ -8,32 +8,35 @@ the level so the published sensor_msgs/BatteryState is self-consistent.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import Enum
+
+from haven_sim.common.params import param
+
+# Kobuki 4S Li-ion pack: 2.2 Ah, 16.8 V full, 13.2 V empty (kobuki_node's thresholds).
+DESIGN_CAPACITY_AH = 2.2
+VOLTAGE_FULL_V = 16.8
+VOLTAGE_EMPTY_V = 13.2
 
 
 @dataclass(frozen=True)
 class BatteryParams:
-    capacity_m: float = 100.0
-    drain_per_rad: float = 0.0  # fraction of full per radian turned
-    idle_drain_per_s: float = 0.0  # fraction of full per second, always
-    charge_rate_per_s: float = 0.05  # fraction of full per second on the base (20 s from empty)
-    base_radius_m: float = 0.5
-    charge_max_speed_mps: float = 0.02  # "nearly stopped"
-    initial_level: float = 1.0
-    # Kobuki 4S Li-ion pack: 2.2 Ah, 16.8 V full, 13.2 V empty (kobuki_node's thresholds).
-    design_capacity_ah: float = 2.2
-    voltage_full_v: float = 16.8
-    voltage_empty_v: float = 13.2
+    capacity_m: float = param(100.0, "metres of travel on a full charge")
+    drain_per_rad: float = param(0.0, "fraction of full per radian turned")
+    idle_drain_per_s: float = param(0.0, "fraction of full per second, always")
+    charge_rate_per_s: float = param(0.05, "fraction of full per second on the base (20 s from empty)")
+    charge_max_speed_mps: float = param(0.02, "the robot charges only while (nearly) stopped on the base")
+    initial_level: float = param(1.0, "level at start, 0..1")
+    base_radius_m: float = field(default=0.5, metadata={"internal": True})  # from the world's charging base
 
-    def validate(self) -> None:
-        if self.capacity_m <= 0:
-            raise ValueError(f"battery capacity_m must be positive, got {self.capacity_m}")
+    def __post_init__(self) -> None:
+        if not self.capacity_m > 0:
+            raise ValueError(f"battery_capacity_m must be positive, got {self.capacity_m}")
         if not 0.0 <= self.initial_level <= 1.0:
-            raise ValueError(f"battery initial_level must be within 0..1, got {self.initial_level}")
-        for name in ("drain_per_rad", "idle_drain_per_s", "charge_rate_per_s"):
+            raise ValueError(f"battery_initial_level must be within 0..1, got {self.initial_level}")
+        for name in ("drain_per_rad", "idle_drain_per_s", "charge_rate_per_s", "charge_max_speed_mps"):
             if getattr(self, name) < 0:
-                raise ValueError(f"battery {name} must not be negative, got {getattr(self, name)}")
+                raise ValueError(f"battery_{name} must not be negative, got {getattr(self, name)}")
 
 
 class PowerStatus(Enum):
@@ -55,7 +58,6 @@ class BatteryReading:
 class Battery:
     def __init__(self, params: BatteryParams | None = None) -> None:
         self.params = params or BatteryParams()
-        self.params.validate()
         self.level = self.params.initial_level
         self.charging = False
 
@@ -81,7 +83,6 @@ class Battery:
         self.level = min(1.0, max(0.0, self.level - drain + gain))
 
     def reading(self) -> BatteryReading:
-        p = self.params
         if self.level >= 1.0:
             status = PowerStatus.FULL
         elif self.charging:
@@ -91,8 +92,8 @@ class Battery:
         return BatteryReading(
             level=self.level,
             status=status,
-            voltage_v=p.voltage_empty_v + self.level * (p.voltage_full_v - p.voltage_empty_v),
-            charge_ah=self.level * p.design_capacity_ah,
-            capacity_ah=p.design_capacity_ah,
+            voltage_v=VOLTAGE_EMPTY_V + self.level * (VOLTAGE_FULL_V - VOLTAGE_EMPTY_V),
+            charge_ah=self.level * DESIGN_CAPACITY_AH,
+            capacity_ah=DESIGN_CAPACITY_AH,
             range_m=self.range_m,
         )

@@ -6,26 +6,32 @@ Time is always an argument (`now`, `dt`), so every rule here is unit-tested with
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from enum import Enum
 
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
+from haven_sim.common.params import param
 
 
 @dataclass(frozen=True)
 class VelocityLimits:
     """Speed and acceleration limits; defaults are a TurtleBot2 (Kobuki)."""
 
-    max_linear_mps: float = 0.7
-    max_lateral_mps: float = 0.0  # differential drive: no sideways motion
-    max_angular_rps: float = math.pi
-    max_linear_accel_mps2: float = 0.5
-    max_angular_accel_rps2: float = 3.5
+    max_linear_speed_mps: float = param(0.7, "TurtleBot2 (Kobuki) top speed")
+    max_angular_speed_rps: float = param(math.pi, "TurtleBot2 top turn rate")
+    max_linear_accel_mps2: float = param(0.5, "TurtleBot2 acceleration limit")
+    max_angular_accel_rps2: float = param(3.5, "TurtleBot2 angular acceleration limit")
+    max_lateral_speed_mps: float = field(default=0.0, metadata={"internal": True})  # differential drive
+
+    def __post_init__(self) -> None:
+        for name, value in vars(self).items():
+            if value < 0 or (value == 0 and name != "max_lateral_speed_mps"):
+                raise ValueError(f"{name} must be positive, got {value}")
 
     @staticmethod
     def human(max_speed_mps: float = 1.5) -> VelocityLimits:
         """A walking person: holonomic, quick to start and stop."""
-        return VelocityLimits(max_speed_mps, max_speed_mps, 2.0 * math.pi, 3.0, 12.0)
+        return VelocityLimits(max_speed_mps, 2.0 * math.pi, 3.0, 12.0, max_speed_mps)
 
 
 class CommandStatus(Enum):
@@ -35,7 +41,7 @@ class CommandStatus(Enum):
 
 
 def clamp(cmd: Twist2D, limits: VelocityLimits) -> Twist2D:
-    v, l, w = limits.max_linear_mps, limits.max_lateral_mps, limits.max_angular_rps
+    v, l, w = limits.max_linear_speed_mps, limits.max_lateral_speed_mps, limits.max_angular_speed_rps
     return Twist2D(max(-v, min(v, cmd.vx)), max(-l, min(l, cmd.vy)), max(-w, min(w, cmd.wz)))
 
 
@@ -79,18 +85,17 @@ class CommandGate:
         self._stamp = now
         return CommandStatus.ACCEPTED if limited == cmd else CommandStatus.CLAMPED
 
-    def target(self, now: float) -> Twist2D:
-        """The commanded velocity, or zero when the last command is older than the timeout."""
-        if now - self._stamp > self.timeout_s:
-            return ZERO_TWIST
-        return self._target
-
     def is_stale(self, now: float) -> bool:
-        return now - self._stamp > self.timeout_s
+        """No command for `timeout_s` (a stamp exactly that old counts: sim time comes in steps)."""
+        return now - self._stamp >= self.timeout_s - 1e-9
+
+    def target(self, now: float) -> Twist2D:
+        """The commanded velocity, or zero once the last command is stale."""
+        return ZERO_TWIST if self.is_stale(now) else self._target
 
     def update(self, now: float, dt: float, enabled: bool = True) -> Twist2D:
         """Advance the ramp by dt; returns the velocity to apply during the next step."""
-        goal = self._target if enabled and now - self._stamp <= self.timeout_s else ZERO_TWIST
+        goal = self._target if enabled and not self.is_stale(now) else ZERO_TWIST
         if goal != self.applied:
             self.applied = ramp(self.applied, goal, self.limits, dt)
         return self.applied

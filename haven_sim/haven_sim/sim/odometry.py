@@ -13,12 +13,17 @@ from dataclasses import dataclass
 import numpy as np
 
 from haven_sim.common.geometry import Pose2D, wrap_angle
+from haven_sim.common.params import param
 
 
 @dataclass(frozen=True)
 class OdometryNoise:
-    linear_std: float = 0.0  # relative, per metre
-    angular_std: float = 0.0  # relative, per radian
+    linear: float = param(0.0, "relative std of each step's distance (wheel slip)")
+    angular: float = param(0.0, "relative std of each step's rotation")
+
+    def __post_init__(self) -> None:
+        if self.linear < 0 or self.angular < 0:
+            raise ValueError("odom_noise_linear and odom_noise_angular must not be negative")
 
 
 class Odometry:
@@ -34,15 +39,15 @@ class Odometry:
     def update(self, true_pose: Pose2D) -> Pose2D:
         last = self._last_true
         self._last_true = true_pose
-        if self.noise.linear_std == 0.0 and self.noise.angular_std == 0.0:
+        if self.noise.linear == 0.0 and self.noise.angular == 0.0:
             self.pose = true_pose
             return self.pose
         c, s = math.cos(last.yaw), math.sin(last.yaw)
         gx, gy = true_pose.x - last.x, true_pose.y - last.y
         fx, fy = c * gx + s * gy, -s * gx + c * gy  # increment in the old body frame
         dth = wrap_angle(true_pose.yaw - last.yaw)
-        k_lin = 1.0 + self._rng.normal(0.0, self.noise.linear_std) if self.noise.linear_std else 1.0
-        k_ang = 1.0 + self._rng.normal(0.0, self.noise.angular_std) if self.noise.angular_std else 1.0
+        k_lin = 1.0 + self._rng.normal(0.0, self.noise.linear) if self.noise.linear else 1.0
+        k_ang = 1.0 + self._rng.normal(0.0, self.noise.angular) if self.noise.angular else 1.0
         fx, fy, dth = fx * k_lin, fy * k_lin, dth * k_ang
         p = self.pose
         c, s = math.cos(p.yaw), math.sin(p.yaw)

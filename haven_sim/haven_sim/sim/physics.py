@@ -15,6 +15,8 @@ from typing import Any
 
 import pymunk
 
+from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY, BodySpec
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D
 
 ROBOT, HUMAN, WALL = 1, 2, 3
@@ -25,24 +27,10 @@ _set_angular_velocity: Callable[[pymunk.Body, float], None] = vars(pymunk.Body)[
 
 
 @dataclass(frozen=True)
-class BodySpec:
-    radius_m: float
-    mass_kg: float
-    max_force_n: float
-    max_torque_nm: float
-
-
-# Kobuki base with the TurtleBot2 stack: 0.354 m diameter, ~6.3 kg.
-ROBOT_BODY = BodySpec(radius_m=0.177, mass_kg=6.3, max_force_n=40.0, max_torque_nm=10.0)
-# A person seen from above: radius ~0.25 m; strong enough to shove a TurtleBot2 aside.
-HUMAN_BODY = BodySpec(radius_m=0.25, mass_kg=70.0, max_force_n=600.0, max_torque_nm=200.0)
-
-
-@dataclass(frozen=True)
 class ContactEvent:
     """A robot contact starting or ending; `other` is 'wall' or 'human:<id>'."""
 
-    kind: str  # "contact_begin" | "contact_end"
+    kind: EventKind  # CONTACT_BEGIN | CONTACT_END
     other: str
 
 
@@ -144,7 +132,7 @@ class Physics:
         n = self._touching.get(other, 0)
         self._touching[other] = n + 1
         if n == 0:
-            self.events.append(ContactEvent("contact_begin", other))
+            self.events.append(ContactEvent(EventKind.CONTACT_BEGIN, other))
 
     def _separate(self, arbiter: pymunk.Arbiter, space: pymunk.Space, data: Any) -> None:
         other = self._other(arbiter)
@@ -152,7 +140,7 @@ class Physics:
         if n <= 0:
             self._touching.pop(other, None)
             if n == 0:
-                self.events.append(ContactEvent("contact_end", other))
+                self.events.append(ContactEvent(EventKind.CONTACT_END, other))
         else:
             self._touching[other] = n
 

@@ -14,15 +14,22 @@ import numpy as np
 import numpy.typing as npt
 
 from haven_sim.common.geometry import FloatArray, Pose2D
+from haven_sim.common.params import param
 
 
 @dataclass(frozen=True)
 class ScanParams:
-    beams: int = 360
-    range_min_m: float = 0.12
-    range_max_m: float = 3.5
-    rate_hz: float = 10.0
-    noise_std_m: float = 0.0
+    beams: int = param(360, "beams over 360 degrees")
+    range_min_m: float = param(0.12, "nearer returns read -inf (REP-117)")
+    range_max_m: float = param(3.5, "no return within this reads +inf")
+    rate_hz: float = param(10.0, "/scan rate (sim time)")
+    noise_std_m: float = param(0.0, "Gaussian range noise")
+
+    def __post_init__(self) -> None:
+        if self.beams < 1 or not 0 <= self.range_min_m < self.range_max_m:
+            raise ValueError("scan needs scan_beams >= 1 and 0 <= scan_range_min_m < scan_range_max_m")
+        if not self.rate_hz > 0 or self.noise_std_m < 0:
+            raise ValueError("scan_rate_hz must be positive and scan_noise_std_m not negative")
 
     @property
     def angle_min(self) -> float:

@@ -1,57 +1,60 @@
 """The simulator core: world + physics + sensors + battery, advanced in fixed steps of sim time.
 
 Used the same way by the ROS simulator node (one step per pacer tick) and by batch mode (a plain
-loop). Commands are stamped with the current sim time, so the 0.5 s watchdog is in sim time too.
+loop). Sim time is a whole number of steps (no drift from adding floats); commands are stamped with
+it, so the 0.5 s watchdog is in sim time too.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, replace
 from typing import Any
 
-
+from haven_sim.common.bodies import HUMAN_BODY
+from haven_sim.common.events import Event, EventKind, Source, event
+from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, wrap_angle
+from haven_sim.common.params import group, param
+from haven_sim.runtime.component import NS_PER_S
 from haven_sim.sim.battery import Battery, BatteryParams, BatteryReading
 from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits
-from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, wrap_angle
 from haven_sim.sim.occupancy import OccupancyGridData, rasterise
 from haven_sim.sim.odometry import Odometry, OdometryNoise
-from haven_sim.sim.physics import HUMAN_BODY, ROBOT_BODY, Physics
+from haven_sim.sim.physics import Physics
 from haven_sim.sim.scan import LaserScanner, ScanParams
 from haven_sim.sim.world import World
 
 
 @dataclass(frozen=True)
 class SimConfig:
-    step_s: float = 0.02
-    robot_limits: VelocityLimits = field(default_factory=VelocityLimits)
-    human_limits: VelocityLimits = field(default_factory=VelocityLimits.human)
-    cmd_timeout_s: float = 0.5
-    scan: ScanParams = field(default_factory=ScanParams)
-    battery: BatteryParams = field(default_factory=BatteryParams)
-    odom_noise: OdometryNoise = field(default_factory=OdometryNoise)
-    seed: int = 0
+    physics_rate_hz: float = param(50.0, "physics steps per second of sim time (/odom is published every step)")
+    robot_limits: VelocityLimits = group(VelocityLimits)
+    human_max_speed_mps: float = param(1.5, "a person's top walking speed")
+    cmd_timeout_s: float = param(0.5, "no command for this long (sim time) stops a body")
+    scan: ScanParams = group(ScanParams, prefix="scan_")
+    battery: BatteryParams = group(BatteryParams, prefix="battery_")
+    odom_noise: OdometryNoise = group(OdometryNoise, prefix="odom_noise_")
+    seed: int = param(0, "seed of the scan and odometry noise")
 
-    def validate(self) -> None:
-        if not self.step_s > 0:
-            raise ValueError(f"step_s must be positive, got {self.step_s}")
+    def __post_init__(self) -> None:
+        if not self.physics_rate_hz > 0 or NS_PER_S % round(NS_PER_S / self.physics_rate_hz):
+            raise ValueError(f"physics_rate_hz must divide a second into whole nanoseconds, got {self.physics_rate_hz}")
         if not self.cmd_timeout_s > 0:
             raise ValueError(f"cmd_timeout_s must be positive, got {self.cmd_timeout_s}")
-        if self.scan.beams < 1 or not 0 <= self.scan.range_min_m < self.scan.range_max_m:
-            raise ValueError("scan needs beams >= 1 and 0 <= range_min_m < range_max_m")
-        self.battery.validate()
+        if not self.human_max_speed_mps > 0:
+            raise ValueError(f"human_max_speed_mps must be positive, got {self.human_max_speed_mps}")
 
+    @property
+    def step_ns(self) -> int:
+        return round(NS_PER_S / self.physics_rate_hz)
 
-@dataclass(frozen=True)
-class SimEvent:
-    """Something that happened at `stamp` (sim seconds); becomes one JSON object on /haven/events."""
+    @property
+    def step_s(self) -> float:
+        return self.step_ns / NS_PER_S
 
-    stamp: float
-    type: str
-    data: dict[str, Any] = field(default_factory=dict)
-
-    def as_dict(self) -> dict[str, Any]:
-        return {"stamp": round(self.stamp, 4), "source": "sim", "type": self.type, **self.data}
+    @property
+    def human_limits(self) -> VelocityLimits:
+        return VelocityLimits.human(self.human_max_speed_mps)
 
 
 class UnknownHumanError(KeyError):
@@ -62,13 +65,15 @@ class Simulation:
     def __init__(self, world: World, config: SimConfig | None = None) -> None:
         self.world = world
         self.config = config or SimConfig()
-        self.config.validate()
-        self.time = 0.0
+        base = world.charging_base
+        if base is not None and self.config.battery.base_radius_m != base.radius:
+            self.config = replace(self.config, battery=replace(self.config.battery, base_radius_m=base.radius))
+        self.steps = 0
         self.robot_gate = CommandGate(self.config.robot_limits, self.config.cmd_timeout_s)
         self.human_gates = {h.id: CommandGate(self.config.human_limits, self.config.cmd_timeout_s) for h in world.humans}
         self.battery = Battery(self.config.battery)
         self.odometry = Odometry(world.robot_start, self.config.odom_noise, seed=self.config.seed)
-        self._events: list[SimEvent] = []
+        self._events: list[Event] = []
         self.removed: set[str] = set()
         self._build()
 
@@ -100,7 +105,7 @@ class Simulation:
         self.removed.add(obstruction_id)
         self.physics.remove_obstruction(obstruction_id)
         self.scanner.set_edges(self.world.edges(frozenset(self.removed)))
-        self._emit("obstruction_removed", id=obstruction_id)
+        self._emit(EventKind.OBSTRUCTION_REMOVED, id=obstruction_id)
 
     def reset(self) -> None:
         """Back to the world's start state; sim time keeps running (a /clock never goes backwards)."""
@@ -110,9 +115,14 @@ class Simulation:
         self.battery.reset()
         self.odometry.reset(self.world.robot_start)
         self._build()
-        self._emit("reset")
+        self._emit(EventKind.RESET)
 
     # -- stepping ------------------------------------------------------------------------------
+    @property
+    def time(self) -> float:
+        """Sim seconds since the start."""
+        return self.steps * self.config.step_ns / NS_PER_S
+
     def step(self) -> None:
         dt = self.config.step_s
         now = self.time
@@ -120,7 +130,7 @@ class Simulation:
         human_cmds = {hid: g.update(now, dt) for hid, g in self.human_gates.items()}
         before = self._robot_pose
         self.physics.step(robot_cmd, human_cmds, dt)
-        self.time = now + dt
+        self.steps += 1
         after = self._robot_pose = self.physics.robot.pose()
         dist = math.hypot(after.x - before.x, after.y - before.y)
         base = self.world.charging_base
@@ -131,17 +141,17 @@ class Simulation:
             self._emit(e.kind, other=e.other)
         self.physics.events.clear()
         if self.battery.empty and not self._battery_was_empty:
-            self._emit("battery_empty")
+            self._emit(EventKind.BATTERY_EMPTY)
         self._battery_was_empty = self.battery.empty
 
     def run(self, duration_s: float) -> None:
         for _ in range(int(round(duration_s / self.config.step_s))):
             self.step()
 
-    def _emit(self, type_: str, **data: Any) -> None:
-        self._events.append(SimEvent(self.time, type_, data))
+    def _emit(self, kind: EventKind, **data: Any) -> None:
+        self._events.append(event(kind, self.time, Source.SIM, **data))
 
-    def pop_events(self) -> list[SimEvent]:
+    def pop_events(self) -> list[Event]:
         out, self._events = self._events, []
         return out
 
@@ -175,6 +185,3 @@ class Simulation:
     def occupancy(self, resolution_m: float = 0.05) -> OccupancyGridData:
         return rasterise(self.world, resolution_m, removed=frozenset(self.removed))
 
-    @property
-    def robot_radius_m(self) -> float:
-        return ROBOT_BODY.radius_m

@@ -1,13 +1,19 @@
-"""MarkerSpec -> visualization_msgs/Marker: the only place haven_viz builds messages."""
+"""MarkerSpec -> visualization_msgs/Marker, CueState -> JSON: the only place haven_viz builds messages."""
 
 from __future__ import annotations
 
+from typing import Any
+
 from geometry_msgs.msg import Point
-from std_msgs.msg import ColorRGBA
+from std_msgs.msg import ColorRGBA, String
 from visualization_msgs.msg import Marker, MarkerArray
 
+from haven_sim.common import topics
 from haven_sim.common.geometry import quaternion_to_yaw
+from haven_sim.nodes import qos
 from haven_sim.nodes.conversions import quaternion_msg, time_msg
+from haven_sim.nodes.wire import TopicSpec
+from haven_viz.cues import CueState
 from haven_viz.markers import MarkerSpec, Shape, Update
 
 
@@ -59,3 +65,16 @@ def spec_from_msg(msg: Marker) -> MarkerSpec:
         msg.text,
         tuple((p.x, p.y, p.z) for p in msg.points),
     )
+
+
+def _no_reader(msg: Any) -> Any:
+    raise ValueError("no HAVEN node reads this topic")
+
+
+def viz_specs(frame_id: str = "map") -> dict[str, TopicSpec]:
+    """haven_viz's topics for the topic table (haven_sim.nodes.wire)."""
+    return {
+        topics.AR_MARKERS: TopicSpec(MarkerArray, lambda u, t: marker_array(u, t, frame_id), _no_reader, qos.RELIABLE, qos.RELIABLE),
+        topics.WORLD_MARKERS: TopicSpec(MarkerArray, lambda u, t: marker_array(u, t, frame_id), _no_reader, qos.LATCHED, qos.LATCHED),
+        topics.CUE_STATE: TopicSpec(String, lambda c, t: String(data=c.to_json(t)), lambda m: CueState.from_json(m.data)[1], qos.LATCHED, qos.LATCHED),
+    }

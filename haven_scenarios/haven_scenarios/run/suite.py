@@ -1,0 +1,69 @@
+"""The node suite's configuration from one source: each node's config dataclass, read from a ROS
+parameter file the same way in ROS mode (the nodes declare from these classes) and in batch mode
+(built here), and the shipped haven.yaml rendered from them."""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from haven_scenarios.study.director import ScenarioNodeConfig
+from haven_sim.common.params import build, load_params_file, node_values, render_params_file
+from haven_sim.nav.controller import ControllerConfig
+from haven_sim.nav.motion_style import MotionStyle
+from haven_sim.nav.mux import MuxConfig
+from haven_sim.nav.planning import PlannerConfig
+from haven_sim.sim.simulator import SimulatorConfig
+from haven_viz.viz import VizConfig
+
+# (node name, its config class): the order of haven.yaml.
+NODES: tuple[tuple[str, type[Any]], ...] = (
+    ("sim_node", SimulatorConfig),
+    ("velocity_mux", MuxConfig),
+    ("planner", PlannerConfig),
+    ("controller", ControllerConfig),
+    ("viz", VizConfig),
+    ("scenario", ScenarioNodeConfig),
+)
+SHARED = (MotionStyle,)  # one section for the nodes that share HAVEN's turning rule
+HEADER = """Parameters of every HAVEN node, with their defaults (pass with --params-file to `haven sim`,
+`haven run` or `haven batch`, or to any node). Generated from the config dataclasses by
+`python -m haven_scenarios.run.suite`: edit those, not this file. The "/**" section applies to
+every node that has the parameter (the planner and the controller share the motion style)."""
+
+
+def packaged_params_file() -> Path:
+    return Path(str(resources.files("haven_sim") / "config" / "haven.yaml"))
+
+
+def render() -> str:
+    return render_params_file(NODES, SHARED, HEADER)
+
+
+@dataclass(frozen=True)
+class SuiteConfig:
+    sim: SimulatorConfig = field(default_factory=SimulatorConfig)
+    mux: MuxConfig = field(default_factory=MuxConfig)
+    planner: PlannerConfig = field(default_factory=PlannerConfig)
+    controller: ControllerConfig = field(default_factory=ControllerConfig)
+    viz: VizConfig = field(default_factory=VizConfig)
+    scenario: ScenarioNodeConfig = field(default_factory=ScenarioNodeConfig)
+
+
+def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None) -> SuiteConfig:
+    """Every node's config from a loaded parameter file (None: the defaults)."""
+    p = params or {}
+    made = {name: build(cls, node_values(p, name), where=f"{name}: ") for name, cls in NODES}
+    return SuiteConfig(made["sim_node"], made["velocity_mux"], made["planner"], made["controller"], made["viz"], made["scenario"])
+
+
+def load_suite_config(path: str | Path | None) -> SuiteConfig:
+    return suite_config(load_params_file(path) if path is not None else None)
+
+
+if __name__ == "__main__":
+    packaged_params_file().write_text(render())
+    print(f"wrote {packaged_params_file()}")

@@ -1,0 +1,187 @@
+"""One source of parameters: the core's frozen config dataclasses.
+
+Each node's configuration is a dataclass whose leaf fields are its ROS parameters (name = field name,
+default = field default, `doc` in the field metadata); a field holding another config dataclass is
+flattened into the same namespace (so shared pieces such as the motion style appear once in each
+node that uses them, under the same names). Nodes declare their parameters from these classes,
+batch mode builds the same classes from the same parameter file, and the shipped haven.yaml is
+generated from them (`render_params_file`), so a default is written in exactly one place.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Mapping, Sequence
+from pathlib import Path
+from typing import Any, TypeVar
+
+import yaml
+
+T = TypeVar("T")
+ParamValue = bool | int | float | str | list[str]
+WILDCARD = "/**"  # a ROS parameter-file section that applies to every node
+MAX_PARAMS_FILE_BYTES = 1_000_000
+
+
+class ParamsError(ValueError):
+    """A parameter value or a parameter file is invalid; the message is one line for the user."""
+
+
+def param(default: Any, doc: str) -> Any:
+    """A parameter field with its one-line documentation (written into haven.yaml)."""
+    return dataclasses.field(default=default, metadata={"doc": doc})
+
+
+def group(cls: type[T], prefix: str = "") -> Any:
+    """A field holding a nested config dataclass: its fields join the node's parameters, their
+    names prefixed with `prefix` (e.g. the battery's `capacity_m` is the sim's `battery_capacity_m`)."""
+    return dataclasses.field(default_factory=cls, metadata={"prefix": prefix})
+
+
+def _is_group(f: dataclasses.Field[Any]) -> bool:
+    return f.default_factory is not dataclasses.MISSING and dataclasses.is_dataclass(f.default_factory)
+
+
+def _is_param(f: dataclasses.Field[Any]) -> bool:
+    """Fields marked `internal` are set by code, not by a parameter."""
+    return not f.metadata.get("internal", False)
+
+
+def _leaves(cls: type[Any], prefix: str = "") -> list[tuple[str, dataclasses.Field[Any]]]:
+    """(parameter name, field) of every leaf; names must be unique within a node."""
+    out: list[tuple[str, dataclasses.Field[Any]]] = []
+    for f in dataclasses.fields(cls):
+        if _is_group(f):
+            out += _leaves(f.default_factory, prefix + f.metadata.get("prefix", ""))  # type: ignore[arg-type]
+        elif _is_param(f):
+            out.append((prefix + f.name, f))
+    names = [n for n, _ in out]
+    if len(set(names)) != len(names):
+        raise ParamsError(f"{cls.__name__}: parameter names repeat: {sorted({n for n in names if names.count(n) > 1})}")
+    return out
+
+
+def flatten(config: Any, prefix: str = "") -> dict[str, ParamValue]:
+    """Parameter name -> value of a config instance (nested groups flattened)."""
+    out: dict[str, ParamValue] = {}
+    for f in dataclasses.fields(config):
+        value = getattr(config, f.name)
+        if _is_group(f):
+            out.update(flatten(value, prefix + f.metadata.get("prefix", "")))
+        elif _is_param(f):
+            out[prefix + f.name] = list(value) if isinstance(value, tuple) else value
+    return out
+
+
+def docs(cls: type[Any]) -> dict[str, str]:
+    return {name: str(f.metadata.get("doc", "")) for name, f in _leaves(cls)}
+
+
+def defaults(cls: type[Any]) -> dict[str, ParamValue]:
+    return flatten(cls())
+
+
+def _coerce(name: str, value: Any, default: Any, where: str) -> Any:
+    def fail(expected: str) -> ParamsError:
+        shown = repr(value) if len(repr(value)) < 60 else repr(value)[:57] + "..."
+        return ParamsError(f"{where}{name}: must be {expected}, got {shown}")
+
+    if isinstance(default, bool):
+        if not isinstance(value, bool):
+            raise fail("true or false")
+        return value
+    if isinstance(default, int):
+        if isinstance(value, bool) or not isinstance(value, int):
+            raise fail("an integer")
+        return value
+    if isinstance(default, float):
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+            raise fail("a finite number")
+        return float(value)
+    if isinstance(default, str):
+        if not isinstance(value, str):
+            raise fail("a string")
+        return value
+    if isinstance(default, (tuple, list)):
+        if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
+            raise fail("a list of strings")
+        return tuple(v for v in value if v)
+    raise fail(type(default).__name__)  # pragma: no cover - configs use the types above
+
+
+def build(cls: type[T], values: Mapping[str, Any], where: str = "", prefix: str = "") -> T:
+    """An instance of `cls` with `values` (parameter name -> value) replacing defaults; unknown
+    names are ignored (a parameter file serves several nodes), wrong types refused in one line."""
+    kwargs: dict[str, Any] = {}
+    for f in dataclasses.fields(cls):  # type: ignore[arg-type]
+        name = prefix + f.name
+        if _is_group(f):
+            kwargs[f.name] = build(f.default_factory, values, where, prefix + f.metadata.get("prefix", ""))  # type: ignore[arg-type]
+        elif name in values and _is_param(f):
+            kwargs[f.name] = _coerce(name, values[name], f.default, where)
+    try:
+        return cls(**kwargs)
+    except ParamsError:
+        raise
+    except ValueError as e:
+        raise ParamsError(f"{where}{e}") from None
+
+
+def load_params_file(path: str | Path) -> dict[str, dict[str, Any]]:
+    """A ROS 2 parameter file as {node name: {parameter: value}} (without the ros__parameters level)."""
+    p = Path(path)
+    try:
+        if not p.is_file():
+            raise ParamsError(f"{p}: no such parameter file")
+        if p.stat().st_size > MAX_PARAMS_FILE_BYTES:
+            raise ParamsError(f"{p}: larger than {MAX_PARAMS_FILE_BYTES} bytes")
+        data = yaml.safe_load(p.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError) as e:
+        raise ParamsError(f"{p}: cannot read parameter file: {e}") from None
+    except yaml.YAMLError as e:
+        raise ParamsError(f"{p}: YAML syntax error: {getattr(e, 'problem', None) or 'invalid YAML'}") from None
+    if data is None:
+        return {}
+    if not isinstance(data, dict):
+        raise ParamsError(f"{p}: a parameter file maps node names to 'ros__parameters'")
+    out: dict[str, dict[str, Any]] = {}
+    for node, section in data.items():
+        params = section.get("ros__parameters") if isinstance(section, dict) else None
+        if not isinstance(params, dict):
+            raise ParamsError(f"{p}: {node}: needs a 'ros__parameters' mapping")
+        out[str(node).lstrip("/") if node != WILDCARD else WILDCARD] = params
+    return out
+
+
+def node_values(params_file: Mapping[str, Mapping[str, Any]], node: str) -> dict[str, Any]:
+    """The values a node gets from a loaded parameter file: the wildcard section, then its own."""
+    return {**params_file.get(WILDCARD, {}), **params_file.get(node, {})}
+
+
+def _yaml_value(value: Any) -> str:
+    if isinstance(value, float) and value == math.pi:
+        return "3.141592653589793"
+    return yaml.safe_dump(value, default_flow_style=True).strip().removesuffix("\n...").strip()
+
+
+def render_params_file(nodes: Sequence[tuple[str, type[Any]]], shared: Sequence[type[Any]] = (), header: str = "") -> str:
+    """A ROS 2 parameter file with every node's parameters and their defaults and docs. Groups in
+    `shared` go once under the wildcard section instead of under each node."""
+    shared_names = {n for cls in shared for n, _ in _leaves(cls)}
+    lines = [f"# {h}".rstrip() for h in header.splitlines()] if header else []
+
+    def section(node: str, leaves: list[tuple[str, dataclasses.Field[Any]]], values: Mapping[str, Any]) -> None:
+        lines.append(f"{node}:" if node != WILDCARD else f'"{WILDCARD}":')
+        lines.append("  ros__parameters:")
+        for name, f in leaves:
+            doc = f.metadata.get("doc", "")
+            entry = f"    {name}: {_yaml_value(values[name])}"
+            lines.append(f"{entry:<44} # {doc}" if doc else entry)
+        lines.append("")
+
+    if shared:
+        section(WILDCARD, [leaf for cls in shared for leaf in _leaves(cls)], {k: v for cls in shared for k, v in defaults(cls).items()})
+    for node, cls in nodes:
+        section(node, [(n, f) for n, f in _leaves(cls) if n not in shared_names], defaults(cls))
+    return "\n".join(lines).rstrip() + "\n"

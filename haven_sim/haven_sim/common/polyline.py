@@ -1,0 +1,80 @@
+"""A path as a polyline with arc length: the one point-to-polyline projection every module uses
+(the navigator watching for people, the path follower, the AR cues consuming markers)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from haven_sim.common.geometry import FloatArray, Point, Pose2D
+
+
+@dataclass(frozen=True)
+class Projection:
+    """The closest point of a polyline to a query point."""
+
+    distance: float  # from the query point to the polyline
+    segment: int  # index of the segment's first point
+    s: float  # arc length of the closest point from the polyline's start
+    point: Point
+
+
+class Polyline:
+    """Points (N, 2) with their cumulative arc length. Consecutive repeated points (a rotation in
+    place) are kept: they are zero-length segments."""
+
+    def __init__(self, points: FloatArray | Sequence[Point] | Sequence[Pose2D]) -> None:
+        pts = np.asarray([(p[0], p[1]) for p in points], dtype=float).reshape(-1, 2)
+        self.points = pts
+        steps = np.hypot(*np.diff(pts, axis=0).T) if len(pts) > 1 else np.zeros(0)
+        self.cumulative: FloatArray = np.concatenate([[0.0], np.cumsum(steps)]) if len(pts) else np.zeros(0)
+
+    def __len__(self) -> int:
+        return len(self.points)
+
+    @property
+    def length(self) -> float:
+        return float(self.cumulative[-1]) if len(self.points) else 0.0
+
+    def _segment_at(self, s: float) -> int:
+        return min(len(self.points) - 2, max(0, int(np.searchsorted(self.cumulative, s, side="right")) - 1))
+
+    def project(self, x: float, y: float, s_from: float = 0.0, s_to: float = math.inf) -> Projection:
+        """The closest point among the segments overlapping arc lengths [s_from, s_to]."""
+        pts = self.points
+        if len(pts) == 0:
+            raise ValueError("cannot project onto an empty polyline")
+        if len(pts) == 1:
+            return Projection(math.hypot(pts[0, 0] - x, pts[0, 1] - y), 0, 0.0, (float(pts[0, 0]), float(pts[0, 1])))
+        lo = self._segment_at(s_from)
+        hi = len(pts) - 1 if math.isinf(s_to) else max(lo + 1, min(len(pts) - 1, self._segment_at(s_to) + 1))
+        a, b = pts[lo:hi], pts[lo + 1 : hi + 1]
+        d = b - a
+        ln2 = np.einsum("ij,ij->i", d, d)
+        t = np.clip(np.einsum("ij,ij->i", np.array([x, y]) - a, d) / np.where(ln2 > 0, ln2, 1.0), 0.0, 1.0)
+        closest = a + d * t[:, None]
+        dist = np.hypot(closest[:, 0] - x, closest[:, 1] - y)
+        k = int(np.argmin(dist))
+        s = float(self.cumulative[lo + k] + t[k] * math.sqrt(ln2[k]))
+        return Projection(float(dist[k]), lo + k, s, (float(closest[k, 0]), float(closest[k, 1])))
+
+    def point_at(self, s: float) -> Point:
+        """The point at arc length s (clamped to the ends); on a zero-length segment, its start."""
+        pts = self.points
+        if len(pts) == 1:
+            return (float(pts[0, 0]), float(pts[0, 1]))
+        s = min(max(s, 0.0), self.length)
+        i = self._segment_at(s)
+        seg = self.cumulative[i + 1] - self.cumulative[i]
+        f = 0.0 if seg <= 0 else (s - self.cumulative[i]) / seg
+        return (float(pts[i, 0] + (pts[i + 1, 0] - pts[i, 0]) * f), float(pts[i, 1] + (pts[i + 1, 1] - pts[i, 1]) * f))
+
+    def moving_segment_at(self, s: float) -> int:
+        """Index of the segment of non-zero length that holds arc length s (rotations skipped)."""
+        i = self._segment_at(s)
+        while i > 0 and self.cumulative[i + 1] - self.cumulative[i] <= 1e-12:
+            i -= 1
+        return i

@@ -1,0 +1,33 @@
+"""Payloads of the state topics that several components share (the wire types' core twins)."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from haven_sim.common.geometry import Pose2D, Twist2D
+
+
+@dataclass(frozen=True)
+class RobotState:
+    """What /odom says: the pose (odometry frame) and the body-frame velocity."""
+
+    pose: Pose2D
+    twist: Twist2D = Twist2D()
+
+
+@dataclass(frozen=True)
+class Goal:
+    """What /goal_pose says: a pose and the frame it is given in. A NaN yaw means any heading."""
+
+    pose: Pose2D
+    frame: str = "map"
+
+
+HumanPoses = dict[str, Pose2D]  # /humans: every person's pose by id
+
+
+def name_humans(poses: Sequence[Pose2D], ids: Sequence[str]) -> HumanPoses:
+    """The one place that pairs /humans poses (world-file order) with their ids; poses beyond the
+    known ids are named by their index (h0, h1, ...)."""
+    return {(ids[i] if i < len(ids) else f"h{i}"): p for i, p in enumerate(poses)}

@@ -1,0 +1,39 @@
+"""Topic names of the HAVEN graph (relative, so a namespace applies; /clock and TF are absolute).
+
+Core components address their inputs and outputs by these names; the nodes map each name to its
+message type and QoS (haven_sim.nodes.wire), batch mode routes them in-process.
+"""
+
+from __future__ import annotations
+
+CLOCK = "/clock"
+TF = "/tf"
+TF_STATIC = "/tf_static"
+MAP = "map"
+ODOM = "odom"
+SCAN = "scan"
+BATTERY = "battery_state"
+HUMANS = "humans"
+CMD_VEL = "cmd_vel"
+CMD_VEL_NAV = "cmd_vel_nav"
+CMD_VEL_TELEOP = "cmd_vel_teleop"
+ESTOP = "haven/estop"
+GOAL = "goal_pose"
+PLAN = "plan"
+WAIT = "haven/wait"
+THOUGHT = "haven/thought"
+EVENTS = "haven/events"
+REMOVE_OBSTRUCTION = "haven/remove_obstruction"
+AR_MARKERS = "haven/ar_markers"
+WORLD_MARKERS = "haven/world_markers"
+CUE_STATE = "haven/cue_state"
+
+
+def human_cmd_vel(human_id: str) -> str:
+    return f"humans/{human_id}/cmd_vel"
+
+
+def human_of_cmd_vel(topic: str) -> str | None:
+    """The human id of a `humans/<id>/cmd_vel` topic, else None."""
+    parts = topic.strip("/").split("/")
+    return parts[1] if len(parts) == 3 and parts[0] == "humans" and parts[2] == "cmd_vel" else None

@@ -1,0 +1,86 @@
+"""The controller: follows /plan in HAVEN's motion style and says when it has arrived.
+
+`ControllerComponent` is the whole controller node without ROS (the node only wires it to topics):
+it keeps the latest path, pose and wait flag, and at `rate_hz` commands the robot through the path
+follower, reporting a `goal_reached` event once per path.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+from haven_sim.common import topics
+from haven_sim.common.events import EventKind, Source, event
+from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.common.params import group, param
+from haven_sim.common.state import RobotState
+from haven_sim.nav.follower import FollowerParams, PathFollower, Status
+from haven_sim.nav.motion_style import MotionStyle
+from haven_sim.runtime.component import Handler, Message
+
+
+@dataclass(frozen=True)
+class ControllerConfig:
+    follower: FollowerParams = group(FollowerParams)
+    style: MotionStyle = group(MotionStyle)
+    rate_hz: float = param(20.0, "control rate (sim time)")
+
+    def __post_init__(self) -> None:
+        if not self.rate_hz > 0:
+            raise ValueError(f"rate_hz must be positive, got {self.rate_hz}")
+
+
+class ControllerComponent:
+    name = "controller"
+    unread: frozenset[str] = frozenset()
+
+    def __init__(self, config: ControllerConfig | None = None) -> None:
+        self.config = config or ControllerConfig()
+        self.follower = PathFollower(self.config.follower, self.config.style)
+        self.robot: Pose2D | None = None
+        self._active = False  # the last tick drove or rotated the robot
+
+    @property
+    def period_s(self) -> float:
+        return 1.0 / self.config.rate_hz
+
+    def handlers(self) -> Mapping[str, Handler]:
+        return {topics.PLAN: self.on_plan, topics.ODOM: self.on_odom, topics.WAIT: self.on_wait}
+
+    def outputs(self) -> Sequence[str]:
+        return (topics.CMD_VEL_NAV, topics.EVENTS)
+
+    def on_plan(self, poses: Sequence[Pose2D], now: float) -> list[Message]:
+        self.follower.set_path(poses)
+        if not poses:  # a cleared plan stops the robot at once
+            self._active = False
+            return [Message(topics.CMD_VEL_NAV, Twist2D(), now)]
+        return []
+
+    def on_odom(self, state: RobotState, now: float) -> list[Message]:
+        self.robot = state.pose
+        return []
+
+    def on_wait(self, waiting: bool, now: float) -> list[Message]:
+        self.follower.waiting = waiting
+        return []
+
+    def tick(self, now: float) -> list[Message]:
+        if self.robot is None:
+            return []
+        before = self.follower.status
+        cmd = self.follower.command(self.robot)
+        status = self.follower.status
+        out: list[Message] = []
+        moving = status in (Status.DRIVING, Status.ROTATING)
+        # Publish while moving, once more when it stops (a zero), and while told to wait.
+        if moving or self._active or status is Status.WAITING:
+            out.append(Message(topics.CMD_VEL_NAV, cmd, now))
+        self._active = moving
+        goal = self.follower.goal
+        if status is Status.ARRIVED and before is not Status.ARRIVED and goal is not None:
+            pose = [round(v, 3) for v in self.robot]
+            reached = event(EventKind.GOAL_REACHED, now, Source.CONTROLLER, goal=[round(goal.x, 3), round(goal.y, 3)], pose=pose)
+            out.append(Message(topics.EVENTS, reached, now))
+        return out

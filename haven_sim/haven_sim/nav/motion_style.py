@@ -1,0 +1,55 @@
+"""HAVEN's turning rule, owned here and nowhere else: when the robot stops and rotates in place.
+
+Before a leg (planning a corner, or finding itself facing away from the path while driving), the
+robot rotates on the spot when the heading change exceeds `arc_max_angle_deg` (60 deg) or the leg
+ahead is shorter than `too_close_distance_m`; otherwise it drives an arc. A rotation runs at
+`rotate_speed_deg_s` (50 deg/s) until within `facing_tolerance_deg` (5 deg). The planner shapes its
+paths with this rule and the controller follows them with it; both nodes take the same parameters
+(the shared section of haven.yaml).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from haven_sim.common.params import param
+
+
+@dataclass(frozen=True)
+class MotionStyle:
+    arc_max_angle_deg: float = param(60.0, "HAVEN: heading changes beyond this stop the robot and rotate it in place")
+    too_close_distance_m: float = param(0.5, "HAVEN: a leg shorter than this also starts with a rotation in place")
+    facing_tolerance_deg: float = param(5.0, "HAVEN: a rotation in place ends within this")
+    rotate_speed_deg_s: float = param(50.0, "HAVEN's rate of rotating in place")
+
+    def __post_init__(self) -> None:
+        if not 0 < self.arc_max_angle_deg <= 180:
+            raise ValueError(f"arc_max_angle_deg must be within (0, 180], got {self.arc_max_angle_deg}")
+        if self.too_close_distance_m < 0:
+            raise ValueError(f"too_close_distance_m must not be negative, got {self.too_close_distance_m}")
+        if not 0 < self.facing_tolerance_deg < 90:
+            raise ValueError(f"facing_tolerance_deg must be within (0, 90), got {self.facing_tolerance_deg}")
+        if not self.rotate_speed_deg_s > 0:
+            raise ValueError(f"rotate_speed_deg_s must be positive, got {self.rotate_speed_deg_s}")
+
+    @property
+    def arc_max_angle_rad(self) -> float:
+        return math.radians(self.arc_max_angle_deg)
+
+    @property
+    def facing_tolerance_rad(self) -> float:
+        return math.radians(self.facing_tolerance_deg)
+
+    @property
+    def rotate_speed_rps(self) -> float:
+        return math.radians(self.rotate_speed_deg_s)
+
+    def rotates_in_place(self, turn_rad: float, leg_m: float = math.inf) -> bool:
+        """HAVEN's rule: rotate on the spot (True) or drive an arc (False) for this heading change
+        before a leg of length `leg_m`."""
+        return abs(turn_rad) > self.arc_max_angle_rad or leg_m < self.too_close_distance_m
+
+    def facing(self, error_rad: float) -> bool:
+        """A rotation in place is done."""
+        return abs(error_rad) <= self.facing_tolerance_rad

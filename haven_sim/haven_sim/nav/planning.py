@@ -1,0 +1,123 @@
+"""The planner: /goal_pose in, /plan out in HAVEN's rotate / arc / straight style, human-aware.
+
+`PlannerComponent` is the whole planner node without ROS. It plans on whatever /map holds (ours or
+any nav_msgs/OccupancyGrid) from the robot's /odom pose; a goal that comes before the map or the
+pose waits (the newest one wins); a goal in a frame other than the map's, or with a position that
+is not finite, is refused with an event. At `check_rate_hz` it watches /humans through the navigator:
+a person on the upcoming path makes the robot wait (/haven/wait) or detour (a new /plan).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+from haven_sim.common import topics
+from haven_sim.common.events import EventKind, Source, event
+from haven_sim.common.geometry import Pose2D
+from haven_sim.common.params import group, param
+from haven_sim.common.state import Goal, HumanPoses, RobotState
+from haven_sim.nav.motion_style import MotionStyle
+from haven_sim.nav.navigator import Navigator, NavigatorParams, NavOutput
+from haven_sim.nav.path_style import ShapeParams
+from haven_sim.nav.planner import PlannerParams
+from haven_sim.runtime.component import Handler, Message
+from haven_sim.sim.occupancy import OccupancyGridData
+
+ODOM_FRAME = "odom"  # coincides with the map frame while odometry has no drift
+
+
+@dataclass(frozen=True)
+class PlannerConfig:
+    planner: PlannerParams = group(PlannerParams)
+    shape: ShapeParams = group(ShapeParams)
+    style: MotionStyle = group(MotionStyle)
+    navigator: NavigatorParams = group(NavigatorParams)
+    check_rate_hz: float = param(5.0, "how often the path is checked for people (sim time)")
+    map_frame: str = param("map", "frame of /plan and of accepted goals")
+
+    def __post_init__(self) -> None:
+        if not self.check_rate_hz > 0:
+            raise ValueError(f"check_rate_hz must be positive, got {self.check_rate_hz}")
+
+
+class PlannerComponent:
+    name = "planner"
+    unread: frozenset[str] = frozenset()
+
+    def __init__(self, config: PlannerConfig | None = None) -> None:
+        self.config = config or PlannerConfig()
+        self.nav: Navigator | None = None
+        self.robot: Pose2D | None = None
+        self.humans: list[tuple[float, float]] = []
+        self.pending: Pose2D | None = None
+        self.notes: list[str] = []  # for the node's log
+        self.warnings: list[str] = []
+
+    @property
+    def period_s(self) -> float:
+        return 1.0 / self.config.check_rate_hz
+
+    def handlers(self) -> Mapping[str, Handler]:
+        return {topics.MAP: self.on_map, topics.ODOM: self.on_odom, topics.HUMANS: self.on_humans, topics.GOAL: self.on_goal}
+
+    def outputs(self) -> Sequence[str]:
+        return (topics.PLAN, topics.WAIT, topics.EVENTS)
+
+    def on_map(self, grid: OccupancyGridData, now: float) -> list[Message]:
+        c = self.config
+        if self.nav is None:
+            self.nav = Navigator(grid, c.planner, c.shape, c.navigator, c.style)
+        else:
+            self.nav.set_map(grid)
+        self.notes.append(f"map {grid.width} x {grid.height} at {grid.resolution_m:g} m: {len(self.nav.planner.nodes)} corner nodes")
+        return self._try_pending(now)
+
+    def on_odom(self, state: RobotState, now: float) -> list[Message]:
+        self.robot = state.pose
+        return self._try_pending(now)
+
+    def on_humans(self, humans: HumanPoses, now: float) -> list[Message]:
+        self.humans = [(p.x, p.y) for p in humans.values()]
+        return []
+
+    def on_goal(self, goal: Goal, now: float) -> list[Message]:
+        reason = self.refusal(goal)
+        if reason is not None:
+            self.warnings.append(f"refused goal: {reason}")
+            refused = event(EventKind.PLAN_REFUSED, now, Source.PLANNER, reason=reason)
+            return [Message(topics.EVENTS, refused, now)]
+        self.pending = goal.pose
+        return self._try_pending(now)
+
+    def refusal(self, goal: Goal) -> str | None:
+        """Why a goal cannot even be planned for, or None."""
+        frame = goal.frame or self.config.map_frame
+        if frame not in (self.config.map_frame, ODOM_FRAME):
+            return f"goal frame '{frame}' is not '{self.config.map_frame}'"
+        if not (math.isfinite(goal.pose.x) and math.isfinite(goal.pose.y)):
+            return "goal position is not finite"
+        return None
+
+    def _try_pending(self, now: float) -> list[Message]:
+        if self.pending is None or self.nav is None or self.robot is None:
+            return []
+        goal, self.pending = self.pending, None
+        out = self.nav.set_goal(self.robot, goal, now)
+        self.warnings += [f"refused goal ({goal.x:.2f}, {goal.y:.2f}): {e['reason']}" for e in out.events if e.kind is EventKind.PLAN_REFUSED]
+        return self._messages(out, now)
+
+    def tick(self, now: float) -> list[Message]:
+        if self.nav is None or self.robot is None:
+            return []
+        return self._messages(self.nav.update(self.robot, self.humans, now), now)
+
+    @staticmethod
+    def _messages(out: NavOutput, now: float) -> list[Message]:
+        msgs = [Message(topics.EVENTS, e, now) for e in out.events]
+        if out.path is not None:
+            msgs.append(Message(topics.PLAN, out.path, now))
+        if out.waiting is not None:
+            msgs.append(Message(topics.WAIT, out.waiting, now))
+        return msgs

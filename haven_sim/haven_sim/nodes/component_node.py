@@ -1,0 +1,93 @@
+"""A node that wires a core component to ROS: declare -> configure -> wire -> translate.
+
+Parameters are declared from the component's config dataclass (names, defaults and descriptions
+come from there); each topic the component reads becomes a subscription whose messages are
+converted and handed to it, each topic it writes a publisher, its period a sim-time timer. A message
+that cannot be converted (a bad event string from another node, say) is refused with a throttled
+warning naming the topic, and the node keeps running.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from typing import Any, TypeVar
+
+from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from rclpy.publisher import Publisher
+
+from haven_sim.common.params import build, defaults, docs
+from haven_sim.nodes.wire import TopicSpec
+from haven_sim.runtime.component import Component, Message
+
+C = TypeVar("C")
+
+
+class ComponentNode(Node):
+    # Parameters that may change while the node runs (the rest are read at start-up only).
+    runtime_parameters: frozenset[str] = frozenset()
+
+    def __init__(self, name: str) -> None:
+        super().__init__(name)
+        self._declared: set[str] = set()
+        self._pubs: dict[str, Publisher] = {}
+        self._specs: dict[str, TopicSpec] = {}
+        self.component: Component | None = None
+        self.add_on_set_parameters_callback(self._check_parameters)
+
+    # -- declare and configure -------------------------------------------------------------------
+    def declare_config(self, cls: type[C]) -> C:
+        """Declare every parameter of a config dataclass and build the config from their values."""
+        values: dict[str, Any] = {}
+        described = docs(cls)
+        for name, default in defaults(cls).items():
+            descriptor = ParameterDescriptor(description=described.get(name, ""), dynamic_typing=True)
+            values[name] = self.declare_parameter(name, default, descriptor).value
+            self._declared.add(name)
+        return build(cls, values, where=f"{self.get_name()}: parameter ")
+
+    def _check_parameters(self, params: list[Parameter]) -> SetParametersResult:
+        for p in params:
+            if p.name in self._declared and p.name not in self.runtime_parameters:
+                return SetParametersResult(successful=False, reason=f"{p.name} is read at start-up only; restart the node to change it")
+        return SetParametersResult(successful=True)
+
+    # -- wire ------------------------------------------------------------------------------------
+    def wire(self, component: Component, specs: Mapping[str, TopicSpec]) -> None:
+        self.component = component
+        self._specs = dict(specs)
+        for topic in component.outputs():
+            spec = self._specs.get(topic)
+            if spec is not None:  # (no spec: TF where tf2_msgs is not installed)
+                self._pubs[topic] = self.create_publisher(spec.msg_type, topic, spec.pub_qos)
+        for topic, handler in component.handlers().items():
+            spec = self._specs[topic]
+
+            def on_message(msg: Any, topic: str = topic, spec: TopicSpec = spec, handler: Any = handler) -> None:
+                try:
+                    data = spec.decode(msg)
+                except ValueError as e:
+                    self.get_logger().warning(f"ignored a message on {self.resolve_topic_name(topic)}: {e}", throttle_duration_sec=5.0)
+                    return
+                self.publish(handler(data, self.now()))
+
+            self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
+        if component.period_s is not None:
+            self.create_timer(component.period_s, lambda: self.publish(component.tick(self.now())))
+
+    # -- translate -------------------------------------------------------------------------------
+    def now(self) -> float:
+        return self.get_clock().now().nanoseconds * 1e-9
+
+    def publish(self, messages: Sequence[Message]) -> None:
+        for m in messages:
+            pub = self._pubs.get(m.topic)
+            if pub is not None:
+                pub.publish(self._specs[m.topic].encode(m.data, m.stamp))
+        # Components may keep lists of what to log (`notes`: info, `warnings`): drained here.
+        for attr, log in (("notes", self.get_logger().info), ("warnings", self.get_logger().warning)):
+            lines: list[str] = getattr(self.component, attr, [])
+            for line in lines:
+                log(line, throttle_duration_sec=2.0) if attr == "warnings" else log(line)
+            lines.clear()

@@ -1,0 +1,145 @@
+"""The simulator as a component: the `sim_node`'s behaviour without ROS.
+
+It owns the `Simulation` and decides what is published when: at every physics step the clock,
+/odom and `odom -> base_footprint` on /tf; /humans (and `map -> human_<id>` on /tf) at
+`humans_rate_hz`, /scan at `scan_rate_hz`, /battery_state at `battery_rate_hz`; the map and the
+static frames at start and whenever the world changes; the simulator's events as they happen. It
+takes velocity commands for the robot and each person, and obstruction removals.
+"""
+
+from __future__ import annotations
+
+import functools
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+from haven_sim.common import topics
+from haven_sim.common.events import EventKind
+from haven_sim.common.geometry import FloatArray, Twist2D
+from haven_sim.common.params import group, param
+from haven_sim.common.state import RobotState
+from haven_sim.runtime.component import Handler, Message
+from haven_sim.sim.commands import CommandStatus
+from haven_sim.sim.frames import human_frames, robot_frame, static_frames
+from haven_sim.sim.scan import ScanParams
+from haven_sim.sim.simulation import SimConfig, Simulation
+from haven_sim.sim.world import World
+
+
+@dataclass(frozen=True)
+class SimulatorConfig:
+    sim: SimConfig = group(SimConfig)
+    world: str = param("small_test", "a packaged world name or a path to a world YAML")
+    real_time_factor: float = param(1.0, "1.0 live; higher runs faster than real time")
+    humans_rate_hz: float = param(20.0, "/humans and the humans' TF frames (sim time)")
+    battery_rate_hz: float = param(5.0, "/battery_state (sim time)")
+    map_resolution_m: float = param(0.05, "cell size of /map")
+    map_frame: str = param("map", "fixed frame")
+    odom_frame: str = param("odom", "odometry frame")
+    base_frame: str = param("base_footprint", "robot frame")
+    scan_frame: str = param("base_scan", "laser frame")
+
+    def __post_init__(self) -> None:
+        for name in ("real_time_factor", "humans_rate_hz", "battery_rate_hz", "map_resolution_m"):
+            if not getattr(self, name) > 0:
+                raise ValueError(f"{name} must be positive, got {getattr(self, name)}")
+
+
+@dataclass(frozen=True)
+class ScanData:
+    """One /scan: ranges (REP-117) and how they were taken."""
+
+    ranges: FloatArray
+    params: ScanParams
+    period_s: float
+
+
+def _every(physics_rate_hz: float, rate_hz: float) -> int:
+    return max(1, round(physics_rate_hz / rate_hz))
+
+
+class SimulatorComponent:
+    name = "sim_node"
+    unread: frozenset[str] = frozenset()
+    period_s = None  # stepped by its owner (the pacer in ROS mode, the loop in batch mode)
+
+    def __init__(self, world: World, config: SimulatorConfig | None = None) -> None:
+        self.config = c = config or SimulatorConfig()
+        self.sim = Simulation(world, c.sim)
+        rate = c.sim.physics_rate_hz
+        self._scan_every = _every(rate, c.sim.scan.rate_hz)
+        self._humans_every = _every(rate, c.humans_rate_hz)
+        self._battery_every = _every(rate, c.battery_rate_hz)
+        self._map_due = self._static_due = True  # both go out with the first sense()
+        self.warnings: list[str] = []
+
+    @property
+    def world(self) -> World:
+        return self.sim.world
+
+    # -- inputs ----------------------------------------------------------------------------------
+    def handlers(self) -> Mapping[str, Handler]:
+        out: dict[str, Handler] = {topics.CMD_VEL: self.on_cmd_vel, topics.REMOVE_OBSTRUCTION: self.on_remove_obstruction}
+        for h in self.world.humans:
+            out[topics.human_cmd_vel(h.id)] = functools.partial(self.on_human_cmd, h.id)
+        return out
+
+    def outputs(self) -> Sequence[str]:
+        return (topics.CLOCK, topics.MAP, topics.ODOM, topics.TF, topics.TF_STATIC, topics.SCAN, topics.BATTERY, topics.HUMANS, topics.EVENTS)
+
+    def on_cmd_vel(self, cmd: Twist2D, now: float) -> list[Message]:
+        self._check(self.sim.command_robot(cmd), topics.CMD_VEL)
+        return []
+
+    def on_human_cmd(self, human_id: str, cmd: Twist2D, now: float) -> list[Message]:
+        self._check(self.sim.command_human(human_id, cmd), topics.human_cmd_vel(human_id))
+        return []
+
+    def on_remove_obstruction(self, obstruction_id: str, now: float) -> list[Message]:
+        try:
+            self.sim.remove_obstruction(obstruction_id)
+        except KeyError:
+            self.warnings.append(f"no obstruction {obstruction_id!r} in world '{self.world.name}'")
+        return []
+
+    def _check(self, status: CommandStatus, topic: str) -> None:
+        if status is CommandStatus.REJECTED:
+            self.warnings.append(f"dropped a non-finite command on /{topic.lstrip('/')}")
+
+    def reset(self) -> None:
+        self.sim.reset()
+        self._map_due = self._static_due = True
+
+    def tick(self, now: float) -> list[Message]:
+        return []
+
+    # -- stepping and outputs --------------------------------------------------------------------
+    def advance(self) -> None:
+        self.sim.step()
+
+    def sense(self) -> list[Message]:
+        """What is published for the current step (state at `sim.time`)."""
+        sim, c = self.sim, self.config
+        now, k = sim.time, sim.steps
+        out = [Message(topics.CLOCK, now, now)]
+        events = sim.pop_events()
+        if self._static_due:
+            self._static_due = False
+            out.append(Message(topics.TF_STATIC, static_frames(c.map_frame, c.odom_frame, c.base_frame, c.scan_frame), now))
+        if self._map_due or any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in events):
+            self._map_due = False
+            out.append(Message(topics.MAP, sim.occupancy(c.map_resolution_m), now))
+        odom = sim.odometry_pose()
+        out.append(Message(topics.ODOM, RobotState(odom, sim.robot_twist()), now))
+        frames = [robot_frame(odom, c.odom_frame, c.base_frame)]
+        if k % self._humans_every == 0:
+            humans = sim.human_poses()
+            frames += human_frames(humans, c.map_frame)
+            out.append(Message(topics.HUMANS, humans, now))
+        out.append(Message(topics.TF, frames, now))
+        if k % self._scan_every == 0 and topics.SCAN not in self.unread:
+            out.append(Message(topics.SCAN, ScanData(sim.scan(), c.sim.scan, self._scan_every * c.sim.step_s), now))
+        if k % self._battery_every == 0:
+            out.append(Message(topics.BATTERY, sim.battery_reading(), now))
+        out += [Message(topics.EVENTS, e, now) for e in events]
+        return out

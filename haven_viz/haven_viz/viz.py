@@ -1,0 +1,159 @@
+"""The visualization node's behaviour without ROS: `VizComponent`.
+
+It keeps the robot's path, pose, battery level, thought and the humans, and at `rate_hz` turns them
+into HAVEN's AR cues (`cues.ArCues`) plus the moving bodies, sending only what changed
+(/haven/ar_markers) with explicit DELETEs; everything, deletes included, is sent again when a viewer
+joins and every `refresh_period_s`, for viewers and bag replays that start late or missed a message.
+What is shown goes out as data on /haven/cue_state whenever it changes. The world (walls, rooms,
+gems, base) goes on /haven/world_markers, again when a gem is collected or an obstruction removed.
+The four cue toggles are the study condition; every change is a `cue_toggled` event.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
+
+from haven_sim.common import topics
+from haven_sim.common.events import Event, EventKind, Source, event
+from haven_sim.common.geometry import Pose2D
+from haven_sim.common.params import group, param
+from haven_sim.common.state import HumanPoses, RobotState
+from haven_sim.runtime.component import Handler, Message
+from haven_sim.sim.battery import BatteryReading
+from haven_sim.sim.world import World
+from haven_viz.cues import ArCues, CueParams, CueState, Toggles
+from haven_viz.markers import MarkerDiff
+from haven_viz.world_markers import body_markers, world_markers
+
+
+
+@dataclass(frozen=True)
+class VizConfig:
+    toggles: Toggles = group(Toggles)
+    cues: CueParams = group(CueParams)
+    world: str = param("", "world file for the world markers (haven sim passes its world)")
+    rate_hz: float = param(10.0, "cue update rate (sim time)")
+    refresh_period_s: float = param(2.0, "everything is re-sent this often (late viewers, bag replay from the middle)")
+    map_frame: str = param("map", "frame of the markers")
+
+    def __post_init__(self) -> None:
+        if not (self.rate_hz > 0 and self.refresh_period_s > 0):
+            raise ValueError(f"rate_hz and refresh_period_s must be positive, got {self.rate_hz} and {self.refresh_period_s}")
+
+
+class VizComponent:
+    name = "viz"
+    unread: frozenset[str] = frozenset()
+
+    def __init__(self, config: VizConfig | None = None, world: World | None = None) -> None:
+        self.config = config or VizConfig()
+        self.world = world
+        self.toggles = self.config.toggles
+        self.cues = ArCues(self.config.cues)
+        self.ar_diff = MarkerDiff()
+        self.world_diff = MarkerDiff()
+        self.robot: Pose2D | None = None
+        self.humans: HumanPoses = {}
+        self.battery: float | None = None
+        self.thought = ""
+        self.collected: set[str] = set()
+        self.removed: set[str] = set()
+        self.state: CueState | None = None
+        self._last_refresh: float | None = None
+        self._refresh_now = False
+        self._world_due = world is not None
+
+    @property
+    def period_s(self) -> float:
+        return 1.0 / self.config.rate_hz
+
+    def handlers(self) -> Mapping[str, Handler]:
+        return {
+            topics.PLAN: self.on_plan,
+            topics.ODOM: self.on_odom,
+            topics.BATTERY: self.on_battery,
+            topics.HUMANS: self.on_humans,
+            topics.THOUGHT: self.on_thought,
+            topics.EVENTS: self.on_event,
+        }
+
+    def outputs(self) -> Sequence[str]:
+        return (topics.AR_MARKERS, topics.WORLD_MARKERS, topics.CUE_STATE, topics.EVENTS)
+
+    # -- inputs ----------------------------------------------------------------------------------
+    def on_plan(self, poses: Sequence[Pose2D], now: float) -> list[Message]:
+        self.cues.set_path(poses)
+        return []
+
+    def on_odom(self, state: RobotState, now: float) -> list[Message]:
+        self.robot = state.pose
+        return []
+
+    def on_battery(self, reading: BatteryReading, now: float) -> list[Message]:
+        self.battery = reading.level
+        return []
+
+    def on_humans(self, humans: HumanPoses, now: float) -> list[Message]:
+        self.humans = dict(humans)
+        return []
+
+    def on_thought(self, text: str, now: float) -> list[Message]:
+        self.thought = text
+        return []
+
+    def on_event(self, e: Event, now: float) -> list[Message]:
+        if e.kind is EventKind.GEM_COLLECTED:
+            self.collected.add(e["gem"])
+        elif e.kind is EventKind.OBSTRUCTION_REMOVED:
+            self.removed.add(e["id"])
+        elif e.kind is EventKind.RESET:
+            self.collected.clear()
+            self.removed.clear()
+        else:
+            return []
+        self._world_due = self.world is not None
+        return []
+
+    def set_toggles(self, changes: Mapping[str, bool], now: float) -> list[Message]:
+        """Switch cues on or off (the study condition); each change is an event, shown at once."""
+        before = self.toggles
+        self.toggles = dataclasses.replace(before, **changes)
+        out = [
+            Message(topics.EVENTS, event(EventKind.CUE_TOGGLED, now, Source.VIZ, cue=name, on=on), now)
+            for name, on in changes.items()
+            if getattr(before, name) != on
+        ]
+        return out + self.tick(now)
+
+    def viewer_joined(self) -> None:
+        """A new subscriber: send everything at the next tick."""
+        self._refresh_now = True
+
+    # -- outputs ---------------------------------------------------------------------------------
+    def _world_messages(self, now: float) -> list[Message]:
+        if not self._world_due or self.world is None:
+            return []
+        self._world_due = False
+        # Latched with depth 1: a late viewer gets only the last message, so it carries everything.
+        update = self.world_diff.update(world_markers(self.world, self.collected, self.removed), resend_all=True)
+        return [Message(topics.WORLD_MARKERS, update, now)] if update else []
+
+    def tick(self, now: float) -> list[Message]:
+        out = self._world_messages(now)
+        if self.robot is None:
+            return out
+        humans_xy = [(h.x, h.y) for h in self.humans.values()]
+        frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles)
+        refresh = self._refresh_now or self._last_refresh is None or now - self._last_refresh >= self.config.refresh_period_s
+        if refresh:
+            self._last_refresh, self._refresh_now = now, False
+        if topics.AR_MARKERS not in self.unread:
+            update = self.ar_diff.update(frame.markers + body_markers(self.robot, self.humans), resend_all=refresh)
+            if update:
+                out.append(Message(topics.AR_MARKERS, update, now))
+        if refresh or frame.state != self.state:
+            self.state = frame.state
+            out.append(Message(topics.CUE_STATE, frame.state, now))
+        return out
