@@ -27,9 +27,10 @@ from w1_map import w1_world  # noqa: E402
 
 from haven_sim.common.geometry import Pose2D, distance_point_to_edges  # noqa: E402
 from haven_sim.nav.navigator import Navigator  # noqa: E402
-from haven_sim.sim.occupancy import rasterise  # noqa: E402
 from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError  # noqa: E402
-from haven_sim.sim.world import World, load_world, packaged_world  # noqa: E402
+from haven_sim.sim.occupancy import rasterise  # noqa: E402
+from haven_sim.sim.world import World, packaged_world  # noqa: E402
+from haven_sim.sim.world_file import load_world  # noqa: E402
 
 PARAMS = PlannerParams(robot_radius_m=0.18, safety_margin_m=0.05)
 

@@ -30,7 +30,8 @@ from w1_map import human_rooms, room_box, w1_world  # noqa: E402
 
 from haven_sim.common.geometry import Twist2D  # noqa: E402
 from haven_sim.sim.simulation import Simulation  # noqa: E402
-from haven_sim.sim.world import World, load_world, packaged_world  # noqa: E402
+from haven_sim.sim.world import World, packaged_world  # noqa: E402
+from haven_sim.sim.world_file import load_world  # noqa: E402
 
 
 class Wanderers:

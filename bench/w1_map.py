@@ -8,7 +8,8 @@ from typing import Any
 
 import numpy as np
 
-from haven_sim.sim.world import World, parse_world
+from haven_sim.sim.world import World
+from haven_sim.sim.world_file import parse_world
 
 ROOMS = {  # free rectangles (xmin, ymin, xmax, ymax)
     "sw": (0.10, 0.10, 9.95, 8.95),

@@ -48,7 +48,8 @@ def main() -> int:
                "--base-paths", str(ROOT / "scripts" / "interfaces"), "--build-base", f"{tmp}/build", "--install-base", str(PREFIX),
                "--cmake-args", f"-DPython3_EXECUTABLE={sys.executable}", "-DBUILD_TESTING=OFF",
                "--event-handlers", "console_direct-"]
-        r = subprocess.run(cmd, capture_output=True, text=True, env={**os.environ, "AMENT_PREFIX_PATH": str(PREFIX), "CMAKE_PREFIX_PATH": str(PREFIX)})
+        env = {**os.environ, "AMENT_PREFIX_PATH": str(PREFIX), "CMAKE_PREFIX_PATH": str(PREFIX)}
+        r = subprocess.run(cmd, capture_output=True, text=True, env=env)
         if r.returncode != 0:
             tail = (r.stdout + r.stderr).strip().splitlines()[-15:]
             print("build_interfaces: colcon build of tf2_msgs failed:\n" + "\n".join(tail), file=sys.stderr)

@@ -37,7 +37,8 @@ def build() -> L.Layout:
             L.SplitItem(proportion=1, content=L.ParametersPanel(title="Cue toggles (viz node)")),
         ],
     )
-    return L.Layout(content=L.SplitContainer(direction="row", items=[L.SplitItem(proportion=3, content=scene), L.SplitItem(proportion=1, content=side)]))
+    items = [L.SplitItem(proportion=3, content=scene), L.SplitItem(proportion=1, content=side)]
+    return L.Layout(content=L.SplitContainer(direction="row", items=items))
 
 
 if __name__ == "__main__":

@@ -10,9 +10,9 @@ from importlib import resources
 
 import pytest
 from nav_msgs.msg import Odometry
+from ros_harness import tracebacks
 
 from haven_sim.nodes import qos
-from ros_harness import tracebacks
 
 pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
@@ -90,11 +90,12 @@ def test_demo_drives_a_square_and_reports(ros):
     out, err = proc.communicate(timeout=120)
     assert proc.returncode == 0, err
     summary = json.loads(out.strip().splitlines()[-1])
-    assert summary["legs"] == 4
-    assert summary["distance_m"] == pytest.approx(6.0, abs=0.3)
-    assert summary["contacts"] == 0
-    assert summary["battery"] == pytest.approx(1.0 - 6.0 / 100.0, abs=0.01)
-    assert summary["odom_rate_hz_sim"] == pytest.approx(50.0, rel=0.05)
+    # Only what does not depend on how promptly the driver's commands arrive (the loop runs across
+    # processes, so overshoot at the corners varies with the machine's load):
+    assert summary["legs"] == 4 and summary["contacts"] == 0
+    assert summary["distance_m"] >= 4 * 1.49  # every leg is driven to its full length
+    assert summary["battery"] == pytest.approx(1.0 - summary["distance_m"] / 100.0, abs=0.005)  # drains per metre
+    assert summary["odom_rate_hz_sim"] == pytest.approx(50.0, rel=0.01)  # one /odom per physics step
 
 
 @pytest.mark.slow

@@ -33,7 +33,7 @@ def test_compose_runs_only_executables_the_packages_install():
 
 def test_dockerfile_builds_the_workspace_and_runs_an_existing_command():
     text = (ROOT / "docker" / "Dockerfile").read_text()
-    assert text.splitlines()[[i for i, l in enumerate(text.splitlines()) if l.startswith("FROM")][0]] == "FROM ros:jazzy"
+    assert next(line for line in text.splitlines() if line.startswith("FROM")) == "FROM ros:jazzy"
     for path in re.findall(r"^COPY (\S+) ", text, flags=re.M):
         assert (ROOT / path).exists(), f"Dockerfile copies {path}, which does not exist"
     assert "colcon build" in text and "rosdep install" in text

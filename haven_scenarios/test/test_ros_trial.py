@@ -11,10 +11,10 @@ import time
 
 import pytest
 from mcap.reader import make_reader
-
-from haven_scenarios.study.scenario import load_scenario
-from haven_scenarios.run.trial import parse_condition, run_trial
 from ros_harness import tracebacks
+
+from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_scenarios.study.scenario import load_scenario
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]

@@ -4,7 +4,8 @@ import pytest
 
 from haven_scenarios.tools.square_drive import SquareDriver
 from haven_sim.sim.simulation import Simulation
-from haven_sim.sim.world import load_world, packaged_world
+from haven_sim.sim.world import packaged_world
+from haven_sim.sim.world_file import load_world
 
 
 def test_square_returns_to_start_without_contact():

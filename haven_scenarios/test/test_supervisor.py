@@ -4,8 +4,21 @@ import time
 
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 
-SLEEPER = [sys.executable, "-c", "import time; time.sleep(60)"]
-IGNORES_SIGINT = [sys.executable, "-c", "import signal, time; signal.signal(signal.SIGINT, signal.SIG_IGN); print('ready', flush=True); time.sleep(60)"]
+# Children that say they are ready (their signal handling is set up) by creating the file named
+# in argv[1], so the tests signal them only then: no race with the interpreter's start-up.
+SLEEPER = "import pathlib, sys, time; pathlib.Path(sys.argv[1]).touch(); time.sleep(60)"
+IGNORES_SIGINT = "import pathlib, signal, sys, time; signal.signal(signal.SIGINT, signal.SIG_IGN); pathlib.Path(sys.argv[1]).touch(); time.sleep(60)"
+
+
+def child(code, ready):
+    return [sys.executable, "-c", code, str(ready)]
+
+
+def wait_ready(ready, timeout_s=30.0):
+    deadline = time.monotonic() + timeout_s
+    while not ready.exists():
+        assert time.monotonic() < deadline, "the child never got ready"
+        time.sleep(0.01)
 
 
 def test_environment_keeps_discovery_local_unless_asked():
@@ -18,35 +31,33 @@ def test_environment_keeps_discovery_local_unless_asked():
 
 def test_node_argv_formats_parameters():
     argv = node_argv("haven_sim.nodes.sim_node", {"world": "w.yaml", "use_sim_time": True, "real_time_factor": 2.0})
-    assert argv[1:] == ["-m", "haven_sim.nodes.sim_node", "--ros-args", "-p", "world:=w.yaml", "-p", "use_sim_time:=true", "-p", "real_time_factor:=2.0"]
+    assert argv[1:] == [
+        "-m", "haven_sim.nodes.sim_node", "--ros-args", "-p", "world:=w.yaml", "-p", "use_sim_time:=true", "-p", "real_time_factor:=2.0",
+    ]
 
 
-def test_a_dying_child_is_reported_and_the_rest_stopped():
-    with Supervisor(env={}, grace_s=2.0) as sup:
-        sleeper = sup.start(ProcessSpec("sleeper", SLEEPER))
+def test_a_dying_child_is_reported_and_the_rest_stopped(tmp_path):
+    with Supervisor(env={}, grace_s=10.0) as sup:
+        sleeper = sup.start(ProcessSpec("sleeper", child(SLEEPER, tmp_path / "ready")))
+        wait_ready(tmp_path / "ready")
         sup.start(ProcessSpec("crasher", [sys.executable, "-c", "raise SystemExit(3)"]))
-        exited = sup.wait(timeout_s=20)
+        exited = sup.wait(timeout_s=30)
         assert exited is not None and (exited.name, exited.code) == ("crasher", 3)
         codes = sup.stop()
-    # Stopped by our SIGINT: -SIGINT, or 1 when it lands while Python is still starting up.
-    assert codes["sleeper"] in (-signal.SIGINT, 1)
+    assert codes["sleeper"] == -signal.SIGINT  # stopped by our SIGINT, the first and gentlest step
     assert sleeper.poll() is not None
 
 
-def test_stop_escalates_when_sigint_is_ignored():
+def test_stop_escalates_when_sigint_is_ignored(tmp_path):
     with Supervisor(env={}, grace_s=0.5) as sup:
-        proc = sup.start(ProcessSpec("stubborn", IGNORES_SIGINT))
-        t0 = time.monotonic()
-        while proc.poll() is None and time.monotonic() - t0 < 10:
-            time.sleep(0.05)
-            if sup.wait(timeout_s=0.5) is None:
-                break
+        sup.start(ProcessSpec("stubborn", child(IGNORES_SIGINT, tmp_path / "ready")))
+        wait_ready(tmp_path / "ready")
         codes = sup.stop()
     assert codes["stubborn"] == -signal.SIGTERM
 
 
-def test_wait_returns_on_a_stop_request():
+def test_wait_returns_on_a_stop_request(tmp_path):
     with Supervisor(env={}) as sup:
-        sup.start(ProcessSpec("sleeper", SLEEPER))
+        sup.start(ProcessSpec("sleeper", child(SLEEPER, tmp_path / "ready")))
         sup.request_stop()
         assert sup.wait(timeout_s=10) is None

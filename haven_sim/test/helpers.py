@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from haven_sim.sim.world import World, parse_world
+from haven_sim.sim.world import World
+from haven_sim.sim.world_file import parse_world
 
 
 def box_world(size: float = 10.0, thickness: float = 0.1, **extra: Any) -> World:

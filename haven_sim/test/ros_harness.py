@@ -22,8 +22,8 @@ import rclpy
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.publisher import Publisher
-from rclpy.subscription import Subscription
 from rclpy.qos import QoSProfile
+from rclpy.subscription import Subscription
 
 _counter = itertools.count()
 

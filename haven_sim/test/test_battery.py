@@ -3,10 +3,10 @@ import math
 import pytest
 from helpers import box_world
 
-from haven_sim.sim.battery import Battery, BatteryParams, PowerStatus
-from haven_sim.sim.commands import VelocityLimits
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Twist2D
+from haven_sim.sim.battery import Battery, BatteryParams, PowerStatus
+from haven_sim.sim.commands import VelocityLimits
 from haven_sim.sim.simulation import SimConfig, Simulation
 
 

@@ -2,8 +2,8 @@ import math
 
 import pytest
 
-from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits, clamp, ramp
 from haven_sim.common.geometry import Twist2D
+from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits, clamp, ramp
 
 
 def test_clamp_to_turtlebot_limits():

@@ -6,14 +6,15 @@ import numpy as np
 import pytest
 from helpers import box_world, drive_closed_loop
 
-from haven_sim.nav.follower import FollowerParams, PathFollower, Status
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D, Twist2D
-from haven_sim.sim.occupancy import rasterise
+from haven_sim.nav.follower import FollowerParams, PathFollower, Status
 from haven_sim.nav.path_style import shape_path
 from haven_sim.nav.planner import GridPlanner
+from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.simulation import Simulation
-from haven_sim.sim.world import load_world, packaged_world
+from haven_sim.sim.world import packaged_world
+from haven_sim.sim.world_file import load_world
 
 
 def contacts(sim):
@@ -114,4 +115,5 @@ def test_projection_at_the_very_end_of_a_piece_does_not_fail():
     for x in (0.5, 0.97, 1.0, 1.0):
         follower.command(Pose2D(x, 0.0, 0.0))
     follower._progress = 10.0  # beyond the piece's end
-    assert follower.command(Pose2D(1.0, 0.0, 0.0)) is not None
+    cmd = follower.command(Pose2D(1.0, 0.0, 0.0))
+    assert follower.status is Status.ROTATING and cmd.vx == 0.0 and cmd.wz > 0  # on to the rotation that follows

@@ -5,9 +5,9 @@ import math
 import pytest
 from helpers import corridor, drive_closed_loop
 
-from haven_sim.nav.follower import PathFollower, Status
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.nav.follower import PathFollower, Status
 from haven_sim.nav.navigator import Navigator, NavigatorParams, NavState
 from haven_sim.sim.simulation import Simulation
 

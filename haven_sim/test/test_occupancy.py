@@ -3,7 +3,8 @@ import pytest
 from helpers import box_world
 
 from haven_sim.sim.occupancy import OCCUPIED, rasterise
-from haven_sim.sim.world import load_world, packaged_world
+from haven_sim.sim.world import packaged_world
+from haven_sim.sim.world_file import load_world
 
 
 def test_grid_covers_world_with_padding_and_marks_walls():

@@ -7,8 +7,8 @@ from helpers import box_world
 
 from haven_sim.common.bodies import ROBOT_BODY
 from haven_sim.common.events import EventKind
-from haven_sim.sim.commands import VelocityLimits
 from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.sim.commands import VelocityLimits
 from haven_sim.sim.simulation import SimConfig, Simulation
 
 INSTANT = VelocityLimits(max_linear_accel_mps2=1e6, max_angular_accel_rps2=1e6)

@@ -7,9 +7,10 @@ import pytest
 from helpers import box_world
 
 from haven_sim.common.geometry import distance_point_to_edges
-from haven_sim.sim.occupancy import OccupancyGridData, rasterise
 from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError, convex_corners, inflate_square
-from haven_sim.sim.world import load_world, packaged_world
+from haven_sim.sim.occupancy import OccupancyGridData, rasterise
+from haven_sim.sim.world import packaged_world
+from haven_sim.sim.world_file import load_world
 
 
 def min_clearance(world, points):

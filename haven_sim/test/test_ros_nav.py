@@ -10,9 +10,13 @@ from std_msgs.msg import Bool, String
 
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
+from haven_sim.common.paths import SegmentKind, classify
+from haven_sim.nav.navigator import Navigator
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
-from haven_sim.common.paths import SegmentKind, classify
+from haven_sim.sim.occupancy import rasterise
+from haven_sim.sim.world import packaged_world
+from haven_sim.sim.world_file import load_world
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
 SIM, MUX, PLANNER, CONTROLLER = (f"haven_sim.nodes.{n}" for n in ("sim_node", "mux_node", "planner_node", "controller_node"))
@@ -49,7 +53,11 @@ def test_goal_pose_to_plan_to_arrival_without_touching_walls(ros):
     assert ros.spin_until(lambda: events_of(events, EventKind.GOAL_REACHED), 120)
     path = conv.path_from_msg(plans[-1])
     assert plans[-1].header.frame_id == "map"
-    assert [s.kind for s in classify(path)][0] in (SegmentKind.ARC, SegmentKind.ROTATE, SegmentKind.STRAIGHT)
+    # The node publishes exactly what the planner core makes of the same map, start and goal.
+    world = load_world(packaged_world("small_test"))
+    expected = Navigator(rasterise(world)).set_goal(world.robot_start, Pose2D(7.2, 4.5, math.pi / 2), 0.0).path
+    assert len(path) == len(expected) and all(a.distance_to(b) < 1e-6 and abs(a.yaw - b.yaw) < 1e-6 for a, b in zip(path, expected))
+    assert {s.kind for s in classify(path)} >= {SegmentKind.STRAIGHT, SegmentKind.ROTATE}  # a door to go through, a yaw to end on
     p = conv.pose_from_msg(odom[-1].pose.pose)
     assert math.hypot(p.x - 7.2, p.y - 4.5) <= 0.1
     assert abs(math.remainder(p.yaw - math.pi / 2, 2 * math.pi)) <= math.radians(6)

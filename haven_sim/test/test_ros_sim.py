@@ -6,6 +6,7 @@ import signal
 import pytest
 from geometry_msgs.msg import PoseArray, Twist
 from nav_msgs.msg import OccupancyGrid, Odometry
+from ros_harness import tracebacks
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import Bool, String
@@ -14,8 +15,8 @@ from std_srvs.srv import Trigger
 from haven_sim.common.events import EventKind
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
-from ros_harness import tracebacks
-from haven_sim.sim.world import load_world, packaged_world
+from haven_sim.sim.world import packaged_world
+from haven_sim.sim.world_file import load_world
 
 pytestmark = pytest.mark.ros
 SIM = "haven_sim.nodes.sim_node"

@@ -11,7 +11,8 @@ from haven_sim.common.geometry import Pose2D, distance_point_to_edges, points_in
 from haven_sim.sim.physics import ROBOT
 from haven_sim.sim.scan import LaserScanner, ScanParams
 from haven_sim.sim.simulation import Simulation
-from haven_sim.sim.world import load_world, packaged_world
+from haven_sim.sim.world import packaged_world
+from haven_sim.sim.world_file import load_world
 
 
 def beam(params, angle):

@@ -1,7 +1,8 @@
 import pytest
 import yaml
 
-from haven_sim.sim.world import WorldError, load_world, packaged_world, resolve_world_path
+from haven_sim.sim.world import WorldError, packaged_world, resolve_world_path
+from haven_sim.sim.world_file import load_world
 
 
 def test_packaged_world_loads():
@@ -83,7 +84,7 @@ def test_yaml_syntax_error_and_missing_file(tmp_path):
 def test_obstructions_are_solid_until_removed():
     d = _base()
     d["obstructions"] = [{"id": "door", "segment": [[4, 1.9], [4, 3.1]], "thickness": 0.05, "removed_when_human_reaches": "west"}]
-    from haven_sim.sim.world import parse_world
+    from haven_sim.sim.world_file import parse_world
 
     w = parse_world(d)
     assert len(w.solid_shapes()) == len(w.solid_shapes(frozenset({"door"}))) + 1

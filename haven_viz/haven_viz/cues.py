@@ -252,7 +252,9 @@ class ArCues:
             out += self._battery_markers(robot, level)
         return CueFrame(out, CueState(toggles, path, side, text, level))
 
-    def markers(self, robot: Pose2D, humans: Sequence[Point] = (), battery_level: float | None = None, thought: str = "", toggles: Toggles = Toggles()) -> list[MarkerSpec]:
+    def markers(
+        self, robot: Pose2D, humans: Sequence[Point] = (), battery_level: float | None = None, thought: str = "", toggles: Toggles = Toggles()
+    ) -> list[MarkerSpec]:
         return self.frame(robot, humans, battery_level, thought, toggles).markers
 
     def _path_markers(self) -> list[MarkerSpec]:

@@ -26,7 +26,10 @@ from haven_viz.markers import MarkerSpec, Shape  # noqa: E402
 from haven_viz.world_markers import COLORS  # noqa: E402
 
 # Drawing order: floor items, then path, then bodies, then what floats above.
-_LAYER = {"gem_areas": 1, "charging_base": 1, "rooms": 2, "path_projection": 3, "gems": 4, "robot": 5, "humans": 5, "turn_signals": 6, BATTERY_NS: 7, THOUGHT_NS: 8, "human_names": 8}
+_LAYER = {
+    "gem_areas": 1, "charging_base": 1, "rooms": 2, "path_projection": 3, "gems": 4, "robot": 5, "humans": 5, "turn_signals": 6,
+    BATTERY_NS: 7, THOUGHT_NS: 8, "human_names": 8,
+}
 
 
 def _rgb(c: Sequence[float]) -> tuple[float, float, float, float]:

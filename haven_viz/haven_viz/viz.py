@@ -28,7 +28,6 @@ from haven_viz.markers import MarkerDiff
 from haven_viz.world_markers import body_markers, world_markers
 
 
-
 @dataclass(frozen=True)
 class VizConfig:
     toggles: Toggles = group(Toggles)

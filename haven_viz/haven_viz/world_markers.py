@@ -81,7 +81,8 @@ def world_markers(world: World, collected: Collection[str] = (), removed: Collec
         if o.id not in removed:
             out.append(MarkerSpec("obstructions", i, Shape.TRIANGLE_LIST, color=COLORS["obstruction"], points=_prism(o.shape.polygon, WALL_HEIGHT_M)))
     for i, r in enumerate(world.rooms):
-        out.append(MarkerSpec("rooms", i, Shape.TEXT_VIEW_FACING, (r.centre[0], r.centre[1], 0.05), 0.0, (0.0, 0.0, 0.3), COLORS["room_text"], r.name))
+        x, y = r.centre
+        out.append(MarkerSpec("rooms", i, Shape.TEXT_VIEW_FACING, (x, y, 0.05), 0.0, (0.0, 0.0, 0.3), COLORS["room_text"], r.name))
     for i, g in enumerate(world.gems):
         if g.id in collected:
             continue

@@ -6,7 +6,7 @@ import pytest
 
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.path_style import shape_path
-from haven_viz.cues import PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS, ArCues, CueParams, Toggles, battery_color
+from haven_viz.cues import BATTERY_NS, PATH_NS, SIGNAL_NS, THOUGHT_NS, ArCues, CueParams, Toggles, battery_color
 from haven_viz.markers import MarkerDiff, Shape
 
 STRAIGHT = [Pose2D(x * 0.4, 0.0, 0.0) for x in range(11)]  # 4 m along x

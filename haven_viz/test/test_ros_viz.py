@@ -10,8 +10,8 @@ from rcl_interfaces.srv import SetParameters
 from std_msgs.msg import String
 from visualization_msgs.msg import Marker, MarkerArray
 
-from haven_sim.common.geometry import Pose2D
 from haven_sim.common.events import EventKind
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_viz.markers import MarkerSpec, Shape
@@ -73,7 +73,8 @@ def test_cues_in_the_running_suite(ros):
     # The study condition, switched at run time: the path projection goes away with explicit DELETEs.
     client = ros.node.create_client(SetParameters, "/viz/set_parameters")
     assert client.wait_for_service(timeout_sec=10)
-    req = SetParameters.Request(parameters=[ParameterMsg(name="path_projection", value=ParameterValue(type=ParameterType.PARAMETER_BOOL, bool_value=False))])
+    off = ParameterValue(type=ParameterType.PARAMETER_BOOL, bool_value=False)
+    req = SetParameters.Request(parameters=[ParameterMsg(name="path_projection", value=off)])
     future = client.call_async(req)
     ros.spin_until(future.done, 10)
     assert future.result().results[0].successful
@@ -81,7 +82,8 @@ def test_cues_in_the_running_suite(ros):
     assert any(ns == "path_projection" for ns, _ in live.deleted)
     toggled = [e for e in map(conv.event_from_msg, events) if e.kind is EventKind.CUE_TOGGLED]
     assert toggled and toggled[0]["cue"] == "path_projection" and toggled[0]["on"] is False
-    bad = SetParameters.Request(parameters=[ParameterMsg(name="marker_size_m", value=ParameterValue(type=ParameterType.PARAMETER_DOUBLE, double_value=0.5))])
+    half = ParameterValue(type=ParameterType.PARAMETER_DOUBLE, double_value=0.5)
+    bad = SetParameters.Request(parameters=[ParameterMsg(name="marker_size_m", value=half)])
     future = client.call_async(bad)
     ros.spin_until(future.done, 10)
     assert not future.result().results[0].successful and "start-up" in future.result().results[0].reason

@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 
 from haven_sim.common.geometry import Pose2D, polygon_area
-from haven_sim.sim.world import load_world, packaged_world
+from haven_sim.sim.world import packaged_world
+from haven_sim.sim.world_file import load_world
 from haven_viz.cues import ArCues
 from haven_viz.render import render_scene
 from haven_viz.world_markers import COLORS, body_markers, triangulate, world_markers

@@ -9,8 +9,8 @@ import time
 
 from rclpy.node import Node
 
-from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_scenarios.nodes.raw_topics import RawTopics
+from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_sim.nodes.runner import run_node
 
 

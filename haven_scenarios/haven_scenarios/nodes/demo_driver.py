@@ -7,6 +7,7 @@ Shows the pattern for teleoperating HAVEN's robot from any node: publish geometr
 from __future__ import annotations
 
 import json
+import statistics
 import sys
 
 from geometry_msgs.msg import Twist
@@ -30,8 +31,8 @@ class DemoDriver(Node):
         laps = self.declare_parameter("laps", 1).value
         self.driver = SquareDriver(side_m=side, laps=laps)
         self.pose: Pose2D | None = None
-        self.first_odom_t: float | None = None
-        self.odom_count = 0
+        self.last_odom_t: float | None = None
+        self.odom_gaps: list[float] = []  # sim time between consecutive /odom stamps
         self.battery = None
         self.contacts = 0
         self.pub = self.create_publisher(Twist, "cmd_vel_teleop", qos.RELIABLE)
@@ -43,10 +44,9 @@ class DemoDriver(Node):
     def _on_odom(self, msg: Odometry) -> None:
         self.pose = conv.pose_from_msg(msg.pose.pose)
         t = conv.time_from_msg(msg.header.stamp)
-        if self.first_odom_t is None:
-            self.first_odom_t = t
+        if self.last_odom_t is not None:
+            self.odom_gaps.append(t - self.last_odom_t)
         self.last_odom_t = t
-        self.odom_count += 1
 
     def _on_battery(self, msg: BatteryState) -> None:
         self.battery = msg.percentage
@@ -63,14 +63,14 @@ class DemoDriver(Node):
             return
         self.pub.publish(conv.twist_msg(self.driver.command(self.pose)))
         if self.driver.done:
-            span = (self.last_odom_t - self.first_odom_t) if self.first_odom_t is not None else 0.0
+            gap = statistics.median(self.odom_gaps) if self.odom_gaps else 0.0
             summary = {
                 "legs": self.driver.legs_done,
                 "distance_m": round(self.driver.distance_m, 3),
                 "final_pose": [round(v, 3) for v in self.pose],
                 "battery": None if self.battery is None else round(self.battery, 4),
                 "contacts": self.contacts,
-                "odom_rate_hz_sim": round((self.odom_count - 1) / span, 2) if span > 0 else None,
+                "odom_rate_hz_sim": round(1.0 / gap, 2) if gap > 0 else None,  # from the stamps: one per physics step
             }
             battery = "n/a" if self.battery is None else f"{100 * self.battery:.1f} %"
             print(

@@ -18,7 +18,10 @@ from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
 
-SHOWN = {EventKind.PLAN_MADE, EventKind.PLAN_REFUSED, EventKind.WAITING, EventKind.RESUMED, EventKind.REPLANNED, EventKind.REVERTED, EventKind.GOAL_REACHED}
+SHOWN = {
+    EventKind.PLAN_MADE, EventKind.PLAN_REFUSED, EventKind.WAITING, EventKind.RESUMED,
+    EventKind.REPLANNED, EventKind.REVERTED, EventKind.GOAL_REACHED,
+}
 
 
 class GoalClient(Node):

@@ -7,6 +7,7 @@ subscribed with the durability and reliability their publishers offer.
 
 from __future__ import annotations
 
+import functools
 import importlib
 from collections.abc import Callable
 from typing import Any
@@ -91,4 +92,4 @@ class RawTopics:
             return
         if not self.add(topic, msgtype, profile.durability == DurabilityPolicy.TRANSIENT_LOCAL):
             return
-        self.node.create_subscription(cls, topic, lambda data, t=topic: self.on_message(t, data), profile, raw=True)
+        self.node.create_subscription(cls, topic, functools.partial(self.on_message, topic), profile, raw=True)

@@ -14,8 +14,8 @@ from rclpy.node import Node
 from rclpy.serialization import deserialize_message
 from std_msgs.msg import String
 
-from haven_scenarios.record.bag import BagWriter
 from haven_scenarios.nodes.raw_topics import RawTopics
+from haven_scenarios.record.bag import BagWriter
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes.runner import run_node
 

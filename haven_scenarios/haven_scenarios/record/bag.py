@@ -78,7 +78,8 @@ def _payload(topic: str, msg: Any, human_ids: Sequence[str]) -> Any:
     if topic == topics.HUMANS:
         return name_humans([_pose(p) for p in msg.poses], human_ids)
     if topic == topics.BATTERY:
-        return BatteryReading(float(msg.percentage), PowerStatus.DISCHARGING, float(msg.voltage), float(msg.charge), float(msg.capacity), float("nan"))
+        level = float(msg.percentage)
+        return BatteryReading(level, PowerStatus.DISCHARGING, float(msg.voltage), float(msg.charge), float(msg.capacity), float("nan"))
     if topic == topics.CUE_STATE:
         return CueState.from_json(msg.data)[1]
     return Event.from_json(msg.data)

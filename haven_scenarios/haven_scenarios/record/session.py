@@ -23,9 +23,11 @@ import numpy as np
 
 from haven_scenarios.record.bag import read_log
 from haven_scenarios.record.metrics import compute
+from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import load_scenario
 from haven_sim.common.events import EventKind
-from haven_sim.sim.world import World, load_world
+from haven_sim.sim.world import World
+from haven_sim.sim.world_file import load_world
 from haven_viz.render import render_scene
 from haven_viz.world_markers import world_markers
 
@@ -78,7 +80,7 @@ def analyse(folder_or_bag: Path) -> tuple[dict[str, Any], World | None]:
         human_ids = [h.id for h in world.humans]
     log = read_log(bag, human_ids)
     ends = [e for e in log.events if e.kind is EventKind.TRIAL_END]
-    metrics = compute(log, str(info.get("scenario", "")), ends[-1]["reason"] if ends else "interrupted")
+    metrics = compute(log, str(info.get("scenario", "")), ends[-1]["reason"] if ends else EndReason.INTERRUPTED)
     for key in ("participant", "condition", "seed"):
         if key in info:
             metrics[key] = info[key]

@@ -11,6 +11,7 @@ from typing import Any, TextIO
 
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.trial import TrialResult, run_trial
+from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario
 from haven_viz.cues import Toggles
 
@@ -56,7 +57,7 @@ def run_batch(
 
 def summary(rows: Sequence[dict[str, Any]]) -> str:
     n = len(rows)
-    done = sum(1 for r in rows if r["end_reason"] == "completed")
+    done = sum(1 for r in rows if r["end_reason"] == EndReason.COMPLETED)
     times = [r["robot_time_to_finish_s"] for r in rows if r["robot_time_to_finish_s"] is not None]
     mean_t = sum(times) / len(times) if times else float("nan")
     contacts = sum(r["human_contacts"] for r in rows)

@@ -18,6 +18,7 @@ from haven_scenarios.record.log import LogBuilder, TrialLog
 from haven_scenarios.record.metrics import compute
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.study.director import TrialDirector
+from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import topics
 from haven_sim.nav.controller import ControllerComponent
@@ -87,7 +88,7 @@ class Trial:
         step_s = self.sim.config.sim.step_s
         limit = math.ceil((self.scenario.timeout_s + GRACE_S) / step_s)
         self.loop.run_until(lambda: self.director.ended is not None, limit)
-        reason = self.director.ended or "interrupted"
+        reason = self.director.ended or EndReason.INTERRUPTED
         log = self.recording.log
         metrics = compute(log, self.scenario.name, reason)
         metrics.update(seed=self.seed, condition=condition_name(self.toggles))

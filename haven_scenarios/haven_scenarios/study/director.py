@@ -17,11 +17,11 @@ from typing import Any
 
 from haven_scenarios.study.mission import Mission, MissionOutput, Phase, Target
 from haven_scenarios.study.participants import HUMAN_PLANNER, Participant, Stop, make_walker, shuffled_nearest
-from haven_scenarios.study.rules import EndRule, GemRules, ObstructionRules, RouteRules
+from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventKind, Source, event
-from haven_sim.common.geometry import Point, Pose2D, Twist2D
+from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.nav.planner import GridPlanner, PlanningError
@@ -119,7 +119,7 @@ class TrialDirector:
         self.empty_since: float | None = None  # when the battery ran out (the robot cannot drive)
         self.still_since: float | None = None  # when the robot last stopped moving
         self.start_time: float | None = None
-        self.ended: str | None = None
+        self.ended: EndReason | None = None
 
     @property
     def period_s(self) -> float:
@@ -260,7 +260,7 @@ class TrialDirector:
         all_done = mission.phase is Phase.DONE and self.humans_done >= set(self.participants)
         elapsed = now - (self.start_time if self.start_time is not None else now)
         stranded = self.empty_since is not None and now - self.empty_since > STRANDED_S
-        self.ended = "battery_empty" if stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)
+        self.ended = EndReason.BATTERY_EMPTY if stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)
         if self.ended is not None:
             out.append(self._event(EventKind.TRIAL_END, now, reason=self.ended))
         return out

@@ -65,6 +65,7 @@ class Walker:
         self.planner = planner
         self._waypoints: list[Point] = []
         self._arrived_at: float | None = None
+        self._progress_mark: tuple[float, float] | None = None  # (when, distance to the waypoint) at the last progress
         self.done = not self.stops
 
     def _plan(self, me: Pose2D) -> None:
@@ -120,12 +121,25 @@ class Walker:
                 self.done = not self.stops
             return Twist2D()
         self._arrived_at = None
-        if not self._waypoints:
+        if not self._waypoints or self._stuck(now, me):
             self._plan(me)
         while len(self._waypoints) > 1 and math.hypot(self._waypoints[0][0] - me.x, self._waypoints[0][1] - me.y) < 0.2:
             self._waypoints.pop(0)
         x, y = self._waypoints[0]
         return self._walk_to(me, x, y, self.speed)
+
+    def _stuck(self, now: float, me: Pose2D, window_s: float = 1.0, min_progress_m: float = 0.1) -> bool:
+        """No progress toward the current waypoint for `window_s` (pushed aside, caught on a corner):
+        time to plan again from where they are."""
+        x, y = self._waypoints[0]
+        d = math.hypot(x - me.x, y - me.y)
+        if self._progress_mark is None or d < self._progress_mark[1] - min_progress_m:
+            self._progress_mark = (now, d)
+            return False
+        if now - self._progress_mark[0] >= window_s:
+            self._progress_mark = None
+            return True
+        return False
 
 
 class Blocker(Walker):

@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
+from enum import StrEnum
 from typing import Any
 
 from haven_sim.common.events import Event, EventKind, Source, event
@@ -123,16 +124,26 @@ class ObstructionRules:
         return events
 
 
+class EndReason(StrEnum):
+    """Why a trial ended (`trial_end`'s reason, metrics' `end_reason`)."""
+
+    COMPLETED = "completed"
+    TIMEOUT = "timeout"
+    CONTACT = "contact"
+    BATTERY_EMPTY = "battery_empty"  # flat off the charging base
+    INTERRUPTED = "interrupted"  # stopped before a `trial_end` (Ctrl-C, a node died)
+
+
 @dataclass(frozen=True)
 class EndRule:
     timeout_s: float
     end_on_contact: bool = False
 
-    def reason(self, elapsed_s: float, all_done: bool, contact: bool) -> str | None:
+    def reason(self, elapsed_s: float, all_done: bool, contact: bool) -> EndReason | None:
         if all_done:
-            return "completed"
+            return EndReason.COMPLETED
         if self.end_on_contact and contact:
-            return "contact"
+            return EndReason.CONTACT
         if elapsed_s >= self.timeout_s:
-            return "timeout"
+            return EndReason.TIMEOUT
         return None

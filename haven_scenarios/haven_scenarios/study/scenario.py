@@ -20,6 +20,7 @@ Errors name the file and the key in one line (`ScenarioError`), like world files
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
@@ -27,12 +28,14 @@ from typing import Any
 
 import yaml
 
-from haven_sim.sim.world import World, WorldError, load_world
+from haven_sim.sim.world import World, WorldError
+from haven_sim.sim.world_file import load_world
 
 KINDS = ("hallway", "retrieval")
 MODELS = ("walker", "blocker", "yielder", "teleop")
 ORDERS = ("nearest", "random")
 BATTERY_MODES = ("off", "on_arrival", "continuous")
+MAX_WALKING_SPEED_MPS = 3.0
 
 
 class ScenarioError(ValueError):
@@ -103,87 +106,129 @@ def load_scenario(spec: str | Path) -> Scenario:
 
 
 def _parse(data: Any, source: str) -> Scenario:
-    def fail(key: str, msg: str) -> ScenarioError:
-        return ScenarioError(f"{source}: {key}: {msg}")
+    return _ScenarioParser(source).scenario(data)
 
-    def choice(value: Any, key: str, options: tuple[str, ...]) -> str:
-        if value not in options:
-            raise fail(key, f"must be one of {', '.join(options)}, got {value!r}")
-        return str(value)
 
-    def positive(value: Any, key: str) -> float:
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
-            raise fail(key, f"must be a positive number, got {value!r}")
+class _ScenarioParser:
+    """Reads the raw YAML tree; every error names the file and the key in one line."""
+
+    TOP = ("name", "world", "kind", "timeout_s", "end_on_contact", "robot", "humans", "dwell_time_s")
+
+    def __init__(self, source: str) -> None:
+        self.source = source
+
+    def fail(self, key: str, msg: str) -> ScenarioError:
+        return ScenarioError(f"{self.source}: {key}: {msg}")
+
+    def choice(self, value: Any, key: str, options: tuple[str, ...]) -> str:
+        if not isinstance(value, str) or value not in options:
+            raise self.fail(key, f"must be one of {', '.join(options)}, got {_short(value)}")
+        return value
+
+    def positive(self, value: Any, key: str) -> float:
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or not value > 0:
+            raise self.fail(key, f"must be a positive number, got {_short(value)}")
         return float(value)
 
-    if not isinstance(data, dict):
-        raise fail("name", "the scenario file must be a mapping")
-    allowed = {"name", "world", "kind", "timeout_s", "end_on_contact", "robot", "humans", "dwell_time_s"}
-    unknown = sorted(set(data) - allowed)
-    if unknown:
-        raise fail(unknown[0], f"unknown key (allowed: {', '.join(sorted(allowed))})")
-    for key in ("name", "world", "kind"):
-        if key not in data:
-            raise fail(key, "is required")
-    kind = choice(data["kind"], "kind", KINDS)
-    world_path = resolve_world(str(data["world"]))
-    try:
-        world = load_world(world_path)
-    except WorldError as e:
-        raise ScenarioError(f"{source}: world: {e}") from None
-    rooms = {r.name for r in world.rooms}
-    robot = data.get("robot") or {}
-    if not isinstance(robot, dict):
-        raise fail("robot", "must be a mapping")
-    route = tuple(str(r) for r in robot.get("route", ()))
-    for i, r in enumerate(route):
-        if r not in rooms:
-            raise fail(f"robot.route[{i}]", f"names no room of world '{world.name}' (rooms: {', '.join(sorted(rooms))})")
-    if kind == "hallway" and not route:
-        raise fail("robot.route", "a hallway scenario needs the robot's room route")
-    if kind == "retrieval" and not [g for g in world.gems if g.owner == "robot"]:
-        raise fail("world", f"world '{world.name}' has no robot gems to retrieve")
-    battery_raw = robot.get("battery") or {}
-    mode = battery_raw.get("mode", "off")
-    battery = BatteryPlan(
-        mode=choice("off" if mode is False else mode, "robot.battery.mode", BATTERY_MODES),  # YAML reads `off` as false
-        capacity_m=positive(battery_raw.get("capacity_m", 100.0), "robot.battery.capacity_m"),
-        charge_until=positive(battery_raw.get("charge_until", 1.0), "robot.battery.charge_until"),
-        safety_factor=positive(battery_raw.get("safety_factor", 1.2), "robot.battery.safety_factor"),
-    )
-    if battery.mode != "off" and world.charging_base is None:
-        raise fail("robot.battery.mode", f"needs a charging_base in world '{world.name}'")
-    humans = []
-    world_humans = {h.id for h in world.humans}
-    for i, h in enumerate(data.get("humans") or []):
-        key = f"humans[{i}]"
-        if not isinstance(h, dict) or "id" not in h:
-            raise fail(f"{key}.id", "is required")
-        if h["id"] not in world_humans:
-            raise fail(f"{key}.id", f"names no human of world '{world.name}' (humans: {', '.join(sorted(world_humans))})")
-        hroute = tuple(str(r) for r in h.get("route", ()))
-        for j, r in enumerate(hroute):
-            if r not in rooms:
-                raise fail(f"{key}.route[{j}]", f"names no room of world '{world.name}'")
-        humans.append(
-            HumanTask(
-                id=str(h["id"]),
-                model=choice(h.get("model", "walker"), f"{key}.model", MODELS),
-                route=hroute,
-                speed_mps=positive(h.get("speed_mps", 1.0), f"{key}.speed_mps"),
-            )
+    def mapping(self, value: Any, key: str, allowed: tuple[str, ...]) -> dict[str, Any]:
+        if value is None:
+            return {}
+        if not isinstance(value, dict):
+            raise self.fail(key, f"must be a mapping, got {type(value).__name__}")
+        unknown = sorted(str(k) for k in value if k not in allowed)
+        if unknown:
+            raise self.fail(f"{key}.{unknown[0]}" if key else unknown[0], f"unknown key (allowed: {', '.join(sorted(allowed))})")
+        return value
+
+    def names(self, value: Any, key: str, known: set[str], what: str) -> tuple[str, ...]:
+        """A list of names from `known` (rooms of the world)."""
+        if value is None:
+            return ()
+        if not isinstance(value, list):
+            raise self.fail(key, f"must be a list of {what} names, got {_short(value)}")
+        for i, name in enumerate(value):
+            if not isinstance(name, str) or name not in known:
+                raise self.fail(f"{key}[{i}]", f"names no {what} of the world (known: {', '.join(sorted(known))}), got {_short(name)}")
+        return tuple(value)
+
+    def scenario(self, data: Any) -> Scenario:
+        d = self.mapping(data, "", self.TOP) if isinstance(data, dict) else None
+        if d is None:
+            raise self.fail("name", "the scenario file must be a mapping")
+        for key in ("name", "world", "kind"):
+            if key not in d:
+                raise self.fail(key, "is required")
+            if key != "kind" and (not isinstance(d[key], str) or not d[key]):
+                raise self.fail(key, f"must be a non-empty string, got {_short(d[key])}")
+        kind = self.choice(d["kind"], "kind", KINDS)
+        world_path = resolve_world(d["world"])
+        try:
+            world = load_world(world_path)
+        except WorldError as e:
+            raise ScenarioError(f"{self.source}: world: {e}") from None
+        robot = self.mapping(d.get("robot"), "robot", ("route", "order", "battery"))
+        route = self.names(robot.get("route"), "robot.route", {r.name for r in world.rooms}, "room")
+        if kind == "hallway" and not route:
+            raise self.fail("robot.route", "a hallway scenario needs the robot's room route")
+        if kind == "retrieval" and not [g for g in world.gems if g.owner == "robot"]:
+            raise self.fail("world", f"world '{world.name}' has no robot gems to retrieve")
+        end_on_contact = d.get("end_on_contact", False)
+        if not isinstance(end_on_contact, bool):
+            raise self.fail("end_on_contact", f"must be true or false, got {_short(end_on_contact)}")
+        battery = self.battery(robot.get("battery"), world)
+        return Scenario(
+            name=d["name"],
+            kind=kind,
+            world=world,
+            world_path=str(world_path),
+            timeout_s=self.positive(d.get("timeout_s", 300.0), "timeout_s"),
+            robot_route=route,
+            robot_order=self.choice(robot.get("order", "nearest"), "robot.order", ORDERS),
+            battery=battery,
+            humans=self.humans(d.get("humans"), world),
+            dwell_time_s=self.positive(d.get("dwell_time_s", 3.0), "dwell_time_s"),
+            end_on_contact=end_on_contact,
+            source=self.source,
         )
-    return Scenario(
-        name=str(data["name"]),
-        kind=kind,
-        world=world,
-        world_path=str(world_path),
-        timeout_s=positive(data.get("timeout_s", 300.0), "timeout_s"),
-        robot_route=route,
-        robot_order=choice(robot.get("order", "nearest"), "robot.order", ORDERS),
-        battery=battery,
-        humans=tuple(humans),
-        dwell_time_s=positive(data.get("dwell_time_s", 3.0), "dwell_time_s"),
-        end_on_contact=bool(data.get("end_on_contact", False)),
-        source=source,
-    )
+
+    def battery(self, value: Any, world: World) -> BatteryPlan:
+        b = self.mapping(value, "robot.battery", ("mode", "capacity_m", "charge_until", "safety_factor"))
+        mode = b.get("mode", "off")
+        plan = BatteryPlan(
+            mode=self.choice("off" if mode is False else mode, "robot.battery.mode", BATTERY_MODES),  # YAML reads `off` as false
+            capacity_m=self.positive(b.get("capacity_m", 100.0), "robot.battery.capacity_m"),
+            charge_until=self.positive(b.get("charge_until", 1.0), "robot.battery.charge_until"),
+            safety_factor=self.positive(b.get("safety_factor", 1.2), "robot.battery.safety_factor"),
+        )
+        if plan.charge_until > 1.0:
+            raise self.fail("robot.battery.charge_until", f"must be at most 1 (a full battery), got {plan.charge_until:g}")
+        if plan.mode != "off" and world.charging_base is None:
+            raise self.fail("robot.battery.mode", f"needs a charging_base in world '{world.name}'")
+        return plan
+
+    def humans(self, value: Any, world: World) -> tuple[HumanTask, ...]:
+        if value is None:
+            return ()
+        if not isinstance(value, list):
+            raise self.fail("humans", f"must be a list, got {type(value).__name__}")
+        known = {h.id for h in world.humans}
+        rooms = {r.name for r in world.rooms}
+        out = []
+        for i, h in enumerate(value):
+            key = f"humans[{i}]"
+            m = self.mapping(h, key, ("id", "model", "route", "speed_mps"))
+            if "id" not in m:
+                raise self.fail(f"{key}.id", "is required")
+            if not isinstance(m["id"], str) or m["id"] not in known:
+                raise self.fail(f"{key}.id", f"names no human of world '{world.name}' (humans: {', '.join(sorted(known))}), got {_short(m['id'])}")
+            speed = self.positive(m.get("speed_mps", 1.0), f"{key}.speed_mps")
+            if speed > MAX_WALKING_SPEED_MPS:
+                raise self.fail(f"{key}.speed_mps", f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {speed:g}")
+            route = self.names(m.get("route"), f"{key}.route", rooms, "room")
+            out.append(HumanTask(m["id"], self.choice(m.get("model", "walker"), f"{key}.model", MODELS), route, speed))
+        return tuple(out)
+
+
+def _short(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 60 else text[:57] + "..."

@@ -1,7 +1,7 @@
-"""A closed-loop square for the foundation demo: drive a leg, turn 90 degrees left, repeat.
+"""A closed-loop square for `haven demo`: drive a leg, turn 90 degrees left, repeat.
 
-It is the smallest useful example of driving the robot from another node (through /cmd_vel_teleop)
-and stands in for the scenario runner until the navigation stack exists.
+The smallest useful example of driving the robot from another node through /cmd_vel_teleop (the
+velocity mux gives teleop priority over navigation); the demo driver node wraps it.
 """
 
 from __future__ import annotations

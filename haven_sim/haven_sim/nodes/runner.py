@@ -18,7 +18,6 @@ def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> 
     on stderr and exit code 2, never a traceback."""
     rclpy.init(args=list(args) if args is not None else None)
     node: Node | None = None
-    code = 0
     try:
         try:
             node = factory()
@@ -41,4 +40,4 @@ def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> 
         if node is not None:
             node.destroy_node()
         rclpy.try_shutdown()
-    return code
+    return 0

@@ -21,7 +21,8 @@ from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.runner import run_node
 from haven_sim.sim.pacer import Pacer
 from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig
-from haven_sim.sim.world import load_world, resolve_world_path
+from haven_sim.sim.world import resolve_world_path
+from haven_sim.sim.world_file import load_world
 
 
 class SimNode(ComponentNode):

@@ -59,7 +59,9 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
         topics.ODOM: TopicSpec(Odometry, lambda s, t: conv.odometry_msg(t, s, f.odom, f.base), conv.odometry_from_msg, qos.RELIABLE, qos.LATEST),
         topics.SCAN: TopicSpec(LaserScan, lambda s, t: conv.scan_msg(t, s, f.scan), _unsupported, qos.SENSOR, qos.SENSOR),
         topics.BATTERY: TopicSpec(BatteryState, lambda r, t: conv.battery_msg(t, r), conv.battery_from_msg, qos.RELIABLE, qos.LATEST),
-        topics.HUMANS: TopicSpec(PoseArray, lambda h, t: conv.humans_msg(t, h, f.map), lambda m: conv.humans_from_msg(m, human_ids), qos.RELIABLE, qos.LATEST),
+        topics.HUMANS: TopicSpec(
+            PoseArray, lambda h, t: conv.humans_msg(t, h, f.map), lambda m: conv.humans_from_msg(m, human_ids), qos.RELIABLE, qos.LATEST
+        ),
         topics.CMD_VEL: _twist(),
         topics.CMD_VEL_NAV: _twist(),
         topics.CMD_VEL_TELEOP: _twist(),

@@ -41,8 +41,8 @@ class CommandStatus(Enum):
 
 
 def clamp(cmd: Twist2D, limits: VelocityLimits) -> Twist2D:
-    v, l, w = limits.max_linear_speed_mps, limits.max_lateral_speed_mps, limits.max_angular_speed_rps
-    return Twist2D(max(-v, min(v, cmd.vx)), max(-l, min(l, cmd.vy)), max(-w, min(w, cmd.wz)))
+    v, side, w = limits.max_linear_speed_mps, limits.max_lateral_speed_mps, limits.max_angular_speed_rps
+    return Twist2D(max(-v, min(v, cmd.vx)), max(-side, min(side, cmd.vy)), max(-w, min(w, cmd.wz)))
 
 
 def _approach(current: float, target: float, max_step: float) -> float:

@@ -12,7 +12,6 @@ from haven_sim.common.geometry import points_in_polygon
 from haven_sim.sim.world import World
 
 OCCUPIED = 100
-FREE = 0
 
 
 @dataclass(frozen=True)

@@ -18,7 +18,7 @@ from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import FloatArray, Twist2D
 from haven_sim.common.params import group, param
 from haven_sim.common.state import RobotState
-from haven_sim.runtime.component import Handler, Message
+from haven_sim.runtime.component import Handler, Message, due, period_ns
 from haven_sim.sim.commands import CommandStatus
 from haven_sim.sim.frames import human_frames, robot_frame, static_frames
 from haven_sim.sim.scan import ScanParams
@@ -54,10 +54,6 @@ class ScanData:
     period_s: float
 
 
-def _every(physics_rate_hz: float, rate_hz: float) -> int:
-    return max(1, round(physics_rate_hz / rate_hz))
-
-
 class SimulatorComponent:
     name = "sim_node"
     unread: frozenset[str] = frozenset()
@@ -66,10 +62,8 @@ class SimulatorComponent:
     def __init__(self, world: World, config: SimulatorConfig | None = None) -> None:
         self.config = c = config or SimulatorConfig()
         self.sim = Simulation(world, c.sim)
-        rate = c.sim.physics_rate_hz
-        self._scan_every = _every(rate, c.sim.scan.rate_hz)
-        self._humans_every = _every(rate, c.humans_rate_hz)
-        self._battery_every = _every(rate, c.battery_rate_hz)
+        self._step_ns = c.sim.step_ns
+        self._scan_ns, self._humans_ns, self._battery_ns = (period_ns(r) for r in (c.sim.scan.rate_hz, c.humans_rate_hz, c.battery_rate_hz))
         self._map_due = self._static_due = True  # both go out with the first sense()
         self.warnings: list[str] = []
 
@@ -132,14 +126,14 @@ class SimulatorComponent:
         odom = sim.odometry_pose()
         out.append(Message(topics.ODOM, RobotState(odom, sim.robot_twist()), now))
         frames = [robot_frame(odom, c.odom_frame, c.base_frame)]
-        if k % self._humans_every == 0:
+        if due(k, self._step_ns, self._humans_ns):
             humans = sim.human_poses()
             frames += human_frames(humans, c.map_frame)
             out.append(Message(topics.HUMANS, humans, now))
         out.append(Message(topics.TF, frames, now))
-        if k % self._scan_every == 0 and topics.SCAN not in self.unread:
-            out.append(Message(topics.SCAN, ScanData(sim.scan(), c.sim.scan, self._scan_every * c.sim.step_s), now))
-        if k % self._battery_every == 0:
+        if due(k, self._step_ns, self._scan_ns) and topics.SCAN not in self.unread:
+            out.append(Message(topics.SCAN, ScanData(sim.scan(), c.sim.scan, 1.0 / c.sim.scan.rate_hz), now))
+        if due(k, self._step_ns, self._battery_ns):
             out.append(Message(topics.BATTERY, sim.battery_reading(), now))
         out += [Message(topics.EVENTS, e, now) for e in events]
         return out

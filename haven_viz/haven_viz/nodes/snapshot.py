@@ -10,7 +10,8 @@ from visualization_msgs.msg import Marker, MarkerArray
 
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
-from haven_sim.sim.world import load_world, resolve_world_path
+from haven_sim.sim.world import resolve_world_path
+from haven_sim.sim.world_file import load_world
 from haven_viz.markers import MarkerSpec
 from haven_viz.nodes.conversions import spec_from_msg
 from haven_viz.render import render_scene

@@ -18,7 +18,8 @@ from haven_sim.common import topics
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.runner import run_node
-from haven_sim.sim.world import load_world, resolve_world_path
+from haven_sim.sim.world import resolve_world_path
+from haven_sim.sim.world_file import load_world
 from haven_viz.cues import CUES
 from haven_viz.nodes.conversions import viz_specs
 from haven_viz.viz import VizComponent, VizConfig

@@ -1,0 +1,82 @@
+"""Commands that talk to a running suite: goto, snapshot, teleop, topics / echo / hz, bridge."""
+
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+from pathlib import Path
+
+from haven_scenarios.tools.commands.common import add_ros_options, environment, fail, positive, run_client
+from haven_scenarios.tools.supervisor import node_argv
+from haven_sim.sim.world import WorldError, resolve_world_path
+from haven_sim.sim.world_file import load_world
+
+
+def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    goto = sub.add_parser("goto", help="send a goal to a running suite (like RViz's 2D Goal Pose) and wait for it")
+    goto.add_argument("x", type=float)
+    goto.add_argument("y", type=float)
+    goto.add_argument("yaw", type=float, nargs="?", default=0.0, help="radians (default 0)")
+    goto.add_argument("--timeout", type=positive, default=120.0, help="sim seconds to wait for arrival")
+    goto.set_defaults(func=goto_cmd)
+    snap = sub.add_parser("snapshot", help="save what a running suite's viewers show as a top-down PNG")
+    snap.add_argument("output", nargs="?", default="haven_snapshot.png")
+    snap.add_argument("--world", default="small_test", help="the world the suite runs (for the walls)")
+    snap.set_defaults(func=snapshot_cmd)
+    teleop = sub.add_parser("teleop", help="drive a human avatar of a running trial from this terminal")
+    teleop.add_argument("human", nargs="?", default="h1")
+    teleop.add_argument("--speed", type=positive, default=1.0, help="walking speed, m/s (default 1)")
+    teleop.set_defaults(func=teleop_cmd)
+    for name, text in (("topics", "list the graph's topics with types and publisher/subscriber counts"),
+                       ("echo", "print the messages on a topic"), ("hz", "measure a topic's message rate")):
+        g = sub.add_parser(name, help=text + " (for installs without the ros2 command)")
+        if name != "topics":
+            g.add_argument("topic")
+        g.add_argument("--count", type=int, default=0, help=argparse.SUPPRESS if name != "echo" else "stop after N messages")
+        g.set_defaults(func=graph_cmd)
+    bridge = sub.add_parser("bridge", help="relay the running suite's topics to a Foxglove WebSocket server")
+    bridge.add_argument("--host", default="127.0.0.1", help="address to bind (default 127.0.0.1: this machine only)")
+    bridge.add_argument("--port", type=int, default=8765)
+    bridge.add_argument("--topics", nargs="+", default=None, help="only these topics (default: every topic)")
+    bridge.set_defaults(func=bridge_cmd)
+    for p in (goto, snap, teleop, bridge, *(sub.choices[n] for n in ("topics", "echo", "hz"))):
+        add_ros_options(p)
+
+
+def goto_cmd(args: argparse.Namespace) -> int:
+    goal = {"x": args.x, "y": args.y, "yaw": args.yaw, "timeout_s": args.timeout, "use_sim_time": True}
+    return run_client(args, "goal_client", "haven_scenarios.nodes.goal_client", goal)
+
+
+def snapshot_cmd(args: argparse.Namespace) -> int:
+    try:
+        world = str(resolve_world_path(args.world))
+        load_world(world)
+    except WorldError as e:
+        return fail(str(e))
+    return run_client(args, "snapshot", "haven_viz.nodes.snapshot", {"world": world, "output": str(Path(args.output).resolve())})
+
+
+def _call(argv: list[str], args: argparse.Namespace) -> int:
+    """In this terminal's process group, so that it reads the keyboard; Ctrl-C ends it."""
+    try:
+        return subprocess.call(argv, env=environment(args))
+    except KeyboardInterrupt:
+        return 0
+
+
+def teleop_cmd(args: argparse.Namespace) -> int:
+    return _call(node_argv("haven_scenarios.nodes.keyboard_teleop", {"human": args.human, "speed_mps": args.speed}), args)
+
+
+def graph_cmd(args: argparse.Namespace) -> int:
+    argv = [sys.executable, "-m", "haven_scenarios.nodes.graph_tools", args.command]
+    argv += [args.topic] if args.command != "topics" else []
+    argv += ["--count", str(args.count)] if args.count else []
+    return _call(argv, args)
+
+
+def bridge_cmd(args: argparse.Namespace) -> int:
+    extra = ["-p", f"topics:=[{','.join(args.topics)}]"] if args.topics else []
+    return run_client(args, "bridge", "haven_scenarios.nodes.bridge", {"host": args.host, "port": args.port}, extra)

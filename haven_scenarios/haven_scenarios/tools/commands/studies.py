@@ -1,0 +1,60 @@
+"""`haven batch` (simulated trials without ROS) and `haven report` (metrics from recordings)."""
+
+from __future__ import annotations
+
+import argparse
+import time
+from pathlib import Path
+
+from haven_scenarios.record.session import report_csv
+from haven_scenarios.run.batch import progress_bar, run_batch, summary
+from haven_scenarios.run.suite import load_suite_config
+from haven_scenarios.run.trial import condition_name, parse_condition
+from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
+from haven_scenarios.tools.commands.common import fail
+
+CONDITION_HELP = "cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator"
+
+
+def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    report = sub.add_parser("report", help="recompute metrics from session folders or bags into one CSV")
+    report.add_argument("paths", nargs="+", type=Path)
+    report.add_argument("--out", type=Path, default=Path("report.csv"))
+    report.set_defaults(func=report_cmd)
+    batch = sub.add_parser("batch", help="run many simulated trials without ROS, one CSV row per trial")
+    batch.add_argument("scenario", help=f"a shipped scenario ({', '.join(scenario_names())}) or a scenario YAML")
+    batch.add_argument("--trials", type=int, default=10)
+    batch.add_argument("--seed", type=int, default=0)
+    batch.add_argument("--condition", nargs="+", default=["all"], metavar="CUE", help=CONDITION_HELP)
+    batch.add_argument("--out", default=None, help="CSV path (default: sessions/batch_<scenario>_<time>.csv)")
+    batch.add_argument("--params-file", default=None, help="ROS parameter YAML (the same file `haven run` takes)")
+    batch.set_defaults(func=batch_cmd)
+
+
+def report_cmd(args: argparse.Namespace) -> int:
+    missing = [p for p in args.paths if not p.exists()]
+    if missing:
+        return fail(f"{missing[0]}: no such session folder or bag")
+    rows = report_csv(args.paths, args.out)
+    print(f"haven: {len(rows)} session(s) -> {args.out}")
+    return 0
+
+
+def batch_cmd(args: argparse.Namespace) -> int:
+    try:
+        scenario = load_scenario(args.scenario)
+        toggles = parse_condition(args.condition)
+        if args.trials < 1:
+            raise ValueError(f"--trials must be at least 1, got {args.trials}")
+        if any(h.model == "teleop" for h in scenario.humans):
+            raise ValueError(f"scenario {scenario.name} has a teleoperated participant: run it with `haven run`")
+        suite = load_suite_config(args.params_file)
+    except (ScenarioError, ValueError) as e:
+        return fail(str(e))
+    out = Path(args.out) if args.out else Path("sessions") / f"batch_{scenario.name}_{time.strftime('%Y%m%d_%H%M%S')}.csv"
+    started = time.monotonic()
+    progress_bar(0, args.trials, started)
+    rows = run_batch(scenario, args.trials, args.seed, toggles, out, lambda i, _: progress_bar(i + 1, args.trials, started), suite)
+    print(f"haven: {scenario.name}, condition {condition_name(toggles)}: {summary(rows)}")
+    print(f"haven: wrote {out}")
+    return 0

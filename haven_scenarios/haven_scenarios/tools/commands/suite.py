@@ -1,0 +1,67 @@
+"""`haven sim` (the node suite until Ctrl-C) and `haven demo` (the suite plus a node driving a square)."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from haven_scenarios.tools.commands.common import (
+    add_ros_options,
+    add_suite_options,
+    environment,
+    fail,
+    params_file,
+    positive,
+    suite_specs,
+)
+from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
+from haven_sim.sim.world import WorldError, resolve_world_path
+from haven_sim.sim.world_file import load_world
+
+
+def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    sim = sub.add_parser("sim", help="run the simulator, velocity mux, planner, controller and viz until Ctrl-C")
+    _suite_arguments(sim, rtf=1.0)
+    sim.add_argument("--duration", type=positive, default=None, help="stop after this many wall seconds")
+    sim.set_defaults(func=run_suite)
+    demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
+    _suite_arguments(demo, rtf=4.0)
+    demo.add_argument("--laps", type=int, default=1)
+    demo.set_defaults(func=run_suite)
+
+
+def _suite_arguments(p: argparse.ArgumentParser, rtf: float) -> None:
+    p.add_argument("--world", default="small_test", help="packaged world name or world YAML path (default: small_test)")
+    p.add_argument("--rtf", type=positive, default=rtf, help=f"real-time factor of the simulation (default: {rtf:g})")
+    add_suite_options(p)
+    add_ros_options(p)
+
+
+def run_suite(args: argparse.Namespace) -> int:
+    try:
+        world = str(resolve_world_path(args.world))
+        load_world(world)  # fail before starting anything
+    except WorldError as e:
+        return fail(str(e))
+    specs = suite_specs({"sim": {"world": world, "real_time_factor": args.rtf}, "viz": {"world": world}}, params_file(args), args.without)
+    until, timeout = None, getattr(args, "duration", None)
+    if args.command == "demo":
+        specs.append(ProcessSpec("demo_driver", node_argv("haven_scenarios.nodes.demo_driver", {"use_sim_time": True, "laps": args.laps})))
+        until, timeout = "demo_driver", 300.0
+    with Supervisor(environment(args)) as sup:
+        sup.install_signal_handlers()
+        for spec in specs:
+            sup.start(spec)
+        print(f"haven: started {', '.join(f'{n} (pid {p})' for n, p in sup.pids().items())}; Ctrl-C stops all", flush=True)
+        exited = sup.wait(timeout_s=timeout, until_exit_of=until)
+        codes = sup.stop()
+    if exited is not None and not (exited.name == until and exited.code == 0):
+        print(f"haven: {exited.name} exited with code {exited.code}; stopped the others", file=sys.stderr)
+        return exited.code or 1
+    if until is not None and exited is None:
+        print(f"haven: {until} did not finish; stopped everything", file=sys.stderr)
+        return 1
+    bad = {n: c for n, c in codes.items() if c not in (0, -2)}
+    if bad and until is None:
+        print(f"haven: unclean exit codes: {bad}", file=sys.stderr)
+    return 0

@@ -1,0 +1,83 @@
+"""The trial director as the scenario node runs it: start, goals, control through topics, the end."""
+
+from dataclasses import replace
+
+from haven_scenarios.study.director import TrialDirector
+from haven_scenarios.study.rules import EndReason
+from haven_scenarios.study.scenario import load_scenario
+from haven_sim.common import topics
+from haven_sim.common.events import EventKind, Source, event
+from haven_sim.common.geometry import Pose2D
+from haven_sim.common.state import Goal, RobotState
+from haven_sim.sim.battery import BatteryReading, PowerStatus
+from haven_sim.sim.occupancy import rasterise
+
+
+def by_topic(messages, topic):
+    return [m.data for m in messages if m.topic == topic]
+
+
+def battery(level):
+    return BatteryReading(level, PowerStatus.DISCHARGING, 15.0, 1.0, 2.2, 10.0)
+
+
+def ready(director, robot=Pose2D(2.0, 2.0, 0.0), human=Pose2D(16.0, 16.0, 3.14), level=1.0):
+    world = director.scenario.world
+    director.on_map(rasterise(world), 0.0)
+    director.on_odom(RobotState(robot), 0.0)
+    director.on_humans({"h1": human}, 0.0)
+    director.on_battery(battery(level), 0.0)
+
+
+def test_starts_only_when_allowed_and_sends_the_first_goal():
+    d = TrialDirector(load_scenario("hallway"))
+    d.start_allowed = False
+    ready(d)
+    assert d.tick(0.0) == []  # held: the node waits for its listeners
+    d.start_allowed = True
+    out = d.tick(0.1)
+    assert [e.kind for e in by_topic(out, topics.EVENTS)][:2] == [EventKind.TRIAL_START, EventKind.TARGET_SELECTED]
+    (goal,) = by_topic(out, topics.GOAL)
+    assert isinstance(goal, Goal) and (goal.pose.x, goal.pose.y) == (16.0, 2.0) and goal.frame == "map"
+    assert by_topic(out, topics.THOUGHT) == ["Going to room B"]
+    assert by_topic(out, topics.human_cmd_vel("h1")) == []  # participants start moving from the next tick
+    assert len(by_topic(d.tick(0.2), topics.human_cmd_vel("h1"))) == 1
+
+
+def test_an_obstruction_is_removed_through_its_control_topic_and_logged():
+    d = TrialDirector(load_scenario("hallway_hard"))
+    ready(d)
+    d.tick(0.0)
+    room_b = d.scenario.world.room("B").centre
+    d.on_humans({"h1": Pose2D(*room_b)}, 0.1)
+    out = d.tick(0.1)
+    assert by_topic(out, topics.REMOVE_OBSTRUCTION) == ["crate"]
+    assert EventKind.OBSTRUCTION_CLEARED in [e.kind for e in by_topic(out, topics.EVENTS)]
+
+
+def test_waiting_comes_from_the_wait_topic_and_shows_in_the_thought():
+    d = TrialDirector(load_scenario("hallway"))
+    ready(d)
+    d.tick(0.0)
+    d.on_event(event(EventKind.WAITING, 0.1, Source.PLANNER, reason="x"), 0.1)  # the log alone changes nothing
+    assert by_topic(d.tick(0.1), topics.THOUGHT) == []
+    d.on_wait(True, 0.15)
+    assert by_topic(d.tick(0.2), topics.THOUGHT) == ["Waiting for you to pass"]
+
+
+def test_contact_ends_the_trial_when_the_scenario_says_so_and_a_flat_battery_does_off_the_base():
+    d = TrialDirector(replace(load_scenario("hallway"), end_on_contact=True))
+    ready(d)
+    d.tick(0.0)
+    d.on_event(event(EventKind.CONTACT_BEGIN, 0.1, Source.SIM, other="human:h1"), 0.1)
+    out = d.tick(0.2)
+    assert d.ended is EndReason.CONTACT and by_topic(out, topics.EVENTS)[-1]["reason"] == "contact"
+    assert d.tick(0.3) == []  # over
+    flat = TrialDirector(load_scenario("hallway"))
+    ready(flat)
+    flat.tick(0.0)
+    flat.on_battery(battery(0.0), 1.0)
+    flat.tick(5.9)
+    assert flat.ended is None
+    flat.tick(6.1)
+    assert flat.ended is EndReason.BATTERY_EMPTY

@@ -1,0 +1,64 @@
+"""Simulated participants on the simulator core: each model does what its docstring says."""
+
+import math
+
+from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, make_walker, shuffled_nearest
+from haven_sim.common.geometry import Pose2D
+from haven_sim.nav.planner import GridPlanner
+from haven_sim.sim.occupancy import rasterise
+from haven_sim.sim.simulation import Simulation
+from haven_sim.sim.world_file import parse_world
+
+ROOM = {
+    "name": "room",
+    "walls": [{"segment": s, "thickness": 0.1} for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]])],
+    "robot": {"start": [5.0, 3.0, 0.0]},
+    "humans": [{"id": "h1", "start": [1.0, 1.0, 0.0]}],
+}
+
+
+def walk(model, stops, seconds, robot_path=(), robot_at=None):
+    world = parse_world(ROOM)
+    sim = Simulation(world)
+    planner = GridPlanner(rasterise(world), HUMAN_PLANNER)
+    person = make_walker(model, "h1", stops, planner, 1.0, seed=3)
+    poses = []
+    for k in range(int(seconds * 50)):
+        if k % 5 == 0:
+            robot = robot_at or sim.robot_pose()
+            sim.command_human("h1", person.command(sim.time, sim.human_poses()["h1"], robot, list(robot_path)))
+        sim.step()
+        poses.append(sim.human_poses()["h1"])
+    return person, poses
+
+
+def test_walker_visits_its_stops_in_order_and_dwells():
+    stops = [Stop(8.0, 1.0, dwell_s=1.0, reach_m=0.15), Stop(8.0, 5.0)]
+    person, poses = walk("walker", stops, 30.0)
+    assert person.done
+    assert min(math.hypot(p.x - 8.0, p.y - 1.0) for p in poses) <= 0.15
+    at_first = [i for i, p in enumerate(poses) if math.hypot(p.x - 8.0, p.y - 1.0) <= 0.15]
+    assert (at_first[-1] - at_first[0]) / 50.0 >= 1.0  # stood there for the dwell time
+    assert math.hypot(poses[-1].x - 8.0, poses[-1].y - 5.0) <= 0.15
+
+
+def test_blocker_steps_onto_the_robots_path_ahead_of_it():
+    path = [Pose2D(x, 3.0, 0.0) for x in (5.0, 6.0, 7.0, 8.0, 9.0)]
+    _, poses = walk("blocker", [Stop(1.0, 5.0)], 12.0, robot_path=path, robot_at=Pose2D(5.0, 3.0, 0.0))
+    on_path = [p for p in poses if abs(p.y - 3.0) < 0.2 and p.x > 7.0]
+    assert len(on_path) > 100  # stood on the path, about 3 m ahead of the robot, for a while
+
+
+def test_yielder_stops_and_steps_aside_for_a_robot_in_front():
+    robot = Pose2D(3.0, 1.0, math.pi)  # 2 m ahead of the person, facing them
+    _, free = walk("walker", [Stop(8.0, 1.0)], 2.5)
+    _, yielding = walk("yielder", [Stop(8.0, 1.0)], 2.5, robot_at=robot)
+    assert yielding[-1].x < free[-1].x - 0.5  # held back
+    assert yielding[-1].y < 1.0 - 0.3  # stepped to its right
+
+
+def test_gem_routes_are_seeded_and_visit_every_stop():
+    stops = [Stop(x, 1.0) for x in (2.0, 4.0, 6.0, 8.0)]
+    a, b = shuffled_nearest(stops, (0.0, 0.0), 1), shuffled_nearest(stops, (0.0, 0.0), 1)
+    assert a == b and sorted(s.x for s in a) == [2.0, 4.0, 6.0, 8.0]
+    assert len({tuple(s.x for s in shuffled_nearest(stops, (5.0, 0.0), seed)) for seed in range(20)}) > 1

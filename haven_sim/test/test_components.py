@@ -1,0 +1,89 @@
+"""The nodes' behaviour as components, without ROS: what the mux, controller, planner and simulator
+publish in answer to what they receive."""
+
+import math
+
+import pytest
+from helpers import box_world
+
+from haven_sim.common import topics
+from haven_sim.common.events import EventKind
+from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.common.state import Goal, RobotState
+from haven_sim.nav.controller import ControllerComponent
+from haven_sim.nav.mux import MuxComponent
+from haven_sim.nav.planning import PlannerComponent
+from haven_sim.sim.occupancy import rasterise
+from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig
+
+
+def by_topic(messages, topic):
+    return [m.data for m in messages if m.topic == topic]
+
+
+def test_mux_reports_each_change_of_source_and_stops_once_when_all_go_quiet():
+    mux = MuxComponent()
+    out = mux.on_nav(Twist2D(0.3, 0, 0), 0.0)
+    assert by_topic(out, topics.CMD_VEL) == [Twist2D(0.3, 0, 0)]
+    assert [(e["from"], e["to"]) for e in by_topic(out, topics.EVENTS)] == [("idle", "nav")]
+    out = mux.on_teleop(Twist2D(0.1, 0, 0.5), 0.1)
+    assert by_topic(out, topics.CMD_VEL) == [Twist2D(0.1, 0, 0.5)] and by_topic(out, topics.EVENTS)[0]["to"] == "teleop"
+    out = mux.on_estop(True, 0.2)
+    assert by_topic(out, topics.CMD_VEL) == [Twist2D()] and by_topic(out, topics.EVENTS)[0]["to"] == "estop"
+    mux.on_estop(False, 0.3)
+    quiet = mux.tick(1.0)  # teleop and nav both stale: one zero, then silence
+    assert by_topic(quiet, topics.CMD_VEL) == [Twist2D()] and by_topic(quiet, topics.EVENTS)[0]["to"] == "idle"
+    assert mux.tick(1.05) == []
+
+
+def test_controller_reports_arrival_once_per_path():
+    ctrl = ControllerComponent()
+    ctrl.on_odom(RobotState(Pose2D(0, 0, 0)), 0.0)
+    assert by_topic(ctrl.tick(0.0), topics.EVENTS) == []  # no path: nothing to report
+    path = [Pose2D(0, 0, 0), Pose2D(0.05, 0, 0)]
+    ctrl.on_plan(path, 0.0)
+    ctrl.on_odom(RobotState(Pose2D(0.05, 0, 0)), 0.1)
+    arrived = by_topic(ctrl.tick(0.1), topics.EVENTS)
+    assert [e.kind for e in arrived] == [EventKind.GOAL_REACHED] and arrived[0]["goal"] == [0.05, 0.0]
+    assert by_topic(ctrl.tick(0.15), topics.EVENTS) == []
+    ctrl.on_plan(path, 0.2)  # the same goal sent again is a new path: reported again
+    assert [e.kind for e in by_topic(ctrl.tick(0.25), topics.EVENTS)] == [EventKind.GOAL_REACHED]
+    assert by_topic(ctrl.on_plan([], 0.3), topics.CMD_VEL_NAV) == [Twist2D()]  # a cleared plan stops at once
+
+
+def test_planner_refuses_bad_goals_and_keeps_a_goal_until_it_has_map_and_pose():
+    planner = PlannerComponent()
+    for goal, why in [(Goal(Pose2D(1, 1, 0), "base_link"), "goal frame 'base_link' is not 'map'"), (Goal(Pose2D(math.nan, 1, 0)), "not finite")]:
+        (refused,) = by_topic(planner.on_goal(goal, 0.0), topics.EVENTS)
+        assert refused.kind is EventKind.PLAN_REFUSED and why in refused["reason"]
+    assert planner.on_goal(Goal(Pose2D(7, 5, 0)), 0.0) == []  # no map, no pose yet: kept
+    assert planner.on_map(rasterise(box_world(10.0)), 0.1) == []
+    out = planner.on_odom(RobotState(Pose2D(5, 5, 0)), 0.2)
+    assert by_topic(out, topics.WAIT) == [False] and len(by_topic(out, topics.PLAN)[0]) > 2
+    assert by_topic(out, topics.EVENTS)[0].kind is EventKind.PLAN_MADE and planner.pending is None
+
+
+def test_simulator_publishes_each_topic_at_its_rate():
+    sim = SimulatorComponent(box_world(10.0, humans=[{"id": "h1", "start": [2.0, 2.0, 0.0]}]), SimulatorConfig())
+    counts: dict[str, int] = {}
+    for _ in range(50):  # one second
+        for m in sim.sense():
+            counts[m.topic] = counts.get(m.topic, 0) + 1
+        sim.advance()
+    assert counts[topics.CLOCK] == counts[topics.ODOM] == counts[topics.TF] == 50
+    assert (counts[topics.HUMANS], counts[topics.SCAN], counts[topics.BATTERY]) == (20, 10, 5)
+    assert counts[topics.MAP] == counts[topics.TF_STATIC] == 1
+    sim.on_remove_obstruction("nope", 1.0)
+    assert sim.warnings == ["no obstruction 'nope' in world 'box'"]
+    sim.on_cmd_vel(Twist2D(math.nan, 0, 0), 1.0)
+    assert sim.warnings[-1] == "dropped a non-finite command on /cmd_vel"
+
+
+@pytest.mark.parametrize("rate", [7.0, 20.0, 33.0])
+def test_rates_that_do_not_divide_the_physics_rate_hold_on_average(rate):
+    sim = SimulatorComponent(box_world(10.0, humans=[{"id": "h1", "start": [2.0, 2.0, 0.0]}]), SimulatorConfig(humans_rate_hz=rate))
+    n = 0
+    for _ in range(500):  # ten seconds
+        n += sum(1 for m in sim.sense() if m.topic == topics.HUMANS)
+        sim.advance()
+    assert n == pytest.approx(10 * rate, abs=1)
