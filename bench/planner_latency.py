@@ -32,7 +32,7 @@ from haven_sim.sim.occupancy import rasterise  # noqa: E402
 from haven_sim.sim.world import World, packaged_world  # noqa: E402
 from haven_sim.sim.world_file import load_world  # noqa: E402
 
-PARAMS = PlannerParams(robot_radius_m=0.18, safety_margin_m=0.05)
+PARAMS = PlannerParams(safety_margin_m=0.05, body_radius_m=0.18)  # the peers' robot: 0.23 m inflation
 
 
 def sample_pairs(world: World, planner: GridPlanner, n: int, seed: int) -> list[tuple[tuple[float, float], tuple[float, float]]]:
@@ -85,7 +85,7 @@ def run(name: str, world: World, n: int, seed: int, pairs_file: str | None) -> d
     full = []
     for s, g in pairs[:100]:
         t = time.perf_counter()
-        nav.set_goal(Pose2D(s[0], s[1], 0.0), Pose2D(g[0], g[1], 0.0))
+        nav.set_goal(Pose2D(s[0], s[1], 0.0), Pose2D(g[0], g[1], 0.0), 0.0)
         full.append(1e3 * (time.perf_counter() - t))
     return {"map": name, "pairs": len(pairs), "refused": refused, "preprocess_ms": 1e3 * pre,
             "corner_nodes": len(planner.nodes), **stats(lat), "mean_length_m": float(np.mean(lengths)),

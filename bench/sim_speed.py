@@ -28,6 +28,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from w1_map import human_rooms, room_box, w1_world  # noqa: E402
 
+from haven_sim.common.events import EventKind  # noqa: E402
 from haven_sim.common.geometry import Twist2D  # noqa: E402
 from haven_sim.sim.simulation import Simulation  # noqa: E402
 from haven_sim.sim.world import World, packaged_world  # noqa: E402
@@ -90,7 +91,7 @@ def run_case(world: World, rooms: list[str] | None, scan_every: int, steps: int)
     moved = sum(1 for h, p in zip(walkers.ids, start) if sim.human_poses()[h].distance_to(p) > 0.05)
     sim_s = steps * sim.config.step_s
     return {"wall_s": wall, "rtf": sim_s / wall, "ms_per_step": 1e3 * wall / steps, "humans_moved": moved,
-            "lidar_hits": hits, "contacts": sum(e.type == "contact_begin" for e in sim.pop_events())}
+            "lidar_hits": hits, "contacts": sum(e.kind is EventKind.CONTACT_BEGIN for e in sim.pop_events())}
 
 
 def main() -> None:
