@@ -77,6 +77,7 @@ def test_contact_ends_the_trial_when_the_scenario_says_so_and_a_flat_battery_doe
     ready(flat)
     flat.tick(0.0)
     flat.on_battery(battery(0.0), 1.0)
+    flat.tick(1.0)  # flat from here
     flat.tick(5.9)
     assert flat.ended is None
     flat.tick(6.1)

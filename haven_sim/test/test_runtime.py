@@ -8,7 +8,8 @@ from haven_sim.common import topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Twist2D
 from haven_sim.runtime.component import Message, due, period_ns
-from haven_sim.runtime.loop import InProcessLoop, inbox_order
+from haven_sim.runtime.lockstep import ParticipantInfo, Schedule, inbox_order
+from haven_sim.runtime.loop import InProcessLoop
 from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig
 
 STEP = 20_000_000  # 50 Hz physics
@@ -57,15 +58,24 @@ class Echo:
         return []
 
 
-def test_loop_delivers_in_lockstep_order_and_reports_unread_outputs():
+def test_who_acts_due_periods_and_readers_of_last_steps_messages():
+    s = Schedule(STEP)
+    s.add(ParticipantInfo("ctrl", period_ns(20.0), frozenset({topics.PLAN, topics.ODOM})))
+    s.add(ParticipantInfo("mux", None, frozenset({topics.CMD_VEL_NAV})))
+    assert s.acting(0) == ["ctrl"] and s.acting(1) == []
+    s.published("ctrl", [topics.CMD_VEL_NAV, topics.PLAN])  # not itself: only the mux must act
+    assert s.acting(2) == ["mux"] and s.acting(3) == ["ctrl"]
+
+
+def test_loop_handles_messages_when_the_component_acts_and_commands_reach_the_simulator_at_once():
     sim = SimulatorComponent(box_world(10.0), SimulatorConfig())
     echo = Echo()
     observed = []
     loop = InProcessLoop(sim, [echo], [observed.append], observed=(topics.CMD_VEL,))
     for _ in range(10):
         loop.step()
-    assert echo.seen == [k * 0.02 for k in range(10)]  # each step's /odom is handled in the same step
-    assert echo.ticks == [0.0, 0.1]
-    assert [m.stamp for m in observed] == echo.seen  # the command reaches the simulator at once
-    assert sim.sim.robot_pose().x > 5.0  # and moved the robot
+    # Acting at its ticks only (0 and 0.1 s): the /odom of every step so far, handled then.
+    assert echo.ticks == [0.0, 0.1] and echo.seen == [0.0] + [0.1] * 5
+    assert [m.stamp for m in observed] == echo.seen  # each command reached the simulator in its step
+    assert sim.sim.robot_twist().vx > 0.0  # and drives the robot
     assert topics.SCAN in sim.unread and topics.CMD_VEL not in echo.unread

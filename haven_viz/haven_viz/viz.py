@@ -4,7 +4,7 @@ It keeps the robot's path, pose, battery level, thought and the humans, and at `
 into HAVEN's AR cues (`cues.ArCues`) plus the moving bodies, sending only what changed
 (/haven/ar_markers) with explicit DELETEs; everything, deletes included, is sent again when a viewer
 joins and every `refresh_period_s`, for viewers and bag replays that start late or missed a message.
-What is shown goes out as data on /haven/cue_state whenever it changes. The world (walls, rooms,
+What is shown goes out as data on /haven/cue_state when it changes. The world (walls, rooms,
 gems, base) goes on /haven/world_markers, again when a gem is collected or an obstruction removed.
 The four cue toggles are the study condition; every change is a `cue_toggled` event.
 """
@@ -152,7 +152,7 @@ class VizComponent:
             update = self.ar_diff.update(frame.markers + body_markers(self.robot, self.humans), resend_all=refresh)
             if update:
                 out.append(Message(topics.AR_MARKERS, update, now))
-        if refresh or frame.state != self.state:
+        if frame.state != self.state:  # on change only (latched: a late reader gets the last one)
             self.state = frame.state
             out.append(Message(topics.CUE_STATE, frame.state, now))
         return out

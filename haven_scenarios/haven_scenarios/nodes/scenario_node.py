@@ -25,9 +25,10 @@ class ScenarioNode(ComponentNode):
         c = config.director
         scenario = load_scenario(c.scenario)
         self.director = TrialDirector(scenario, c.seed, c.rate_hz)
-        self.director.start_allowed = False
         self.wait_for = config.wait_for
         self.wire(self.director, wire.specs(human_ids=[h.id for h in scenario.world.humans]))
+        # On the lockstep clock the simulator starts stepping only when everyone is there.
+        self.director.start_allowed = self.lockstep_mode
         self._finished = False
         self.create_timer(self.director.period_s, self._watch)
         self.get_logger().info(f"scenario '{scenario.name}' ({scenario.kind}), seed {c.seed}")

@@ -16,6 +16,7 @@ from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.mux import MuxConfig
 from haven_sim.nav.planning import PlannerConfig
+from haven_sim.runtime.lockstep import LockstepParams
 from haven_sim.sim.simulator import SimulatorConfig
 from haven_viz.viz import VizConfig
 
@@ -28,7 +29,7 @@ NODES: tuple[tuple[str, type[Any]], ...] = (
     ("viz", VizConfig),
     ("scenario", ScenarioNodeConfig),
 )
-SHARED = (MotionStyle,)  # one section for the nodes that share HAVEN's turning rule
+SHARED = (MotionStyle, LockstepParams)  # one section: HAVEN's turning rule, the lockstep switch
 HEADER = """Parameters of every HAVEN node, with their defaults (pass with --params-file to `haven sim`,
 `haven run` or `haven batch`, or to any node). Generated from the config dataclasses by
 `python -m haven_scenarios.run.suite`: edit those, not this file. The "/**" section applies to

@@ -161,9 +161,6 @@ class TrialDirector:
         return self._mission_messages(self.mission.resend() if self.mission else MissionOutput(), now)
 
     def on_odom(self, state: RobotState, now: float) -> list[Message]:
-        moving = abs(state.twist.vx) > STOPPED_MPS or abs(state.twist.wz) > 0.05
-        if moving or self.still_since is None:
-            self.still_since = None if moving else now
         self.robot = state
         return []
 
@@ -173,10 +170,6 @@ class TrialDirector:
 
     def on_battery(self, reading: BatteryReading, now: float) -> list[Message]:
         self.level = reading.level
-        if reading.level > 0.0:
-            self.empty_since = None
-        elif self.empty_since is None:
-            self.empty_since = now
         return []
 
     def on_plan(self, poses: Sequence[Pose2D], now: float) -> list[Message]:
@@ -227,6 +220,7 @@ class TrialDirector:
             return []
         mission, robot, level = self.mission, self.robot, self.level
         assert mission is not None and robot is not None and level is not None
+        self._observe(now, robot, level)
         if self.start_time is None:
             if not self.start_allowed:
                 return []
@@ -235,6 +229,19 @@ class TrialDirector:
                 mission.start(now, robot.pose, level), now
             )
         return self._step(now, mission, robot.pose, level)
+
+    def _observe(self, now: float, state: RobotState, level: float) -> None:
+        """Since when the robot stands still, and since when its battery is flat (state topics'
+        handlers only keep the latest value: what changed is judged here, at the tick)."""
+        moving = abs(state.twist.vx) > STOPPED_MPS or abs(state.twist.wz) > 0.05
+        if moving:
+            self.still_since = None
+        elif self.still_since is None:
+            self.still_since = now
+        if level > 0.0:
+            self.empty_since = None
+        elif self.empty_since is None:
+            self.empty_since = now
 
     def _step(self, now: float, mission: Mission, robot: Pose2D, level: float) -> list[Message]:
         """The 10 Hz step: participants move, rules fire, the mission decides, the end is checked."""

@@ -29,6 +29,11 @@ WORLD_MARKERS = "haven/world_markers"
 CUE_STATE = "haven/cue_state"
 
 
+# The simulator's state streams: a reader needs only the newest message (a node that handles them
+# keeps the latest value), so the lockstep clock hands a participant just the last one.
+STATE = frozenset({CLOCK, MAP, ODOM, SCAN, BATTERY, HUMANS, TF, TF_STATIC})
+
+
 def human_cmd_vel(human_id: str) -> str:
     return f"humans/{human_id}/cmd_vel"
 

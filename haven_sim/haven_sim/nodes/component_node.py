@@ -16,10 +16,13 @@ from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
+from rclpy.subscription import Subscription
 
 from haven_sim.common.params import build, defaults, docs
+from haven_sim.nodes.lockstep import LockstepParticipant
 from haven_sim.nodes.wire import TopicSpec
 from haven_sim.runtime.component import Component, Message
+from haven_sim.runtime.lockstep import LockstepParams
 
 C = TypeVar("C")
 
@@ -32,7 +35,9 @@ class ComponentNode(Node):
         super().__init__(name)
         self._declared: set[str] = set()
         self._pubs: dict[str, Publisher] = {}
+        self._subs: dict[str, Subscription] = {}
         self._specs: dict[str, TopicSpec] = {}
+        self.lockstep: LockstepParticipant | None = None
         self.component: Component | None = None
         self.add_on_set_parameters_callback(self._check_parameters)
 
@@ -54,13 +59,21 @@ class ComponentNode(Node):
         return SetParametersResult(successful=True)
 
     # -- wire ------------------------------------------------------------------------------------
-    def wire(self, component: Component, specs: Mapping[str, TopicSpec]) -> None:
+    def wire(self, component: Component, specs: Mapping[str, TopicSpec], participant: bool = True) -> None:
+        """Publishers for the component's outputs; its inputs handled as they come and its periodic
+        work on a sim-time timer, or, with the `lockstep` parameter, at the lockstep clock's ticks
+        (`participant`; the simulator, which runs that clock, passes False)."""
         self.component = component
         self._specs = dict(specs)
         for topic in component.outputs():
             spec = self._specs.get(topic)
             if spec is not None:  # (no spec: TF where tf2_msgs is not installed)
                 self._pubs[topic] = self.create_publisher(spec.msg_type, topic, spec.pub_qos)
+        self.lockstep_mode = self.declare_config(LockstepParams).lockstep
+        if self.lockstep_mode:  # (the simulator, which runs the clock, reads its inputs itself)
+            if participant:
+                self.lockstep = LockstepParticipant(self, component, self._specs, self.publish, self._pubs)
+            return
         for topic, handler in component.handlers().items():
             spec = self._specs[topic]
 
@@ -72,7 +85,7 @@ class ComponentNode(Node):
                     return
                 self.publish(handler(data, self.now()))
 
-            self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
+            self._subs[topic] = self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
         if component.period_s is not None:
             self.create_timer(component.period_s, lambda: self.publish(component.tick(self.now())))
 
@@ -80,14 +93,18 @@ class ComponentNode(Node):
     def now(self) -> float:
         return self.get_clock().now().nanoseconds * 1e-9
 
-    def publish(self, messages: Sequence[Message]) -> None:
+    def publish(self, messages: Sequence[Message]) -> list[Publisher]:
+        """Publish; returns the publishers used (for the lockstep clock, which waits on them)."""
+        used: dict[str, Publisher] = {}
         for m in messages:
             pub = self._pubs.get(m.topic)
             if pub is not None:
                 pub.publish(self._specs[m.topic].encode(m.data, m.stamp))
+                used[m.topic] = pub
         # Components may keep lists of what to log (`notes`: info, `warnings`): drained here.
         for attr, log in (("notes", self.get_logger().info), ("warnings", self.get_logger().warning)):
             lines: list[str] = getattr(self.component, attr, [])
             for line in lines:
                 log(line, throttle_duration_sec=2.0) if attr == "warnings" else log(line)
             lines.clear()
+        return list(used.values())

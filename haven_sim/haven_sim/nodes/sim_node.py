@@ -18,6 +18,7 @@ from std_srvs.srv import Trigger
 from haven_sim.common import topics
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
+from haven_sim.nodes.lockstep import LockstepCoordinator
 from haven_sim.nodes.runner import run_node
 from haven_sim.sim.pacer import Pacer
 from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig
@@ -35,14 +36,22 @@ class SimNode(ComponentNode):
         specs = wire.specs(frames, [h.id for h in world.humans])
         if topics.TF not in specs:
             self.get_logger().warning("tf2_msgs is not installed: no /tf or /tf_static (run scripts/build_interfaces.py)")
-        self.wire(self.sim, {t: s for t, s in specs.items()})
+        self.wire(self.sim, specs, participant=False)
         self.create_service(Trigger, "haven/reset", self._on_reset)
-        self.pacer = Pacer(config.sim.step_s, config.real_time_factor)
-        self.publish(self.sim.sense())
-        self.create_timer(self.pacer.tick_period_s, self._tick, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        if self.lockstep_mode:
+            self.coordinator = LockstepCoordinator(
+                self, self.sim, list(config.lockstep_participants), list(config.lockstep_observers), list(config.lockstep_wait_for),
+                config.real_time_factor,
+                self._specs, self._pubs,
+            )
+            pace = f"lockstep with {', '.join(config.lockstep_participants) or 'no participants'}, at most {config.real_time_factor:g}x real time"
+        else:
+            self.pacer = Pacer(config.sim.step_s, config.real_time_factor)
+            self.publish(self.sim.sense())
+            self.create_timer(self.pacer.tick_period_s, self._tick, clock=Clock(clock_type=ClockType.STEADY_TIME))
+            pace = f"{config.real_time_factor:g}x real time"
         self.get_logger().info(
-            f"world '{world.name}' from {world.source}: {len(world.humans)} human(s), "
-            f"{config.sim.physics_rate_hz:g} Hz physics at {config.real_time_factor:g}x real time"
+            f"world '{world.name}' from {world.source}: {len(world.humans)} human(s), {config.sim.physics_rate_hz:g} Hz physics, {pace}"
         )
 
     def _tick(self) -> None:

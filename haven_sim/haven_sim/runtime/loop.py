@@ -1,61 +1,46 @@
-"""Batch mode's loop: the simulator and the components in one process, exchanging messages in the
-lockstep order that ROS mode's lockstep clock also keeps, so both modes compute the same trial.
+"""Batch mode's loop: the simulator and the components in one process, keeping the lockstep rule
+(`runtime.lockstep`) that ROS mode's lockstep clock keeps, so both modes compute the same trial.
 
-One step of sim time k:
-  1. sense: the simulator publishes its state for step k (clock, odom, humans, ...);
-  2. act: each component handles the messages it has received (in a fixed order: topic by topic,
-     events by stamp and source), then ticks if its period is due at step k; what it publishes
-     now reaches the other components at step k + 1 and the simulator at once;
-  3. the simulator applies the commands it received and advances to step k + 1.
+Every message goes through the same value changes a ROS message round trip makes
+(`runtime.wire`), and a component handles its inbox only at the steps where it acts, as a node does.
 """
 
 from __future__ import annotations
 
-from collections.abc import Callable, Collection, Mapping, Sequence
+from collections.abc import Callable, Collection, Sequence
 
-from haven_sim.common.events import Event
-from haven_sim.runtime.component import Component, Message, due, period_ns
+from haven_sim.runtime.component import Component, Message, due
+from haven_sim.runtime.lockstep import ParticipantInfo, Schedule, inbox_order
+from haven_sim.runtime.wire import on_the_wire
 from haven_sim.sim.simulator import SimulatorComponent
 
 Observer = Callable[[Message], None]
-
-
-def inbox_order(rank: Mapping[str, int], inbox: Sequence[Message]) -> list[Message]:
-    """The order a component handles what it received: by its topics' order (`rank`), events by
-    (stamp, source), other topics as they came (one publisher each)."""
-    if len(inbox) < 2:
-        return list(inbox)
-
-    def key(m: Message) -> tuple[int, float, str]:
-        if isinstance(m.data, Event):
-            return (rank.get(m.topic, len(rank)), m.data.stamp, m.data.source)
-        return (rank.get(m.topic, len(rank)), 0.0, "")
-
-    return sorted(inbox, key=key)
 
 
 class InProcessLoop:
     def __init__(
         self, sim: SimulatorComponent, components: Sequence[Component], observers: Sequence[Observer] = (), observed: Collection[str] = ()
     ) -> None:
-        """`observers` see every message on the `observed` topics (a recorder, say)."""
+        """`observers` see every message on the `observed` topics, as received (a recorder, say)."""
         self.sim = sim
         self.components = list(components)
         self.observers = list(observers)
+        self.observed = frozenset(observed)
         self._inbox: dict[str, list[Message]] = {c.name: [] for c in self.components}
         self._handlers = {c.name: dict(c.handlers()) for c in self.components}
         self._rank = {c.name: {t: i for i, t in enumerate(self._handlers[c.name])} for c in self.components}
         self._sim_handlers = dict(sim.handlers())
-        self._periods = {c.name: period_ns(1.0 / c.period_s) if c.period_s else None for c in self.components}
-        self.step_ns = sim.config.sim.step_ns
+        self.schedule = Schedule(sim.config.sim.step_ns)
+        for c in self.components:
+            self.schedule.add(ParticipantInfo.of(c))
         # Tell each component which of its outputs nobody reads, so it may skip making them.
         read = set(observed) | set(self._sim_handlers) | {t for h in self._handlers.values() for t in h}
         for c in [sim, *self.components]:
             c.unread = frozenset(t for t in c.outputs() if t not in read)
-        self.observed = frozenset(observed)
 
     def _route(self, messages: Sequence[Message], to_sim: bool) -> None:
-        for m in messages:
+        for sent in messages:
+            m = Message(sent.topic, on_the_wire(sent.topic, sent.data), sent.stamp)
             if m.topic in self.observed:
                 for observer in self.observers:
                     observer(m)
@@ -72,15 +57,21 @@ class InProcessLoop:
     def step(self) -> None:
         k, now = self.sim.sim.steps, self.sim.sim.time
         self._route(self.sim.sense(), to_sim=False)
+        acting = set(self.schedule.acting(k))
         produced: list[Message] = []
         for c in self.components:
+            if c.name not in acting:
+                continue
             inbox, self._inbox[c.name] = self._inbox[c.name], []
             handlers = self._handlers[c.name]
+            out: list[Message] = []
             for m in inbox_order(self._rank[c.name], inbox):
-                produced += handlers[m.topic](m.data, now)
-            every = self._periods[c.name]
-            if every is not None and due(k, self.step_ns, every):
-                produced += c.tick(now)
+                out += handlers[m.topic](m.data, now)
+            info = self.schedule.participants[c.name]
+            if info.period_ns is not None and due(k, self.schedule.step_ns, info.period_ns):
+                out += c.tick(now)
+            self.schedule.published(c.name, (m.topic for m in out))
+            produced += out
         self._route(produced, to_sim=True)
         self.sim.advance()
 
@@ -89,4 +80,3 @@ class InProcessLoop:
             if stop():
                 return
             self.step()
-

@@ -22,13 +22,17 @@ from haven_scenarios.tools.supervisor import Exited, ProcessSpec, Supervisor, no
 from haven_sim.common.events import EventKind
 from haven_viz.cues import CUES, Toggles
 
+LOCKSTEP_UNCAPPED = 1e6  # the lockstep clock's real-time factor cap when --rtf is not given
+
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run = sub.add_parser("run", help="run one recorded trial of a scenario (default: hallway, simulated participant)")
     run.add_argument("scenario", nargs="?", default="hallway", help=f"a shipped scenario ({', '.join(scenario_names())}) or a YAML")
     run.add_argument("--participant", default="sim", help="participant id for the session (default: sim)")
     run.add_argument("--condition", nargs="+", default=["all"], metavar="CUE", help=CONDITION_HELP)
-    run.add_argument("--rtf", type=positive, default=None, help="real-time factor (default: 5 with simulated participants, 1 with a person)")
+    run.add_argument("--rtf", type=positive, default=None,
+                     help="real-time factor (default: 1 with a person; simulated participants run on the lockstep clock as fast as "
+                          "the machine allows, or at most this fast)")
     run.add_argument("--seed", type=int, default=0)
     run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN",
                      help="these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`")
@@ -61,16 +65,24 @@ def _scenario_yaml(scenario: Scenario) -> str:
     return yaml.safe_dump(data, sort_keys=False)
 
 
-def _specs(args: argparse.Namespace, scenario: Scenario, toggles: Toggles, folder: Path, rtf: float) -> list[ProcessSpec]:
+PARTICIPANTS = ("velocity_mux", "planner", "controller", "viz", "scenario")  # the nodes' names
+
+
+def _specs(args: argparse.Namespace, scenario: Scenario, toggles: Toggles, folder: Path, rtf: float, lockstep: bool) -> list[ProcessSpec]:
     pfile = params_file(args)
     world = scenario.world_path
+    sim: dict[str, object] = {"world": world, "real_time_factor": rtf, "battery_capacity_m": scenario.battery.capacity_m, "seed": args.seed}
+    if lockstep:
+        sim.update(lockstep=True, lockstep_participants=f"[{','.join(PARTICIPANTS)}]", lockstep_observers="[viz]", lockstep_wait_for="[recorder]")
+    # On the lockstep clock the ticks carry the time: the participants need no /clock.
+    stepped: dict[str, object] = {"lockstep": True, "use_sim_time": False} if lockstep else {}
     suite = suite_specs({
-        "sim": {"world": world, "real_time_factor": rtf, "battery_capacity_m": scenario.battery.capacity_m, "seed": args.seed},
-        "viz": {"world": world, **{c: getattr(toggles, c) for c in CUES}},
+        "sim": sim, "mux": stepped, "planner": stepped, "controller": stepped,
+        "viz": {"world": world, **{c: getattr(toggles, c) for c in CUES}, **stepped},
     }, pfile)
     recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": str(folder.resolve())})
     scenario_node = node_argv("haven_scenarios.nodes.scenario_node",
-                              {"use_sim_time": True, "scenario": str((folder / "scenario.yaml").resolve()), "seed": args.seed},
+                              {"use_sim_time": True, "scenario": str((folder / "scenario.yaml").resolve()), "seed": args.seed, **stepped},
                               ["-p", "wait_for:=[planner,recorder]"], params_file=pfile)
     return [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
 
@@ -115,8 +127,10 @@ def run_cmd(args: argparse.Namespace) -> int:
         scenario, toggles = _prepare(args)
     except (ScenarioError, ValueError) as e:
         return fail(str(e))
-    people = any(h.model == "teleop" for h in scenario.humans)
-    rtf = args.rtf if args.rtf is not None else (1.0 if people else 5.0)
+    # A person plays in real time on the free-running clock; simulated participants run on the
+    # lockstep clock, as fast as the machine allows unless --rtf caps it.
+    lockstep = not any(h.model == "teleop" for h in scenario.humans)
+    rtf = args.rtf if args.rtf is not None else (LOCKSTEP_UNCAPPED if lockstep else 1.0)
     folder = new_session_dir(Path(args.sessions), scenario.name, args.participant)
     (folder / "scenario.yaml").write_text(_scenario_yaml(scenario))
     info = {
@@ -126,10 +140,12 @@ def run_cmd(args: argparse.Namespace) -> int:
         "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "versions": versions(), "command": sys.argv,
     }
     write_json(folder / "session.json", info)
+    pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf != LOCKSTEP_UNCAPPED else "") if lockstep else f"{rtf:g}x real time"
     print(f"haven: {scenario.name} trial, participant {args.participant}, condition {condition_name(toggles)}, "
-          f"seed {args.seed}, {rtf:g}x real time -> {folder}", flush=True)
+          f"seed {args.seed}, {pace} -> {folder}", flush=True)
     started = time.monotonic()
-    exited = _supervise(args, _specs(args, scenario, toggles, folder, rtf), folder, scenario.timeout_s / rtf + 120.0)
+    limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
+    exited = _supervise(args, _specs(args, scenario, toggles, folder, rtf, lockstep), folder, limit)
     wall = time.monotonic() - started
     metrics = _finish(folder, scenario, info, wall)
     if metrics is None:
