@@ -148,3 +148,16 @@ def event(kind: EventKind, stamp: float, source: str, **data: Any) -> Event:
 def _short(value: Any) -> str:
     text = repr(value)
     return text if len(text) <= 60 else text[:57] + "..."
+
+
+class Sequencer:
+    """Numbers a publisher's events per source (`seq` 1, 2, ...), so a reader can tell whether
+    any went missing on the way."""
+
+    def __init__(self) -> None:
+        self._count: dict[str, int] = {}
+
+    def number(self, e: Event) -> Event:
+        n = self._count.get(e.source, 0) + 1
+        self._count[e.source] = n
+        return Event(e.kind, e.stamp, e.source, {**e.data, "seq": n})

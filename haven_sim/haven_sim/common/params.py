@@ -165,10 +165,18 @@ def _yaml_value(value: Any) -> str:
     return yaml.safe_dump(value, default_flow_style=True).strip().removesuffix("\n...").strip()
 
 
-def render_params_file(nodes: Sequence[tuple[str, type[Any]]], shared: Sequence[type[Any]] = (), header: str = "") -> str:
-    """A ROS 2 parameter file with every node's parameters and their defaults and docs. Groups in
-    `shared` go once under the wildcard section instead of under each node."""
+def render_params_file(
+    nodes: Sequence[tuple[str, type[Any]]],
+    shared: Sequence[type[Any]] = (),
+    header: str = "",
+    values: Mapping[str, Mapping[str, Any]] | None = None,
+) -> str:
+    """A ROS 2 parameter file with every node's parameters, their docs, and their defaults (or the
+    `values` given per node name, the shared ones under WILDCARD). Groups in `shared` go once under
+    the wildcard section; a node whose shared value differs repeats it in its own section."""
     shared_names = {n for cls in shared for n, _ in _leaves(cls)}
+    given = values or {}
+    common = {k: v for cls in shared for k, v in defaults(cls).items()} | dict(given.get(WILDCARD, {}))
     lines = [f"# {h}".rstrip() for h in header.splitlines()] if header else []
 
     def section(node: str, leaves: list[tuple[str, dataclasses.Field[Any]]], values: Mapping[str, Any]) -> None:
@@ -181,7 +189,8 @@ def render_params_file(nodes: Sequence[tuple[str, type[Any]]], shared: Sequence[
         lines.append("")
 
     if shared:
-        section(WILDCARD, [leaf for cls in shared for leaf in _leaves(cls)], {k: v for cls in shared for k, v in defaults(cls).items()})
+        section(WILDCARD, [leaf for cls in shared for leaf in _leaves(cls)], common)
     for node, cls in nodes:
-        section(node, [(n, f) for n, f in _leaves(cls) if n not in shared_names], defaults(cls))
+        own = defaults(cls) | dict(given.get(node, {}))
+        section(node, [(n, f) for n, f in _leaves(cls) if n not in shared_names or own[n] != common[n]], own)
     return "\n".join(lines).rstrip() + "\n"

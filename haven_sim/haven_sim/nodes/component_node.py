@@ -18,6 +18,7 @@ from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
 from rclpy.subscription import Subscription
 
+from haven_sim.common.events import Event, Sequencer
 from haven_sim.common.params import build, defaults, docs
 from haven_sim.nodes.lockstep import LockstepParticipant
 from haven_sim.nodes.wire import TopicSpec
@@ -38,6 +39,7 @@ class ComponentNode(Node):
         self._subs: dict[str, Subscription] = {}
         self._specs: dict[str, TopicSpec] = {}
         self.lockstep: LockstepParticipant | None = None
+        self.sequencer = Sequencer()
         self.component: Component | None = None
         self.add_on_set_parameters_callback(self._check_parameters)
 
@@ -48,7 +50,9 @@ class ComponentNode(Node):
         described = docs(cls)
         for name, default in defaults(cls).items():
             descriptor = ParameterDescriptor(description=described.get(name, ""), dynamic_typing=True)
-            values[name] = self.declare_parameter(name, default, descriptor).value
+            value = self.declare_parameter(name, default, descriptor).value
+            # An empty list in a parameter file (`[]`) reaches the node as "not set".
+            values[name] = [] if value is None and isinstance(default, list) else value
             self._declared.add(name)
         return build(cls, values, where=f"{self.get_name()}: parameter ")
 
@@ -99,7 +103,8 @@ class ComponentNode(Node):
         for m in messages:
             pub = self._pubs.get(m.topic)
             if pub is not None:
-                pub.publish(self._specs[m.topic].encode(m.data, m.stamp))
+                data = self.sequencer.number(m.data) if isinstance(m.data, Event) else m.data
+                pub.publish(self._specs[m.topic].encode(data, m.stamp))
                 used[m.topic] = pub
         # Components may keep lists of what to log (`notes`: info, `warnings`): drained here.
         for attr, log in (("notes", self.get_logger().info), ("warnings", self.get_logger().warning)):

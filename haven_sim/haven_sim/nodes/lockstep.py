@@ -39,7 +39,8 @@ from rclpy.subscription import Subscription
 from std_msgs.msg import String
 
 from haven_sim.common import topics
-from haven_sim.common.events import Event, Source
+from haven_sim.common.events import Event, Sequencer, Source
+from haven_sim.nodes.runner import stop_requested
 from haven_sim.nodes.wire import TopicSpec
 from haven_sim.runtime.component import NS_PER_S, Component, Message, due
 from haven_sim.runtime.lockstep import ParticipantInfo, Schedule, inbox_order
@@ -120,6 +121,8 @@ class Inbox:
         self.take()
         deadline = time.monotonic() + WAIT_S
         while short := [t for t in self.subs if self.received[t] < counts.get(t, 0)]:
+            if stop_requested():
+                return
             if time.monotonic() > deadline:
                 self.node.get_logger().warning(f"lockstep: announced messages on {', '.join(short)} did not arrive; going on")
                 return
@@ -246,6 +249,7 @@ class LockstepCoordinator:
         outputs: Mapping[str, Publisher],
     ) -> None:
         self.node, self.sim, self.specs, self.outputs = node, sim, specs, outputs
+        self.sequencer = Sequencer()
         self.expected, self.observers, self.wait_for, self.rtf = set(participants), set(observers), list(wait_for), real_time_factor
         self.handlers = dict(sim.handlers())
         self.inbox = Inbox(node, specs, list(self.handlers))
@@ -297,7 +301,8 @@ class LockstepCoordinator:
         for m in messages:
             pub = self.outputs.get(m.topic)
             if pub is not None:
-                pub.publish(self.specs[m.topic].encode(m.data, m.stamp))
+                data = self.sequencer.number(m.data) if isinstance(m.data, Event) else m.data
+                pub.publish(self.specs[m.topic].encode(data, m.stamp))
                 self.counts[m.topic] = self.counts.get(m.topic, 0) + 1
 
     def _run(self) -> None:

@@ -8,7 +8,7 @@ from rclpy.qos import (
     qos_profile_sensor_data,
 )
 
-# Latched state: /map, /plan, /haven/thought, /haven/world_markers, /haven/estop.
+# Latched state: /map, /plan (readers), /haven/thought, /haven/world_markers, /haven/estop.
 LATCHED = QoSProfile(
     depth=1,
     history=HistoryPolicy.KEEP_LAST,
@@ -17,6 +17,11 @@ LATCHED = QoSProfile(
 )
 # Commands and state streams: /cmd_vel*, /odom, /battery_state, /humans, /goal_pose.
 RELIABLE = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
+# The simulator's recorded state streams (/odom, /humans, /battery_state): reliable like RELIABLE,
+# with a deep history so a reader that falls behind for a moment (a recorder on a busy machine at
+# 10x real time: /odom comes 500 times a second) still gets every message re-sent. Depth does not
+# affect QoS matching: any reliable or best-effort reader matches.
+STREAM = QoSProfile(depth=1000, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # Subscribers that act on the current state (controller, planner, viz, scenario) keep only the latest
 # /odom, /humans or /battery_state: at 10x real time a backlog would make them act on old poses.
 LATEST = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
@@ -34,3 +39,7 @@ EVENTS_PUB = QoSProfile(
     depth=100, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
 )
 EVENTS_HISTORY = EVENTS_PUB
+# Publishers of /plan and /haven/cue_state: latched like LATCHED, but the recorder needs every
+# change and two can come within moments (a re-plan right after a plan, a condition toggled as the
+# thought text changes). A late joiner's depth-1 reader still keeps only the newest.
+CHANGES = EVENTS_PUB

@@ -56,18 +56,18 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
     table = {
         topics.CLOCK: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.CLOCK, qos.CLOCK),
         topics.MAP: TopicSpec(OccupancyGrid, lambda g, t: conv.occupancy_msg(t, g, f.map), conv.occupancy_from_msg, qos.LATCHED, qos.LATCHED),
-        topics.ODOM: TopicSpec(Odometry, lambda s, t: conv.odometry_msg(t, s, f.odom, f.base), conv.odometry_from_msg, qos.RELIABLE, qos.LATEST),
+        topics.ODOM: TopicSpec(Odometry, lambda s, t: conv.odometry_msg(t, s, f.odom, f.base), conv.odometry_from_msg, qos.STREAM, qos.LATEST),
         topics.SCAN: TopicSpec(LaserScan, lambda s, t: conv.scan_msg(t, s, f.scan), _unsupported, qos.SENSOR, qos.SENSOR),
-        topics.BATTERY: TopicSpec(BatteryState, lambda r, t: conv.battery_msg(t, r), conv.battery_from_msg, qos.RELIABLE, qos.LATEST),
+        topics.BATTERY: TopicSpec(BatteryState, lambda r, t: conv.battery_msg(t, r), conv.battery_from_msg, qos.STREAM, qos.LATEST),
         topics.HUMANS: TopicSpec(
-            PoseArray, lambda h, t: conv.humans_msg(t, h, f.map), lambda m: conv.humans_from_msg(m, human_ids), qos.RELIABLE, qos.LATEST
+            PoseArray, lambda h, t: conv.humans_msg(t, h, f.map), lambda m: conv.humans_from_msg(m, human_ids), qos.STREAM, qos.LATEST
         ),
         topics.CMD_VEL: _twist(),
         topics.CMD_VEL_NAV: _twist(),
         topics.CMD_VEL_TELEOP: _twist(),
         topics.ESTOP: TopicSpec(Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.LATCHED),
         topics.GOAL: TopicSpec(PoseStamped, lambda g, t: conv.goal_msg(t, g), conv.goal_from_msg, qos.RELIABLE, qos.RELIABLE),
-        topics.PLAN: TopicSpec(Path, lambda p, t: conv.path_msg(t, p, f.map), conv.path_from_msg, qos.LATCHED, qos.LATCHED),
+        topics.PLAN: TopicSpec(Path, lambda p, t: conv.path_msg(t, p, f.map), conv.path_from_msg, qos.CHANGES, qos.LATCHED),
         topics.WAIT: TopicSpec(Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.LATCHED),
         topics.THOUGHT: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
         topics.EVENTS: TopicSpec(String, lambda e, _: conv.event_msg(e), conv.event_from_msg, qos.EVENTS_PUB, qos.EVENTS),

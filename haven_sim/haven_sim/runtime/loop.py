@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Collection, Sequence
 
+from haven_sim.common.events import Event, Sequencer
 from haven_sim.runtime.component import Component, Message, due
 from haven_sim.runtime.lockstep import ParticipantInfo, Schedule, inbox_order
 from haven_sim.runtime.wire import on_the_wire
@@ -31,6 +32,7 @@ class InProcessLoop:
         self._rank = {c.name: {t: i for i, t in enumerate(self._handlers[c.name])} for c in self.components}
         self._sim_handlers = dict(sim.handlers())
         self.schedule = Schedule(sim.config.sim.step_ns)
+        self.sequencer = Sequencer()
         for c in self.components:
             self.schedule.add(ParticipantInfo.of(c))
         # Tell each component which of its outputs nobody reads, so it may skip making them.
@@ -40,7 +42,8 @@ class InProcessLoop:
 
     def _route(self, messages: Sequence[Message], to_sim: bool) -> None:
         for sent in messages:
-            m = Message(sent.topic, on_the_wire(sent.topic, sent.data), sent.stamp)
+            data = self.sequencer.number(sent.data) if isinstance(sent.data, Event) else sent.data
+            m = Message(sent.topic, on_the_wire(sent.topic, data), sent.stamp)
             if m.topic in self.observed:
                 for observer in self.observers:
                     observer(m)

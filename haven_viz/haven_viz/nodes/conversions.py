@@ -77,6 +77,6 @@ def viz_specs(frame_id: str = "map") -> dict[str, TopicSpec]:
         topics.AR_MARKERS: TopicSpec(MarkerArray, lambda u, t: marker_array(u, t, frame_id), _no_reader, qos.RELIABLE, qos.RELIABLE),
         topics.WORLD_MARKERS: TopicSpec(MarkerArray, lambda u, t: marker_array(u, t, frame_id), _no_reader, qos.LATCHED, qos.LATCHED),
         topics.CUE_STATE: TopicSpec(
-            String, lambda c, t: String(data=c.to_json(t)), lambda m: CueState.from_json(m.data)[1], qos.LATCHED, qos.LATCHED
+            String, lambda c, t: String(data=c.to_json(t)), lambda m: CueState.from_json(m.data)[1], qos.CHANGES, qos.LATCHED
         ),
     }
