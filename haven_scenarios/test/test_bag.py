@@ -30,3 +30,23 @@ def test_write_then_read_back(tmp_path):
     back = list(read_messages(bag))
     assert [m.data for m in back if m.topic == topics.EVENTS] == [e]  # the bad string is skipped
     assert [round(m.data.pose.x, 9) for m in back if m.topic == topics.ODOM] == [round(s.pose.x, 9) for s in odom]
+
+
+def test_offered_qos_is_recorded_for_replay(tmp_path):
+    """`ros2 bag play` republishes with the recorded offered QoS: latched topics must stay latched."""
+    from rosbags.highlevel import AnyReader
+
+    from haven_scenarios.nodes.recorder import bag_qos
+    from haven_scenarios.record.bag import TYPESTORE
+    from haven_sim.nodes import qos
+
+    bag = tmp_path / "bag"
+    with BagWriter(bag) as w:
+        w.add_topic("/tf_static", "std_msgs/msg/String", [bag_qos(qos.LATCHED)])
+        w.add_topic("/odom", "nav_msgs/msg/Odometry", [bag_qos(qos.RELIABLE)])
+        w.write("/tf_static", 0, bytes(serialize_message(String(data="x"))))
+    with AnyReader([bag], default_typestore=TYPESTORE) as reader:
+        offered = {c.topic: c.ext.offered_qos_profiles for c in reader.connections}
+    assert [q.durability.name for q in offered["/tf_static"]] == ["TRANSIENT_LOCAL"]
+    assert [q.reliability.name for q in offered["/odom"]] == ["RELIABLE"]
+    assert "durability: transient_local" in (bag / "metadata.yaml").read_text()

@@ -82,3 +82,14 @@ def test_contact_ends_the_trial_when_the_scenario_says_so_and_a_flat_battery_doe
     assert flat.ended is None
     flat.tick(6.1)
     assert flat.ended is EndReason.BATTERY_EMPTY
+
+
+def test_a_trial_stopped_from_outside_ends_interrupted_at_the_last_tick_once():
+    d = TrialDirector(load_scenario("hallway"))
+    ready(d)
+    assert d.interrupt() == []  # nothing began: nothing to end
+    d.tick(0.1)
+    d.tick(0.2)
+    (end,) = by_topic(d.interrupt(), topics.EVENTS)
+    assert (end.kind, end.stamp, end["reason"]) == (EventKind.TRIAL_END, 0.2, EndReason.INTERRUPTED)
+    assert d.interrupt() == [] and d.tick(0.3) == []

@@ -22,7 +22,7 @@ def test_every_shipped_scenario_completes_without_contact(name):
         assert (m["gems_robot"], m["gems_human"]) == (4, 8)
         assert m["charge_trips"] >= 1  # a 12 m battery forces a trip to the base
     if name == "hallway_hard":
-        assert any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in r.log.events)
+        assert any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in r.recording.events)
 
 
 def test_same_seed_same_trial_and_seeds_vary_the_participant():

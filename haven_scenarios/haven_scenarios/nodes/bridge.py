@@ -24,7 +24,7 @@ class Bridge(Node):
         self.topics = RawTopics(self, self.relay.add_topic, self._on_message, [t for t in topics if t] or None)
         print(f"bridge: Foxglove WebSocket on ws://{host}:{self.relay.port}", flush=True)
 
-    def _on_message(self, topic: str, data: bytes) -> None:
+    def _on_message(self, topic: str, msgtype: str, data: bytes) -> None:
         self.relay.publish(topic, data, time.time_ns())
 
     def destroy_node(self) -> None:

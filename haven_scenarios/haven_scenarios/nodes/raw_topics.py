@@ -13,34 +13,31 @@ from collections.abc import Callable
 from typing import Any
 
 from rclpy.clock import Clock, ClockType
+from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+from rclpy.subscription import Subscription
 
-from haven_sim.nodes import qos
+from haven_sim.nodes import wire
+from haven_viz.nodes.conversions import viz_specs
 
-KNOWN = [
-    ("/clock", "rosgraph_msgs/msg/Clock", qos.CLOCK),
-    ("/map", "nav_msgs/msg/OccupancyGrid", qos.LATCHED),
-    ("/odom", "nav_msgs/msg/Odometry", qos.RELIABLE),
-    ("/tf", "tf2_msgs/msg/TFMessage", qos.TF),
-    ("/tf_static", "tf2_msgs/msg/TFMessage", qos.LATCHED),
-    ("/scan", "sensor_msgs/msg/LaserScan", qos.SENSOR),
-    ("/battery_state", "sensor_msgs/msg/BatteryState", qos.RELIABLE),
-    ("/humans", "geometry_msgs/msg/PoseArray", qos.RELIABLE),
-    ("/cmd_vel", "geometry_msgs/msg/Twist", qos.RELIABLE),
-    ("/goal_pose", "geometry_msgs/msg/PoseStamped", qos.RELIABLE),
-    ("/plan", "nav_msgs/msg/Path", qos.LATCHED),
-    ("/haven/wait", "std_msgs/msg/Bool", qos.LATCHED),
-    ("/haven/thought", "std_msgs/msg/String", qos.LATCHED),
-    ("/haven/events", "std_msgs/msg/String", qos.EVENTS_HISTORY),
-    ("/haven/ar_markers", "visualization_msgs/msg/MarkerArray", qos.RELIABLE),
-    ("/haven/world_markers", "visualization_msgs/msg/MarkerArray", qos.LATCHED),
-]
-IGNORED = ("/rosout", "/parameter_events")
 
-# add(topic, type name, latched) -> whether to subscribe; on_message(topic, cdr bytes)
+def type_name(msg_type: Any) -> str:
+    """'nav_msgs/msg/Odometry' for the rclpy class nav_msgs.msg.Odometry."""
+    return f"{msg_type.__module__.split('.')[0]}/msg/{msg_type.__name__}"
+
+
+def known_topics() -> list[tuple[str, str, QoSProfile]]:
+    """The suite's own topics from the topic table (type name, the QoS their publishers offer)."""
+    table = {**wire.specs(), **viz_specs()}
+    return [("/" + topic.lstrip("/"), type_name(spec.msg_type), spec.pub_qos) for topic, spec in table.items()]
+
+
+IGNORED = ("/rosout", "/parameter_events", "/haven/lockstep/")  # logs, parameter changes, the lockstep clock's own traffic
+
+# add(topic, type name, latched) -> whether to subscribe; on_message(topic, type name, cdr bytes)
 AddTopic = Callable[[str, str, bool], bool]
-OnMessage = Callable[[str, bytes], None]
+OnMessage = Callable[[str, str, bytes], None]
 
 
 def message_class(type_name: str) -> Any:
@@ -64,11 +61,22 @@ def matching_qos(node: Node, topic: str, depth: int = 100) -> QoSProfile:
 
 
 class RawTopics:
-    def __init__(self, node: Node, add: AddTopic, on_message: OnMessage, topics: list[str] | None = None) -> None:
-        """`topics`: only these (all of the graph when None)."""
-        self.node, self.add, self.on_message, self.only = node, add, on_message, topics
+    def __init__(
+        self,
+        node: Node,
+        add: AddTopic,
+        on_message: OnMessage,
+        topics: list[str] | None = None,
+        keep_all: bool = False,
+        on_lost: Callable[[str, int], None] | None = None,
+    ) -> None:
+        """`topics`: only these (all of the graph when None); `keep_all`: readers that drop nothing
+        (a recorder's), else the depth of the topic's profile; `on_lost(topic, n)`: DDS reports
+        that n messages of a topic never reached the reader."""
+        self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = node, add, on_message, topics, keep_all, on_lost
         self.handled: set[str] = set()
-        for topic, msgtype, profile in KNOWN:
+        self.subscriptions: dict[str, tuple[str, Subscription]] = {}  # topic -> (type name, subscription)
+        for topic, msgtype, profile in known_topics():
             if self._wanted(topic):
                 self._subscribe(topic, msgtype, profile)
         # Wall clock: topics must be found even before /clock runs.
@@ -92,4 +100,11 @@ class RawTopics:
             return
         if not self.add(topic, msgtype, profile.durability == DurabilityPolicy.TRANSIENT_LOCAL):
             return
-        self.node.create_subscription(cls, topic, functools.partial(self.on_message, topic), profile, raw=True)
+        if self.keep_all:
+            profile = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=profile.reliability, durability=profile.durability)
+        events = None
+        if self.on_lost is not None:
+            on_lost = self.on_lost
+            events = SubscriptionEventCallbacks(message_lost=lambda info: on_lost(topic, int(info.total_count_change)))  # type: ignore[attr-defined]
+        sub = self.node.create_subscription(cls, topic, functools.partial(self.on_message, topic, msgtype), profile, raw=True, event_callbacks=events)
+        self.subscriptions[topic] = (msgtype, sub)

@@ -1,8 +1,11 @@
 """Session recorder: every topic of the graph into a rosbag2 bag (MCAP, metadata version 9), and
 /haven/events also line by line into events.jsonl, so nothing is lost if the run is cut short.
 
-Messages are subscribed raw (CDR bytes, no Python conversion) and stamped with the receive time in
-sim time. The bag is closed properly on Ctrl-C or SIGTERM.
+Messages are subscribed raw (CDR bytes, no Python conversion) with readers that drop nothing, and
+written with the receive time in sim time (rosbag2's convention); each topic is recorded with the
+QoS its publishers offer, so `ros2 bag play` re-latches the latched ones. Messages DDS reports lost
+on the way (a reader too far behind) are counted per topic into the bag's metadata. On Ctrl-C,
+SIGTERM or SIGHUP the recorder first writes whatever its readers still hold, then closes the bag.
 """
 
 from __future__ import annotations
@@ -11,13 +14,39 @@ import sys
 from pathlib import Path
 
 from rclpy.node import Node
+from rclpy.qos import QoSProfile
 from rclpy.serialization import deserialize_message
+from rosbags.interfaces import Qos, QosDurability, QosHistory, QosLiveliness, QosReliability, QosTime
 from std_msgs.msg import String
 
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.record.bag import BagWriter
+from haven_sim.common import topics
 from haven_sim.nodes import conversions as conv
+from haven_sim.nodes.lockstep import take_all
 from haven_sim.nodes.runner import run_node
+
+EVENTS = "/" + topics.EVENTS
+
+
+def bag_qos(p: QoSProfile) -> Qos:
+    """An rclpy QoS profile as rosbags records it (the offered_qos_profiles of metadata.yaml)."""
+
+    def duration(d: object) -> QosTime:
+        ns = int(getattr(d, "nanoseconds", 0))
+        return QosTime(ns // 1_000_000_000, ns % 1_000_000_000)
+
+    return Qos(
+        history=QosHistory(int(p.history)),
+        depth=int(p.depth),
+        reliability=QosReliability(int(p.reliability)),
+        durability=QosDurability(int(p.durability)),
+        deadline=duration(p.deadline),
+        lifespan=duration(p.lifespan),
+        liveliness=QosLiveliness(int(p.liveliness)),
+        liveliness_lease_duration=duration(p.liveliness_lease_duration),
+        avoid_ros_namespace_conventions=bool(p.avoid_ros_namespace_conventions),
+    )
 
 
 class Recorder(Node):
@@ -28,17 +57,21 @@ class Recorder(Node):
         self.bag = BagWriter(folder / "bag")
         self.bag.__enter__()
         self.events = (folder / "events.jsonl").open("a", encoding="utf-8")
-        self.topics = RawTopics(self, self._add, self._on_message)
+        self.lost: dict[str, int] = {}
+        self.topics = RawTopics(self, lambda topic, msgtype, latched: True, self._on_message, keep_all=True, on_lost=self._on_lost)
 
-    def _add(self, topic: str, msgtype: str, latched: bool) -> bool:
-        if self.bag.add_topic(topic, msgtype):
-            return True
-        self.get_logger().warning(f"not recording {topic}: type {msgtype} unknown to rosbags")
-        return False
+    def _on_lost(self, topic: str, n: int) -> None:
+        self.lost[topic] = self.lost.get(topic, 0) + n
+        self.get_logger().warning(f"{topic}: {n} message(s) lost before the recorder could read them", throttle_duration_sec=5.0)
 
-    def _on_message(self, topic: str, data: bytes) -> None:
+    def _on_message(self, topic: str, msgtype: str, data: bytes) -> None:
+        if not self.bag.has_topic(topic):
+            offered = [bag_qos(i.qos_profile) for i in self.get_publishers_info_by_topic(topic)]
+            if not self.bag.add_topic(topic, msgtype, offered):
+                self.get_logger().warning(f"not recording {topic}: type {msgtype} unknown to rosbags", throttle_duration_sec=60.0)
+                return
         self.bag.write(topic, self.get_clock().now().nanoseconds, data)
-        if topic == "/haven/events":
+        if topic == EVENTS:
             try:
                 event = conv.event_from_msg(deserialize_message(data, String))
             except ValueError as e:  # kept in the bag as received; left out of events.jsonl
@@ -48,7 +81,10 @@ class Recorder(Node):
             self.events.flush()
 
     def destroy_node(self) -> None:
-        self.bag.close()
+        for topic, (msgtype, sub) in self.topics.subscriptions.items():
+            for data in take_all(sub):
+                self._on_message(topic, msgtype, data)
+        self.bag.close(lost=self.lost)
         self.events.close()
         super().destroy_node()
 

@@ -3,12 +3,15 @@
 The behaviour is `haven_scenarios.study.director.TrialDirector` (shared with batch mode). The node
 holds the start until the nodes in `wait_for` subscribe and its publishers have matched every
 reader the graph knows, so the recorder and the planner hear the first event and goal. At the end
-it publishes `trial_end` and exits with code 0, which is how `haven run` knows the trial is over.
+it publishes `trial_end`, waits until every reader of /haven/events has acknowledged it, and exits
+with code 0, which is how `haven run` knows the trial is over.
 """
 
 from __future__ import annotations
 
 import sys
+
+from rclpy.duration import Duration
 
 from haven_scenarios.study.director import ScenarioNodeConfig, TrialDirector
 from haven_scenarios.study.scenario import load_scenario
@@ -16,6 +19,8 @@ from haven_sim.common import topics
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.runner import run_node
+
+END_ACK_TIMEOUT_S = 10.0
 
 
 class ScenarioNode(ComponentNode):
@@ -35,12 +40,26 @@ class ScenarioNode(ComponentNode):
 
     def _watch(self) -> None:
         if self._finished:
-            raise SystemExit(0)  # one period after trial_end, so the event is out
+            self._deliver_events()
+            raise SystemExit(0)
         if self.director.ended is not None:
             self.get_logger().info(f"trial over: {self.director.ended}")
             self._finished = True
         elif not self.director.start_allowed:
             self.director.start_allowed = self._everyone_listening()
+
+    def _deliver_events(self) -> None:
+        """The events publisher must not go before every reader (the recorder) has trial_end."""
+        if not self._pubs[topics.EVENTS].wait_for_all_acked(Duration(seconds=END_ACK_TIMEOUT_S)):
+            self.get_logger().warning(f"trial_end not acknowledged by every reader within {END_ACK_TIMEOUT_S:g} s")
+
+    def destroy_node(self) -> None:
+        """Stopped mid-trial (Ctrl-C): the recording still gets its end, marked interrupted."""
+        ending = self.director.interrupt()
+        if ending:
+            self.publish(ending)
+            self._deliver_events()
+        super().destroy_node()
 
     def _everyone_listening(self) -> bool:
         """The nodes in `wait_for` subscribe, and our publishers have matched every subscription the

@@ -7,17 +7,25 @@ no Python message conversion; reading deserialises only the topics the metrics n
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
+import json
+import struct
+from collections.abc import Iterator, Mapping, Sequence
 from pathlib import Path
 from types import TracebackType
 from typing import Any
 
+import yaml
+from mcap.exceptions import McapError
+from mcap.records import Channel as McapChannel
+from mcap.records import Message as McapMessage
+from mcap.records import Schema as McapSchema
+from mcap.stream_reader import StreamReader
 from rosbags.highlevel import AnyReader
-from rosbags.interfaces import Connection
+from rosbags.interfaces import Connection, Qos
 from rosbags.rosbag2 import StoragePlugin, Writer
 from rosbags.typesys import Stores, get_typestore
 
-from haven_scenarios.record.log import LogBuilder, TrialLog
+from haven_scenarios.record.timeline import Recording
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventError
 from haven_sim.common.geometry import Pose2D, Twist2D, quaternion_to_yaw
@@ -27,6 +35,7 @@ from haven_sim.sim.battery import BatteryReading, PowerStatus
 from haven_viz.cues import CueState
 
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
+LOST_KEY = "haven.messages_lost"  # custom_data in metadata.yaml: {topic: messages DDS reported lost}
 
 
 class BagWriter:
@@ -45,18 +54,26 @@ class BagWriter:
     def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
         self.close()
 
-    def close(self) -> None:
+    def close(self, lost: Mapping[str, int] | None = None) -> None:
+        """Close the bag; `lost`: messages per topic that never reached the recorder, kept in the
+        metadata's custom_data (LOST_KEY) so the session can say how complete it is."""
         if self._writer is not None:
+            if lost is not None:
+                self._writer.set_custom_data(LOST_KEY, json.dumps(dict(lost), sort_keys=True))
             self._writer.close()
             self._writer = None  # type: ignore[assignment]
 
-    def add_topic(self, topic: str, msgtype: str) -> bool:
-        """Register a topic; False for types this ROS distribution's typestore does not know."""
+    def has_topic(self, topic: str) -> bool:
+        return topic in self._connections
+
+    def add_topic(self, topic: str, msgtype: str, offered_qos: Sequence[Qos] = ()) -> bool:
+        """Register a topic with the QoS its publishers offer (what `ros2 bag play` republishes with);
+        False for types this ROS distribution's typestore does not know."""
         if topic in self._connections:
             return True
         if msgtype not in TYPESTORE.types:
             return False
-        self._connections[topic] = self._writer.add_connection(topic, msgtype, typestore=TYPESTORE)
+        self._connections[topic] = self._writer.add_connection(topic, msgtype, typestore=TYPESTORE, offered_qos_profiles=offered_qos)
         self.counts[topic] = 0
         return True
 
@@ -67,43 +84,108 @@ class BagWriter:
 
 def _pose(p: Any) -> Pose2D:
     q = p.orientation
+    if abs(q.x) + abs(q.y) + abs(q.z) + abs(q.w) < 1e-9:
+        return Pose2D(p.position.x, p.position.y, float("nan"))
     return Pose2D(p.position.x, p.position.y, quaternion_to_yaw(q.x, q.y, q.z, q.w))
 
 
-def _payload(topic: str, msg: Any, human_ids: Sequence[str]) -> Any:
-    """A recorded message as the core payload the components and metrics use."""
+def _stamp(msg: Any) -> float:
+    return float(msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9)
+
+
+def _message(topic: str, msg: Any, human_ids: Sequence[str]) -> Message:
+    """A recorded message as the core payload the components and metrics use, with its own stamp
+    (the header's, or the event's or cue state's)."""
     if topic == topics.ODOM:
         t = msg.twist.twist
-        return RobotState(_pose(msg.pose.pose), Twist2D(t.linear.x, t.linear.y, t.angular.z))
+        return Message(topic, RobotState(_pose(msg.pose.pose), Twist2D(t.linear.x, t.linear.y, t.angular.z)), _stamp(msg))
     if topic == topics.HUMANS:
-        return name_humans([_pose(p) for p in msg.poses], human_ids)
+        return Message(topic, name_humans([_pose(p) for p in msg.poses], human_ids), _stamp(msg))
     if topic == topics.BATTERY:
         level = float(msg.percentage)
-        return BatteryReading(level, PowerStatus.DISCHARGING, float(msg.voltage), float(msg.charge), float(msg.capacity), float("nan"))
+        reading = BatteryReading(level, PowerStatus.DISCHARGING, float(msg.voltage), float(msg.charge), float(msg.capacity), float("nan"))
+        return Message(topic, reading, _stamp(msg))
+    if topic == topics.PLAN:
+        return Message(topic, [_pose(ps.pose) for ps in msg.poses], _stamp(msg))
     if topic == topics.CUE_STATE:
-        return CueState.from_json(msg.data)[1]
-    return Event.from_json(msg.data)
+        stamp, state = CueState.from_json(msg.data)
+        return Message(topic, state, stamp)
+    e = Event.from_json(msg.data)
+    return Message(topic, e, e.stamp)
 
 
-READ = {"/" + t: t for t in (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.EVENTS, topics.CUE_STATE)}
+READ = {"/" + t: t for t in (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.PLAN, topics.EVENTS, topics.CUE_STATE)}
 
 
 def read_messages(bag: Path, human_ids: Sequence[str] = ()) -> Iterator[Message]:
     """The trial's messages in bag order; recorded strings that are not valid events are skipped."""
     with AnyReader([bag], default_typestore=TYPESTORE) as reader:
         connections = [c for c in reader.connections if c.topic in READ]
-        for conn, stamp, raw in reader.messages(connections=connections):
-            topic = READ[conn.topic]
+        if not connections:  # (an empty list would mean every connection)
+            return
+        for conn, _, raw in reader.messages(connections=connections):
             try:
-                data = _payload(topic, reader.deserialize(raw, conn.msgtype), human_ids)
+                yield _message(READ[conn.topic], reader.deserialize(raw, conn.msgtype), human_ids)
             except (EventError, ValueError):
                 continue
-            yield Message(topic, data, stamp * 1e-9)
 
 
-def read_log(bag: Path, human_ids: Sequence[str] = (), rate_hz: float = 10.0) -> TrialLog:
-    """The trial as `TrialLog` samples (at `rate_hz` of bag time) plus every event."""
-    builder = LogBuilder(rate_hz)
-    for m in read_messages(bag, human_ids):
-        builder.add(m)
-    return builder.log
+def recovered_messages(bag: Path) -> Iterator[tuple[str, str, int, bytes]]:
+    """(topic, type name, log time ns, CDR bytes) of every message the MCAP files of a bag still
+    hold, read as a stream: what a recorder killed before it wrote its footer (or metadata.yaml)
+    leaves readable. Stops quietly where the data ends."""
+    for path in sorted(bag.glob("*.mcap")):
+        with path.open("rb") as f:
+            schemas: dict[int, str] = {}
+            channels: dict[int, tuple[str, str]] = {}
+            try:
+                for record in StreamReader(f, skip_magic=False).records:
+                    if isinstance(record, McapSchema):
+                        schemas[record.id] = record.name
+                    elif isinstance(record, McapChannel):
+                        channels[record.id] = (record.topic, schemas.get(record.schema_id, ""))
+                    elif isinstance(record, McapMessage) and record.channel_id in channels:
+                        topic, msgtype = channels[record.channel_id]
+                        yield topic, msgtype, record.log_time, bytes(record.data)
+            except (McapError, EOFError, ValueError, struct.error):
+                continue  # a truncated file: everything before the cut was yielded
+
+
+def readable(bag: Path) -> bool:
+    """A complete bag: metadata.yaml and MCAP files that rosbags opens."""
+    try:
+        with AnyReader([bag], default_typestore=TYPESTORE):
+            return True
+    except Exception:  # noqa: BLE001 - rosbags raises several kinds for a damaged bag
+        return False
+
+
+def lost_messages(bag: Path) -> dict[str, int]:
+    """What the recorder noted as lost per topic (custom_data of metadata.yaml)."""
+    try:
+        info = yaml.safe_load((bag / "metadata.yaml").read_text())["rosbag2_bagfile_information"]
+        lost = json.loads((info.get("custom_data") or {}).get(LOST_KEY, "{}"))
+        return {str(k): int(v) for k, v in lost.items()}
+    except (OSError, KeyError, TypeError, ValueError, AttributeError, yaml.YAMLError):
+        return {}
+
+
+def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording, str]:
+    """The recording, and a note when it had to be recovered from a damaged bag ("" if not)."""
+    rec = Recording()
+    if readable(bag):
+        for m in read_messages(bag, human_ids):
+            rec.add(m)
+        rec.lost = lost_messages(bag)
+        return rec, ""
+    n = 0
+    for topic, msgtype, _, data in recovered_messages(bag):
+        name = READ.get(topic)
+        if name is None or msgtype not in TYPESTORE.types:
+            continue
+        try:
+            rec.add(_message(name, TYPESTORE.deserialize_cdr(data, msgtype), human_ids))
+            n += 1
+        except Exception:  # noqa: BLE001 - a message cut short by the truncation
+            continue
+    return rec, f"bag recovered from its MCAP data ({n} messages read; metadata or footer missing)"

@@ -1,10 +1,8 @@
-"""Trial metrics from trajectories and events, so they can be recomputed from any recording.
+"""Trial metrics from a `Recording`: the same code for a bag read back and for a batch trial.
 
-Names and thresholds follow the social-navigation benchmarks where they exist: time to goal, path
-length, minimum human-robot distance, intrusions into the intimate / personal / social zones at
-0.45 / 1.2 / 3.6 m (Hall's proxemics; centre-to-centre distance), collisions; plus HAVEN's own:
-waits, re-plans, battery used, charge trips, gems by each party, and cue exposure (time the thought
-bubble was shown; how long before each turn the turn signal on that side was lit).
+Every metric is defined in `metric_table` (name, unit, definition, source). Everything is computed
+on the trial's own timeline (`timeline.Timeline`): header stamps, one grid, exactly
+[trial_start, trial_end].
 """
 
 from __future__ import annotations
@@ -16,46 +14,181 @@ from typing import Any
 
 import numpy as np
 
-from haven_scenarios.record.log import TrialLog
+from haven_scenarios.record.contacts import PERSON_ON_ROBOT, ROBOT_ON_PERSON, attribute, episodes
+from haven_scenarios.record.metric_table import ZONES
+from haven_scenarios.record.timeline import Recording, Timeline
+from haven_scenarios.record.validity import check
+from haven_scenarios.study.participants import HUMAN_PLANNER
+from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
 from haven_sim.common.events import Event, EventKind
-from haven_sim.common.geometry import FloatArray
+from haven_sim.common.geometry import FloatArray, wrap_angle
+from haven_sim.nav.planner import GridPlanner, PlanningError
+from haven_sim.sim.occupancy import rasterise
+from haven_sim.sim.world import World
 
-ZONES = {"intimate": 0.45, "personal": 1.2, "social": 3.6}
 TURN_RATE_RPS = 0.3  # |angular velocity| above this is a turn
+STILL_MPS, STILL_RPS = 0.01, 0.01  # the robot is not moving (HuNavSim uses 0.001 m/s and 0.01 rad/s)
+PERSON_STILL_MPS = 0.05
 
 
-def _path_length(xy: FloatArray) -> float:
+def _r(x: float | None, digits: int = 3) -> float | None:
+    return None if x is None or not math.isfinite(x) else round(float(x), digits)
+
+
+def _length(xy: FloatArray) -> float:
     return float(np.sum(np.hypot(*np.diff(xy, axis=0).T))) if len(xy) > 1 else 0.0
 
 
+def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: World | None = None) -> dict[str, Any]:
+    window = rec.window()
+    m: dict[str, Any] = {"scenario": scenario, "end_reason": end_reason}
+    if window is None:
+        return {**m, "duration_s": None, **check(rec, None)}
+    t0, t1 = window
+    tl = Timeline.of(rec, t0, t1)
+    events = sorted((replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp)
+    m["duration_s"] = _r(t1 - t0, 2)
+    m.update(_robot(tl, events))
+    m.update(_navigation(tl, events, rec, t0, t1))
+    m.update(_proximity(tl))
+    m.update(_contacts(tl, rec.events, t0, t1))
+    m.update(_mission(tl, events))
+    m.update(_cues(tl))
+    for hid in tl.humans:
+        m.update(_person(hid, tl, events, world, rec))
+    m.update(check(rec, window))
+    return m
+
+
 def _first(events: Sequence[Event], kind: EventKind, **match: Any) -> float | None:
-    for e in events:
-        if e.kind is kind and all(e.get(k) == v for k, v in match.items()):
-            return e.stamp
-    return None
+    return next((e.stamp for e in events if e.kind is kind and all(e.get(k) == v for k, v in match.items())), None)
 
 
 def _count(events: Sequence[Event], kind: EventKind) -> int:
     return sum(1 for e in events if e.kind is kind)
 
 
-def _intervals(events: Sequence[Event], start: EventKind, stop: set[EventKind], end_t: float) -> list[tuple[float, float]]:
-    out: list[tuple[float, float]] = []
+def _robot(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
+    dt, v, w = tl.dt, tl.robot_v, tl.robot_w
+    step = np.diff(tl.t) if len(tl.t) > 1 else np.ones(0)
+    accel = np.diff(v) / step if len(v) > 1 else np.zeros(0)
+    jerk = np.diff(accel) / step[1:] if len(accel) > 1 else np.zeros(0)
+    still = (np.abs(v) < STILL_MPS) & (np.abs(w) < STILL_RPS)
+    return {
+        "robot_time_to_finish_s": _r(_first(events, EventKind.TASK_DONE, by="robot"), 2),
+        "robot_path_length_m": _r(_length(tl.robot_xy)),
+        "robot_time_not_moving_s": _r(float(np.sum(dt[still])), 2),
+        "robot_speed_mean_mps": _r(float(np.mean(np.abs(v))) if len(v) else None),
+        "robot_speed_max_mps": _r(float(np.max(np.abs(v))) if len(v) else None),
+        "robot_accel_mean_mps2": _r(float(np.mean(np.abs(accel))) if len(accel) else None),
+        "robot_accel_max_mps2": _r(float(np.max(np.abs(accel))) if len(accel) else None),
+        "robot_jerk_mean_mps3": _r(float(np.mean(np.abs(jerk))) if len(jerk) else None, 2),
+        "cumulative_heading_change_rad": _r(float(np.sum(np.abs(np.diff(tl.robot_yaw)))) if len(tl.t) > 1 else 0.0),
+    }
+
+
+def _turning(poses: Sequence[Any]) -> float:
+    return sum(abs(wrap_angle(b.yaw - a.yaw)) for a, b in zip(poses, poses[1:]) if math.isfinite(a.yaw) and math.isfinite(b.yaw))
+
+
+def _navigation(tl: Timeline, events: Sequence[Event], rec: Recording, t0: float, t1: float) -> dict[str, Any]:
+    """Waits, re-plans, and how the driving compared with the plans (the first plan of each goal)."""
+    waits: list[tuple[float, float]] = []
     since: float | None = None
     for e in events:
-        if e.kind is start and since is None:
+        if e.kind is EventKind.WAITING and since is None:
             since = e.stamp
-        elif e.kind in stop and since is not None:
-            out.append((since, e.stamp))
+        elif e.kind in (EventKind.RESUMED, EventKind.PLAN_MADE, EventKind.REPLANNED) and since is not None:
+            waits.append((since, e.stamp))
             since = None
     if since is not None:
-        out.append((since, end_t))
+        waits.append((since, float(tl.t[-1])))
+    made = [e.stamp for e in events if e.kind is EventKind.PLAN_MADE]
+    planned = sum(float(e["length_m"]) for e in events if e.kind is EventKind.PLAN_MADE and "length_m" in e.data)
+    driven = 0.0
+    for a, b in zip(made, [*made[1:], float(tl.t[-1])]):
+        sel = (tl.t >= a - 1e-9) & (tl.t <= b + 1e-9)
+        driven += _length(tl.robot_xy[sel])
+    plans = {round(s - t0, 4): p for s, p in rec.plans if t0 - 1e-9 <= s <= t1 + 1e-9}
+    plan_turning = sum(_turning(plans[round(s, 4)]) for s in made if round(s, 4) in plans)
+    turning = float(np.sum(np.abs(np.diff(tl.robot_yaw)))) if len(tl.t) > 1 else 0.0
+    return {
+        "waits": len(waits),
+        "wait_time_s": _r(sum(b - a for a, b in waits), 2),
+        "replans": _count(events, EventKind.REPLANNED),
+        "reverts": _count(events, EventKind.REVERTED),
+        "plans_refused": _count(events, EventKind.PLAN_REFUSED),
+        "path_efficiency": _r(planned / driven if driven > 0 else None),
+        "path_irregularity_rad": _r(turning - plan_turning if made else None),
+    }
+
+
+def _distances(tl: Timeline) -> dict[str, FloatArray]:
+    return {hid: np.hypot(*(xy - tl.robot_xy).T) for hid, xy in tl.humans.items()}
+
+
+def _proximity(tl: Timeline) -> dict[str, Any]:
+    d = _distances(tl)
+    if not d:
+        return {k: None for k in ("min_human_distance_m", "min_human_surface_distance_m", "avg_closest_human_distance_m")}
+    closest = np.nanmin(np.vstack(list(d.values())), axis=0)
+    total = float(np.sum(tl.dt)) or 1.0
+    bands = {"intimate": (0.0, ZONES["intimate"]), "personal": (ZONES["intimate"], ZONES["personal"]),
+             "social": (ZONES["personal"], ZONES["social"]), "public": (ZONES["social"], math.inf)}
+    out: dict[str, Any] = {
+        "min_human_distance_m": _r(float(np.nanmin(closest))),
+        "min_human_surface_distance_m": _r(float(np.nanmin(closest)) - ROBOT_BODY.radius_m - HUMAN_BODY.radius_m),
+        "avg_closest_human_distance_m": _r(float(np.nanmean(closest))),
+    }
+    for name, (lo, hi) in bands.items():
+        out[f"closest_{name}_pct"] = _r(100.0 * float(np.sum(tl.dt[(closest >= lo) & (closest < hi)])) / total, 1)
     return out
 
 
+def _contacts(tl: Timeline, raw: Sequence[Event], t0: float, t1: float) -> dict[str, Any]:
+    eps = [attribute(ep, tl) for ep in episodes(raw, t0, t1)]
+    people = [ep for ep in eps if ep.other.startswith("human:")]
+    out: dict[str, Any] = {
+        "human_contacts": len(people),
+        "human_contacts_robot_on_person": sum(1 for ep in people if ep.by == ROBOT_ON_PERSON),
+        "human_contacts_person_on_robot": sum(1 for ep in people if ep.by == PERSON_ON_ROBOT),
+        "wall_contacts": sum(1 for ep in eps if ep.other == "wall"),
+    }
+    for hid in tl.humans:
+        mine = [ep for ep in people if ep.other == f"human:{hid}"]
+        out[f"{hid}_contacts"] = len(mine)
+        out[f"{hid}_contacts_robot_on_person"] = sum(1 for ep in mine if ep.by == ROBOT_ON_PERSON)
+        out[f"{hid}_contacts_person_on_robot"] = sum(1 for ep in mine if ep.by == PERSON_ON_ROBOT)
+    return out
+
+
+def _mission(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
+    levels = tl.battery[np.isfinite(tl.battery)]
+    collected = [e for e in events if e.kind is EventKind.GEM_COLLECTED]
+    return {
+        "battery_used": _r(float(np.sum(np.clip(-np.diff(levels), 0, None))), 4) if len(levels) > 1 else 0.0,
+        "battery_final": _r(float(levels[-1]), 4) if len(levels) else None,
+        "charge_trips": _count(events, EventKind.CHARGE_TRIP),
+        "gems_robot": sum(1 for e in collected if e["by"] == "robot"),
+        "gems_human": sum(1 for e in collected if e["by"] != "robot"),
+        "robot_gem_order": " ".join(str(e["gem"]) for e in collected if e["by"] == "robot"),
+    }
+
+
+def _exposure(tl: Timeline, sel: Any = slice(None)) -> dict[str, float]:
+    dt, cues = tl.dt[sel], tl.cues[sel] if isinstance(sel, slice) else [c for c, keep in zip(tl.cues, sel) if keep]
+    shown = {
+        "path_projection_shown_s": [c.path_markers > 0 for c in cues],
+        "turn_signal_shown_s": [c.turn_signal != 0 for c in cues],
+        "thought_bubble_shown_s": [bool(c.thought) for c in cues],
+        "battery_indicator_shown_s": [c.battery_level is not None for c in cues],
+    }
+    return {k: round(float(np.sum(dt[np.asarray(v, dtype=bool)])), 2) for k, v in shown.items()}
+
+
 def signal_lead_times(t: FloatArray, wz: FloatArray, signal: Sequence[int]) -> list[float]:
-    """For each turn (|wz| above TURN_RATE_RPS), how long the matching turn signal had been lit
-    when it began (0 if it was not lit)."""
+    """For each turn (|wz| rising above TURN_RATE_RPS), how long the matching turn signal had been
+    lit when it began (0 if it was not lit)."""
     leads = []
     turning = np.abs(wz) > TURN_RATE_RPS
     sig = np.asarray(signal)
@@ -69,60 +202,60 @@ def signal_lead_times(t: FloatArray, wz: FloatArray, signal: Sequence[int]) -> l
     return leads
 
 
-def compute(log: TrialLog, scenario: str = "", end_reason: str = "") -> dict[str, Any]:
-    """Times are seconds since the trial started (the `trial_start` event; in a recording the
-    simulation may have run a little before it)."""
-    start = _first(log.events, EventKind.TRIAL_START)
-    t0 = start if start is not None else (log.t[0] if log.t else 0.0)
-    keep = [i for i, ti in enumerate(log.t) if ti >= t0 - 1e-9]
-    t = np.asarray([log.t[i] for i in keep], dtype=float) - t0
-    robot = np.asarray([log.robot[i] for i in keep], dtype=float).reshape(-1, 4)
-    humans = {h: [xy[i] for i in keep if i < len(xy)] for h, xy in log.humans.items()}
-    # In stamp order: a recorder may receive some events late (kept for it by their publishers).
-    events = sorted((replace(e, stamp=e.stamp - t0) for e in log.events if e.stamp >= t0 - 1e-9), key=lambda e: e.stamp)
-    battery = [log.battery[i] for i in keep]
-    bubble_log = [log.bubble[i] for i in keep]
-    signal_log = [log.signal[i] for i in keep]
-    end_t = float(t[-1]) if len(t) else 0.0
-    m: dict[str, Any] = {"scenario": scenario, "end_reason": end_reason, "duration_s": round(end_t, 2)}
-    robot_done = _first(events, EventKind.TASK_DONE, by="robot")
-    m["robot_time_to_finish_s"] = None if robot_done is None else round(robot_done, 2)
-    m["robot_path_length_m"] = round(_path_length(robot[:, :2]), 3)
-    dmin = math.inf
-    for hid, xy in humans.items():
-        h = np.asarray(xy, dtype=float).reshape(-1, 2)
-        done = _first(events, EventKind.TASK_DONE, by=hid)
-        m[f"{hid}_time_to_finish_s"] = None if done is None else round(done, 2)
-        m[f"{hid}_path_length_m"] = round(_path_length(h), 3)
-        d = np.hypot(h[:, 0] - robot[: len(h), 0], h[:, 1] - robot[: len(h), 1])
-        dmin = min(dmin, float(d.min()) if len(d) else math.inf)
-        dt = np.diff(t[: len(d)], append=t[len(d) - 1] if len(d) else 0.0)
-        for zone, r in ZONES.items():
-            inside = d < r
-            m[f"{hid}_{zone}_intrusion_s"] = round(float(np.sum(dt[inside])), 2)
-            m[f"{hid}_{zone}_intrusions"] = int(np.sum(inside[1:] & ~inside[:-1]) + (1 if len(inside) and inside[0] else 0))
-    m["min_human_distance_m"] = None if math.isinf(dmin) else round(dmin, 3)
-    contacts = [e for e in events if e.kind is EventKind.CONTACT_BEGIN]
-    m["human_contacts"] = sum(1 for e in contacts if str(e["other"]).startswith("human"))
-    m["wall_contacts"] = sum(1 for e in contacts if e["other"] == "wall")
-    waits = _intervals(events, EventKind.WAITING, {EventKind.RESUMED, EventKind.PLAN_MADE, EventKind.REPLANNED}, end_t)
-    m["waits"] = len(waits)
-    m["wait_time_s"] = round(sum(b - a for a, b in waits), 2)
-    m["replans"] = _count(events, EventKind.REPLANNED)
-    m["reverts"] = _count(events, EventKind.REVERTED)
-    m["plans_refused"] = _count(events, EventKind.PLAN_REFUSED)
-    levels = np.asarray(battery, dtype=float)
-    m["battery_used"] = round(float(np.sum(np.clip(-np.diff(levels), 0, None))), 4) if len(levels) > 1 else 0.0
-    m["battery_final"] = round(float(levels[-1]), 4) if len(levels) else None
-    m["charge_trips"] = _count(events, EventKind.CHARGE_TRIP)
-    collected = [e for e in events if e.kind is EventKind.GEM_COLLECTED]
-    m["gems_robot"] = sum(1 for e in collected if e["by"] == "robot")
-    m["gems_human"] = sum(1 for e in collected if e["by"] != "robot")
-    m["robot_gem_order"] = " ".join(str(e["gem"]) for e in collected if e["by"] == "robot")
-    dt_all = np.diff(t, append=t[-1]) if len(t) else np.zeros(0)
-    m["thought_bubble_shown_s"] = round(float(np.sum(dt_all[np.asarray(bubble_log, dtype=bool)])), 2) if len(t) else 0.0
-    leads = signal_lead_times(t, robot[:, 3], signal_log) if len(t) else []
-    m["turns"] = len(leads)
-    m["turn_signal_lead_s_mean"] = round(float(np.mean(leads)), 3) if leads else None
-    m["turns_signalled"] = sum(1 for x in leads if x > 0)
-    return m
+def _cues(tl: Timeline) -> dict[str, Any]:
+    out: dict[str, Any] = dict(_exposure(tl))
+    leads = signal_lead_times(tl.t, tl.robot_w, [c.turn_signal for c in tl.cues])
+    out.update(turns=len(leads), turns_signalled=sum(1 for x in leads if x > 0), turn_signal_lead_s_mean=_r(float(np.mean(leads)) if leads else None))
+    segments, start = [], 0
+    for i in range(1, len(tl.t) + 1):
+        if i == len(tl.t) or tl.cues[i].toggles != tl.cues[start].toggles:
+            on = [k for k, v in vars(tl.cues[start].toggles).items() if v]
+            sel = np.zeros(len(tl.t), dtype=bool)
+            sel[start:i] = True
+            segments.append({"start_s": round(float(tl.t[start]), 2), "end_s": round(float(tl.t[i - 1]), 2), "cues_on": on, **_exposure(tl, sel)})
+            start = i
+    out["condition_segments"] = segments
+    return out
+
+
+def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None, rec: Recording) -> dict[str, Any]:
+    xy, dt = tl.humans[hid], tl.dt
+    speed = np.hypot(*np.diff(xy, axis=0).T) / np.maximum(np.diff(tl.t), 1e-9) if len(xy) > 1 else np.zeros(0)
+    d = np.hypot(*(xy - tl.robot_xy).T)
+    own = [e for e in events if e.get("by") == hid and e.kind in (EventKind.GEM_COLLECTED, EventKind.ROOM_REACHED)]
+    done = _first(events, EventKind.TASK_DONE, by=hid)
+    out: dict[str, Any] = {
+        f"{hid}_time_to_finish_s": _r(max([e.stamp for e in own], default=done) if done is not None else None, 2),
+        f"{hid}_path_length_m": _r(_length(xy)),
+        f"{hid}_time_not_moving_s": _r(float(np.sum(dt[:-1][speed < PERSON_STILL_MPS])) if len(speed) else 0.0, 2),
+        f"{hid}_detour_m": _r(_detour(xy[tl.t <= max((e.stamp for e in own), default=0.0) + 1e-9], own, world)),
+        f"{hid}_gems": sum(1 for e in own if e.kind is EventKind.GEM_COLLECTED),
+        f"{hid}_min_distance_m": _r(float(np.min(d)) if len(d) else None),
+    }
+    previous = 0.0
+    for zone, r in ZONES.items():
+        inside = d < r
+        out[f"{hid}_{zone}_intrusion_s"] = round(float(np.sum(dt[inside])), 2)
+        out[f"{hid}_{zone}_intrusions"] = int(np.sum(inside[1:] & ~inside[:-1]) + (1 if len(inside) and inside[0] else 0))
+        out[f"{hid}_{zone}_band_s"] = round(float(np.sum(dt[(d >= previous) & (d < r)])), 2)
+        previous = r
+    return out
+
+
+def _detour(xy: FloatArray, own: Sequence[Event], world: World | None) -> float | None:
+    """Walked length (until the last stop reached) minus the shortest walk from the start through
+    the gems or rooms the person reached, in that order (planned around walls, for a person's body)."""
+    if world is None or len(xy) < 2:
+        return None
+    gems = {g.id: g.position for g in world.gems}
+    rooms = {r.name: r.centre for r in world.rooms}
+    stops = [gems.get(str(e.get("gem"))) or rooms.get(str(e.get("room"))) for e in own]
+    points = [(float(xy[0, 0]), float(xy[0, 1]))] + [p for p in stops if p is not None]
+    if len(points) < 2:
+        return None
+    planner = GridPlanner(rasterise(world), HUMAN_PLANNER)
+    try:
+        shortest = sum(planner.plan(a, b).length_m for a, b in zip(points, points[1:]))
+    except PlanningError:
+        return None
+    return _length(xy) - shortest

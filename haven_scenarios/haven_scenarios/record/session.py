@@ -1,37 +1,45 @@
-"""Session folders: what one recorded trial leaves behind, and how it is read back.
+"""Session folders: what one recorded trial leaves behind, self-contained, and how it is read back.
 
     sessions/<scenario>_<participant>_<YYYYmmdd-HHMMSS>/
         bag/              rosbag2, MCAP storage, metadata version 9: every topic of the trial
         events.jsonl      /haven/events, one JSON object a line, written as they happen
-        session.json      participant, condition, seed, scenario, versions, parameters, outcome
+        scenario.yaml     the scenario as run (teleoperated humans marked); its world is world.yaml
+        world.yaml        a copy of the world
+        params.yaml       every node's parameters as run (a ROS parameter file)
+        session.json      participant, condition, seed, versions, git commit, RMW, clock, outcome
         metrics.json      computed from the bag (so `haven report` gives the same numbers later)
-        trajectory.png    top-down: walls, both tracks, gems, where the robot waited or re-planned
+        trajectory.png    top-down: walls, the tracks, gems, where the robot waited or re-planned
+
+Everything a re-run or a re-scoring needs is inside the folder under relative names, so a study
+folder can be moved or archived; `analyse` never fails on a damaged session, it flags it.
 """
 
 from __future__ import annotations
 
-import csv
 import json
+import os
 import platform
+import subprocess
 import time
-from collections.abc import Sequence
 from importlib import metadata
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+import yaml
 
-from haven_scenarios.record.bag import read_log
+from haven_scenarios.record.bag import read_recording
 from haven_scenarios.record.metrics import compute
+from haven_scenarios.record.timeline import GRID_S, Recording, Timeline
 from haven_scenarios.study.rules import EndReason
-from haven_scenarios.study.scenario import load_scenario
+from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario
 from haven_sim.common.events import EventKind
-from haven_sim.sim.world import World
-from haven_sim.sim.world_file import load_world
+from haven_sim.sim.world import World, WorldError
 from haven_viz.render import render_scene
 from haven_viz.world_markers import world_markers
 
-PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "rclpy", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags")
+PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags", "mcap")
+SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = "scenario.yaml", "world.yaml", "params.yaml", "session.json", "metrics.json"
 
 
 def new_session_dir(root: Path, scenario: str, participant: str) -> Path:
@@ -55,74 +63,109 @@ def versions() -> dict[str, str | None]:
     return out
 
 
+def git_commit() -> str | None:
+    """The commit of the HAVEN checkout these packages run from ("+dirty" with local changes)."""
+    here = Path(__file__).resolve().parent
+    try:
+        head = subprocess.run(["git", "rev-parse", "HEAD"], cwd=here, capture_output=True, text=True, timeout=5)
+        if head.returncode != 0:
+            return None
+        dirty = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no"], cwd=here, capture_output=True, text=True, timeout=5)
+        return head.stdout.strip() + ("+dirty" if dirty.stdout.strip() else "")
+    except (OSError, subprocess.TimeoutExpired):
+        return None
+
+
+def rmw() -> str:
+    return os.environ.get("RMW_IMPLEMENTATION", "rmw_fastrtps_cpp")
+
+
 def write_json(path: Path, data: dict[str, Any]) -> None:
     path.write_text(json.dumps(data, indent=2, sort_keys=True, default=str) + "\n")
 
 
 def session_info(folder: Path) -> dict[str, Any]:
-    path = folder / "session.json"
-    return json.loads(path.read_text()) if path.exists() else {}
+    path = folder / SESSION_FILE
+    try:
+        data = json.loads(path.read_text()) if path.exists() else {}
+    except (OSError, ValueError):
+        return {}
+    return data if isinstance(data, dict) else {}
 
 
-def analyse(folder_or_bag: Path) -> tuple[dict[str, Any], World | None]:
-    """Metrics of a session folder (or a bare bag folder) from its bag alone."""
-    folder = folder_or_bag if (folder_or_bag / "bag").is_dir() else folder_or_bag.parent
-    bag = folder_or_bag / "bag" if (folder_or_bag / "bag").is_dir() else folder_or_bag
+def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
+    """The scenario (with world: world.yaml), a copy of its world, and every node's parameters."""
+    data = yaml.safe_load(Path(scenario.source).read_text()) if scenario.source else {"name": scenario.name}
+    data["world"] = WORLD_FILE
+    data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps} for h in scenario.humans]
+    (folder / WORLD_FILE).write_text(Path(scenario.world_path).read_text())
+    (folder / SCENARIO_FILE).write_text(yaml.safe_dump(data, sort_keys=False))
+    (folder / PARAMS_FILE).write_text(params_yaml)
+
+
+def session_scenario(folder: Path) -> Scenario | None:
+    """The session's own copy of its scenario (its world, world.yaml, beside it), if readable."""
+    try:
+        return load_scenario(folder / SCENARIO_FILE)
+    except (ScenarioError, WorldError, OSError):
+        return None
+
+
+def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
+    """Metrics of a session folder from its bag alone; a damaged or incomplete session gives a
+    row flagged not valid, never an exception."""
     info = session_info(folder)
-    world = None
-    human_ids: list[str] = []
-    if info.get("scenario_file"):
-        scenario = load_scenario(info["scenario_file"])
-        world = scenario.world
-        human_ids = [h.id for h in world.humans]
-    elif info.get("world_file"):
-        world = load_world(info["world_file"])
-        human_ids = [h.id for h in world.humans]
-    log = read_log(bag, human_ids)
-    ends = [e for e in log.events if e.kind is EventKind.TRIAL_END]
-    metrics = compute(log, str(info.get("scenario", "")), ends[-1]["reason"] if ends else EndReason.INTERRUPTED)
+    scenario = session_scenario(folder)
+    world = scenario.world if scenario is not None else None
+    ids = [h.id for h in world.humans] if world is not None else []
+    try:
+        rec, note = read_recording(folder / "bag", ids)
+    except Exception as e:  # noqa: BLE001 - whatever a damaged bag raises, the row says so
+        rec, note = Recording(), f"bag unreadable: {str(e)[:120]}"
+    end = rec.first(EventKind.TRIAL_END)
+    metrics = compute(rec, str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED, world)
+    if note:
+        metrics["valid"] = False
+        metrics["invalid_reasons"] = [note, *metrics.get("invalid_reasons", [])]
+    if scenario is None:
+        metrics["invalid_reasons"] = [*metrics.get("invalid_reasons", []), "no readable scenario.yaml and world.yaml in the session"]
     for key in ("participant", "condition", "seed"):
         if key in info:
             metrics[key] = info[key]
     metrics["session"] = folder.name
-    return metrics, world
+    return metrics, world, rec
 
 
-def trajectory_picture(folder: Path, world: World, title: str) -> Path:
-    """Both tracks, the gems still there at the end, and marks where the robot waited or re-planned."""
+def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -> Path:
+    """The tracks from their starts, the gems still there at the end and where and when the others
+    were collected, and marks where the robot waited, detoured, went to charge or touched someone."""
     info = session_info(folder)
-    log = read_log(folder / "bag", [h.id for h in world.humans])
-    robot = np.asarray(log.robot, dtype=float).reshape(-1, 4)[:, :2]
-    trails = {"robot": (robot, "black")}
-    colors = ["tab:red", "tab:orange", "tab:purple", "tab:brown"]
-    for i, (hid, xy) in enumerate(log.humans.items()):
-        trails[hid] = (np.asarray(xy, dtype=float), colors[i % len(colors)])
-    marks = []
-    t = np.asarray(log.t)
-    labels = {EventKind.WAITING: "wait", EventKind.REPLANNED: "detour", EventKind.CONTACT_BEGIN: "contact", EventKind.CHARGE_TRIP: "to charge"}
-    for e in log.events:
-        if e.kind in labels and len(t):
-            i = min(int(np.searchsorted(t, e.stamp)), len(t) - 1)
-            label = f"detour {e.get('side', '')}" if e.kind is EventKind.REPLANNED else labels[e.kind]
-            marks.append((float(robot[i, 0]), float(robot[i, 1]), label, "red" if e.kind is EventKind.CONTACT_BEGIN else "tab:blue"))
-    collected = {str(e["gem"]) for e in log.events if e.kind is EventKind.GEM_COLLECTED}
-    removed = {str(e["id"]) for e in log.events if e.kind is EventKind.OBSTRUCTION_REMOVED}
+    window = rec.window()
+    trails: dict[str, tuple[Any, str]] = {}
+    marks: list[tuple[float, float, str, str]] = []
+    if window is not None:
+        tl = Timeline.of(rec, *window, step=5 * GRID_S)
+        trails["robot"] = (tl.robot_xy, "black")
+        colors = ["tab:red", "tab:orange", "tab:purple", "tab:brown"]
+        for i, (hid, xy) in enumerate(tl.humans.items()):
+            trails[hid] = (xy, colors[i % len(colors)])
+        labels = {EventKind.WAITING: "wait", EventKind.REPLANNED: "detour", EventKind.CONTACT_BEGIN: "contact", EventKind.CHARGE_TRIP: "to charge"}
+        for e in rec.events:
+            if e.kind in labels and window[0] <= e.stamp <= window[1]:
+                i = min(int(np.searchsorted(tl.t, e.stamp - window[0])), len(tl.t) - 1)
+                label = f"detour {e.get('side', '')}" if e.kind is EventKind.REPLANNED else labels[e.kind]
+                color = "red" if e.kind is EventKind.CONTACT_BEGIN else "tab:blue"
+                marks.append((float(tl.robot_xy[i, 0]), float(tl.robot_xy[i, 1]), label, color))
+        # Where each track starts, and every collected gem: which, by whom, when.
+        for label, (xy, color) in trails.items():
+            marks.append((float(xy[0, 0]), float(xy[0, 1]), f"{label} start", color))
+        gems = {g.id: g.position for g in world.gems}
+        for e in rec.events:
+            if e.kind is EventKind.GEM_COLLECTED and str(e["gem"]) in gems and window[0] <= e.stamp <= window[1]:
+                x, y = gems[str(e["gem"])]
+                marks.append((x, y, f"{e['gem']}: {e['by']}, {e.stamp - window[0]:.0f} s", "tab:green"))
+    collected = {str(e["gem"]) for e in rec.events if e.kind is EventKind.GEM_COLLECTED}
+    removed = {str(e["id"]) for e in rec.events if e.kind is EventKind.OBSTRUCTION_REMOVED}
     markers = [m for m in world_markers(world, collected, removed) if m.ns in ("gems", "gem_areas", "charging_base", "rooms")]
     subtitle = f"participant {info.get('participant', '?')}, condition {info.get('condition', '?')}"
     return render_scene(world, markers, folder / "trajectory.png", title=f"{title}\n{subtitle}", trails=trails, points=marks, removed=sorted(removed))
-
-
-def report_csv(paths: Sequence[Path], out: Path) -> list[dict[str, Any]]:
-    rows = []
-    for p in paths:
-        metrics, _ = analyse(p)
-        rows.append(metrics)
-    keys: list[str] = []
-    for r in rows:
-        keys += [k for k in r if k not in keys]
-    out.parent.mkdir(parents=True, exist_ok=True)
-    with out.open("w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=keys)
-        writer.writeheader()
-        writer.writerows(rows)
-    return rows

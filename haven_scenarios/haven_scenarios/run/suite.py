@@ -5,13 +5,13 @@ parameter file the same way in ROS mode (the nodes declare from these classes) a
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from haven_scenarios.study.director import ScenarioNodeConfig
-from haven_sim.common.params import build, load_params_file, node_values, render_params_file
+from haven_sim.common.params import WILDCARD, build, flatten, load_params_file, node_values, render_params_file
 from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.mux import MuxConfig
@@ -20,7 +20,7 @@ from haven_sim.runtime.lockstep import LockstepParams
 from haven_sim.sim.simulator import SimulatorConfig
 from haven_viz.viz import VizConfig
 
-# (node name, its config class): the order of haven.yaml.
+# (node name, its config class): the order of haven.yaml; SuiteConfig's fields in the same order.
 NODES: tuple[tuple[str, type[Any]], ...] = (
     ("sim_node", SimulatorConfig),
     ("velocity_mux", MuxConfig),
@@ -40,10 +40,6 @@ def packaged_params_file() -> Path:
     return Path(str(resources.files("haven_sim") / "config" / "haven.yaml"))
 
 
-def render() -> str:
-    return render_params_file(NODES, SHARED, HEADER)
-
-
 @dataclass(frozen=True)
 class SuiteConfig:
     sim: SimulatorConfig = field(default_factory=SimulatorConfig)
@@ -52,13 +48,27 @@ class SuiteConfig:
     controller: ControllerConfig = field(default_factory=ControllerConfig)
     viz: VizConfig = field(default_factory=VizConfig)
     scenario: ScenarioNodeConfig = field(default_factory=ScenarioNodeConfig)
+    lockstep: LockstepParams = field(default_factory=LockstepParams)  # every node's
+
+    def by_node(self) -> dict[str, Any]:
+        """Node name -> its config."""
+        return {name: getattr(self, f.name) for (name, _), f in zip(NODES, fields(self))}
+
+
+def render(config: SuiteConfig | None = None, header: str = HEADER) -> str:
+    """The parameter file of `config` (default: haven.yaml, every default)."""
+    if config is None:
+        return render_params_file(NODES, SHARED, header)
+    values: dict[str, Any] = {name: flatten(c) for name, c in config.by_node().items()}
+    values[WILDCARD] = flatten(config.planner.style) | flatten(config.lockstep)
+    return render_params_file(NODES, SHARED, header, values)
 
 
 def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None) -> SuiteConfig:
     """Every node's config from a loaded parameter file (None: the defaults)."""
     p = params or {}
-    made = {name: build(cls, node_values(p, name), where=f"{name}: ") for name, cls in NODES}
-    return SuiteConfig(made["sim_node"], made["velocity_mux"], made["planner"], made["controller"], made["viz"], made["scenario"])
+    made = {f.name: build(cls, node_values(p, name), where=f"{name}: ") for (name, cls), f in zip(NODES, fields(SuiteConfig))}
+    return SuiteConfig(**made, lockstep=build(LockstepParams, node_values(p, "sim_node")))
 
 
 def load_suite_config(path: str | Path | None) -> SuiteConfig:

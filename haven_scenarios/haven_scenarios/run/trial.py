@@ -3,8 +3,8 @@
 The very components the ROS nodes wrap (simulator, velocity mux, planner, controller, AR cues and
 the trial director with its mission executive, rules and simulated participants) run in the
 in-process loop (`haven_sim.runtime.loop`) at the rates their configs give, built from the same
-parameter source as the nodes. The trial's messages are logged as a recording would log them, so
-the metrics come out of the same code for both modes.
+parameter source as the nodes. The trial's messages are collected as a recording holds them (with
+their stamps), so the metrics come out of the same code for both modes.
 """
 
 from __future__ import annotations
@@ -14,8 +14,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
-from haven_scenarios.record.log import LogBuilder, TrialLog
 from haven_scenarios.record.metrics import compute
+from haven_scenarios.record.timeline import Recording
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.study.director import TrialDirector
 from haven_scenarios.study.rules import EndReason
@@ -67,7 +67,7 @@ class TrialResult:
     condition: str
     end_reason: str
     metrics: dict[str, Any]
-    log: TrialLog = field(repr=False)
+    recording: Recording = field(repr=False)
 
 
 class Trial:
@@ -80,8 +80,8 @@ class Trial:
         self.director = TrialDirector(scenario, seed, c.scenario.director.rate_hz)
         self.viz = VizComponent(c.viz, scenario.world)
         components: list[Component] = [MuxComponent(c.mux), PlannerComponent(c.planner), ControllerComponent(c.controller), self.viz, self.director]
-        self.recording = LogBuilder()
-        recorded = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, topics.EVENTS)
+        self.recording = Recording()
+        recorded = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, topics.PLAN, topics.EVENTS)
         self.loop = InProcessLoop(self.sim, components, [self.recording.add], recorded)
 
     def run(self) -> TrialResult:
@@ -89,10 +89,9 @@ class Trial:
         limit = math.ceil((self.scenario.timeout_s + GRACE_S) / step_s)
         self.loop.run_until(lambda: self.director.ended is not None, limit)
         reason = self.director.ended or EndReason.INTERRUPTED
-        log = self.recording.log
-        metrics = compute(log, self.scenario.name, reason)
+        metrics = compute(self.recording, self.scenario.name, reason, self.scenario.world)
         metrics.update(seed=self.seed, condition=condition_name(self.toggles))
-        return TrialResult(self.scenario.name, self.seed, condition_name(self.toggles), reason, metrics, log)
+        return TrialResult(self.scenario.name, self.seed, condition_name(self.toggles), reason, metrics, self.recording)
 
 
 def run_trial(scenario: Scenario, seed: int = 0, toggles: Toggles | None = None, suite: SuiteConfig | None = None) -> TrialResult:

@@ -119,6 +119,7 @@ class TrialDirector:
         self.empty_since: float | None = None  # when the battery ran out (the robot cannot drive)
         self.still_since: float | None = None  # when the robot last stopped moving
         self.start_time: float | None = None
+        self.last_tick: float | None = None
         self.ended: EndReason | None = None
 
     @property
@@ -215,7 +216,16 @@ class TrialDirector:
             out.append(Message(topics.GOAL, Goal(m.goal), now))
         return out
 
+    def interrupt(self) -> list[Message]:
+        """The trial stopped from outside (Ctrl-C): its end, at the last time the director acted,
+        if it had begun and not ended."""
+        if self.start_time is None or self.ended is not None or self.last_tick is None:
+            return []
+        self.ended = EndReason.INTERRUPTED
+        return [self._event(EventKind.TRIAL_END, self.last_tick, reason=self.ended)]
+
     def tick(self, now: float) -> list[Message]:
+        self.last_tick = now
         if self.ended is not None or not self._ready():
             return []
         mission, robot, level = self.mission, self.robot, self.level

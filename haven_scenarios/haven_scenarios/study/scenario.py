@@ -78,9 +78,12 @@ def scenario_names() -> list[str]:
     return sorted(p.stem for p in Path(str(resources.files("haven_scenarios") / "scenarios")).glob("*.yaml"))
 
 
-def resolve_world(spec: str) -> Path:
-    """A path, or a world shipped with haven_scenarios (scenario worlds) or haven_sim (test worlds)."""
+def resolve_world(spec: str, base: Path | None = None) -> Path:
+    """A path (relative to `base`, the scenario file's folder, when the file is there), or a world
+    shipped with haven_scenarios (scenario worlds) or haven_sim (test worlds)."""
     p = Path(spec)
+    if base is not None and not p.is_absolute() and (base / p).exists():
+        return base / p
     if p.suffix in (".yaml", ".yml") or p.exists():
         return p
     for package in ("haven_scenarios", "haven_sim"):
@@ -161,7 +164,7 @@ class _ScenarioParser:
             if key != "kind" and (not isinstance(d[key], str) or not d[key]):
                 raise self.fail(key, f"must be a non-empty string, got {_short(d[key])}")
         kind = self.choice(d["kind"], "kind", KINDS)
-        world_path = resolve_world(d["world"])
+        world_path = resolve_world(d["world"], Path(self.source).parent)
         try:
             world = load_world(world_path)
         except WorldError as e:

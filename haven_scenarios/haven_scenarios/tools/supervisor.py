@@ -107,10 +107,17 @@ class Supervisor:
             time.sleep(0.05)
         return None
 
-    def stop(self) -> dict[str, int]:
-        """Stop every child that still runs; returns each child's exit code."""
+    def stop(self, first: Sequence[str] = ()) -> dict[str, int]:
+        """Stop every child that still runs (the ones named in `first` before the others, so
+        they can still be heard while they stop); returns each child's exit code."""
+        if first:
+            self._stop([p for n, p in self.procs.items() if n in first])
+        self._stop(list(self.procs.values()))
+        return {n: p.wait() for n, p in self.procs.items()}
+
+    def _stop(self, procs: list[subprocess.Popen[bytes]]) -> None:
         for sig, wait_s in ((signal.SIGINT, self.grace_s), (signal.SIGTERM, 2.0), (signal.SIGKILL, 2.0)):
-            alive = [p for p in self.procs.values() if p.poll() is None]
+            alive = [p for p in procs if p.poll() is None]
             if not alive:
                 break
             for p in alive:
@@ -121,4 +128,3 @@ class Supervisor:
             deadline = time.monotonic() + wait_s
             while time.monotonic() < deadline and any(p.poll() is None for p in alive):
                 time.sleep(0.02)
-        return {n: p.wait() for n, p in self.procs.items()}

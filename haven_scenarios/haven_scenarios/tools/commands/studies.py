@@ -6,7 +6,7 @@ import argparse
 import time
 from pathlib import Path
 
-from haven_scenarios.record.session import report_csv
+from haven_scenarios.record.report import report_csv
 from haven_scenarios.run.batch import progress_bar, run_batch, summary
 from haven_scenarios.run.suite import load_suite_config
 from haven_scenarios.run.trial import condition_name, parse_condition

@@ -5,21 +5,36 @@ from __future__ import annotations
 import argparse
 import sys
 import time
-from dataclasses import replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
-import yaml
-
-from haven_scenarios.record.session import analyse, new_session_dir, trajectory_picture, versions, write_json
-from haven_scenarios.run.suite import load_suite_config
-from haven_scenarios.run.trial import condition_name, parse_condition
+from haven_scenarios.record.session import (
+    METRICS_FILE,
+    PARAMS_FILE,
+    SCENARIO_FILE,
+    SESSION_FILE,
+    WORLD_FILE,
+    analyse,
+    git_commit,
+    new_session_dir,
+    rmw,
+    session_info,
+    session_scenario,
+    trajectory_picture,
+    versions,
+    write_inputs,
+    write_json,
+)
+from haven_scenarios.run.suite import SuiteConfig, load_suite_config, render
+from haven_scenarios.run.trial import condition_name, parse_condition, scenario_suite
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
-from haven_scenarios.tools.commands.common import add_ros_options, environment, fail, params_file, positive, suite_specs
+from haven_scenarios.tools.commands.common import add_ros_options, environment, fail, positive, suite_specs
 from haven_scenarios.tools.commands.studies import CONDITION_HELP
 from haven_scenarios.tools.supervisor import Exited, ProcessSpec, Supervisor, node_argv
 from haven_sim.common.events import EventKind
+from haven_sim.runtime.lockstep import LockstepParams
 from haven_viz.cues import CUES, Toggles
 
 LOCKSTEP_UNCAPPED = 1e6  # the lockstep clock's real-time factor cap when --rtf is not given
@@ -33,6 +48,8 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("--rtf", type=positive, default=None,
                      help="real-time factor (default: 1 with a person; simulated participants run on the lockstep clock as fast as "
                           "the machine allows, or at most this fast)")
+    run.add_argument("--free-running", action="store_true",
+                     help="simulated participants on the free-running clock too (machine load then changes what happens)")
     run.add_argument("--seed", type=int, default=0)
     run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN",
                      help="these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`")
@@ -40,11 +57,18 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("--params-file", default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
     add_ros_options(run)
     run.set_defaults(func=run_cmd)
+    rerun = sub.add_parser("rerun", help="run a recorded session again from its folder (same scenario, world, parameters, seed, condition)")
+    rerun.add_argument("session", type=Path, help="a session folder")
+    rerun.add_argument("--sessions", default=None, help="folder for the new session (default: beside the old one)")
+    rerun.add_argument("--rtf", type=positive, default=None, help="real-time factor (default: as recorded)")
+    add_ros_options(rerun)
+    rerun.set_defaults(func=rerun_cmd)
 
 
-def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles]:
-    """The scenario as this run plays it (teleoperated humans marked), and the condition; raises
-    ScenarioError or ValueError (including for a bad parameter file) before anything starts."""
+def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
+    """The scenario as this run plays it (teleoperated humans marked), the condition and the
+    parameter file's configuration; raises ScenarioError or ValueError (including for a bad
+    parameter file) before anything starts."""
     scenario = load_scenario(args.scenario)
     toggles = parse_condition(args.condition)
     if args.teleop is not None:
@@ -53,37 +77,60 @@ def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles]:
         if unknown:
             raise ValueError(f"--teleop: no human {unknown[0]!r} in scenario {scenario.name}")
         scenario = replace(scenario, humans=tuple(replace(h, model="teleop") if h.id in ids else h for h in scenario.humans))
-    load_suite_config(args.params_file)
-    return scenario, toggles
+    return scenario, toggles, load_suite_config(args.params_file)
 
 
-def _scenario_yaml(scenario: Scenario) -> str:
-    """The scenario as run (teleop overrides included), for the session folder."""
-    data = yaml.safe_load(Path(scenario.source).read_text())
-    data["world"] = scenario.world_path
-    data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps} for h in scenario.humans]
-    return yaml.safe_dump(data, sort_keys=False)
-
-
+SESSION_PARAMS_HEADER = """Every node's parameters as run in this session (each node was started with this file).
+`haven rerun` on this folder runs the session again with them (using the world and scenario copies
+beside this file wherever the folder now is). Parameters are documented in haven_sim/config/haven.yaml."""
 PARTICIPANTS = ("velocity_mux", "planner", "controller", "viz", "scenario")  # the nodes' names
 
 
-def _specs(args: argparse.Namespace, scenario: Scenario, toggles: Toggles, folder: Path, rtf: float, lockstep: bool) -> list[ProcessSpec]:
-    pfile = params_file(args)
-    world = scenario.world_path
-    sim: dict[str, object] = {"world": world, "real_time_factor": rtf, "battery_capacity_m": scenario.battery.capacity_m, "seed": args.seed}
-    if lockstep:
-        sim.update(lockstep=True, lockstep_participants=f"[{','.join(PARTICIPANTS)}]", lockstep_observers="[viz]", lockstep_wait_for="[recorder]")
+@dataclass(frozen=True)
+class SessionPlan:
+    """One recorded trial to run: what `haven run` and `haven rerun` both start."""
+
+    scenario: Scenario
+    toggles: Toggles
+    seed: int
+    participant: str
+    base: SuiteConfig  # the parameter file's configuration (defaults where it is silent)
+    rtf: float | None  # None: 1x with a person, uncapped on the lockstep clock
+    free_running: bool = False  # simulated participants on the free-running clock
+    extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
+
+    @property
+    def lockstep(self) -> bool:
+        """Simulated participants run on the lockstep clock; a person plays on the free-running one."""
+        return not self.free_running and not any(h.model == "teleop" for h in self.scenario.humans)
+
+    @property
+    def real_time_factor(self) -> float:
+        return self.rtf if self.rtf is not None else (LOCKSTEP_UNCAPPED if self.lockstep else 1.0)
+
+    def config(self, folder: Path) -> SuiteConfig:
+        """Every node's parameters as run in the session `folder` (its own copies of the world and
+        the scenario): the file's, then what the scenario and the run fix."""
+        world, scenario_file = str((folder / WORLD_FILE).resolve()), str((folder / SCENARIO_FILE).resolve())
+        c = scenario_suite(replace(self.scenario, world_path=world, source=scenario_file), self.seed, self.toggles, self.base)
+        sim = replace(c.sim, real_time_factor=self.real_time_factor)
+        if self.lockstep:
+            sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=("viz",), lockstep_wait_for=("recorder",))
+        else:
+            sim = replace(sim, lockstep_participants=(), lockstep_observers=(), lockstep_wait_for=())
+        scenario = replace(c.scenario, wait_for=("planner", "recorder"))
+        return replace(c, sim=sim, scenario=scenario, lockstep=LockstepParams(self.lockstep))
+
+
+def _specs(folder: Path, lockstep: bool) -> list[ProcessSpec]:
+    """The nodes, each reading the session's params.yaml (node sections there win over `-p`, so
+    the file holds everything); on the command line only which clock the participants read."""
+    pfile = str((folder / PARAMS_FILE).resolve())
     # On the lockstep clock the ticks carry the time: the participants need no /clock.
-    stepped: dict[str, object] = {"lockstep": True, "use_sim_time": False} if lockstep else {}
-    suite = suite_specs({
-        "sim": sim, "mux": stepped, "planner": stepped, "controller": stepped,
-        "viz": {"world": world, **{c: getattr(toggles, c) for c in CUES}, **stepped},
-    }, pfile)
+    stepped: dict[str, object] = {"use_sim_time": False} if lockstep else {}
+    suite = suite_specs({"mux": stepped, "planner": stepped, "controller": stepped, "viz": stepped}, pfile)
     recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": str(folder.resolve())})
-    scenario_node = node_argv("haven_scenarios.nodes.scenario_node",
-                              {"use_sim_time": True, "scenario": str((folder / "scenario.yaml").resolve()), "seed": args.seed, **stepped},
-                              ["-p", "wait_for:=[planner,recorder]"], params_file=pfile)
+    scenario_node = node_argv("haven_scenarios.nodes.scenario_node", {"use_sim_time": True, **stepped}, params_file=pfile)
     return [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
 
 
@@ -102,59 +149,80 @@ def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path,
         for spec in specs:
             sup.start(spec)
         exited = sup.wait(timeout_s=timeout_s, until_exit_of="scenario")
+        sup.stop(first=("scenario",))  # (a scenario stopped mid-trial still publishes trial_end, interrupted)
         _wait_for_recorded_end(folder / "events.jsonl", 5.0)
         sup.stop()
     return exited
 
 
-def _finish(folder: Path, scenario: Scenario, info: dict[str, Any], wall: float) -> dict[str, Any] | None:
+def _finish(folder: Path, scenario: Scenario, info: dict[str, Any], wall: float) -> dict[str, Any]:
     """Metrics from the bag, the session record completed, the trajectory picture."""
-    try:
-        metrics, world = analyse(folder)
-    except Exception as e:  # noqa: BLE001 - a damaged recording must not hide the session folder
-        print(f"haven: could not read the session's bag: {e}", file=sys.stderr)
-        return None
-    write_json(folder / "metrics.json", metrics)
-    info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1))
-    write_json(folder / "session.json", info)
+    metrics, world, rec = analyse(folder)
+    write_json(folder / METRICS_FILE, metrics)
+    info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
+    write_json(folder / SESSION_FILE, info)
     if world is not None:
-        trajectory_picture(folder, world, f"{scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
+        trajectory_picture(folder, world, rec, f"{scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
     return metrics
 
 
-def run_cmd(args: argparse.Namespace) -> int:
-    try:
-        scenario, toggles = _prepare(args)
-    except (ScenarioError, ValueError) as e:
-        return fail(str(e))
-    # A person plays in real time on the free-running clock; simulated participants run on the
-    # lockstep clock, as fast as the machine allows unless --rtf caps it.
-    lockstep = not any(h.model == "teleop" for h in scenario.humans)
-    rtf = args.rtf if args.rtf is not None else (LOCKSTEP_UNCAPPED if lockstep else 1.0)
-    folder = new_session_dir(Path(args.sessions), scenario.name, args.participant)
-    (folder / "scenario.yaml").write_text(_scenario_yaml(scenario))
-    info = {
-        "participant": args.participant, "condition": condition_name(toggles), "cues": {c: getattr(toggles, c) for c in CUES},
-        "seed": args.seed, "scenario": scenario.name, "scenario_file": str((folder / "scenario.yaml").resolve()),
-        "world_file": scenario.world_path, "real_time_factor": rtf, "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
-        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "versions": versions(), "command": sys.argv,
+def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> int:
+    """Run and record one trial into a new session folder under `sessions`; the exit code."""
+    scenario, lockstep, rtf = plan.scenario, plan.lockstep, plan.real_time_factor
+    folder = new_session_dir(sessions, scenario.name, plan.participant)
+    write_inputs(folder, scenario, render(plan.config(folder), header=SESSION_PARAMS_HEADER))
+    info: dict[str, Any] = {
+        "participant": plan.participant, "condition": condition_name(plan.toggles), "cues": {c: getattr(plan.toggles, c) for c in CUES},
+        "seed": plan.seed, "scenario": scenario.name, "scenario_file": SCENARIO_FILE, "world_file": WORLD_FILE, "params_file": PARAMS_FILE,
+        "clock": "lockstep" if lockstep else "free-running", "real_time_factor": rtf,
+        "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
+        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "versions": versions(), "git_commit": git_commit(), "rmw": rmw(),
+        "command": sys.argv, **plan.extra,
     }
-    write_json(folder / "session.json", info)
+    write_json(folder / SESSION_FILE, info)
     pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf != LOCKSTEP_UNCAPPED else "") if lockstep else f"{rtf:g}x real time"
-    print(f"haven: {scenario.name} trial, participant {args.participant}, condition {condition_name(toggles)}, "
-          f"seed {args.seed}, {pace} -> {folder}", flush=True)
+    print(f"haven: {scenario.name} trial, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
+          f"seed {plan.seed}, {pace} -> {folder}", flush=True)
     started = time.monotonic()
     limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
-    exited = _supervise(args, _specs(args, scenario, toggles, folder, rtf, lockstep), folder, limit)
+    exited = _supervise(args, _specs(folder, lockstep), folder, limit)
     wall = time.monotonic() - started
     metrics = _finish(folder, scenario, info, wall)
-    if metrics is None:
-        return 1
     print(f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall:.0f} s wall): "
-          f"robot finished at {metrics['robot_time_to_finish_s']} s, closest approach {metrics['min_human_distance_m']} m, "
-          f"{metrics['waits']} wait(s), {metrics['replans']} re-plan(s), {metrics['human_contacts']} contact(s)")
-    print(f"haven: session in {folder} (bag/, events.jsonl, metrics.json, session.json, trajectory.png)")
+          f"robot finished at {metrics.get('robot_time_to_finish_s')} s, closest approach {metrics.get('min_human_distance_m')} m, "
+          f"{metrics.get('waits')} wait(s), {metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)")
+    if not metrics["valid"]:
+        print(f"haven: the recording is not complete: {'; '.join(metrics['invalid_reasons'])}", file=sys.stderr)
+    print(f"haven: session in {folder} (bag/, events.jsonl, metrics.json, session.json, scenario.yaml, world.yaml, params.yaml, trajectory.png)")
     if exited is not None and exited.name != "scenario":
         print(f"haven: {exited.name} exited with code {exited.code}; the trial was cut short", file=sys.stderr)
         return 1
     return 0 if metrics["end_reason"] != EndReason.INTERRUPTED else 1
+
+
+def run_cmd(args: argparse.Namespace) -> int:
+    try:
+        scenario, toggles, base = _prepare(args)
+    except (ScenarioError, ValueError) as e:
+        return fail(str(e))
+    plan = SessionPlan(scenario, toggles, args.seed, args.participant, base, args.rtf, args.free_running)
+    return run_session(args, plan, Path(args.sessions))
+
+
+def rerun_cmd(args: argparse.Namespace) -> int:
+    """The session again, from its own files: scenario, world, parameters, seed, condition."""
+    folder: Path = args.session
+    info = session_info(folder)
+    scenario = session_scenario(folder)
+    if scenario is None or not info:
+        return fail(f"{folder}: not a session folder with session.json, scenario.yaml and world.yaml")
+    free = info.get("clock") == "free-running"
+    try:
+        base = load_suite_config(folder / PARAMS_FILE if (folder / PARAMS_FILE).exists() else None)
+        toggles = Toggles(**{c: bool(v) for c, v in dict(info.get("cues", {})).items() if c in CUES})
+        seed = int(info.get("seed", 0))
+        rtf = args.rtf if args.rtf is not None else (float(info.get("real_time_factor", 1.0)) if free else None)
+    except (TypeError, ValueError) as e:
+        return fail(f"{folder / SESSION_FILE}: {e}")
+    plan = SessionPlan(scenario, toggles, seed, str(info.get("participant", "sim")), base, rtf, free, {"rerun_of": folder.name})
+    return run_session(args, plan, Path(args.sessions) if args.sessions else folder.parent)

@@ -1,0 +1,60 @@
+"""How complete a recording is: a session is valid only when nothing the metrics rest on was lost.
+
+Checked on the recording itself: /odom comes every physics step and /humans at a fixed rate, so
+their header stamps show every missing message and every gap; events carry a sequence number per
+source (`seq`), so a missing one shows too; the recorder notes every message DDS reports lost,
+and a loss on a topic the metrics read counts; and a trial must have ended with `trial_end`.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from haven_scenarios.record.timeline import METRIC_TOPICS, Recording
+from haven_sim.common.events import EventKind
+
+MIN_COVERAGE = 0.99
+MAX_GAP_S = 0.1
+
+
+def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list[str]:
+    t = np.array(sorted(s for s in stamps if window[0] - MAX_GAP_S <= s <= window[1] + MAX_GAP_S))
+    if len(t) < 2:
+        return [f"{name}: {len(t)} message(s) in the trial"]
+    gaps = np.diff(t)
+    # The stream's period: robust to a few losses, and to rates that alternate between two step
+    # counts (20 Hz on 50 Hz physics gives gaps of 0.04 and 0.06 s).
+    period = float(np.median((gaps[:-1] + gaps[1:]) / 2.0)) if len(gaps) > 1 else float(gaps[0])
+    expected = round((t[-1] - t[0]) / period) + 1.0  # rounded: a stream may end on its short gap
+    out = []
+    if len(t) < MIN_COVERAGE * expected:
+        out.append(f"{name}: {100.0 * len(t) / expected:.1f} % of the messages recorded")
+    if gaps.max() > MAX_GAP_S + 1e-6:
+        at = float(t[int(np.argmax(gaps))] - window[0])
+        out.append(f"{name}: a gap of {gaps.max():.2f} s at {at:.1f} s")
+    return out
+
+
+def check(rec: Recording, window: tuple[float, float] | None) -> dict[str, Any]:
+    reasons: list[str] = []
+    if window is None:
+        reasons.append("no trial_start or no /odom recorded")
+    else:
+        reasons += _stream("/odom", [s for s, _ in rec.odom], window)
+        if rec.humans:
+            reasons += _stream("/humans", [s for s, _ in rec.humans], window)
+    lost = {topic: n for topic, n in rec.lost.items() if n and topic.lstrip("/") in METRIC_TOPICS}
+    reasons += [f"{topic}: {n} message(s) lost before the recorder read them" for topic, n in sorted(lost.items())]
+    if rec.first(EventKind.TRIAL_END) is None:
+        reasons.append("no trial_end recorded")
+    seqs: dict[str, list[int]] = {}
+    for e in rec.events:
+        if isinstance(e.get("seq"), int):
+            seqs.setdefault(e.source, []).append(e["seq"])
+    for source, numbers in sorted(seqs.items()):
+        missing = max(numbers) - len(set(numbers))
+        if missing:
+            reasons.append(f"events: {missing} of {source}'s missing")
+    return {"valid": not reasons, "invalid_reasons": reasons}
