@@ -72,11 +72,13 @@ def main() -> None:
         row = measure(rtf, args.seconds)
         rows.append(row)
         target = 50.0 * rtf
-        print(f"rtf {rtf:>4g}: /odom {row['wall_rate_hz']:8.2f} Hz wall (target {target:g}, "
-              f"{100 * (row['wall_rate_hz'] / target - 1):+.2f} %), {row['sim_rate_hz']:.2f} Hz sim, "
-              f"achieved rtf {row['rtf_achieved']:.3f}, largest stamp gap {row['max_sim_gap_s']} s, "
-              f"arrival gaps p50 {row['arrival_gap_p50_ms']} ms p99 {row['arrival_gap_p99_ms']} ms, "
-              f"node CPU {row['node_cpu_percent']} %")
+        print(
+            f"rtf {rtf:>4g}: /odom {row['wall_rate_hz']:8.2f} Hz wall (target {target:g}, "
+            f"{100 * (row['wall_rate_hz'] / target - 1):+.2f} %), {row['sim_rate_hz']:.2f} Hz sim, "
+            f"achieved rtf {row['rtf_achieved']:.3f}, largest stamp gap {row['max_sim_gap_s']} s, "
+            f"arrival gaps p50 {row['arrival_gap_p50_ms']} ms p99 {row['arrival_gap_p99_ms']} ms, "
+            f"node CPU {row['node_cpu_percent']} %"
+        )
     save(rows, args.json)
 
 

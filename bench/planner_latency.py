@@ -87,9 +87,17 @@ def run(name: str, world: World, n: int, seed: int, pairs_file: str | None) -> d
         t = time.perf_counter()
         nav.set_goal(Pose2D(s[0], s[1], 0.0), Pose2D(g[0], g[1], 0.0), 0.0)
         full.append(1e3 * (time.perf_counter() - t))
-    return {"map": name, "pairs": len(pairs), "refused": refused, "preprocess_ms": 1e3 * pre,
-            "corner_nodes": len(planner.nodes), **stats(lat), "mean_length_m": float(np.mean(lengths)),
-            "min_wall_clearance_m": worst, "with_path_style": stats(full)}
+    return {
+        "map": name,
+        "pairs": len(pairs),
+        "refused": refused,
+        "preprocess_ms": 1e3 * pre,
+        "corner_nodes": len(planner.nodes),
+        **stats(lat),
+        "mean_length_m": float(np.mean(lengths)),
+        "min_wall_clearance_m": worst,
+        "with_path_style": stats(full),
+    }
 
 
 def main() -> None:
@@ -99,14 +107,18 @@ def main() -> None:
     ap.add_argument("--pairs", default=None, help="JSON pairs for the W1 map (e.g. the peers' sample)")
     ap.add_argument("--json", default=str(OUT / "planner_latency.json"))
     args = ap.parse_args()
-    rows = [run("W1 map 20x20", w1_world(0), args.n, args.seed, args.pairs),
-            run("small test world", load_world(packaged_world("small_test")), args.n, args.seed, None)]
+    rows = [
+        run("W1 map 20x20", w1_world(0), args.n, args.seed, args.pairs),
+        run("small test world", load_world(packaged_world("small_test")), args.n, args.seed, None),
+    ]
     for r in rows:
         st = r["with_path_style"]
-        print(f"{r['map']:18} pairs {r['pairs']} refused {r['refused']}  preprocess {r['preprocess_ms']:.1f} ms "
-              f"({r['corner_nodes']} nodes)  plan median {r['median_ms']:.2f} ms p90 {r['p90_ms']:.2f} p99 {r['p99_ms']:.2f} "
-              f"max {r['max_ms']:.2f}  mean length {r['mean_length_m']:.2f} m  min clearance {r['min_wall_clearance_m']:.3f} m  "
-              f"| plan+style median {st['median_ms']:.2f} p99 {st['p99_ms']:.2f} ms")  # type: ignore[index]
+        print(
+            f"{r['map']:18} pairs {r['pairs']} refused {r['refused']}  preprocess {r['preprocess_ms']:.1f} ms "
+            f"({r['corner_nodes']} nodes)  plan median {r['median_ms']:.2f} ms p90 {r['p90_ms']:.2f} p99 {r['p99_ms']:.2f} "
+            f"max {r['max_ms']:.2f}  mean length {r['mean_length_m']:.2f} m  min clearance {r['min_wall_clearance_m']:.3f} m  "
+            f"| plan+style median {st['median_ms']:.2f} p99 {st['p99_ms']:.2f} ms"
+        )  # type: ignore[index]
     save(rows, args.json)
 
 

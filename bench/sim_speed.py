@@ -90,8 +90,14 @@ def run_case(world: World, rooms: list[str] | None, scan_every: int, steps: int)
     hits = int(np.isfinite(sim.scan()).sum())
     moved = sum(1 for h, p in zip(walkers.ids, start) if sim.human_poses()[h].distance_to(p) > 0.05)
     sim_s = steps * sim.config.step_s
-    return {"wall_s": wall, "rtf": sim_s / wall, "ms_per_step": 1e3 * wall / steps, "humans_moved": moved,
-            "lidar_hits": hits, "contacts": sum(e.kind is EventKind.CONTACT_BEGIN for e in sim.pop_events())}
+    return {
+        "wall_s": wall,
+        "rtf": sim_s / wall,
+        "ms_per_step": 1e3 * wall / steps,
+        "humans_moved": moved,
+        "lidar_hits": hits,
+        "contacts": sum(e.kind is EventKind.CONTACT_BEGIN for e in sim.pop_events()),
+    }
 
 
 def main() -> None:
@@ -115,17 +121,32 @@ def main() -> None:
         runs = [run_case(world, rooms, scan_every, args.steps) for _ in range(args.repeats)]
         ranked = sorted(runs, key=lambda r: float(r["rtf"]))  # type: ignore[arg-type]
         best, med = ranked[-1], ranked[len(ranked) // 2]
-        row = {"workload": name, "humans": n, "scan_hz": 50 / scan_every, "steps": args.steps,
-               "rtf_best": best["rtf"], "rtf_median": med["rtf"], "ms_per_step_best": best["ms_per_step"],
-               "rtf_runs": [round(float(r["rtf"]), 1) for r in runs], "humans_moved": best["humans_moved"],
-               "lidar_hits": best["lidar_hits"]}
+        row = {
+            "workload": name,
+            "humans": n,
+            "scan_hz": 50 / scan_every,
+            "steps": args.steps,
+            "rtf_best": best["rtf"],
+            "rtf_median": med["rtf"],
+            "ms_per_step_best": best["ms_per_step"],
+            "rtf_runs": [round(float(r["rtf"]), 1) for r in runs],
+            "humans_moved": best["humans_moved"],
+            "lidar_hits": best["lidar_hits"],
+        }
         results.append(row)
-        print(f"{name:18} {n:>6} {50 / scan_every:>7.0f} {best['ms_per_step']:>8.3f} {best['rtf']:>8.0f} {med['rtf']:>7.0f}"
-              f"   humans moved {best['humans_moved']}, lidar hits {best['lidar_hits']}")
+        print(
+            f"{name:18} {n:>6} {50 / scan_every:>7.0f} {best['ms_per_step']:>8.3f} {best['rtf']:>8.0f} {med['rtf']:>7.0f}"
+            f"   humans moved {best['humans_moved']}, lidar hits {best['lidar_hits']}"
+        )
     out = Path(args.json)
     out.parent.mkdir(parents=True, exist_ok=True)
-    meta = {"python": platform.python_version(), "numpy": np.__version__, "machine": platform.machine(),
-            "median_of": args.repeats, "statistics": statistics.__name__}
+    meta = {
+        "python": platform.python_version(),
+        "numpy": np.__version__,
+        "machine": platform.machine(),
+        "median_of": args.repeats,
+        "statistics": statistics.__name__,
+    }
     out.write_text(json.dumps({"meta": meta, "results": results}, indent=2))
     print(f"wrote {out}")
 

@@ -44,10 +44,24 @@ def main() -> int:
             return 1
     fixed = fix_export_paths()
     with tempfile.TemporaryDirectory() as tmp:
-        cmd = [str(PREFIX / "bin" / "colcon"), "--log-base", f"{tmp}/log", "build", "--merge-install",
-               "--base-paths", str(ROOT / "scripts" / "interfaces"), "--build-base", f"{tmp}/build", "--install-base", str(PREFIX),
-               "--cmake-args", f"-DPython3_EXECUTABLE={sys.executable}", "-DBUILD_TESTING=OFF",
-               "--event-handlers", "console_direct-"]
+        cmd = [
+            str(PREFIX / "bin" / "colcon"),
+            "--log-base",
+            f"{tmp}/log",
+            "build",
+            "--merge-install",
+            "--base-paths",
+            str(ROOT / "scripts" / "interfaces"),
+            "--build-base",
+            f"{tmp}/build",
+            "--install-base",
+            str(PREFIX),
+            "--cmake-args",
+            f"-DPython3_EXECUTABLE={sys.executable}",
+            "-DBUILD_TESTING=OFF",
+            "--event-handlers",
+            "console_direct-",
+        ]
         env = {**os.environ, "AMENT_PREFIX_PATH": str(PREFIX), "CMAKE_PREFIX_PATH": str(PREFIX)}
         r = subprocess.run(cmd, capture_output=True, text=True, env=env)
         if r.returncode != 0:

@@ -32,8 +32,14 @@ def alive(pid):
 
 
 def start_haven(ros, *args):
-    proc = subprocess.Popen([*HAVEN, *args, "--domain-id", str(ros.domain_id)], env=ros.env, stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, start_new_session=True)
+    proc = subprocess.Popen(
+        [*HAVEN, *args, "--domain-id", str(ros.domain_id)],
+        env=ros.env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
     ros.procs.append(proc)
     return proc
 
@@ -132,8 +138,14 @@ def test_graph_inspection_without_the_ros2_command(ros):
     assert "/odom [nav_msgs/msg/Odometry] publishers: 1" in topics.stdout
     echo = ros.run([*HAVEN, "echo", "/battery_state", "--count", "1", "--domain-id", str(ros.domain_id)], timeout_s=60)
     assert echo.returncode == 0 and "percentage: 1.0" in echo.stdout and "frame_id: 'base_link'" in echo.stdout
-    hz = subprocess.Popen([*HAVEN, "hz", "/odom", "--domain-id", str(ros.domain_id)], env=ros.env, stdout=subprocess.PIPE,
-                          stderr=subprocess.PIPE, text=True, start_new_session=True)
+    hz = subprocess.Popen(
+        [*HAVEN, "hz", "/odom", "--domain-id", str(ros.domain_id)],
+        env=ros.env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
     ros.procs.append(hz)
     deadline = time.monotonic() + 30
     lines = []

@@ -6,8 +6,19 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
 SOURCES = sorted(p for p in ROOT.glob("haven_*/haven_*/**/*.py"))
-ROS_IMPORTS = ("rclpy", "std_msgs", "geometry_msgs", "nav_msgs", "sensor_msgs", "visualization_msgs", "rosgraph_msgs",
-               "std_srvs", "builtin_interfaces", "tf2_msgs", "rcl_interfaces")
+ROS_IMPORTS = (
+    "rclpy",
+    "std_msgs",
+    "geometry_msgs",
+    "nav_msgs",
+    "sensor_msgs",
+    "visualization_msgs",
+    "rosgraph_msgs",
+    "std_srvs",
+    "builtin_interfaces",
+    "tf2_msgs",
+    "rcl_interfaces",
+)
 
 
 def test_modules_stay_under_400_lines_and_functions_under_60():

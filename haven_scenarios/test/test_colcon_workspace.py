@@ -17,9 +17,22 @@ def test_colcon_build_of_ros2_ws_installs_runnable_nodes(tmp_path):
     if not colcon.exists():
         colcon = Path(shutil.which("colcon") or "colcon")
     r = subprocess.run(
-        [str(colcon), "--log-base", str(tmp_path / "log"), "build", "--build-base", str(tmp_path / "build"),
-         "--install-base", str(tmp_path / "install"), "--event-handlers", "console_direct-"],
-        cwd=ROOT / "ros2_ws", capture_output=True, text=True, timeout=300,
+        [
+            str(colcon),
+            "--log-base",
+            str(tmp_path / "log"),
+            "build",
+            "--build-base",
+            str(tmp_path / "build"),
+            "--install-base",
+            str(tmp_path / "install"),
+            "--event-handlers",
+            "console_direct-",
+        ],
+        cwd=ROOT / "ros2_ws",
+        capture_output=True,
+        text=True,
+        timeout=300,
     )
     assert r.returncode == 0, r.stdout + r.stderr
     assert "3 packages finished" in r.stdout
@@ -35,7 +48,11 @@ def test_colcon_build_of_ros2_ws_installs_runnable_nodes(tmp_path):
     bad.write_text("name: x\n")
     run = subprocess.run(
         [sys.executable, str(install / "haven_sim" / "lib" / "haven_sim" / "sim_node"), "--ros-args", "-p", f"world:={bad}"],
-        capture_output=True, text=True, timeout=60, env=env, cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=60,
+        env=env,
+        cwd=tmp_path,
     )
     assert run.returncode == 2
     assert run.stderr.strip() == f"error: {bad}: robot: is required"

@@ -153,8 +153,13 @@ def test_robot_driving_into_a_standing_person_is_robot_on_person():
     rec = Recording()
     drive(rec, 0.0, 3.0, v=0.5)
     stand(rec, 0.0, 3.0, {"h1": (1.4, 0.0)})
-    events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO), event(EventKind.CONTACT_BEGIN, 2.0, Source.SIM, other="human:h1"),
-           event(EventKind.CONTACT_END, 2.3, Source.SIM, other="human:h1"), event(EventKind.TRIAL_END, 3.0, Source.SCENARIO, reason="contact"))
+    events(
+        rec,
+        event(EventKind.TRIAL_START, 0.0, Source.SCENARIO),
+        event(EventKind.CONTACT_BEGIN, 2.0, Source.SIM, other="human:h1"),
+        event(EventKind.CONTACT_END, 2.3, Source.SIM, other="human:h1"),
+        event(EventKind.TRIAL_END, 3.0, Source.SCENARIO, reason="contact"),
+    )
     m = compute(rec)
     assert (m["human_contacts"], m["human_contacts_robot_on_person"]) == (1, 1)
 
@@ -165,10 +170,14 @@ def test_each_person_finishes_at_their_own_last_gem():
     drive(rec, 0.0, 20.0, v=0.0)
     stand(rec, 0.0, 20.0, {"h1": (2.0, 2.0), "h2": (4.0, 4.0)})
     gems = [("a", "h1", 3.0), ("b", "h2", 5.0), ("c", "h1", 6.0), ("d", "h2", 9.0), ("e", "h2", 12.0)]
-    events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO),
-           *[event(EventKind.GEM_COLLECTED, t, Source.SCENARIO, gem=g, by=h) for g, h, t in gems],
-           event(EventKind.TASK_DONE, 12.0, Source.SCENARIO, by="h1"), event(EventKind.TASK_DONE, 12.0, Source.SCENARIO, by="h2"),
-           event(EventKind.TRIAL_END, 20.0, Source.SCENARIO, reason="completed"))
+    events(
+        rec,
+        event(EventKind.TRIAL_START, 0.0, Source.SCENARIO),
+        *[event(EventKind.GEM_COLLECTED, t, Source.SCENARIO, gem=g, by=h) for g, h, t in gems],
+        event(EventKind.TASK_DONE, 12.0, Source.SCENARIO, by="h1"),
+        event(EventKind.TASK_DONE, 12.0, Source.SCENARIO, by="h2"),
+        event(EventKind.TRIAL_END, 20.0, Source.SCENARIO, reason="completed"),
+    )
     m = compute(rec)
     assert (m["h1_gems"], m["h2_gems"]) == (2, 3)
     assert (m["h1_time_to_finish_s"], m["h2_time_to_finish_s"]) == (6.0, 12.0)

@@ -10,8 +10,16 @@ import pytest
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ["haven_sim", "haven_viz", "haven_scenarios"]
 ROS_MODULES = {
-    "rclpy", "std_msgs", "geometry_msgs", "nav_msgs", "sensor_msgs", "visualization_msgs",
-    "rosgraph_msgs", "std_srvs", "builtin_interfaces", "tf2_msgs",
+    "rclpy",
+    "std_msgs",
+    "geometry_msgs",
+    "nav_msgs",
+    "sensor_msgs",
+    "visualization_msgs",
+    "rosgraph_msgs",
+    "std_srvs",
+    "builtin_interfaces",
+    "tf2_msgs",
 }
 
 

@@ -59,6 +59,7 @@ def test_a_websocket_client_sees_the_channels_and_decodes_messages(ros):
     ros.start("haven_scenarios.nodes.bridge", {"port": port})
     ros.wait_for_messages(odom, 5)
     ros.spin_until(lambda: ros.node.count_subscribers("/haven/world_markers") > 0, 20)
+
     def ready(topic, msg):  # the cue markers come as deltas; the full set at least every 2 s
         return topic != "/haven/ar_markers" or "robot" in {m.ns for m in msg.markers}
 

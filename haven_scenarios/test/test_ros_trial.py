@@ -141,8 +141,14 @@ def test_free_running_recordings_are_complete_and_score_independently(ros, tmp_p
 
 
 def test_ctrl_c_mid_trial_leaves_a_readable_bag(ros, tmp_path):
-    proc = subprocess.Popen([*HAVEN, "run", "hallway", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)],
-                            env=ros.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    proc = subprocess.Popen(
+        [*HAVEN, "run", "hallway", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)],
+        env=ros.env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )
     ros.procs.append(proc)
     deadline = time.monotonic() + 60
     events = None

@@ -34,7 +34,7 @@ def record_batch_trial(folder, name="shared_room", seed=0, delay_s=0.4):
     result = trial.run()
     folder.mkdir(parents=True)
     write_inputs(folder, scenario, "{}\n")
-    write_json(folder / "session.json", {"scenario": name, "seed": seed, "participant": "sim", "condition": "all"})
+    write_json(folder / "session.json", {"scenario": name, "seed": seed, "participant": "sim", "condition": "all", "humans": ["h1"]})
     with BagWriter(folder / "bag") as bag:
         for m in messages:
             topic = "/" + m.topic
@@ -87,13 +87,20 @@ def test_report_turns_damaged_sessions_into_flagged_rows(session, tmp_path):
     empty = tmp_path / "study" / "c_empty"
     (empty / "bag").mkdir(parents=True)
     (empty / "session.json").write_text("{not json")
+    no_world = tmp_path / "study" / "d_no_world"  # a whole bag, but the world copy is gone
+    shutil.copytree(folder, no_world)
+    (no_world / "world.yaml").unlink()
     out = tmp_path / "report.csv"
     rows = report_csv([tmp_path / "study"], out)
     read = list(csv.DictReader(out.open()))
-    assert [r["session"] for r in read] == ["a_good", "b_killed", "c_empty"] and len(rows) == 3
+    assert [r["session"] for r in read] == ["a_good", "b_killed", "c_empty", "d_no_world"] and len(rows) == 4
     assert read[0]["valid"] == "True" and read[0]["robot_path_length_m"] == str(batch.metrics["robot_path_length_m"])
     assert read[1]["valid"] == "False" and "recovered from its MCAP data" in read[1]["invalid_reasons"]
-    assert read[2]["valid"] == "False" and "no readable scenario.yaml" in read[2]["invalid_reasons"]
+    assert read[2]["valid"] == "False" and "holds no MCAP file" in read[2]["invalid_reasons"]
+    assert "no scenario.yaml and no world.yaml in the session" in read[2]["invalid_reasons"]
+    assert read[3]["valid"] == "False" and read[3]["invalid_reasons"].startswith("no world.yaml in the session")
+    # Without the world the person's columns keep their id (from session.json), with what the bag says.
+    assert read[3]["h1_path_length_m"] == read[0]["h1_path_length_m"]
 
 
 def test_a_bag_without_footer_gives_back_what_it_holds(session, tmp_path):

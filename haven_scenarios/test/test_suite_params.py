@@ -38,6 +38,7 @@ def test_an_edited_params_file_changes_batch_mode(tmp_path):
 def test_batch_refuses_a_bad_params_file_in_one_line(tmp_path):
     f = tmp_path / "bad.yaml"
     f.write_text("controller:\n  ros__parameters:\n    rate_hz: fast\n")
-    r = subprocess.run([sys.executable, "-m", "haven_scenarios", "batch", "shared_room", "--params-file", str(f)],
-                       capture_output=True, text=True, timeout=60)
+    r = subprocess.run(
+        [sys.executable, "-m", "haven_scenarios", "batch", "shared_room", "--params-file", str(f)], capture_output=True, text=True, timeout=60
+    )
     assert r.returncode == 2 and r.stderr.strip() == "haven: error: controller: rate_hz: must be a finite number, got 'fast'"

@@ -7,7 +7,9 @@ from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv,
 # Children that say they are ready (their signal handling is set up) by creating the file named
 # in argv[1], so the tests signal them only then: no race with the interpreter's start-up.
 SLEEPER = "import pathlib, sys, time; pathlib.Path(sys.argv[1]).touch(); time.sleep(60)"
-IGNORES_SIGINT = "import pathlib, signal, sys, time; signal.signal(signal.SIGINT, signal.SIG_IGN); pathlib.Path(sys.argv[1]).touch(); time.sleep(60)"
+IGNORES_SIGTERM = (
+    "import pathlib, signal, sys, time; signal.signal(signal.SIGTERM, signal.SIG_IGN); pathlib.Path(sys.argv[1]).touch(); time.sleep(60)"
+)
 
 
 def child(code, ready):
@@ -32,7 +34,15 @@ def test_environment_keeps_discovery_local_unless_asked():
 def test_node_argv_formats_parameters():
     argv = node_argv("haven_sim.nodes.sim_node", {"world": "w.yaml", "use_sim_time": True, "real_time_factor": 2.0})
     assert argv[1:] == [
-        "-m", "haven_sim.nodes.sim_node", "--ros-args", "-p", "world:=w.yaml", "-p", "use_sim_time:=true", "-p", "real_time_factor:=2.0",
+        "-m",
+        "haven_sim.nodes.sim_node",
+        "--ros-args",
+        "-p",
+        "world:=w.yaml",
+        "-p",
+        "use_sim_time:=true",
+        "-p",
+        "real_time_factor:=2.0",
     ]
 
 
@@ -44,16 +54,16 @@ def test_a_dying_child_is_reported_and_the_rest_stopped(tmp_path):
         exited = sup.wait(timeout_s=30)
         assert exited is not None and (exited.name, exited.code) == ("crasher", 3)
         codes = sup.stop()
-    assert codes["sleeper"] == -signal.SIGINT  # stopped by our SIGINT, the first and gentlest step
+    assert codes["sleeper"] == -signal.SIGTERM  # stopped by our SIGTERM, the first and gentlest step
     assert sleeper.poll() is not None
 
 
-def test_stop_escalates_when_sigint_is_ignored(tmp_path):
+def test_stop_escalates_when_sigterm_is_ignored(tmp_path):
     with Supervisor(env={}, grace_s=0.5) as sup:
-        sup.start(ProcessSpec("stubborn", child(IGNORES_SIGINT, tmp_path / "ready")))
+        sup.start(ProcessSpec("stubborn", child(IGNORES_SIGTERM, tmp_path / "ready")))
         wait_ready(tmp_path / "ready")
         codes = sup.stop()
-    assert codes["stubborn"] == -signal.SIGTERM
+    assert codes["stubborn"] == -signal.SIGKILL
 
 
 def test_wait_returns_on_a_stop_request(tmp_path):

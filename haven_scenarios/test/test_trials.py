@@ -73,7 +73,10 @@ def test_several_participants_with_different_models(tmp_path):
     world["humans"] += [{"id": "h2", "start": [8.0, 2.0, 3.14]}, {"id": "h3", "start": [8.5, 8.5, 3.14]}]
     (tmp_path / "room3.yaml").write_text(yaml.safe_dump(world))
     scenario = {
-        "name": "room3", "world": str(tmp_path / "room3.yaml"), "kind": "retrieval", "timeout_s": 400,
+        "name": "room3",
+        "world": str(tmp_path / "room3.yaml"),
+        "kind": "retrieval",
+        "timeout_s": 400,
         "robot": {"order": "nearest"},
         "humans": [{"id": "h1", "model": "walker"}, {"id": "h2", "model": "blocker"}, {"id": "h3", "model": "yielder"}],
     }

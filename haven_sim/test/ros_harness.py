@@ -59,9 +59,7 @@ class RosHarness:
         self.procs: list[subprocess.Popen[str]] = []
 
     # -- processes -------------------------------------------------------------------------------
-    def start(
-        self, module: str, params: Mapping[str, Any] | None = None, args: Sequence[str] = (), capture: bool = False
-    ) -> subprocess.Popen[str]:
+    def start(self, module: str, params: Mapping[str, Any] | None = None, args: Sequence[str] = (), capture: bool = False) -> subprocess.Popen[str]:
         argv = [sys.executable, "-m", module, "--ros-args"]
         for k, v in (params or {}).items():
             v = ("true" if v else "false") if isinstance(v, bool) else v

@@ -17,18 +17,21 @@ def test_round_trip_through_json():
     assert json.loads(e.to_json())["type"] == "replanned" and back["side"] == "left"
 
 
-@pytest.mark.parametrize("text,why", [
-    ("not json", "not JSON"),
-    ("[1, 2]", "must be a JSON object"),
-    ('{"type": "replanned"}', "stamp must be a finite number"),
-    ('{"type": "teleported", "stamp": 1}', "unknown event type 'teleported'"),
-    ('{"type": ["x"], "stamp": 1}', "unknown event type"),
-    ('{"type": "gem_collected", "stamp": 1, "gem": "g"}', "missing by"),
-    ('{"type": "gem_collected", "stamp": 1, "gem": {"a": 1}, "by": "h1"}', "gem must be a string"),
-    ('{"type": "trial_end", "stamp": NaN, "reason": "x"}', "stamp must be a finite number"),
-    ("[" * 60000, "not JSON"),
-    ('{"type": "reset", "stamp": 1, "pad": "' + "x" * 70000 + '"}', "larger than"),
-])
+@pytest.mark.parametrize(
+    "text,why",
+    [
+        ("not json", "not JSON"),
+        ("[1, 2]", "must be a JSON object"),
+        ('{"type": "replanned"}', "stamp must be a finite number"),
+        ('{"type": "teleported", "stamp": 1}', "unknown event type 'teleported'"),
+        ('{"type": ["x"], "stamp": 1}', "unknown event type"),
+        ('{"type": "gem_collected", "stamp": 1, "gem": "g"}', "missing by"),
+        ('{"type": "gem_collected", "stamp": 1, "gem": {"a": 1}, "by": "h1"}', "gem must be a string"),
+        ('{"type": "trial_end", "stamp": NaN, "reason": "x"}', "stamp must be a finite number"),
+        ("[" * 60000, "not JSON"),
+        ('{"type": "reset", "stamp": 1, "pad": "' + "x" * 70000 + '"}', "larger than"),
+    ],
+)
 def test_malformed_events_are_refused_in_one_line(text, why):
     with pytest.raises(EventError, match=re.escape(why)) as info:
         Event.from_json(text)

@@ -31,13 +31,16 @@ def test_flatten_prefixes_groups_and_build_reads_them_back():
     assert docs(Outer)["battery_on"] == "switch"
 
 
-@pytest.mark.parametrize("name,value,expected", [
-    ("battery_on", "no", "must be true or false"),
-    ("battery_capacity_m", True, "must be a finite number"),
-    ("battery_capacity_m", math.inf, "must be a finite number"),
-    ("name", 3, "must be a string"),
-    ("ids", "a", "must be a list of strings"),
-])
+@pytest.mark.parametrize(
+    "name,value,expected",
+    [
+        ("battery_on", "no", "must be true or false"),
+        ("battery_capacity_m", True, "must be a finite number"),
+        ("battery_capacity_m", math.inf, "must be a finite number"),
+        ("name", 3, "must be a string"),
+        ("ids", "a", "must be a list of strings"),
+    ],
+)
 def test_wrong_types_are_refused_in_one_line(name, value, expected):
     with pytest.raises(ParamsError, match=f"node: {name}: {expected}") as info:
         build(Outer, {name: value}, where="node: ")

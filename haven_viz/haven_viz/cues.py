@@ -100,7 +100,6 @@ class CueState:
     thought: str = ""  # the bubble's text, "" while hidden
     battery_level: float | None = None  # the level shown, None while hidden
 
-
     def to_json(self, stamp: float) -> str:
         return json.dumps({"stamp": round(stamp, 4), **dataclasses.asdict(self)}, sort_keys=True)
 

@@ -27,8 +27,17 @@ from haven_viz.world_markers import COLORS  # noqa: E402
 
 # Drawing order: floor items, then path, then bodies, then what floats above.
 _LAYER = {
-    "gem_areas": 1, "charging_base": 1, "rooms": 2, "path_projection": 3, "gems": 4, "robot": 5, "humans": 5, "turn_signals": 6,
-    BATTERY_NS: 7, THOUGHT_NS: 8, "human_names": 8,
+    "gem_areas": 1,
+    "charging_base": 1,
+    "rooms": 2,
+    "path_projection": 3,
+    "gems": 4,
+    "robot": 5,
+    "humans": 5,
+    "turn_signals": 6,
+    BATTERY_NS: 7,
+    THOUGHT_NS: 8,
+    "human_names": 8,
 }
 
 
@@ -61,8 +70,22 @@ def _draw(ax: Axes, m: MarkerSpec) -> None:
     elif m.shape is Shape.ARROW:
         length = m.scale[0]
         dx, dy = length * math.cos(m.yaw), length * math.sin(m.yaw)
-        ax.add_patch(FancyArrow(x, y, dx, dy, width=m.scale[1], head_width=2.5 * m.scale[1], head_length=0.4 * length,
-                                length_includes_head=True, facecolor=color, edgecolor="black", lw=0.4, zorder=z))
+        ax.add_patch(
+            FancyArrow(
+                x,
+                y,
+                dx,
+                dy,
+                width=m.scale[1],
+                head_width=2.5 * m.scale[1],
+                head_length=0.4 * length,
+                length_includes_head=True,
+                facecolor=color,
+                edgecolor="black",
+                lw=0.4,
+                zorder=z,
+            )
+        )
     elif m.shape is Shape.TEXT_VIEW_FACING:
         size = max(5.0, 40.0 * m.scale[2])
         box = None
@@ -75,6 +98,16 @@ def _draw(ax: Axes, m: MarkerSpec) -> None:
         ax.text(x, y, m.text, ha="center", va="center", fontsize=size, color=color, bbox=box, zorder=z)
 
 
+# What the robot did, as symbols with a legend entry each (text labels would pile up on one spot).
+EVENT_SYMBOLS = {
+    "wait": ("s", "tab:blue"),
+    "detour left": ("<", "tab:blue"),
+    "detour right": (">", "tab:blue"),
+    "to charge": ("D", "tab:cyan"),
+    "contact": ("X", "red"),
+}
+
+
 def render_scene(
     world: World,
     markers: Sequence[MarkerSpec],
@@ -83,8 +116,10 @@ def render_scene(
     trails: Mapping[str, tuple[FloatArray, str]] | None = None,
     points: Sequence[tuple[float, float, str, str]] = (),
     removed: Sequence[str] = (),
+    events: Sequence[tuple[float, float, str]] = (),
 ) -> Path:
-    """Draw and save a PNG. `trails`: label -> ((N, 2) xy, colour); `points`: (x, y, label, colour)."""
+    """Draw and save a PNG. `trails`: label -> ((N, 2) xy, colour); `points`: (x, y, label, colour),
+    labelled on the map; `events`: (x, y, kind) with a symbol per kind (EVENT_SYMBOLS), in the legend."""
     xmin, ymin, xmax, ymax = world.bounds()
     width, height = xmax - xmin, ymax - ymin
     scale = 9.0 / max(width, height)
@@ -102,9 +137,17 @@ def render_scene(
     for x, y, label, color in points:
         ax.plot([x], [y], "o", color=color, ms=5, zorder=9.5)
         ax.annotate(label, (x, y), textcoords="offset points", xytext=(4, 4), fontsize=6, color=color, zorder=9.5)
+    shown: set[str] = set()
+    for x, y, kind in events:
+        symbol, color = EVENT_SYMBOLS.get(kind, ("o", "tab:blue"))
+        ax.plot([x], [y], symbol, color=color, ms=7, mec="white", mew=0.6, zorder=9.6, label=None if kind in shown else kind)
+        shown.add(kind)
     for m in sorted(markers, key=lambda m: _LAYER.get(m.ns, 5)):
         _draw(ax, m)
-    if trails:
+    if world.charging_base is not None and any(m.ns == "charging_base" for m in markers):
+        bx, by = world.charging_base.position
+        ax.annotate("charging base", (bx, by), ha="center", va="center", fontsize=6, color="black", zorder=9.7)
+    if trails or events:
         ax.legend(loc="upper right", fontsize=7, framealpha=0.8)
     ax.set_xlim(xmin - 0.3, xmax + 0.3)
     ax.set_ylim(ymin - 0.3, ymax + 0.3)

@@ -42,11 +42,7 @@ def triangulate(polygon: Sequence[Point]) -> list[tuple[Point, Point, Point]]:
             a, b, c = pts[i0], pts[i1], pts[i2]
             if cross(a, b, c) <= 1e-12:
                 continue  # reflex or degenerate corner: not an ear
-            if any(
-                cross(a, b, pts[j]) >= 0 and cross(b, c, pts[j]) >= 0 and cross(c, a, pts[j]) >= 0
-                for j in idx
-                if j not in (i0, i1, i2)
-            ):
+            if any(cross(a, b, pts[j]) >= 0 and cross(b, c, pts[j]) >= 0 and cross(c, a, pts[j]) >= 0 for j in idx if j not in (i0, i1, i2)):
                 continue
             tris.append((a, b, c))
             idx.pop(k)

@@ -19,8 +19,13 @@ from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
 
 SHOWN = {
-    EventKind.PLAN_MADE, EventKind.PLAN_REFUSED, EventKind.WAITING, EventKind.RESUMED,
-    EventKind.REPLANNED, EventKind.REVERTED, EventKind.GOAL_REACHED,
+    EventKind.PLAN_MADE,
+    EventKind.PLAN_REFUSED,
+    EventKind.WAITING,
+    EventKind.RESUMED,
+    EventKind.REPLANNED,
+    EventKind.REVERTED,
+    EventKind.GOAL_REACHED,
 }
 
 

@@ -178,6 +178,8 @@ def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording,
             rec.add(m)
         rec.lost = lost_messages(bag)
         return rec, ""
+    if not any(bag.glob("*.mcap")):
+        return rec, f"no recording: {bag} holds no MCAP file"
     n = 0
     for topic, msgtype, _, data in recovered_messages(bag):
         name = READ.get(topic)

@@ -133,8 +133,12 @@ def _proximity(tl: Timeline) -> dict[str, Any]:
         return {k: None for k in ("min_human_distance_m", "min_human_surface_distance_m", "avg_closest_human_distance_m")}
     closest = np.nanmin(np.vstack(list(d.values())), axis=0)
     total = float(np.sum(tl.dt)) or 1.0
-    bands = {"intimate": (0.0, ZONES["intimate"]), "personal": (ZONES["intimate"], ZONES["personal"]),
-             "social": (ZONES["personal"], ZONES["social"]), "public": (ZONES["social"], math.inf)}
+    bands = {
+        "intimate": (0.0, ZONES["intimate"]),
+        "personal": (ZONES["intimate"], ZONES["personal"]),
+        "social": (ZONES["personal"], ZONES["social"]),
+        "public": (ZONES["social"], math.inf),
+    }
     out: dict[str, Any] = {
         "min_human_distance_m": _r(float(np.nanmin(closest))),
         "min_human_surface_distance_m": _r(float(np.nanmin(closest)) - ROBOT_BODY.radius_m - HUMAN_BODY.radius_m),
@@ -228,7 +232,7 @@ def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None
         f"{hid}_time_to_finish_s": _r(max([e.stamp for e in own], default=done) if done is not None else None, 2),
         f"{hid}_path_length_m": _r(_length(xy)),
         f"{hid}_time_not_moving_s": _r(float(np.sum(dt[:-1][speed < PERSON_STILL_MPS])) if len(speed) else 0.0, 2),
-        f"{hid}_detour_m": _r(_detour(xy[tl.t <= max((e.stamp for e in own), default=0.0) + 1e-9], own, world)),
+        f"{hid}_detour_m": _r(_detour(tl.t, xy, own, world)),
         f"{hid}_gems": sum(1 for e in own if e.kind is EventKind.GEM_COLLECTED),
         f"{hid}_min_distance_m": _r(float(np.min(d)) if len(d) else None),
     }
@@ -242,20 +246,19 @@ def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None
     return out
 
 
-def _detour(xy: FloatArray, own: Sequence[Event], world: World | None) -> float | None:
-    """Walked length (until the last stop reached) minus the shortest walk from the start through
-    the gems or rooms the person reached, in that order (planned around walls, for a person's body)."""
-    if world is None or len(xy) < 2:
+def _detour(t: FloatArray, xy: FloatArray, own: Sequence[Event], world: World | None) -> float | None:
+    """Walked length until the last task step (gem or room) minus the shortest walk, planned around
+    the walls for a person's body, from the start through the places where the person stood when
+    each step counted, in that order (a gem counts anywhere within its radius, so its centre would
+    be the wrong reference)."""
+    if world is None or not own or len(xy) < 2:
         return None
-    gems = {g.id: g.position for g in world.gems}
-    rooms = {r.name: r.centre for r in world.rooms}
-    stops = [gems.get(str(e.get("gem"))) or rooms.get(str(e.get("room"))) for e in own]
-    points = [(float(xy[0, 0]), float(xy[0, 1]))] + [p for p in stops if p is not None]
-    if len(points) < 2:
-        return None
+    walked = xy[t <= own[-1].stamp + 1e-9]
+    at = [min(int(np.searchsorted(t, e.stamp - 1e-9)), len(xy) - 1) for e in own]
+    points = [(float(xy[0, 0]), float(xy[0, 1]))] + [(float(xy[i, 0]), float(xy[i, 1])) for i in at]
     planner = GridPlanner(rasterise(world), HUMAN_PLANNER)
     try:
-        shortest = sum(planner.plan(a, b).length_m for a, b in zip(points, points[1:]))
+        shortest = sum(planner.plan(a, b).length_m for a, b in zip(points, points[1:]) if math.dist(a, b) > 1e-6)
     except PlanningError:
         return None
-    return _length(xy) - shortest
+    return _length(walked) - shortest

@@ -14,11 +14,14 @@ from typing import Any
 from haven_scenarios.record.session import analyse
 
 NOT_IN_CSV = ("condition_segments",)  # nested: in metrics.json only
+# The design columns come first, as a statistics package expects them (then the metrics).
+FIRST = ("session", "trial", "participant", "condition", "seed", "scenario", "end_reason", "valid")
 
 
 def csv_row(metrics: dict[str, Any]) -> dict[str, Any]:
     """A metrics dict as a flat CSV row (lists joined with "; ", nested structures left out)."""
-    return {k: ("; ".join(map(str, v)) if isinstance(v, list) else v) for k, v in metrics.items() if k not in NOT_IN_CSV}
+    keys = [k for k in FIRST if k in metrics] + [k for k in metrics if k not in FIRST and k not in NOT_IN_CSV]
+    return {k: ("; ".join(map(str, metrics[k])) if isinstance(metrics[k], list) else metrics[k]) for k in keys}
 
 
 def session_folders(paths: Sequence[Path]) -> list[Path]:

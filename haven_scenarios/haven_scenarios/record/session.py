@@ -35,7 +35,6 @@ from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario
 from haven_sim.common.events import EventKind
 from haven_sim.sim.world import World, WorldError
-from haven_viz.render import render_scene
 from haven_viz.world_markers import world_markers
 
 PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags", "mcap")
@@ -103,32 +102,35 @@ def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
     (folder / PARAMS_FILE).write_text(params_yaml)
 
 
-def session_scenario(folder: Path) -> Scenario | None:
-    """The session's own copy of its scenario (its world, world.yaml, beside it), if readable."""
+def session_scenario(folder: Path) -> tuple[Scenario | None, str]:
+    """The session's own copy of its scenario (its world, world.yaml, beside it), or None and why not."""
+    missing = [name for name in (SCENARIO_FILE, WORLD_FILE) if not (folder / name).is_file()]
+    if missing:
+        return None, f"no {' and no '.join(missing)} in the session"
     try:
-        return load_scenario(folder / SCENARIO_FILE)
-    except (ScenarioError, WorldError, OSError):
-        return None
+        return load_scenario(folder / SCENARIO_FILE), ""
+    except (ScenarioError, WorldError, OSError) as e:
+        return None, f"scenario unreadable: {str(e)[:160]}"
 
 
 def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
     """Metrics of a session folder from its bag alone; a damaged or incomplete session gives a
     row flagged not valid, never an exception."""
     info = session_info(folder)
-    scenario = session_scenario(folder)
+    scenario, problem = session_scenario(folder)
     world = scenario.world if scenario is not None else None
-    ids = [h.id for h in world.humans] if world is not None else []
+    # Without the world, the people's ids as session.json lists them (columns named as in every row).
+    ids = [h.id for h in world.humans] if world is not None else [str(i) for i in info.get("humans", [])]
     try:
         rec, note = read_recording(folder / "bag", ids)
     except Exception as e:  # noqa: BLE001 - whatever a damaged bag raises, the row says so
         rec, note = Recording(), f"bag unreadable: {str(e)[:120]}"
     end = rec.first(EventKind.TRIAL_END)
     metrics = compute(rec, str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED, world)
-    if note:
+    problems = [p for p in (note, problem) if p]
+    if problems:
         metrics["valid"] = False
-        metrics["invalid_reasons"] = [note, *metrics.get("invalid_reasons", [])]
-    if scenario is None:
-        metrics["invalid_reasons"] = [*metrics.get("invalid_reasons", []), "no readable scenario.yaml and world.yaml in the session"]
+        metrics["invalid_reasons"] = [*problems, *metrics.get("invalid_reasons", [])]
     for key in ("participant", "condition", "seed"):
         if key in info:
             metrics[key] = info[key]
@@ -143,6 +145,7 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
     window = rec.window()
     trails: dict[str, tuple[Any, str]] = {}
     marks: list[tuple[float, float, str, str]] = []
+    happened: list[tuple[float, float, str]] = []
     if window is not None:
         tl = Timeline.of(rec, *window, step=5 * GRID_S)
         trails["robot"] = (tl.robot_xy, "black")
@@ -154,8 +157,7 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
             if e.kind in labels and window[0] <= e.stamp <= window[1]:
                 i = min(int(np.searchsorted(tl.t, e.stamp - window[0])), len(tl.t) - 1)
                 label = f"detour {e.get('side', '')}" if e.kind is EventKind.REPLANNED else labels[e.kind]
-                color = "red" if e.kind is EventKind.CONTACT_BEGIN else "tab:blue"
-                marks.append((float(tl.robot_xy[i, 0]), float(tl.robot_xy[i, 1]), label, color))
+                happened.append((float(tl.robot_xy[i, 0]), float(tl.robot_xy[i, 1]), label))
         # Where each track starts, and every collected gem: which, by whom, when.
         for label, (xy, color) in trails.items():
             marks.append((float(xy[0, 0]), float(xy[0, 1]), f"{label} start", color))
@@ -168,4 +170,7 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
     removed = {str(e["id"]) for e in rec.events if e.kind is EventKind.OBSTRUCTION_REMOVED}
     markers = [m for m in world_markers(world, collected, removed) if m.ns in ("gems", "gem_areas", "charging_base", "rooms")]
     subtitle = f"participant {info.get('participant', '?')}, condition {info.get('condition', '?')}"
-    return render_scene(world, markers, folder / "trajectory.png", title=f"{title}\n{subtitle}", trails=trails, points=marks, removed=sorted(removed))
+    from haven_viz.render import render_scene  # matplotlib: imported when a picture is drawn
+
+    out = folder / "trajectory.png"
+    return render_scene(world, markers, out, title=f"{title}\n{subtitle}", trails=trails, points=marks, removed=sorted(removed), events=happened)

@@ -9,6 +9,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, TextIO
 
+from haven_scenarios.record.report import csv_row
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.trial import TrialResult, run_trial
 from haven_scenarios.study.rules import EndReason
@@ -43,11 +44,12 @@ def run_batch(
         writer: csv.DictWriter[str] | None = None
         for i in range(trials):
             result = run_trial(scenario, seed + i, toggles, suite)
-            row = {"trial": i, **result.metrics}
+            row = {"trial": i, "seed": seed + i, **result.metrics}
+            flat = csv_row(row)
             if writer is None:
-                writer = csv.DictWriter(f, fieldnames=list(row), extrasaction="ignore")
+                writer = csv.DictWriter(f, fieldnames=list(flat), extrasaction="ignore")
                 writer.writeheader()
-            writer.writerow(row)
+            writer.writerow(flat)
             f.flush()
             rows.append(row)
             if on_trial is not None:

@@ -22,10 +22,10 @@ import argparse
 import sys
 from collections.abc import Sequence
 
-from haven_scenarios.tools.commands import clients, studies, suite, trial
-
 
 def build_parser() -> argparse.ArgumentParser:
+    from haven_scenarios.tools.commands import clients, studies, suite, trial
+
     parser = argparse.ArgumentParser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
     for group in (suite, clients, trial, studies):
@@ -34,8 +34,12 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
-    code: int = args.func(args)
+    try:  # Ctrl-C while the command modules still load (rclpy, numpy) is a plain stop, too
+        args = build_parser().parse_args(argv)
+        code: int = args.func(args)
+    except KeyboardInterrupt:
+        print("haven: interrupted", file=sys.stderr)
+        return 130
     return code
 
 

@@ -30,7 +30,7 @@ class KeyMapper:
 
     def command(self, now: float) -> Twist2D:
         held = {k for k, t in self._pressed.items() if now - t <= self.hold_s}
-        v = self.speed_mps * ((("w" in held) - ("s" in held)))
-        side = self.speed_mps * ((("a" in held) - ("d" in held)))
-        w = self.turn_rps * ((("q" in held) - ("e" in held)))
+        v = self.speed_mps * (("w" in held) - ("s" in held))
+        side = self.speed_mps * (("a" in held) - ("d" in held))
+        w = self.turn_rps * (("q" in held) - ("e" in held))
         return Twist2D(float(v), float(side), float(w))

@@ -16,8 +16,7 @@ class RateStats:
     window: int
 
     def line(self) -> str:
-        return (f"average rate: {self.rate_hz:.3f}\n\tmin: {self.min_s:.3f}s max: {self.max_s:.3f}s "
-                f"std dev: {self.std_s:.5f}s window: {self.window}")
+        return f"average rate: {self.rate_hz:.3f}\n\tmin: {self.min_s:.3f}s max: {self.max_s:.3f}s std dev: {self.std_s:.5f}s window: {self.window}"
 
 
 def rate_stats(arrivals: Sequence[float]) -> RateStats | None:

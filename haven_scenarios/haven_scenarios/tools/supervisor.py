@@ -1,7 +1,8 @@
 """Starts node processes from plain Python (no launch files), watches them, and stops them all.
 
 Each child runs in its own session, so a terminal's Ctrl-C reaches only the supervisor, which then
-stops the children in order: SIGINT (the nodes' clean shutdown), then SIGTERM, then SIGKILL.
+stops the children in order: SIGTERM (the nodes' clean shutdown; a node still importing just ends,
+where SIGINT would print a KeyboardInterrupt traceback), then SIGKILL.
 When one child exits on its own, the rest are stopped too: a study never runs half a suite.
 """
 
@@ -23,6 +24,7 @@ class ProcessSpec:
     name: str
     argv: Sequence[str]
     env: Mapping[str, str] = field(default_factory=dict)
+    cwd: str | None = None  # where it runs (a session's nodes run in the session folder)
 
 
 def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args: Sequence[str] = (), params_file: str | None = None) -> list[str]:
@@ -72,7 +74,7 @@ class Supervisor:
 
     def start(self, spec: ProcessSpec) -> subprocess.Popen[bytes]:
         env = {**self.env, **spec.env}
-        proc = subprocess.Popen(list(spec.argv), env=env, start_new_session=True)
+        proc = subprocess.Popen(list(spec.argv), env=env, cwd=spec.cwd, start_new_session=True)
         self.procs[spec.name] = proc
         return proc
 
@@ -116,7 +118,7 @@ class Supervisor:
         return {n: p.wait() for n, p in self.procs.items()}
 
     def _stop(self, procs: list[subprocess.Popen[bytes]]) -> None:
-        for sig, wait_s in ((signal.SIGINT, self.grace_s), (signal.SIGTERM, 2.0), (signal.SIGKILL, 2.0)):
+        for sig, wait_s in ((signal.SIGTERM, self.grace_s), (signal.SIGKILL, 2.0)):
             alive = [p for p in procs if p.poll() is None]
             if not alive:
                 break

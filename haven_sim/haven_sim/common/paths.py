@@ -31,9 +31,7 @@ class Segment:
     end: int  # index of the last pose (inclusive)
 
 
-def classify(
-    poses: Sequence[Pose2D], position_eps_m: float = 1e-3, yaw_eps_rad: float = math.radians(0.5)
-) -> list[Segment]:
+def classify(poses: Sequence[Pose2D], position_eps_m: float = 1e-3, yaw_eps_rad: float = math.radians(0.5)) -> list[Segment]:
     """Rotate / arc / straight segments of any pose list (ours or another planner's)."""
     kinds: list[SegmentKind | None] = []
     for a, q in zip(poses, poses[1:]):

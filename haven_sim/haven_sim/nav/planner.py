@@ -209,9 +209,7 @@ class GridPlanner:
             best = int(np.argmin(d))
             if d[best] <= self.params.snap_radius_m:
                 return (float(pts[best, 0]), float(pts[best, 1]))
-        raise PlanningError(
-            f"{what} ({x:.2f}, {y:.2f}) is inside an obstacle or within {self.params.inflation_m:.2f} m of one"
-        )
+        raise PlanningError(f"{what} ({x:.2f}, {y:.2f}) is inside an obstacle or within {self.params.inflation_m:.2f} m of one")
 
     # -- queries ---------------------------------------------------------------------------------
     def plan(self, start: Point, goal: Point) -> Plan:

@@ -51,11 +51,11 @@ TICKS, ACK, HELLO = "haven/lockstep/tick", "haven/lockstep/ack", "haven/lockstep
 def tick_topic(participant: str) -> str:
     return f"{TICKS}/{participant}"
 
+
 CONTROL = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=ReliabilityPolicy.RELIABLE)
 # Each participant keeps its last hello for late readers; the coordinator keeps every one it gets
 # (several writers' hellos arrive at once, and a reader of depth 1 would keep only the last).
-ANNOUNCE = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE,
-                      durability=DurabilityPolicy.TRANSIENT_LOCAL)
+ANNOUNCE = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
 ANNOUNCED = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
 STEADY = Clock(clock_type=ClockType.STEADY_TIME)
 WAIT_S = 5.0  # longest wait for an announced message before going on without it
@@ -106,8 +106,7 @@ class Inbox:
         self.received: dict[str, int] = dict.fromkeys(inputs, 0)
         group = Deferred()
         self.subs = {
-            t: node.create_subscription(specs[t].msg_type, t, _never, keep_all(specs[t].sub_qos), callback_group=group, raw=True)
-            for t in inputs
+            t: node.create_subscription(specs[t].msg_type, t, _never, keep_all(specs[t].sub_qos), callback_group=group, raw=True) for t in inputs
         }
 
     def take(self, only: list[str] | None = None) -> None:
@@ -188,8 +187,13 @@ class LockstepParticipant:
             self.node.get_logger().info(f"lockstep: waiting for {', '.join(waiting)} to match")
         if ready != self._ready:
             self._ready = ready
-            hello = {"node": self.component.name, "period_ns": self.info.period_ns, "inputs": sorted(self.info.inputs),
-                     "outputs": sorted(self.outputs), "ready": ready}
+            hello = {
+                "node": self.component.name,
+                "period_ns": self.info.period_ns,
+                "inputs": sorted(self.info.inputs),
+                "outputs": sorted(self.outputs),
+                "ready": ready,
+            }
             self.hello_pub.publish(String(data=json.dumps(hello)))
 
     def _due_messages(self, counts: Mapping[str, int], now: float) -> list[Message]:

@@ -17,10 +17,10 @@ LATCHED = QoSProfile(
 )
 # Commands and state streams: /cmd_vel*, /odom, /battery_state, /humans, /goal_pose.
 RELIABLE = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
-# The simulator's recorded state streams (/odom, /humans, /battery_state): reliable like RELIABLE,
-# with a deep history so a reader that falls behind for a moment (a recorder on a busy machine at
-# 10x real time: /odom comes 500 times a second) still gets every message re-sent. Depth does not
-# affect QoS matching: any reliable or best-effort reader matches.
+# Publishers of streams (/odom, /humans, /battery_state, /clock, /tf, the cmd_vel topics): reliable
+# like RELIABLE, with a deep history so a reader that falls behind for a moment (a recorder on a
+# busy machine at 10x real time: /odom comes 500 times a second) still gets every message re-sent.
+# Depth does not affect QoS matching: any reliable or best-effort reader matches.
 STREAM = QoSProfile(depth=1000, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # Subscribers that act on the current state (controller, planner, viz, scenario) keep only the latest
 # /odom, /humans or /battery_state: at 10x real time a backlog would make them act on old poses.

@@ -20,6 +20,7 @@ from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.lockstep import LockstepCoordinator
 from haven_sim.nodes.runner import run_node
+from haven_sim.runtime.lockstep import UNCAPPED_RTF
 from haven_sim.sim.pacer import Pacer
 from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig
 from haven_sim.sim.world import resolve_world_path
@@ -40,11 +41,17 @@ class SimNode(ComponentNode):
         self.create_service(Trigger, "haven/reset", self._on_reset)
         if self.lockstep_mode:
             self.coordinator = LockstepCoordinator(
-                self, self.sim, list(config.lockstep_participants), list(config.lockstep_observers), list(config.lockstep_wait_for),
+                self,
+                self.sim,
+                list(config.lockstep_participants),
+                list(config.lockstep_observers),
+                list(config.lockstep_wait_for),
                 config.real_time_factor,
-                self._specs, self._pubs,
+                self._specs,
+                self._pubs,
             )
-            pace = f"lockstep with {', '.join(config.lockstep_participants) or 'no participants'}, at most {config.real_time_factor:g}x real time"
+            cap = "as fast as they go" if config.real_time_factor >= UNCAPPED_RTF else f"at most {config.real_time_factor:g}x real time"
+            pace = f"lockstep with {', '.join(config.lockstep_participants) or 'no participants'}, {cap}"
         else:
             self.pacer = Pacer(config.sim.step_s, config.real_time_factor)
             self.publish(self.sim.sense())

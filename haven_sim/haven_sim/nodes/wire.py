@@ -43,7 +43,7 @@ class Frames:
 
 
 def _twist() -> TopicSpec:
-    return TopicSpec(Twist, lambda t, _: conv.twist_msg(t), conv.twist_from_msg, qos.RELIABLE, qos.RELIABLE)
+    return TopicSpec(Twist, lambda t, _: conv.twist_msg(t), conv.twist_from_msg, qos.STREAM, qos.RELIABLE)
 
 
 def _unsupported(msg: Any) -> Any:
@@ -54,7 +54,7 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
     """The haven_sim topics; `human_ids` name the /humans poses and the per-human command topics."""
     f = frames
     table = {
-        topics.CLOCK: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.CLOCK, qos.CLOCK),
+        topics.CLOCK: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.STREAM, qos.CLOCK),
         topics.MAP: TopicSpec(OccupancyGrid, lambda g, t: conv.occupancy_msg(t, g, f.map), conv.occupancy_from_msg, qos.LATCHED, qos.LATCHED),
         topics.ODOM: TopicSpec(Odometry, lambda s, t: conv.odometry_msg(t, s, f.odom, f.base), conv.odometry_from_msg, qos.STREAM, qos.LATEST),
         topics.SCAN: TopicSpec(LaserScan, lambda s, t: conv.scan_msg(t, s, f.scan), _unsupported, qos.SENSOR, qos.SENSOR),
@@ -74,7 +74,7 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
         topics.REMOVE_OBSTRUCTION: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
     }
     if TFMessage is not None:
-        table[topics.TF] = TopicSpec(TFMessage, lambda fr, t: conv.tf_msg(t, fr), _unsupported, qos.TF, qos.TF)
+        table[topics.TF] = TopicSpec(TFMessage, lambda fr, t: conv.tf_msg(t, fr), _unsupported, qos.STREAM, qos.TF)
         table[topics.TF_STATIC] = TopicSpec(TFMessage, lambda fr, t: conv.tf_msg(t, fr), _unsupported, qos.LATCHED, qos.LATCHED)
     for hid in human_ids:
         table[topics.human_cmd_vel(hid)] = _twist()

@@ -27,6 +27,8 @@ from haven_sim.common.events import Event
 from haven_sim.common.params import param
 from haven_sim.runtime.component import Component, Message, due, period_ns
 
+UNCAPPED_RTF = 1e6  # a lockstep real-time factor this high means "as fast as the participants go"
+
 
 @dataclass(frozen=True)
 class LockstepParams:
@@ -67,7 +69,8 @@ class Schedule:
     def acting(self, step: int) -> list[str]:
         """The participants that act at `step` (in registration order); clears their pending flag."""
         out = [
-            p.name for p in self.participants.values()
+            p.name
+            for p in self.participants.values()
             if p.name in self._pending or (p.period_ns is not None and due(step, self.step_ns, p.period_ns))
         ]
         self._pending -= set(out)

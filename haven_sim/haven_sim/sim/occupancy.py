@@ -39,9 +39,7 @@ class OccupancyGridData:
         return bool(self.data[r, c] >= 50)
 
 
-def rasterise(
-    world: World, resolution_m: float = 0.05, padding_m: float = 0.5, removed: frozenset[str] = frozenset()
-) -> OccupancyGridData:
+def rasterise(world: World, resolution_m: float = 0.05, padding_m: float = 0.5, removed: frozenset[str] = frozenset()) -> OccupancyGridData:
     if resolution_m <= 0:
         raise ValueError(f"map resolution must be positive, got {resolution_m}")
     xmin, ymin, xmax, ymax = world.bounds()

@@ -90,9 +90,7 @@ class LaserScanner:
             self._cells[key] = cell
         return cell
 
-    def _runs(
-        self, start: FloatArray, sweep: FloatArray, skip: npt.NDArray[np.bool_] | None
-    ) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
+    def _runs(self, start: FloatArray, sweep: FloatArray, skip: npt.NDArray[np.bool_] | None) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
         """(beam, object) pairs for every beam whose index (a float: beam steps from beam 0) lies in
         [start, start + sweep]; start >= 0. Beams index a doubled ring (0 .. 2 * beams) so a run
         crossing angle_max needs no wrap-around."""

@@ -184,4 +184,3 @@ class Simulation:
 
     def occupancy(self, resolution_m: float = 0.05) -> OccupancyGridData:
         return rasterise(self.world, resolution_m, removed=frozenset(self.removed))
-

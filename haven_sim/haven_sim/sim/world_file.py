@@ -261,9 +261,7 @@ class _Parser:
     def check_free(self, world: World) -> None:
         """Start poses must not sit inside solid geometry."""
         shapes = world.solid_shapes()
-        checks = [("robot.start", world.robot_start)] + [
-            (f"humans[{i}].start", h.start) for i, h in enumerate(world.humans)
-        ]
+        checks = [("robot.start", world.robot_start)] + [(f"humans[{i}].start", h.start) for i, h in enumerate(world.humans)]
         for key, pose in checks:
             xs, ys = np.array([pose.x]), np.array([pose.y])
             for s in shapes:

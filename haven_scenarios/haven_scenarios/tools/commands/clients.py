@@ -28,8 +28,11 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     teleop.add_argument("human", nargs="?", default="h1")
     teleop.add_argument("--speed", type=positive, default=1.0, help="walking speed, m/s (default 1)")
     teleop.set_defaults(func=teleop_cmd)
-    for name, text in (("topics", "list the graph's topics with types and publisher/subscriber counts"),
-                       ("echo", "print the messages on a topic"), ("hz", "measure a topic's message rate")):
+    for name, text in (
+        ("topics", "list the graph's topics with types and publisher/subscriber counts"),
+        ("echo", "print the messages on a topic"),
+        ("hz", "measure a topic's message rate"),
+    ):
         g = sub.add_parser(name, help=text + " (for installs without the ros2 command)")
         if name != "topics":
             g.add_argument("topic")

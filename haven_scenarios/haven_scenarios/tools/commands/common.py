@@ -36,8 +36,14 @@ def add_ros_options(p: argparse.ArgumentParser) -> None:
 
 def add_suite_options(p: argparse.ArgumentParser) -> None:
     p.add_argument("--params-file", default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
-    p.add_argument("--without", nargs="+", default=[], choices=SUITE[1:], metavar="NODE",
-                   help="leave out our mux, planner, controller or viz (to run your own in their place)")
+    p.add_argument(
+        "--without",
+        nargs="+",
+        default=[],
+        choices=SUITE[1:],
+        metavar="NODE",
+        help="leave out our mux, planner, controller or viz (to run your own in their place)",
+    )
 
 
 def fail(message: str) -> int:

@@ -3,10 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import sys
 import time
 from pathlib import Path
 
-from haven_scenarios.record.report import report_csv
+from haven_scenarios.record.report import report_csv, session_folders
 from haven_scenarios.run.batch import progress_bar, run_batch, summary
 from haven_scenarios.run.suite import load_suite_config
 from haven_scenarios.run.trial import condition_name, parse_condition
@@ -32,12 +33,17 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
 
 
 def report_cmd(args: argparse.Namespace) -> int:
+    """Every readable session's row; a path that is not there is named and left out (exit 1), and
+    a report of no session at all is an error, not an empty file."""
     missing = [p for p in args.paths if not p.exists()]
-    if missing:
-        return fail(f"{missing[0]}: no such session folder or bag")
-    rows = report_csv(args.paths, args.out)
-    print(f"haven: {len(rows)} session(s) -> {args.out}")
-    return 0
+    for p in missing:
+        print(f"haven: {p}: no such session folder or bag; left out", file=sys.stderr)
+    if not session_folders([p for p in args.paths if p.exists()]):
+        return fail(f"no session folders in {', '.join(map(str, args.paths))}")
+    rows = report_csv([p for p in args.paths if p.exists()], args.out)
+    flagged = sum(1 for r in rows if not r.get("valid"))
+    print(f"haven: {len(rows)} session(s) -> {args.out}" + (f" ({flagged} flagged not valid: see invalid_reasons)" if flagged else ""))
+    return 1 if missing else 0
 
 
 def batch_cmd(args: argparse.Namespace) -> int:

@@ -34,10 +34,8 @@ from haven_scenarios.tools.commands.common import add_ros_options, environment, 
 from haven_scenarios.tools.commands.studies import CONDITION_HELP
 from haven_scenarios.tools.supervisor import Exited, ProcessSpec, Supervisor, node_argv
 from haven_sim.common.events import EventKind
-from haven_sim.runtime.lockstep import LockstepParams
+from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
 from haven_viz.cues import CUES, Toggles
-
-LOCKSTEP_UNCAPPED = 1e6  # the lockstep clock's real-time factor cap when --rtf is not given
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -45,14 +43,24 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("scenario", nargs="?", default="hallway", help=f"a shipped scenario ({', '.join(scenario_names())}) or a YAML")
     run.add_argument("--participant", default="sim", help="participant id for the session (default: sim)")
     run.add_argument("--condition", nargs="+", default=["all"], metavar="CUE", help=CONDITION_HELP)
-    run.add_argument("--rtf", type=positive, default=None,
-                     help="real-time factor (default: 1 with a person; simulated participants run on the lockstep clock as fast as "
-                          "the machine allows, or at most this fast)")
-    run.add_argument("--free-running", action="store_true",
-                     help="simulated participants on the free-running clock too (machine load then changes what happens)")
+    run.add_argument(
+        "--rtf",
+        type=positive,
+        default=None,
+        help="real-time factor (default: 1 with a person; simulated participants run on the lockstep clock as fast as "
+        "the machine allows, or at most this fast)",
+    )
+    run.add_argument(
+        "--free-running", action="store_true", help="simulated participants on the free-running clock too (machine load then changes what happens)"
+    )
     run.add_argument("--seed", type=int, default=0)
-    run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN",
-                     help="these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`")
+    run.add_argument(
+        "--teleop",
+        nargs="*",
+        default=None,
+        metavar="HUMAN",
+        help="these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`",
+    )
     run.add_argument("--sessions", default="sessions", help="folder for session folders (default: ./sessions)")
     run.add_argument("--params-file", default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
     add_ros_options(run)
@@ -80,9 +88,9 @@ def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
     return scenario, toggles, load_suite_config(args.params_file)
 
 
-SESSION_PARAMS_HEADER = """Every node's parameters as run in this session (each node was started with this file).
-`haven rerun` on this folder runs the session again with them (using the world and scenario copies
-beside this file wherever the folder now is). Parameters are documented in haven_sim/config/haven.yaml."""
+SESSION_PARAMS_HEADER = """Every node's parameters as run in this session: each node was started with this file, in this
+folder (file names are relative to it, so the folder can move). `haven rerun` on this folder runs
+the session again with them. Parameters are documented in haven_sim/config/haven.yaml."""
 PARTICIPANTS = ("velocity_mux", "planner", "controller", "viz", "scenario")  # the nodes' names
 
 
@@ -106,13 +114,12 @@ class SessionPlan:
 
     @property
     def real_time_factor(self) -> float:
-        return self.rtf if self.rtf is not None else (LOCKSTEP_UNCAPPED if self.lockstep else 1.0)
+        return self.rtf if self.rtf is not None else (UNCAPPED_RTF if self.lockstep else 1.0)
 
     def config(self, folder: Path) -> SuiteConfig:
-        """Every node's parameters as run in the session `folder` (its own copies of the world and
-        the scenario): the file's, then what the scenario and the run fix."""
-        world, scenario_file = str((folder / WORLD_FILE).resolve()), str((folder / SCENARIO_FILE).resolve())
-        c = scenario_suite(replace(self.scenario, world_path=world, source=scenario_file), self.seed, self.toggles, self.base)
+        """Every node's parameters as run in a session folder (its own copies of the world and the
+        scenario, named relative to it): the file's, then what the scenario and the run fix."""
+        c = scenario_suite(replace(self.scenario, world_path=WORLD_FILE, source=SCENARIO_FILE), self.seed, self.toggles, self.base)
         sim = replace(c.sim, real_time_factor=self.real_time_factor)
         if self.lockstep:
             sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=("viz",), lockstep_wait_for=("recorder",))
@@ -123,15 +130,15 @@ class SessionPlan:
 
 
 def _specs(folder: Path, lockstep: bool) -> list[ProcessSpec]:
-    """The nodes, each reading the session's params.yaml (node sections there win over `-p`, so
-    the file holds everything); on the command line only which clock the participants read."""
-    pfile = str((folder / PARAMS_FILE).resolve())
+    """The nodes, run in the session folder, each reading its params.yaml (node sections there win
+    over `-p`, so the file holds everything); on the command line only which clock they read."""
     # On the lockstep clock the ticks carry the time: the participants need no /clock.
     stepped: dict[str, object] = {"use_sim_time": False} if lockstep else {}
-    suite = suite_specs({"mux": stepped, "planner": stepped, "controller": stepped, "viz": stepped}, pfile)
-    recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": str(folder.resolve())})
-    scenario_node = node_argv("haven_scenarios.nodes.scenario_node", {"use_sim_time": True, **stepped}, params_file=pfile)
-    return [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
+    suite = suite_specs({"mux": stepped, "planner": stepped, "controller": stepped, "viz": stepped}, PARAMS_FILE)
+    recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": "."})
+    scenario_node = node_argv("haven_scenarios.nodes.scenario_node", {"use_sim_time": True, **stepped}, params_file=PARAMS_FILE)
+    specs = [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
+    return [replace(spec, cwd=str(folder.resolve())) for spec in specs]
 
 
 def _wait_for_recorded_end(events: Path, timeout_s: float) -> None:
@@ -172,32 +179,59 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
     folder = new_session_dir(sessions, scenario.name, plan.participant)
     write_inputs(folder, scenario, render(plan.config(folder), header=SESSION_PARAMS_HEADER))
     info: dict[str, Any] = {
-        "participant": plan.participant, "condition": condition_name(plan.toggles), "cues": {c: getattr(plan.toggles, c) for c in CUES},
-        "seed": plan.seed, "scenario": scenario.name, "scenario_file": SCENARIO_FILE, "world_file": WORLD_FILE, "params_file": PARAMS_FILE,
-        "clock": "lockstep" if lockstep else "free-running", "real_time_factor": rtf,
+        "participant": plan.participant,
+        "condition": condition_name(plan.toggles),
+        "cues": {c: getattr(plan.toggles, c) for c in CUES},
+        "seed": plan.seed,
+        "scenario": scenario.name,
+        "scenario_file": SCENARIO_FILE,
+        "world_file": WORLD_FILE,
+        "params_file": PARAMS_FILE,
+        "clock": "lockstep" if lockstep else "free-running",
+        "real_time_factor": None if rtf >= UNCAPPED_RTF else rtf,
+        "humans": [h.id for h in scenario.world.humans],
         "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
-        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "versions": versions(), "git_commit": git_commit(), "rmw": rmw(),
-        "command": sys.argv, **plan.extra,
+        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
+        "versions": versions(),
+        "git_commit": git_commit(),
+        "rmw": rmw(),
+        "command": sys.argv,
+        **plan.extra,
     }
     write_json(folder / SESSION_FILE, info)
-    pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf != LOCKSTEP_UNCAPPED else "") if lockstep else f"{rtf:g}x real time"
-    print(f"haven: {scenario.name} trial, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
-          f"seed {plan.seed}, {pace} -> {folder}", flush=True)
+    pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf < UNCAPPED_RTF else "") if lockstep else f"{rtf:g}x real time"
+    print(
+        f"haven: {scenario.name} trial, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
+        f"seed {plan.seed}, {pace} -> {folder}",
+        flush=True,
+    )
     started = time.monotonic()
     limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
     exited = _supervise(args, _specs(folder, lockstep), folder, limit)
     wall = time.monotonic() - started
     metrics = _finish(folder, scenario, info, wall)
-    print(f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall:.0f} s wall): "
-          f"robot finished at {metrics.get('robot_time_to_finish_s')} s, closest approach {metrics.get('min_human_distance_m')} m, "
-          f"{metrics.get('waits')} wait(s), {metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)")
+    print(summary(metrics, wall))
     if not metrics["valid"]:
         print(f"haven: the recording is not complete: {'; '.join(metrics['invalid_reasons'])}", file=sys.stderr)
-    print(f"haven: session in {folder} (bag/, events.jsonl, metrics.json, session.json, scenario.yaml, world.yaml, params.yaml, trajectory.png)")
+    made = sorted(p.name + ("/" if p.is_dir() else "") for p in folder.iterdir())
+    print(f"haven: session in {folder} ({', '.join(made)})")
     if exited is not None and exited.name != "scenario":
         print(f"haven: {exited.name} exited with code {exited.code}; the trial was cut short", file=sys.stderr)
         return 1
     return 0 if metrics["end_reason"] != EndReason.INTERRUPTED else 1
+
+
+def summary(metrics: dict[str, Any], wall_s: float) -> str:
+    """The one line `haven run` prints about a trial's outcome."""
+    if metrics["duration_s"] is None:
+        return f"haven: {metrics['end_reason']} before the trial started ({wall_s:.0f} s wall)"
+    finished = metrics.get("robot_time_to_finish_s")
+    robot = f"robot finished at {finished} s" if finished is not None else "robot did not finish"
+    return (
+        f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall_s:.0f} s wall): {robot}, "
+        f"closest approach {metrics.get('min_human_distance_m')} m, {metrics.get('waits')} wait(s), "
+        f"{metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)"
+    )
 
 
 def run_cmd(args: argparse.Namespace) -> int:
@@ -213,15 +247,15 @@ def rerun_cmd(args: argparse.Namespace) -> int:
     """The session again, from its own files: scenario, world, parameters, seed, condition."""
     folder: Path = args.session
     info = session_info(folder)
-    scenario = session_scenario(folder)
+    scenario, problem = session_scenario(folder)
     if scenario is None or not info:
-        return fail(f"{folder}: not a session folder with session.json, scenario.yaml and world.yaml")
+        return fail(f"{folder}: cannot run it again: {problem or 'no readable session.json'}")
     free = info.get("clock") == "free-running"
     try:
         base = load_suite_config(folder / PARAMS_FILE if (folder / PARAMS_FILE).exists() else None)
         toggles = Toggles(**{c: bool(v) for c, v in dict(info.get("cues", {})).items() if c in CUES})
         seed = int(info.get("seed", 0))
-        rtf = args.rtf if args.rtf is not None else (float(info.get("real_time_factor", 1.0)) if free else None)
+        rtf = args.rtf if args.rtf is not None else (float(info.get("real_time_factor") or 1.0) if free else None)
     except (TypeError, ValueError) as e:
         return fail(f"{folder / SESSION_FILE}: {e}")
     plan = SessionPlan(scenario, toggles, seed, str(info.get("participant", "sim")), base, rtf, free, {"rerun_of": folder.name})
