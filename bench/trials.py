@@ -57,7 +57,9 @@ def ros(name: str, rtf: float | None) -> dict[str, Any]:
             stderr=subprocess.DEVNULL,
         )
         seen: dict[str, tuple[float, float]] = {}  # event -> (sim stamp, wall time first seen)
-        while proc.poll() is None:
+        running = True
+        while running:
+            running = proc.poll() is None  # (one more look after it ended)
             for events in Path(tmp).glob("*/events.jsonl"):
                 for line in events.read_text().splitlines():
                     e = Event.from_json(line)

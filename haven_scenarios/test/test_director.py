@@ -93,3 +93,25 @@ def test_a_trial_stopped_from_outside_ends_interrupted_at_the_last_tick_once():
     (end,) = by_topic(d.interrupt(), topics.EVENTS)
     assert (end.kind, end.stamp, end["reason"]) == (EventKind.TRIAL_END, 0.2, EndReason.INTERRUPTED)
     assert d.interrupt() == [] and d.tick(0.3) == []
+
+
+def test_a_teleoperated_trial_ends_when_the_person_is_done_too():
+    """Defect: a teleop trial ended "completed" as soon as the robot finished, whatever the
+    person had done (the end rule counted simulated participants only)."""
+    scenario = load_scenario("hallway")
+    scenario = replace(scenario, humans=[replace(h, model="teleop") for h in scenario.humans])
+    d = TrialDirector(scenario)
+    ready(d)
+    d.tick(0.0)  # the start
+    t, ends = 0.0, []
+    for room in scenario.robot_route:  # the robot drives its whole route; the person stands still
+        t += 1.0
+        d.on_odom(RobotState(Pose2D(*scenario.world.room(room).centre)), t)
+        ends += [e for e in by_topic(d.tick(t), topics.EVENTS) if e.kind is EventKind.TRIAL_END]
+    assert d.mission is not None and d.mission.phase.name == "DONE" and ends == []
+    for room in scenario.humans[0].route:  # now the person walks theirs
+        t += 1.0
+        d.on_humans({"h1": Pose2D(*scenario.world.room(room).centre)}, t)
+        events = by_topic(d.tick(t), topics.EVENTS)
+    assert [e.kind for e in events][-2:] == [EventKind.TASK_DONE, EventKind.TRIAL_END]
+    assert events[-2]["by"] == "h1" and events[-1]["reason"] == EndReason.COMPLETED

@@ -1,4 +1,6 @@
 from haven_scenarios.tools.keys import KeyMapper
+from haven_scenarios.tools.teleop_status import announce
+from haven_sim.common.events import EventKind, event
 from haven_sim.common.geometry import Twist2D
 
 
@@ -16,3 +18,10 @@ def test_held_keys_combine_and_release_after_the_auto_repeat_stops():
     assert k.command(1.1) == Twist2D(-1.0, 1.0, 0.0)
     k.press(" ", 1.2)
     assert k.command(1.2) == Twist2D()
+
+
+def test_a_teleoperating_participant_is_told_their_progress_and_the_end():
+    assert announce(event(EventKind.GEM_COLLECTED, 3.0, "rules", gem="hg2", by="h1"), "h1") == "gem hg2 collected"
+    assert announce(event(EventKind.GEM_COLLECTED, 3.0, "rules", gem="hg3", by="h2"), "h1") is None  # someone else's
+    assert announce(event(EventKind.TASK_DONE, 9.0, "scenario", by="h1"), "h1") == "your task is done: wait for the trial to end"
+    assert announce(event(EventKind.TRIAL_END, 9.5, "scenario", reason="completed"), "h1") == "trial over (completed): thank you"

@@ -42,6 +42,13 @@ def test_condition_switches_cues_and_their_exposure():
         parse_condition(["sparkles"])
 
 
+def test_the_hallway_shows_the_turn_signals_only_as_hallway_did_unless_a_run_says_otherwise():
+    hallway = load_scenario("hallway")
+    assert hallway.condition == ("turn_signals",)
+    assert parse_condition(hallway.condition) == Toggles(False, True, False, False)
+    assert load_scenario("shared_room").condition == ("all",)
+
+
 def test_batch_writes_one_csv_row_per_trial(tmp_path):
     out = tmp_path / "b.csv"
     rows = run_batch(load_scenario("shared_room"), 3, 10, Toggles(), out)
@@ -61,6 +68,9 @@ def test_bad_scenario_files_get_one_line(tmp_path):
         load_scenario(p)
     with pytest.raises(ScenarioError, match="no such scenario"):
         load_scenario("atlantis")
+    p.write_text("name: x\nworld: hallway\nkind: hallway\nrobot: {route: [B]}\ncondition: [sparkles]\n")
+    with pytest.raises(ScenarioError, match=r"s.yaml: condition\[0\]: is no cue"):
+        load_scenario(p)
 
 
 def test_several_participants_with_different_models(tmp_path):

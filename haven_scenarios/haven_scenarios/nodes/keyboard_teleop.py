@@ -1,6 +1,7 @@
 """Drive a human avatar from this terminal: keys -> geometry_msgs/Twist on /humans/<human>/cmd_vel.
 
-Works against `haven run --teleop` (or any running suite); the terminal is restored on exit.
+Works against `haven run --teleop` (or any running suite); the terminal is restored on exit. The
+participant is told their progress from the study log, and the client ends with the trial.
 """
 
 from __future__ import annotations
@@ -13,8 +14,11 @@ import tty
 
 from geometry_msgs.msg import Twist
 from rclpy.node import Node
+from std_msgs.msg import String
 
 from haven_scenarios.tools.keys import HELP, KeyMapper
+from haven_scenarios.tools.teleop_status import announce
+from haven_sim.common.events import EventError, EventKind
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_sim.nodes.runner import run_node
@@ -24,6 +28,8 @@ class KeyboardTeleop(Node):
     def __init__(self) -> None:
         super().__init__("keyboard_teleop")
         human = self.declare_parameter("human", "h1").value
+        self.human = str(human)
+        self.over = False
         self.keys = KeyMapper(speed_mps=self.declare_parameter("speed_mps", 1.0).value)
         self.pub = self.create_publisher(Twist, f"humans/{human}/cmd_vel", qos.RELIABLE)
         if not sys.stdin.isatty():
@@ -31,9 +37,22 @@ class KeyboardTeleop(Node):
         self._saved = termios.tcgetattr(sys.stdin)
         tty.setcbreak(sys.stdin.fileno())
         print(f"teleop {human}: {HELP}", flush=True)
+        self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
         self.create_timer(0.05, self._tick)
 
+    def _on_event(self, msg: String) -> None:
+        try:
+            e = conv.event_from_msg(msg)
+        except EventError:
+            return
+        line = announce(e, self.human)
+        if line is not None:
+            print(f"\r{line}", flush=True)
+        self.over = self.over or e.kind is EventKind.TRIAL_END
+
     def _tick(self) -> None:
+        if self.over:
+            raise SystemExit(0)
         now = time.monotonic()
         while select.select([sys.stdin], [], [], 0.0)[0]:
             key = sys.stdin.read(1)

@@ -12,6 +12,7 @@ import importlib
 from collections.abc import Callable
 from typing import Any
 
+from rclpy.callback_groups import CallbackGroup
 from rclpy.clock import Clock, ClockType
 from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.node import Node
@@ -19,6 +20,7 @@ from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPo
 from rclpy.subscription import Subscription
 
 from haven_sim.nodes import wire
+from haven_sim.nodes.lockstep import take_all
 from haven_viz.nodes.conversions import viz_specs
 
 
@@ -31,6 +33,23 @@ def known_topics() -> list[tuple[str, str, QoSProfile]]:
     """The suite's own topics from the topic table (type name, the QoS their publishers offer)."""
     table = {**wire.specs(), **viz_specs()}
     return [("/" + topic.lstrip("/"), type_name(spec.msg_type), spec.pub_qos) for topic, spec in table.items()]
+
+
+DRAIN_PERIOD_S = 0.01  # batched readers are emptied this often (wall time)
+
+
+class DrainedReaders(CallbackGroup):
+    """Readers the executor never calls back: their owner empties them in batches (`drain`), which
+    costs a fraction of a callback per message. Their event handlers (message lost) still run."""
+
+    def can_execute(self, entity: Any) -> bool:
+        return not isinstance(entity, Subscription)
+
+    def beginning_execution(self, entity: Any) -> bool:
+        return not isinstance(entity, Subscription)
+
+    def ending_execution(self, entity: Any) -> None:
+        pass
 
 
 IGNORED = ("/rosout", "/parameter_events", "/haven/lockstep/")  # logs, parameter changes, the lockstep clock's own traffic
@@ -68,12 +87,16 @@ class RawTopics:
         on_message: OnMessage,
         topics: list[str] | None = None,
         keep_all: bool = False,
-        on_lost: Callable[[str, int], None] | None = None,
+        on_lost: Callable[[str, int, bool], None] | None = None,
+        batched: bool = False,
     ) -> None:
         """`topics`: only these (all of the graph when None); `keep_all`: readers that drop nothing
         (a recorder's), else the depth of the topic's profile; `on_lost(topic, n)`: DDS reports
-        that n messages of a topic never reached the reader."""
+        that n messages of a topic never reached the reader (and whether it is a best-effort topic); `batched`: messages are handed over
+        every DRAIN_PERIOD_S instead of one callback each (a recorder at 10x real time gets
+        thousands a second)."""
         self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = node, add, on_message, topics, keep_all, on_lost
+        self.group = DrainedReaders() if batched else None
         self.handled: set[str] = set()
         self.subscriptions: dict[str, tuple[str, Subscription]] = {}  # topic -> (type name, subscription)
         for topic, msgtype, profile in known_topics():
@@ -81,7 +104,15 @@ class RawTopics:
                 self._subscribe(topic, msgtype, profile)
         # Wall clock: topics must be found even before /clock runs.
         node.create_timer(1.0, self.discover, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        if batched:
+            node.create_timer(DRAIN_PERIOD_S, self.drain, clock=Clock(clock_type=ClockType.STEADY_TIME))
         self.discover()
+
+    def drain(self) -> None:
+        """Hand over every message the readers hold (in batched mode; at shutdown in any)."""
+        for topic, (msgtype, sub) in list(self.subscriptions.items()):
+            for data in take_all(sub):
+                self.on_message(topic, msgtype, data)
 
     def _wanted(self, topic: str) -> bool:
         return topic not in IGNORED and not topic.startswith(IGNORED) and (self.only is None or topic in self.only)
@@ -105,6 +136,9 @@ class RawTopics:
         events = None
         if self.on_lost is not None:
             on_lost = self.on_lost
-            events = SubscriptionEventCallbacks(message_lost=lambda info: on_lost(topic, int(info.total_count_change)))  # type: ignore[attr-defined]
-        sub = self.node.create_subscription(cls, topic, functools.partial(self.on_message, topic, msgtype), profile, raw=True, event_callbacks=events)
+            best_effort = profile.reliability == ReliabilityPolicy.BEST_EFFORT
+            events = SubscriptionEventCallbacks(message_lost=lambda info: on_lost(topic, int(info.total_count_change), best_effort))  # type: ignore[attr-defined]
+        sub = self.node.create_subscription(
+            cls, topic, functools.partial(self.on_message, topic, msgtype), profile, raw=True, event_callbacks=events, callback_group=self.group
+        )
         self.subscriptions[topic] = (msgtype, sub)

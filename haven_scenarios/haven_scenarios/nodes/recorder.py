@@ -23,7 +23,6 @@ from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.record.bag import BagWriter
 from haven_sim.common import topics
 from haven_sim.nodes import conversions as conv
-from haven_sim.nodes.lockstep import take_all
 from haven_sim.nodes.runner import run_node
 
 EVENTS = "/" + topics.EVENTS
@@ -58,11 +57,18 @@ class Recorder(Node):
         self.bag.__enter__()
         self.events = (folder / "events.jsonl").open("a", encoding="utf-8")
         self.lost: dict[str, int] = {}
-        self.topics = RawTopics(self, lambda topic, msgtype, latched: True, self._on_message, keep_all=True, on_lost=self._on_lost)
+        self.topics = RawTopics(self, lambda topic, msgtype, latched: True, self._on_message, keep_all=True, on_lost=self._on_lost, batched=True)
 
-    def _on_lost(self, topic: str, n: int) -> None:
+    def _on_lost(self, topic: str, n: int, best_effort: bool) -> None:
+        """Counted for the bag's metadata; a warning unless the publisher sends best effort (a
+        laser scan), where dropping what a reader cannot take is the contract."""
         self.lost[topic] = self.lost.get(topic, 0) + n
-        self.get_logger().warning(f"{topic}: {n} message(s) lost before the recorder could read them", throttle_duration_sec=5.0)
+        # (rclpy refuses one call site logging at two severities: two calls)
+        text = f"{topic}: {n} message(s) lost before the recorder could read them"
+        if best_effort:
+            self.get_logger().info(text, throttle_duration_sec=5.0)
+        else:
+            self.get_logger().warning(text, throttle_duration_sec=5.0)
 
     def _on_message(self, topic: str, msgtype: str, data: bytes) -> None:
         if not self.bag.has_topic(topic):
@@ -81,9 +87,7 @@ class Recorder(Node):
             self.events.flush()
 
     def destroy_node(self) -> None:
-        for topic, (msgtype, sub) in self.topics.subscriptions.items():
-            for data in take_all(sub):
-                self._on_message(topic, msgtype, data)
+        self.topics.drain()
         self.bag.close(lost=self.lost)
         self.events.close()
         super().destroy_node()

@@ -74,7 +74,7 @@ class Trial:
     def __init__(self, scenario: Scenario, seed: int = 0, toggles: Toggles | None = None, suite: SuiteConfig | None = None) -> None:
         self.scenario = scenario
         self.seed = seed
-        self.toggles = toggles or Toggles()
+        self.toggles = toggles if toggles is not None else parse_condition(scenario.condition)
         c = scenario_suite(scenario, seed, self.toggles, suite)
         self.sim = SimulatorComponent(scenario.world, c.sim)
         self.director = TrialDirector(scenario, seed, c.scenario.director.rate_hz)

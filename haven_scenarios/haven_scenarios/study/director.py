@@ -269,12 +269,15 @@ class TrialDirector:
                 out += self._mission_messages(mission.target_done(now, e["gem"], robot, level), now)
             elif e.kind is EventKind.ROOM_REACHED and e["by"] == "robot" and mission.current is not None and e["room"] == mission.current.id:
                 out += self._mission_messages(mission.target_done(now, e["room"], robot, level), now)
-        for hid in self.participants:
-            if hid not in self.humans_done and self._human_finished(hid):
+        # Every person's task counts, simulated or teleoperated: a trial with a person ends when
+        # they are done too (their TASK_DONE tells their client).
+        people = {h.id for h in self.scenario.humans}
+        for hid in sorted(people - self.humans_done):
+            if self._human_finished(hid):
                 self.humans_done.add(hid)
                 out.append(self._event(EventKind.TASK_DONE, now, by=hid))
         out += self._charging(now, mission, robot, level)
-        all_done = mission.phase is Phase.DONE and self.humans_done >= set(self.participants)
+        all_done = mission.phase is Phase.DONE and self.humans_done >= people
         elapsed = now - (self.start_time if self.start_time is not None else now)
         stranded = self.empty_since is not None and now - self.empty_since > STRANDED_S
         self.ended = EndReason.BATTERY_EMPTY if stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)

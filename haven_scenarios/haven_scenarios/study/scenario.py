@@ -6,6 +6,7 @@ world: hallway                 # a world shipped with haven_scenarios or haven_s
 kind: hallway                  # hallway (room centres in order) | retrieval (gems)
 timeout_s: 240
 end_on_contact: false
+condition: [turn_signals]      # the cues shown unless the run says (--condition): all | none | cue names
 robot:
   route: [B, C, D, A]          # hallway: room centres in order
   order: nearest               # retrieval: nearest | random (seeded) gem order
@@ -30,6 +31,7 @@ import yaml
 
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_file import load_world
+from haven_viz.cues import CUES
 
 KINDS = ("hallway", "retrieval")
 MODELS = ("walker", "blocker", "yielder", "teleop")
@@ -71,6 +73,7 @@ class Scenario:
     humans: tuple[HumanTask, ...] = ()
     dwell_time_s: float = 3.0
     end_on_contact: bool = False
+    condition: tuple[str, ...] = ("all",)  # the cues shown unless a run picks a condition
     source: str = ""
 
 
@@ -115,7 +118,7 @@ def _parse(data: Any, source: str) -> Scenario:
 class _ScenarioParser:
     """Reads the raw YAML tree; every error names the file and the key in one line."""
 
-    TOP = ("name", "world", "kind", "timeout_s", "end_on_contact", "robot", "humans", "dwell_time_s")
+    TOP = ("name", "world", "kind", "timeout_s", "end_on_contact", "condition", "robot", "humans", "dwell_time_s")
 
     def __init__(self, source: str) -> None:
         self.source = source
@@ -191,8 +194,18 @@ class _ScenarioParser:
             humans=self.humans(d.get("humans"), world),
             dwell_time_s=self.positive(d.get("dwell_time_s", 3.0), "dwell_time_s"),
             end_on_contact=end_on_contact,
+            condition=self.condition(d.get("condition", ["all"])),
             source=self.source,
         )
+
+    def condition(self, value: Any) -> tuple[str, ...]:
+        known = (*CUES, "all", "none")
+        if not isinstance(value, list) or not value:
+            raise self.fail("condition", f"must be a list of cue names (or [all] / [none]), got {_short(value)}")
+        for i, name in enumerate(value):
+            if name not in known:
+                raise self.fail(f"condition[{i}]", f"is no cue (known: {', '.join(known)}), got {_short(name)}")
+        return tuple(value)
 
     def battery(self, value: Any, world: World) -> BatteryPlan:
         b = self.mapping(value, "robot.battery", ("mode", "capacity_m", "charge_until", "safety_factor"))

@@ -17,7 +17,7 @@ LATCHED = QoSProfile(
 )
 # Commands and state streams: /cmd_vel*, /odom, /battery_state, /humans, /goal_pose.
 RELIABLE = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
-# Publishers of streams (/odom, /humans, /battery_state, /clock, /tf, the cmd_vel topics): reliable
+# Publishers of streams (/odom, /humans, /battery_state, /clock, /tf, cmd_vel, AR markers): reliable
 # like RELIABLE, with a deep history so a reader that falls behind for a moment (a recorder on a
 # busy machine at 10x real time: /odom comes 500 times a second) still gets every message re-sent.
 # Depth does not affect QoS matching: any reliable or best-effort reader matches.

@@ -14,7 +14,7 @@ from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands.common import fail
 
-CONDITION_HELP = "cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator"
+CONDITION_HELP = "cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator (default: the scenario's condition)"
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -26,7 +26,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     batch.add_argument("scenario", help=f"a shipped scenario ({', '.join(scenario_names())}) or a scenario YAML")
     batch.add_argument("--trials", type=int, default=10)
     batch.add_argument("--seed", type=int, default=0)
-    batch.add_argument("--condition", nargs="+", default=["all"], metavar="CUE", help=CONDITION_HELP)
+    batch.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
     batch.add_argument("--out", default=None, help="CSV path (default: sessions/batch_<scenario>_<time>.csv)")
     batch.add_argument("--params-file", default=None, help="ROS parameter YAML (the same file `haven run` takes)")
     batch.set_defaults(func=batch_cmd)
@@ -49,7 +49,7 @@ def report_cmd(args: argparse.Namespace) -> int:
 def batch_cmd(args: argparse.Namespace) -> int:
     try:
         scenario = load_scenario(args.scenario)
-        toggles = parse_condition(args.condition)
+        toggles = parse_condition(args.condition or scenario.condition)
         if args.trials < 1:
             raise ValueError(f"--trials must be at least 1, got {args.trials}")
         if any(h.model == "teleop" for h in scenario.humans):

@@ -42,7 +42,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run = sub.add_parser("run", help="run one recorded trial of a scenario (default: hallway, simulated participant)")
     run.add_argument("scenario", nargs="?", default="hallway", help=f"a shipped scenario ({', '.join(scenario_names())}) or a YAML")
     run.add_argument("--participant", default="sim", help="participant id for the session (default: sim)")
-    run.add_argument("--condition", nargs="+", default=["all"], metavar="CUE", help=CONDITION_HELP)
+    run.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
     run.add_argument(
         "--rtf",
         type=positive,
@@ -78,7 +78,7 @@ def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
     parameter file's configuration; raises ScenarioError or ValueError (including for a bad
     parameter file) before anything starts."""
     scenario = load_scenario(args.scenario)
-    toggles = parse_condition(args.condition)
+    toggles = parse_condition(args.condition or scenario.condition)
     if args.teleop is not None:
         ids = args.teleop or [h.id for h in scenario.humans]
         unknown = [i for i in ids if i not in {h.id for h in scenario.humans}]
