@@ -35,7 +35,7 @@ def test_thought_says_what_the_robot_does():
 
 def test_on_arrival_goes_to_charge_first_then_resumes_the_same_target():
     battery = BatteryPlan(mode="on_arrival", capacity_m=25.0, charge_until=1.0, safety_factor=1.2)
-    m = Mission([T[0]], straight, "fixed", battery, BASE)
+    m = Mission([T[0], T[2]], straight, "fixed", battery, BASE)  # a is not the last: the way back counts
     robot = Pose2D(3.0, 0.0)
     out = m.start(0.0, robot, level=0.6)  # 15 m left; needs 1.2 x (7 + 10) = 20.4 m
     assert m.phase is Phase.TO_BASE and out.goal[:2] == BASE and out.thought == "Low battery: going to charge"
@@ -50,22 +50,46 @@ def test_on_arrival_goes_to_charge_first_then_resumes_the_same_target():
 
 
 def test_continuous_abandons_the_target_when_range_runs_low_and_resumes_it():
-    battery = BatteryPlan(mode="continuous", capacity_m=20.0, safety_factor=1.5)
-    m = Mission([T[0]], straight, "fixed", battery, BASE)
-    m.start(0.0, Pose2D(0, 0), 1.0)
-    assert m.tick(0.0, Pose2D(4.0, 0.0), 0.5).goal is None  # 10 m range > 1.5 x 4 m home
-    out = m.tick(0.0, Pose2D(6.0, 0.0), 0.45)  # 9 m range <= 1.5 x 6 m home
+    battery = BatteryPlan(mode="continuous", capacity_m=32.0, safety_factor=1.5)
+    m = Mission([T[0], T[2]], straight, "fixed", battery, BASE)  # (towards the last target no way back is needed)
+    m.start(0.0, Pose2D(0, 0), 1.0)  # leaves: 1.5 x (10 + 10) m <= 32 m
+    assert m.tick(0.0, Pose2D(4.0, 0.0), 0.5).goal is None  # 16 m range > 1.5 x 4 m home
+    out = m.tick(0.0, Pose2D(6.0, 0.0), 0.28)  # 8.96 m range <= 1.5 x 6 m home
     assert out.goal[:2] == BASE and m.phase is Phase.TO_BASE
     assert out.events[0]["abandoned"] == "a"
     m.tick(0.0, Pose2D(0, 0), 0.44, at_base=True)
     assert m.tick(0.0, Pose2D(0, 0), 1.0).goal[:2] == (10.0, 0.0)
 
 
-def test_a_trip_longer_than_a_full_battery_does_not_loop_on_the_charger():
-    battery = BatteryPlan(mode="on_arrival", capacity_m=5.0)
+def test_a_target_no_charged_battery_can_serve_is_skipped_not_driven_to_on_a_flat_battery():
+    """Defect: "not even a full charge covers it" was judged from where the robot stood, and the
+    robot then went anyway and died on the way (11 of 20 on_arrival / random trials)."""
+    for mode in ("on_arrival", "continuous"):
+        m = Mission([T[0], T[1]], straight, "fixed", BatteryPlan(mode=mode, capacity_m=10.0), BASE)
+        out = m.start(0.0, Pose2D(0, 0), 1.0)  # a: 1.2 x 10 m from the base, one way, > 10 m; b: 4.8 m
+        insufficient = out.events[0]
+        assert insufficient.kind is EventKind.BATTERY_INSUFFICIENT and insufficient["skipped"] is True
+        assert (insufficient["target"], insufficient["need_m"], insufficient["has_m"]) == ("a", 12.0, 10.0)
+        assert m.phase is Phase.GOING and out.goal[:2] == (2.0, 0.0)
+        done = m.target_done(0.0, "b", Pose2D(2, 0), 0.8)
+        assert m.phase is Phase.DONE and done.events[-1]["skipped"] == ["a"]
+
+
+def test_a_target_served_one_way_only_is_kept_for_last():
+    m = Mission([T[0], T[1]], straight, "fixed", BatteryPlan(mode="on_arrival", capacity_m=15.0), BASE)
+    out = m.start(0.0, Pose2D(0, 0), 1.0)  # a and back: 1.2 x 20 m > 15 m; a alone: 12 m
+    assert out.goal[:2] == (2.0, 0.0) and "a" in m.last_only
+    after = m.target_done(0.0, "b", Pose2D(2, 0), 0.8)  # a last: 1.2 x 8 m <= 12 m left, no way back needed
+    assert after.goal[:2] == (10.0, 0.0) and m.phase is Phase.GOING
+
+
+def test_a_far_last_leg_charges_first_when_a_charged_battery_covers_it_from_the_base():
+    battery = BatteryPlan(mode="on_arrival", capacity_m=25.0)
     m = Mission([T[0]], straight, "fixed", battery, BASE)
-    out = m.start(0.0, Pose2D(0, 0), 1.0)
-    assert m.phase is Phase.GOING and out.events[0].kind is EventKind.BATTERY_INSUFFICIENT
+    out = m.start(0.0, Pose2D(-8.0, 0.0), 0.8)  # from here 1.2 x 18 m > 20 m left; from the base 12 m
+    assert m.phase is Phase.TO_BASE and out.events[0].kind is EventKind.CHARGE_TRIP
+    m.tick(0.0, Pose2D(0, 0), 0.6, at_base=True)
+    assert m.tick(0.0, Pose2D(0, 0), 1.0).goal[:2] == (10.0, 0.0)
 
 
 def test_done_when_every_target_is_done():

@@ -62,3 +62,11 @@ def test_gem_routes_are_seeded_and_visit_every_stop():
     a, b = shuffled_nearest(stops, (0.0, 0.0), 1), shuffled_nearest(stops, (0.0, 0.0), 1)
     assert a == b and sorted(s.x for s in a) == [2.0, 4.0, 6.0, 8.0]
     assert len({tuple(s.x for s in shuffled_nearest(stops, (5.0, 0.0), seed)) for seed in range(20)}) > 1
+
+
+def test_a_yielder_facing_a_robot_that_waits_for_them_walks_on_past_it():
+    """Defect: the yielder stood aside for a robot that waited for them in turn, for ever."""
+    robot = Pose2D(5.0, 1.0, math.pi)  # stands still in the person's way, facing them
+    person, poses = walk("yielder", [Stop(9.0, 1.0)], 30.0, robot_at=robot)
+    assert person.done
+    assert min(math.hypot(p.x - robot.x, p.y - robot.y) for p in poses) > 0.4  # past it, keeping clear

@@ -8,11 +8,14 @@ planned path lengths instead of straight lines:
   * `on_arrival`: before leaving for a target, if path(robot -> target) + path(target -> base),
     times `safety_factor` (planned paths leave out turns and detours; HAVEN used 1), exceeds the
     remaining range, go and charge first;
-  * `continuous`: at every tick, when the remaining range falls to `safety_factor` x path(robot ->
-    base), abandon the target and go and charge.
+  * `continuous`: the same check before leaving, and at every tick, when the remaining range falls
+    to `safety_factor` x path(robot -> base), abandon the target and go and charge.
 
 Charging lasts until the level reaches `charge_until`; then the remaining targets resume, the
-abandoned one first. (The original wiped its target list on a detour and never charged.)
+abandoned one first. A target that a battery charged to `charge_until` can serve from the base one
+way only is kept for last (the mission ends there); one it cannot reach from the base at all is
+skipped with a `battery_insufficient` event; so no mode strands the robot or sends it back and
+forth for ever. (The original wiped its target list on a detour and never charged.)
 """
 
 from __future__ import annotations
@@ -29,6 +32,10 @@ from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
 
 PathLength = Callable[[Point, Point], float]  # planned length, math.inf when unreachable
+
+
+def _m(x: float) -> float | None:
+    return round(x, 2) if math.isfinite(x) else None  # (JSON has no inf)
 
 
 @dataclass(frozen=True)
@@ -82,6 +89,8 @@ class Mission:
         self.done_ids: list[str] = []
         self.thought = ""
         self.charge_trips = 0
+        self.skipped: list[str] = []  # targets no charged battery can reach from the base
+        self.last_only: set[str] = set()  # targets a charged battery serves one way only: kept for last
         self._charge_level, self._charge_ticks = 0.0, 0  # charging progress, to notice a stall
         self._now = 0.0  # the time of the call being answered (stamps its events)
 
@@ -93,11 +102,13 @@ class Mission:
         return level * self.battery.capacity_m
 
     def _pick(self, robot: Pose2D) -> Target | None:
-        if not self.pending:
+        """The next target by the order; targets kept for last come after every other."""
+        candidates = [t for t in self.pending if t.id not in self.last_only] or self.pending
+        if not candidates:
             return None
         if self.order == "nearest":
-            return min(self.pending, key=lambda t: self.path_length((robot.x, robot.y), t.xy))
-        return self.pending[0]
+            return min(candidates, key=lambda t: self.path_length((robot.x, robot.y), t.xy))
+        return candidates[0]
 
     def _say(self, out: MissionOutput, text: str) -> None:
         if text != self.thought:
@@ -119,23 +130,43 @@ class Mission:
         self._event(out, EventKind.CHARGE_TRIP, reason=reason, abandoned=self.current.id if self.current else None)
 
     def _next(self, out: MissionOutput, robot: Pose2D, level: float) -> None:
-        target = self.current if self.current is not None else self._pick(robot)
-        if target is None:
-            self.phase, self.current = Phase.DONE, None
-            self._say(out, "All done")
-            self._event(out, EventKind.TASK_DONE, by="robot")
-            return
-        if self.battery.mode == "on_arrival" and self.base is not None:
-            # Planned lengths leave out turns, arcs and detours: keep `safety_factor` in hand.
-            need = self.battery.safety_factor * (self.path_length((robot.x, robot.y), target.xy) + self.path_length(target.xy, self.base))
-            if need > self._range(1.0) and level >= self.battery.charge_until - 1e-6:
-                # Not even a full charge covers it: charging again would loop forever, so go.
-                self._event(out, EventKind.BATTERY_INSUFFICIENT, target=target.id, need_m=round(need, 2))
-            elif need > self._range(level):
-                self.current = target
-                self._to_base(out, f"needs {need:.1f} m, has {self._range(level):.1f} m")
+        """The next target, or the base first when the range left does not cover it.
+
+        In both battery modes the robot never leaves for a target it cannot reach and, unless it
+        is the last one, come back from to the base (planned lengths times `safety_factor`, which
+        keeps turns, arcs and detours in hand). A target that a charged battery (`charge_until`)
+        can serve from the base only one way is kept for last; one it cannot reach at all from the
+        base is skipped, with the reason, rather than driven to on a flat battery."""
+        while True:
+            target = self.current if self.current is not None else self._pick(robot)
+            if target is None:
+                self.phase, self.current = Phase.DONE, None
+                self._say(out, "All done")
+                self._event(out, EventKind.TASK_DONE, by="robot", skipped=list(self.skipped))
                 return
-        self._go(out, target)
+            if self.battery.mode != "off" and self.base is not None:
+                sf, full = self.battery.safety_factor, self._range(self.battery.charge_until)
+                last = [t.id for t in self.pending] == [target.id]  # the mission ends there
+                there = self.path_length(self.base, target.xy)
+                back = self.path_length(target.xy, self.base)
+                if sf * there > full:
+                    self._event(out, EventKind.BATTERY_INSUFFICIENT, target=target.id, need_m=_m(sf * there), has_m=_m(full), skipped=True)
+                    self.pending = [t for t in self.pending if t.id != target.id]
+                    self.skipped.append(target.id)
+                    self.current = None
+                    continue
+                if sf * (there + back) > full and not last and target.id not in self.last_only:
+                    self.last_only.add(target.id)  # only as the last target: there is no coming back
+                    self.current = None
+                    continue
+                home = 0.0 if last else self.path_length(target.xy, self.base)
+                need = sf * (self.path_length((robot.x, robot.y), target.xy) + home)
+                if need > self._range(level):
+                    self.current = target
+                    self._to_base(out, f"needs {need:.1f} m, has {self._range(level):.1f} m")
+                    return
+            self._go(out, target)
+            return
 
     # -- inputs ----------------------------------------------------------------------------------
     def start(self, now: float, robot: Pose2D, level: float = 1.0) -> MissionOutput:
@@ -189,7 +220,8 @@ class Mission:
                 self._charge_ticks += 1
                 self._say(out, f"Charging: {round(100 * level)} %")
             return out
-        if self.phase is Phase.GOING and p.mode == "continuous" and self.base is not None:
+        last = self.current is not None and [t.id for t in self.pending] == [self.current.id]  # (checked one way on leaving)
+        if self.phase is Phase.GOING and p.mode == "continuous" and self.base is not None and not last:
             home = self.path_length((robot.x, robot.y), self.base)
             if self._range(level) <= p.safety_factor * home:
                 self._to_base(out, f"range {self._range(level):.1f} m <= {p.safety_factor:g} x {home:.1f} m home")

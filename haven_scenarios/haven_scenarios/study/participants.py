@@ -143,54 +143,82 @@ class Walker:
 
 
 class Blocker(Walker):
-    """Steps onto the robot's projected path `ahead_m` in front of the robot, stands `block_s`,
-    then goes about its task."""
+    """Walks (along a planned path, round walls) onto the robot's projected path `ahead_m` in front
+    of the robot, stands `block_s`, then goes about its task; gives the block up if the spot
+    cannot be reached within `give_up_s`."""
 
-    def __init__(self, *args: object, ahead_m: float = 3.0, block_s: float = 8.0, **kwargs: object) -> None:
+    def __init__(self, *args: object, ahead_m: float = 3.0, block_s: float = 8.0, give_up_s: float = 30.0, **kwargs: object) -> None:
         super().__init__(*args, **kwargs)  # type: ignore[arg-type]
-        self.ahead_m, self.block_s = ahead_m, block_s
+        self.ahead_m, self.block_s, self.give_up_s = ahead_m, block_s, give_up_s
         self._spot: Point | None = None
+        self._route: list[Point] = []  # planned waypoints to the spot
+        self._spot_since = 0.0
         self._blocking_since: float | None = None
         self.blocked = False
+
+    def _choose_spot(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> None:
+        walked = 0.0
+        for a, b in zip(robot_path, robot_path[1:]):
+            walked += math.hypot(b.x - a.x, b.y - a.y)
+            if walked >= self.ahead_m and math.hypot(b.x - robot.x, b.y - robot.y) >= self.ahead_m * 0.8:
+                try:
+                    self._route = self.planner.plan((me.x, me.y), (b.x, b.y)).points[1:]
+                except PlanningError:
+                    return
+                self._spot, self._spot_since = (b.x, b.y), now
+                return
+
+    def _give_up(self) -> None:
+        self.blocked, self._waypoints = True, []
 
     def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
         if self.blocked:
             return self._keep_clear(me, robot, self._task(now, me))
         if self._spot is None and len(robot_path) >= 2:
-            walked = 0.0
-            for a, b in zip(robot_path, robot_path[1:]):
-                walked += math.hypot(b.x - a.x, b.y - a.y)
-                if walked >= self.ahead_m and math.hypot(b.x - robot.x, b.y - robot.y) >= self.ahead_m * 0.8:
-                    self._spot = (b.x, b.y)
-                    break
+            self._choose_spot(now, me, robot, robot_path)
         if self._spot is None:
             return self._keep_clear(me, robot, self._task(now, me))
         if math.hypot(self._spot[0] - me.x, self._spot[1] - me.y) > 0.15:
-            return self._keep_clear(me, robot, self._walk_to(me, self._spot[0], self._spot[1], self.speed))
+            if now - self._spot_since > self.give_up_s:
+                self._give_up()
+                return self._keep_clear(me, robot, self._task(now, me))
+            while len(self._route) > 1 and math.hypot(self._route[0][0] - me.x, self._route[0][1] - me.y) < 0.2:
+                self._route.pop(0)
+            x, y = self._route[0] if self._route else self._spot
+            return self._keep_clear(me, robot, self._walk_to(me, x, y, self.speed))
         if self._blocking_since is None:
             self._blocking_since = now
         if now - self._blocking_since >= self.block_s:
-            self.blocked = True
-            self._waypoints = []
+            self._give_up()
         return Twist2D()
 
 
 class Yielder(Walker):
-    """Stops and steps to its right when the robot is within `yield_m` in front of it."""
+    """Stops and steps to its right, as far as the wall lets them, when the robot is within
+    `yield_m` in front of it. If the robot does not move on for `patience_s` (it waits for them in
+    turn), the person walks on past it, keeping clear, for `walk_on_s`: nobody waits for ever."""
 
-    def __init__(self, *args: object, yield_m: float = 1.5, **kwargs: object) -> None:
+    def __init__(self, *args: object, yield_m: float = 1.5, patience_s: float = 4.0, walk_on_s: float = 6.0, **kwargs: object) -> None:
         super().__init__(*args, **kwargs)  # type: ignore[arg-type]
-        self.yield_m = yield_m
+        self.yield_m, self.patience_s, self.walk_on_s = yield_m, patience_s, walk_on_s
+        self._yielding: tuple[float, Pose2D] | None = None  # since when, and where the robot was then
+        self._walk_on_until = -math.inf
 
     def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
         dx, dy = robot.x - me.x, robot.y - me.y
-        d = math.hypot(dx, dy)
-        if d < self.yield_m and abs(wrap_angle(math.atan2(dy, dx) - me.yaw)) < math.radians(70):
-            right = (math.sin(me.yaw), -math.cos(me.yaw))
-            room = self.planner.free_run((me.x, me.y), right, 1.0)
-            step = 0.4 if room > 0.5 else 0.0  # step aside if there is room, else just stand
-            return Twist2D(0.0, -step, 0.0)
-        return self._keep_clear(me, robot, self._task(now, me))
+        ahead = math.hypot(dx, dy) < self.yield_m and abs(wrap_angle(math.atan2(dy, dx) - me.yaw)) < math.radians(70)
+        if not ahead or now < self._walk_on_until:
+            self._yielding = None
+            return self._keep_clear(me, robot, self._task(now, me))
+        if self._yielding is None:
+            self._yielding = (now, robot)
+        since, robot_then = self._yielding
+        if now - since >= self.patience_s and robot.distance_to(robot_then) < 0.1:
+            self._walk_on_until, self._yielding = now + self.walk_on_s, None  # the robot waits for us: go on
+            return self._keep_clear(me, robot, self._task(now, me))
+        right = (math.sin(me.yaw), -math.cos(me.yaw))
+        room = self.planner.free_run((me.x, me.y), right, 1.0) - HUMAN_BODY.radius_m - 0.05  # to the wall, body and margin off
+        return Twist2D(0.0, -min(0.4, max(0.0, 2.0 * room)), 0.0)
 
 
 MODELS: dict[str, type[Walker]] = {"walker": Walker, "blocker": Blocker, "yielder": Yielder}
