@@ -1,7 +1,8 @@
 """Behaviour sweep: seeded batch trials of every shipped scenario with each simulated participant
 model (and, for the shared room, each battery mode x gem order), summarised the way an HRI
 researcher would look at them: completion, end reasons, re-plans and waits, contacts by who caused
-them, the turn signal's lead before a turn, and the closest approach.
+them, the passes (Figure 3) whose turn signal showed before the curve and by how long, and the
+closest approach.
 
 usage: python bench/behaviour.py [--seeds 30] [--workers 2] [--only hallway ...]
 """
@@ -56,6 +57,9 @@ def one(job: tuple[str, dict[str, str], int]) -> dict[str, Any]:
         "human_contacts_robot_on_person",
         "human_contacts_person_on_robot",
         "turn_signal_lead_s_mean",
+        "passes",
+        "passes_signalled",
+        "pass_signal_lead_s_median",
         "turns",
         "turns_signalled",
         "min_human_distance_m",
@@ -68,14 +72,15 @@ def one(job: tuple[str, dict[str, str], int]) -> dict[str, Any]:
 def summary(rows: list[dict[str, Any]]) -> str:
     n = len(rows)
     ends = Counter(r["end_reason"] for r in rows)
-    leads = [r["turn_signal_lead_s_mean"] for r in rows if r["turn_signal_lead_s_mean"] is not None]
+    leads = [r["pass_signal_lead_s_median"] for r in rows if r["pass_signal_lead_s_median"] is not None]
     dmin = [r["min_human_distance_m"] for r in rows if r["min_human_distance_m"] is not None]
     return (
         f"completed {ends['completed']}/{n} ({', '.join(f'{k} {v}' for k, v in ends.items() if k != 'completed') or 'no other end'}); "
         f"re-plans {sum(r['replans'] for r in rows)}, waits {sum(r['waits'] for r in rows)}; "
         f"contacts {sum(r['human_contacts'] for r in rows)} (robot on person {sum(r['human_contacts_robot_on_person'] for r in rows)}, "
         f"person on robot {sum(r['human_contacts_person_on_robot'] for r in rows)}); "
-        f"signal lead median {statistics.median(leads) if leads else float('nan'):.2f} s; "
+        f"passes {sum(r['passes'] for r in rows)}, signalled first {sum(r['passes_signalled'] for r in rows)} "
+        f"(lead median {statistics.median(leads) if leads else float('nan'):.2f} s); "
         f"min distance {min(dmin) if dmin else float('nan'):.2f} m (median {statistics.median(dmin) if dmin else float('nan'):.2f})"
     )
 

@@ -1,12 +1,12 @@
-"""Human awareness: wait near the robot or the goal, detour on the roomier side, revert, resume."""
-
-import math
+"""Human awareness (Figure 3): pass a person on the roomier side on a curve, wait only when passing
+is impossible or the person is at the next stop, re-decide while waiting, revert, resume."""
 
 import pytest
 from helpers import corridor, drive_closed_loop
 
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.common.paths import SegmentKind, classify
 from haven_sim.nav.follower import PathFollower, Status
 from haven_sim.nav.navigator import Navigator, NavigatorParams, NavState
 from haven_sim.sim.simulation import Simulation
@@ -19,7 +19,7 @@ def setup(human_xy, width=3.0):
     sim = Simulation(world)
     nav = Navigator(sim.occupancy())
     follower = PathFollower()
-    out = nav.set_goal(sim.robot_pose(), GOAL, 0.0)
+    out = nav.set_goal(sim.robot_pose(), Pose2D(GOAL.x, width / 2, 0.0), 0.0)
     follower.set_path(out.path)
     assert out.events[0].kind is EventKind.PLAN_MADE
     return sim, nav, follower
@@ -37,39 +37,75 @@ def walk_away_after(seconds, vy=1.0):
     return script
 
 
-@pytest.mark.parametrize("human,near", [((2.6, 1.5), "robot"), ((9.8, 1.5), "goal")])
-def test_waits_for_a_human_near_the_robot_or_the_goal_then_resumes(human, near):
-    sim, nav, follower = setup(human)
-    events = drive_closed_loop(sim, follower, 60.0, nav, walk_away_after(6.0))
+def test_waits_before_a_human_it_cannot_pass_then_resumes_when_they_leave():
+    sim, nav, follower = setup((5.0, 0.8), width=1.6)  # 1.6 m: no room beside a person
+    events = drive_closed_loop(sim, follower, 60.0, nav, walk_away_after(8.0, vy=-0.5))
     assert types(events)[:2] == [EventKind.WAITING, EventKind.RESUMED]
-    assert near in events[0]["reason"]
-    assert events[1].stamp >= 6.0
+    assert "no room to pass" in events[0]["reason"]
+    assert events[1].stamp >= 8.0
     assert follower.status is Status.ARRIVED
-    assert sim.robot_pose().distance_to((GOAL.x, GOAL.y)) <= 0.1
     assert not [e for e in sim.pop_events() if e.kind is EventKind.CONTACT_BEGIN]
 
 
-def test_robot_does_not_move_while_waiting():
-    sim, nav, follower = setup((2.6, 1.5))
-    drive_closed_loop(sim, follower, 5.0, nav)
+def test_stops_its_personal_distance_before_the_person_it_waits_for():
+    sim, nav, follower = setup((5.0, 0.8), width=1.6)
+    drive_closed_loop(sim, follower, 20.0, nav)
     assert nav.state is NavState.WAITING and follower.status is Status.WAITING
-    assert sim.robot_pose().distance_to((1.0, 1.5)) < 0.02
+    gap = 5.0 - sim.robot_pose().x  # along the path
+    assert nav.params.wait_gap_m - 0.5 <= gap <= nav.params.wait_gap_m + 0.2
+
+
+def test_waits_for_a_human_at_its_next_stop():
+    sim, nav, follower = setup((10.7, 1.5))
+    events = drive_closed_loop(sim, follower, 40.0, nav)
+    assert types(events) == [EventKind.WAITING] and "next stop" in events[0]["reason"]
+    assert 10.7 - sim.robot_pose().x >= 0.9
+
+
+def test_waiting_robot_passes_once_the_person_makes_room():
+    sim, nav, follower = setup((5.0, 0.8), width=1.6)
+
+    def step_to_the_wall(sim, t):
+        if 8.0 <= sim.time and sim.human_poses()["h"].y > 0.45:
+            sim.command_human("h", Twist2D(0.0, -0.3, 0.0))
+        else:
+            sim.command_human("h", Twist2D())
+
+    events = drive_closed_loop(sim, follower, 60.0, nav, step_to_the_wall)
+    kinds = types(events)
+    assert kinds[0] is EventKind.WAITING and EventKind.REPLANNED in kinds
+    assert events[kinds.index(EventKind.REPLANNED)]["side"] == "left"
+    assert follower.status is Status.ARRIVED
+    assert not [e for e in sim.pop_events() if e.kind is EventKind.CONTACT_BEGIN]
 
 
 @pytest.mark.parametrize("human_y,side", [(1.2, "left"), (1.8, "right")])
-def test_detours_around_a_human_on_the_side_with_more_room(human_y, side):
+def test_passes_a_human_on_the_side_with_more_room_on_an_arc(human_y, side):
     sim, nav, follower = setup((6.0, human_y))
     events = drive_closed_loop(sim, follower, 60.0, nav)
-    assert types(events) == [EventKind.REPLANNED] and events[0]["side"] == side
-    ys = [p.y for p in nav.active if 5.5 < p.x < 6.5]
-    assert all((y > human_y) if side == "left" else (y < human_y) for y in ys)
+    assert types(events)[0] is EventKind.REPLANNED and events[0]["side"] == side
+    assert nav.params.wait_gap_m < events[0]["gap_m"] <= nav.params.pass_start_m
+    assert events[0]["clearance_m"] >= nav.params.min_pass_clearance_m
     assert follower.status is Status.ARRIVED
     assert not [e for e in sim.pop_events() if e.kind is EventKind.CONTACT_BEGIN]
 
 
+def test_the_pass_is_a_curve_out_held_past_the_person_and_back_to_the_route():
+    sim, nav, follower = setup((6.0, 1.5))
+    out = nav.update(Pose2D(2.5, 1.5, 0.0), [(6.0, 1.5)], 1.0)
+    assert nav.state is NavState.DETOUR and out.path is not None
+    kinds = {seg.kind for seg in classify(out.path)}
+    assert SegmentKind.ARC in kinds and SegmentKind.ROTATE not in kinds
+    beside = [p for p in out.path if abs(p.x - 6.0) < 0.3]
+    assert beside and all(abs(p.y - 1.5) >= nav._need(nav.params.min_pass_clearance_m) - 1e-6 for p in beside)
+    first_turn = next(p for p in out.path if abs(p.yaw) > 1e-3)
+    assert first_turn.x - 2.5 >= nav.params.signal_lead_m - 0.3  # a straight first: the signal shows before the curve
+    assert abs(out.path[-1].y - 1.5) < 1e-6
+
+
 def test_human_leaving_before_the_detour_sends_the_robot_back_to_the_original_path():
-    sim, nav, follower = setup((7.0, 1.5), width=4.0)  # more room on the left: the detour goes there
-    events = drive_closed_loop(sim, follower, 60.0, nav, walk_away_after(0.5, vy=-1.0))  # human goes right
+    sim, nav, follower = setup((7.0, 2.0))
+    events = drive_closed_loop(sim, follower, 60.0, nav, walk_away_after(5.5, vy=1.0))  # when the robot is 4 m away
     assert types(events)[:2] == [EventKind.REPLANNED, EventKind.REVERTED]
     assert nav.active is nav.original
     assert follower.status is Status.ARRIVED
@@ -83,11 +119,11 @@ def test_unreachable_goal_is_refused_with_a_reason():
     assert nav.state is NavState.IDLE
 
 
-def test_wait_distance_is_a_parameter():
+def test_pass_start_is_a_parameter():
     world = corridor(humans=[{"id": "h", "start": [4.5, 1.5, 0.0]}])
     sim = Simulation(world)
-    nav = Navigator(sim.occupancy(), params=NavigatorParams(wait_distance_m=4.0))
+    nav = Navigator(sim.occupancy(), params=NavigatorParams(pass_start_m=2.0))
     nav.set_goal(sim.robot_pose(), GOAL, 0.0)
-    out = nav.update(sim.robot_pose(), [(4.5, 1.5)], 0.2)
-    assert types(out.events) == [EventKind.WAITING] and out.waiting is True
-    assert math.isclose(nav.params.wait_distance_m, 4.0)
+    assert nav.update(sim.robot_pose(), [(4.5, 1.5)], 0.2).events == []
+    out = nav.update(Pose2D(2.6, 1.5, 0.0), [(4.5, 1.5)], 0.4)
+    assert types(out.events) == [EventKind.REPLANNED]

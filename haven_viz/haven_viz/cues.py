@@ -7,8 +7,11 @@ participant saw:
   * path projection: markers every `marker_spacing_m` along the remaining path, spheres on straight
     parts and cubes on arcs (the shared classifier of haven_sim), `steps_ahead` of them (0 = all),
     consumed as the robot passes them;
-  * turn signals: an arrow on the robot's left or right while the heading error to the path ahead
-    (or to the end of a rotation in place) is at least `turn_signal_threshold` (11 deg);
+  * turn signals: an arrow on the robot's left or right while the path within `signal_lookahead_m`
+    ahead turns away from the robot's heading by at least `turn_signal_threshold` (11 deg), or a
+    rotation in place is under way, like a driver's indicator before and through a turn; once lit
+    it stays lit until the turn is within `turn_signal_release_deg`, so a wobbling heading does not
+    make it flicker;
   * thought bubble: the robot's current thought as view-facing text above it, shown while a human
     is within `thought_radius_m`, with hysteresis so it does not flicker at the edge;
   * battery indicator: a level bar coloured by HAVEN's thresholds, and the percentage.
@@ -25,6 +28,8 @@ import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from haven_sim.common.bodies import ROBOT_BODY
 from haven_sim.common.geometry import Point, Pose2D, wrap_angle
 from haven_sim.common.params import param
@@ -34,6 +39,7 @@ from haven_viz.markers import Color, MarkerSpec, Shape
 
 PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS = "path_projection", "turn_signals", "thought_bubble", "battery_indicator"
 CUES = (PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS)
+LOOKAHEAD_STEP_M = 0.1  # the turn signals sample the path ahead this finely
 
 SCHEMES: dict[str, Color] = {
     "yellow": (0.934, 0.923, 0.0, 1.0),  # HAVEN's marker material
@@ -57,7 +63,8 @@ class CueParams:
     consume_distance_m: float = param(0.2, "a marker this close ahead of the robot along the path is used up")
     scheme: str = param("yellow", "marker colour: yellow (HAVEN), white (the paper's figures), cyan")
     turn_signal_threshold_deg: float = param(11.0, "HAVEN: a heading error this large lights the turn signal")
-    signal_lookahead_m: float = param(0.5, "the turn signals point at the path this far ahead")
+    turn_signal_release_deg: float = param(6.0, "a lit turn signal goes dark only when the turn ahead is within this (hysteresis)")
+    signal_lookahead_m: float = param(1.2, "the turn signals show a turn of the path this far ahead (3 s at 0.4 m/s; drivers signal about 3 s ahead)")
     thought_radius_m: float = param(3.0, "a human this close shows the thought bubble ...")
     thought_hysteresis_m: float = param(0.5, "... which hides again only beyond radius + this")
     thought_backdrop: bool = param(True, "a white bubble behind the thought's text")
@@ -73,10 +80,18 @@ class CueParams:
             raise ValueError("thought_radius_m must be positive and thought_hysteresis_m not negative")
         if not 0 < self.turn_signal_threshold_deg < 180:
             raise ValueError(f"turn_signal_threshold_deg must be within (0, 180), got {self.turn_signal_threshold_deg}")
+        if not 0 <= self.turn_signal_release_deg <= self.turn_signal_threshold_deg:
+            raise ValueError(f"turn_signal_release_deg must be within [0, turn_signal_threshold_deg], got {self.turn_signal_release_deg}")
+        if self.signal_lookahead_m < 0:
+            raise ValueError(f"signal_lookahead_m must not be negative, got {self.signal_lookahead_m}")
 
     @property
     def turn_signal_threshold_rad(self) -> float:
         return math.radians(self.turn_signal_threshold_deg)
+
+    @property
+    def turn_signal_release_rad(self) -> float:
+        return math.radians(self.turn_signal_release_deg)
 
 
 @dataclass(frozen=True)
@@ -173,10 +188,13 @@ class ArCues:
     def __init__(self, params: CueParams | None = None) -> None:
         self.params = params or CueParams()
         self.bubble_shown = False
+        self._lit = 0  # the side the turn signal shows
         self.set_path([])
 
     def set_path(self, poses: Sequence[Pose2D]) -> None:
         self._markers, self._rotations, self._line = _layout(poses, self.params.marker_spacing_m)
+        d = np.diff(self._line.points, axis=0)
+        self._heading = np.arctan2(d[:, 1], d[:, 0]) if len(d) else np.zeros(0)  # per segment
         self._progress = 0.0
         self._rotations_done = 0
 
@@ -208,10 +226,11 @@ class ArCues:
         line = self._line
         if len(line) < 2 or self._progress >= line.length - 1e-6:
             return None
-        x, y = line.point_at(min(line.length, self._progress + p.signal_lookahead_m))
-        if math.hypot(x - robot.x, y - robot.y) < 0.05:
-            return None
-        return wrap_angle(math.atan2(y - robot.y, x - robot.x) - robot.yaw)
+        # The path's heading at points ahead: the nearest that turns away by the threshold, else
+        # the largest turn within the look-ahead.
+        ahead = np.arange(self._progress, min(line.length, self._progress + p.signal_lookahead_m) + 1e-9, LOOKAHEAD_STEP_M)
+        errs = [wrap_angle(self._heading[line.moving_segment_at(float(s))] - robot.yaw) for s in ahead]
+        return next((e for e in errs if abs(e) >= p.turn_signal_threshold_rad), max(errs, key=abs))
 
     def _update_bubble(self, robot: Pose2D, humans: Sequence[Point]) -> bool:
         p = self.params
@@ -272,11 +291,15 @@ class ArCues:
         return out
 
     def signal_side(self, robot: Pose2D) -> int:
-        """+1 (left) or -1 (right) while the heading error reaches the threshold, else 0."""
+        """+1 (left) or -1 (right) while the turn ahead reaches the threshold (a lit side stays lit
+        down to the release angle), else 0."""
         err = self.turn_error(robot)
-        if err is None or abs(err) < self.params.turn_signal_threshold_rad:
-            return 0
-        return 1 if err > 0 else -1
+        p = self.params
+        if err is None:
+            self._lit = 0
+        elif not (self._lit and err * self._lit >= p.turn_signal_release_rad):
+            self._lit = (1 if err > 0 else -1) if abs(err) >= p.turn_signal_threshold_rad else 0
+        return self._lit
 
     def _signal_markers(self, robot: Pose2D, side: int) -> list[MarkerSpec]:
         if side == 0:

@@ -54,6 +54,7 @@ def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: Wor
     m.update(_contacts(tl, rec.events, t0, t1))
     m.update(_mission(tl, events))
     m.update(_cues(tl))
+    m.update(_passes(tl, events))
     for hid in tl.humans:
         m.update(_person(hid, tl, events, world, rec))
     m.update(check(rec, window))
@@ -204,6 +205,39 @@ def signal_lead_times(t: FloatArray, wz: FloatArray, signal: Sequence[int]) -> l
                 j -= 1
             leads.append(float(t[i] - t[j]) if sig[i - 1] == side else 0.0)
     return leads
+
+
+def pass_signal_leads(
+    t: FloatArray, wz: FloatArray, signal: Sequence[int], passes: Sequence[tuple[float, int]], within_s: float = 10.0
+) -> list[float]:
+    """For each pass (time of the re-plan, side +1 left / -1 right): how long the signal on that
+    side had been lit when the robot began to turn that way (0 if it was not lit or never turned)."""
+    sig = np.asarray(signal)
+    leads = []
+    for when, side in passes:
+        i = int(np.searchsorted(t, when))
+        lead = 0.0
+        while i < len(t) and t[i] <= when + within_s:
+            if wz[i] * side > TURN_RATE_RPS:
+                j = i
+                while j > 0 and sig[j - 1] == side:
+                    j -= 1
+                lead = float(t[i] - t[j])
+                break
+            i += 1
+        leads.append(lead)
+    return leads
+
+
+def _passes(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
+    """Figure 3: each re-plan around a person, whether its side's signal showed before the curve."""
+    passes = [(e.stamp, 1 if e.get("side") == "left" else -1) for e in events if e.kind is EventKind.REPLANNED and e.get("side") in ("left", "right")]
+    leads = pass_signal_leads(tl.t, tl.robot_w, [c.turn_signal for c in tl.cues], passes) if len(tl.t) else []
+    return {
+        "passes": len(passes),
+        "passes_signalled": sum(1 for x in leads if x > 0),
+        "pass_signal_lead_s_median": _r(float(np.median(leads)) if leads else None),
+    }
 
 
 def _cues(tl: Timeline) -> dict[str, Any]:

@@ -23,7 +23,7 @@ from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import topics
 from haven_sim.nav.controller import ControllerComponent
 from haven_sim.nav.mux import MuxComponent
-from haven_sim.nav.planning import PlannerComponent
+from haven_sim.nav.planning import PlannerComponent, world_lanes
 from haven_sim.runtime.component import Component
 from haven_sim.runtime.loop import InProcessLoop
 from haven_sim.sim.simulator import SimulatorComponent
@@ -57,7 +57,8 @@ def scenario_suite(scenario: Scenario, seed: int, toggles: Toggles, suite: Suite
     battery = replace(s.sim.sim.battery, capacity_m=scenario.battery.capacity_m)
     sim = replace(s.sim, world=scenario.world_path, sim=replace(s.sim.sim, battery=battery, seed=seed))
     director = replace(s.scenario.director, scenario=scenario.source or scenario.name, seed=seed)
-    return replace(s, sim=sim, viz=replace(s.viz, world=scenario.world_path, toggles=toggles), scenario=replace(s.scenario, director=director))
+    viz = replace(s.viz, world=scenario.world_path, toggles=toggles)
+    return replace(s, sim=sim, planner=replace(s.planner, world=scenario.world_path), viz=viz, scenario=replace(s.scenario, director=director))
 
 
 @dataclass
@@ -79,7 +80,13 @@ class Trial:
         self.sim = SimulatorComponent(scenario.world, c.sim)
         self.director = TrialDirector(scenario, seed, c.scenario.director.rate_hz)
         self.viz = VizComponent(c.viz, scenario.world)
-        components: list[Component] = [MuxComponent(c.mux), PlannerComponent(c.planner), ControllerComponent(c.controller), self.viz, self.director]
+        components: list[Component] = [
+            MuxComponent(c.mux),
+            PlannerComponent(c.planner, world_lanes(scenario.world)),
+            ControllerComponent(c.controller),
+            self.viz,
+            self.director,
+        ]
         self.recording = Recording()
         recorded = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, topics.PLAN, topics.EVENTS)
         self.loop = InProcessLoop(self.sim, components, [self.recording.add], recorded)

@@ -258,7 +258,8 @@ class TrialDirector:
         out: list[Message] = []
         for hid, walker in self.participants.items():
             if hid in self.humans:
-                out.append(Message(topics.human_cmd_vel(hid), walker.command(now, self.humans[hid], robot, self.path), now))
+                others = [pose for other, pose in self.humans.items() if other != hid]
+                out.append(Message(topics.human_cmd_vel(hid), walker.command(now, self.humans[hid], robot, self.path, others), now))
         fired = self.gems.update(now, robot, self.humans) + self.routes.update(now, {"robot": robot, **self.humans})
         fired += self.obstructions.update(now, self.humans)
         out += [Message(topics.EVENTS, e, now) for e in fired]

@@ -6,7 +6,9 @@
     robot and stands there a while (the case that makes HAVEN's robot wait or detour);
   * `Yielder`: a walker that stops and steps aside when the robot comes close in front of it.
 
-They see what a participant sees: the robot's pose and its projected path.
+They see what a participant sees: the robot's pose and its projected path, and the other people.
+All of them move by the social-force model (`social_force`): their task gives a desired velocity,
+walls, people and the robot push them off it, and they never close in on the robot.
 """
 
 from __future__ import annotations
@@ -17,11 +19,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
+from haven_scenarios.study.social_force import Body, SocialForce, robot_body
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, Twist2D, wrap_angle
 from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
 
 # How a simulated participant plans their own walks: their body, a little margin, generous snapping.
+CLOSE_ENOUGH_M = 0.3  # a stop the person cannot get nearer to than this (someone beside it) counts as reached
 HUMAN_PLANNER = PlannerParams(safety_margin_m=0.05, snap_radius_m=0.5, body_radius_m=HUMAN_BODY.radius_m)
 
 
@@ -31,7 +35,7 @@ class Participant(Protocol):
     id: str
     done: bool  # their task is finished
 
-    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D: ...
+    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D], others: Sequence[Pose2D] = ()) -> Twist2D: ...
 
 
 @dataclass(frozen=True)
@@ -57,17 +61,63 @@ def shuffled_nearest(stops: Sequence[Stop], start: Point, seed: int) -> list[Sto
 
 
 class Walker:
+    """Walks its stops along planned paths; moves by the social-force model (`social_force`), so it
+    steers round walls, other people and the robot, keeps right of oncoming traffic and never
+    closes in on the robot."""
+
     def __init__(self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float = 1.0, seed: int = 0) -> None:
         self.id = human_id
         self.rng = random.Random(seed)
         self.speed = speed_mps * self.rng.uniform(0.85, 1.15)
         self.stops = list(stops)
         self.planner = planner
+        self.crowd = SocialForce(planner.free_run)
         self._waypoints: list[Point] = []
         self._arrived_at: float | None = None
         self._progress_mark: tuple[float, float] | None = None  # (when, distance to the waypoint) at the last progress
+        self._last: tuple[float, Pose2D] | None = None  # (when, the robot's pose) at the last tick
+        self._dt = 0.1
+        self._others: Sequence[Pose2D] = ()  # the other people, as of this tick
         self.done = not self.stops
 
+    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D], others: Sequence[Pose2D] = ()) -> Twist2D:
+        self._others = others
+        return self._move(now, me, robot, others, self._desired(now, me, robot, robot_path))
+
+    def _desired(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Point:
+        """The velocity the person wants (world frame), before the social forces."""
+        return self._task(now, me)
+
+    # -- moving ------------------------------------------------------------------------------------
+    def _move(self, now: float, me: Pose2D, robot: Pose2D, others: Sequence[Pose2D], desired: Point) -> Twist2D:
+        """The social-force step from the desired velocity, as a command in the person's frame."""
+        rvx = rvy = 0.0
+        if self._last is not None and now > self._last[0]:
+            self._dt = min(0.5, now - self._last[0])
+            rvx, rvy = (robot.x - self._last[1].x) / self._dt, (robot.y - self._last[1].y) / self._dt
+        self._last = (now, robot)
+        bodies = [robot_body(robot.x, robot.y, rvx, rvy)] + [Body(o.x, o.y, 0.0, 0.0, HUMAN_BODY.radius_m) for o in others]
+        vx, vy = self.crowd.step((me.x, me.y), desired, bodies, self._dt)
+        return self._twist(me, (vx, vy), desired)
+
+    def _twist(self, me: Pose2D, v: Point, desired: Point) -> Twist2D:
+        """World velocity `v` as a command in the person's own frame, turning to face where they
+        go. The command holds for the tick, so it is aimed along the heading they will have half-way
+        through, or the walk would curl as they turn."""
+        face = v if math.hypot(*v) > 0.1 else desired
+        wz = max(-3.0, min(3.0, 2.0 * wrap_angle(math.atan2(face[1], face[0]) - me.yaw))) if math.hypot(*face) > 1e-3 else 0.0
+        mid = me.yaw + 0.5 * wz * self._dt
+        c, s = math.cos(mid), math.sin(mid)
+        return Twist2D(c * v[0] + s * v[1], -s * v[0] + c * v[1], wz)
+
+    def _toward(self, me: Pose2D, x: float, y: float, speed: float) -> Point:
+        """Desired velocity straight at (x, y), slowing on the last stretch."""
+        dx, dy = x - me.x, y - me.y
+        d = math.hypot(dx, dy)
+        v = min(speed, 1.5 * d + 0.05)
+        return (v * dx / max(d, 1e-9), v * dy / max(d, 1e-9))
+
+    # -- the task ----------------------------------------------------------------------------------
     def _plan(self, me: Pose2D) -> None:
         stop = self.stops[0]
         try:
@@ -75,60 +125,37 @@ class Walker:
         except PlanningError:
             self._waypoints = [(stop.x, stop.y)]
 
-    def _walk_to(self, me: Pose2D, x: float, y: float, speed: float, hold_s: float = 0.1) -> Twist2D:
-        """Straight at (x, y) while turning to face it. The command holds for `hold_s` (the 10 Hz
-        tick) and is in the person's own frame, so it is aimed along the heading they will have
-        half-way through, or the walk would curl as they turn."""
-        dx, dy = x - me.x, y - me.y
-        d = math.hypot(dx, dy)
-        v = min(speed, 1.5 * d + 0.05)
-        wz = max(-3.0, min(3.0, 2.0 * wrap_angle(math.atan2(dy, dx) - me.yaw)))
-        mid = me.yaw + 0.5 * wz * hold_s
-        c, s = math.cos(mid), math.sin(mid)
-        vx, vy = v * (c * dx + s * dy) / max(d, 1e-9), v * (-s * dx + c * dy) / max(d, 1e-9)
-        return Twist2D(vx, vy, wz)
-
-    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
-        return self._keep_clear(me, robot, self._task(now, me))
-
-    @staticmethod
-    def _keep_clear(me: Pose2D, robot: Pose2D, cmd: Twist2D, radius_m: float = 0.9) -> Twist2D:
-        """People do not walk into robots: within `radius_m`, stop closing in and edge away."""
-        dx, dy = me.x - robot.x, me.y - robot.y
-        d = math.hypot(dx, dy)
-        if d >= radius_m or d < 1e-6:
-            return cmd
-        ux, uy = dx / d, dy / d  # away from the robot, world frame
-        c, s = math.cos(me.yaw), math.sin(me.yaw)
-        vx, vy = c * cmd.vx - s * cmd.vy, s * cmd.vx + c * cmd.vy
-        toward = vx * ux + vy * uy
-        if toward < 0:  # drop the part of the motion that closes in on the robot
-            vx, vy = vx - toward * ux, vy - toward * uy
-        push = 0.6 * (radius_m - d) / radius_m
-        vx, vy = vx + push * ux, vy + push * uy
-        return Twist2D(c * vx + s * vy, -s * vx + c * vy, cmd.wz)
-
-    def _task(self, now: float, me: Pose2D) -> Twist2D:
+    def _task(self, now: float, me: Pose2D) -> Point:
+        """Desired velocity for the task: along the planned path to the next stop, or stand."""
         if self.done:
-            return Twist2D()
+            return (0.0, 0.0)
         stop = self.stops[0]
-        if math.hypot(stop.x - me.x, stop.y - me.y) <= stop.reach_m:
+        d = math.hypot(stop.x - me.x, stop.y - me.y)
+        if d <= stop.reach_m or self._arrived_at is not None and d <= CLOSE_ENOUGH_M:
             if self._arrived_at is None:
                 self._arrived_at = now
             if now - self._arrived_at >= stop.dwell_s:
                 self.stops.pop(0)
                 self._waypoints, self._arrived_at = [], None
                 self.done = not self.stops
-            return Twist2D()
+            return (0.0, 0.0)
         self._arrived_at = None
         if not self._waypoints or self._stuck(now, me):
+            if d <= CLOSE_ENOUGH_M:  # held off the spot (by someone beside it): this is as close as it gets
+                self._arrived_at = now
+                return (0.0, 0.0)
+            if self._contested(stop) and len(self.stops) > 1 and self.rng.random() < 0.5:
+                self.stops.append(self.stops.pop(0))  # others are going for it: come back to it later
             self._plan(me)
-        while len(self._waypoints) > 1 and math.hypot(self._waypoints[0][0] - me.x, self._waypoints[0][1] - me.y) < 0.2:
+        while len(self._waypoints) > 1 and math.hypot(self._waypoints[0][0] - me.x, self._waypoints[0][1] - me.y) < 0.3:
             self._waypoints.pop(0)
         x, y = self._waypoints[0]
-        return self._walk_to(me, x, y, self.speed)
+        return self._toward(me, x, y, self.speed)
 
-    def _stuck(self, now: float, me: Pose2D, window_s: float = 1.0, min_progress_m: float = 0.1) -> bool:
+    def _contested(self, stop: Stop, near_m: float = 0.8) -> bool:
+        return any(math.hypot(stop.x - o.x, stop.y - o.y) < near_m for o in self._others)
+
+    def _stuck(self, now: float, me: Pose2D, window_s: float = 1.5, min_progress_m: float = 0.1) -> bool:
         """No progress toward the current waypoint for `window_s` (pushed aside, caught on a corner):
         time to plan again from where they are."""
         x, y = self._waypoints[0]
@@ -168,35 +195,32 @@ class Blocker(Walker):
                 self._spot, self._spot_since = (b.x, b.y), now
                 return
 
-    def _give_up(self) -> None:
-        self.blocked, self._waypoints = True, []
-
-    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
+    def _desired(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Point:
         if self.blocked:
-            return self._keep_clear(me, robot, self._task(now, me))
+            return self._task(now, me)
         if self._spot is None and len(robot_path) >= 2:
             self._choose_spot(now, me, robot, robot_path)
         if self._spot is None:
-            return self._keep_clear(me, robot, self._task(now, me))
-        if math.hypot(self._spot[0] - me.x, self._spot[1] - me.y) > 0.15:
+            return self._task(now, me)
+        if self._blocking_since is None and math.hypot(self._spot[0] - me.x, self._spot[1] - me.y) > 0.2:
             if now - self._spot_since > self.give_up_s:
-                self._give_up()
-                return self._keep_clear(me, robot, self._task(now, me))
-            while len(self._route) > 1 and math.hypot(self._route[0][0] - me.x, self._route[0][1] - me.y) < 0.2:
+                self.blocked, self._waypoints = True, []
+                return self._task(now, me)
+            while len(self._route) > 1 and math.hypot(self._route[0][0] - me.x, self._route[0][1] - me.y) < 0.3:
                 self._route.pop(0)
             x, y = self._route[0] if self._route else self._spot
-            return self._keep_clear(me, robot, self._walk_to(me, x, y, self.speed))
+            return self._toward(me, x, y, self.speed)
         if self._blocking_since is None:
             self._blocking_since = now
         if now - self._blocking_since >= self.block_s:
-            self._give_up()
-        return Twist2D()
+            self.blocked, self._waypoints = True, []
+        return (0.0, 0.0)
 
 
 class Yielder(Walker):
-    """Stops and steps to its right, as far as the wall lets them, when the robot is within
-    `yield_m` in front of it. If the robot does not move on for `patience_s` (it waits for them in
-    turn), the person walks on past it, keeping clear, for `walk_on_s`: nobody waits for ever."""
+    """Stops and steps to its right, as far as the wall allows, when the robot is within `yield_m`
+    in front of it. If the robot does not move on for `patience_s` (it waits for them in turn),
+    the person walks on past it for `walk_on_s`: nobody waits for ever."""
 
     def __init__(self, *args: object, yield_m: float = 1.5, patience_s: float = 4.0, walk_on_s: float = 6.0, **kwargs: object) -> None:
         super().__init__(*args, **kwargs)  # type: ignore[arg-type]
@@ -204,21 +228,22 @@ class Yielder(Walker):
         self._yielding: tuple[float, Pose2D] | None = None  # since when, and where the robot was then
         self._walk_on_until = -math.inf
 
-    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Twist2D:
+    def _desired(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Point:
         dx, dy = robot.x - me.x, robot.y - me.y
         ahead = math.hypot(dx, dy) < self.yield_m and abs(wrap_angle(math.atan2(dy, dx) - me.yaw)) < math.radians(70)
         if not ahead or now < self._walk_on_until:
             self._yielding = None
-            return self._keep_clear(me, robot, self._task(now, me))
+            return self._task(now, me)
         if self._yielding is None:
             self._yielding = (now, robot)
         since, robot_then = self._yielding
         if now - since >= self.patience_s and robot.distance_to(robot_then) < 0.1:
             self._walk_on_until, self._yielding = now + self.walk_on_s, None  # the robot waits for us: go on
-            return self._keep_clear(me, robot, self._task(now, me))
+            return self._task(now, me)
         right = (math.sin(me.yaw), -math.cos(me.yaw))
         room = self.planner.free_run((me.x, me.y), right, 1.0) - HUMAN_BODY.radius_m - 0.05  # to the wall, body and margin off
-        return Twist2D(0.0, -min(0.4, max(0.0, 2.0 * room)), 0.0)
+        step = min(0.4, max(0.0, 2.0 * room))
+        return (right[0] * step, right[1] * step)
 
 
 MODELS: dict[str, type[Walker]] = {"walker": Walker, "blocker": Blocker, "yielder": Yielder}

@@ -4,7 +4,8 @@
 any nav_msgs/OccupancyGrid) from the robot's /odom pose; a goal that comes before the map or the
 pose waits (the newest one wins); a goal in a frame other than the map's, or with a position that
 is not finite, is refused with an event. At `check_rate_hz` it watches /humans through the navigator:
-a person on the upcoming path makes the robot wait (/haven/wait) or detour (a new /plan).
+a person on the upcoming path makes the robot pass them (a new /plan) or wait (/haven/wait). Given
+the world's hallways (`lanes`), it routes the robot down their centre lines.
 """
 
 from __future__ import annotations
@@ -18,12 +19,14 @@ from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
+from haven_sim.nav.lanes import Lane
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.navigator import Navigator, NavigatorParams, NavOutput
 from haven_sim.nav.path_style import ShapeParams
 from haven_sim.nav.planner import PlannerParams
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.occupancy import OccupancyGridData
+from haven_sim.sim.world import World
 
 ODOM_FRAME = "odom"  # coincides with the map frame while odometry has no drift
 
@@ -36,18 +39,25 @@ class PlannerConfig:
     navigator: NavigatorParams = group(NavigatorParams)
     check_rate_hz: float = param(5.0, "how often the path is checked for people (sim time)")
     map_frame: str = param("map", "frame of /plan and of accepted goals")
+    world: str = param("", "world file whose hallway centre lines the robot keeps to ('': plan on /map alone; haven run passes its world)")
 
     def __post_init__(self) -> None:
         if not self.check_rate_hz > 0:
             raise ValueError(f"check_rate_hz must be positive, got {self.check_rate_hz}")
 
 
+def world_lanes(world: World) -> tuple[Lane, ...]:
+    """The world's hallways as lanes for the navigator."""
+    return tuple(Lane(h.centreline, h.width) for h in world.hallways)
+
+
 class PlannerComponent:
     name = "planner"
     unread: frozenset[str] = frozenset()
 
-    def __init__(self, config: PlannerConfig | None = None) -> None:
+    def __init__(self, config: PlannerConfig | None = None, lanes: Sequence[Lane] = ()) -> None:
         self.config = config or PlannerConfig()
+        self.lanes = tuple(lanes)
         self.nav: Navigator | None = None
         self.robot: Pose2D | None = None
         self.humans: list[tuple[float, float]] = []
@@ -68,7 +78,7 @@ class PlannerComponent:
     def on_map(self, grid: OccupancyGridData, now: float) -> list[Message]:
         c = self.config
         if self.nav is None:
-            self.nav = Navigator(grid, c.planner, c.shape, c.navigator, c.style)
+            self.nav = Navigator(grid, c.planner, c.shape, c.navigator, c.style, self.lanes)
         else:
             self.nav.set_map(grid)
         self.notes.append(f"map {grid.width} x {grid.height} at {grid.resolution_m:g} m: {len(self.nav.planner.nodes)} corner nodes")

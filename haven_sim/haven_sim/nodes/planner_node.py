@@ -9,17 +9,20 @@ from __future__ import annotations
 
 import sys
 
-from haven_sim.nav.planning import PlannerComponent, PlannerConfig
+from haven_sim.nav.planning import PlannerComponent, PlannerConfig, world_lanes
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.runner import run_node
+from haven_sim.sim.world import resolve_world_path
+from haven_sim.sim.world_file import load_world
 
 
 class PlannerNode(ComponentNode):
     def __init__(self) -> None:
         super().__init__("planner")
         config = self.declare_config(PlannerConfig)
-        component = PlannerComponent(config)
+        lanes = world_lanes(load_world(resolve_world_path(config.world))) if config.world else ()
+        component = PlannerComponent(config, lanes)
         self.wire(component, wire.specs(wire.Frames(map=config.map_frame)))
 
 

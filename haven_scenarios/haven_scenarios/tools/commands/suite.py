@@ -43,7 +43,9 @@ def run_suite(args: argparse.Namespace) -> int:
         load_world(world)  # fail before starting anything
     except WorldError as e:
         return fail(str(e))
-    specs = suite_specs({"sim": {"world": world, "real_time_factor": args.rtf}, "viz": {"world": world}}, params_file(args), args.without)
+    specs = suite_specs(
+        {"sim": {"world": world, "real_time_factor": args.rtf}, "planner": {"world": world}, "viz": {"world": world}}, params_file(args), args.without
+    )
     until, timeout = None, getattr(args, "duration", None)
     if args.command == "demo":
         specs.append(ProcessSpec("demo_driver", node_argv("haven_scenarios.nodes.demo_driver", {"use_sim_time": True, "laps": args.laps})))
