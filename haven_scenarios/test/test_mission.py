@@ -83,6 +83,27 @@ def test_a_target_served_one_way_only_is_kept_for_last():
     assert after.goal[:2] == (10.0, 0.0) and m.phase is Phase.GOING
 
 
+def test_of_two_targets_served_one_way_only_the_farther_is_skipped_no_shuttling_to_the_base():
+    """Defect: with two one-way-only targets neither could be the last, so the robot charged, found
+    the round trip too long again, and went back to the base for ever (3,400 charge trips)."""
+    for mode in ("on_arrival", "continuous"):
+        targets = [Target("a", 10.0, 0.0, "gem a"), Target("d", -9.0, 0.0, "gem d"), Target("b", 2.0, 0.0, "gem b")]
+        m = Mission(targets, straight, "nearest", BatteryPlan(mode=mode, capacity_m=15.0), BASE)
+        robot, level, trips = Pose2D(0, 0), 1.0, 0
+        out = m.start(0.0, robot, level)
+        for _ in range(10):
+            if m.phase is Phase.DONE:
+                break
+            assert out.goal is not None
+            robot = Pose2D(out.goal.x, out.goal.y)
+            trips = m.charge_trips
+            target = m.current.id if m.phase is Phase.GOING and m.current else None
+            out = m.target_done(0.0, target, robot, 0.9) if target else m.tick(0.0, robot, 1.0, at_base=True)
+            if m.phase is Phase.CHARGING:
+                out = m.tick(0.0, robot, 1.0)
+        assert m.phase is Phase.DONE and m.skipped == ["a"] and trips <= 1
+
+
 def test_a_far_last_leg_charges_first_when_a_charged_battery_covers_it_from_the_base():
     battery = BatteryPlan(mode="on_arrival", capacity_m=25.0)
     m = Mission([T[0]], straight, "fixed", battery, BASE)

@@ -109,3 +109,62 @@ def test_several_participants_with_different_models(tmp_path):
     assert all(m[f"{h}_path_length_m"] > 1.0 for h in ("h1", "h2", "h3"))
     assert m["gems_human"] == 8 and m["gems_robot"] == 4
     assert m["waits"] + m["replans"] >= 1  # the blocker got in the robot's way
+
+
+def test_the_hallway_figure_3_pass_signals_first_and_keeps_the_centre_line():
+    r = run_trial(load_scenario("hallway"), seed=0)
+    m = r.metrics
+    assert m["passes"] >= 1 and m["passes_signalled"] == m["passes"]
+    assert m["pass_signal_lead_s_median"] >= 1.0
+    assert m["min_human_distance_m"] > 0.55
+    _, xs = _on_centre_lines(r)
+    assert max(xs) < 0.03
+
+
+def _on_centre_lines(r):
+    """Deviations from the centre lines of hallways B-C and C-D (the robot meets nobody there)."""
+    import numpy as np
+
+    from haven_scenarios.record.timeline import Timeline
+
+    tl = Timeline.of(r.recording, *r.recording.window())
+    xy = tl.robot_xy
+    bc = (xy[:, 1] > 5) & (xy[:, 1] < 13) & (np.abs(xy[:, 0] - 16) < 0.5)
+    cd = (xy[:, 0] > 5) & (xy[:, 0] < 13) & (np.abs(xy[:, 1] - 16) < 0.5)
+    return tl, [float(np.abs(xy[bc, 0] - 16).max()), float(np.abs(xy[cd, 1] - 16).max())]
+
+
+@pytest.mark.slow
+def test_control_stays_smooth_with_the_delays_of_a_loaded_machine():
+    """Pose and command messages each held back 50-150 ms (sim time), as under CPU load: the robot
+    still keeps the centre line, the turn signals do not flicker, the trial completes alike."""
+    import random
+
+    import numpy as np
+
+    from haven_scenarios.run.trial import Trial
+    from haven_sim.common import topics
+
+    rng = random.Random(7)
+    delayed = {topics.ODOM, topics.CMD_VEL_NAV, topics.CMD_VEL}
+    r = Trial(load_scenario("hallway"), 0, delay=lambda topic: rng.uniform(0.05, 0.15) if topic in delayed else 0.0).run()
+    assert r.end_reason == "completed" and r.metrics["human_contacts"] == 0
+    tl, deviations = _on_centre_lines(r)
+    assert max(deviations) < 0.05  # no wobble
+    sig = np.array([c.turn_signal for c in tl.cues])
+    onsets = [i for i in range(1, len(sig)) if sig[i] != 0 and sig[i] != sig[i - 1]]
+    ends = [next((j for j in range(i, len(sig)) if sig[j] != sig[i]), len(sig) - 1) for i in onsets]
+    assert all(tl.t[j] - tl.t[i] >= 0.5 for i, j in zip(onsets, ends)), "a turn signal flickered"
+    assert r.metrics["passes_signalled"] == r.metrics["passes"] >= 1
+
+
+def test_cue_parameters_per_scenario_and_per_run():
+    from haven_scenarios.run.suite import SuiteConfig
+    from haven_scenarios.run.trial import scenario_suite
+    from haven_viz.cues import CueParams
+    from haven_viz.viz import VizConfig
+
+    s = replace(load_scenario("hallway"), cues=CueParams(steps_ahead=5))
+    assert scenario_suite(s, 0, Toggles()).viz.cues.steps_ahead == 5  # the scenario's
+    run = SuiteConfig(viz=replace(VizConfig(), cues=CueParams(steps_ahead=3)))
+    assert scenario_suite(s, 0, Toggles(), run).viz.cues.steps_ahead == 3  # the run's parameter file wins

@@ -8,7 +8,8 @@ from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.common.paths import SegmentKind, classify
 from haven_sim.nav.follower import PathFollower, Status
-from haven_sim.nav.navigator import Navigator, NavigatorParams, NavState
+from haven_sim.nav.navigator import Navigator, NavState
+from haven_sim.nav.navigator_params import NavigatorParams
 from haven_sim.sim.simulation import Simulation
 
 GOAL = Pose2D(11.0, 1.5, 0.0)

@@ -10,8 +10,8 @@ participant saw:
   * turn signals: an arrow on the robot's left or right while the path within `signal_lookahead_m`
     ahead turns away from the robot's heading by at least `turn_signal_threshold` (11 deg), or a
     rotation in place is under way, like a driver's indicator before and through a turn; once lit
-    it stays lit until the turn is within `turn_signal_release_deg`, so a wobbling heading does not
-    make it flicker;
+    it stays lit until the turn is within `turn_signal_release_deg`, and at least
+    `turn_signal_hold_s`, so neither a wobbling heading nor an S-curve makes it flicker;
   * thought bubble: the robot's current thought as view-facing text above it, shown while a human
     is within `thought_radius_m`, with hysteresis so it does not flicker at the edge;
   * battery indicator: a level bar coloured by HAVEN's thresholds, and the percentage.
@@ -64,6 +64,7 @@ class CueParams:
     scheme: str = param("yellow", "marker colour: yellow (HAVEN), white (the paper's figures), cyan")
     turn_signal_threshold_deg: float = param(11.0, "HAVEN: a heading error this large lights the turn signal")
     turn_signal_release_deg: float = param(6.0, "a lit turn signal goes dark only when the turn ahead is within this (hysteresis)")
+    turn_signal_hold_s: float = param(0.5, "a lit turn signal stays lit at least this long (no flicker on S-curves)")
     signal_lookahead_m: float = param(1.2, "the turn signals show a turn of the path this far ahead (3 s at 0.4 m/s; drivers signal about 3 s ahead)")
     thought_radius_m: float = param(3.0, "a human this close shows the thought bubble ...")
     thought_hysteresis_m: float = param(0.5, "... which hides again only beyond radius + this")
@@ -82,8 +83,8 @@ class CueParams:
             raise ValueError(f"turn_signal_threshold_deg must be within (0, 180), got {self.turn_signal_threshold_deg}")
         if not 0 <= self.turn_signal_release_deg <= self.turn_signal_threshold_deg:
             raise ValueError(f"turn_signal_release_deg must be within [0, turn_signal_threshold_deg], got {self.turn_signal_release_deg}")
-        if self.signal_lookahead_m < 0:
-            raise ValueError(f"signal_lookahead_m must not be negative, got {self.signal_lookahead_m}")
+        if self.signal_lookahead_m < 0 or self.turn_signal_hold_s < 0:
+            raise ValueError("signal_lookahead_m and turn_signal_hold_s must not be negative")
 
     @property
     def turn_signal_threshold_rad(self) -> float:
@@ -189,6 +190,7 @@ class ArCues:
         self.params = params or CueParams()
         self.bubble_shown = False
         self._lit = 0  # the side the turn signal shows
+        self._lit_since = 0.0
         self.set_path([])
 
     def set_path(self, poses: Sequence[Pose2D]) -> None:
@@ -249,8 +251,10 @@ class ArCues:
         battery_level: float | None = None,
         thought: str = "",
         toggles: Toggles = Toggles(),
+        now: float | None = None,
     ) -> CueFrame:
-        """Every cue marker for this moment (cues that are off are simply absent) and what they show."""
+        """Every cue marker for this moment (cues that are off are simply absent) and what they show.
+        With the time `now`, a lit turn signal is held at least `turn_signal_hold_s`."""
         self._advance(robot)
         shown_bubble = self._update_bubble(robot, humans)  # tracked even while the cue is off
         out: list[MarkerSpec] = []
@@ -260,7 +264,7 @@ class ArCues:
             path = len(path_markers)
             out += path_markers
         if toggles.turn_signals:
-            side = self.signal_side(robot)
+            side = self.signal_side(robot, now)
             out += self._signal_markers(robot, side)
         if toggles.thought_bubble and shown_bubble and thought:
             text = thought
@@ -290,15 +294,21 @@ class ArCues:
                 break
         return out
 
-    def signal_side(self, robot: Pose2D) -> int:
+    def signal_side(self, robot: Pose2D, now: float | None = None) -> int:
         """+1 (left) or -1 (right) while the turn ahead reaches the threshold (a lit side stays lit
-        down to the release angle), else 0."""
+        down to the release angle, and for `turn_signal_hold_s` when the time is given), else 0."""
         err = self.turn_error(robot)
         p = self.params
+        if now is not None and self._lit and now - self._lit_since < p.turn_signal_hold_s:
+            return self._lit
         if err is None:
-            self._lit = 0
-        elif not (self._lit and err * self._lit >= p.turn_signal_release_rad):
-            self._lit = (1 if err > 0 else -1) if abs(err) >= p.turn_signal_threshold_rad else 0
+            side = 0
+        elif self._lit and err * self._lit >= p.turn_signal_release_rad:
+            side = self._lit
+        else:
+            side = (1 if err > 0 else -1) if abs(err) >= p.turn_signal_threshold_rad else 0
+        if side != self._lit:
+            self._lit, self._lit_since = side, now if now is not None else 0.0
         return self._lit
 
     def _signal_markers(self, robot: Pose2D, side: int) -> list[MarkerSpec]:

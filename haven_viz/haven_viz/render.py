@@ -117,10 +117,12 @@ def render_scene(
     points: Sequence[tuple[float, float, str, str]] = (),
     removed: Sequence[str] = (),
     events: Sequence[tuple[float, float, str]] = (),
+    view: tuple[float, float, float, float] | None = None,
 ) -> Path:
     """Draw and save a PNG. `trails`: label -> ((N, 2) xy, colour); `points`: (x, y, label, colour),
-    labelled on the map; `events`: (x, y, kind) with a symbol per kind (EVENT_SYMBOLS), in the legend."""
-    xmin, ymin, xmax, ymax = world.bounds()
+    labelled on the map; `events`: (x, y, kind) with a symbol per kind (EVENT_SYMBOLS), in the legend;
+    `view`: (xmin, ymin, xmax, ymax) to show (default: the whole world)."""
+    xmin, ymin, xmax, ymax = view or world.bounds()
     width, height = xmax - xmin, ymax - ymin
     scale = 9.0 / max(width, height)
     fig, ax = plt.subplots(figsize=(max(4.0, width * scale + 1.0), max(3.0, height * scale + 0.8)))

@@ -144,7 +144,7 @@ class VizComponent:
         if self.robot is None:
             return out
         humans_xy = [(h.x, h.y) for h in self.humans.values()]
-        frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles)
+        frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles, now)
         refresh = self._refresh_now or self._last_refresh is None or now - self._last_refresh >= self.config.refresh_period_s
         if refresh:
             self._last_refresh, self._refresh_now = now, False

@@ -135,3 +135,24 @@ def test_a_full_resend_still_carries_the_deletes():
     again = diff.update(cues.markers(robot, battery_level=0.9, toggles=Toggles(path_projection=False)), resend_all=True)
     assert {m.ns for m in again.upsert} == {BATTERY_NS}
     assert len([k for k in again.delete if k[0] == PATH_NS]) == 10
+
+
+def test_turn_signal_shows_the_side_of_a_curve_ahead_before_it_begins():
+    # Straight to x = 3, then an arc to the right (y < 0).
+    poses = shape_path([(0, 0), (4, 0), (7, -2.5)], 0.0, goal_yaw=None)
+    cues = ArCues()
+    cues.set_path(poses)
+    arc_start = next(p.x for p in poses if abs(p.yaw) > 1e-3)
+    lit_at = next(x / 10 for x in range(0, 40) if cues.frame(Pose2D(x / 10, 0.0, 0.0)).state.turn_signal != 0)
+    assert cues.frame(Pose2D(lit_at, 0.0, 0.0)).state.turn_signal == -1
+    assert arc_start - lit_at >= 0.5 * cues.params.signal_lookahead_m  # lit well before the curve
+
+
+def test_turn_signal_has_hysteresis_so_a_wobbling_heading_does_not_flicker():
+    cues = ArCues()
+    cues.set_path(STRAIGHT)
+    # Heading errors around the 11 deg threshold: lit at 12, stays lit down to the 6 deg release.
+    sides = [cues.signal_side(Pose2D(0.5, 0.0, math.radians(-a))) for a in (12, 9, 7, 10, 8, 12, 9)]
+    assert sides == [1] * 7
+    assert cues.signal_side(Pose2D(0.5, 0.0, math.radians(-4))) == 0
+    assert cues.signal_side(Pose2D(0.5, 0.0, math.radians(-9))) == 0  # below the threshold: stays dark

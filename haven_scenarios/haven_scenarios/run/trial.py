@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 from haven_scenarios.record.metrics import compute
@@ -25,9 +25,9 @@ from haven_sim.nav.controller import ControllerComponent
 from haven_sim.nav.mux import MuxComponent
 from haven_sim.nav.planning import PlannerComponent, world_lanes
 from haven_sim.runtime.component import Component
-from haven_sim.runtime.loop import InProcessLoop
+from haven_sim.runtime.loop import DelayFn, InProcessLoop
 from haven_sim.sim.simulator import SimulatorComponent
-from haven_viz.cues import CUES, Toggles
+from haven_viz.cues import CUES, CueParams, Toggles
 from haven_viz.viz import VizComponent
 
 GRACE_S = 60.0  # the loop stops this long after the scenario's timeout even if nothing ended it
@@ -57,7 +57,10 @@ def scenario_suite(scenario: Scenario, seed: int, toggles: Toggles, suite: Suite
     battery = replace(s.sim.sim.battery, capacity_m=scenario.battery.capacity_m)
     sim = replace(s.sim, world=scenario.world_path, sim=replace(s.sim.sim, battery=battery, seed=seed))
     director = replace(s.scenario.director, scenario=scenario.source or scenario.name, seed=seed)
-    viz = replace(s.viz, world=scenario.world_path, toggles=toggles)
+    # The scenario's cue parameters, except where the run's parameter file set one.
+    default, run = CueParams(), s.viz.cues
+    cues = replace(scenario.cues, **{f.name: getattr(run, f.name) for f in fields(CueParams) if getattr(run, f.name) != getattr(default, f.name)})
+    viz = replace(s.viz, world=scenario.world_path, toggles=toggles, cues=cues)
     return replace(s, sim=sim, planner=replace(s.planner, world=scenario.world_path), viz=viz, scenario=replace(s.scenario, director=director))
 
 
@@ -72,7 +75,9 @@ class TrialResult:
 
 
 class Trial:
-    def __init__(self, scenario: Scenario, seed: int = 0, toggles: Toggles | None = None, suite: SuiteConfig | None = None) -> None:
+    def __init__(
+        self, scenario: Scenario, seed: int = 0, toggles: Toggles | None = None, suite: SuiteConfig | None = None, delay: DelayFn | None = None
+    ) -> None:
         self.scenario = scenario
         self.seed = seed
         self.toggles = toggles if toggles is not None else parse_condition(scenario.condition)
@@ -89,7 +94,7 @@ class Trial:
         ]
         self.recording = Recording()
         recorded = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, topics.PLAN, topics.EVENTS)
-        self.loop = InProcessLoop(self.sim, components, [self.recording.add], recorded)
+        self.loop = InProcessLoop(self.sim, components, [self.recording.add], recorded, delay)
 
     def run(self) -> TrialResult:
         step_s = self.sim.config.sim.step_s

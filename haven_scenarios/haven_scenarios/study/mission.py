@@ -159,9 +159,21 @@ class Mission:
                     self.last_only.add(target.id)  # only as the last target: there is no coming back
                     self.current = None
                     continue
+                if target.id in self.last_only and not last:
+                    # Several targets a charged battery serves one way only: one of them can be the
+                    # last; the farthest of the others is skipped.
+                    one_way = [t for t in self.pending if t.id in self.last_only]
+                    far = max(one_way, key=lambda t: self.path_length(self.base, t.xy))  # type: ignore[arg-type]
+                    need_m = sf * (self.path_length(self.base, far.xy) + self.path_length(far.xy, self.base))
+                    self._event(out, EventKind.BATTERY_INSUFFICIENT, target=far.id, need_m=_m(need_m), has_m=_m(full), skipped=True)
+                    self.pending = [t for t in self.pending if t.id != far.id]
+                    self.skipped.append(far.id)
+                    self.current = None
+                    continue
                 home = 0.0 if last else self.path_length(target.xy, self.base)
                 need = sf * (self.path_length((robot.x, robot.y), target.xy) + home)
-                if need > self._range(level):
+                # (Charged as full as it gets, the check from the base above is the one that counts.)
+                if need > self._range(level) and level < self.battery.charge_until - 1e-6:
                     self.current = target
                     self._to_base(out, f"needs {need:.1f} m, has {self._range(level):.1f} m")
                     return

@@ -7,6 +7,7 @@ kind: hallway                  # hallway (room centres in order) | retrieval (ge
 timeout_s: 240
 end_on_contact: false
 condition: [turn_signals]      # the cues shown unless the run says (--condition): all | none | cue names
+cues: {steps_ahead: 5}         # cue parameters (the viz node's; a run's --params-file value wins)
 robot:
   route: [B, C, D, A]          # hallway: room centres in order
   order: nearest               # retrieval: nearest | random (seeded) gem order
@@ -22,16 +23,17 @@ Errors name the file and the key in one line (`ScenarioError`), like world files
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 import yaml
 
+from haven_sim.common.params import build
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_file import load_world
-from haven_viz.cues import CUES
+from haven_viz.cues import CUES, CueParams
 
 KINDS = ("hallway", "retrieval")
 MODELS = ("walker", "blocker", "yielder", "teleop")
@@ -74,6 +76,7 @@ class Scenario:
     dwell_time_s: float = 3.0
     end_on_contact: bool = False
     condition: tuple[str, ...] = ("all",)  # the cues shown unless a run picks a condition
+    cues: CueParams = field(default_factory=CueParams)  # as the scenario file sets them
     source: str = ""
 
 
@@ -118,7 +121,7 @@ def _parse(data: Any, source: str) -> Scenario:
 class _ScenarioParser:
     """Reads the raw YAML tree; every error names the file and the key in one line."""
 
-    TOP = ("name", "world", "kind", "timeout_s", "end_on_contact", "condition", "robot", "humans", "dwell_time_s")
+    TOP = ("name", "world", "kind", "timeout_s", "end_on_contact", "condition", "cues", "robot", "humans", "dwell_time_s")
 
     def __init__(self, source: str) -> None:
         self.source = source
@@ -195,6 +198,7 @@ class _ScenarioParser:
             dwell_time_s=self.positive(d.get("dwell_time_s", 3.0), "dwell_time_s"),
             end_on_contact=end_on_contact,
             condition=self.condition(d.get("condition", ["all"])),
+            cues=self.cues(d.get("cues")),
             source=self.source,
         )
 
@@ -206,6 +210,14 @@ class _ScenarioParser:
             if name not in known:
                 raise self.fail(f"condition[{i}]", f"is no cue (known: {', '.join(known)}), got {_short(name)}")
         return tuple(value)
+
+    def cues(self, value: Any) -> CueParams:
+        known = tuple(f.name for f in fields(CueParams))
+        values = self.mapping(value, "cues", known)
+        try:
+            return build(CueParams, values, where="cues.")
+        except ValueError as e:
+            raise self.fail("cues", str(e).removeprefix("cues.")) from None
 
     def battery(self, value: Any, world: World) -> BatteryPlan:
         b = self.mapping(value, "robot.battery", ("mode", "capacity_m", "charge_until", "safety_factor"))

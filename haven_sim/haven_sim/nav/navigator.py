@@ -30,51 +30,18 @@ import numpy as np
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
-from haven_sim.common.params import param
 from haven_sim.common.polyline import Polyline
 from haven_sim.nav.lanes import Lane, onto_lanes
 from haven_sim.nav.motion_style import MotionStyle
+from haven_sim.nav.navigator_params import NavigatorParams
+from haven_sim.nav.passing import beside, normal_at, offset_from, room_beside
 from haven_sim.nav.path_style import ShapeParams, shape_path
 from haven_sim.nav.people_map import with_people
 from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError
 from haven_sim.sim.occupancy import OccupancyGridData
 
 REPLAN_RETRY_S = 2.0
-
-
-@dataclass(frozen=True)
-class NavigatorParams:
-    pass_start_m: float = param(
-        4.0,
-        "start passing a person on the path this far ahead, along it (about the far edge of Hall's social zone, 3.6 m, plus the robot's reaction)",
-    )
-    pass_clearance_m: float = param(0.3, "preferred gap between the robot's and the person's bodies when passing")
-    min_pass_clearance_m: float = param(0.15, "passing needs at least this gap; otherwise the robot waits")
-    pass_angle_deg: float = param(30.0, "heading change of the curve out to the passing line and back")
-    signal_lead_m: float = param(1.0, "straight driven before the curve so that the turn signal shows first")
-    wait_gap_m: float = param(1.2, "a person who cannot be passed makes the robot stop this far before them, along the path (Hall's personal zone)")
-    path_clearance_m: float = param(0.1, "a person within body radii + this of the upcoming path blocks it")
-    diverge_m: float = param(0.15, "off the route by more than this, the robot is on a detour")
-    goal_tolerance_m: float = param(0.1, "the goal counts as reached this close")
-    use_goal_yaw: bool = param(True, "rotate to the goal's orientation at the end")
-
-    def __post_init__(self) -> None:
-        for name in (
-            "pass_start_m",
-            "pass_clearance_m",
-            "min_pass_clearance_m",
-            "signal_lead_m",
-            "wait_gap_m",
-            "path_clearance_m",
-            "diverge_m",
-            "goal_tolerance_m",
-        ):
-            if getattr(self, name) < 0:
-                raise ValueError(f"{name} must not be negative, got {getattr(self, name)}")
-        if not 5.0 <= self.pass_angle_deg <= 60.0:
-            raise ValueError(f"pass_angle_deg must be within [5, 60] (beyond 60 the robot rotates in place), got {self.pass_angle_deg}")
-        if self.min_pass_clearance_m > self.pass_clearance_m:
-            raise ValueError("min_pass_clearance_m must not exceed pass_clearance_m")
+ONCOMING_MPS = 0.2  # a person coming toward the robot faster than this along its path is oncoming
 
 
 class NavState(Enum):
@@ -140,6 +107,8 @@ class Navigator:
         self._route_s = 0.0  # arc length reached along `route`
         self._back_s = math.inf  # arc length along a detour where it turns back to the route
         self._replan_tried_at = -math.inf
+        self._seen: tuple[float, list[Point], Point] | None = None  # (when, the people, the robot) at this check
+        self._before: tuple[float, list[Point], Point] | None = None  # ... and at the one before
 
     def set_map(self, grid: OccupancyGridData) -> None:
         self.grid = grid
@@ -195,27 +164,15 @@ class Navigator:
         if len(self.route) >= 2:
             self._route_s = max(self._route_s, self.route.project(robot.x, robot.y, self._route_s, self._route_s + 16.0).s)
 
-    def _on_path(self, line: Polyline, s_from: float, humans: Sequence[Point]) -> _OnPath | None:
-        """The person ahead on `line` (from arc length `s_from`) that the robot meets first."""
+    def _on_path(self, line: Polyline, s_from: float, humans: Sequence[Point], within: float | None = None) -> _OnPath | None:
+        """The person ahead on `line` (from arc length `s_from`; closer to it than `within`, by
+        default the "on the path" distance) that the robot meets first."""
         best: _OnPath | None = None
         for h in humans:
             proj = line.project(h[0], h[1], s_from)
-            if proj.distance < self.block_distance_m and proj.s > s_from + 1e-6 and (best is None or proj.s < best.s):
-                best = _OnPath(proj.s, self._signed_offset(line, proj.s, h), h)
+            if proj.distance < (within or self.block_distance_m) and proj.s > s_from + 1e-6 and (best is None or proj.s < best.s):
+                best = _OnPath(proj.s, offset_from(line, proj.s, h), h)
         return best
-
-    @staticmethod
-    def _normal(line: Polyline, s: float) -> Point:
-        """Unit vector to the left of `line` at arc length s."""
-        i = line.moving_segment_at(s)
-        d = line.points[i + 1] - line.points[i]
-        n = math.hypot(d[0], d[1]) or 1.0
-        return (-d[1] / n, d[0] / n)
-
-    def _signed_offset(self, line: Polyline, s: float, p: Point) -> float:
-        q = line.point_at(s)
-        n = self._normal(line, s)
-        return (p[0] - q[0]) * n[0] + (p[1] - q[1]) * n[1]
 
     def update(self, robot: Pose2D, humans: Sequence[Point], now: float) -> NavOutput:
         out = NavOutput()
@@ -225,6 +182,8 @@ class Navigator:
             self.state = NavState.IDLE
             return out
         self._advance(robot)
+        seen, self._seen = self._seen, (now, list(humans), (robot.x, robot.y))
+        self._before = seen
         person = self._on_path(self._line, self._progress, humans)
         if person is None:
             if self.state is NavState.DETOUR and self._progress < self._back_s:
@@ -233,12 +192,15 @@ class Navigator:
                 self._resume(out, now)
             return out
         gap = person.s - self._progress
-        if gap > self.params.pass_start_m:
+        towards, ahead = self._speeds(person, robot, humans, now)
+        if gap > self.params.pass_start_m and gap > self.params.pass_start_s * max(0.0, towards + ahead):
             if self.state is NavState.WAITING:
                 self._resume(out, now)
             return out
-        # A person close ahead on the path: pass them if there is room, else wait when near.
-        passing = self._pass(robot, person, humans) or self._replan_around(robot, person, humans, now)
+        # A person close ahead on the path: pass them if there is room, else wait when near. One
+        # standing at the robot's next stop cannot be passed (no way back onto the route after them).
+        at_stop = self.route.length - self.route.project(*person.xy).s < self._past + 0.05
+        passing = None if at_stop else self._pass(robot, person, humans, towards > ONCOMING_MPS) or self._replan_around(robot, person, humans, now)
         if passing is not None:
             if self.state is NavState.WAITING:
                 out.waiting = False
@@ -258,13 +220,25 @@ class Navigator:
                 )
             )
             return out
-        at_stop = self.route.length - self.route.project(*person.xy).s < self._need(self.params.min_pass_clearance_m)
         if (gap <= self.params.wait_gap_m or at_stop and gap <= self.params.wait_gap_m + 1.0) and self.state is not NavState.WAITING:
             reason = "human at the robot's next stop" if at_stop else "human on the path and no room to pass"
             self.state = NavState.WAITING
             out.waiting = True
             out.events.append(self._event(EventKind.WAITING, now, reason=f"{reason}, {gap:.1f} m ahead", human=_xy(person.xy)))
         return out
+
+    def _speeds(self, person: _OnPath, robot: Pose2D, humans: Sequence[Point], now: float) -> tuple[float, float]:
+        """(the person's speed toward the robot, the robot's speed), along the path there, from the
+        last check (zeros at the first)."""
+        seen = self._before
+        if seen is None or now <= seen[0] or len(seen[1]) != len(humans):
+            return 0.0, 0.0
+        dt = now - seen[0]
+        (px, py), (rx, ry) = seen[1][list(humans).index(person.xy)], seen[2]
+        n = normal_at(self._line, person.s)
+        tx, ty = n[1], -n[0]  # the path's direction there
+        towards = -((person.xy[0] - px) * tx + (person.xy[1] - py) * ty) / dt
+        return towards, ((robot.x - rx) * tx + (robot.y - ry) * ty) / dt
 
     def _resume(self, out: NavOutput, now: float) -> None:
         self.state = NavState.DETOUR if self.active is not self.original else NavState.FOLLOWING
@@ -276,42 +250,38 @@ class Navigator:
         """Centre-to-centre lateral distance that leaves `clearance` between robot and person."""
         return HUMAN_BODY.radius_m + self.planner_params.body_radius_m + clearance
 
-    def _room(self, at: Point, normal: Point) -> float:
-        """How far the robot's centre may move from `at` along `normal` (walls and margin off)."""
-        return self.planner.free_run(at, normal) - self.planner_params.inflation_m
+    @property
+    def _past(self) -> float:
+        """How far beyond a person, along the route, the passing line is held."""
+        return self._need(self.params.pass_clearance_m) + HUMAN_BODY.radius_m
 
-    def _offset_at(self, p: Point) -> float:
-        """The active path's signed lateral offset from the route beside point p."""
-        proj = self._line.project(p[0], p[1], self._progress)
-        return self._signed_offset(self.route, self.route.project(*proj.point).s, proj.point)
-
-    def _pass(self, robot: Pose2D, person: _OnPath, humans: Sequence[Point]) -> _Detour | None:
+    def _pass(self, robot: Pose2D, person: _OnPath, humans: Sequence[Point], oncoming: bool = False) -> _Detour | None:
         """Figure 3: a curve out to a line beside the person on the side with room, held past
         them, and a curve back to the route; None if it does not fit."""
         p = self.params
         route = self.route
         s_r = self._route_s
         s_h = route.project(*person.xy).s
-        e = self._signed_offset(route, s_h, person.xy)
-        at = route.point_at(s_h)
-        n = self._normal(route, s_h)
-        room = {"left": self._room(at, n), "right": self._room(at, (-n[0], -n[1]))}
+        e = offset_from(route, s_h, person.xy)
+        around = (s_h - self._past, s_h + self._past)
+        room = {side: room_beside(route, self.planner, *around, sign) for side, sign in (("left", 1.0), ("right", -1.0))}
         lateral = {
             "left": min(room["left"], e + self._need(p.pass_clearance_m)),
             "right": -min(room["right"], -e + self._need(p.pass_clearance_m)),
         }
         fits = {side: abs(lateral[side] - e) >= self._need(p.min_pass_clearance_m) - 1e-9 for side in lateral}
-        # The side with more room beside the person (the right on a tie, as people keep right); a
+        # Someone coming the other way is passed on the right, as people keep right (they do the
+        # same); someone standing on the side with more room beside them (the right on a tie). A
         # detour keeps its side while that still fits.
-        beside = {"left": room["left"] - e, "right": room["right"] + e}
-        order = sorted(("right", "left"), key=lambda side: -round(beside[side], 2))
+        free = {"left": room["left"] - e, "right": room["right"] + e}
+        order = ["right", "left"] if oncoming else sorted(("right", "left"), key=lambda side: -round(free[side], 2))
         if self.state is NavState.DETOUR and self.side in order:
             order.remove(self.side)
             order.insert(0, self.side)
-        here = self._signed_offset(route, s_r, (robot.x, robot.y))
+        here = offset_from(route, s_r, (robot.x, robot.y))
         tan = math.tan(math.radians(p.pass_angle_deg))
         steep = math.tan(min(self.style.arc_max_angle_rad * 0.9, math.radians(55.0)))
-        past = self._need(p.pass_clearance_m) + HUMAN_BODY.radius_m
+        past = self._past
         for side in order:
             if not fits[side]:
                 continue
@@ -327,40 +297,37 @@ class Navigator:
             s_a, s_b = s_r + lead, s_r + lead + out_len
             s_c = s_h + past
             s_d = s_c + abs(y) / tan
-            if s_c >= route.length - 0.05:
-                continue  # the person is at the robot's next stop: no way back to the route
             pts: list[Point] = [(robot.x, robot.y)]
             if lead > 0.05:
-                pts.append(self._beside(s_a, here))
-            pts += [self._beside(s_b, y), self._beside(s_c, y)]
+                pts.append(beside(self.route, s_a, here))
+            pts += [beside(self.route, s_b, y), beside(self.route, s_c, y)]
             if s_d < route.length - 0.05:
                 pts.append(route.point_at(s_d))
             pts += [(float(x), float(yy)) for (x, yy), c in zip(route.points, route.cumulative) if c > min(s_d, route.length - 0.05) + 1e-6]
             if not self._clear(pts, humans):
                 continue
             poses = self._shape(pts, robot)
-            back_s = float(Polyline(poses).project(*self._beside(s_c, y)).s)
+            back_s = float(Polyline(poses).project(*beside(self.route, s_c, y)).s)
             return _Detour(poses, side, back_s, abs(y - e) - self._need(0.0))
         return None
 
-    def _beside(self, s: float, offset: float) -> Point:
-        q = self.route.point_at(s)
-        n = self._normal(self.route, s)
-        return (q[0] + n[0] * offset, q[1] + n[1] * offset)
-
-    def _clear(self, pts: Sequence[Point], humans: Sequence[Point]) -> bool:
-        """Every leg free of walls, and every person further than the "on the path" distance."""
+    def _clear(self, pts: Sequence[Point], humans: Sequence[Point], by: float | None = None) -> bool:
+        """Every leg free of walls, and every person further than `by` (default: the "on the path"
+        distance)."""
         a, b = np.array(pts[:-1]), np.array(pts[1:])
         if not self.planner.visible(a, b).all():
             return False
         line = Polyline(pts)
-        return all(line.project(h[0], h[1]).distance >= self.block_distance_m for h in humans)
+        return all(line.project(h[0], h[1]).distance >= (by or self.block_distance_m) for h in humans)
 
     def _maybe_revert(self, robot: Pose2D, humans: Sequence[Point], now: float, out: NavOutput) -> None:
-        """The person left the route or is passed: back to the centre line, as HAVEN's robot did."""
-        if self._on_path(self.route, self._route_s, humans) is not None:
+        """The person left the route or is passed: back to the centre line, as HAVEN's robot did.
+        "Left" means far enough aside that the robot passes them with `pass_clearance_m` on the
+        centre line; nearer than that, the robot keeps its passing line."""
+        passing = self._need(self.params.pass_clearance_m)
+        if self._on_path(self.route, self._route_s, humans, within=passing) is not None:
             return
-        here = self._signed_offset(self.route, self._route_s, (robot.x, robot.y))
+        here = offset_from(self.route, self._route_s, (robot.x, robot.y))
         if abs(here) <= self.params.diverge_m:  # not off the route yet: follow it again as it was
             self._follow(self.original, NavState.FOLLOWING)
             self._progress = self._line.project(robot.x, robot.y).s
@@ -372,7 +339,7 @@ class Navigator:
         if s_d < self.route.length - 0.05:
             pts.append(self.route.point_at(s_d))
         pts += [(float(x), float(y)) for (x, y), c in zip(self.route.points, self.route.cumulative) if c > min(s_d, self.route.length - 0.05) + 1e-6]
-        if not self._clear(pts, humans):
+        if not self._clear(pts, humans, by=passing):
             return
         poses = self._shape(pts, robot)
         self._follow(poses, NavState.FOLLOWING)
@@ -389,7 +356,7 @@ class Navigator:
             return None
         self._replan_tried_at = now
         human = person.xy
-        n = self._normal(self._line, person.s)
+        n = normal_at(self._line, person.s)
         room_left = self.planner.free_run(human, n)
         room_right = self.planner.free_run(human, (-n[0], -n[1]))
         side = "left" if room_left >= room_right else "right"

@@ -21,7 +21,8 @@ from haven_sim.common.params import group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.nav.lanes import Lane
 from haven_sim.nav.motion_style import MotionStyle
-from haven_sim.nav.navigator import Navigator, NavigatorParams, NavOutput
+from haven_sim.nav.navigator import Navigator, NavOutput
+from haven_sim.nav.navigator_params import NavigatorParams
 from haven_sim.nav.path_style import ShapeParams
 from haven_sim.nav.planner import PlannerParams
 from haven_sim.runtime.component import Handler, Message

@@ -7,6 +7,8 @@ Every message goes through the same value changes a ROS message round trip makes
 
 from __future__ import annotations
 
+import heapq
+import itertools
 from collections.abc import Callable, Collection, Sequence
 
 from haven_sim.common.events import Event, Sequencer
@@ -16,13 +18,24 @@ from haven_sim.runtime.wire import on_the_wire
 from haven_sim.sim.simulator import SimulatorComponent
 
 Observer = Callable[[Message], None]
+DelayFn = Callable[[str], float]  # topic -> seconds its next message is held back
 
 
 class InProcessLoop:
     def __init__(
-        self, sim: SimulatorComponent, components: Sequence[Component], observers: Sequence[Observer] = (), observed: Collection[str] = ()
+        self,
+        sim: SimulatorComponent,
+        components: Sequence[Component],
+        observers: Sequence[Observer] = (),
+        observed: Collection[str] = (),
+        delay: DelayFn | None = None,
     ) -> None:
-        """`observers` see every message on the `observed` topics, as received (a recorder, say)."""
+        """`observers` see every message on the `observed` topics, as received (a recorder, say).
+        `delay(topic)` holds each message on a topic back for that many seconds of sim time, as a
+        loaded machine's transport would (0: delivered in the same step)."""
+        self.delay = delay
+        self._held: list[tuple[float, int, Message, bool]] = []  # (due, order, message, to the simulator)
+        self._order = itertools.count()
         self.sim = sim
         self.components = list(components)
         self.observers = list(observers)
@@ -44,14 +57,28 @@ class InProcessLoop:
         for sent in messages:
             data = self.sequencer.number(sent.data) if isinstance(sent.data, Event) else sent.data
             m = Message(sent.topic, on_the_wire(sent.topic, data), sent.stamp)
-            if m.topic in self.observed:
-                for observer in self.observers:
-                    observer(m)
-            for c in self.components:
-                if m.topic in self._handlers[c.name]:
-                    self._inbox[c.name].append(m)
-            if to_sim and m.topic in self._sim_handlers:
-                self._sim_handlers[m.topic](m.data, m.stamp)
+            late = self.delay(m.topic) if self.delay is not None else 0.0
+            if late > 0.0:
+                heapq.heappush(self._held, (self.sim.sim.time + late, next(self._order), m, to_sim))
+                continue
+            self._deliver(m, to_sim)
+
+    def _release(self) -> None:
+        """Deliver the held messages that are due."""
+        now = self.sim.sim.time + 1e-9
+        while self._held and self._held[0][0] <= now:
+            _, _, m, to_sim = heapq.heappop(self._held)
+            self._deliver(m, to_sim)
+
+    def _deliver(self, m: Message, to_sim: bool) -> None:
+        if m.topic in self.observed:
+            for observer in self.observers:
+                observer(m)
+        for c in self.components:
+            if m.topic in self._handlers[c.name]:
+                self._inbox[c.name].append(m)
+        if to_sim and m.topic in self._sim_handlers:
+            self._sim_handlers[m.topic](m.data, m.stamp)
 
     def publish(self, messages: Sequence[Message]) -> None:
         """Messages from outside the loop (a study condition set by the caller, say)."""
@@ -59,6 +86,7 @@ class InProcessLoop:
 
     def step(self) -> None:
         k, now = self.sim.sim.steps, self.sim.sim.time
+        self._release()
         self._route(self.sim.sense(), to_sim=False)
         acting = set(self.schedule.acting(k))
         produced: list[Message] = []
