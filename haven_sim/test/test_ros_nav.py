@@ -96,16 +96,16 @@ def test_unreachable_goal_is_refused_with_an_event(ros):
     assert "frame 'base_link'" in events_of(events, EventKind.PLAN_REFUSED)[1]["reason"]
 
 
-def corridor_world(tmp_path, human):
+def corridor_world(tmp_path, human, width=3.0):
     data = {
         "name": "corridor",
         "walls": [
             {"segment": [[0, 0], [12, 0]], "thickness": 0.1},
-            {"segment": [[12, 0], [12, 3]], "thickness": 0.1},
-            {"segment": [[12, 3], [0, 3]], "thickness": 0.1},
-            {"segment": [[0, 3], [0, 0]], "thickness": 0.1},
+            {"segment": [[12, 0], [12, width]], "thickness": 0.1},
+            {"segment": [[12, width], [0, width]], "thickness": 0.1},
+            {"segment": [[0, width], [0, 0]], "thickness": 0.1},
         ],
-        "robot": {"start": [1.0, 1.5, 0.0]},
+        "robot": {"start": [1.0, width / 2, 0.0]},
         "humans": [{"id": "h1", "start": list(human)}],
     }
     path = tmp_path / "corridor.yaml"
@@ -113,23 +113,26 @@ def corridor_world(tmp_path, human):
     return str(path)
 
 
-@pytest.mark.parametrize("human,expected", [((2.8, 1.5, 3.14), EventKind.WAITING), ((6.0, 1.25, 3.14), EventKind.REPLANNED)])
-def test_human_on_the_path_makes_the_robot_wait_or_detour(ros, tmp_path, human, expected):
+# A 1.6 m corridor leaves no room beside a person: the robot waits. In 3 m it passes them.
+@pytest.mark.parametrize("human,width,expected", [((4.0, 0.8, 3.14), 1.6, EventKind.WAITING), ((6.0, 1.25, 3.14), 3.0, EventKind.REPLANNED)])
+def test_human_on_the_path_makes_the_robot_wait_or_pass(ros, tmp_path, human, width, expected):
     events = ros.collect(String, "/haven/events", qos.EVENTS)
     waits = ros.collect(Bool, "/haven/wait", qos.LATCHED)
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     goal = ros.node.create_publisher(PoseStamped, "/goal_pose", qos.RELIABLE)
-    start_suite(ros, world=corridor_world(tmp_path, human))
+    start_suite(ros, world=corridor_world(tmp_path, human, width))
     ros.wait_matched(goal)
     ros.wait_for_messages(odom, 5)
-    goal.publish(goal_msg(11.0, 1.5))
+    goal.publish(goal_msg(11.0, width / 2))
     assert ros.spin_until(lambda: events_of(events, expected), 60)
     if expected is EventKind.WAITING:
         assert ros.spin_until(lambda: waits and waits[-1].data, 10)
-        t0 = conv.time_from_msg(odom[-1].header.stamp)
+        assert "no room to pass" in events_of(events, EventKind.WAITING)[0]["reason"]
+        ros.spin_until(lambda: abs(odom[-1].twist.twist.linear.x) < 0.01, 10)
+        t0, held = conv.time_from_msg(odom[-1].header.stamp), conv.pose_from_msg(odom[-1].pose.pose)
         ros.spin_until(lambda: conv.time_from_msg(odom[-1].header.stamp) > t0 + 3.0, 30)
-        assert conv.pose_from_msg(odom[-1].pose.pose).distance_to((1.0, 1.5)) < 0.05  # held still
-        assert "from the robot" in events_of(events, EventKind.WAITING)[0]["reason"]
+        assert conv.pose_from_msg(odom[-1].pose.pose).distance_to((held.x, held.y)) < 0.05  # held still
+        assert 4.0 - held.x >= 0.8  # before the person (braking from wait_gap_m), not at them
     else:
         assert events_of(events, EventKind.REPLANNED)[0]["side"] == "left"
         assert ros.spin_until(lambda: events_of(events, EventKind.GOAL_REACHED), 120)

@@ -200,7 +200,9 @@ class Navigator:
         # A person close ahead on the path: pass them if there is room, else wait when near. One
         # standing at the robot's next stop cannot be passed (no way back onto the route after them).
         at_stop = self.route.length - self.route.project(*person.xy).s < self._past + 0.05
-        passing = None if at_stop else self._pass(robot, person, humans, towards > ONCOMING_MPS) or self._replan_around(robot, person, humans, now)
+        passing = None if at_stop else self._pass(robot, person, humans, towards > ONCOMING_MPS)
+        if passing is None and not at_stop and gap > self._need(self.params.pass_clearance_m):  # not round someone at arm's length
+            passing = self._replan_around(robot, person, humans, now)
         if passing is not None:
             if self.state is NavState.WAITING:
                 out.waiting = False

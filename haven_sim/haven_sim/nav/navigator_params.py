@@ -20,7 +20,9 @@ class NavigatorParams:
     min_pass_clearance_m: float = param(0.15, "passing needs at least this gap; otherwise the robot waits")
     pass_angle_deg: float = param(30.0, "heading change of the curve out to the passing line and back")
     signal_lead_m: float = param(0.6, "straight driven before the curve so that the turn signal shows first")
-    wait_gap_m: float = param(1.2, "a person who cannot be passed makes the robot stop this far before them, along the path (Hall's personal zone)")
+    wait_gap_m: float = param(
+        1.2, "a person who cannot be passed makes the robot brake this close ahead along the path (Hall's personal zone; it rests a little nearer)"
+    )
     path_clearance_m: float = param(0.1, "a person within body radii + this of the upcoming path blocks it")
     diverge_m: float = param(0.15, "off the route by more than this, the robot is on a detour")
     goal_tolerance_m: float = param(0.1, "the goal counts as reached this close")
