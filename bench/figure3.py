@@ -50,11 +50,13 @@ def main() -> None:
     x = float(np.mean(tl.robot_xy[span, 0]))
     lead, closest = m["pass_signal_lead_s_median"], m["min_human_distance_m"]
     title = (
-        f"Figure 3: a person on the centre line {passed['gap_m']:.1f} m ahead; the robot lights its {side} signal, "
+        f"Figure 3: a person on the centre line {passed['gap_m']:.1f} m ahead; the robot lights its {side} signal,\n"
         f"curves {side} {lead:.1f} s later, and passes {closest:.2f} m from them (centre to centre)"
     )
+    k = int(np.argmin(np.hypot(*(tl.humans["h1"] - tl.robot_xy).T)))
+    points = [(*tl.humans["h1"][k], "h1 when passed", "tab:red"), (*tl.robot_xy[k], "robot then", "tab:blue")]
     view = (x - 5.5, -0.2, x + 5.5, 4.2)
-    out = render_scene(trial.scenario.world, world_markers(trial.scenario.world) + markers, args.out, title, trails, view=view)
+    out = render_scene(trial.scenario.world, world_markers(trial.scenario.world) + markers, args.out, title, trails, points, view=view)
     print(f"pass at t={passed.stamp - t0:.1f} s, side {side}, signal lead {lead} s, planned clearance {passed['clearance_m']} m")
     print(f"closest approach {closest} m centre to centre; picture at t={when - t0:.1f} s: {out}")
 

@@ -70,3 +70,11 @@ def test_a_yielder_facing_a_robot_that_waits_for_them_walks_on_past_it():
     person, poses = walk("yielder", [Stop(9.0, 1.0)], 30.0, robot_at=robot)
     assert person.done
     assert min(math.hypot(p.x - robot.x, p.y - robot.y) for p in poses) > 0.4  # past it, keeping clear
+
+
+def test_a_stop_the_robot_stands_on_counts_as_reached_from_beside_it_no_deadlock():
+    """Defect: the robot waited for a person who waited for the robot to leave a room's centre."""
+    stops = [Stop(5.0, 3.0, reach_m=0.3), Stop(8.0, 5.0)]
+    person, poses = walk("walker", stops, 30.0)  # the robot starts at (5, 3) and never moves
+    assert person.done
+    assert min(math.hypot(p.x - 5.0, p.y - 3.0) for p in poses) > 0.4  # never on the robot

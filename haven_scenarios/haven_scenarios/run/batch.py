@@ -18,9 +18,13 @@ from haven_viz.cues import Toggles
 
 
 def progress_bar(done: int, total: int, started: float, out: TextIO = sys.stderr) -> None:
+    elapsed = time.monotonic() - started
+    if not out.isatty():  # a log, not a terminal: one line at the end
+        if done == total:
+            out.write(f"{done}/{total} trials in {elapsed:.1f} s\n")
+        return
     width = 30
     filled = int(width * done / max(total, 1))
-    elapsed = time.monotonic() - started
     eta = elapsed / done * (total - done) if done else 0.0
     out.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total} trials  {elapsed:5.1f} s  eta {eta:5.1f} s")
     if done == total:

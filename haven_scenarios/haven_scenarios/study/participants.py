@@ -26,6 +26,7 @@ from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
 
 # How a simulated participant plans their own walks: their body, a little margin, generous snapping.
 CLOSE_ENOUGH_M = 0.3  # a stop the person cannot get nearer to than this (someone beside it) counts as reached
+ROBOT_ON_STOP_M = 0.6  # the robot this close to a stop stands on it
 HUMAN_PLANNER = PlannerParams(safety_margin_m=0.05, snap_radius_m=0.5, body_radius_m=HUMAN_BODY.radius_m)
 
 
@@ -78,10 +79,11 @@ class Walker:
         self._last: tuple[float, Pose2D] | None = None  # (when, the robot's pose) at the last tick
         self._dt = 0.1
         self._others: Sequence[Pose2D] = ()  # the other people, as of this tick
+        self._robot: Pose2D | None = None  # the robot, as of this tick
         self.done = not self.stops
 
     def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D], others: Sequence[Pose2D] = ()) -> Twist2D:
-        self._others = others
+        self._others, self._robot = others, robot
         return self._move(now, me, robot, others, self._desired(now, me, robot, robot_path))
 
     def _desired(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Point:
@@ -131,7 +133,7 @@ class Walker:
             return (0.0, 0.0)
         stop = self.stops[0]
         d = math.hypot(stop.x - me.x, stop.y - me.y)
-        if d <= stop.reach_m or self._arrived_at is not None and d <= CLOSE_ENOUGH_M:
+        if d <= stop.reach_m or self._arrived_at is not None and d <= self._close_enough(stop):
             if self._arrived_at is None:
                 self._arrived_at = now
             if now - self._arrived_at >= stop.dwell_s:
@@ -141,7 +143,7 @@ class Walker:
             return (0.0, 0.0)
         self._arrived_at = None
         if not self._waypoints or self._stuck(now, me):
-            if d <= CLOSE_ENOUGH_M:  # held off the spot (by someone beside it): this is as close as it gets
+            if d <= self._close_enough(stop):  # held off the spot (by someone beside it): this is as close as it gets
                 self._arrived_at = now
                 return (0.0, 0.0)
             if self._contested(stop) and len(self.stops) > 1 and self.rng.random() < 0.5:
@@ -151,6 +153,13 @@ class Walker:
             self._waypoints.pop(0)
         x, y = self._waypoints[0]
         return self._toward(me, x, y, self.speed)
+
+    def _close_enough(self, stop: Stop) -> float:
+        """How near a stop counts once the person is held off it: nearer when a person stands beside
+        it, farther when the robot stands on it (it may be waiting for them: neither would move)."""
+        robot = self._robot
+        held = robot is not None and math.hypot(stop.x - robot.x, stop.y - robot.y) < ROBOT_ON_STOP_M
+        return ROBOT_ON_STOP_M + HUMAN_BODY.radius_m if held else CLOSE_ENOUGH_M
 
     def _contested(self, stop: Stop, near_m: float = 0.8) -> bool:
         return any(math.hypot(stop.x - o.x, stop.y - o.y) < near_m for o in self._others)
