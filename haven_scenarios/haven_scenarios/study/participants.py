@@ -156,9 +156,11 @@ class Walker:
 
     def _close_enough(self, stop: Stop) -> float:
         """How near a stop counts once the person is held off it: nearer when a person stands beside
-        it, farther when the robot stands on it (it may be waiting for them: neither would move)."""
+        it, farther when the robot stands on a stop that is only passed through (a room's centre:
+        the robot may be waiting for them and neither would move). A stop to stand on for a while
+        (a gem) needs the person on it."""
         robot = self._robot
-        held = robot is not None and math.hypot(stop.x - robot.x, stop.y - robot.y) < ROBOT_ON_STOP_M
+        held = robot is not None and stop.dwell_s == 0.0 and math.hypot(stop.x - robot.x, stop.y - robot.y) < ROBOT_ON_STOP_M
         return ROBOT_ON_STOP_M + HUMAN_BODY.radius_m if held else CLOSE_ENOUGH_M
 
     def _contested(self, stop: Stop, near_m: float = 0.8) -> bool:
