@@ -141,11 +141,16 @@ def _specs(folder: Path, lockstep: bool) -> list[ProcessSpec]:
     return [replace(spec, cwd=str(folder.resolve())) for spec in specs]
 
 
+RECORDER_SETTLE_S = 0.5  # after `trial_end`, for the stream messages stamped before it still on their way
+
+
 def _wait_for_recorded_end(events: Path, timeout_s: float) -> None:
-    """Give the recorder a moment to receive the `trial_end` event before everything stops."""
+    """Give the recorder a moment to receive the `trial_end` event, and the stream messages stamped
+    before it (a busy recorder reads the few events ahead of /odom's backlog), before everything stops."""
     deadline = time.monotonic() + timeout_s
     while time.monotonic() < deadline:
         if events.exists() and any(f'"type": "{EventKind.TRIAL_END}"' in line for line in events.read_text().splitlines()):
+            time.sleep(RECORDER_SETTLE_S)
             return
         time.sleep(0.05)
 
