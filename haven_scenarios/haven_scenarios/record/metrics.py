@@ -199,12 +199,16 @@ def signal_lead_times(t: FloatArray, wz: FloatArray, signal: Sequence[int]) -> l
     sig = np.asarray(signal)
     for i in range(1, len(t)):
         if turning[i] and not turning[i - 1]:
-            side = 1 if wz[i] > 0 else -1
-            j = i
-            while j > 0 and sig[j - 1] == side:
-                j -= 1
-            leads.append(float(t[i] - t[j]) if sig[i - 1] == side else 0.0)
+            leads.append(_lit_for(t, sig, i, 1 if wz[i] > 0 else -1))
     return leads
+
+
+def _lit_for(t: FloatArray, sig: Any, i: int, side: int) -> float:
+    """How long the signal on `side` had been lit, without a break, when sample i began (0 if not)."""
+    j = i
+    while j > 0 and sig[j - 1] == side:
+        j -= 1
+    return float(t[i] - t[j])
 
 
 def pass_signal_leads(
@@ -219,10 +223,7 @@ def pass_signal_leads(
         lead = 0.0
         while i < len(t) and t[i] <= when + within_s:
             if wz[i] * side > TURN_RATE_RPS:
-                j = i
-                while j > 0 and sig[j - 1] == side:
-                    j -= 1
-                lead = float(t[i] - t[j])
+                lead = _lit_for(t, sig, i, side)
                 break
             i += 1
         leads.append(lead)

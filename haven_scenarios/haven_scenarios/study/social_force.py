@@ -83,13 +83,14 @@ class SocialForce:
         for b in others:
             fx, fy = self._agent(me, heading, b)
             ax, ay = ax + fx, ay + fy
-        fx, fy = self._walls(me)
+        rays = self._rays(me)
+        fx, fy = self._walls(rays)
         vx, vy = self.v[0] + (ax + fx) * dt, self.v[1] + (ay + fy) * dt
         cap = max(speed0, 0.3) * p.max_speed_factor
         ux, uy, n = _unit(vx, vy)
         if n > cap:
             vx, vy = ux * cap, uy * cap
-        vx, vy = self._hard_rules(me, (vx, vy), others)
+        vx, vy = self._hard_rules(me, (vx, vy), others, rays)
         self.v = (vx, vy)
         return self.v
 
@@ -117,19 +118,25 @@ class SocialForce:
             fy -= p.keep_right * heading[0] * (1.0 - dist / p.oncoming_m)
         return fx, fy
 
-    def _walls(self, me: Point) -> Point:
-        p = self.p
-        fx = fy = 0.0
+    def _rays(self, me: Point) -> list[tuple[float, float, float]]:
+        """(direction x, direction y, gap from my body to the wall) for `RAYS` directions."""
+        out = []
         for k in range(RAYS):
             a = 2.0 * math.pi * k / RAYS
             c, s = math.cos(a), math.sin(a)
-            gap = self.free_run(me, (c, s)) - self.radius
+            out.append((c, s, self.free_run(me, (c, s)) - self.radius))
+        return out
+
+    def _walls(self, rays: Sequence[tuple[float, float, float]]) -> Point:
+        p = self.p
+        fx = fy = 0.0
+        for c, s, gap in rays:
             if gap < p.wall_look_m:
                 mag = p.wall_strength * math.exp(-max(gap, 0.0) / p.wall_range_m) * 4.0 / RAYS
                 fx, fy = fx - mag * c, fy - mag * s
         return fx, fy
 
-    def _hard_rules(self, me: Point, v: Point, others: Sequence[Body]) -> Point:
+    def _hard_rules(self, me: Point, v: Point, others: Sequence[Body], rays: Sequence[tuple[float, float, float]]) -> Point:
         vx, vy = v
         for b in others:
             if not b.robot:
@@ -140,11 +147,9 @@ class SocialForce:
             toward = -(vx * ux + vy * uy)
             if toward > 0:  # drop the part of the motion that closes in on the robot
                 vx, vy = vx + toward * ux, vy + toward * uy
-        for k in range(RAYS):  # slide along walls, never into them
-            a = 2.0 * math.pi * k / RAYS
-            c, s = math.cos(a), math.sin(a)
+        for c, s, gap in rays:  # slide along walls, never into them
             into = vx * c + vy * s
-            if into > 0 and self.free_run(me, (c, s)) - self.radius < self.p.wall_stop_m + into * 0.1:
+            if into > 0 and gap < self.p.wall_stop_m + into * 0.1:
                 vx, vy = vx - into * c, vy - into * s
         return vx, vy
 

@@ -302,16 +302,19 @@ class Navigator:
             pts: list[Point] = [(robot.x, robot.y)]
             if lead > 0.05:
                 pts.append(beside(self.route, s_a, here))
-            pts += [beside(self.route, s_b, y), beside(self.route, s_c, y)]
-            if s_d < route.length - 0.05:
-                pts.append(route.point_at(s_d))
-            pts += [(float(x), float(yy)) for (x, yy), c in zip(route.points, route.cumulative) if c > min(s_d, route.length - 0.05) + 1e-6]
+            pts += [beside(self.route, s_b, y), beside(self.route, s_c, y), *self._rejoin(s_d)]
             if not self._clear(pts, humans):
                 continue
             poses = self._shape(pts, robot)
             back_s = float(Polyline(poses).project(*beside(self.route, s_c, y)).s)
             return _Detour(poses, side, back_s, abs(y - e) - self._need(0.0))
         return None
+
+    def _rejoin(self, s: float) -> list[Point]:
+        """The route from arc length s (where a detour meets it again) to its end."""
+        route, end = self.route, self.route.length - 0.05
+        back = [route.point_at(s)] if s < end else []
+        return back + [(float(x), float(y)) for (x, y), c in zip(route.points, route.cumulative) if c > min(s, end) + 1e-6]
 
     def _clear(self, pts: Sequence[Point], humans: Sequence[Point], by: float | None = None) -> bool:
         """Every leg free of walls, and every person further than `by` (default: the "on the path"
@@ -337,10 +340,7 @@ class Navigator:
             out.events.append(self._event(EventKind.REVERTED, now))
             return
         s_d = self._route_s + abs(here) / math.tan(math.radians(self.params.pass_angle_deg))
-        pts: list[Point] = [(robot.x, robot.y)]
-        if s_d < self.route.length - 0.05:
-            pts.append(self.route.point_at(s_d))
-        pts += [(float(x), float(y)) for (x, y), c in zip(self.route.points, self.route.cumulative) if c > min(s_d, self.route.length - 0.05) + 1e-6]
+        pts: list[Point] = [(robot.x, robot.y), *self._rejoin(s_d)]
         if not self._clear(pts, humans, by=passing):
             return
         poses = self._shape(pts, robot)
