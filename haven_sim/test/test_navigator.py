@@ -108,8 +108,20 @@ def test_human_leaving_before_the_detour_sends_the_robot_back_to_the_original_pa
     sim, nav, follower = setup((7.0, 2.0))
     events = drive_closed_loop(sim, follower, 60.0, nav, walk_away_after(5.5, vy=1.0))  # when the robot is 4 m away
     assert types(events)[:2] == [EventKind.REPLANNED, EventKind.REVERTED]
-    assert nav.active is nav.original
+    assert all(abs(p.y - 1.5) < 1e-6 for p in nav.active[1:])  # on the route again
     assert follower.status is Status.ARRIVED
+
+
+def test_a_revert_goes_on_from_where_the_robot_is_not_from_the_routes_start():
+    """Defect: a revert republished the whole original route, and the robot drove 10 m back to
+    where that route began (hallway_hard, blocker: 8 of 30 seeds)."""
+    sim, nav, follower = setup((9.0, 1.5))
+    side = nav.update(Pose2D(5.5, 1.5, 0.0), [(9.0, 1.5)], 1.0).events[0]["side"]
+    assert nav.state is NavState.DETOUR
+    aside = (9.0, 0.4 if side == "left" else 2.6)  # they stepped away from the detour before the curve
+    out = nav.update(Pose2D(5.6, 1.5, 0.0), [aside], 1.2)
+    assert types(out.events) == [EventKind.REVERTED]
+    assert out.path[0].x == pytest.approx(5.6) and min(p.x for p in out.path) >= 5.6 - 1e-6
 
 
 def test_unreachable_goal_is_refused_with_a_reason():

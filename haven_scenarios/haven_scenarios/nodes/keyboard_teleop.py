@@ -56,13 +56,16 @@ class KeyboardTeleop(Node):
         now = time.monotonic()
         while select.select([sys.stdin], [], [], 0.0)[0]:
             key = sys.stdin.read(1)
-            if key == "x":
+            if key in ("x", ""):  # x, or the terminal is gone (end of input): stop
                 raise SystemExit(0)
             self.keys.press(key, now)
         self.pub.publish(conv.twist_msg(self.keys.command(now)))
 
     def destroy_node(self) -> None:
-        termios.tcsetattr(sys.stdin, termios.TCSADRAIN, self._saved)
+        try:
+            termios.tcsetattr(sys.stdin, termios.TCSADRAIN, self._saved)
+        except (termios.error, OSError):
+            pass  # the terminal is gone: nothing to restore
         super().destroy_node()
 
 

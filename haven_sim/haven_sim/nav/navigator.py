@@ -41,6 +41,7 @@ from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError
 from haven_sim.sim.occupancy import OccupancyGridData
 
 REPLAN_RETRY_S = 2.0
+REJOIN_MIN_M = 0.3  # a return to the route meets it at least this far ahead
 ONCOMING_MPS = 0.2  # a person coming toward the robot faster than this along its path is oncoming
 
 
@@ -333,13 +334,9 @@ class Navigator:
         if self._on_path(self.route, self._route_s, humans, within=passing) is not None:
             return
         here = offset_from(self.route, self._route_s, (robot.x, robot.y))
-        if abs(here) <= self.params.diverge_m:  # not off the route yet: follow it again as it was
-            self._follow(self.original, NavState.FOLLOWING)
-            self._progress = self._line.project(robot.x, robot.y).s
-            out.path = self.original
-            out.events.append(self._event(EventKind.REVERTED, now))
-            return
-        s_d = self._route_s + abs(here) / math.tan(math.radians(self.params.pass_angle_deg))
+        # Back onto the route at the passing angle (a robot not off it yet just goes on along it),
+        # as a path from where the robot is: never the whole route again from its start.
+        s_d = self._route_s + max(abs(here) / math.tan(math.radians(self.params.pass_angle_deg)), REJOIN_MIN_M)
         pts: list[Point] = [(robot.x, robot.y), *self._rejoin(s_d)]
         if not self._clear(pts, humans, by=passing):
             return
