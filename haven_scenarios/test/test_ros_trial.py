@@ -14,7 +14,9 @@ import time
 import pytest
 from independent_scorer import score
 from mcap.reader import make_reader
+from rclpy.qos import QoSProfile, ReliabilityPolicy
 from ros_harness import tracebacks
+from rosgraph_msgs.msg import Clock
 
 from haven_scenarios.run.trial import parse_condition, run_trial
 from haven_scenarios.study.scenario import load_scenario
@@ -159,6 +161,9 @@ def test_ctrl_c_mid_trial_leaves_a_readable_bag(ros, tmp_path):
             break
         time.sleep(0.2)
     assert events is not None, "the trial never got going"
+    # Interrupt after some simulated time has passed, however slowly this machine runs the trial.
+    clock = ros.collect(Clock, "/clock", QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT))
+    assert ros.spin_until(lambda: bool(clock) and clock[-1].clock.sec >= 2, timeout_s=60), "the clock never reached 2 s"
     os.killpg(proc.pid, signal.SIGINT)
     out, err = proc.communicate(timeout=60)
     folder = events.parent
