@@ -2,6 +2,10 @@
 
 from dataclasses import replace
 
+import json
+
+import pytest
+
 from haven_scenarios.study.director import TrialDirector
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import load_scenario
@@ -33,7 +37,7 @@ def test_starts_only_when_allowed_and_sends_the_first_goal():
     d = TrialDirector(load_scenario("hallway"))
     d.start_allowed = False
     ready(d)
-    assert d.tick(0.0) == []  # held: the node waits for its listeners
+    assert [m.topic for m in d.tick(0.0)] == [topics.TRIAL_STATUS]  # held: the node waits for its listeners
     d.start_allowed = True
     out = d.tick(0.1)
     assert [e.kind for e in by_topic(out, topics.EVENTS)][:2] == [EventKind.TRIAL_START, EventKind.TARGET_SELECTED]
@@ -115,3 +119,55 @@ def test_a_teleoperated_trial_ends_when_the_person_is_done_too():
         events = by_topic(d.tick(t), topics.EVENTS)
     assert [e.kind for e in events][-2:] == [EventKind.TASK_DONE, EventKind.TRIAL_END]
     assert events[-2]["by"] == "h1" and events[-1]["reason"] == EndReason.COMPLETED
+
+
+def status(messages):
+    (text,) = by_topic(messages, topics.TRIAL_STATUS)
+    return json.loads(text)
+
+
+def test_a_held_trial_starts_on_the_researchers_start_and_says_so_on_the_latched_status():
+    d = TrialDirector(load_scenario("hallway"))
+    d.held = True
+    ready(d)
+    assert status(d.tick(0.0))["state"] == "held"
+    assert d.tick(0.1) == []  # the status is sent only when it changes
+    d.on_control("start", 0.15)
+    out = d.tick(0.2)
+    assert EventKind.TRIAL_START in [e.kind for e in by_topic(out, topics.EVENTS)]
+    s = status(out)
+    assert s["state"] == "running" and s["humans"]["h1"] == {"rooms": ["B", "A", "D", "C"], "rooms_done": 0, "next_room": "B", "done": False}
+
+
+@pytest.mark.parametrize(("command", "started", "reason"), [("stop", True, "stopped"), ("abort", True, "aborted"), ("stop", False, "aborted")])
+def test_stop_and_abort_end_the_trial_with_their_reason(command, started, reason):
+    d = TrialDirector(load_scenario("hallway"))
+    d.held = not started
+    ready(d)
+    d.tick(0.0)
+    out = d.on_control(command, 1.0)
+    (end,) = by_topic(out, topics.EVENTS)
+    assert end.kind is EventKind.TRIAL_END and end["reason"] == reason and end["by"] == "researcher"
+    assert d.ended == reason and status(out)["state"] == "ended"
+    assert d.on_control("abort", 2.0) == []  # ended once
+
+
+def test_an_unknown_trial_command_is_refused_in_one_line():
+    with pytest.raises(ValueError, match="unknown trial command 'go' \\(expected start, stop, abort\\)"):
+        TrialDirector(load_scenario("hallway")).on_control("go", 0.0)
+
+
+def test_the_status_shows_a_participants_gems_and_dwell_progress():
+    d = TrialDirector(load_scenario("shared_room"))
+    world = d.scenario.world
+    human_gems = [g for g in world.gems if g.owner == "human"]
+    ready(d, robot=world.robot_start)
+    d.tick(0.0)
+    d.on_humans({"h1": Pose2D(*human_gems[0].position)}, 0.5)
+    d.tick(0.5)
+    out = d.tick(0.5 + d.scenario.dwell_time_s / 2)
+    h1 = status(out)["humans"]["h1"]
+    assert (h1["gems_total"], h1["gems_done"], h1["dwell"]) == (len(human_gems), 0, 0.5)
+    out = d.tick(0.5 + d.scenario.dwell_time_s)
+    h1 = status(out)["humans"]["h1"]
+    assert (h1["gems_done"], h1["dwell"]) == (1, None)

@@ -34,6 +34,7 @@ class ScenarioNode(ComponentNode):
         self.wire(self.director, wire.specs(human_ids=[h.id for h in scenario.world.humans]))
         # On the lockstep clock the simulator starts stepping only when everyone is there.
         self.director.start_allowed = self.lockstep_mode
+        self.director.held = config.hold_start
         self._finished = False
         self.create_timer(self.director.period_s, self._watch)
         self.get_logger().info(f"scenario '{scenario.name}' ({scenario.kind}), seed {c.seed}")

@@ -10,6 +10,7 @@ waits for every listener first), and ends it by the scenario's rules with a `tri
 
 from __future__ import annotations
 
+import json
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
@@ -17,7 +18,7 @@ from typing import Any
 
 from haven_scenarios.study.mission import Mission, MissionOutput, Phase, Target
 from haven_scenarios.study.participants import HUMAN_PLANNER, Participant, Stop, make_walker, shuffled_nearest
-from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules
+from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules, TrialCommand, TrialState
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventKind, Source, event
@@ -49,6 +50,7 @@ class DirectorConfig:
 class ScenarioNodeConfig:
     director: DirectorConfig = group(DirectorConfig)
     wait_for: tuple[str, ...] = param(("planner",), "nodes that must be listening before the trial starts")
+    hold_start: bool = param(False, "the trial starts only on a `start` on /haven/trial_control (the researcher console's Start)")
 
 
 def robot_targets(scenario: Scenario) -> list[Target]:
@@ -98,6 +100,8 @@ class TrialDirector:
         self.seed = seed
         self.rate_hz = rate_hz
         self.start_allowed = True  # the scenario node holds the start until every listener is there
+        self.held = False  # ... and, when told to, until the researcher says start (TrialCommand.START)
+        self._status = ""
         self.planner: GridPlanner | None = None
         self.participants: dict[str, Participant] = {}
         w = scenario.world
@@ -135,11 +139,12 @@ class TrialDirector:
             topics.PLAN: self.on_plan,
             topics.WAIT: self.on_wait,
             topics.EVENTS: self.on_event,
+            topics.TRIAL_CONTROL: self.on_control,
         }
 
     def outputs(self) -> Sequence[str]:
         simulated = [topics.human_cmd_vel(h.id) for h in self.scenario.humans if h.model != "teleop"]
-        return (topics.GOAL, topics.THOUGHT, topics.EVENTS, topics.REMOVE_OBSTRUCTION, *simulated)
+        return (topics.GOAL, topics.THOUGHT, topics.EVENTS, topics.REMOVE_OBSTRUCTION, topics.TRIAL_STATUS, *simulated)
 
     # -- inputs ----------------------------------------------------------------------------------
     def on_map(self, grid: OccupancyGridData, now: float) -> list[Message]:
@@ -187,6 +192,51 @@ class TrialDirector:
             self.contact = True
         return []
 
+    def on_control(self, text: str, now: float) -> list[Message]:
+        """The researcher's start, stop or abort (anything else is refused with a ValueError)."""
+        try:
+            command = TrialCommand(text.strip().lower())
+        except ValueError:
+            raise ValueError(f"unknown trial command {text!r} (expected {', '.join(TrialCommand)})") from None
+        if command is TrialCommand.START:
+            self.held = False
+            return []
+        if self.ended is not None:
+            return []
+        started = self.start_time is not None
+        self.ended = EndReason.STOPPED if command is TrialCommand.STOP and started else EndReason.ABORTED
+        return [self._event(EventKind.TRIAL_END, now, reason=self.ended, by="researcher")] + self._status_messages(now)
+
+    def status(self, now: float) -> dict[str, Any]:
+        """The trial as a participant's page and the researcher console show it (data, not text):
+        its state, how it ended, and each person's task progress."""
+        if self.ended is not None:
+            state = TrialState.ENDED
+        elif self.start_time is not None:
+            state = TrialState.RUNNING
+        else:
+            state = TrialState.HELD if self.held else TrialState.WAITING
+        people: dict[str, dict[str, Any]] = {}
+        for h in self.scenario.humans:
+            if self.scenario.kind == "hallway":
+                route = list(h.route)
+                done = self.routes.progress.get(h.id, 0)
+                people[h.id] = {"rooms": route, "rooms_done": done, "next_room": self.routes.next_room(h.id)}
+            else:
+                total = sum(1 for g in self.gems.gems.values() if g.owner == "human")
+                dwell = self.gems.dwell_progress(h.id, now)
+                people[h.id] = {"gems_total": total, "gems_done": total - len(self.gems.remaining("human")), "dwell": None if dwell is None else round(dwell, 1)}
+            people[h.id]["done"] = h.id in self.humans_done
+        return {"scenario": self.scenario.name, "kind": self.scenario.kind, "state": state, "end_reason": self.ended, "humans": people}
+
+    def _status_messages(self, now: float) -> list[Message]:
+        """/haven/trial_status when it changed (latched: a page that opens late still learns it)."""
+        text = json.dumps(self.status(now), sort_keys=True)
+        if text == self._status:
+            return []
+        self._status = text
+        return [Message(topics.TRIAL_STATUS, text, now)]
+
     # -- the trial ---------------------------------------------------------------------------------
     def path_length(self, a: Point, b: Point) -> float:
         if self.planner is None:
@@ -222,17 +272,19 @@ class TrialDirector:
         if self.start_time is None or self.ended is not None or self.last_tick is None:
             return []
         self.ended = EndReason.INTERRUPTED
-        return [self._event(EventKind.TRIAL_END, self.last_tick, reason=self.ended)]
+        return [self._event(EventKind.TRIAL_END, self.last_tick, reason=self.ended)] + self._status_messages(self.last_tick)
 
     def tick(self, now: float) -> list[Message]:
         self.last_tick = now
-        if self.ended is not None or not self._ready():
-            return []
+        out = self._tick(now) if self.ended is None and self._ready() else []
+        return out + self._status_messages(now)
+
+    def _tick(self, now: float) -> list[Message]:
         mission, robot, level = self.mission, self.robot, self.level
         assert mission is not None and robot is not None and level is not None
         self._observe(now, robot, level)
         if self.start_time is None:
-            if not self.start_allowed:
+            if not self.start_allowed or self.held:
                 return []
             self.start_time = now
             return [self._event(EventKind.TRIAL_START, now, scenario=self.scenario.name)] + self._mission_messages(

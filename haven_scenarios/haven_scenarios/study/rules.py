@@ -42,6 +42,13 @@ class GemRules:
     def remaining(self, owner: str) -> list[Gem]:
         return [g for g in self.gems.values() if g.owner == owner and g.id not in self.collected]
 
+    def dwell_progress(self, human: str, now: float) -> float | None:
+        """How far `human` is through standing in a gem (0..1), None while in none."""
+        since = [t for (_, hid), t in self._dwell.items() if hid == human]
+        if not since or self.dwell_time_s == 0:
+            return None
+        return min(1.0, (now - min(since)) / self.dwell_time_s)
+
     def update(self, now: float, robot: Pose2D, humans: Mapping[str, Pose2D]) -> list[Event]:
         events: list[Event] = []
         target = self.gems.get(self.robot_target or "")
@@ -132,6 +139,25 @@ class EndReason(StrEnum):
     CONTACT = "contact"
     BATTERY_EMPTY = "battery_empty"  # flat off the charging base
     INTERRUPTED = "interrupted"  # stopped before a `trial_end` (Ctrl-C, a node died)
+    STOPPED = "stopped"  # the researcher ended the trial early (the console's stop)
+    ABORTED = "aborted"  # the researcher called the trial off (the console's abort): not for analysis
+
+
+class TrialState(StrEnum):
+    """Where a trial is (/haven/trial_status's `state`)."""
+
+    WAITING = "waiting"  # for the nodes it needs
+    HELD = "held"  # for the researcher's start
+    RUNNING = "running"
+    ENDED = "ended"
+
+
+class TrialCommand(StrEnum):
+    """What /haven/trial_control asks of the trial (the researcher console, `ros2 topic pub`)."""
+
+    START = "start"  # begin a trial held for the researcher (`hold_start`)
+    STOP = "stop"  # end it now: completed as far as it went
+    ABORT = "abort"  # end it now: called off
 
 
 @dataclass(frozen=True)

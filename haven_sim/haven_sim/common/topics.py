@@ -27,6 +27,8 @@ REMOVE_OBSTRUCTION = "haven/remove_obstruction"
 AR_MARKERS = "haven/ar_markers"
 WORLD_MARKERS = "haven/world_markers"
 CUE_STATE = "haven/cue_state"
+TRIAL_STATUS = "haven/trial_status"
+TRIAL_CONTROL = "haven/trial_control"
 
 
 # The simulator's state streams: a reader needs only the newest message (a node that handles them

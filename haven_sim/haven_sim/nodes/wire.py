@@ -72,6 +72,8 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
         topics.THOUGHT: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
         topics.EVENTS: TopicSpec(String, lambda e, _: conv.event_msg(e), conv.event_from_msg, qos.EVENTS_PUB, qos.EVENTS),
         topics.REMOVE_OBSTRUCTION: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
+        topics.TRIAL_STATUS: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
+        topics.TRIAL_CONTROL: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
     }
     if TFMessage is not None:
         table[topics.TF] = TopicSpec(TFMessage, lambda fr, t: conv.tf_msg(t, fr), _unsupported, qos.STREAM, qos.TF)
