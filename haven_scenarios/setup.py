@@ -8,7 +8,7 @@ setup(
     name=package_name,
     version="0.1.0",
     packages=find_packages(exclude=["test"]),
-    package_data={package_name: ["py.typed", "worlds/*.yaml", "scenarios/*.yaml"]},
+    package_data={package_name: ["py.typed", "worlds/*.yaml", "scenarios/*.yaml", "web/static/*"]},
     data_files=[
         ("share/ament_index/resource_index/packages", [f"resource/{package_name}"]),
         (f"share/{package_name}", ["package.xml"]),
@@ -30,6 +30,7 @@ setup(
             "recorder = haven_scenarios.nodes.recorder:main",
             "keyboard_teleop = haven_scenarios.nodes.keyboard_teleop:main",
             "foxglove_bridge = haven_scenarios.nodes.bridge:main",
+            "web_node = haven_scenarios.nodes.web_node:main",
         ],
     },
 )

@@ -1,8 +1,7 @@
 """The trial director as the scenario node runs it: start, goals, control through topics, the end."""
 
-from dataclasses import replace
-
 import json
+from dataclasses import replace
 
 import pytest
 

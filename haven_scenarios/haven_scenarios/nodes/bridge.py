@@ -20,7 +20,8 @@ class Bridge(Node):
         host = self.declare_parameter("host", "127.0.0.1").value
         port = self.declare_parameter("port", 8765).value
         topics = list(self.declare_parameter("topics", [""]).value)
-        self.relay = FoxgloveRelay(host, port)
+        self.relay = FoxgloveRelay()
+        self.relay.serve(host, port)
         self.topics = RawTopics(self, self.relay.add_topic, self._on_message, [t for t in topics if t] or None)
         print(f"bridge: Foxglove WebSocket on ws://{host}:{self.relay.port}", flush=True)
 

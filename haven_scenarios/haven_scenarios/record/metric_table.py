@@ -16,7 +16,7 @@ OURS = "HAVEN for ROS 2"
 # name, unit, definition, source
 METRICS: tuple[tuple[str, str, str, str], ...] = (
     ("scenario", "", "scenario name", OURS),
-    ("end_reason", "", "completed, timeout, contact, battery_empty, stopped or aborted (by the researcher), or interrupted (stopped by Ctrl-C or a signal, or no trial_end)", OURS),
+    ("end_reason", "", "completed, timeout, contact, battery_empty, stopped / aborted (researcher), interrupted (Ctrl-C, no trial_end)", OURS),
     ("duration_s", "s", "trial_end - trial_start", OURS),
     ("robot_time_to_finish_s", "s", "when the robot's task was done (task_done by robot)", HUNAV + ": time to reach goal"),
     ("robot_path_length_m", "m", "length of the robot's track", HUNAV),

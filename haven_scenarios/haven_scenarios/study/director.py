@@ -225,7 +225,8 @@ class TrialDirector:
             else:
                 total = sum(1 for g in self.gems.gems.values() if g.owner == "human")
                 dwell = self.gems.dwell_progress(h.id, now)
-                people[h.id] = {"gems_total": total, "gems_done": total - len(self.gems.remaining("human")), "dwell": None if dwell is None else round(dwell, 1)}
+                done = total - len(self.gems.remaining("human"))
+                people[h.id] = {"gems_total": total, "gems_done": done, "dwell": None if dwell is None else round(dwell, 1)}
             people[h.id]["done"] = h.id in self.humans_done
         return {"scenario": self.scenario.name, "kind": self.scenario.kind, "state": state, "end_reason": self.ended, "humans": people}
 

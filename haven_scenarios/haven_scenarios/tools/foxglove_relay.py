@@ -1,41 +1,104 @@
-"""A Foxglove WebSocket server that relays ROS messages as raw CDR with ros2msg schemas.
+"""Foxglove WebSocket servers that relay ROS messages as raw CDR with ros2msg schemas.
 
 Channels are created per topic with the message definition rosbags generates for this ROS
 distribution (the same text rosbag2 writes into MCAP files), so Foxglove decodes them like a bag.
 The last message of each latched topic (map, plan, world markers, thought) is kept and sent again
 when a client subscribes to it, since a late client would otherwise never see it.
+
+One relay can serve several servers (the channels are shared): `haven bridge` runs one that only
+sends; the study's web pages each get one whose clients may also publish (Foxglove's client-publish
+capability) and, for the researcher console, set parameters, as a `ClientSink` allows.
 """
 
 from __future__ import annotations
 
 import threading
-from typing import Any
+from collections.abc import Sequence
+from typing import Any, Protocol
 
 import foxglove
-from foxglove import Channel, Schema
-from foxglove.websocket import ChannelView, Client, ServerListener
+from foxglove import Channel, Parameter, Schema
+from foxglove.websocket import Capability, ChannelView, Client, ClientChannel, ServerListener, StatusLevel
 
 from haven_scenarios.record.bag import TYPESTORE
 
 
+def msgdef(msgtype: str) -> str:
+    """The ros2msg definition of a type, as rosbag2 writes it (for schemas on both sides)."""
+    text, _ = TYPESTORE.generate_msgdef(msgtype, ros_version=2)
+    return str(text)
+
+
+class ClientSink(Protocol):
+    """What a server's clients may send, and where it goes."""
+
+    def advertised(self, topic: str, schema_name: str) -> str | None:
+        """None to accept a client's channel, else the reason it is refused."""
+
+    def message(self, topic: str, schema_name: str, data: bytes) -> None: ...
+
+    def get_parameters(self, names: list[str]) -> list[Parameter]: ...
+
+    def set_parameters(self, parameters: list[Parameter]) -> list[Parameter]: ...
+
+
 class _Listener(ServerListener):
-    def __init__(self, relay: FoxgloveRelay) -> None:
-        self.relay = relay
+    def __init__(self, relay: FoxgloveRelay, sink: ClientSink | None) -> None:
+        self.relay, self.sink = relay, sink
+        self.accepted: dict[tuple[int, int], tuple[str, str]] = {}  # (client, its channel) -> topic, type
+        self.server: Any = None
 
     def on_subscribe(self, client: Client, channel: ChannelView) -> None:
         self.relay.resend_latched(channel.topic)
 
+    def on_client_advertise(self, client: Client, channel: ClientChannel) -> None:
+        refused = "this server takes no messages" if self.sink is None else self.sink.advertised(channel.topic, channel.schema_name)
+        if refused is None:
+            self.accepted[(client.id, channel.id)] = (channel.topic, channel.schema_name)
+        elif self.server is not None:
+            self.server.publish_status(f"refused: {refused}", StatusLevel.Error)
+
+    def on_client_unadvertise(self, client: Client, client_channel_id: int) -> None:
+        self.accepted.pop((client.id, client_channel_id), None)
+
+    def on_message_data(self, client: Client, client_channel_id: int, data: bytes) -> None:
+        accepted = self.accepted.get((client.id, client_channel_id))
+        if accepted is not None and self.sink is not None:
+            self.sink.message(accepted[0], accepted[1], bytes(data))
+
+    def on_get_parameters(self, client: Client, param_names: list[str], request_id: str | None = None) -> list[Parameter]:
+        return self.sink.get_parameters(param_names) if self.sink is not None else []
+
+    def on_set_parameters(self, client: Client, parameters: list[Parameter], request_id: str | None = None) -> list[Parameter]:
+        return self.sink.set_parameters(parameters) if self.sink is not None else []
+
 
 class FoxgloveRelay:
-    def __init__(self, host: str = "127.0.0.1", port: int = 8765) -> None:
+    def __init__(self) -> None:
         self.channels: dict[str, Channel] = {}
         self.latched: dict[str, tuple[bytes, int] | None] = {}
         self._lock = threading.Lock()
-        self.server: Any = foxglove.start_server(name="haven", host=host, port=port, server_listener=_Listener(self))
+        self.servers: list[Any] = []
+
+    def serve(
+        self, host: str = "127.0.0.1", port: int = 8765, name: str = "haven", sink: ClientSink | None = None, parameters: bool = False
+    ) -> Any:
+        """Start one more server on these channels (port 0: any free port; see `.port`). With a
+        `sink`, its clients may publish (and set parameters, if `parameters`)."""
+        caps: Sequence[Capability] = ()
+        if sink is not None:
+            caps = [Capability.ClientPublish, *([Capability.Parameters] if parameters else [])]
+        listener = _Listener(self, sink)
+        server = foxglove.start_server(
+            name=name, host=host, port=port, capabilities=list(caps), supported_encodings=["cdr"], server_listener=listener
+        )
+        listener.server = server
+        self.servers.append(server)
+        return server
 
     @property
     def port(self) -> int:
-        return int(self.server.port)
+        return int(self.servers[0].port)
 
     def add_topic(self, topic: str, msgtype: str, latched: bool) -> bool:
         """Advertise a channel; False for types this distribution's typestore does not know."""
@@ -43,8 +106,7 @@ class FoxgloveRelay:
             return True
         if msgtype not in TYPESTORE.types:
             return False
-        msgdef, _ = TYPESTORE.generate_msgdef(msgtype, ros_version=2)
-        schema = Schema(name=msgtype, encoding="ros2msg", data=msgdef.encode())
+        schema = Schema(name=msgtype, encoding="ros2msg", data=msgdef(msgtype).encode())
         self.channels[topic] = Channel(topic, schema=schema, message_encoding="cdr")
         if latched:
             self.latched[topic] = None
@@ -63,4 +125,5 @@ class FoxgloveRelay:
             self.channels[topic].log(last[0], log_time=last[1])
 
     def stop(self) -> None:
-        self.server.stop()
+        for server in self.servers:
+            server.stop()

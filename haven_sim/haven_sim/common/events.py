@@ -55,6 +55,9 @@ class EventKind(StrEnum):
     BATTERY_INSUFFICIENT = "battery_insufficient"
     TASK_DONE = "task_done"  # by
     TRIAL_END = "trial_end"  # reason
+    # researcher console (Wizard of Oz)
+    INTERVENTION = "intervention"  # action: thought (text) | drive | drive_end, by
+    PARTICIPANT_READY = "participant_ready"  # by: a participant pressed Start on their page
 
 
 class Source(StrEnum):
@@ -65,6 +68,7 @@ class Source(StrEnum):
     VIZ = "viz"
     SCENARIO = "scenario"
     MISSION = "mission"
+    WEB = "web"  # the study's web pages (participants, researcher console)
 
 
 # Data keys a consumer relies on, checked when an event is read.
@@ -78,6 +82,8 @@ REQUIRED: dict[EventKind, tuple[str, ...]] = {
     EventKind.OBSTRUCTION_CLEARED: ("id",),
     EventKind.TASK_DONE: ("by",),
     EventKind.TRIAL_END: ("reason",),
+    EventKind.INTERVENTION: ("action",),
+    EventKind.PARTICIPANT_READY: ("by",),
 }
 _RESERVED = ("stamp", "source", "type")
 _KINDS = frozenset(k.value for k in EventKind)

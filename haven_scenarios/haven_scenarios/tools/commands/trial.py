@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import socket
 import sys
 import time
 from dataclasses import dataclass, field, replace
@@ -33,6 +34,7 @@ from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenari
 from haven_scenarios.tools.commands.common import add_ros_options, environment, fail, positive, suite_specs
 from haven_scenarios.tools.commands.studies import CONDITION_HELP
 from haven_scenarios.tools.supervisor import Exited, ProcessSpec, Supervisor, node_argv
+from haven_scenarios.web.access import TOKEN_ENV, new_token
 from haven_sim.common.events import EventKind
 from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
 from haven_viz.cues import CUES, Toggles
@@ -63,6 +65,14 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     )
     run.add_argument("--sessions", default="sessions", help="folder for session folders (default: ./sessions)")
     run.add_argument("--params-file", default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
+    web = run.add_argument_group("in the browser")
+    web.add_argument(
+        "--web", action="store_true", help="serve the participants' first-person pages and the researcher console (the URLs are printed)"
+    )
+    web.add_argument("--host", default="127.0.0.1", help="address the pages are served on (0.0.0.0: the lab network; default: this machine)")
+    web.add_argument("--port", type=int, default=8088, help="port of the pages (default 8088)")
+    web.add_argument("--researcher-start", action="store_true", help="the trial starts on the console's Start, not when the participants are ready")
+    web.add_argument("--no-map-inset", action="store_true", help="no map inset on the participants' pages")
     add_ros_options(run)
     run.set_defaults(func=run_cmd)
     rerun = sub.add_parser("rerun", help="run a recorded session again from its folder (same scenario, world, parameters, seed, condition)")
@@ -106,6 +116,7 @@ class SessionPlan:
     rtf: float | None  # None: 1x with a person, uncapped on the lockstep clock
     free_running: bool = False  # simulated participants on the free-running clock
     extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
+    web: WebOptions | None = None  # the pages, with `haven run --web`
 
     @property
     def lockstep(self) -> bool:
@@ -125,7 +136,7 @@ class SessionPlan:
             sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=("viz",), lockstep_wait_for=("recorder",))
         else:
             sim = replace(sim, lockstep_participants=(), lockstep_observers=(), lockstep_wait_for=())
-        scenario = replace(c.scenario, wait_for=("planner", "recorder"))
+        scenario = replace(c.scenario, wait_for=("planner", "recorder"), hold_start=self.web is not None)
         return replace(c, sim=sim, scenario=scenario, lockstep=LockstepParams(self.lockstep))
 
 
@@ -139,6 +150,41 @@ def _specs(folder: Path, lockstep: bool) -> list[ProcessSpec]:
     scenario_node = node_argv("haven_scenarios.nodes.scenario_node", {"use_sim_time": True, **stepped}, params_file=PARAMS_FILE)
     specs = [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
     return [replace(spec, cwd=str(folder.resolve())) for spec in specs]
+
+
+@dataclass(frozen=True)
+class WebOptions:
+    host: str
+    port: int
+    researcher_start: bool = False
+    map_inset: bool = True
+    token: str = field(default_factory=new_token)
+
+
+def _web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
+    params = {
+        "use_sim_time": True,
+        "scenario": SCENARIO_FILE,
+        "humans": "[" + ",".join(h.id for h in plan.scenario.humans if h.model == "teleop") + "]",
+        "host": web.host,
+        "port": web.port,
+        "participant": plan.participant,
+        "session": folder.name,
+        "researcher_start": web.researcher_start,
+        "map_inset": web.map_inset,
+    }
+    return ProcessSpec("web", node_argv("haven_scenarios.nodes.web_node", params), env={TOKEN_ENV: web.token}, cwd=str(folder.resolve()))
+
+
+def port_free(host: str, port: int) -> str | None:
+    """None if the pages' port can be bound, else why not (checked before anything starts)."""
+    try:
+        with socket.socket() as s:
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            s.bind((host, port))
+    except OSError as e:
+        return f"--host {host} --port {port}: {e.strerror}"
+    return None
 
 
 RECORDER_SETTLE_S = 0.5  # after `trial_end`, for the stream messages stamped before it still on their way
@@ -155,7 +201,7 @@ def _wait_for_recorded_end(events: Path, timeout_s: float) -> None:
         time.sleep(0.05)
 
 
-def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path, timeout_s: float) -> Exited | None:
+def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path, timeout_s: float | None) -> Exited | None:
     with Supervisor(environment(args)) as sup:
         sup.install_signal_handlers()
         for spec in specs:
@@ -212,7 +258,10 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
     )
     started = time.monotonic()
     limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
-    exited = _supervise(args, _specs(folder, lockstep), folder, limit)
+    specs = _specs(folder, lockstep)
+    if plan.web is not None:
+        specs.append(_web_spec(plan, plan.web, folder))
+    exited = _supervise(args, specs, folder, None if plan.web is not None else limit)  # the researcher decides when it starts
     wall = time.monotonic() - started
     metrics = _finish(folder, scenario, info, wall)
     print(summary(metrics, wall))
@@ -244,7 +293,13 @@ def run_cmd(args: argparse.Namespace) -> int:
         scenario, toggles, base = _prepare(args)
     except (ScenarioError, ValueError) as e:
         return fail(str(e))
-    plan = SessionPlan(scenario, toggles, args.seed, args.participant, base, args.rtf, args.free_running)
+    web = None
+    if args.web:
+        web = WebOptions(args.host, args.port, args.researcher_start, not args.no_map_inset)
+        busy = port_free(args.host, args.port)
+        if busy:
+            return fail(busy)
+    plan = SessionPlan(scenario, toggles, args.seed, args.participant, base, args.rtf, args.free_running, web=web)
     return run_session(args, plan, Path(args.sessions))
 
 

@@ -1,0 +1,199 @@
+"""Web node: the study in the browser. Participants' first-person pages and the researcher console.
+
+It relays the topics the pages draw (as raw CDR, over one Foxglove WebSocket server per page role,
+on 127.0.0.1) and serves the pages and their sockets through one token-checked address
+(`haven_scenarios.web.front_door`). What pages send comes back through Foxglove's client-publish
+capability and is published only where their role allows (`haven_scenarios.web.access`): a
+participant's velocity on /humans/<id>/cmd_vel; the console's robot driving on /cmd_vel_teleop
+(the velocity mux's teleop input, so the e-stop still wins), the thought text on /haven/thought,
+trial start / stop / abort on /haven/trial_control, and the cue toggles as the viz node's
+parameters. The console's interventions are study events (`haven_scenarios.web.wizard`).
+
+The token comes from the environment (HAVEN_WEB_TOKEN, set by `haven run --web`), else a new one.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import threading
+import time
+from typing import Any
+
+from foxglove import Parameter as FoxgloveParameter
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+from rclpy.parameter_client import AsyncParameterClient
+from rclpy.publisher import Publisher
+from rclpy.serialization import deserialize_message
+from std_msgs.msg import String
+
+from haven_scenarios.nodes.raw_topics import RawTopics
+from haven_scenarios.study.rules import TrialCommand
+from haven_scenarios.study.scenario import load_scenario
+from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
+from haven_scenarios.web.access import CONSOLE, READY, TOKEN_ENV, Role, absolute, new_token, roles, urls
+from haven_scenarios.web.front_door import FrontDoor
+from haven_scenarios.web.page_config import PageSettings, page_config
+from haven_scenarios.web.wizard import StartGate, Wizard
+from haven_sim.common import topics
+from haven_sim.common.events import Event, Sequencer
+from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import wire
+from haven_sim.nodes.runner import run_node
+from haven_viz.cues import CUES
+
+VIZ_NODE = "viz"
+PARAMETER_TIMEOUT_S = 3.0
+RELAYED = tuple(
+    absolute(t)
+    for t in (
+        topics.ODOM,
+        topics.HUMANS,
+        topics.PLAN,
+        topics.THOUGHT,
+        topics.EVENTS,
+        topics.AR_MARKERS,
+        topics.WORLD_MARKERS,
+        topics.CUE_STATE,
+        topics.TRIAL_STATUS,
+    )
+)
+
+
+def parameter_name(cue: str) -> str:
+    """A cue toggle as Foxglove's ROS bridge names node parameters: '/viz.path_projection'."""
+    return f"/{VIZ_NODE}.{cue}"
+
+
+class RoleSink:
+    """A page role's way in: what its clients may publish, and (the console) the cue toggles."""
+
+    def __init__(self, node: WebNode, role: Role) -> None:
+        self.node, self.role = node, role
+
+    def advertised(self, topic: str, schema_name: str) -> str | None:
+        refused = self.role.may_publish(topic, schema_name)
+        if refused:
+            self.node.get_logger().warning(f"page {self.role.name}: {refused}")
+        return refused
+
+    def message(self, topic: str, schema_name: str, data: bytes) -> None:
+        self.node.forward(self.role, topic, data)
+
+    def get_parameters(self, names: list[str]) -> list[FoxgloveParameter]:
+        return self.node.cue_parameters(names) if self.role.parameters else []
+
+    def set_parameters(self, parameters: list[FoxgloveParameter]) -> list[FoxgloveParameter]:
+        if not self.role.parameters:
+            return []
+        return self.node.set_cues({p.name: p.get_value() for p in parameters})
+
+
+class WebNode(Node):
+    def __init__(self) -> None:
+        super().__init__("web")
+        host = str(self.declare_parameter("host", "127.0.0.1").value)
+        port = int(self.declare_parameter("port", 8088).value)
+        humans = [h for h in self.declare_parameter("humans", [""]).value if h]
+        scenario = load_scenario(str(self.declare_parameter("scenario", "hallway").value))
+        researcher_start = bool(self.declare_parameter("researcher_start", False).value)
+        settings = PageSettings(
+            participant=str(self.declare_parameter("participant", "sim").value),
+            session=str(self.declare_parameter("session", "").value),
+            map_inset=bool(self.declare_parameter("map_inset", True).value),
+        )
+        self.roles = roles(humans)
+        self.token = os.environ.get(TOKEN_ENV) or new_token()
+        self.table = wire.specs(human_ids=[h.id for h in scenario.world.humans])
+        self.pubs: dict[str, Publisher] = {}
+        self.sequencer, self.wizard, self._lock = Sequencer(), Wizard(), threading.Lock()
+        self.gate = StartGate(humans, researcher_start)
+        self.events = self._publisher(absolute(topics.EVENTS))
+        self.viz = AsyncParameterClient(self, VIZ_NODE)
+        self.relay = FoxgloveRelay()
+        ports = {}
+        for name, role in self.roles.items():
+            server = self.relay.serve("127.0.0.1", 0, f"haven {name}", RoleSink(self, role), parameters=role.parameters)
+            ports[name] = int(server.port)
+        self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
+        configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
+        self.door = FrontDoor(host, port, self.token, ports, configs.__getitem__)
+        self.door.start()
+        shown = "localhost" if host in ("127.0.0.1", "localhost") else host
+        for name, url in urls(f"http://{shown}:{self.door.port}", self.token, humans).items():
+            print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)
+
+    def _relay(self, topic: str, msgtype: str, data: bytes) -> None:
+        self.relay.publish(topic, data, time.time_ns())
+
+    def _publisher(self, topic: str) -> Publisher:
+        if topic not in self.pubs:
+            spec = self.table[topic.lstrip("/")]
+            self.pubs[topic] = self.create_publisher(spec.msg_type, topic, spec.pub_qos)
+        return self.pubs[topic]
+
+    def now(self) -> float:
+        return self.get_clock().now().nanoseconds * 1e-9
+
+    def _log(self, events: list[Event]) -> None:
+        for e in events:
+            self.events.publish(conv.event_msg(self.sequencer.number(e)))
+
+    def forward(self, role: Role, topic: str, data: bytes) -> None:
+        """A page's message (its role allowed the topic and type when it advertised)."""
+        with self._lock:
+            if topic == READY:  # a participant pressed Start: not a ROS topic, the gate decides
+                events, start = self.gate.ready(role.name, self.now())
+                self._log(events)
+                if start:
+                    self._publisher(absolute(topics.TRIAL_CONTROL)).publish(String(data=TrialCommand.START))
+                return
+            pub = self._publisher(topic)
+            if role.is_console:
+                try:
+                    msg = deserialize_message(data, pub.msg_type)
+                except Exception:  # noqa: BLE001 - bad bytes from a page: drop them, say so
+                    self.get_logger().warning(f"console: undecodable message on {topic}", throttle_duration_sec=5.0)
+                    return
+                if topic == absolute(topics.CMD_VEL_TELEOP):
+                    self._log(self.wizard.drive(conv.twist_from_msg(msg), self.now()))
+                elif topic == absolute(topics.THOUGHT):
+                    self._log(self.wizard.thought(str(msg.data), self.now()))
+            pub.publish(data)
+
+    # -- the cue toggles (the console; Foxglove's Parameters panel) ---------------------------------
+    def _wait(self, future: Any) -> Any:
+        done = threading.Event()
+        future.add_done_callback(lambda _: done.set())
+        if not done.wait(PARAMETER_TIMEOUT_S):
+            self.get_logger().warning(f"the {VIZ_NODE} node did not answer within {PARAMETER_TIMEOUT_S:g} s")
+            return None
+        return future.result()
+
+    def cue_parameters(self, names: list[str]) -> list[FoxgloveParameter]:
+        cues = [c for c in CUES if not names or parameter_name(c) in names]
+        result = self._wait(self.viz.get_parameters(cues)) if cues else None
+        if result is None:
+            return []
+        return [FoxgloveParameter(parameter_name(c), value=bool(v.bool_value)) for c, v in zip(cues, result.values, strict=False)]
+
+    def set_cues(self, values: dict[str, Any]) -> list[FoxgloveParameter]:
+        by_name = {parameter_name(c): c for c in CUES}
+        changes = [Parameter(by_name[n], value=bool(v)) for n, v in values.items() if n in by_name and isinstance(v, bool)]
+        if changes:
+            self._wait(self.viz.set_parameters(changes))
+        return self.cue_parameters([])
+
+    def destroy_node(self) -> None:
+        self.door.stop()
+        self.relay.stop()
+        super().destroy_node()
+
+
+def main(args: list[str] | None = None) -> None:
+    sys.exit(run_node(WebNode, args))
+
+
+if __name__ == "__main__":
+    main()

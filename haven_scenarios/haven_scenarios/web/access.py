@@ -1,0 +1,125 @@
+"""Who may do what through the study's web pages: one role per page, one token per session.
+
+A participant's page (`/participant/<id>`) may publish only that person's velocity; the researcher
+console (`/console`) may drive the robot through the velocity mux's teleop input, type the thought
+bubble's text, start, stop or abort the trial, and set the viz node's cue toggles. Every page, bundle
+and WebSocket request must carry the session's token (in the URL, or the cookie the first page sets):
+on a lab network nobody drives an avatar or changes a condition without it.
+"""
+
+from __future__ import annotations
+
+import hmac
+import re
+import secrets
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from urllib.parse import parse_qs, urlsplit
+
+from haven_sim.common import topics
+
+CONSOLE = "console"
+TWIST, STRING = "geometry_msgs/msg/Twist", "std_msgs/msg/String"
+TOKEN_PARAM, TOKEN_COOKIE = "token", "haven_token"
+TOKEN_ENV = "HAVEN_WEB_TOKEN"  # how `haven run --web` hands the session's token to the web node
+_ID = re.compile(r"^[A-Za-z0-9_]{1,64}$")  # a human id as ROS topic names allow it
+
+
+def absolute(topic: str) -> str:
+    return "/" + topic.lstrip("/")
+
+
+@dataclass(frozen=True)
+class Role:
+    """A page's rights: `name` is a human id or CONSOLE; `publish` maps the topics it may publish
+    on to their one allowed type; `parameters`: it may read and set the cue toggles."""
+
+    name: str
+    publish: Mapping[str, str] = field(default_factory=dict)
+    parameters: bool = False
+
+    @property
+    def is_console(self) -> bool:
+        return self.name == CONSOLE
+
+    def may_publish(self, topic: str, schema_name: str) -> str | None:
+        """None if allowed, else the one-line reason it is not."""
+        wanted = self.publish.get(topic)
+        if wanted is None:
+            return f"{self.name} may not publish on {topic} (allowed: {', '.join(sorted(self.publish)) or 'nothing'})"
+        if schema_name != wanted:
+            return f"{topic} takes {wanted}, not {schema_name or 'an unnamed type'}"
+        return None
+
+
+READY = "/haven/ready"  # a participant's Start (handled by the web node; String: their id)
+
+
+def participant_role(human: str) -> Role:
+    return Role(human, {absolute(topics.human_cmd_vel(human)): TWIST, READY: STRING})
+
+
+CONSOLE_ROLE = Role(
+    CONSOLE,
+    {absolute(topics.CMD_VEL_TELEOP): TWIST, absolute(topics.THOUGHT): STRING, absolute(topics.TRIAL_CONTROL): STRING},
+    parameters=True,
+)
+
+
+def roles(humans: Sequence[str]) -> dict[str, Role]:
+    """The console and one participant page per teleoperated human; refuses ids a URL cannot carry."""
+    bad = [h for h in humans if not _ID.match(h) or h == CONSOLE]
+    if bad:
+        raise ValueError(f"human id {bad[0]!r} cannot name a participant page (letters, digits and _ only, not 'console')")
+    return {CONSOLE: CONSOLE_ROLE, **{h: participant_role(h) for h in humans}}
+
+
+def new_token() -> str:
+    return secrets.token_urlsafe(16)
+
+
+@dataclass(frozen=True)
+class Request:
+    """What the front door reads of a request: which page or socket, and whether its token is right."""
+
+    kind: str  # "page", "socket", "static" or "" (not ours)
+    role: str  # a human id, CONSOLE, or "" for static files
+    rest: str  # the static file's name
+
+
+def route(path: str) -> Request:
+    parts = [p for p in urlsplit(path).path.split("/") if p]
+    if parts == [CONSOLE]:
+        return Request("page", CONSOLE, "")
+    if len(parts) == 2 and parts[0] == "participant":
+        return Request("page", parts[1], "")
+    if parts == ["ws", CONSOLE]:
+        return Request("socket", CONSOLE, "")
+    if len(parts) == 3 and parts[:2] == ["ws", "participant"]:
+        return Request("socket", parts[2], "")
+    if len(parts) == 2 and parts[0] == "static" and re.match(r"^[\w.-]+$", parts[1]) and not parts[1].startswith("."):
+        return Request("static", "", parts[1])
+    return Request("", "", "")
+
+
+def token_of(path: str, cookie_header: str | None) -> str:
+    """The token a request carries: in the query, else in our cookie."""
+    given = parse_qs(urlsplit(path).query).get(TOKEN_PARAM, [""])[0]
+    if given:
+        return given
+    for part in (cookie_header or "").split(";"):
+        name, _, value = part.strip().partition("=")
+        if name == TOKEN_COOKIE:
+            return value
+    return ""
+
+
+def token_ok(given: str, expected: str) -> bool:
+    return bool(given) and hmac.compare_digest(given.encode(), expected.encode())
+
+
+def urls(base: str, token: str, humans: Sequence[str]) -> dict[str, str]:
+    """The pages to open: each participant's and the console, token included."""
+    out = {h: f"{base}/participant/{h}?{TOKEN_PARAM}={token}" for h in humans}
+    out[CONSOLE] = f"{base}/{CONSOLE}?{TOKEN_PARAM}={token}"
+    return out

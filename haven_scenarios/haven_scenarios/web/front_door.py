@@ -1,0 +1,128 @@
+"""The study's one web address: pages, their code, and each page's WebSocket, behind the token.
+
+A small threaded HTTP server (the standard library's): `/participant/<id>` and `/console` are the
+pages (their settings embedded as JSON), `/static/*` the built bundles, and `/ws/participant/<id>`,
+`/ws/console` are passed through, byte for byte, to that role's Foxglove WebSocket server on
+127.0.0.1 once the token is checked. So a lab network sees one port, every request needs the token,
+and each role's server knows who its clients are (a participant's can publish only their velocity).
+"""
+
+from __future__ import annotations
+
+import json
+import mimetypes
+import selectors
+import socket
+import threading
+from collections.abc import Callable, Mapping
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from importlib import resources
+from typing import Any
+
+from haven_scenarios.web.access import CONSOLE, TOKEN_COOKIE, route, token_of, token_ok
+
+STATIC = resources.files("haven_scenarios.web") / "static"
+CONFIG_MARK = "{{CONFIG}}"
+
+
+def page_html(role: str, config: Mapping[str, Any]) -> bytes:
+    """The page of a role with its settings embedded (safe inside a <script> element)."""
+    template = (STATIC / ("console.html" if role == CONSOLE else "participant.html")).read_text()
+    text = json.dumps(config).replace("<", "\\u003c")
+    return template.replace(CONFIG_MARK, text).encode()
+
+
+def _pump(a: socket.socket, b: socket.socket) -> None:
+    """Copy bytes both ways until either side closes."""
+    sel = selectors.DefaultSelector()
+    sel.register(a, selectors.EVENT_READ, b)
+    sel.register(b, selectors.EVENT_READ, a)
+    try:
+        while True:
+            for key, _ in sel.select():
+                src: socket.socket = key.fileobj  # type: ignore[assignment]
+                data = src.recv(65536)
+                if not data:
+                    return
+                key.data.sendall(data)
+    except OSError:
+        return
+    finally:
+        sel.close()
+
+
+class FrontDoor:
+    def __init__(
+        self, host: str, port: int, token: str, backends: Mapping[str, int], config: Callable[[str], Mapping[str, Any]]
+    ) -> None:
+        """`backends`: role -> its Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings."""
+        self.token, self.backends, self.config = token, dict(backends), config
+        door = self
+
+        class Handler(BaseHTTPRequestHandler):
+            server_version = "haven"
+
+            def log_message(self, format: str, *args: Any) -> None:  # a study's terminal stays quiet
+                pass
+
+            def do_GET(self) -> None:
+                door.handle(self)
+
+        self.httpd = ThreadingHTTPServer((host, port), Handler)
+        self.httpd.daemon_threads = True
+        self.thread = threading.Thread(target=self.httpd.serve_forever, name="front_door", daemon=True)
+
+    @property
+    def port(self) -> int:
+        return int(self.httpd.server_address[1])
+
+    def start(self) -> None:
+        self.thread.start()
+
+    def stop(self) -> None:
+        self.httpd.shutdown()
+        self.httpd.server_close()
+
+    def handle(self, h: BaseHTTPRequestHandler) -> None:
+        req = route(h.path)
+        if not req.kind or (req.role and req.role not in self.backends):
+            return self._reply(h, 404, b"no such page")
+        if not token_ok(token_of(h.path, h.headers.get("Cookie")), self.token):
+            return self._reply(h, 403, b"this page needs the session's token: open the address `haven run` printed")
+        if req.kind == "page":
+            cookie = f"{TOKEN_COOKIE}={self.token}; Path=/; HttpOnly; SameSite=Strict"
+            return self._reply(h, 200, page_html(req.role, self.config(req.role)), "text/html; charset=utf-8", cookie)
+        if req.kind == "static":
+            asset = STATIC / req.rest
+            if not asset.is_file() or req.rest.endswith(".html"):
+                return self._reply(h, 404, b"no such file")
+            kind = mimetypes.guess_type(req.rest)[0] or "application/octet-stream"
+            return self._reply(h, 200, asset.read_bytes(), kind)
+        if h.headers.get("Upgrade", "").lower() != "websocket":
+            return self._reply(h, 400, b"a WebSocket address")
+        self._proxy(h, self.backends[req.role])
+
+    @staticmethod
+    def _reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = "") -> None:
+        h.send_response(code)
+        h.send_header("Content-Type", kind)
+        h.send_header("Content-Length", str(len(body)))
+        h.send_header("Cache-Control", "no-store")
+        if cookie:
+            h.send_header("Set-Cookie", cookie)
+        h.end_headers()
+        h.wfile.write(body)
+
+    @staticmethod
+    def _proxy(h: BaseHTTPRequestHandler, port: int) -> None:
+        """Hand the WebSocket handshake (without our cookie) and then every byte to the role's server."""
+        h.close_connection = True
+        try:
+            upstream = socket.create_connection(("127.0.0.1", port), timeout=5.0)
+        except OSError:
+            return FrontDoor._reply(h, 502, b"the relay is not running")
+        upstream.settimeout(None)
+        head = ["GET / HTTP/1.1", *(f"{k}: {v}" for k, v in h.headers.items() if k.lower() != "cookie")]
+        with upstream:
+            upstream.sendall(("\r\n".join(head) + "\r\n\r\n").encode("latin-1"))
+            _pump(h.connection, upstream)

@@ -1,0 +1,70 @@
+"""What a page is told when it opens (JSON embedded in it): who it is, the trial, and the view.
+
+The pages read everything that moves from the relayed topics; this is what does not: the role and
+its allowed topics with their message definitions (the page encodes its own CDR), the order of the
+poses on /humans, the world's extent, and the participant's prompts.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+from haven_scenarios.study.scenario import Scenario
+from haven_scenarios.tools.foxglove_relay import msgdef
+from haven_scenarios.web.access import Role
+from haven_sim.common.bodies import EYE_HEIGHT_M, HUMAN_BODY, ROBOT_BODY
+from haven_viz.world_markers import WALL_HEIGHT_M
+
+VIEW_WALL_HEIGHT_M = 2.4  # walls are drawn this tall in first person (the markers' 0.5 m suits a top-down view)
+
+INSTRUCTIONS = {
+    "hallway": (
+        "Walk to the rooms in the order shown at the top of the screen. A robot uses the same hallway; "
+        "walk as you would around a person."
+    ),
+    "retrieval": (
+        "Collect the red gems: walk into a gem's red circle and stand still until it is collected. "
+        "The robot collects the blue gems in the same room."
+    ),
+}
+CONTROLS = "W / S or ↑ / ↓: walk forward and back · A / D or ← / →: turn · Q / E: step sideways · a gamepad works too"
+
+
+@dataclass(frozen=True)
+class PageSettings:
+    """The run's choices for the pages (from `haven run --web`)."""
+
+    participant: str = "sim"  # the study's participant id
+    session: str = ""  # the session folder's name
+    map_inset: bool = True
+
+
+def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[str, Any]:
+    world = scenario.world
+    xs = [x for s in world.walls for x, _ in s.polygon] or [0.0]
+    ys = [y for s in world.walls for _, y in s.polygon] or [0.0]
+    speeds: Mapping[str, float] = {h.id: h.speed_mps for h in scenario.humans}
+    return {
+        "role": role.name,
+        "console": role.is_console,
+        "publish": dict(role.publish),
+        "schemas": {t: msgdef(t) for t in sorted(set(role.publish.values()))},
+        "parameters": role.parameters,
+        "humans": [h.id for h in world.humans],  # the order of the poses on /humans
+        "speed_mps": speeds.get(role.name, 1.0),
+        "participant": settings.participant,
+        "session": settings.session,
+        "scenario": scenario.name,
+        "kind": scenario.kind,
+        "bounds": [min(xs), min(ys), max(xs), max(ys)],
+        "eye_height_m": EYE_HEIGHT_M,
+        "robot_body": {"radius_m": ROBOT_BODY.radius_m, "height_m": ROBOT_BODY.height_m},
+        "human_body": {"radius_m": HUMAN_BODY.radius_m, "height_m": HUMAN_BODY.height_m},
+        "view_wall_height_m": VIEW_WALL_HEIGHT_M,
+        "marker_wall_height_m": WALL_HEIGHT_M,
+        "map_inset": settings.map_inset,
+        "instructions": INSTRUCTIONS.get(scenario.kind, ""),
+        "controls": CONTROLS,
+    }

@@ -1,0 +1,191 @@
+// The researcher console: the live top-down scene with everyone's tracks, the trial's status and
+// controls, the condition's four cue toggles (the viz node's parameters), the event stream, and
+// Wizard-of-Oz control of the robot (teleop velocity, thought text). Every intervention is an event.
+import { Link, config as readConfig, twist, yawOf } from "./link.js";
+
+const cfg = readConfig();
+const CUES = ["path_projection", "turn_signals", "thought_bubble", "battery_indicator"];
+const state = (window.havenState = { frames: 0, trial: null, toggles: null, events: [], tracks: { robot: [] }, cue: null });
+const world = new Map(); // "ns/id" -> marker
+const cueMarkers = new Map();
+let plan = [];
+
+const link = new Link(
+  cfg,
+  {
+    "/haven/world_markers": (m) => applyMarkers(world, m),
+    "/haven/ar_markers": (m) => applyMarkers(cueMarkers, m),
+    "/odom": (m) => track("robot", m.pose.pose),
+    "/humans": (m) => m.poses.forEach((p, i) => track(cfg.humans[i], p)),
+    "/plan": (m) => (plan = m.poses.map((p) => p.pose.position)),
+    "/haven/trial_status": (m) => {
+      state.trial = JSON.parse(m.data);
+      showStatus();
+    },
+    "/haven/cue_state": (m) => {
+      state.cue = JSON.parse(m.data);
+      state.toggles = state.cue.toggles;
+      showToggles();
+    },
+    "/haven/events": (m) => {
+      const e = JSON.parse(m.data);
+      state.events.push(e);
+      const line = document.createElement("div");
+      const { stamp, source, type, seq, ...rest } = e;
+      line.textContent = `${stamp.toFixed(1)}  ${source}  ${type}  ${Object.entries(rest).map(([k, v]) => `${k}=${JSON.stringify(v)}`).join(" ")}`;
+      const list = document.getElementById("events");
+      list.prepend(line);
+      while (list.childElementCount > 300) list.lastChild.remove();
+    },
+  },
+  state,
+);
+
+function applyMarkers(store, array) {
+  for (const m of array.markers) {
+    if (m.action === 3) store.clear();
+    else if (m.action === 2) store.delete(`${m.ns}/${m.id}`);
+    else store.set(`${m.ns}/${m.id}`, m);
+  }
+}
+
+const lastPose = {};
+function track(id, p) {
+  const pose = { x: p.position.x, y: p.position.y, yaw: yawOf(p.orientation) };
+  lastPose[id] = pose;
+  const t = state.tracks[id] || (state.tracks[id] = []);
+  const prev = t[t.length - 1];
+  if (!prev || Math.hypot(prev.x - pose.x, prev.y - pose.y) > 0.05) t.push(pose);
+}
+
+// -- status, task progress, who -----------------------------------------------------------------------
+document.getElementById("who").textContent = `participant ${cfg.participant} · scenario ${cfg.scenario}${cfg.session ? " · " + cfg.session : ""}`;
+function showStatus() {
+  const t = state.trial;
+  document.getElementById("status-line").textContent = !t ? "connecting…" : `trial ${t.state}${t.end_reason ? ": " + t.end_reason : ""}`;
+  document.getElementById("tasks").textContent = !t
+    ? ""
+    : Object.entries(t.humans)
+        .map(([id, h]) => `${id}: ${h.done ? "done" : t.kind === "hallway" ? `room ${h.rooms_done} of ${h.rooms.length}` : `gems ${h.gems_done} of ${h.gems_total}${h.dwell !== null ? " (in a gem)" : ""}`}`)
+        .join(" · ");
+  document.getElementById("start").disabled = !t || t.state !== "held";
+  document.getElementById("stop").disabled = document.getElementById("abort").disabled = !t || t.state === "ended";
+}
+showStatus();
+
+// -- the condition: four toggles, set as the viz node's parameters -----------------------------------
+const togglesEl = document.getElementById("toggles");
+for (const cue of CUES) {
+  const label = document.createElement("label");
+  label.innerHTML = `<input type="checkbox" id="cue-${cue}"> ${cue.replace("_", " ")}`;
+  togglesEl.append(label);
+  label.querySelector("input").addEventListener("change", (e) => {
+    link.setParameters([{ name: `/viz.${cue}`, value: e.target.checked, type: undefined }]);
+  });
+}
+function showToggles() {
+  for (const cue of CUES) document.getElementById(`cue-${cue}`).checked = !!(state.toggles && state.toggles[cue]);
+}
+
+// -- trial control ----------------------------------------------------------------------------------
+for (const command of ["start", "stop", "abort"]) {
+  document.getElementById(command).addEventListener("click", () => link.publish("/haven/trial_control", { data: command }));
+}
+
+// -- Wizard of Oz ------------------------------------------------------------------------------------
+let drive = [0, 0];
+const DRIVE = { v: 0.3, w: 0.8 };
+setInterval(() => {
+  if (drive[0] || drive[1] || state.driving) {
+    link.publish("/cmd_vel_teleop", twist(drive[0] * DRIVE.v, 0, drive[1] * DRIVE.w));
+    state.driving = !!(drive[0] || drive[1]);
+  }
+}, 50);
+for (const b of document.querySelectorAll("[data-drive]")) {
+  const d = b.dataset.drive.split(",").map(Number);
+  b.addEventListener("pointerdown", () => (drive = d));
+  for (const ev of ["pointerup", "pointerleave"]) b.addEventListener(ev, () => (drive = [0, 0]));
+}
+const KEYS = { KeyI: [1, 0], KeyK: [-1, 0], KeyJ: [0, 1], KeyL: [0, -1] };
+window.addEventListener("keydown", (e) => {
+  if (e.target.tagName !== "INPUT" && KEYS[e.code]) drive = KEYS[e.code];
+});
+window.addEventListener("keyup", (e) => {
+  if (KEYS[e.code]) drive = [0, 0];
+});
+document.getElementById("thought-form").addEventListener("submit", (e) => {
+  e.preventDefault();
+  link.publish("/haven/thought", { data: document.getElementById("thought-text").value });
+});
+
+// -- the top-down scene --------------------------------------------------------------------------------
+const canvas = document.getElementById("scene");
+const COLORS = { robot: "#222", me: "#1660e8" };
+function rgba(c, minA = 0) {
+  return `rgba(${Math.round(255 * c.r)},${Math.round(255 * c.g)},${Math.round(255 * c.b)},${Math.max(c.a, minA)})`;
+}
+function draw() {
+  const w = (canvas.width = canvas.clientWidth), h = (canvas.height = canvas.clientHeight);
+  const ctx = canvas.getContext("2d");
+  const [x0, y0, x1, y1] = cfg.bounds;
+  const pad = 0.8;
+  const s = Math.min(w / (x1 - x0 + 2 * pad), h / (y1 - y0 + 2 * pad));
+  const X = (x) => (x - x0 + pad) * s, Y = (y) => h - (y - y0 + pad) * s;
+  const markers = [...world.values(), ...cueMarkers.values()];
+  for (const m of markers) {
+    const p = m.pose.position;
+    ctx.fillStyle = rgba(m.color, 0.3);
+    if (m.type === 11) {
+      for (let i = 0; i + 2 < m.points.length; i += 3) {
+        const [a, b, c] = [m.points[i], m.points[i + 1], m.points[i + 2]];
+        if (!(a.z > 0.01 && b.z > 0.01 && c.z > 0.01)) continue;
+        ctx.beginPath();
+        ctx.moveTo(X(a.x), Y(a.y));
+        ctx.lineTo(X(b.x), Y(b.y));
+        ctx.lineTo(X(c.x), Y(c.y));
+        ctx.fill();
+      }
+    } else if (m.type === 9) {
+      if (m.ns === "human_names") continue;
+      ctx.font = m.ns === "rooms" ? "bold 16px sans-serif" : "13px sans-serif";
+      ctx.fillStyle = rgba(m.color, 1);
+      ctx.fillText(m.text, X(p.x) + (m.ns === "rooms" ? -6 : 10), Y(p.y) - (m.ns === "rooms" ? 0 : 12));
+    } else if (m.ns !== "robot" && m.ns !== "humans") {
+      ctx.beginPath();
+      ctx.arc(X(p.x), Y(p.y), Math.max(2, (Math.max(m.scale.x, m.scale.y) / 2) * s), 0, 2 * Math.PI);
+      ctx.fill();
+    }
+  }
+  if (plan.length) {
+    ctx.strokeStyle = "rgba(230,180,0,0.9)";
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    plan.forEach((p, i) => (i ? ctx.lineTo(X(p.x), Y(p.y)) : ctx.moveTo(X(p.x), Y(p.y))));
+    ctx.stroke();
+  }
+  for (const [id, t] of Object.entries(state.tracks)) {
+    const color = id === "robot" ? COLORS.robot : cfg.humans.indexOf(id) === 0 ? COLORS.me : "#c33";
+    ctx.strokeStyle = color;
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    t.forEach((p, i) => (i ? ctx.lineTo(X(p.x), Y(p.y)) : ctx.moveTo(X(p.x), Y(p.y))));
+    ctx.stroke();
+    const p = lastPose[id];
+    if (!p) continue;
+    ctx.fillStyle = color;
+    ctx.beginPath();
+    ctx.arc(X(p.x), Y(p.y), id === "robot" ? 0.177 * s : 0.25 * s, 0, 2 * Math.PI);
+    ctx.fill();
+    ctx.strokeStyle = "#fff";
+    ctx.beginPath();
+    ctx.moveTo(X(p.x), Y(p.y));
+    ctx.lineTo(X(p.x + 0.35 * Math.cos(p.yaw)), Y(p.y + 0.35 * Math.sin(p.yaw)));
+    ctx.stroke();
+    ctx.fillStyle = "#000";
+    ctx.font = "12px sans-serif";
+    ctx.fillText(id, X(p.x) + 8, Y(p.y) + 16);
+  }
+  state.frames++;
+  requestAnimationFrame(draw);
+}
+requestAnimationFrame(draw);

@@ -1,0 +1,188 @@
+// The participant's page: HAVEN's first-person view. The camera sits at eye height on the
+// participant's own pose from /humans (the simulator's: collisions and pushes included); the world
+// comes from /haven/world_markers, the AR cues from /haven/ar_markers as the viz node emits them,
+// the robot from /odom. Keys or a gamepad publish the avatar's velocity on /humans/<id>/cmd_vel.
+import * as THREE from "three";
+import { Link, config as readConfig, twist, yawOf } from "./link.js";
+import { MarkerLayer } from "./markers.js";
+import { turtlebot, person } from "./bodies.js";
+import { drawInset } from "./inset.js";
+import { Controls } from "./controls.js";
+import { taskLine, promptFor } from "./task.js";
+
+const cfg = readConfig();
+const me = cfg.role;
+const state = (window.havenState = { frames: 0, pose: null, trial: null, markers: {}, world: 0, latencies: [], xr: false });
+
+// -- the scene, in ROS coordinates (z up) -------------------------------------------------------
+const renderer = new THREE.WebGLRenderer({ antialias: true });
+renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+renderer.setSize(window.innerWidth, window.innerHeight);
+renderer.xr.enabled = true;
+document.getElementById("view").appendChild(renderer.domElement);
+const scene = new THREE.Scene();
+scene.background = new THREE.Color(0xdfe6ee);
+scene.add(new THREE.HemisphereLight(0xffffff, 0x8d8d8d, 2.2));
+const sun = new THREE.DirectionalLight(0xffffff, 1.2);
+sun.position.set(3, -4, 10);
+scene.add(sun);
+const [x0, y0, x1, y1] = cfg.bounds;
+const floor = new THREE.Mesh(new THREE.PlaneGeometry(x1 - x0 + 20, y1 - y0 + 20), new THREE.MeshLambertMaterial({ color: 0xc9c3b8 }));
+floor.position.set((x0 + x1) / 2, (y0 + y1) / 2, -0.001);
+scene.add(floor);
+const grid = new THREE.GridHelper(Math.ceil(Math.max(x1 - x0, y1 - y0)) + 20, Math.ceil(Math.max(x1 - x0, y1 - y0)) + 20, 0xa8a298, 0xb8b2a8);
+grid.rotation.x = Math.PI / 2;
+grid.position.set((x0 + x1) / 2, (y0 + y1) / 2, 0);
+scene.add(grid);
+
+const stretch = cfg.view_wall_height_m / cfg.marker_wall_height_m;
+const world = new MarkerLayer(scene, { stretchZ: { walls: stretch, obstructions: stretch }, lift: { rooms: cfg.view_wall_height_m - 0.3 } });
+const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]) }); // bodies come from the poses
+const FACING = new Set(["thought_bubble", "battery_indicator"]);
+const robot = turtlebot(cfg.robot_body.radius_m, cfg.robot_body.height_m);
+robot.visible = false;
+scene.add(robot);
+const others = new Map(); // human id -> avatar
+
+// The participant's head: the rig stands on their pose and turns with their heading; inside it a
+// y-up frame (WebXR's) looking along -z, so a headset's pose adds to the avatar's.
+const rig = new THREE.Group();
+const head = new THREE.Group();
+head.matrixAutoUpdate = false;
+head.matrix.makeBasis(new THREE.Vector3(0, -1, 0), new THREE.Vector3(0, 0, 1), new THREE.Vector3(-1, 0, 0));
+rig.add(head);
+scene.add(rig);
+const camera = new THREE.PerspectiveCamera(70, window.innerWidth / window.innerHeight, 0.05, 200);
+camera.position.set(0, cfg.eye_height_m, 0);
+head.add(camera);
+
+// -- what arrives --------------------------------------------------------------------------------
+let pending = null; // key press waiting to be seen: {t, x, y, yaw}
+const link = new Link(
+  cfg,
+  {
+    "/haven/world_markers": (m) => {
+      world.apply(m);
+      state.world = world.count();
+    },
+    "/haven/ar_markers": (m) => {
+      cues.apply(m);
+      state.markers = cues.namespaces();
+    },
+    "/odom": (m) => {
+      const p = m.pose.pose;
+      robot.position.set(p.position.x, p.position.y, 0);
+      robot.rotation.z = yawOf(p.orientation);
+      robot.visible = true;
+      state.robot = { x: p.position.x, y: p.position.y };
+    },
+    "/humans": (m, at) => {
+      m.poses.forEach((p, i) => {
+        const id = cfg.humans[i];
+        const pose = { x: p.position.x, y: p.position.y, yaw: yawOf(p.orientation) };
+        if (id === me) {
+          state.pose = pose;
+          if (pending && Math.hypot(pose.x - pending.x, pose.y - pending.y) + Math.abs(pose.yaw - pending.yaw) > 1e-3) {
+            pending.seen = at;
+          }
+          return;
+        }
+        if (!others.has(id)) {
+          others.set(id, person(id, cfg.human_body.radius_m, cfg.human_body.height_m));
+          scene.add(others.get(id));
+        }
+        const a = others.get(id);
+        a.position.set(pose.x, pose.y, 0);
+        a.rotation.z = pose.yaw;
+        state.others = others.size;
+      });
+    },
+    "/haven/trial_status": (m) => {
+      state.trial = JSON.parse(m.data);
+      showTrial();
+    },
+  },
+  state,
+);
+
+// -- the participant's controls -------------------------------------------------------------------
+const controls = new Controls(cfg.speed_mps, (cmd, pressedAt) => {
+  if (pressedAt !== undefined && state.pose && !pending) pending = { t: pressedAt, ...state.pose };
+  return link.publish(`/humans/${me}/cmd_vel`, twist(cmd.vx, cmd.vy, cmd.wz));
+});
+
+// -- prompts and the task line -------------------------------------------------------------------
+const taskEl = document.getElementById("task");
+const promptEl = document.getElementById("prompt");
+const startButton = document.getElementById("start");
+startButton.addEventListener("click", () => {
+  if (link.publish("/haven/ready", { data: me })) {
+    state.pressedStart = true;
+    showTrial();
+  }
+});
+function showTrial() {
+  const t = state.trial;
+  taskEl.textContent = taskLine(t, me);
+  const dwell = t && t.humans[me] && t.humans[me].dwell;
+  document.getElementById("dwell").style.width = dwell ? `${Math.round(100 * dwell)}%` : "0";
+  const prompt = promptFor(t, cfg, state.pressedStart);
+  promptEl.hidden = !prompt;
+  state.prompt = prompt ? prompt.title : null;
+  if (prompt) {
+    promptEl.querySelector("h1").textContent = prompt.title;
+    promptEl.querySelector("p").textContent = prompt.text;
+    promptEl.querySelector("small").textContent = prompt.small;
+    startButton.hidden = !prompt.start;
+  }
+  controls.enabled = !t || t.state === "running";
+}
+showTrial();
+
+// -- the map inset (optional per study) ----------------------------------------------------------
+const inset = document.getElementById("inset");
+inset.hidden = !cfg.map_inset;
+let insetAt = 0;
+
+// -- Enter VR where the browser offers immersive WebXR -------------------------------------------
+const vrButton = document.getElementById("enter-vr");
+if (navigator.xr) {
+  navigator.xr.isSessionSupported("immersive-vr").then((ok) => {
+    vrButton.hidden = !ok;
+    state.xrOffered = ok;
+  });
+}
+vrButton.addEventListener("click", async () => {
+  const session = await navigator.xr.requestSession("immersive-vr", { optionalFeatures: ["local-floor"] });
+  renderer.xr.setReferenceSpaceType("local-floor");
+  await renderer.xr.setSession(session);
+  state.xr = true;
+  session.addEventListener("end", () => (state.xr = false));
+});
+
+window.addEventListener("resize", () => {
+  camera.aspect = window.innerWidth / window.innerHeight;
+  camera.updateProjectionMatrix();
+  renderer.setSize(window.innerWidth, window.innerHeight);
+});
+
+// -- every frame -----------------------------------------------------------------------------------
+renderer.setAnimationLoop((time) => {
+  controls.poll(renderer.xr.isPresenting ? renderer.xr.getSession() : null);
+  if (state.pose) {
+    rig.position.set(state.pose.x, state.pose.y, 0);
+    rig.rotation.z = state.pose.yaw;
+  }
+  scene.updateMatrixWorld();
+  cues.face(renderer.xr.isPresenting ? renderer.xr.getCamera() : camera, FACING);
+  renderer.render(scene, camera);
+  state.frames++;
+  if (pending && pending.seen !== undefined) {
+    state.latencies.push(performance.now() - pending.t); // key press -> own pose moved -> this frame drawn
+    pending = null;
+  }
+  if (cfg.map_inset && time - insetAt > 200) {
+    insetAt = time;
+    drawInset(inset, cfg, world, state, others);
+  }
+});
