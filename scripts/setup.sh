@@ -51,3 +51,17 @@ fi
 if ! "$VENV/bin/python" -c "import tf2_msgs.msg" >/dev/null 2>&1; then
   "$VENV/bin/python" scripts/build_interfaces.py || echo "setup: continuing without TF" >&2
 fi
+
+# The browser pieces: the pages' npm packages (a test rebuilds the committed bundles from them) and
+# Debian's Chromium (the browser tests drive it headless). Where they cannot be had, those tests skip
+# with one line saying why; HAVEN_NO_BROWSER=1 skips installing Chromium.
+if command -v npm >/dev/null 2>&1 && [ ! haven_scenarios/web/node_modules/.package-lock.json -nt haven_scenarios/web/package-lock.json ]; then
+  (cd haven_scenarios/web && npm ci --no-audit --no-fund --loglevel=error >/dev/null) \
+    && echo "setup: installed the pages' npm packages (haven_scenarios/web/node_modules)" \
+    || echo "setup: npm ci failed; the bundle rebuild test will skip" >&2
+fi
+if ! command -v chromium >/dev/null 2>&1 && [ -z "${HAVEN_NO_BROWSER:-}" ] && [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+  echo "setup: installing Debian's chromium for the browser tests (once, about 2 minutes)"
+  { apt-get install -y -q chromium >/dev/null 2>&1 || { apt-get update -q >/dev/null 2>&1 && apt-get install -y -q chromium >/dev/null 2>&1; }; } \
+    || echo "setup: could not install chromium; the browser tests will skip" >&2
+fi

@@ -142,7 +142,7 @@ export class MarkerLayer {
 
   // The namespaces that face the viewer (the battery gauge and the thought bubble, as in HAVEN):
   // each is turned about its first marker so that its x axis runs across the view, and a text
-  // inside a bigger marker of its namespace (the bubble's backdrop) is drawn on its near side.
+  // inside a bigger marker of its namespace (the bubble's backdrop) is drawn in front of it.
   face(camera, namespaces) {
     const eye = new THREE.Vector3();
     camera.getWorldPosition(eye);
@@ -163,7 +163,8 @@ export class MarkerLayer {
         const d = o.userData.anchor.clone().sub(centre);
         o.position.set(centre.x + c * d.x - s * d.y, centre.y + s * d.x + c * d.y, o.userData.anchor.z);
         if (o.userData.type === TEXT) {
-          const toEye = new THREE.Vector3(eye.x - o.position.x, eye.y - o.position.y, 0).normalize();
+          // along the line of sight, so the text stays drawn over the backdrop's centre
+          const toEye = eye.clone().sub(o.position).normalize();
           const inside = backdrop > 0 && objects.some((b) => b !== o && b.userData.type !== TEXT && b.userData.anchor.distanceTo(o.userData.anchor) < 0.05);
           if (inside) o.position.addScaledVector(toEye, backdrop + 0.02);
         } else if (o.userData.type !== SPHERE) {

@@ -166,6 +166,16 @@ window.addEventListener("resize", () => {
   renderer.setSize(window.innerWidth, window.innerHeight);
 });
 
+// Where a point of the world is on the screen (CSS pixels; z > 1: behind the camera), for tests.
+window.havenProject = (x, y, z) => {
+  const v = new THREE.Vector3(x, y, z).project(camera);
+  return { x: ((v.x + 1) / 2) * window.innerWidth, y: ((1 - v.y) / 2) * window.innerHeight, z: v.z };
+};
+window.havenMarker = (ns, id) => {
+  const e = cues.objects.get(`${ns}/${id}`);
+  return e ? { x: e.object.position.x, y: e.object.position.y, z: e.object.position.z } : null;
+};
+
 // -- every frame -----------------------------------------------------------------------------------
 renderer.setAnimationLoop((time) => {
   controls.poll(renderer.xr.isPresenting ? renderer.xr.getSession() : null);

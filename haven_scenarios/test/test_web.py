@@ -1,0 +1,170 @@
+"""The study's web door without ROS or a browser: roles, tokens, the pages' settings, the
+WebSocket pass-through, the researcher's interventions and the start gate, and the committed
+bundles (rebuilt from the sources and the npm lock file where npm is installed)."""
+
+import filecmp
+import http.client
+import json
+import shutil
+import socket
+import subprocess
+import threading
+from pathlib import Path
+
+import pytest
+
+from haven_scenarios.study.scenario import load_scenario
+from haven_scenarios.web.access import CONSOLE, READY, roles, route, token_of, token_ok, urls
+from haven_scenarios.web.front_door import STATIC, FrontDoor
+from haven_scenarios.web.page_config import PageSettings, page_config
+from haven_scenarios.web.wizard import StartGate, Wizard
+from haven_sim.common.events import EventKind
+from haven_sim.common.geometry import Twist2D
+
+WEB = Path(__file__).resolve().parents[1] / "web"
+
+
+def test_each_page_may_publish_only_what_its_role_allows():
+    r = roles(["h1", "h2"])
+    assert r["h1"].may_publish("/humans/h1/cmd_vel", "geometry_msgs/msg/Twist") is None
+    assert r["h1"].may_publish(READY, "std_msgs/msg/String") is None
+    assert "may not publish on /humans/h2/cmd_vel" in r["h1"].may_publish("/humans/h2/cmd_vel", "geometry_msgs/msg/Twist")
+    assert "may not publish on /cmd_vel_teleop" in r["h1"].may_publish("/cmd_vel_teleop", "geometry_msgs/msg/Twist")
+    assert r["h1"].may_publish("/humans/h1/cmd_vel", "geometry_msgs/msg/TwistStamped") == (
+        "/humans/h1/cmd_vel takes geometry_msgs/msg/Twist, not geometry_msgs/msg/TwistStamped"
+    )
+    console = r[CONSOLE]
+    assert console.parameters and not r["h1"].parameters
+    for topic, kind in (("/cmd_vel_teleop", "geometry_msgs/msg/Twist"), ("/haven/thought", "std_msgs/msg/String"), ("/haven/trial_control", "std_msgs/msg/String")):
+        assert console.may_publish(topic, kind) is None
+    assert console.may_publish("/cmd_vel", "geometry_msgs/msg/Twist") is not None  # never around the mux
+
+
+@pytest.mark.parametrize("bad", ["../x", "console", "a b", ""])
+def test_a_human_id_that_cannot_name_a_page_is_refused(bad):
+    with pytest.raises(ValueError, match="cannot name a participant page"):
+        roles([bad])
+
+
+def test_routes_and_tokens():
+    assert (route("/participant/h1?token=x").kind, route("/participant/h1").role) == ("page", "h1")
+    assert (route("/ws/console?token=x").kind, route("/ws/participant/h2").role) == ("socket", "h2")
+    assert route("/static/participant.js").rest == "participant.js"
+    assert route("/static/../secret").kind == "" and route("/static/.hidden").kind == "" and route("/etc/passwd").kind == ""
+    assert token_of("/console?token=abc", None) == "abc"
+    assert token_of("/static/x.js", "a=1; haven_token=abc") == "abc"
+    assert token_ok("abc", "abc") and not token_ok("", "abc") and not token_ok("abd", "abc")
+    assert urls("http://h:1", "T", ["h1"]) == {"h1": "http://h:1/participant/h1?token=T", CONSOLE: "http://h:1/console?token=T"}
+
+
+def test_a_page_is_told_its_role_the_pose_order_and_how_to_encode_what_it_sends():
+    scenario = load_scenario("hallway")
+    c = page_config(roles(["h1"])["h1"], scenario, PageSettings(participant="p07"))
+    assert c["humans"] == ["h1"] and c["role"] == "h1" and not c["console"] and c["participant"] == "p07"
+    assert c["schemas"]["geometry_msgs/msg/Twist"].startswith("geometry_msgs/Vector3 linear")
+    assert c["eye_height_m"] == 1.6 and c["kind"] == "hallway" and "rooms" in c["instructions"]
+    x0, y0, x1, y1 = c["bounds"]
+    assert x0 < x1 and y0 < y1
+
+
+class _Backend:
+    """A stand-in for a role's Foxglove server: records the handshake, answers, then echoes."""
+
+    def __init__(self) -> None:
+        self.sock = socket.socket()
+        self.sock.bind(("127.0.0.1", 0))
+        self.sock.listen()
+        self.port = self.sock.getsockname()[1]
+        self.handshake = b""
+        threading.Thread(target=self._serve, daemon=True).start()
+
+    def _serve(self) -> None:
+        conn, _ = self.sock.accept()
+        with conn:
+            while b"\r\n\r\n" not in self.handshake:
+                self.handshake += conn.recv(4096)
+            conn.sendall(b"HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n\r\n")
+            while data := conn.recv(4096):
+                conn.sendall(data.upper())
+
+
+@pytest.fixture
+def door():
+    backend = _Backend()
+    d = FrontDoor("127.0.0.1", 0, "secret", {"h1": backend.port, CONSOLE: backend.port}, lambda role: {"role": role, "x": "</script>"})
+    d.start()
+    yield d, backend
+    d.stop()
+
+
+def _get(door, path, headers=None):
+    c = http.client.HTTPConnection("127.0.0.1", door.port, timeout=5)
+    c.request("GET", path, headers=headers or {})
+    r = c.getresponse()
+    return r.status, r.read(), r
+
+
+def test_nothing_is_served_without_the_token(door):
+    d, _ = door
+    for path in ("/participant/h1", "/console?token=wrong", "/static/participant.js", "/ws/participant/h1"):
+        status, body, _ = _get(d, path)
+        assert status == 403 and b"token" in body, path
+    assert _get(d, "/participant/h9?token=secret")[0] == 404  # not a participant of this trial
+
+
+def test_a_page_comes_with_its_settings_and_a_cookie_for_its_code(door):
+    d, _ = door
+    status, body, r = _get(d, "/participant/h1?token=secret")
+    assert status == 200 and b'"role": "h1"' in body and b"</script>\"" not in body  # escaped inside the page
+    cookie = r.getheader("Set-Cookie")
+    assert cookie.startswith("haven_token=secret;") and "HttpOnly" in cookie
+    status, js, r = _get(d, "/static/participant.js", {"Cookie": "haven_token=secret"})
+    assert status == 200 and r.getheader("Content-Type") == "text/javascript" and len(js) > 100_000
+
+
+def test_a_socket_with_the_token_is_passed_through_byte_for_byte(door):
+    d, backend = door
+    with socket.create_connection(("127.0.0.1", d.port), timeout=5) as s:
+        s.sendall(
+            b"GET /ws/participant/h1?token=secret HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
+            b"Sec-WebSocket-Protocol: foxglove.sdk.v1\r\nCookie: haven_token=secret\r\n\r\n"
+        )
+        reply = b""
+        while b"\r\n\r\n" not in reply:
+            reply += s.recv(4096)
+        assert reply.startswith(b"HTTP/1.1 101")
+        s.sendall(b"frame bytes")
+        assert s.recv(4096) == b"FRAME BYTES"
+    assert backend.handshake.startswith(b"GET / HTTP/1.1\r\n")
+    assert b"Sec-WebSocket-Protocol: foxglove.sdk.v1" in backend.handshake and b"haven_token" not in backend.handshake
+
+
+def test_the_researchers_driving_and_thought_text_are_events():
+    w = Wizard()
+    (e,) = w.thought("I will wait here", 1.0)
+    assert (e.kind, e["action"], e["text"], e["by"]) == (EventKind.INTERVENTION, "thought", "I will wait here", "researcher")
+    assert [e["action"] for e in w.drive(Twist2D(0.2, 0.0, 0.0), 2.0)] == ["drive"]
+    assert w.drive(Twist2D(0.3, 0.0, 0.1), 2.1) == []  # one event per stretch of driving
+    assert [e["action"] for e in w.drive(Twist2D(0.0, 0.0, 0.0), 3.0)] == ["drive_end"]
+
+
+def test_the_trial_starts_when_every_participant_is_ready_unless_the_researcher_starts_it():
+    gate = StartGate(["h1", "h2"])
+    events, start = gate.ready("h1", 1.0)
+    assert [e.kind for e in events] == [EventKind.PARTICIPANT_READY] and not start
+    assert gate.ready("h9", 1.5) == ([], False)
+    assert gate.ready("h2", 2.0)[1] is True
+    assert gate.ready("h2", 3.0) == ([], False)
+    assert StartGate(["h1"], researcher_only=True).ready("h1", 1.0)[1] is False
+
+
+def test_the_committed_bundles_are_what_the_sources_build(tmp_path):
+    """The pages' code ships built (users need no Node); rebuilding gives the same bytes."""
+    if shutil.which("node") is None or not (WEB / "node_modules" / "esbuild").exists():
+        pytest.skip("no Node.js or no haven_scenarios/web/node_modules (scripts/setup.sh runs npm ci where npm exists)")
+    subprocess.run(["node", "build.mjs", "--out", str(tmp_path)], cwd=WEB, check=True, timeout=120)
+    built = sorted(p.name for p in tmp_path.iterdir())
+    assert built == ["console.js", "participant.js", "participant.js.LEGAL.txt"]
+    _, mismatch, errors = filecmp.cmpfiles(tmp_path, Path(str(STATIC)), built, shallow=False)
+    assert mismatch == errors == [], "the committed bundles are stale: run `node build.mjs` in haven_scenarios/web"
+    assert json.loads((WEB / "package-lock.json").read_text())["lockfileVersion"] >= 3

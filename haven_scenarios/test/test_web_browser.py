@@ -1,0 +1,182 @@
+"""The study in a real browser: `haven run --web` with headless Chromium (software WebGL).
+
+A participant page and the researcher console against a running suite: the scene loads (waited on
+by page state, never by time), W walks the avatar (seen on /humans), walking up to the robot shows
+its thought bubble in the rendered pixels, a cue toggled in the console leaves the participant's
+view and is recorded, the researcher's Stop ends the trial, and nothing is served without the token.
+Skipped, with one line, where no Chromium can be had.
+"""
+
+import http.client
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+import threading
+import time
+from io import BytesIO
+from urllib.parse import urlsplit
+
+import pytest
+from ros_harness import tracebacks
+
+pytestmark = [pytest.mark.ros, pytest.mark.slow]
+HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
+PAGE_TIMEOUT_MS = 90_000  # software rendering on a loaded 2-core machine is slow to start
+CHROMIUM_ARGS = ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist"]
+
+
+def chromium_path():
+    found = os.environ.get("HAVEN_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
+    return found if found and os.path.exists(found) else None
+
+
+@pytest.fixture(scope="module")
+def browser():
+    path = chromium_path()
+    if path is None:
+        pytest.skip("no Chromium here (Debian's chromium package; scripts/setup.sh installs it when run as root): browser tests skipped")
+    playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
+    with playwright.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=path, args=CHROMIUM_ARGS)
+        yield b
+        b.close()
+
+
+def head_on_scenario(tmp_path):
+    """The hallway with the participant 6 m ahead of the robot, facing it, so walking forward
+    brings them within the thought bubble's 3 m."""
+    from importlib import resources
+
+    world = (resources.files("haven_scenarios") / "worlds" / "hallway.yaml").read_text()
+    world = world.replace('"start": [16.0, 16.0, 3.14159]', '"start": [8.0, 2.0, 3.14159]')
+    (tmp_path / "head_on_world.yaml").write_text(world)
+    path = tmp_path / "head_on.yaml"
+    path.write_text(
+        "name: head_on\nworld: head_on_world.yaml\nkind: hallway\ntimeout_s: 300\nrobot: {route: [B, A]}\n"
+        "humans: [{id: h1, model: walker, route: [A, B], speed_mps: 1.0}]\n"
+    )
+    return path
+
+
+class WebTrial:
+    """`haven run ... --web` in the background; its output collected, its URLs parsed."""
+
+    def __init__(self, ros, argv):
+        self.proc = subprocess.Popen(
+            [*HAVEN, *argv, "--domain-id", str(ros.domain_id)], env=ros.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+            start_new_session=True,
+        )
+        ros.procs.append(self.proc)
+        self.lines: list[str] = []
+        threading.Thread(target=lambda: self.lines.extend(iter(self.proc.stdout.readline, "")), daemon=True).start()
+
+    def urls(self, timeout_s=90):
+        deadline = time.monotonic() + timeout_s
+        while time.monotonic() < deadline:
+            found = dict(re.findall(r"web: (participant h1|researcher console): (\S+)", "".join(self.lines)))
+            if len(found) == 2:
+                return found["participant h1"], found["researcher console"]
+            assert self.proc.poll() is None, "".join(self.lines)[-3000:]
+            time.sleep(0.1)
+        raise AssertionError("no URLs printed:\n" + "".join(self.lines)[-3000:])
+
+    def session(self):
+        (line,) = [ln for ln in self.lines if ln.startswith("haven: session in ")]
+        return line.split(" in ", 1)[1].split(" (")[0]
+
+
+def status_of(url):
+    u = urlsplit(url)
+    c = http.client.HTTPConnection(u.hostname, u.port, timeout=10)
+    c.request("GET", u.path + ("?" + u.query if u.query else ""), headers={"Upgrade": "websocket", "Connection": "Upgrade"})
+    return c.getresponse().status
+
+
+def screenshot(name, png):
+    """The README's pictures: written where HAVEN_SCREENSHOTS points (haven_scenarios/doc to update them)."""
+    folder = os.environ.get("HAVEN_SCREENSHOTS")
+    if folder:
+        with open(os.path.join(folder, name), "wb") as f:
+            f.write(png)
+
+
+def dark_pixels(png, centre, half=40):
+    from PIL import Image
+
+    img = Image.open(BytesIO(png)).convert("L")
+    x, y = int(centre["x"]), int(centre["y"])
+    box = img.crop((max(0, x - half), max(0, y - half), x + half, y + half))
+    return sum(box.histogram()[:50])
+
+
+def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(ros, browser, tmp_path):
+    from geometry_msgs.msg import PoseArray
+    from rclpy.qos import QoSProfile
+
+    scenario = head_on_scenario(tmp_path)
+    trial = WebTrial(ros, ["run", str(scenario), "--teleop", "h1", "--web", "--port", "0", "--condition", "all", "--sessions", str(tmp_path / "s")])
+    participant_url, console_url = trial.urls()
+
+    # Nobody gets in without the token: not the page, not its socket.
+    assert status_of(participant_url.split("?")[0]) == 403
+    assert status_of(participant_url.replace("/participant/", "/ws/participant/").split("?")[0]) == 403
+
+    page = browser.new_page(viewport={"width": 800, "height": 450})
+    page.goto(participant_url)
+    page.wait_for_function(
+        "s => (s = window.havenState) && s.world > 0 && s.pose && s.robot && s.trial && s.trial.state === 'held' && s.frames > 2",
+        timeout=PAGE_TIMEOUT_MS,
+    )
+    assert page.evaluate("havenState.prompt") == "Welcome"
+    console = browser.new_page(viewport={"width": 1100, "height": 600})
+    console.goto(console_url)
+    console.wait_for_function("s => (s = window.havenState) && s.toggles && s.trial", timeout=PAGE_TIMEOUT_MS)
+
+    page.click("#start")  # read the instructions, ready: the trial starts
+    page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+
+    # Before: 6 m apart, no bubble where it would be drawn.
+    robot = page.evaluate("havenState.robot")
+    before_spot = page.evaluate(f"havenProject({robot['x']}, {robot['y']}, 1.0)")
+    before = page.screenshot()
+    assert "thought_bubble" not in page.evaluate("havenState.markers")
+
+    # Hold W: the avatar walks (its pose on /humans moves) until the robot's thought bubble shows.
+    humans = ros.collect(PoseArray, "/humans", QoSProfile(depth=10))
+    assert ros.spin_until(lambda: bool(humans), timeout_s=30)
+    start_x = humans[-1].poses[0].position.x
+    page.keyboard.down("KeyW")
+    assert ros.spin_until(lambda: start_x - humans[-1].poses[0].position.x > 0.5, timeout_s=60), "the avatar did not walk"
+    page.wait_for_function("(havenState.markers.thought_bubble || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
+    page.keyboard.up("KeyW")
+    frames = page.evaluate("havenState.frames")
+    page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
+    bubble = page.evaluate("havenMarker('thought_bubble', 0)")
+    spot = page.evaluate(f"havenProject({bubble['x']}, {bubble['y']}, {bubble['z']})")
+    after = page.screenshot()
+    screenshot("web_participant.png", after)
+    assert 0 < spot["x"] < 800 and 0 < spot["y"] < 450 and spot["z"] < 1, spot
+    assert dark_pixels(after, spot) > 40 + 3 * dark_pixels(before, before_spot), "no thought text drawn where the bubble is"
+
+    # The researcher switches the thought bubble off: it leaves the participant's view at once.
+    console.uncheck("#cue-thought_bubble")
+    page.wait_for_function("!havenState.markers.thought_bubble", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("havenState.toggles.thought_bubble === false", timeout=PAGE_TIMEOUT_MS)
+
+    screenshot("web_console.png", console.screenshot())
+
+    # ... and stops the trial: the participant is told, the session is complete.
+    console.click("#stop")
+    page.wait_for_function("havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)
+    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    folder = trial.session()
+    events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
+    kinds = [(e["type"], e.get("cue"), e.get("on"), e.get("reason"), e.get("by")) for e in events]
+    assert ("participant_ready", None, None, None, "h1") in kinds
+    assert ("cue_toggled", "thought_bubble", False, None, None) in kinds
+    assert ("trial_end", None, None, "stopped", "researcher") in kinds
+    assert json.load(open(os.path.join(folder, "metrics.json")))["end_reason"] == "stopped"
+    assert tracebacks("".join(trial.lines)) == []
