@@ -35,7 +35,8 @@ def test_each_page_may_publish_only_what_its_role_allows():
     )
     console = r[CONSOLE]
     assert console.parameters and not r["h1"].parameters
-    for topic, kind in (("/cmd_vel_teleop", "geometry_msgs/msg/Twist"), ("/haven/thought", "std_msgs/msg/String"), ("/haven/trial_control", "std_msgs/msg/String")):
+    allowed = {"/cmd_vel_teleop": "geometry_msgs/msg/Twist", "/haven/thought": "std_msgs/msg/String", "/haven/trial_control": "std_msgs/msg/String"}
+    for topic, kind in allowed.items():
         assert console.may_publish(topic, kind) is None
     assert console.may_publish("/cmd_vel", "geometry_msgs/msg/Twist") is not None  # never around the mux
 
