@@ -5,6 +5,7 @@
     haven snapshot [OUT.png]                          save what the viewers show as a picture
     haven run [SCENARIO] [--participant ID] [--condition CUE...] [--rtf X] [--seed S] [--teleop [HUMAN...]]
                                                       one recorded trial -> a session folder
+                       [--web [--host H] [--port P]]  ... with first-person participant pages and a researcher console
     haven teleop [HUMAN]                              drive a participant's avatar from the keyboard
     haven report SESSION... [--out CSV]               metrics recomputed from recordings
     haven topics | echo TOPIC | hz TOPIC              graph inspection without the ros2 command
