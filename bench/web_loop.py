@@ -33,13 +33,15 @@ def main() -> None:
     ap.add_argument("--presses", type=int, default=30)
     ap.add_argument("--seconds", type=float, default=10.0)
     ap.add_argument("--size", default="960x540")
+    ap.add_argument("--params-file", default=None, help="parameters for the suite (e.g. another /humans rate)")
     a = ap.parse_args()
     width, height = (int(v) for v in a.size.split("x"))
     from playwright.sync_api import sync_playwright
 
     env = {**os.environ, "ROS_DOMAIN_ID": "91"}
     proc = subprocess.Popen(
-        [*HAVEN, "run", "shared_room", "--teleop", "h1", "--web", "--port", "0", "--sessions", str(OUT / "web_sessions")],
+        [*HAVEN, "run", "shared_room", "--teleop", "h1", "--web", "--port", "0", "--sessions", str(OUT / "web_sessions"),
+         *(["--params-file", a.params_file] if a.params_file else [])],
         env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True,
     )
     try:
@@ -60,7 +62,7 @@ def main() -> None:
                 page.wait_for_function(f"havenState.latencies.length > {i}", timeout=30_000)
                 page.keyboard.up(key)
                 time.sleep(0.6)  # stand still again before the next press
-            latencies = page.evaluate("havenState.latencies")
+            latencies, wire = page.evaluate("havenState.latencies"), page.evaluate("havenState.wire")
             page.keyboard.down("KeyA")
             f0, t0 = page.evaluate("havenState.frames"), time.monotonic()
             time.sleep(a.seconds)
@@ -71,9 +73,17 @@ def main() -> None:
         os.killpg(proc.pid, signal.SIGINT)
         proc.communicate(timeout=60)
     q = statistics.quantiles(latencies, n=20)
-    row = {"size": a.size, "presses": len(latencies), "median_ms": statistics.median(latencies), "p95_ms": q[18], "fps": fps}
-    print(f"key -> frame: median {row['median_ms']:.0f} ms, p95 {row['p95_ms']:.0f} ms over {len(latencies)} presses; {fps:.1f} frames/s at {a.size}")
-    save({"summary": row, "latencies_ms": latencies}, OUT / f"web_loop_{a.size}.json")
+    w = statistics.quantiles(wire, n=20)
+    row = {
+        "size": a.size, "presses": len(latencies), "median_ms": statistics.median(latencies), "p95_ms": q[18],
+        "pose_back_median_ms": statistics.median(wire), "pose_back_p95_ms": w[18], "fps": fps,
+    }
+    print(
+        f"key -> frame: median {row['median_ms']:.0f} ms, p95 {row['p95_ms']:.0f} ms over {len(latencies)} presses "
+        f"(key -> moved pose back: median {row['pose_back_median_ms']:.0f} ms, p95 {row['pose_back_p95_ms']:.0f} ms); "
+        f"{fps:.1f} frames/s at {a.size}"
+    )
+    save({"summary": row, "latencies_ms": latencies, "pose_back_ms": wire}, OUT / f"web_loop_{a.size}.json")
 
 
 if __name__ == "__main__":

@@ -12,7 +12,7 @@ import { taskLine, promptFor } from "./task.js";
 
 const cfg = readConfig();
 const me = cfg.role;
-const state = (window.havenState = { frames: 0, pose: null, trial: null, markers: {}, world: 0, latencies: [], xr: false });
+const state = (window.havenState = { frames: 0, pose: null, trial: null, markers: {}, world: 0, latencies: [], wire: [], xr: false });
 
 // -- the scene, in ROS coordinates (z up) -------------------------------------------------------
 const renderer = new THREE.WebGLRenderer({ antialias: true });
@@ -189,6 +189,7 @@ renderer.setAnimationLoop((time) => {
   state.frames++;
   if (pending && pending.seen !== undefined) {
     state.latencies.push(performance.now() - pending.t); // key press -> own pose moved -> this frame drawn
+    state.wire.push(pending.seen - pending.t); // ... of which until the moved pose arrived
     pending = null;
   }
   if (cfg.map_inset && time - insetAt > 200) {
