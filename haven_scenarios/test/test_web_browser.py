@@ -4,7 +4,8 @@ A participant page and the researcher console against a running suite: the scene
 by page state, never by time), W walks the avatar (seen on /humans), walking up to the robot shows
 its thought bubble in the rendered pixels, a cue toggled in the console leaves the participant's
 view and is recorded, the researcher's Stop ends the trial, and nothing is served without the token.
-Skipped, with one line, where no Chromium can be had.
+Two participants (one through the machine's network address) see each other, and Enter VR works
+with an emulated headset. Skipped, with one line, where no Chromium can be had.
 """
 
 import http.client
@@ -45,17 +46,27 @@ def browser():
         b.close()
 
 
-def head_on_scenario(tmp_path):
-    """The hallway with the participant 6 m ahead of the robot, facing it, so walking forward
-    brings them within the thought bubble's 3 m."""
+WEB_SOURCES = os.path.join(os.path.dirname(__file__), "..", "web")
+
+
+def hallway_world(tmp_path, humans):
+    """The hallway world with these humans ({id: start}) in place of its own."""
     from importlib import resources
 
     world = (resources.files("haven_scenarios") / "worlds" / "hallway.yaml").read_text()
-    world = world.replace('"start": [16.0, 16.0, 3.14159]', '"start": [8.0, 2.0, 3.14159]')
-    (tmp_path / "head_on_world.yaml").write_text(world)
+    listed = "".join(f'  - {{"id": "{h}", "start": {list(start)}}}\n' for h, start in humans.items())
+    world = world.replace('  - {"id": "h1", "start": [16.0, 16.0, 3.14159]}\n', listed)
+    (tmp_path / "world.yaml").write_text(world)
+    return "world.yaml"
+
+
+def head_on_scenario(tmp_path):
+    """The hallway with the participant 6 m ahead of the robot, facing it, so walking forward
+    brings them within the thought bubble's 3 m."""
+    world = hallway_world(tmp_path, {"h1": (8.0, 2.0, 3.14159)})
     path = tmp_path / "head_on.yaml"
     path.write_text(
-        "name: head_on\nworld: head_on_world.yaml\nkind: hallway\ntimeout_s: 300\nrobot: {route: [B, A]}\n"
+        f"name: head_on\nworld: {world}\nkind: hallway\ntimeout_s: 300\nrobot: {{route: [B, A]}}\n"
         "humans: [{id: h1, model: walker, route: [A, B], speed_mps: 1.0}]\n"
     )
     return path
@@ -66,19 +77,23 @@ class WebTrial:
 
     def __init__(self, ros, argv):
         self.proc = subprocess.Popen(
-            [*HAVEN, *argv, "--domain-id", str(ros.domain_id)], env=ros.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+            [*HAVEN, *argv, "--domain-id", str(ros.domain_id)],
+            env=ros.env,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
             start_new_session=True,
         )
         ros.procs.append(self.proc)
         self.lines: list[str] = []
         threading.Thread(target=lambda: self.lines.extend(iter(self.proc.stdout.readline, "")), daemon=True).start()
 
-    def urls(self, timeout_s=90):
+    def urls(self, timeout_s=90, pages=2):
         deadline = time.monotonic() + timeout_s
         while time.monotonic() < deadline:
-            found = dict(re.findall(r"web: (participant h1|researcher console): (\S+)", "".join(self.lines)))
-            if len(found) == 2:
-                return found["participant h1"], found["researcher console"]
+            found = dict(re.findall(r"web: (participant \w+|researcher console): (\S+)", "".join(self.lines)))
+            if len(found) == pages:
+                return found
             assert self.proc.poll() is None, "".join(self.lines)[-3000:]
             time.sleep(0.1)
         raise AssertionError("no URLs printed:\n" + "".join(self.lines)[-3000:])
@@ -118,7 +133,8 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
 
     scenario = head_on_scenario(tmp_path)
     trial = WebTrial(ros, ["run", str(scenario), "--teleop", "h1", "--web", "--port", "0", "--condition", "all", "--sessions", str(tmp_path / "s")])
-    participant_url, console_url = trial.urls()
+    urls = trial.urls()
+    participant_url, console_url = urls["participant h1"], urls["researcher console"]
 
     # Nobody gets in without the token: not the page, not its socket.
     assert status_of(participant_url.split("?")[0]) == 403
@@ -180,3 +196,81 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     assert ("trial_end", None, None, "stopped", "researcher") in kinds
     assert json.load(open(os.path.join(folder, "metrics.json")))["end_reason"] == "stopped"
     assert tracebacks("".join(trial.lines)) == []
+
+
+def lan_address():
+    """This machine's address on its network (not loopback), as another machine would use it."""
+    import socket
+
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        try:
+            s.connect(("192.0.2.1", 9))  # no packet is sent: this only picks the outgoing interface
+            address = s.getsockname()[0]
+        except OSError:
+            return None
+    return None if address.startswith("127.") else address
+
+
+def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_path):
+    address = lan_address()
+    if address is None:
+        pytest.skip("this machine has no network address besides loopback")
+    world = hallway_world(tmp_path, {"h1": (8.0, 2.0, 3.14159), "h2": (4.0, 2.0, 0.0)})
+    scenario = tmp_path / "pair.yaml"
+    scenario.write_text(
+        f"name: pair\nworld: {world}\nkind: hallway\ntimeout_s: 300\nrobot: {{route: [B, A]}}\n"
+        "humans: [{id: h1, model: walker, route: [A, B]}, {id: h2, model: walker, route: [B, A]}]\n"
+    )
+    trial = WebTrial(
+        ros, ["run", str(scenario), "--teleop", "h1", "h2", "--web", "--host", "0.0.0.0", "--port", "0", "--sessions", str(tmp_path / "s")]
+    )
+    urls = trial.urls(pages=3)
+    # The second participant comes from "another machine": this machine's network address.
+    remote = urls["participant h2"].replace("://0.0.0.0:", f"://{address}:")
+    assert status_of(remote.split("?")[0]) == 403  # on the network, the token is all the more needed
+    pages = {}
+    for who, url in (("h1", urls["participant h1"]), ("h2", remote)):
+        pages[who] = browser.new_page(viewport={"width": 480, "height": 270})
+        pages[who].goto(url)
+    for who, page in pages.items():
+        page.wait_for_function(
+            "s => (s = window.havenState) && s.pose && s.others === 1 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
+        )
+    pages["h1"].click("#start")
+    assert pages["h2"].evaluate("havenState.trial.state") == "held"  # the trial waits for everyone
+    pages["h2"].click("#start")
+    for page in pages.values():
+        page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
+    # h2 walks; h1 sees h2's avatar move.
+    seen = pages["h1"].evaluate("havenOthers().h2")
+    pages["h2"].keyboard.down("KeyW")
+    pages["h1"].wait_for_function(f"havenOthers().h2.x > {seen['x'] + 0.5}", timeout=PAGE_TIMEOUT_MS)
+    pages["h2"].keyboard.up("KeyW")
+
+
+def test_enter_vr_with_an_emulated_headset(ros, browser, tmp_path):
+    """WebXR with Meta's emulation runtime (iwer) standing in for a headset: Enter VR, the same
+    scene is drawn in the session, and turning the head turns the participant's view."""
+    if shutil.which("node") is None or not os.path.isdir(os.path.join(WEB_SOURCES, "node_modules", "iwer")):
+        pytest.skip("no Node.js or no haven_scenarios/web/node_modules to build the emulated headset: XR test skipped")
+    emulator = tmp_path / "xr_emulator.js"
+    subprocess.run(["node", "build.mjs", "--xr-emulator", str(emulator)], cwd=WEB_SOURCES, check=True, timeout=120)
+    trial = WebTrial(ros, ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")])
+    context = browser.new_context(viewport={"width": 480, "height": 270})
+    context.add_init_script(path=str(emulator))
+    page = context.new_page()
+    page.goto(trial.urls()["participant h1"])
+    page.wait_for_function(
+        "s => (s = window.havenState) && s.world > 0 && s.pose && s.xrOffered && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
+    )
+    page.click("#start")
+    page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    page.click("#enter-vr")
+    page.wait_for_function("havenState.xr === true", timeout=PAGE_TIMEOUT_MS)
+    frames = page.evaluate("havenState.frames")
+    page.wait_for_function(f"havenState.frames > {frames + 3}", timeout=PAGE_TIMEOUT_MS)
+    ahead = page.evaluate("havenState.view")
+    # The participant faces -x (yaw pi); the headset turns 90 deg to the left about its up axis.
+    page.evaluate("havenXrDevice.quaternion.set(0, Math.SQRT1_2, 0, Math.SQRT1_2)")
+    page.wait_for_function("havenState.view.y < -0.9", timeout=PAGE_TIMEOUT_MS)
+    assert ahead["x"] < -0.9, ahead  # before: straight down the hallway

@@ -171,6 +171,7 @@ window.havenProject = (x, y, z) => {
   const v = new THREE.Vector3(x, y, z).project(camera);
   return { x: ((v.x + 1) / 2) * window.innerWidth, y: ((1 - v.y) / 2) * window.innerHeight, z: v.z };
 };
+window.havenOthers = () => Object.fromEntries([...others].map(([id, a]) => [id, { x: a.position.x, y: a.position.y }]));
 window.havenMarker = (ns, id) => {
   const e = cues.objects.get(`${ns}/${id}`);
   return e ? { x: e.object.position.x, y: e.object.position.y, z: e.object.position.z } : null;
@@ -187,6 +188,10 @@ renderer.setAnimationLoop((time) => {
   cues.face(renderer.xr.isPresenting ? renderer.xr.getCamera() : camera, FACING);
   renderer.render(scene, camera);
   state.frames++;
+  // (from the matrix the frame was drawn with: getWorldDirection would recompute an XR camera's
+  // matrix without the avatar's rig)
+  const seen = new THREE.Vector3(0, 0, -1).transformDirection((renderer.xr.isPresenting ? renderer.xr.getCamera() : camera).matrixWorld);
+  state.view = { x: seen.x, y: seen.y, z: seen.z }; // where the participant looks (map frame)
   if (pending && pending.seen !== undefined) {
     state.latencies.push(performance.now() - pending.t); // key press -> own pose moved -> this frame drawn
     state.wire.push(pending.seen - pending.t); // ... of which until the moved pose arrived
