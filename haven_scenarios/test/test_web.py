@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from haven_scenarios.study.scenario import load_scenario
-from haven_scenarios.web.access import CONSOLE, READY, roles, route, token_of, token_ok, urls
+from haven_scenarios.web.access import CONSOLE, READY, role_token, roles, route, token_of, token_ok, urls
 from haven_scenarios.web.front_door import STATIC, FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config
 from haven_scenarios.web.wizard import StartGate, Wizard
@@ -52,10 +52,15 @@ def test_routes_and_tokens():
     assert (route("/ws/console?token=x").kind, route("/ws/participant/h2").role) == ("socket", "h2")
     assert route("/static/participant.js").rest == "participant.js"
     assert route("/static/../secret").kind == "" and route("/static/.hidden").kind == "" and route("/etc/passwd").kind == ""
-    assert token_of("/console?token=abc", None) == "abc"
-    assert token_of("/static/x.js", "a=1; haven_token=abc") == "abc"
+    assert token_of("/console?token=abc", None, CONSOLE) == "abc"
+    assert token_of("/console", "a=1; haven_token_console=abc", CONSOLE) == "abc"
+    assert token_of("/console", "a=1; haven_token_h1=abc", CONSOLE) == ""  # a participant's cookie is not the console's
     assert token_ok("abc", "abc") and not token_ok("", "abc") and not token_ok("abd", "abc")
-    assert urls("http://h:1", "T", ["h1"]) == {"h1": "http://h:1/participant/h1?token=T", CONSOLE: "http://h:1/console?token=T"}
+    assert urls("http://h:1", "S", ["h1"]) == {
+        "h1": f"http://h:1/participant/h1?token={role_token('S', 'h1')}",
+        CONSOLE: f"http://h:1/console?token={role_token('S', CONSOLE)}",
+    }
+    assert len({role_token("S", "h1"), role_token("S", "h2"), role_token("S", CONSOLE), role_token("T", "h1")}) == 4
 
 
 def test_a_page_is_told_its_role_the_pose_order_and_how_to_encode_what_it_sends():
@@ -89,10 +94,14 @@ class _Backend:
                 conn.sendall(data.upper())
 
 
+SECRET = "secret"
+H1, CON = role_token(SECRET, "h1"), role_token(SECRET, CONSOLE)
+
+
 @pytest.fixture
 def door():
     backend = _Backend()
-    d = FrontDoor("127.0.0.1", 0, "secret", {"h1": backend.port, CONSOLE: backend.port}, lambda role: {"role": role, "x": "</script>"})
+    d = FrontDoor("127.0.0.1", 0, SECRET, {"h1": backend.port, CONSOLE: backend.port}, lambda role: {"role": role, "x": "</script>"})
     d.start()
     yield d, backend
     d.stop()
@@ -110,16 +119,21 @@ def test_nothing_is_served_without_the_token(door):
     for path in ("/participant/h1", "/console?token=wrong", "/static/participant.js", "/ws/participant/h1"):
         status, body, _ = _get(d, path)
         assert status == 403 and b"token" in body, path
-    assert _get(d, "/participant/h9?token=secret")[0] == 404  # not a participant of this trial
+    assert _get(d, f"/participant/h9?token={H1}")[0] == 404  # not a participant of this trial
+    # A participant's token opens their page only: not the console, not its socket.
+    assert _get(d, f"/console?token={H1}")[0] == 403
+    assert _get(d, "/console", {"Cookie": f"haven_token_h1={H1}"})[0] == 403
+    assert _get(d, f"/ws/console?token={H1}", {"Upgrade": "websocket"})[0] == 403
+    assert _get(d, "/favicon.ico")[0] == 204
 
 
 def test_a_page_comes_with_its_settings_and_a_cookie_for_its_code(door):
     d, _ = door
-    status, body, r = _get(d, "/participant/h1?token=secret")
+    status, body, r = _get(d, f"/participant/h1?token={H1}")
     assert status == 200 and b'"role": "h1"' in body and b"</script>\"" not in body  # escaped inside the page
     cookie = r.getheader("Set-Cookie")
-    assert cookie.startswith("haven_token=secret;") and "HttpOnly" in cookie
-    status, js, r = _get(d, "/static/participant.js", {"Cookie": "haven_token=secret"})
+    assert cookie.startswith(f"haven_token_h1={H1};") and "HttpOnly" in cookie
+    status, js, r = _get(d, "/static/participant.js", {"Cookie": f"haven_token_h1={H1}"})
     assert status == 200 and r.getheader("Content-Type") == "text/javascript" and len(js) > 100_000
 
 
@@ -127,8 +141,8 @@ def test_a_socket_with_the_token_is_passed_through_byte_for_byte(door):
     d, backend = door
     with socket.create_connection(("127.0.0.1", d.port), timeout=5) as s:
         s.sendall(
-            b"GET /ws/participant/h1?token=secret HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n"
-            b"Sec-WebSocket-Protocol: foxglove.sdk.v1\r\nCookie: haven_token=secret\r\n\r\n"
+            f"GET /ws/participant/h1?token={H1} HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n".encode()
+            + f"Sec-WebSocket-Protocol: foxglove.sdk.v1\r\nCookie: haven_token_h1={H1}\r\n\r\n".encode()
         )
         reply = b""
         while b"\r\n\r\n" not in reply:

@@ -118,13 +118,14 @@ def screenshot(name, png):
             f.write(png)
 
 
-def dark_pixels(png, centre, half=40):
+def bubble_pixels(png, centre, half=40):
+    """Near-white (the bubble's label) and near-black (its text) pixels around a screen point."""
     from PIL import Image
 
     img = Image.open(BytesIO(png)).convert("L")
     x, y = int(centre["x"]), int(centre["y"])
-    box = img.crop((max(0, x - half), max(0, y - half), x + half, y + half))
-    return sum(box.histogram()[:50])
+    hist = img.crop((max(0, x - half), max(0, y - half), x + half, y + half)).histogram()
+    return sum(hist[243:]), sum(hist[:50])  # the label: white at 0.9 over the scene; the sky is ~229
 
 
 def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(ros, browser, tmp_path):
@@ -175,7 +176,9 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     after = page.screenshot()
     screenshot("web_participant.png", after)
     assert 0 < spot["x"] < 800 and 0 < spot["y"] < 450 and spot["z"] < 1, spot
-    assert dark_pixels(after, spot) > 40 + 3 * dark_pixels(before, before_spot), "no thought text drawn where the bubble is"
+    white, dark = bubble_pixels(after, spot)
+    white_before, _ = bubble_pixels(before, before_spot)
+    assert white > 1000 and dark > 40 and white_before < 100, ("no thought bubble drawn where it should be", white, dark, white_before)
 
     # The researcher switches the thought bubble off: it leaves the participant's view at once.
     console.uncheck("#cue-thought_bubble")

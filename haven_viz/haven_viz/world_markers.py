@@ -18,7 +18,7 @@ COLORS: dict[str, Color] = {
     "obstruction": (0.9, 0.4, 0.1, 0.9),
     "robot_gem": (0.1, 0.35, 1.0, 1.0),
     "human_gem": (0.9, 0.1, 0.1, 1.0),
-    "base": (0.85, 0.15, 0.15, 0.6),
+    "base": (0.55, 0.3, 0.85, 0.6),  # purple: not the red of the human gems' areas
     "room_text": (0.2, 0.2, 0.2, 1.0),
     "robot": (0.2, 0.2, 0.22, 1.0),
     "human": (0.85, 0.2, 0.2, 0.8),

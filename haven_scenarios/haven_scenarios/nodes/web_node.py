@@ -9,7 +9,8 @@ participant's velocity on /humans/<id>/cmd_vel; the console's robot driving on /
 trial start / stop / abort on /haven/trial_control, and the cue toggles as the viz node's
 parameters. The console's interventions are study events (`haven_scenarios.web.wizard`).
 
-The token comes from the environment (HAVEN_WEB_TOKEN, set by `haven run --web`), else a new one.
+The session's secret (each page role's token derives from it) comes from the environment
+(HAVEN_WEB_TOKEN, set by `haven run --web`), else a new one.
 """
 
 from __future__ import annotations
@@ -33,7 +34,7 @@ from haven_scenarios.study.rules import TrialCommand
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_scenarios.web.access import CONSOLE, READY, TOKEN_ENV, Role, absolute, new_token, roles, urls
-from haven_scenarios.web.front_door import FrontDoor
+from haven_scenarios.web.front_door import FrontDoor, address_for_others
 from haven_scenarios.web.page_config import PageSettings, page_config
 from haven_scenarios.web.wizard import StartGate, Wizard
 from haven_sim.common import topics
@@ -95,7 +96,7 @@ class WebNode(Node):
         super().__init__("web")
         host = str(self.declare_parameter("host", "127.0.0.1").value)
         port = int(self.declare_parameter("port", 8088).value)
-        humans = [h for h in self.declare_parameter("humans", [""]).value if h]
+        humans = [h for h in self.declare_parameter("humans", [""]).value or () if h]  # `[]` on the command line reads as None
         scenario = load_scenario(str(self.declare_parameter("scenario", "hallway").value))
         researcher_start = bool(self.declare_parameter("researcher_start", False).value)
         settings = PageSettings(
@@ -120,7 +121,7 @@ class WebNode(Node):
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
         self.door = FrontDoor(host, port, self.token, ports, configs.__getitem__)
         self.door.start()
-        shown = "localhost" if host in ("127.0.0.1", "localhost") else host
+        shown = address_for_others(host)
         for name, url in urls(f"http://{shown}:{self.door.port}", self.token, humans).items():
             print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)
 

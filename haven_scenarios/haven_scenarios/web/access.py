@@ -3,12 +3,15 @@
 A participant's page (`/participant/<id>`) may publish only that person's velocity; the researcher
 console (`/console`) may drive the robot through the velocity mux's teleop input, type the thought
 bubble's text, start, stop or abort the trial, and set the viz node's cue toggles. Every page, bundle
-and WebSocket request must carry the session's token (in the URL, or the cookie the first page sets):
-on a lab network nobody drives an avatar or changes a condition without it.
+and WebSocket request must carry its role's token (in the URL, or the cookie the page sets): each
+role's token is derived from the session's secret and the role, so a participant's address opens
+their own page only: not the console, not another participant's avatar.
 """
 
 from __future__ import annotations
 
+import base64
+import hashlib
 import hmac
 import re
 import secrets
@@ -20,7 +23,7 @@ from haven_sim.common import topics
 
 CONSOLE = "console"
 TWIST, STRING = "geometry_msgs/msg/Twist", "std_msgs/msg/String"
-TOKEN_PARAM, TOKEN_COOKIE = "token", "haven_token"
+TOKEN_PARAM, TOKEN_COOKIE = "token", "haven_token_"  # the cookie's name ends with the role
 TOKEN_ENV = "HAVEN_WEB_TOKEN"  # how `haven run --web` hands the session's token to the web node
 _ID = re.compile(r"^[A-Za-z0-9_]{1,64}$")  # a human id as ROS topic names allow it
 
@@ -75,20 +78,29 @@ def roles(humans: Sequence[str]) -> dict[str, Role]:
 
 
 def new_token() -> str:
+    """A session's secret."""
     return secrets.token_urlsafe(16)
+
+
+def role_token(secret: str, role: str) -> str:
+    """The token of one role's page and socket in a session."""
+    digest = hmac.new(secret.encode(), role.encode(), hashlib.sha256).digest()
+    return base64.urlsafe_b64encode(digest[:16]).decode().rstrip("=")
 
 
 @dataclass(frozen=True)
 class Request:
     """What the front door reads of a request: which page or socket, and whether its token is right."""
 
-    kind: str  # "page", "socket", "static" or "" (not ours)
+    kind: str  # "page", "socket", "static", "favicon" or "" (not ours)
     role: str  # a human id, CONSOLE, or "" for static files
     rest: str  # the static file's name
 
 
 def route(path: str) -> Request:
     parts = [p for p in urlsplit(path).path.split("/") if p]
+    if parts == ["favicon.ico"]:
+        return Request("favicon", "", "")
     if parts == [CONSOLE]:
         return Request("page", CONSOLE, "")
     if len(parts) == 2 and parts[0] == "participant":
@@ -102,24 +114,29 @@ def route(path: str) -> Request:
     return Request("", "", "")
 
 
-def token_of(path: str, cookie_header: str | None) -> str:
-    """The token a request carries: in the query, else in our cookie."""
+def token_of(path: str, cookie_header: str | None, role: str) -> str:
+    """The token a request carries for a role: in the query, else in that role's cookie."""
     given = parse_qs(urlsplit(path).query).get(TOKEN_PARAM, [""])[0]
     if given:
         return given
     for part in (cookie_header or "").split(";"):
         name, _, value = part.strip().partition("=")
-        if name == TOKEN_COOKIE:
+        if name == TOKEN_COOKIE + role:
             return value
     return ""
+
+
+def cookie_tokens(cookie_header: str | None) -> list[str]:
+    """Every role token in a request's cookies (the pages' code needs any one of them)."""
+    return [v for n, _, v in (p.strip().partition("=") for p in (cookie_header or "").split(";")) if n.startswith(TOKEN_COOKIE)]
 
 
 def token_ok(given: str, expected: str) -> bool:
     return bool(given) and hmac.compare_digest(given.encode(), expected.encode())
 
 
-def urls(base: str, token: str, humans: Sequence[str]) -> dict[str, str]:
-    """The pages to open: each participant's and the console, token included."""
-    out = {h: f"{base}/participant/{h}?{TOKEN_PARAM}={token}" for h in humans}
-    out[CONSOLE] = f"{base}/{CONSOLE}?{TOKEN_PARAM}={token}"
+def urls(base: str, secret: str, humans: Sequence[str]) -> dict[str, str]:
+    """The pages to open, each with its own role's token: each participant's and the console."""
+    out = {h: f"{base}/participant/{h}?{TOKEN_PARAM}={role_token(secret, h)}" for h in humans}
+    out[CONSOLE] = f"{base}/{CONSOLE}?{TOKEN_PARAM}={role_token(secret, CONSOLE)}"
     return out

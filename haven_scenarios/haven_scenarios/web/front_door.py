@@ -19,7 +19,7 @@ from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from importlib import resources
 from typing import Any
 
-from haven_scenarios.web.access import CONSOLE, TOKEN_COOKIE, route, token_of, token_ok
+from haven_scenarios.web.access import CONSOLE, TOKEN_COOKIE, cookie_tokens, role_token, route, token_of, token_ok
 
 STATIC = resources.files("haven_scenarios.web") / "static"
 CONFIG_MARK = "{{CONFIG}}"
@@ -30,6 +30,21 @@ def page_html(role: str, config: Mapping[str, Any]) -> bytes:
     template = (STATIC / ("console.html" if role == CONSOLE else "participant.html")).read_text()
     text = json.dumps(config).replace("<", "\\u003c")
     return template.replace(CONFIG_MARK, text).encode()
+
+
+def address_for_others(host: str) -> str:
+    """The host part of the printed addresses: `localhost` for this machine only; for every
+    interface (0.0.0.0), this machine's network address, which another machine can use."""
+    if host in ("127.0.0.1", "localhost", "::1"):
+        return "localhost"
+    if host not in ("0.0.0.0", "::", ""):
+        return host
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        try:
+            s.connect(("192.0.2.1", 9))  # sends nothing: picks the interface a packet would leave by
+            return str(s.getsockname()[0])
+        except OSError:
+            return socket.gethostname()
 
 
 def _pump(a: socket.socket, b: socket.socket) -> None:
@@ -53,10 +68,12 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
 
 class FrontDoor:
     def __init__(
-        self, host: str, port: int, token: str, backends: Mapping[str, int], config: Callable[[str], Mapping[str, Any]]
+        self, host: str, port: int, secret: str, backends: Mapping[str, int], config: Callable[[str], Mapping[str, Any]]
     ) -> None:
-        """`backends`: role -> its Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings."""
-        self.token, self.backends, self.config = token, dict(backends), config
+        """`secret`: the session's (each role's token derives from it); `backends`: role -> its
+        Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings."""
+        self.tokens = {role: role_token(secret, role) for role in backends}
+        self.backends, self.config = dict(backends), config
         door = self
 
         class Handler(BaseHTTPRequestHandler):
@@ -83,14 +100,23 @@ class FrontDoor:
         self.httpd.shutdown()
         self.httpd.server_close()
 
+    def _allowed(self, h: BaseHTTPRequestHandler, role: str) -> bool:
+        cookies = h.headers.get("Cookie")
+        if role:  # a page or a socket: that role's token
+            return token_ok(token_of(h.path, cookies, role), self.tokens[role])
+        given = token_of(h.path, None, "") or ""  # the pages' code: any role's token
+        return any(token_ok(t, expected) for t in [given, *cookie_tokens(cookies)] for expected in self.tokens.values())
+
     def handle(self, h: BaseHTTPRequestHandler) -> None:
         req = route(h.path)
+        if req.kind == "favicon":
+            return self._reply(h, 204, b"")
         if not req.kind or (req.role and req.role not in self.backends):
             return self._reply(h, 404, b"no such page")
-        if not token_ok(token_of(h.path, h.headers.get("Cookie")), self.token):
-            return self._reply(h, 403, b"this page needs the session's token: open the address `haven run` printed")
+        if not self._allowed(h, req.role):
+            return self._reply(h, 403, b"this page needs its token: open the address `haven run` printed for it")
         if req.kind == "page":
-            cookie = f"{TOKEN_COOKIE}={self.token}; Path=/; HttpOnly; SameSite=Strict"
+            cookie = f"{TOKEN_COOKIE}{req.role}={self.tokens[req.role]}; Path=/; HttpOnly; SameSite=Strict"
             return self._reply(h, 200, page_html(req.role, self.config(req.role)), "text/html; charset=utf-8", cookie)
         if req.kind == "static":
             asset = STATIC / req.rest

@@ -26,6 +26,11 @@ const link = new Link(
       state.cue = JSON.parse(m.data);
       state.toggles = state.cue.toggles;
       showToggles();
+      showThought();
+    },
+    "/haven/thought": (m) => {
+      state.thought = m.data;
+      showThought();
     },
     "/haven/events": (m) => {
       const e = JSON.parse(m.data);
@@ -69,9 +74,19 @@ function showStatus() {
         .map(([id, h]) => `${id}: ${h.done ? "done" : t.kind === "hallway" ? `room ${h.rooms_done} of ${h.rooms.length}` : `gems ${h.gems_done} of ${h.gems_total}${h.dwell !== null ? " (in a gem)" : ""}`}`)
         .join(" · ");
   document.getElementById("start").disabled = !t || t.state !== "held";
-  document.getElementById("stop").disabled = document.getElementById("abort").disabled = !t || t.state === "ended";
+  const over = !t || t.state === "ended";
+  for (const el of document.querySelectorAll("#stop, #abort, #toggles input, #drive-pad button, #thought-form *")) el.disabled = over;
+}
+
+// What the robot "thinks" now, and whether a participant sees it (the bubble shows within 3 m).
+function showThought() {
+  const shown = state.cue && state.cue.thought;
+  document.getElementById("thought-now").textContent = state.thought
+    ? `robot thinks: "${state.thought}" (${shown ? "shown to a participant" : "not shown: nobody near, or the cue is off"})`
+    : "robot thinks: nothing yet";
 }
 showStatus();
+showThought();
 
 // -- the condition: four toggles, set as the viz node's parameters -----------------------------------
 const togglesEl = document.getElementById("toggles");

@@ -10,6 +10,7 @@ const box = new THREE.BoxGeometry(1, 1, 1);
 const ball = new THREE.SphereGeometry(0.5, 24, 16);
 const tube = new THREE.CylinderGeometry(0.5, 0.5, 1, 32).rotateX(Math.PI / 2); // ROS cylinders stand on z
 const materials = new Map();
+const BUBBLE = { r: 1, g: 1, b: 1, a: 0.9 }; // a thought bubble's text sits on a white label facing the viewer
 
 function material(c, lit = true) {
   const key = `${c.r},${c.g},${c.b},${c.a},${lit}`;
@@ -21,14 +22,21 @@ function material(c, lit = true) {
 }
 
 // A text label as a sprite (always faces the camera); `height` in metres.
-export function textSprite(text, color, height) {
-  const px = 64, pad = 12;
+export function textSprite(text, color, height, background = null) {
+  const px = 64, pad = background ? 28 : 12;
   const canvas = document.createElement("canvas");
   const ctx = canvas.getContext("2d");
   ctx.font = `bold ${px}px sans-serif`;
   canvas.width = Math.ceil(ctx.measureText(text).width) + 2 * pad;
   canvas.height = px + 2 * pad;
   ctx.font = `bold ${px}px sans-serif`;
+  if (background) {
+    const b = background;
+    ctx.fillStyle = `rgba(${255 * b.r},${255 * b.g},${255 * b.b},${b.a})`;
+    ctx.beginPath();
+    ctx.roundRect(0, 0, canvas.width, canvas.height, canvas.height / 2);
+    ctx.fill();
+  }
   ctx.fillStyle = `rgba(${255 * color.r},${255 * color.g},${255 * color.b},${color.a})`;
   ctx.textBaseline = "middle";
   ctx.fillText(text, pad, canvas.height / 2);
@@ -68,7 +76,7 @@ function build(m, options) {
     case ARROW:
       return arrow(m);
     case TEXT:
-      return textSprite(m.text, m.color, m.scale.z * (options.textScale || 1));
+      return textSprite(m.text, m.color, m.scale.z, options.bubbles && options.bubbles.has(m.ns) ? BUBBLE : null);
     case TRIANGLES: {
       const stretch = (options.stretchZ && options.stretchZ[m.ns]) || 1;
       const pos = new Float32Array(m.points.length * 3);
@@ -88,7 +96,9 @@ function build(m, options) {
 }
 
 export class MarkerLayer {
-  // options: {hide: Set of namespaces drawn otherwise, stretchZ: {ns: factor}, lift: {ns: z}}
+  // options: {hide: Set of namespaces drawn otherwise, stretchZ: {ns: factor}, lift: {ns: z},
+  // bubbles: Set of namespaces whose text is drawn on its own white label, facing the viewer, in
+  // place of the namespace's other markers (the viz node's backdrop, which suits a top-down view)}
   constructor(parent, options = {}) {
     this.group = new THREE.Group();
     parent.add(this.group);
@@ -105,6 +115,7 @@ export class MarkerLayer {
       const key = `${m.ns}/${m.id}`;
       this.remove(key);
       if (m.action === DELETE || (this.options.hide && this.options.hide.has(m.ns))) continue;
+      if (m.type !== TEXT && this.options.bubbles && this.options.bubbles.has(m.ns)) continue;
       const object = build(m, this.options);
       if (!object) continue;
       const p = m.pose.position, q = m.pose.orientation;
@@ -141,8 +152,7 @@ export class MarkerLayer {
   }
 
   // The namespaces that face the viewer (the battery gauge and the thought bubble, as in HAVEN):
-  // each is turned about its first marker so that its x axis runs across the view, and a text
-  // inside a bigger marker of its namespace (the bubble's backdrop) is drawn in front of it.
+  // each is turned about its first marker so that its x axis runs left to right across the view.
   face(camera, namespaces) {
     const eye = new THREE.Vector3();
     camera.getWorldPosition(eye);
@@ -156,20 +166,12 @@ export class MarkerLayer {
     for (const objects of groups.values()) {
       objects.sort((a, b) => a.userData.id - b.userData.id);
       const centre = objects[0].userData.anchor;
-      const yaw = Math.atan2(eye.y - centre.y, eye.x - centre.x) - Math.PI / 2; // x axis across the view
+      const yaw = Math.atan2(eye.y - centre.y, eye.x - centre.x) + Math.PI / 2; // the viewer's right
       const c = Math.cos(yaw), s = Math.sin(yaw);
-      const backdrop = objects.filter((o) => o.userData.type !== TEXT).reduce((r, o) => Math.max(r, o.userData.scale.x / 2, o.userData.scale.y / 2), 0);
       for (const o of objects) {
         const d = o.userData.anchor.clone().sub(centre);
         o.position.set(centre.x + c * d.x - s * d.y, centre.y + s * d.x + c * d.y, o.userData.anchor.z);
-        if (o.userData.type === TEXT) {
-          // along the line of sight, so the text stays drawn over the backdrop's centre
-          const toEye = eye.clone().sub(o.position).normalize();
-          const inside = backdrop > 0 && objects.some((b) => b !== o && b.userData.type !== TEXT && b.userData.anchor.distanceTo(o.userData.anchor) < 0.05);
-          if (inside) o.position.addScaledVector(toEye, backdrop + 0.02);
-        } else if (o.userData.type !== SPHERE) {
-          o.rotation.set(0, 0, yaw);
-        }
+        if (o.userData.type !== TEXT && o.userData.type !== SPHERE) o.rotation.set(0, 0, yaw);
       }
     }
   }

@@ -37,7 +37,7 @@ scene.add(grid);
 
 const stretch = cfg.view_wall_height_m / cfg.marker_wall_height_m;
 const world = new MarkerLayer(scene, { stretchZ: { walls: stretch, obstructions: stretch }, lift: { rooms: cfg.view_wall_height_m - 0.3 } });
-const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]) }); // bodies come from the poses
+const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]) }); // bodies come from the poses
 const FACING = new Set(["thought_bubble", "battery_indicator"]);
 const robot = turtlebot(cfg.robot_body.radius_m, cfg.robot_body.height_m);
 robot.visible = false;
@@ -135,8 +135,16 @@ function showTrial() {
     promptEl.querySelector("small").textContent = prompt.small;
     startButton.hidden = !prompt.start;
   }
-  controls.enabled = !t || t.state === "running";
+  controls.enabled = !!t && t.state === "running" && state.connected;
+  document.getElementById("lost").hidden = state.connected || !state.everConnected;
 }
+setInterval(() => {  // the connection: a notice when it is lost, and no walking blind
+  state.everConnected ||= state.connected;
+  if (state.shownConnected !== state.connected) {
+    state.shownConnected = state.connected;
+    showTrial();
+  }
+}, 250);
 showTrial();
 
 // -- the map inset (optional per study) ----------------------------------------------------------
