@@ -218,21 +218,18 @@ def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_
     address = lan_address()
     if address is None:
         pytest.skip("this machine has no network address besides loopback")
-    world = hallway_world(tmp_path, {"h1": (8.0, 2.0, 3.14159), "h2": (4.0, 2.0, 0.0)})
-    scenario = tmp_path / "pair.yaml"
-    scenario.write_text(
-        f"name: pair\nworld: {world}\nkind: hallway\ntimeout_s: 300\nrobot: {{route: [B, A]}}\n"
-        "humans: [{id: h1, model: walker, route: [A, B]}, {id: h2, model: walker, route: [B, A]}]\n"
-    )
     trial = WebTrial(
-        ros, ["run", str(scenario), "--teleop", "h1", "h2", "--web", "--host", "0.0.0.0", "--port", "0", "--sessions", str(tmp_path / "s")]
+        ros, ["run", "hallway_pair", "--teleop", "h1", "h2", "--web", "--host", "0.0.0.0", "--port", "0", "--sessions", str(tmp_path / "s")]
     )
     urls = trial.urls(pages=3)
-    # The second participant comes from "another machine": this machine's network address.
-    remote = urls["participant h2"].replace("://0.0.0.0:", f"://{address}:")
+    # The printed addresses are the machine's network address: h2 comes "from another machine"
+    # through it, h1 sits at this one.
+    remote = urls["participant h2"]
+    assert urlsplit(remote).hostname == address
+    local = urls["participant h1"].replace(f"://{address}:", "://localhost:")
     assert status_of(remote.split("?")[0]) == 403  # on the network, the token is all the more needed
     pages = {}
-    for who, url in (("h1", urls["participant h1"]), ("h2", remote)):
+    for who, url in (("h1", local), ("h2", remote)):
         pages[who] = browser.new_page(viewport={"width": 480, "height": 270})
         pages[who].goto(url)
     for who, page in pages.items():
