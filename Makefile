@@ -20,6 +20,8 @@ bench: setup
 	.venv/bin/python bench/odom_rate.py
 	.venv/bin/python bench/planner_latency.py
 	.venv/bin/python bench/trials.py
+	.venv/bin/python bench/web_wire.py
+	.venv/bin/python bench/web_loop.py
 
 lock:
 	./scripts/lock.sh

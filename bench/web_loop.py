@@ -40,9 +40,24 @@ def main() -> None:
 
     env = {**os.environ, "ROS_DOMAIN_ID": "91"}
     proc = subprocess.Popen(
-        [*HAVEN, "run", "shared_room", "--teleop", "h1", "--web", "--port", "0", "--sessions", str(OUT / "web_sessions"),
-         *(["--params-file", a.params_file] if a.params_file else [])],
-        env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True,
+        [
+            *HAVEN,
+            "run",
+            "shared_room",
+            "--teleop",
+            "h1",
+            "--web",
+            "--port",
+            "0",
+            "--sessions",
+            str(OUT / "web_sessions"),
+            *(["--params-file", a.params_file] if a.params_file else []),
+        ],
+        env=env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        start_new_session=True,
     )
     try:
         url = None
@@ -75,8 +90,13 @@ def main() -> None:
     q = statistics.quantiles(latencies, n=20)
     w = statistics.quantiles(wire, n=20)
     row = {
-        "size": a.size, "presses": len(latencies), "median_ms": statistics.median(latencies), "p95_ms": q[18],
-        "pose_back_median_ms": statistics.median(wire), "pose_back_p95_ms": w[18], "fps": fps,
+        "size": a.size,
+        "presses": len(latencies),
+        "median_ms": statistics.median(latencies),
+        "p95_ms": q[18],
+        "pose_back_median_ms": statistics.median(wire),
+        "pose_back_p95_ms": w[18],
+        "fps": fps,
     }
     print(
         f"key -> frame: median {row['median_ms']:.0f} ms, p95 {row['p95_ms']:.0f} ms over {len(latencies)} presses "

@@ -1,0 +1,106 @@
+"""The participant's loop without a browser: a Foxglove WebSocket client of our own (through the
+front door, as a page connects) sends the avatar's velocity as CDR and times until the moved pose
+comes back on /humans. With bench/web_loop.py this splits the loop into the suite's part and the
+browser's (on this machine's software renderer the browser's frames dominate).
+
+usage: python bench/web_wire.py [--presses 20]
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import os
+import re
+import signal
+import statistics
+import struct
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import websockets
+from geometry_msgs.msg import PoseArray, Twist
+from rclpy.serialization import deserialize_message, serialize_message
+from std_msgs.msg import String
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from common import OUT, save  # noqa: E402
+
+HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
+CLIENT_DATA = b"\x01"  # the Foxglove protocol's client message opcode
+SERVER_DATA = 1
+
+
+def frame(channel: int, msg: object) -> bytes:
+    return CLIENT_DATA + struct.pack("<I", channel) + bytes(serialize_message(msg))
+
+
+async def measure(urls: dict[str, str], presses: int) -> list[float]:
+    p = urls["participant h1"].replace("http://", "ws://").replace("/participant/", "/ws/participant/")
+    c = urls["researcher console"].replace("http://", "ws://").replace("/console", "/ws/console")
+    async with websockets.connect(p, subprotocols=["foxglove.sdk.v1"]) as ws, websockets.connect(c, subprotocols=["foxglove.sdk.v1"]) as console:
+        adv = {
+            "op": "advertise",
+            "channels": [{"id": 1, "topic": "/humans/h1/cmd_vel", "encoding": "cdr", "schemaName": "geometry_msgs/msg/Twist", "schema": ""}],
+        }
+        await ws.send(json.dumps(adv))
+        adv = {
+            "op": "advertise",
+            "channels": [{"id": 1, "topic": "/haven/trial_control", "encoding": "cdr", "schemaName": "std_msgs/msg/String", "schema": ""}],
+        }
+        await console.send(json.dumps(adv))
+        await console.send(frame(1, String(data="start")))
+        lat: list[float] = []
+        sent_at, yaw, settle_until = None, 0.0, time.monotonic() + 3.0
+        async for raw in ws:
+            if isinstance(raw, str):
+                msg = json.loads(raw)
+                for ch in msg.get("channels", []) if msg.get("op") == "advertise" else []:
+                    if ch["topic"] == "/humans":
+                        await ws.send(json.dumps({"op": "subscribe", "subscriptions": [{"id": 7, "channelId": ch["id"]}]}))
+                continue
+            if raw[0] != SERVER_DATA:
+                continue
+            z = deserialize_message(raw[13:], PoseArray).poses[0].orientation.z
+            now = time.monotonic()
+            if sent_at is None and now >= settle_until:
+                cmd = Twist()
+                cmd.angular.z = 1.6 if len(lat) % 2 else -1.6  # turning on the spot
+                yaw, sent_at = z, time.monotonic()
+                await ws.send(frame(1, cmd))
+            elif sent_at is not None and abs(z - yaw) > 5e-4:
+                lat.append((now - sent_at) * 1000)
+                sent_at, settle_until = None, now + 0.8
+                await ws.send(frame(1, Twist()))
+                if len(lat) >= presses:
+                    return lat
+    return lat
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--presses", type=int, default=20)
+    a = ap.parse_args()
+    env = {**os.environ, "ROS_DOMAIN_ID": "92"}
+    argv = [*HAVEN, "run", "shared_room", "--teleop", "h1", "--web", "--port", "0", "--researcher-start", "--sessions", str(OUT / "web_sessions")]
+    proc = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True)
+    try:
+        urls: dict[str, str] = {}
+        while len(urls) < 2:
+            m = re.search(r"web: (participant h1|researcher console): (\S+)", proc.stdout.readline() if proc.stdout else "")
+            if m:
+                urls[m.group(1)] = m.group(2)
+        lat = asyncio.run(measure(urls, a.presses))
+    finally:
+        os.killpg(proc.pid, signal.SIGINT)
+        proc.communicate(timeout=60)
+    q = statistics.quantiles(lat, n=20)
+    print(f"velocity sent -> moved pose back (no browser): median {statistics.median(lat):.0f} ms, p95 {q[18]:.0f} ms over {len(lat)}")
+    save({"median_ms": statistics.median(lat), "p95_ms": q[18], "latencies_ms": lat}, OUT / "web_wire.json")
+
+
+if __name__ == "__main__":
+    main()
