@@ -105,7 +105,7 @@ class WebNode(Node):
             map_inset=bool(self.declare_parameter("map_inset", True).value),
         )
         self.roles = roles(humans)
-        self.token = os.environ.get(TOKEN_ENV) or new_token()
+        self.secret = os.environ.get(TOKEN_ENV) or new_token()
         self.table = wire.specs(human_ids=[h.id for h in scenario.world.humans])
         self.pubs: dict[str, Publisher] = {}
         self.sequencer, self.wizard, self._lock = Sequencer(), Wizard(), threading.Lock()
@@ -119,10 +119,10 @@ class WebNode(Node):
             ports[name] = int(server.port)
         self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
-        self.door = FrontDoor(host, port, self.token, ports, configs.__getitem__)
+        self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__)
         self.door.start()
         shown = address_for_others(host)
-        for name, url in urls(f"http://{shown}:{self.door.port}", self.token, humans).items():
+        for name, url in urls(f"http://{shown}:{self.door.port}", self.secret, humans).items():
             print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)
 
     def _relay(self, topic: str, msgtype: str, data: bytes) -> None:

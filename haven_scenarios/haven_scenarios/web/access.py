@@ -24,7 +24,7 @@ from haven_sim.common import topics
 CONSOLE = "console"
 TWIST, STRING = "geometry_msgs/msg/Twist", "std_msgs/msg/String"
 TOKEN_PARAM, TOKEN_COOKIE = "token", "haven_token_"  # the cookie's name ends with the role
-TOKEN_ENV = "HAVEN_WEB_TOKEN"  # how `haven run --web` hands the session's token to the web node
+TOKEN_ENV = "HAVEN_WEB_TOKEN"  # how `haven run --web` hands the session's secret to the web node
 _ID = re.compile(r"^[A-Za-z0-9_]{1,64}$")  # a human id as ROS topic names allow it
 
 

@@ -85,7 +85,10 @@ class FrontDoor:
             def do_GET(self) -> None:
                 door.handle(self)
 
-        self.httpd = ThreadingHTTPServer((host, port), Handler)
+        try:
+            self.httpd = ThreadingHTTPServer((host, port), Handler)
+        except OSError as e:  # one line for the user, not a traceback
+            raise ValueError(f"cannot serve the study pages on {host}:{port}: {e.strerror}") from None
         self.httpd.daemon_threads = True
         self.thread = threading.Thread(target=self.httpd.serve_forever, name="front_door", daemon=True)
 

@@ -160,7 +160,7 @@ class WebOptions:
     port: int
     researcher_start: bool = False
     map_inset: bool = True
-    token: str = field(default_factory=new_token)
+    secret: str = field(default_factory=new_token)  # each page role's token derives from it
 
 
 def _web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
@@ -175,7 +175,7 @@ def _web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
         "researcher_start": web.researcher_start,
         "map_inset": web.map_inset,
     }
-    return ProcessSpec("web", node_argv("haven_scenarios.nodes.web_node", params), env={TOKEN_ENV: web.token}, cwd=str(folder.resolve()))
+    return ProcessSpec("web", node_argv("haven_scenarios.nodes.web_node", params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))
 
 
 def port_free(host: str, port: int) -> str | None:
