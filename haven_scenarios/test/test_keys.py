@@ -1,5 +1,5 @@
 from haven_scenarios.tools.keys import KeyMapper
-from haven_scenarios.tools.teleop_status import announce
+from haven_scenarios.tools.teleop_status import announce, joined
 from haven_sim.common.events import EventKind, event
 from haven_sim.common.geometry import Twist2D
 
@@ -25,3 +25,10 @@ def test_a_teleoperating_participant_is_told_their_progress_and_the_end():
     assert announce(event(EventKind.GEM_COLLECTED, 3.0, "rules", gem="hg3", by="h2"), "h1") is None  # someone else's
     assert announce(event(EventKind.TASK_DONE, 9.0, "scenario", by="h1"), "h1") == "your task is done: wait for the trial to end"
     assert announce(event(EventKind.TRIAL_END, 9.5, "scenario", reason="completed"), "h1") == "trial over (completed): thank you"
+
+
+def test_a_late_teleop_client_is_told_where_the_trial_is():
+    assert joined('{"state": "running", "humans": {}}') == ("the trial is running: go!", False)
+    assert joined('{"state": "held"}') == ("waiting for the trial to start", False)
+    assert joined('{"state": "ended", "end_reason": "completed"}') == ("trial over (completed): thank you", True)
+    assert joined("not json") == (None, False)

@@ -1,7 +1,8 @@
 """Drive a human avatar from this terminal: keys -> geometry_msgs/Twist on /humans/<human>/cmd_vel.
 
 Works against `haven run --teleop` (or any running suite); the terminal is restored on exit. The
-participant is told their progress from the study log, and the client ends with the trial.
+participant is told where the trial is when the client starts (the latched /haven/trial_status), then
+their progress from the study log, and the client ends with the trial.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ from rclpy.node import Node
 from std_msgs.msg import String
 
 from haven_scenarios.tools.keys import HELP, KeyMapper
-from haven_scenarios.tools.teleop_status import announce
+from haven_scenarios.tools.teleop_status import announce, joined
 from haven_sim.common.events import EventError, EventKind
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
@@ -38,6 +39,8 @@ class KeyboardTeleop(Node):
         tty.setcbreak(sys.stdin.fileno())
         print(f"teleop {human}: {HELP}", flush=True)
         self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
+        self._joined = False
+        self.create_subscription(String, "haven/trial_status", self._on_status, qos.LATCHED)
         self.create_timer(0.05, self._tick)
 
     def _on_event(self, msg: String) -> None:
@@ -49,6 +52,16 @@ class KeyboardTeleop(Node):
         if line is not None:
             print(f"\r{line}", flush=True)
         self.over = self.over or e.kind is EventKind.TRIAL_END
+
+    def _on_status(self, msg: String) -> None:
+        """Once, on joining (later changes come as events): where the trial is."""
+        if self._joined:
+            return
+        self._joined = True
+        line, over = joined(msg.data)
+        if line is not None:
+            print(f"\r{line}", flush=True)
+        self.over = self.over or over
 
     def _tick(self) -> None:
         if self.over:
