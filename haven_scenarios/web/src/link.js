@@ -15,6 +15,7 @@ export class Link {
     this.readers = new Map(); // subscription id -> {topic, reader}
     this.writers = new Map(); // topic -> {channel, writer}
     this.parameterHandlers = [];
+    this.reconnect = true; // the page turns it off once the trial is over
     this.state.decoded = {};
     this.state.connected = false;
     this.connect();
@@ -38,7 +39,7 @@ export class Link {
     client.on("close", () => {
       this.state.connected = false;
       this.readers.clear();
-      setTimeout(() => this.connect(), 1000); // the suite may still be starting
+      if (this.reconnect) setTimeout(() => this.connect(), 1000); // the suite may still be starting, or restarting
     });
     client.on("error", () => {});
     client.on("advertise", (channels) => {

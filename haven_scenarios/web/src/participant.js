@@ -135,8 +135,10 @@ function showTrial() {
     promptEl.querySelector("small").textContent = prompt.small;
     startButton.hidden = !prompt.start;
   }
+  const over = !!t && t.state === "ended";
   controls.enabled = !!t && t.state === "running" && state.connected;
-  document.getElementById("lost").hidden = state.connected || !state.everConnected;
+  link.reconnect = !over; // the study is over: its server goes away, and that is no loss
+  document.getElementById("lost").hidden = state.connected || !state.everConnected || over;
 }
 setInterval(() => {  // the connection: a notice when it is lost, and no walking blind
   state.everConnected ||= state.connected;

@@ -1,7 +1,7 @@
 // What the participant is told: the task line (their progress) and the prompts before and after
 // the trial, from the latched /haven/trial_status.
 export function taskLine(t, me) {
-  if (!t || !t.humans[me]) return "";
+  if (!t || !t.humans[me] || t.state === "ended") return "";
   const h = t.humans[me];
   if (h.done) return "Your task is done: wait for the trial to end";
   if (t.kind === "hallway") {

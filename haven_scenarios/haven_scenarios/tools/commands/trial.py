@@ -43,7 +43,9 @@ from haven_viz.cues import CUES, Toggles
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run = sub.add_parser("run", help="run one recorded trial of a scenario (default: hallway, simulated participant)")
     run.add_argument("scenario", nargs="?", default="hallway", help=f"a shipped scenario ({', '.join(scenario_names())}) or a YAML")
-    run.add_argument("--participant", default="sim", help="participant id for the session (default: sim)")
+    run.add_argument(
+        "--participant", default=None, help="participant id for the session (default: sim, or the teleoperated humans' ids, e.g. h1-h2)"
+    )
     run.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
     run.add_argument(
         "--rtf",
@@ -301,7 +303,8 @@ def run_cmd(args: argparse.Namespace) -> int:
         busy = port_free(args.host, args.port)
         if busy:
             return fail(busy)
-    plan = SessionPlan(scenario, toggles, args.seed, args.participant, base, args.rtf, args.free_running, web=web)
+    participant = args.participant or "-".join(h.id for h in scenario.humans if h.model == "teleop") or "sim"
+    plan = SessionPlan(scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, web=web)
     return run_session(args, plan, Path(args.sessions))
 
 
