@@ -187,6 +187,13 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
 
     screenshot("web_console.png", console.screenshot())
 
+    # A console opened mid-trial has the whole study log, each event once.
+    late = browser.new_page(viewport={"width": 1100, "height": 600})
+    late.goto(console_url)
+    late.wait_for_function("havenState.events.some(e => e.type === 'participant_ready')", timeout=PAGE_TIMEOUT_MS)
+    keys = late.evaluate("havenState.events.map(e => e.source + '/' + e.seq)")
+    assert len(keys) == len(set(keys)) and "scenario/1" in keys
+
     # ... and stops the trial: the participant is told, the session is complete.
     console.click("#stop")
     page.wait_for_function("havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)

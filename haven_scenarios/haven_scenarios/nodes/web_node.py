@@ -46,6 +46,7 @@ from haven_viz.cues import CUES
 
 VIZ_NODE = "viz"
 PARAMETER_TIMEOUT_S = 3.0
+EVENTS_KEPT = 2000  # a trial logs a few hundred
 RELAYED = tuple(
     absolute(t)
     for t in (
@@ -113,6 +114,7 @@ class WebNode(Node):
         self.events = self._publisher(absolute(topics.EVENTS))
         self.viz = AsyncParameterClient(self, VIZ_NODE)
         self.relay = FoxgloveRelay()
+        self.relay.keep(absolute(topics.EVENTS), EVENTS_KEPT)  # a console opened mid-trial shows the whole log
         ports = {}
         for name, role in self.roles.items():
             server = self.relay.serve("127.0.0.1", 0, f"haven {name}", RoleSink(self, role), parameters=role.parameters)

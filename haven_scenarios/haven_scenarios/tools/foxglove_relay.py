@@ -2,8 +2,10 @@
 
 Channels are created per topic with the message definition rosbags generates for this ROS
 distribution (the same text rosbag2 writes into MCAP files), so Foxglove decodes them like a bag.
-The last message of each latched topic (map, plan, world markers, thought) is kept and sent again
-when a client subscribes to it, since a late client would otherwise never see it.
+The last message of each latched topic (map, plan, world markers, thought), or the last `keep` of
+one (the study log), is kept and sent again when a client subscribes to it, since a late client
+would otherwise never see it (clients already there get it again: latched state is idempotent, and
+events carry a per-source `seq` to drop repeats by).
 
 One relay can serve several servers (the channels are shared): `haven bridge` runs one that only
 sends; the study's web pages each get one whose clients may also publish (Foxglove's client-publish
@@ -13,6 +15,7 @@ capability) and, for the researcher console, set parameters, as a `ClientSink` a
 from __future__ import annotations
 
 import threading
+from collections import deque
 from collections.abc import Sequence
 from typing import Any, Protocol
 
@@ -76,7 +79,7 @@ class _Listener(ServerListener):
 class FoxgloveRelay:
     def __init__(self) -> None:
         self.channels: dict[str, Channel] = {}
-        self.latched: dict[str, tuple[bytes, int] | None] = {}
+        self.latched: dict[str, deque[tuple[bytes, int]]] = {}
         self._lock = threading.Lock()
         self.servers: list[Any] = []
 
@@ -109,20 +112,25 @@ class FoxgloveRelay:
         schema = Schema(name=msgtype, encoding="ros2msg", data=msgdef(msgtype).encode())
         self.channels[topic] = Channel(topic, schema=schema, message_encoding="cdr")
         if latched:
-            self.latched[topic] = None
+            self.latched.setdefault(topic, deque(maxlen=1))
         return True
+
+    def keep(self, topic: str, count: int) -> None:
+        """Send the last `count` messages of a topic to a client that subscribes late."""
+        with self._lock:
+            self.latched[topic] = deque(self.latched.get(topic, ()), maxlen=count)
 
     def publish(self, topic: str, data: bytes, log_time_ns: int) -> None:
         if topic in self.latched:
             with self._lock:
-                self.latched[topic] = (bytes(data), log_time_ns)
+                self.latched[topic].append((bytes(data), log_time_ns))
         self.channels[topic].log(bytes(data), log_time=log_time_ns)
 
     def resend_latched(self, topic: str) -> None:
         with self._lock:
-            last = self.latched.get(topic)
-        if last is not None:
-            self.channels[topic].log(last[0], log_time=last[1])
+            kept = list(self.latched.get(topic, ()))
+        for data, log_time in kept:
+            self.channels[topic].log(data, log_time=log_time)
 
     def stop(self) -> None:
         for server in self.servers:

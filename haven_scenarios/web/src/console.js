@@ -7,6 +7,7 @@ const cfg = readConfig();
 const CUES = ["path_projection", "turn_signals", "thought_bubble", "battery_indicator"];
 const state = (window.havenState = { frames: 0, trial: null, toggles: null, events: [], tracks: { robot: [] }, cue: null });
 const world = new Map(); // "ns/id" -> marker
+const seen = new Set(); // events shown, by source and seq
 const cueMarkers = new Map();
 let plan = [];
 
@@ -34,6 +35,9 @@ const link = new Link(
     },
     "/haven/events": (m) => {
       const e = JSON.parse(m.data);
+      const key = `${e.source}/${e.seq}`; // the log is sent again to each console that opens: once each
+      if (seen.has(key)) return;
+      seen.add(key);
       state.events.push(e);
       const line = document.createElement("div");
       const { stamp, source, type, seq, ...rest } = e;
