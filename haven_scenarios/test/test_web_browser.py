@@ -255,9 +255,16 @@ def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_
     pages["h2"].keyboard.up("KeyW")
 
 
-def test_enter_vr_with_an_emulated_headset(ros, browser, tmp_path):
-    """WebXR with Meta's emulation runtime (iwer) standing in for a headset: Enter VR, the same
-    scene is drawn in the session, and turning the head turns the participant's view."""
+GAMEPAD = """
+window.testPad = { id: "test pad", index: 0, connected: true, mapping: "standard", timestamp: 0, axes: [0, 0, 0, 0], buttons: [] };
+navigator.getGamepads = () => [window.testPad];
+"""
+
+
+def test_a_gamepad_walks_and_enter_vr_works_with_an_emulated_headset(ros, browser, tmp_path):
+    """A gamepad (a stand-in behind the Gamepad API) walks the avatar; then WebXR with Meta's
+    emulation runtime (iwer) standing in for a headset: Enter VR, the same scene is drawn in the
+    session, and turning the head turns the participant's view."""
     if shutil.which("node") is None or not os.path.isdir(os.path.join(WEB_SOURCES, "node_modules", "iwer")):
         pytest.skip("no Node.js or no haven_scenarios/web/node_modules to build the emulated headset: XR test skipped")
     emulator = tmp_path / "xr_emulator.js"
@@ -265,6 +272,7 @@ def test_enter_vr_with_an_emulated_headset(ros, browser, tmp_path):
     trial = WebTrial(ros, ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")])
     context = browser.new_context(viewport={"width": 480, "height": 270})
     context.add_init_script(path=str(emulator))
+    context.add_init_script(GAMEPAD)
     page = context.new_page()
     page.goto(trial.urls()["participant h1"])
     page.wait_for_function(
@@ -272,6 +280,11 @@ def test_enter_vr_with_an_emulated_headset(ros, browser, tmp_path):
     )
     page.click("#start")
     page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    # A gamepad's left stick walks the avatar (the Gamepad API's standard mapping: up is -1).
+    x0 = page.evaluate("havenState.pose.x")
+    page.evaluate("window.testPad.axes[1] = -1")
+    page.wait_for_function(f"havenState.pose.x < {x0} - 0.3", timeout=PAGE_TIMEOUT_MS)  # facing -x
+    page.evaluate("window.testPad.axes[1] = 0")
     page.click("#enter-vr")
     page.wait_for_function("havenState.xr === true", timeout=PAGE_TIMEOUT_MS)
     frames = page.evaluate("havenState.frames")
