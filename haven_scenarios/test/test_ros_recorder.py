@@ -49,3 +49,15 @@ def test_messages_the_recorder_could_not_read_are_counted_and_flag_the_session(r
     assert len(recording.events) < 3040 and recording.events[-1].stamp == pytest.approx(30.39)  # the last "after"
     reasons = check(recording, None)["invalid_reasons"]
     assert f"/haven/events: {lost['/haven/events']} message(s) lost before the recorder read them" in reasons
+
+
+def test_the_recorder_reads_a_stream_messages_stamp_without_decoding_it():
+    from geometry_msgs.msg import PoseArray
+    from nav_msgs.msg import Odometry
+    from rclpy.serialization import serialize_message
+
+    from haven_scenarios.nodes.recorder import header_stamp
+
+    for msg in (Odometry(), PoseArray()):
+        msg.header.stamp.sec, msg.header.stamp.nanosec = 12, 340_000_000
+        assert header_stamp(bytes(serialize_message(msg))) == pytest.approx(12.34)

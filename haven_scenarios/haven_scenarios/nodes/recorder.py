@@ -6,10 +6,15 @@ written with the receive time in sim time (rosbag2's convention); each topic is 
 QoS its publishers offer, so `ros2 bag play` re-latches the latched ones. Messages DDS reports lost
 on the way (a reader too far behind) are counted per topic into the bag's metadata. On Ctrl-C,
 SIGTERM or SIGHUP the recorder first writes whatever its readers still hold, then closes the bag.
+
+Once it has the `trial_end` event and, on every state stream, a message stamped at or after it,
+the recorder says so with a file (`END_MARK` in the session folder): `haven run` stops the nodes
+then, not after a guessed delay, so a busy machine cannot cut the last moments of a trial.
 """
 
 from __future__ import annotations
 
+import struct
 import sys
 from pathlib import Path
 
@@ -21,11 +26,21 @@ from std_msgs.msg import String
 
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.record.bag import BagWriter
+from haven_scenarios.record.session import END_MARK
 from haven_sim.common import topics
+from haven_sim.common.events import EventKind
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes.runner import run_node
 
 EVENTS = "/" + topics.EVENTS
+STREAMS = ("/" + topics.ODOM, "/" + topics.HUMANS)  # header-first messages the metrics need to the end
+
+
+def header_stamp(cdr: bytes) -> float:
+    """The header stamp of a CDR message that starts with a std_msgs/Header (after the 4-byte
+    encapsulation header), without deserialising the rest."""
+    sec, nanosec = struct.unpack_from("<iI" if cdr[1] == 1 else ">iI", cdr, 4)
+    return sec + nanosec * 1e-9
 
 
 def bag_qos(p: QoSProfile) -> Qos:
@@ -57,6 +72,9 @@ class Recorder(Node):
         self.bag.__enter__()
         self.events = (folder / "events.jsonl").open("a", encoding="utf-8")
         self.lost: dict[str, int] = {}
+        self.end_mark = folder / END_MARK
+        self.end_stamp: float | None = None
+        self.reached: set[str] = set()  # streams recorded up to the end
         self.topics = RawTopics(self, lambda topic, msgtype, latched: True, self._on_message, keep_all=True, on_lost=self._on_lost, batched=True)
 
     def _on_lost(self, topic: str, n: int, best_effort: bool) -> None:
@@ -77,6 +95,10 @@ class Recorder(Node):
                 self.get_logger().warning(f"not recording {topic}: type {msgtype} unknown to rosbags", throttle_duration_sec=60.0)
                 return
         self.bag.write(topic, self.get_clock().now().nanoseconds, data)
+        if self.end_stamp is not None and topic in STREAMS and topic not in self.reached and header_stamp(data) >= self.end_stamp - 1e-6:
+            self.reached.add(topic)
+            if self.reached >= set(STREAMS):
+                self.end_mark.write_text(f"{self.end_stamp}\n")
         if topic == EVENTS:
             try:
                 event = conv.event_from_msg(deserialize_message(data, String))
@@ -85,6 +107,8 @@ class Recorder(Node):
                 return
             self.events.write(event.to_json() + "\n")
             self.events.flush()
+            if event.kind is EventKind.TRIAL_END:
+                self.end_stamp = event.stamp
 
     def destroy_node(self) -> None:
         self.topics.drain()

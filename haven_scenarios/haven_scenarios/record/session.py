@@ -39,6 +39,7 @@ from haven_viz.world_markers import world_markers
 
 PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags", "mcap")
 SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = "scenario.yaml", "world.yaml", "params.yaml", "session.json", "metrics.json"
+END_MARK = ".recorded_through_end"  # the recorder has the trial's end on every state stream (nodes/recorder.py)
 
 
 def new_session_dir(root: Path, scenario: str, participant: str) -> Path:

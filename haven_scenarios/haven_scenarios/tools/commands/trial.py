@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.session import (
+    END_MARK,
     METRICS_FILE,
     PARAMS_FILE,
     SCENARIO_FILE,
@@ -35,7 +36,6 @@ from haven_scenarios.tools.commands.common import add_ros_options, environment, 
 from haven_scenarios.tools.commands.studies import CONDITION_HELP
 from haven_scenarios.tools.supervisor import Exited, ProcessSpec, Supervisor, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
-from haven_sim.common.events import EventKind
 from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
 from haven_viz.cues import CUES, Toggles
 
@@ -191,18 +191,14 @@ def port_free(host: str, port: int) -> str | None:
     return None
 
 
-RECORDER_SETTLE_S = 0.5  # after `trial_end`, for the stream messages stamped before it still on their way
-
-
-def _wait_for_recorded_end(events: Path, timeout_s: float) -> None:
-    """Give the recorder a moment to receive the `trial_end` event, and the stream messages stamped
-    before it (a busy recorder reads the few events ahead of /odom's backlog), before everything stops."""
+def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
+    """Until the recorder has the `trial_end` event and the state streams up to it (it writes
+    END_MARK), or `timeout_s` (a stream that stopped: a node died), before everything stops."""
+    mark = folder / END_MARK
     deadline = time.monotonic() + timeout_s
-    while time.monotonic() < deadline:
-        if events.exists() and any(f'"type": "{EventKind.TRIAL_END}"' in line for line in events.read_text().splitlines()):
-            time.sleep(RECORDER_SETTLE_S)
-            return
+    while time.monotonic() < deadline and not mark.exists():
         time.sleep(0.05)
+    mark.unlink(missing_ok=True)
 
 
 def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path, timeout_s: float | None) -> Exited | None:
@@ -212,7 +208,7 @@ def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path,
             sup.start(spec)
         exited = sup.wait(timeout_s=timeout_s, until_exit_of="scenario")
         sup.stop(first=("scenario",))  # (a scenario stopped mid-trial still publishes trial_end, interrupted)
-        _wait_for_recorded_end(folder / "events.jsonl", 5.0)
+        _wait_for_recorded_end(folder, 10.0)
         sup.stop()
     return exited
 
