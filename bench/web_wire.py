@@ -22,20 +22,25 @@ import time
 from pathlib import Path
 
 import websockets
-from geometry_msgs.msg import PoseArray, Twist
-from rclpy.serialization import deserialize_message, serialize_message
-from std_msgs.msg import String
+
+from haven_scenarios.record.bag import TYPESTORE
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from common import OUT, save  # noqa: E402
 
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
+# Messages are built and read with rosbags' CDR codec (no rclpy: this is a client from outside ROS).
+Twist, Vector3, String = (TYPESTORE.types[t] for t in ("geometry_msgs/msg/Twist", "geometry_msgs/msg/Vector3", "std_msgs/msg/String"))
 CLIENT_DATA = b"\x01"  # the Foxglove protocol's client message opcode
 SERVER_DATA = 1
 
 
-def frame(channel: int, msg: object) -> bytes:
-    return CLIENT_DATA + struct.pack("<I", channel) + bytes(serialize_message(msg))
+def frame(channel: int, msg: object, msgtype: str) -> bytes:
+    return CLIENT_DATA + struct.pack("<I", channel) + bytes(TYPESTORE.serialize_cdr(msg, msgtype))
+
+
+def twist(wz: float) -> object:
+    return Twist(linear=Vector3(0.0, 0.0, 0.0), angular=Vector3(0.0, 0.0, wz))
 
 
 async def measure(urls: dict[str, str], presses: int) -> list[float]:
@@ -52,7 +57,7 @@ async def measure(urls: dict[str, str], presses: int) -> list[float]:
             "channels": [{"id": 1, "topic": "/haven/trial_control", "encoding": "cdr", "schemaName": "std_msgs/msg/String", "schema": ""}],
         }
         await console.send(json.dumps(adv))
-        await console.send(frame(1, String(data="start")))
+        await console.send(frame(1, String(data="start"), "std_msgs/msg/String"))
         lat: list[float] = []
         sent_at, yaw, settle_until = None, 0.0, time.monotonic() + 3.0
         async for raw in ws:
@@ -64,17 +69,15 @@ async def measure(urls: dict[str, str], presses: int) -> list[float]:
                 continue
             if raw[0] != SERVER_DATA:
                 continue
-            z = deserialize_message(raw[13:], PoseArray).poses[0].orientation.z
+            z = TYPESTORE.deserialize_cdr(raw[13:], "geometry_msgs/msg/PoseArray").poses[0].orientation.z
             now = time.monotonic()
             if sent_at is None and now >= settle_until:
-                cmd = Twist()
-                cmd.angular.z = 1.6 if len(lat) % 2 else -1.6  # turning on the spot
                 yaw, sent_at = z, time.monotonic()
-                await ws.send(frame(1, cmd))
+                await ws.send(frame(1, twist(1.6 if len(lat) % 2 else -1.6), "geometry_msgs/msg/Twist"))  # turning on the spot
             elif sent_at is not None and abs(z - yaw) > 5e-4:
                 lat.append((now - sent_at) * 1000)
                 sent_at, settle_until = None, now + 0.8
-                await ws.send(frame(1, Twist()))
+                await ws.send(frame(1, twist(0.0), "geometry_msgs/msg/Twist"))
                 if len(lat) >= presses:
                     return lat
     return lat
