@@ -43,8 +43,6 @@ class PageSettings:
 
 def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[str, Any]:
     world = scenario.world
-    xs = [x for s in world.walls for x, _ in s.polygon] or [0.0]
-    ys = [y for s in world.walls for _, y in s.polygon] or [0.0]
     speeds: Mapping[str, float] = {h.id: h.speed_mps for h in scenario.humans}
     return {
         "role": role.name,
@@ -58,7 +56,7 @@ def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[
         "session": settings.session,
         "scenario": scenario.name,
         "kind": scenario.kind,
-        "bounds": [min(xs), min(ys), max(xs), max(ys)],
+        "bounds": list(world.bounds()),
         "eye_height_m": EYE_HEIGHT_M,
         "robot_body": {"radius_m": ROBOT_BODY.radius_m, "height_m": ROBOT_BODY.height_m},
         "human_body": {"radius_m": HUMAN_BODY.radius_m, "height_m": HUMAN_BODY.height_m},

@@ -2,6 +2,7 @@
 // controls, the condition's four cue toggles (the viz node's parameters), the event stream, and
 // Wizard-of-Oz control of the robot (teleop velocity, thought text). Every intervention is an event.
 import { Link, config as readConfig, twist, yawOf } from "./link.js";
+import { fit, footprint, disc, rgba } from "./topdown.js";
 
 const cfg = readConfig();
 const CUES = ["path_projection", "turn_signals", "thought_bubble", "battery_indicator"];
@@ -140,40 +141,21 @@ document.getElementById("thought-form").addEventListener("submit", (e) => {
 // -- the top-down scene --------------------------------------------------------------------------------
 const canvas = document.getElementById("scene");
 const COLORS = { robot: "#222", me: "#1660e8" };
-function rgba(c, minA = 0) {
-  return `rgba(${Math.round(255 * c.r)},${Math.round(255 * c.g)},${Math.round(255 * c.b)},${Math.max(c.a, minA)})`;
-}
 function draw() {
-  const w = (canvas.width = canvas.clientWidth), h = (canvas.height = canvas.clientHeight);
+  canvas.width = canvas.clientWidth;
+  canvas.height = canvas.clientHeight;
   const ctx = canvas.getContext("2d");
-  const [x0, y0, x1, y1] = cfg.bounds;
-  const pad = 0.8;
-  const s = Math.min(w / (x1 - x0 + 2 * pad), h / (y1 - y0 + 2 * pad));
-  const X = (x) => (x - x0 + pad) * s, Y = (y) => h - (y - y0 + pad) * s;
-  const markers = [...world.values(), ...cueMarkers.values()];
-  for (const m of markers) {
+  const t = fit(canvas, cfg.bounds, 0.8);
+  const { s, X, Y } = t;
+  for (const m of [...world.values(), ...cueMarkers.values()]) {
     const p = m.pose.position;
-    ctx.fillStyle = rgba(m.color, 0.3);
-    if (m.type === 11) {
-      for (let i = 0; i + 2 < m.points.length; i += 3) {
-        const [a, b, c] = [m.points[i], m.points[i + 1], m.points[i + 2]];
-        if (!(a.z > 0.01 && b.z > 0.01 && c.z > 0.01)) continue;
-        ctx.beginPath();
-        ctx.moveTo(X(a.x), Y(a.y));
-        ctx.lineTo(X(b.x), Y(b.y));
-        ctx.lineTo(X(c.x), Y(c.y));
-        ctx.fill();
-      }
-    } else if (m.type === 9) {
+    if (m.type === 11) footprint(ctx, m, t);
+    else if (m.type === 9) {
       if (m.ns === "human_names") continue;
       ctx.font = m.ns === "rooms" ? "bold 16px sans-serif" : "13px sans-serif";
       ctx.fillStyle = rgba(m.color, 1);
       ctx.fillText(m.text, X(p.x) + (m.ns === "rooms" ? -6 : 10), Y(p.y) - (m.ns === "rooms" ? 0 : 12));
-    } else if (m.ns !== "robot" && m.ns !== "humans") {
-      ctx.beginPath();
-      ctx.arc(X(p.x), Y(p.y), Math.max(2, (Math.max(m.scale.x, m.scale.y) / 2) * s), 0, 2 * Math.PI);
-      ctx.fill();
-    }
+    } else if (m.ns !== "robot" && m.ns !== "humans") disc(ctx, m, t);
   }
   if (plan.length) {
     ctx.strokeStyle = "rgba(230,180,0,0.9)";
@@ -182,18 +164,18 @@ function draw() {
     plan.forEach((p, i) => (i ? ctx.lineTo(X(p.x), Y(p.y)) : ctx.moveTo(X(p.x), Y(p.y))));
     ctx.stroke();
   }
-  for (const [id, t] of Object.entries(state.tracks)) {
+  for (const [id, track] of Object.entries(state.tracks)) {
     const color = id === "robot" ? COLORS.robot : cfg.humans.indexOf(id) === 0 ? COLORS.me : "#c33";
     ctx.strokeStyle = color;
     ctx.lineWidth = 1.5;
     ctx.beginPath();
-    t.forEach((p, i) => (i ? ctx.lineTo(X(p.x), Y(p.y)) : ctx.moveTo(X(p.x), Y(p.y))));
+    track.forEach((p, i) => (i ? ctx.lineTo(X(p.x), Y(p.y)) : ctx.moveTo(X(p.x), Y(p.y))));
     ctx.stroke();
     const p = lastPose[id];
     if (!p) continue;
     ctx.fillStyle = color;
     ctx.beginPath();
-    ctx.arc(X(p.x), Y(p.y), id === "robot" ? 0.177 * s : 0.25 * s, 0, 2 * Math.PI);
+    ctx.arc(X(p.x), Y(p.y), (id === "robot" ? cfg.robot_body.radius_m : cfg.human_body.radius_m) * s, 0, 2 * Math.PI);
     ctx.fill();
     ctx.strokeStyle = "#fff";
     ctx.beginPath();
