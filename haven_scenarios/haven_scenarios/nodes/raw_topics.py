@@ -89,18 +89,20 @@ class RawTopics:
         keep_all: bool = False,
         on_lost: Callable[[str, int, bool], None] | None = None,
         batched: bool = False,
+        held: tuple[str, ...] = (),
     ) -> None:
         """`topics`: only these (all of the graph when None); `keep_all`: readers that drop nothing
         (a recorder's), else the depth of the topic's profile; `on_lost(topic, n)`: DDS reports
         that n messages of a topic never reached the reader (and whether it is a best-effort topic); `batched`: messages are handed over
         every DRAIN_PERIOD_S instead of one callback each (a recorder at 10x real time gets
-        thousands a second)."""
+        thousands a second); `held`: suite topics not subscribed until `release()`."""
         self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = node, add, on_message, topics, keep_all, on_lost
         self.group = DrainedReaders() if batched else None
-        self.handled: set[str] = set()
+        self.handled: set[str] = set(held)
+        self.held = {topic: (msgtype, profile) for topic, msgtype, profile in known_topics() if topic in held}
         self.subscriptions: dict[str, tuple[str, Subscription]] = {}  # topic -> (type name, subscription)
         for topic, msgtype, profile in known_topics():
-            if self._wanted(topic):
+            if self._wanted(topic) and topic not in held:
                 self._subscribe(topic, msgtype, profile)
         # Wall clock: topics must be found even before /clock runs.
         node.create_timer(1.0, self.discover, clock=Clock(clock_type=ClockType.STEADY_TIME))
@@ -116,6 +118,13 @@ class RawTopics:
 
     def _wanted(self, topic: str) -> bool:
         return topic not in IGNORED and not topic.startswith(IGNORED) and (self.only is None or topic in self.only)
+
+    def release(self) -> None:
+        """Subscribe the held topics (with the topic table's QoS)."""
+        for topic, (msgtype, profile) in self.held.items():
+            if self._wanted(topic):
+                self._subscribe(topic, msgtype, profile)
+        self.held = {}
 
     def discover(self) -> None:
         for topic, types in self.node.get_topic_names_and_types():

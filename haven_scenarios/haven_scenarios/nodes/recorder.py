@@ -7,6 +7,12 @@ QoS its publishers offer, so `ros2 bag play` re-latches the latched ones. Messag
 on the way (a reader too far behind) are counted per topic into the bag's metadata. On Ctrl-C,
 SIGTERM or SIGHUP the recorder first writes whatever its readers still hold, then closes the bag.
 
+The recorder subscribes /haven/events only once /odom and /humans reach it: the director starts the
+trial when the recorder listens to its events, so the state streams are recorded from the start
+(DDS matches each topic on its own; on a busy machine at 10x the streams matched 7 s of sim time
+after the events once). Its publishers keep the last 100 events for it, so none are lost by waiting.
+Without a simulator (the streams never come) it subscribes after STREAMS_WAIT_S all the same.
+
 Once it has the `trial_end` event and, on every state stream, a message stamped at or after it,
 the recorder says so with a file (`END_MARK` in the session folder): `haven run` stops the nodes
 then, not after a guessed delay, so a busy machine cannot cut the last moments of a trial.
@@ -18,6 +24,7 @@ import struct
 import sys
 from pathlib import Path
 
+from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
 from rclpy.serialization import deserialize_message
@@ -34,6 +41,7 @@ from haven_sim.nodes.runner import run_node
 
 EVENTS = "/" + topics.EVENTS
 STREAMS = ("/" + topics.ODOM, "/" + topics.HUMANS)  # header-first messages the metrics need to the end
+STREAMS_WAIT_S = 5.0  # wall time
 
 
 def header_stamp(cdr: bytes) -> float:
@@ -75,7 +83,18 @@ class Recorder(Node):
         self.end_mark = folder / END_MARK
         self.end_stamp: float | None = None
         self.reached: set[str] = set()  # streams recorded up to the end
-        self.topics = RawTopics(self, lambda topic, msgtype, latched: True, self._on_message, keep_all=True, on_lost=self._on_lost, batched=True)
+        self.flowing: set[str] = set()  # streams that have reached the recorder
+        self.topics = RawTopics(
+            self, lambda topic, msgtype, latched: True, self._on_message, keep_all=True, on_lost=self._on_lost, batched=True, held=(EVENTS,)
+        )
+        self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
+
+    def _streams_missing(self) -> None:
+        self._give_up.cancel()
+        if self.topics.held:
+            missing = ", ".join(sorted(set(STREAMS) - self.flowing))
+            self.get_logger().info(f"no {missing} after {STREAMS_WAIT_S:g} s: recording /haven/events without")
+            self.topics.release()
 
     def _on_lost(self, topic: str, n: int, best_effort: bool) -> None:
         """Counted for the bag's metadata; a warning unless the publisher sends best effort (a
@@ -95,6 +114,10 @@ class Recorder(Node):
                 self.get_logger().warning(f"not recording {topic}: type {msgtype} unknown to rosbags", throttle_duration_sec=60.0)
                 return
         self.bag.write(topic, self.get_clock().now().nanoseconds, data)
+        if topic in STREAMS and self.topics.held:
+            self.flowing.add(topic)
+            if self.flowing >= set(STREAMS):
+                self.topics.release()
         if self.end_stamp is not None and topic in STREAMS and topic not in self.reached and header_stamp(data) >= self.end_stamp - 1e-6:
             self.reached.add(topic)
             if self.reached >= set(STREAMS):
