@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 import pytest
+from foreign_paths import GOAL, arc_path
 from helpers import box_world, drive_closed_loop
 
 from haven_sim.common.events import EventKind
@@ -83,6 +84,24 @@ def test_follows_a_path_made_by_another_planner():
     assert follower.status is Status.ARRIVED
     assert sim.robot_pose().distance_to((3.0, 7.0)) <= 0.1
     assert max(worst[20:]) < 0.08  # stays on the 2 m circle
+
+
+SHAPES = [dict(spacing_m=0.05), dict(spacing_m=0.05, orientation="tangent", yaw_jitter_deg=1.0), dict(spacing_m=0.4)]
+
+
+@pytest.mark.parametrize("shape", SHAPES, ids=["navfn", "smac", "sparse"])
+def test_a_nav2_shaped_path_is_followed_to_its_goal_pose(shape):
+    """NavFn-like (identity orientations, the goal yaw on the last pose), Smac-like (noisy yaws),
+    sparse: followed along the arc, then rotated to the goal yaw."""
+    sim = Simulation(box_world(10.0, robot={"start": [2.0, 2.0, 0.0]}))
+    poses = arc_path(origin=(2.0, 2.0), **shape)
+    follower = PathFollower()
+    follower.set_path(poses)
+    drive_closed_loop(sim, follower, 60.0)
+    p = sim.robot_pose()
+    assert follower.status is Status.ARRIVED
+    assert p.distance_to((GOAL.x + 2.0, GOAL.y + 2.0)) <= 0.15
+    assert abs(math.remainder(p.yaw - GOAL.yaw, 2 * math.pi)) <= 0.15
 
 
 def test_waiting_holds_still_and_empty_path_is_idle():

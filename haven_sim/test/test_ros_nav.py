@@ -10,7 +10,7 @@ from std_msgs.msg import Bool, String
 
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
-from haven_sim.common.paths import SegmentKind, classify
+from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.nav.navigator import Navigator
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
@@ -74,7 +74,7 @@ def test_goal_pose_to_plan_to_arrival_without_touching_walls(ros):
     world = load_world(packaged_world("small_test"))
     expected = Navigator(rasterise(world)).set_goal(world.robot_start, Pose2D(7.2, 4.5, math.pi / 2), 0.0).path
     assert len(path) == len(expected) and all(a.distance_to(b) < 1e-6 and abs(a.yaw - b.yaw) < 1e-6 for a, b in zip(path, expected))
-    assert {s.kind for s in classify(path)} >= {SegmentKind.STRAIGHT, SegmentKind.ROTATE}  # a door to go through, a yaw to end on
+    assert {s.kind for s in read_path(path).segments} >= {SegmentKind.STRAIGHT, SegmentKind.ROTATE}  # a door to go through, a yaw to end on
     p = rest_pose(ros, odom, events_of(events, EventKind.GOAL_REACHED)[0].stamp)
     assert math.hypot(p.x - 7.2, p.y - 4.5) <= 0.1
     assert abs(math.remainder(p.yaw - math.pi / 2, 2 * math.pi)) <= math.radians(6)

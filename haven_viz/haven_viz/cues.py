@@ -31,9 +31,9 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from haven_sim.common.bodies import ROBOT_BODY
-from haven_sim.common.geometry import Point, Pose2D, wrap_angle
+from haven_sim.common.geometry import FloatArray, Point, Pose2D, wrap_angle
 from haven_sim.common.params import param
-from haven_sim.common.paths import SegmentKind, classify
+from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.common.polyline import Polyline
 from haven_viz.markers import Color, MarkerSpec, Shape
 
@@ -161,26 +161,24 @@ class _Rotation:
     yaw: float  # where the rotation ends
 
 
-def _layout(poses: Sequence[Pose2D], spacing: float) -> tuple[list[_PathMarker], list[_Rotation], Polyline]:
-    """Marker positions every `spacing` along the path, the rotations in place, and the path as a
-    polyline."""
+def _layout(poses: Sequence[Pose2D], spacing: float) -> tuple[list[_PathMarker], list[_Rotation], Polyline, FloatArray]:
+    """Marker positions every `spacing` along the path, the rotations in place, the path as a
+    polyline and its travel heading per segment (read from its geometry: any planner's path)."""
     line = Polyline(poses)
+    reading = read_path(poses)
     if not poses:
-        return [], [], line
-    arc_segments: set[int] = set()
-    rotations = []
-    for seg in classify(poses):
-        if seg.kind is SegmentKind.ARC:
-            arc_segments.update(range(seg.start, seg.end))
-        elif seg.kind is SegmentKind.ROTATE:
-            end = poses[seg.end]
-            rotations.append(_Rotation(end.x, end.y, float(line.cumulative[seg.end]), end.yaw))
+        return [], [], line, reading.headings
+    rotations = [
+        _Rotation(poses[seg.end].x, poses[seg.end].y, float(line.cumulative[seg.end]), seg.yaw)
+        for seg in reading.segments
+        if seg.kind is SegmentKind.ROTATE
+    ]
     markers = []
     for k in range(1, int(line.length / spacing + 1e-9) + 1):
         s = k * spacing
         x, y = line.point_at(s)
-        markers.append(_PathMarker(x, y, s, line.moving_segment_at(s) in arc_segments))
-    return markers, rotations, line
+        markers.append(_PathMarker(x, y, s, any(a - 1e-9 <= s <= b + 1e-9 for a, b in reading.arcs)))
+    return markers, rotations, line, reading.headings
 
 
 class ArCues:
@@ -194,9 +192,7 @@ class ArCues:
         self.set_path([])
 
     def set_path(self, poses: Sequence[Pose2D]) -> None:
-        self._markers, self._rotations, self._line = _layout(poses, self.params.marker_spacing_m)
-        d = np.diff(self._line.points, axis=0)
-        self._heading = np.arctan2(d[:, 1], d[:, 0]) if len(d) else np.zeros(0)  # per segment
+        self._markers, self._rotations, self._line, self._heading = _layout(poses, self.params.marker_spacing_m)
         self._progress = 0.0
         self._rotations_done = 0
 

@@ -3,6 +3,7 @@
 import math
 
 import pytest
+from foreign_paths import ARC_END_M, ARC_START_M, arc_path
 
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.path_style import shape_path
@@ -44,6 +45,22 @@ def test_spheres_on_straights_cubes_on_arcs_and_steps_ahead():
     limited.set_path(poses)
     assert [m.id for m in of(limited.markers(Pose2D(0, 0, 0)), PATH_NS)] == [m.id for m in ms[:5]]
     assert all(m.scale == (0.2, 0.2, 0.2) for m in ms)
+
+
+@pytest.mark.parametrize("shape", [dict(spacing_m=0.05), dict(spacing_m=0.05, orientation="tangent", yaw_jitter_deg=1.0), dict(spacing_m=0.3)])
+def test_any_planners_arc_shows_cubes_on_the_arc_and_spheres_elsewhere(shape):
+    """NavFn, Smac, sparse: cubes on the arc, spheres on the straights (within 0.15 m of where the
+    arc begins and ends, either)."""
+    cues = ArCues(CueParams(marker_spacing_m=0.2))
+    cues.set_path(arc_path(**shape))
+    ms = of(cues.markers(Pose2D(0, 0, 0)), PATH_NS)
+    assert len(ms) == 23  # (the first is used up where the robot stands)
+    for m in ms:
+        s = (m.id + 1) * 0.2
+        if ARC_START_M + 0.15 < s < ARC_END_M - 0.15:
+            assert m.shape is Shape.CUBE, s
+        elif not ARC_START_M - 0.15 < s < ARC_END_M + 0.15:
+            assert m.shape is Shape.SPHERE, s
 
 
 @pytest.mark.parametrize("deg,expected", [(0.0, []), (10.0, []), (12.0, [0]), (-12.0, [1]), (45.0, [0])])

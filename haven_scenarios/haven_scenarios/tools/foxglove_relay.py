@@ -83,9 +83,7 @@ class FoxgloveRelay:
         self._lock = threading.Lock()
         self.servers: list[Any] = []
 
-    def serve(
-        self, host: str = "127.0.0.1", port: int = 8765, name: str = "haven", sink: ClientSink | None = None, parameters: bool = False
-    ) -> Any:
+    def serve(self, host: str = "127.0.0.1", port: int = 8765, name: str = "haven", sink: ClientSink | None = None, parameters: bool = False) -> Any:
         """Start one more server on these channels (port 0: any free port; see `.port`). With a
         `sink`, its clients may publish (and set parameters, if `parameters`)."""
         caps: Sequence[Capability] = ()

@@ -67,9 +67,7 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
 
 
 class FrontDoor:
-    def __init__(
-        self, host: str, port: int, secret: str, backends: Mapping[str, int], config: Callable[[str], Mapping[str, Any]]
-    ) -> None:
+    def __init__(self, host: str, port: int, secret: str, backends: Mapping[str, int], config: Callable[[str], Mapping[str, Any]]) -> None:
         """`secret`: the session's (each role's token derives from it); `backends`: role -> its
         Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings."""
         self.tokens = {role: role_token(secret, role) for role in backends}

@@ -20,13 +20,9 @@ from haven_viz.world_markers import WALL_HEIGHT_M
 VIEW_WALL_HEIGHT_M = 2.4  # walls are drawn this tall in first person (the markers' 0.5 m suits a top-down view)
 
 INSTRUCTIONS = {
-    "hallway": (
-        "Walk to the rooms in the order shown at the top of the screen. A robot uses the same hallway; "
-        "walk as you would around a person."
-    ),
+    "hallway": ("Walk to the rooms in the order shown at the top of the screen. A robot uses the same hallway; walk as you would around a person."),
     "retrieval": (
-        "Collect the red gems: walk into a gem's red circle and stand still until it is collected. "
-        "The robot collects the blue gems in the same room."
+        "Collect the red gems: walk into a gem's red circle and stand still until it is collected. The robot collects the blue gems in the same room."
     ),
 }
 CONTROLS = "W / S or ↑ / ↓: walk forward and back · A / D or ← / →: turn · Q / E: step sideways · a gamepad works too"

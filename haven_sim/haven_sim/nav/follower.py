@@ -1,6 +1,7 @@
 """Path following in HAVEN's motion style, for any nav_msgs/Path-like pose list.
 
-The path is cut at its rotate-in-place segments into alternating actions: rotate on the spot to a
+The path is read from its geometry (`common.paths.read_path`: any planner's path, the goal yaw on its
+last pose honoured) and cut at its rotate-in-place segments into alternating actions: rotate on the spot to a
 yaw, and drive along a piece by pure pursuit (arcs come out as arcs), slowing so as to stop where the
 piece ends. If the robot finds itself facing away from where it must go by more than the motion
 style allows for an arc (after a push, say), it stops and rotates first, as HAVEN's robot did. Unlike
@@ -17,7 +18,7 @@ from enum import Enum
 
 from haven_sim.common.geometry import Pose2D, Twist2D, wrap_angle
 from haven_sim.common.params import param
-from haven_sim.common.paths import SegmentKind, classify
+from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.common.polyline import Polyline
 from haven_sim.nav.motion_style import MotionStyle
 
@@ -53,12 +54,12 @@ class _Rotate:
     yaw: float
 
 
-def _actions(poses: Sequence[Pose2D]) -> list[_Rotate | Polyline]:
+def _actions(poses: Sequence[Pose2D], style: MotionStyle) -> list[_Rotate | Polyline]:
     actions: list[_Rotate | Polyline] = []
-    for seg in classify(poses):
+    for seg in read_path(poses, style.arc_max_angle_rad).segments:
         if seg.kind is SegmentKind.ROTATE:
             end = poses[seg.end]
-            actions.append(_Rotate(end.x, end.y, end.yaw))
+            actions.append(_Rotate(end.x, end.y, seg.yaw))
             continue
         piece = [(q.x, q.y) for q in poses[seg.start : seg.end + 1]]
         previous = actions[-1] if actions else None
@@ -78,7 +79,7 @@ class PathFollower:
 
     def set_path(self, poses: Sequence[Pose2D]) -> None:
         """A new path replaces the old one; following starts at its first action."""
-        self._actions = _actions(poses)
+        self._actions = _actions(poses, self.style)
         self._index = 0
         self._progress = 0.0  # arc length reached along the current drive piece
         self._realigning = False

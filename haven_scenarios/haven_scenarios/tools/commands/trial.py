@@ -43,9 +43,7 @@ from haven_viz.cues import CUES, Toggles
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run = sub.add_parser("run", help="run one recorded trial of a scenario (default: hallway, simulated participant)")
     run.add_argument("scenario", nargs="?", default="hallway", help=f"a shipped scenario ({', '.join(scenario_names())}) or a YAML")
-    run.add_argument(
-        "--participant", default=None, help="participant id for the session (default: sim, or the teleoperated humans' ids, e.g. h1-h2)"
-    )
+    run.add_argument("--participant", default=None, help="participant id for the session (default: sim, or the teleoperated humans' ids, e.g. h1-h2)")
     run.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
     run.add_argument(
         "--rtf",
