@@ -57,9 +57,26 @@ def test_mux_priorities_and_timeouts():
     assert mux.output(1.7).source == TELEOP
     mux.on_nav(Twist2D(0.2, 0, 0), 1.7)
     assert mux.output(1.71).source == NAV  # teleop quiet for 0.51 s: control returns to nav
-    mux.set_estop(True)
+    mux.set_estop(True, 1.75)
     mux.on_teleop(Twist2D(0.3, 0, 0), 1.8)
     assert mux.output(1.8).source == ESTOP and mux.output(1.8).twist == Twist2D()
-    mux.set_estop(False)
-    assert mux.output(1.8).source == TELEOP
+    mux.set_estop(False, 3.8)  # 2 s after the last true
+    mux.on_teleop(Twist2D(0.3, 0, 0), 3.8)
+    assert mux.output(3.8).source == TELEOP
     assert mux.output(5.0).source == IDLE
+
+
+def test_estop_from_several_publishers_a_true_wins_over_a_false_from_another():
+    """`ros2 topic pub` repeats its true once a second; another node keeps saying false: stopped."""
+    mux = VelocityMux(estop_hold_s=2.0)
+    mux.on_nav(Twist2D(0.2, 0, 0), 0.0)
+    for t in range(10):
+        mux.set_estop(True, float(t))  # the repeating true
+        mux.set_estop(False, t + 0.5)  # the other publisher
+        mux.on_nav(Twist2D(0.2, 0, 0), t + 0.5)
+        assert mux.output(t + 0.5).source == ESTOP
+    mux.set_estop(False, 11.5)  # the true has stopped: the next false releases it
+    mux.on_nav(Twist2D(0.2, 0, 0), 11.5)
+    assert mux.output(11.5).source == NAV
+    mux.set_estop(True, 12.0)  # a single latched true holds for good
+    assert mux.output(100.0).source == ESTOP

@@ -2,10 +2,12 @@
 
 import math
 import signal
+import time
 
 import pytest
 from geometry_msgs.msg import PoseArray, Twist
 from nav_msgs.msg import OccupancyGrid, Odometry
+from rclpy.duration import Duration
 from ros_harness import tracebacks
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import BatteryState, LaserScan
@@ -172,8 +174,57 @@ def test_mux_teleop_beats_nav_then_hands_back_and_estop(ros):
         teleop.publish(twist(0.3))
         ros.spin_for(0.05)
         assert out[-1].linear.x == 0.0
-    estop.publish(Bool(data=False))
-    assert ros.spin_until(lambda: (teleop.publish(twist(0.3)) or True) and out[-1].linear.x == pytest.approx(0.3), 3.0)
+    estop.publish(Bool(data=False))  # released once no true has come for estop_hold_s (2 s)
+    assert ros.spin_until(lambda: (teleop.publish(twist(0.3)) or True) and out[-1].linear.x == pytest.approx(0.3), 6.0)
+
+
+def test_estop_from_default_qos_publishers_several_at_once_and_a_latched_one_before_start(ros):
+    """The e-stop as other tools send it: `ros2 topic pub` (default QoS: reliable, volatile, depth
+    10, repeated once a second) while another node keeps saying false; and a latched true sent
+    before the mux started."""
+    out = ros.collect(Twist, "/cmd_vel", qos.RELIABLE)
+    nav = ros.node.create_publisher(Twist, "/cmd_vel_nav", 10)
+    latched = ros.node.create_publisher(Bool, "/haven/estop", qos.LATCHED)
+    latched.publish(Bool(data=True))  # before the mux exists
+    ros.start(MUX)
+    ros.wait_matched(out)
+    ros.wait_matched(nav)
+    assert ros.spin_until(lambda: latched.get_subscription_count() >= 2)  # the mux's volatile and latched readers
+    assert latched.wait_for_all_acked(Duration(seconds=5.0))  # the stop has reached both
+
+    def drives(seconds):
+        """Whether any command over `seconds` of nav asking for 0.2 m/s moved the robot."""
+        del out[:]
+        end = time.monotonic() + seconds
+        while time.monotonic() < end:
+            nav.publish(twist(0.2))
+            ros.spin_for(0.05)
+        return any(m.linear.x != 0.0 for m in out)
+
+    assert not drives(2.5)  # the late-joining mux honours the latched stop
+    latched.publish(Bool(data=False))
+    assert ros.spin_until(lambda: (nav.publish(twist(0.2)) or True) and bool(out) and out[-1].linear.x == pytest.approx(0.2), 6.0)
+
+    cli = ros.node.create_publisher(Bool, "/haven/estop", 10)  # what `ros2 topic pub` creates
+    other = ros.node.create_publisher(Bool, "/haven/estop", 10)
+    ros.wait_matched(cli)
+    ros.wait_matched(other)
+    cli.publish(Bool(data=True))
+    assert ros.spin_until(lambda: (nav.publish(twist(0.2)) or True) and out[-1].linear.x == 0.0, 3.0)
+    end = time.monotonic() + 4.0
+    stopped = True
+    next_true = time.monotonic() + 1.0
+    while time.monotonic() < end:  # the CLI repeats its true at 1 Hz; the other says false at 10 Hz
+        if time.monotonic() >= next_true:
+            cli.publish(Bool(data=True))
+            next_true += 1.0
+        other.publish(Bool(data=False))
+        nav.publish(twist(0.2))
+        ros.spin_for(0.1)
+        stopped = stopped and out[-1].linear.x == 0.0
+    assert stopped
+    # The CLI is stopped: the other publisher's false releases the stop after the hold.
+    assert ros.spin_until(lambda: (other.publish(Bool(data=False)), nav.publish(twist(0.2))) and out[-1].linear.x == pytest.approx(0.2), 6.0)
 
 
 def test_teleop_from_another_node_drives_the_simulated_robot(ros):

@@ -29,10 +29,19 @@ def type_name(msg_type: Any) -> str:
     return f"{msg_type.__module__.split('.')[0]}/msg/{msg_type.__name__}"
 
 
-def known_topics() -> list[tuple[str, str, QoSProfile]]:
-    """The suite's own topics from the topic table (type name, the QoS their publishers offer)."""
+def known_topics() -> list[tuple[str, str, QoSProfile, bool]]:
+    """The suite's own topics from the topic table (type name, the QoS to read them with: what our
+    publishers offer, or, where other nodes may publish with either durability (/plan from Nav2),
+    volatile like our own readers, which matches both), and whether our publishers latch it."""
     table = {**wire.specs(), **viz_specs()}
-    return [("/" + topic.lstrip("/"), type_name(spec.msg_type), spec.pub_qos) for topic, spec in table.items()]
+    out = []
+    for topic, spec in table.items():
+        profile = spec.pub_qos
+        if spec.late_qos is not None:
+            profile = QoSProfile(depth=profile.depth, history=profile.history, reliability=profile.reliability, durability=DurabilityPolicy.VOLATILE)
+        latched = spec.pub_qos.durability == DurabilityPolicy.TRANSIENT_LOCAL
+        out.append(("/" + topic.lstrip("/"), type_name(spec.msg_type), profile, latched))
+    return out
 
 
 DRAIN_PERIOD_S = 0.01  # batched readers are emptied this often (wall time)
@@ -99,11 +108,11 @@ class RawTopics:
         self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = node, add, on_message, topics, keep_all, on_lost
         self.group = DrainedReaders() if batched else None
         self.handled: set[str] = set(held)
-        self.held = {topic: (msgtype, profile) for topic, msgtype, profile in known_topics() if topic in held}
+        self.held = {topic: (msgtype, profile, latched) for topic, msgtype, profile, latched in known_topics() if topic in held}
         self.subscriptions: dict[str, tuple[str, Subscription]] = {}  # topic -> (type name, subscription)
-        for topic, msgtype, profile in known_topics():
+        for topic, msgtype, profile, latched in known_topics():
             if self._wanted(topic) and topic not in held:
-                self._subscribe(topic, msgtype, profile)
+                self._subscribe(topic, msgtype, profile, latched)
         # Wall clock: topics must be found even before /clock runs.
         node.create_timer(1.0, self.discover, clock=Clock(clock_type=ClockType.STEADY_TIME))
         if batched:
@@ -121,24 +130,25 @@ class RawTopics:
 
     def release(self) -> None:
         """Subscribe the held topics (with the topic table's QoS)."""
-        for topic, (msgtype, profile) in self.held.items():
+        for topic, (msgtype, profile, latched) in self.held.items():
             if self._wanted(topic):
-                self._subscribe(topic, msgtype, profile)
+                self._subscribe(topic, msgtype, profile, latched)
         self.held = {}
 
     def discover(self) -> None:
         for topic, types in self.node.get_topic_names_and_types():
             if topic in self.handled or not self._wanted(topic) or self.node.count_publishers(topic) == 0:
                 continue
-            self._subscribe(topic, types[0], matching_qos(self.node, topic))
+            profile = matching_qos(self.node, topic)
+            self._subscribe(topic, types[0], profile, profile.durability == DurabilityPolicy.TRANSIENT_LOCAL)
 
-    def _subscribe(self, topic: str, msgtype: str, profile: QoSProfile) -> None:
+    def _subscribe(self, topic: str, msgtype: str, profile: QoSProfile, latched: bool) -> None:
         self.handled.add(topic)
         try:
             cls = message_class(msgtype)
         except (ImportError, AttributeError):  # e.g. tf2_msgs where the pip setup could not build it
             return
-        if not self.add(topic, msgtype, profile.durability == DurabilityPolicy.TRANSIENT_LOCAL):
+        if not self.add(topic, msgtype, latched):
             return
         if self.keep_all:
             profile = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=profile.reliability, durability=profile.durability)

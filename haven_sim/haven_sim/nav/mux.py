@@ -1,7 +1,13 @@
 """Velocity multiplexer: teleop beats navigation, an emergency stop beats both.
 
 Teleop holds control while its commands keep coming and hands it back `teleop_timeout_s` after the
-last one; navigation commands go stale after `nav_timeout_s`. `MuxComponent` is the whole mux node
+last one; navigation commands go stale after `nav_timeout_s`.
+
+The e-stop (/haven/estop, std_msgs/Bool) may have several publishers: a latched one (`haven estop`),
+`ros2 topic pub` repeating once a second, a watchdog node. Messages do not say who sent them, so a
+`true` from anyone stops the robot at once, and a `false` releases it only when no `true` has come
+for `estop_hold_s` (longer than `ros2 topic pub`'s 1 s repeat): one publisher that keeps the stop
+on is never overridden by another that says all is well. `MuxComponent` is the whole mux node
 without ROS: it forwards the winning command on every input and at `rate_hz`, sends one zero when
 every source has gone quiet (so the robot stops at once instead of waiting for the simulator's
 watchdog), and reports every change of source as a `cmd_source` event (a teleop takeover is part
@@ -28,6 +34,7 @@ class MuxConfig:
     teleop_timeout_s: float = param(0.5, "teleop hands control back this long after its last command")
     nav_timeout_s: float = param(0.5, "navigation commands older than this are stale")
     rate_hz: float = param(20.0, "/cmd_vel is re-sent at this rate while a source is active")
+    estop_hold_s: float = param(2.0, "a false on /haven/estop releases the stop only when no true has come for this long")
 
     def __post_init__(self) -> None:
         for name, value in vars(self).items():
@@ -42,10 +49,12 @@ class MuxOutput:
 
 
 class VelocityMux:
-    def __init__(self, teleop_timeout_s: float = 0.5, nav_timeout_s: float = 0.5) -> None:
+    def __init__(self, teleop_timeout_s: float = 0.5, nav_timeout_s: float = 0.5, estop_hold_s: float = 2.0) -> None:
         self.teleop_timeout_s = teleop_timeout_s
         self.nav_timeout_s = nav_timeout_s
-        self.estop = False
+        self.estop_hold_s = estop_hold_s
+        self._estop_said = False  # the latest e-stop message
+        self._estop_true_at = -math.inf  # when a true last came
         self._teleop = (ZERO_TWIST, -math.inf)
         self._nav = (ZERO_TWIST, -math.inf)
 
@@ -55,11 +64,16 @@ class VelocityMux:
     def on_nav(self, twist: Twist2D, now: float) -> None:
         self._nav = (twist, now)
 
-    def set_estop(self, engaged: bool) -> None:
-        self.estop = engaged
+    def set_estop(self, engaged: bool, now: float) -> None:
+        self._estop_said = engaged
+        if engaged:
+            self._estop_true_at = now
+
+    def estop(self, now: float) -> bool:
+        return self._estop_said or now - self._estop_true_at < self.estop_hold_s
 
     def output(self, now: float) -> MuxOutput:
-        if self.estop:
+        if self.estop(now):
             return MuxOutput(ZERO_TWIST, ESTOP)
         twist, stamp = self._teleop
         if now - stamp <= self.teleop_timeout_s:
@@ -76,7 +90,7 @@ class MuxComponent:
 
     def __init__(self, config: MuxConfig | None = None) -> None:
         self.config = config or MuxConfig()
-        self.mux = VelocityMux(self.config.teleop_timeout_s, self.config.nav_timeout_s)
+        self.mux = VelocityMux(self.config.teleop_timeout_s, self.config.nav_timeout_s, self.config.estop_hold_s)
         self._last_source = IDLE
 
     @property
@@ -98,7 +112,7 @@ class MuxComponent:
         return self.tick(now)
 
     def on_estop(self, engaged: bool, now: float) -> list[Message]:
-        self.mux.set_estop(engaged)
+        self.mux.set_estop(engaged, now)
         return self.tick(now)
 
     def tick(self, now: float) -> list[Message]:

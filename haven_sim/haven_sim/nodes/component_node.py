@@ -9,7 +9,8 @@ warning naming the topic, and the node keeps running.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections import deque
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypeVar
 
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
@@ -89,9 +90,27 @@ class ComponentNode(Node):
                     return
                 self.publish(handler(data, self.now()))
 
-            self._subs[topic] = self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
+            self._subs[topic] = self._subscribe(topic, spec, on_message)
         if component.period_s is not None:
             self.create_timer(component.period_s, lambda: self.publish(component.tick(self.now())))
+
+    def _subscribe(self, topic: str, spec: TopicSpec, on_message: Callable[[Any], None]) -> Subscription:
+        """A reader with the spec's QoS; with a `late_qos` also a second, latched one for what was
+        published before this node started. A message both readers get (from a latched publisher)
+        is handled once: the publisher's timestamp and sequence number say it is the same."""
+        if spec.late_qos is None:
+            return self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
+        seen: deque[tuple[int, int]] = deque(maxlen=64)
+
+        def once(msg: Any, info: Any) -> None:
+            key = (info["source_timestamp"], info["publication_sequence_number"])
+            if key not in seen:
+                seen.append(key)
+                on_message(msg)
+
+        # (rclpy hands a two-argument callback the message info; its type hints do not say so)
+        self.create_subscription(spec.msg_type, topic, once, spec.late_qos)  # type: ignore[arg-type]
+        return self.create_subscription(spec.msg_type, topic, once, spec.sub_qos)  # type: ignore[arg-type]
 
     # -- translate -------------------------------------------------------------------------------
     def now(self) -> float:

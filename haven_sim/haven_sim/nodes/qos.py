@@ -8,7 +8,7 @@ from rclpy.qos import (
     qos_profile_sensor_data,
 )
 
-# Latched state: /map, /plan (readers), /haven/thought, /haven/world_markers, /haven/estop.
+# Latched state: /map, /haven/thought, /haven/world_markers, /haven/wait, our /haven/estop publishers.
 LATCHED = QoSProfile(
     depth=1,
     history=HistoryPolicy.KEEP_LAST,
@@ -25,6 +25,12 @@ STREAM = QoSProfile(depth=1000, history=HistoryPolicy.KEEP_LAST, reliability=Rel
 # Subscribers that act on the current state (controller, planner, viz, scenario) keep only the latest
 # /odom, /humans or /battery_state: at 10x real time a backlog would make them act on old poses.
 LATEST = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
+# Readers of what other nodes may publish either way: /plan (Nav2's planner_server: volatile),
+# /haven/estop (`ros2 topic pub`: volatile, default QoS). A volatile reader matches volatile and
+# transient-local publishers alike; beside it, a transient-local LATCHED reader picks up what a
+# latched publisher sent before this node started (the two readers' copies are told apart by the
+# publisher's timestamp and sequence number; nodes/component_node.py).
+ANY_DURABILITY = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # /clock: the rosgraph default (reliable, depth 10) so every use_sim_time node matches.
 CLOCK = RELIABLE
 # /scan

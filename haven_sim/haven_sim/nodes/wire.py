@@ -32,6 +32,7 @@ class TopicSpec:
     decode: Callable[[Any], Any]  # message -> payload; raises ValueError on a bad message
     pub_qos: QoSProfile
     sub_qos: QoSProfile
+    late_qos: QoSProfile | None = None  # also read with this (a latched publisher's last message, for a late joiner)
 
 
 @dataclass(frozen=True)
@@ -65,9 +66,9 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
         topics.CMD_VEL: _twist(),
         topics.CMD_VEL_NAV: _twist(),
         topics.CMD_VEL_TELEOP: _twist(),
-        topics.ESTOP: TopicSpec(Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.LATCHED),
+        topics.ESTOP: TopicSpec(Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.ANY_DURABILITY, qos.LATCHED),
         topics.GOAL: TopicSpec(PoseStamped, lambda g, t: conv.goal_msg(t, g), conv.goal_from_msg, qos.RELIABLE, qos.RELIABLE),
-        topics.PLAN: TopicSpec(Path, lambda p, t: conv.path_msg(t, p, f.map), conv.path_from_msg, qos.CHANGES, qos.LATCHED),
+        topics.PLAN: TopicSpec(Path, lambda p, t: conv.path_msg(t, p, f.map), conv.path_from_msg, qos.CHANGES, qos.ANY_DURABILITY, qos.LATCHED),
         topics.WAIT: TopicSpec(Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.LATCHED),
         topics.THOUGHT: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
         topics.EVENTS: TopicSpec(String, lambda e, _: conv.event_msg(e), conv.event_from_msg, qos.EVENTS_PUB, qos.EVENTS),
