@@ -11,13 +11,13 @@ import shutil
 import pytest
 from rclpy.serialization import serialize_message
 
-from haven_scenarios.nodes.raw_topics import type_name
 from haven_scenarios.record.bag import BagWriter, read_recording
 from haven_scenarios.record.report import report_csv
 from haven_scenarios.record.session import analyse, trajectory_picture, write_inputs, write_json
 from haven_scenarios.run.trial import Trial
 from haven_scenarios.study.scenario import load_scenario
 from haven_sim.nodes import wire
+from haven_sim.nodes.wire import type_name
 from haven_viz.nodes.conversions import viz_specs
 
 TABLE = {**wire.specs(), **viz_specs()}

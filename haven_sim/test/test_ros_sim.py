@@ -1,11 +1,12 @@
 """Cross-process tests: the simulator and mux nodes as separate processes, driven from this test."""
 
 import math
+import os
 import signal
 import time
 
 import pytest
-from geometry_msgs.msg import PoseArray, Twist
+from geometry_msgs.msg import PoseArray, Twist, TwistStamped
 from nav_msgs.msg import OccupancyGrid, Odometry
 from rclpy.duration import Duration
 from ros_harness import tracebacks
@@ -237,6 +238,42 @@ def test_teleop_from_another_node_drives_the_simulated_robot(ros):
     drive(ros, teleop, twist(0.0, 1.0), odom, 2.0)
     assert odom[-1].twist.twist.angular.z == pytest.approx(1.0, abs=0.02)
     assert conv.pose_from_msg(odom[-1].pose.pose).yaw > 1.0
+
+
+def test_stamped_velocity_commands_drive_the_robot_when_configured(ros):
+    """TwistStamped as Nav2 Jazzy (enable_stamped_cmd_vel) and `teleop_twist_keyboard stamped:=true`
+    send it, through the mux to the simulator."""
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    teleop = ros.node.create_publisher(TwistStamped, "/cmd_vel_teleop", 10)
+    ros.start(SIM, {"real_time_factor": 2.0, "stamped_cmd_vel": True})
+    ros.start(MUX, {"use_sim_time": True, "stamped_cmd_vel": True})
+    ros.wait_matched(teleop)
+    ros.wait_for_messages(odom, 5)
+    msg = TwistStamped()
+    msg.header.frame_id = "base_footprint"
+    msg.twist = twist(0.0, 1.0)
+    drive(ros, teleop, msg, odom, 2.0)
+    assert odom[-1].twist.twist.angular.z == pytest.approx(1.0, abs=0.02)
+
+
+def test_a_publisher_of_the_wrong_type_is_named_in_a_warning(ros):
+    teleop = ros.node.create_publisher(TwistStamped, "/cmd_vel_teleop", 10)
+    mux = ros.start(MUX, capture=True)
+    os.set_blocking(mux.stderr.fileno(), False)
+    warning = (
+        "/cmd_vel_teleop: haven_test_probe publishes geometry_msgs/msg/TwistStamped, this node reads geometry_msgs/msg/Twist; "
+        "ignored (set the stamped_cmd_vel parameter to match)"
+    )
+    err = ""
+
+    def warned():
+        nonlocal err
+        err += mux.stderr.read() or ""
+        return warning in err
+
+    teleop.publish(TwistStamped())
+    assert ros.spin_until(warned, 30.0), err
+    ros.stop(mux)
 
 
 def test_invalid_world_fails_fast_with_one_line(ros, tmp_path):

@@ -19,21 +19,18 @@ from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.subscription import Subscription
 
+from haven_sim.common.topics import WireParams
 from haven_sim.nodes import wire
 from haven_sim.nodes.lockstep import take_all
+from haven_sim.nodes.wire import type_name
 from haven_viz.nodes.conversions import viz_specs
 
 
-def type_name(msg_type: Any) -> str:
-    """'nav_msgs/msg/Odometry' for the rclpy class nav_msgs.msg.Odometry."""
-    return f"{msg_type.__module__.split('.')[0]}/msg/{msg_type.__name__}"
-
-
-def known_topics() -> list[tuple[str, str, QoSProfile, bool]]:
+def known_topics(params: WireParams = WireParams()) -> list[tuple[str, str, QoSProfile, bool]]:
     """The suite's own topics from the topic table (type name, the QoS to read them with: what our
     publishers offer, or, where other nodes may publish with either durability (/plan from Nav2),
     volatile like our own readers, which matches both), and whether our publishers latch it."""
-    table = {**wire.specs(), **viz_specs()}
+    table = wire.with_wire_params({**wire.specs(), **viz_specs()}, params)
     out = []
     for topic, spec in table.items():
         profile = spec.pub_qos
@@ -99,18 +96,21 @@ class RawTopics:
         on_lost: Callable[[str, int, bool], None] | None = None,
         batched: bool = False,
         held: tuple[str, ...] = (),
+        params: WireParams = WireParams(),
     ) -> None:
         """`topics`: only these (all of the graph when None); `keep_all`: readers that drop nothing
         (a recorder's), else the depth of the topic's profile; `on_lost(topic, n)`: DDS reports
         that n messages of a topic never reached the reader (and whether it is a best-effort topic); `batched`: messages are handed over
         every DRAIN_PERIOD_S instead of one callback each (a recorder at 10x real time gets
-        thousands a second); `held`: suite topics not subscribed until `release()`."""
+        thousands a second); `held`: suite topics not subscribed until `release()`; `params`: the
+        topic table's (stamped velocity commands)."""
         self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = node, add, on_message, topics, keep_all, on_lost
         self.group = DrainedReaders() if batched else None
         self.handled: set[str] = set(held)
-        self.held = {topic: (msgtype, profile, latched) for topic, msgtype, profile, latched in known_topics() if topic in held}
+        known = known_topics(params)
+        self.held = {topic: (msgtype, profile, latched) for topic, msgtype, profile, latched in known if topic in held}
         self.subscriptions: dict[str, tuple[str, Subscription]] = {}  # topic -> (type name, subscription)
-        for topic, msgtype, profile, latched in known_topics():
+        for topic, msgtype, profile, latched in known:
             if self._wanted(topic) and topic not in held:
                 self._subscribe(topic, msgtype, profile, latched)
         # Wall clock: topics must be found even before /clock runs.

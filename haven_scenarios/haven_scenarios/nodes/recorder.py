@@ -36,6 +36,8 @@ from haven_scenarios.record.bag import BagWriter
 from haven_scenarios.record.session import END_MARK
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind
+from haven_sim.common.params import build, defaults
+from haven_sim.common.topics import WireParams
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes.runner import run_node
 
@@ -85,9 +87,21 @@ class Recorder(Node):
         self.reached: set[str] = set()  # streams recorded up to the end
         self.flowing: set[str] = set()  # streams that have reached the recorder
         self.topics = RawTopics(
-            self, lambda topic, msgtype, latched: True, self._on_message, keep_all=True, on_lost=self._on_lost, batched=True, held=(EVENTS,)
+            self,
+            lambda topic, msgtype, latched: True,
+            self._on_message,
+            keep_all=True,
+            on_lost=self._on_lost,
+            batched=True,
+            held=(EVENTS,),
+            params=self._declare_wire_params(),
         )
         self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
+
+    def _declare_wire_params(self) -> WireParams:
+        """The topic table's parameters (stamped velocity commands), as the other nodes have them."""
+        values = {name: self.declare_parameter(name, default).value for name, default in defaults(WireParams).items()}
+        return build(WireParams, values, where="recorder: parameter ")
 
     def _streams_missing(self) -> None:
         self._give_up.cancel()

@@ -12,6 +12,7 @@ from typing import Any
 
 from haven_scenarios.study.director import ScenarioNodeConfig
 from haven_sim.common.params import WILDCARD, build, flatten, load_params_file, node_values, render_params_file
+from haven_sim.common.topics import WireParams
 from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.mux import MuxConfig
@@ -29,7 +30,7 @@ NODES: tuple[tuple[str, type[Any]], ...] = (
     ("viz", VizConfig),
     ("scenario", ScenarioNodeConfig),
 )
-SHARED = (MotionStyle, LockstepParams)  # one section: HAVEN's turning rule, the lockstep switch
+SHARED = (MotionStyle, LockstepParams, WireParams)  # one section: HAVEN's turning rule, the lockstep switch, the velocity topics' type
 HEADER = """Parameters of every HAVEN node, with their defaults (pass with --params-file to `haven sim`,
 `haven run` or `haven batch`, or to any node). Generated from the config dataclasses by
 `python -m haven_scenarios.run.suite`: edit those, not this file. The "/**" section applies to

@@ -6,6 +6,10 @@ message type and QoS (haven_sim.nodes.wire), batch mode routes them in-process.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
+from haven_sim.common.params import param
+
 CLOCK = "/clock"
 TF = "/tf"
 TF_STATIC = "/tf_static"
@@ -44,3 +48,15 @@ def human_of_cmd_vel(topic: str) -> str | None:
     """The human id of a `humans/<id>/cmd_vel` topic, else None."""
     parts = topic.strip("/").split("/")
     return parts[1] if len(parts) == 3 and parts[0] == "humans" and parts[2] == "cmd_vel" else None
+
+
+ROBOT_CMD_VEL = (CMD_VEL, CMD_VEL_NAV, CMD_VEL_TELEOP)  # the robot's velocity commands
+
+
+@dataclass(frozen=True)
+class WireParams:
+    """How the topics are typed, for every node (the shared section of haven.yaml)."""
+
+    stamped_cmd_vel: bool = param(
+        False, "/cmd_vel, /cmd_vel_nav and /cmd_vel_teleop carry geometry_msgs/TwistStamped (Nav2 Jazzy's enable_stamped_cmd_vel)"
+    )

@@ -14,6 +14,7 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypeVar
 
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
@@ -21,8 +22,10 @@ from rclpy.subscription import Subscription
 
 from haven_sim.common.events import Event, Sequencer
 from haven_sim.common.params import build, defaults, docs
+from haven_sim.common.topics import WireParams
+from haven_sim.nodes import wire
 from haven_sim.nodes.lockstep import LockstepParticipant
-from haven_sim.nodes.wire import TopicSpec
+from haven_sim.nodes.wire import TopicSpec, type_name
 from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import LockstepParams
 
@@ -69,7 +72,7 @@ class ComponentNode(Node):
         work on a sim-time timer, or, with the `lockstep` parameter, at the lockstep clock's ticks
         (`participant`; the simulator, which runs that clock, passes False)."""
         self.component = component
-        self._specs = dict(specs)
+        self._specs = wire.with_wire_params(dict(specs), self.declare_config(WireParams))
         for topic in component.outputs():
             spec = self._specs.get(topic)
             if spec is not None:  # (no spec: TF where tf2_msgs is not installed)
@@ -93,6 +96,20 @@ class ComponentNode(Node):
             self._subs[topic] = self._subscribe(topic, spec, on_message)
         if component.period_s is not None:
             self.create_timer(component.period_s, lambda: self.publish(component.tick(self.now())))
+        self._warned: set[tuple[str, str]] = set()
+        self.create_timer(2.0, self._check_types, clock=Clock(clock_type=ClockType.STEADY_TIME))
+
+    def _check_types(self) -> None:
+        """A publisher of another type on a topic we read never matches (DDS drops it without a
+        word): say so, once, naming the topic and both types."""
+        for topic in self._subs:
+            ours = type_name(self._specs[topic].msg_type)
+            name = self.resolve_topic_name(topic)
+            for info in self.get_publishers_info_by_topic(name):
+                if info.topic_type != ours and (name, info.topic_type) not in self._warned:
+                    self._warned.add((name, info.topic_type))
+                    hint = " (set the stamped_cmd_vel parameter to match)" if "Twist" in ours and "Twist" in info.topic_type else ""
+                    self.get_logger().warning(f"{name}: {info.node_name} publishes {info.topic_type}, this node reads {ours}; ignored{hint}")
 
     def _subscribe(self, topic: str, spec: TopicSpec, on_message: Callable[[Any], None]) -> Subscription:
         """A reader with the spec's QoS; with a `late_qos` also a second, latched one for what was

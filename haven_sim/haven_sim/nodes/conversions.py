@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 from builtin_interfaces.msg import Time
-from geometry_msgs.msg import Pose, PoseArray, PoseStamped, Quaternion, TransformStamped, Twist
+from geometry_msgs.msg import Pose, PoseArray, PoseStamped, Quaternion, TransformStamped, Twist, TwistStamped
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import BatteryState, LaserScan
@@ -65,6 +65,15 @@ def twist_from_msg(msg: Twist) -> Twist2D:
 def twist_msg(t: Twist2D) -> Twist:
     msg = Twist()
     msg.linear.x, msg.linear.y, msg.angular.z = t.vx, t.vy, t.wz
+    return msg
+
+
+def twist_stamped_msg(t: Twist2D, stamp: float, frame_id: str = "base_footprint") -> TwistStamped:
+    """As Nav2 Jazzy stamps its velocity commands: the body frame and the command's time."""
+    msg = TwistStamped()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = frame_id
+    msg.twist = twist_msg(t)
     return msg
 
 

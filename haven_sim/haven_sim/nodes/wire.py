@@ -8,7 +8,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from geometry_msgs.msg import PoseArray, PoseStamped, Twist
+from geometry_msgs.msg import PoseArray, PoseStamped, Twist, TwistStamped
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rclpy.qos import QoSProfile
 from rosgraph_msgs.msg import Clock
@@ -16,6 +16,7 @@ from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import Bool, String
 
 from haven_sim.common import topics
+from haven_sim.common.topics import ROBOT_CMD_VEL, WireParams
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 
@@ -23,6 +24,11 @@ try:  # not on PyPI: the pip setup builds it with colcon (scripts/build_interfac
     from tf2_msgs.msg import TFMessage
 except ImportError:  # pragma: no cover - depends on the machine
     TFMessage = None
+
+
+def type_name(msg_type: Any) -> str:
+    """'nav_msgs/msg/Odometry' for the rclpy class nav_msgs.msg.Odometry."""
+    return f"{msg_type.__module__.split('.')[0]}/msg/{msg_type.__name__}"
 
 
 @dataclass(frozen=True)
@@ -45,6 +51,19 @@ class Frames:
 
 def _twist() -> TopicSpec:
     return TopicSpec(Twist, lambda t, _: conv.twist_msg(t), conv.twist_from_msg, qos.STREAM, qos.RELIABLE)
+
+
+def _twist_stamped() -> TopicSpec:
+    return TopicSpec(
+        TwistStamped, lambda t, stamp: conv.twist_stamped_msg(t, stamp), lambda m: conv.twist_from_msg(m.twist), qos.STREAM, qos.RELIABLE
+    )
+
+
+def with_wire_params(table: dict[str, TopicSpec], params: WireParams) -> dict[str, TopicSpec]:
+    """The topic table as these parameters set it (the robot's velocity topics stamped or not)."""
+    if params.stamped_cmd_vel:
+        return {**table, **{t: _twist_stamped() for t in ROBOT_CMD_VEL if t in table}}
+    return table
 
 
 def _unsupported(msg: Any) -> Any:
