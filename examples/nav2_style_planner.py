@@ -1,0 +1,92 @@
+"""An example planner node, written as a Nav2 user would: it plans on each /goal_pose and publishes
+/plan the way Nav2's planner_server does (nav_msgs/Path, reliable, volatile, depth 1), shaped like
+NavFn's paths: poses every 5 cm, identity orientations, the goal's yaw on the last pose.
+
+Its path is a turn of radius `turn_radius_m` from the robot's heading until it faces the goal, then
+a straight line (it does not avoid obstacles: it shows the interface, not a planning method). HAVEN
+reads the path from its geometry: cubes on the arc, spheres on the straight, a rotation to the goal
+yaw at the end.
+
+    haven sim --without planner &
+    python examples/nav2_style_planner.py
+    haven goto 2.2 4.2 2.6              # or RViz's "2D Goal Pose"
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+
+import rclpy
+from geometry_msgs.msg import PoseStamped
+from nav_msgs.msg import Odometry, Path
+from rclpy.node import Node
+from rclpy.qos import QoSProfile
+
+STEP_M = 0.05  # NavFn's pose spacing on a 5 cm map
+
+
+def yaw_of(q) -> float:  # noqa: ANN001 - a geometry_msgs/Quaternion
+    return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
+
+
+def turn_then_straight(x: float, y: float, yaw: float, gx: float, gy: float, radius: float) -> list[tuple[float, float]]:
+    """Points every STEP_M: an arc toward the goal until facing it, then straight to it."""
+    points = [(x, y)]
+    for _ in range(int(2 * math.pi * radius / STEP_M) + 1):  # at most a full circle
+        bearing = math.atan2(gy - y, gx - x)
+        error = math.atan2(math.sin(bearing - yaw), math.cos(bearing - yaw))
+        if abs(error) < STEP_M / radius or math.hypot(gx - x, gy - y) < radius:
+            break
+        yaw += math.copysign(STEP_M / radius, error)
+        x, y = x + STEP_M * math.cos(yaw), y + STEP_M * math.sin(yaw)
+        points.append((x, y))
+    n = max(1, math.ceil(math.hypot(gx - x, gy - y) / STEP_M))
+    points += [(x + (gx - x) * k / n, y + (gy - y) * k / n) for k in range(1, n + 1)]
+    return points
+
+
+class Nav2StylePlanner(Node):
+    def __init__(self) -> None:
+        super().__init__("nav2_style_planner")
+        self.radius = float(self.declare_parameter("turn_radius_m", 0.6).value)
+        self.odom: Odometry | None = None
+        self.create_subscription(Odometry, "odom", lambda m: setattr(self, "odom", m), 10)
+        self.create_subscription(PoseStamped, "goal_pose", self.on_goal, 10)
+        self.plan = self.create_publisher(Path, "plan", QoSProfile(depth=1))  # planner_server's QoS
+
+    def on_goal(self, goal: PoseStamped) -> None:
+        if self.odom is None:
+            self.get_logger().warning("no /odom yet: goal ignored")
+            return
+        # (the suite's map -> odom is the identity; a real planner would look the pose up in TF)
+        p = self.odom.pose.pose
+        points = turn_then_straight(p.position.x, p.position.y, yaw_of(p.orientation), goal.pose.position.x, goal.pose.position.y, self.radius)
+        path = Path()
+        path.header.frame_id = "map"
+        path.header.stamp = self.get_clock().now().to_msg()
+        for px, py in points:
+            pose = PoseStamped()
+            pose.header = path.header
+            pose.pose.position.x, pose.pose.position.y = px, py
+            pose.pose.orientation.w = 1.0  # identity, as NavFn leaves them
+            path.poses.append(pose)
+        path.poses[-1].pose.orientation = goal.pose.orientation  # the goal yaw on the last pose
+        self.plan.publish(path)
+        self.get_logger().info(f"plan: {len(path.poses)} poses to ({goal.pose.position.x:.2f}, {goal.pose.position.y:.2f})")
+
+
+def main() -> None:
+    rclpy.init(args=sys.argv)
+    node = Nav2StylePlanner()
+    try:
+        rclpy.spin(node)
+    except KeyboardInterrupt:
+        pass
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,51 @@
+"""The README's "Using your own planner" section, as a user would do it: `haven sim --without
+planner` and the example planner (examples/nav2_style_planner.py: Nav2's /plan QoS, NavFn-shaped
+paths) in its own process; a goal from RViz's QoS. The robot reaches the goal pose, the path
+projection shows cubes on the arc, and the plan's QoS is Nav2's."""
+
+import math
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from geometry_msgs.msg import PoseStamped
+from nav_msgs.msg import Odometry
+from rclpy.qos import DurabilityPolicy
+from visualization_msgs.msg import Marker, MarkerArray
+
+from haven_sim.common.geometry import Pose2D
+from haven_sim.common.state import Goal
+from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import qos
+
+pytestmark = pytest.mark.ros
+HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "nav2_style_planner.py"
+GOAL = (2.2, 4.2, 2.6)  # from the robot's start (1.0, 2.5, facing east): a left turn, a straight, a turn to the goal yaw
+
+
+def test_the_example_planner_drives_the_suite_to_the_goal_pose_with_cubes_on_its_arc(ros):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    cues = ros.collect(MarkerArray, "/haven/ar_markers", qos.RELIABLE)
+    for argv in ([*HAVEN, "sim", "--without", "planner", "--rtf", "2", "--domain-id", str(ros.domain_id)], [sys.executable, str(EXAMPLE)]):
+        ros.procs.append(subprocess.Popen(argv, env=ros.env, start_new_session=True, stderr=subprocess.PIPE, text=True))
+    goal = ros.node.create_publisher(PoseStamped, "/goal_pose", 10)  # RViz's 2D Goal Pose: default QoS
+    ros.wait_for_messages(odom, 5)
+    assert ros.spin_until(lambda: ros.node.count_subscribers("/goal_pose") > 0 and ros.node.count_subscribers("/plan") >= 2, 30)
+    (plan_pub,) = ros.node.get_publishers_info_by_topic("/plan")
+    assert plan_pub.node_name == "nav2_style_planner" and plan_pub.qos_profile.durability == DurabilityPolicy.VOLATILE
+    ros.wait_matched(goal)
+    goal.publish(conv.goal_msg(0.0, Goal(Pose2D(*GOAL), "map")))
+
+    def at_goal():
+        p = conv.pose_from_msg(odom[-1].pose.pose)
+        return (
+            math.hypot(p.x - GOAL[0], p.y - GOAL[1]) <= 0.15
+            and abs(math.remainder(p.yaw - GOAL[2], 2 * math.pi)) <= 0.15
+            and odom[-1].twist.twist.angular.z == 0.0
+        )
+
+    assert ros.spin_until(at_goal, 60), conv.pose_from_msg(odom[-1].pose.pose)
+    shapes = {m.type for frame in cues for m in frame.markers if m.ns == "path_projection" and m.action == Marker.ADD}
+    assert shapes == {Marker.SPHERE, Marker.CUBE}  # spheres on the straight, cubes on the arc
