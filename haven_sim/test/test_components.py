@@ -31,9 +31,11 @@ def test_mux_reports_each_change_of_source_and_stops_once_when_all_go_quiet():
     out = mux.on_estop(True, 0.2)
     assert by_topic(out, topics.CMD_VEL) == [Twist2D()] and by_topic(out, topics.EVENTS)[0]["to"] == "estop"
     mux.on_estop(False, 0.3)
-    quiet = mux.tick(1.0)  # teleop and nav both stale: one zero, then silence
+    held = mux.tick(1.0)  # still stopped: a true came 0.8 s ago (the hold is 2 s)
+    assert by_topic(held, topics.CMD_VEL) == [Twist2D()] and by_topic(held, topics.EVENTS) == []
+    quiet = mux.tick(2.2)  # released; teleop and nav both stale: one zero, then silence
     assert by_topic(quiet, topics.CMD_VEL) == [Twist2D()] and by_topic(quiet, topics.EVENTS)[0]["to"] == "idle"
-    assert mux.tick(1.05) == []
+    assert mux.tick(2.25) == []
 
 
 def test_controller_reports_arrival_once_per_path():
@@ -61,6 +63,14 @@ def test_planner_refuses_bad_goals_and_keeps_a_goal_until_it_has_map_and_pose():
     out = planner.on_odom(RobotState(Pose2D(5, 5, 0)), 0.2)
     assert by_topic(out, topics.WAIT) == [False] and len(by_topic(out, topics.PLAN)[0]) > 2
     assert by_topic(out, topics.EVENTS)[0].kind is EventKind.PLAN_MADE and planner.pending is None
+
+
+@pytest.mark.parametrize("own", [True, False])
+def test_map_to_odom_can_be_left_to_a_localization_node(own):
+    sim = SimulatorComponent(box_world(10.0), SimulatorConfig(publish_map_to_odom=own))
+    (static,) = by_topic(sim.sense(), topics.TF_STATIC)
+    assert (("map", "odom") in {(f.parent, f.child) for f in static}) is own
+    assert ("base_footprint", "base_link") in {(f.parent, f.child) for f in static}
 
 
 def test_simulator_publishes_each_topic_at_its_rate():

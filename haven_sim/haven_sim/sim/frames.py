@@ -24,12 +24,12 @@ BASE_LINK_Z_M = 0.0102
 SCAN_Z_M = 0.35
 
 
-def static_frames(map_frame: str = "map", odom_frame: str = "odom", base_frame: str = "base_footprint", scan_frame: str = "base_scan") -> list[Frame]:
-    return [
-        Frame(map_frame, odom_frame, 0.0, 0.0, 0.0, 0.0),
-        Frame(base_frame, "base_link", 0.0, 0.0, BASE_LINK_Z_M, 0.0),
-        Frame("base_link", scan_frame, 0.0, 0.0, SCAN_Z_M - BASE_LINK_Z_M, 0.0),
-    ]
+def static_frames(
+    map_frame: str = "map", odom_frame: str = "odom", base_frame: str = "base_footprint", scan_frame: str = "base_scan", map_to_odom: bool = True
+) -> list[Frame]:
+    """The fixed frames; `map_to_odom` False leaves map -> odom to a localization node (AMCL, slam_toolbox)."""
+    body = [Frame(base_frame, "base_link", 0.0, 0.0, BASE_LINK_Z_M, 0.0), Frame("base_link", scan_frame, 0.0, 0.0, SCAN_Z_M - BASE_LINK_Z_M, 0.0)]
+    return ([Frame(map_frame, odom_frame, 0.0, 0.0, 0.0, 0.0)] if map_to_odom else []) + body
 
 
 def robot_frame(odom_pose: Pose2D, odom_frame: str = "odom", base_frame: str = "base_footprint") -> Frame:

@@ -36,6 +36,7 @@ class SimulatorConfig:
     map_resolution_m: float = param(0.05, "cell size of /map")
     map_frame: str = param("map", "fixed frame")
     odom_frame: str = param("odom", "odometry frame")
+    publish_map_to_odom: bool = param(True, "the identity map -> odom on /tf_static; false leaves it to a localization node (AMCL, slam_toolbox)")
     base_frame: str = param("base_footprint", "robot frame")
     scan_frame: str = param("base_scan", "laser frame")
     lockstep_participants: tuple[str, ...] = param((), "with lockstep: the nodes that act on the clock's ticks")
@@ -122,7 +123,7 @@ class SimulatorComponent:
         events = sim.pop_events()
         if self._static_due:
             self._static_due = False
-            out.append(Message(topics.TF_STATIC, static_frames(c.map_frame, c.odom_frame, c.base_frame, c.scan_frame), now))
+            out.append(Message(topics.TF_STATIC, static_frames(c.map_frame, c.odom_frame, c.base_frame, c.scan_frame, c.publish_map_to_odom), now))
         if self._map_due or any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in events):
             self._map_due = False
             out.append(Message(topics.MAP, sim.occupancy(c.map_resolution_m), now))
