@@ -1,10 +1,11 @@
 """Session bags: written with our writer, read back by an independent reader (mcap) and by ours."""
 
+import pytest
 from mcap.reader import make_reader
 from rclpy.serialization import serialize_message
 from std_msgs.msg import String
 
-from haven_scenarios.record.bag import BagWriter, read_messages
+from haven_scenarios.record.bag import BagWriter, read_messages, to_wall_time
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
@@ -50,3 +51,11 @@ def test_offered_qos_is_recorded_for_replay(tmp_path):
     assert [q.durability.name for q in offered["/tf_static"]] == ["TRANSIENT_LOCAL"]
     assert [q.reliability.name for q in offered["/odom"]] == ["RELIABLE"]
     assert "durability: transient_local" in (bag / "metadata.yaml").read_text()
+
+
+def test_sim_time_converts_to_the_wall_clock_between_and_beyond_the_recorders_pairs():
+    pairs = [(10_000_000_000, 1_700_000_000_000_000_000), (20_000_000_000, 1_700_000_002_000_000_000)]  # 5x real time
+    assert to_wall_time(pairs, 15.0) == pytest.approx(1_700_000_001.0)
+    assert to_wall_time(pairs, 25.0) == pytest.approx(1_700_000_003.0)  # beyond: at the nearest pace
+    assert to_wall_time(pairs, 5.0) == pytest.approx(1_699_999_999.0)
+    assert to_wall_time([], 5.0) is None

@@ -10,6 +10,7 @@ import signal
 import subprocess
 import sys
 import time
+from datetime import datetime
 
 import pytest
 from independent_scorer import score
@@ -135,11 +136,18 @@ def test_free_running_recordings_are_complete_and_score_independently(ros, tmp_p
     the recorder keeps every message, and the metrics agree with the independent scorer."""
     scenario = tmp_path / "crossing.yaml"
     scenario.write_text(CROSSING)
+    before = time.time()
     r = haven_run(ros, "run", str(scenario), "--free-running", "--rtf", rtf, "--sessions", str(tmp_path / "s"))
     assert f"{rtf}x real time" in r.stdout
     folder = only_session(tmp_path / "s")
-    assert json.loads((folder / "session.json").read_text())["clock"] == "free-running"
+    session = json.loads((folder / "session.json").read_text())
+    assert session["clock"] == "free-running"
     assert_independent_score_agrees(folder)
+    # When the trial ran by the wall clock, to align it with other recordings of the study.
+    start, end = (datetime.fromisoformat(session["wall_clock"][k]).timestamp() for k in ("trial_start", "trial_end"))
+    assert before < start < end < time.time()
+    if rtf == "1":
+        assert end - start == pytest.approx(session["duration_s"], abs=0.5)
 
 
 def test_ctrl_c_mid_trial_leaves_a_readable_bag(ros, tmp_path):

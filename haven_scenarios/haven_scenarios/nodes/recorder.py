@@ -13,6 +13,11 @@ trial when the recorder listens to its events, so the state streams are recorded
 after the events once). Its publishers keep the last 100 events for it, so none are lost by waiting.
 Without a simulator (the streams never come) it subscribes after STREAMS_WAIT_S all the same.
 
+Log times are sim time (rosbag2's convention on /clock). To align a session with other recordings of
+the study (video, eye tracking, questionnaires), the recorder pairs sim time with the wall clock once
+a second and keeps the pairs in the bag's metadata (custom_data `haven.wall_clock`;
+`record.bag.wall_clock` reads them, `record.bag.to_wall_time` converts).
+
 Once it has the `trial_end` event and, on every state stream, a message stamped at or after it,
 the recorder says so with a file (`END_MARK` in the session folder): `haven run` stops the nodes
 then, not after a guessed delay, so a busy machine cannot cut the last moments of a trial.
@@ -22,6 +27,7 @@ from __future__ import annotations
 
 import struct
 import sys
+import time
 from pathlib import Path
 
 from rclpy.clock import Clock, ClockType
@@ -44,6 +50,7 @@ from haven_sim.nodes.runner import run_node
 EVENTS = "/" + topics.EVENTS
 STREAMS = ("/" + topics.ODOM, "/" + topics.HUMANS)  # header-first messages the metrics need to the end
 STREAMS_WAIT_S = 5.0  # wall time
+CLOCK_PAIR_PERIOD_S = 1.0  # wall time between (sim, wall) clock pairs
 
 
 def header_stamp(cdr: bytes) -> float:
@@ -97,6 +104,13 @@ class Recorder(Node):
             params=self._declare_wire_params(),
         )
         self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        self.clock_pairs: list[tuple[int, int]] = []  # (sim ns, wall ns)
+        self.create_timer(CLOCK_PAIR_PERIOD_S, self._pair_clocks, clock=Clock(clock_type=ClockType.STEADY_TIME))
+
+    def _pair_clocks(self) -> None:
+        sim = self.get_clock().now().nanoseconds
+        if sim > 0 and (not self.clock_pairs or sim > self.clock_pairs[-1][0]):
+            self.clock_pairs.append((sim, time.time_ns()))
 
     def _declare_wire_params(self) -> WireParams:
         """The topic table's parameters (stamped velocity commands), as the other nodes have them."""
@@ -149,7 +163,8 @@ class Recorder(Node):
 
     def destroy_node(self) -> None:
         self.topics.drain()
-        self.bag.close(lost=self.lost)
+        self._pair_clocks()
+        self.bag.close(lost=self.lost, wall_clock=self.clock_pairs)
         self.events.close()
         super().destroy_node()
 

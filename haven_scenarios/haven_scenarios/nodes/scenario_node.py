@@ -13,7 +13,7 @@ import sys
 
 from rclpy.duration import Duration
 
-from haven_scenarios.study.director import ScenarioNodeConfig, TrialDirector
+from haven_scenarios.study.director import ScenarioNodeConfig, TrialDirector, any_reader
 from haven_scenarios.study.scenario import load_scenario
 from haven_sim.common import topics
 from haven_sim.nodes import wire
@@ -63,14 +63,15 @@ class ScenarioNode(ComponentNode):
         super().destroy_node()
 
     def _everyone_listening(self) -> bool:
-        """The nodes in `wait_for` subscribe, and our publishers have matched every subscription the
-        graph knows of (seeing a reader in the graph comes before being able to deliver to it)."""
+        """The nodes in `wait_for` subscribe (an entry like "/goal_pose": any node reads that topic:
+        somebody's own planner), and our publishers have matched every subscription the graph knows
+        of (seeing a reader in the graph comes before being able to deliver to it)."""
         listeners: set[str] = set()
         for topic in (topics.EVENTS, topics.GOAL):
             infos = self.get_subscriptions_info_by_topic(self.resolve_topic_name(topic))
             if self._pubs[topic].get_subscription_count() < len(infos):
                 return False
-            listeners |= {i.node_name for i in infos}
+            listeners |= {i.node_name for i in infos} | ({any_reader(topic)} if infos else set())
         return all(name in listeners for name in self.wait_for)
 
 

@@ -14,6 +14,7 @@ from pathlib import Path
 from types import TracebackType
 from typing import Any
 
+import numpy as np
 import yaml
 from mcap.exceptions import McapError
 from mcap.records import Channel as McapChannel
@@ -36,6 +37,7 @@ from haven_viz.cues import CueState
 
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
 LOST_KEY = "haven.messages_lost"  # custom_data in metadata.yaml: {topic: messages DDS reported lost}
+WALL_CLOCK_KEY = "haven.wall_clock"  # custom_data: [[sim ns, wall ns (Unix epoch)], ...] paired about once a second
 
 
 class BagWriter:
@@ -54,12 +56,15 @@ class BagWriter:
     def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
         self.close()
 
-    def close(self, lost: Mapping[str, int] | None = None) -> None:
+    def close(self, lost: Mapping[str, int] | None = None, wall_clock: Sequence[tuple[int, int]] = ()) -> None:
         """Close the bag; `lost`: messages per topic that never reached the recorder, kept in the
-        metadata's custom_data (LOST_KEY) so the session can say how complete it is."""
+        metadata's custom_data (LOST_KEY) so the session can say how complete it is; `wall_clock`:
+        (sim ns, wall ns) pairs (WALL_CLOCK_KEY), to align the bag with other recordings."""
         if self._writer is not None:
             if lost is not None:
                 self._writer.set_custom_data(LOST_KEY, json.dumps(dict(lost), sort_keys=True))
+            if wall_clock:
+                self._writer.set_custom_data(WALL_CLOCK_KEY, json.dumps([list(p) for p in wall_clock]))
             self._writer.close()
             self._writer = None  # type: ignore[assignment]
 
@@ -160,13 +165,44 @@ def readable(bag: Path) -> bool:
         return False
 
 
+def _custom_data(bag: Path) -> dict[str, str]:
+    try:
+        info = yaml.safe_load((bag / "metadata.yaml").read_text())["rosbag2_bagfile_information"]
+        return {str(k): str(v) for k, v in (info.get("custom_data") or {}).items()}
+    except (OSError, KeyError, TypeError, AttributeError, yaml.YAMLError):
+        return {}
+
+
+def wall_clock(bag: Path) -> list[tuple[int, int]]:
+    """The recorder's (sim ns, wall ns) pairs, in order ([] for a bag without them)."""
+    try:
+        return [(int(a), int(b)) for a, b in json.loads(_custom_data(bag).get(WALL_CLOCK_KEY, "[]"))]
+    except (TypeError, ValueError):
+        return []
+
+
+def to_wall_time(pairs: Sequence[tuple[int, int]], sim_s: float) -> float | None:
+    """The Unix time (s) at sim time `sim_s`, interpolated between the recorder's pairs (beyond
+    them, extrapolated at the pace of the nearest two); None without pairs."""
+    if not pairs:
+        return None
+    sim = np.array([p[0] for p in pairs], dtype=float) * 1e-9
+    wall = np.array([p[1] for p in pairs], dtype=float) * 1e-9
+    if len(pairs) == 1:
+        return float(wall[0] + (sim_s - sim[0]))
+    if sim_s <= sim[0] or sim_s >= sim[-1]:
+        a, b = (0, 1) if sim_s <= sim[0] else (-2, -1)
+        pace = (wall[b] - wall[a]) / (sim[b] - sim[a])
+        return float(wall[a] + (sim_s - sim[a]) * pace)
+    return float(np.interp(sim_s, sim, wall))
+
+
 def lost_messages(bag: Path) -> dict[str, int]:
     """What the recorder noted as lost per topic (custom_data of metadata.yaml)."""
     try:
-        info = yaml.safe_load((bag / "metadata.yaml").read_text())["rosbag2_bagfile_information"]
-        lost = json.loads((info.get("custom_data") or {}).get(LOST_KEY, "{}"))
+        lost = json.loads(_custom_data(bag).get(LOST_KEY, "{}"))
         return {str(k): int(v) for k, v in lost.items()}
-    except (OSError, KeyError, TypeError, ValueError, AttributeError, yaml.YAMLError):
+    except (TypeError, ValueError, AttributeError):
         return {}
 
 

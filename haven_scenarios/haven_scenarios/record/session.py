@@ -21,6 +21,7 @@ import os
 import platform
 import subprocess
 import time
+from datetime import datetime, timezone
 from importlib import metadata
 from pathlib import Path
 from typing import Any
@@ -28,7 +29,7 @@ from typing import Any
 import numpy as np
 import yaml
 
-from haven_scenarios.record.bag import read_recording
+from haven_scenarios.record.bag import read_recording, to_wall_time, wall_clock
 from haven_scenarios.record.metrics import compute
 from haven_scenarios.record.timeline import GRID_S, Recording, Timeline
 from haven_scenarios.study.rules import EndReason
@@ -175,3 +176,24 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
 
     out = folder / "trajectory.png"
     return render_scene(world, markers, out, title=f"{title}\n{subtitle}", trails=trails, points=marks, removed=sorted(removed), events=happened)
+
+
+def trial_wall_clock(folder: Path) -> dict[str, str]:
+    """When the trial started and ended by the wall clock (ISO 8601, UTC, ms), from the recorder's
+    clock pairs and the trial's events: to align the session with other recordings of the study."""
+    pairs = wall_clock(folder / "bag")
+    out: dict[str, str] = {}
+    try:
+        lines = (folder / "events.jsonl").read_text(encoding="utf-8").splitlines()
+    except OSError:
+        return out
+    for line in lines:
+        try:
+            e = json.loads(line)
+        except ValueError:
+            continue
+        if isinstance(e, dict) and e.get("type") in ("trial_start", "trial_end") and isinstance(e.get("stamp"), (int, float)):
+            t = to_wall_time(pairs, float(e["stamp"]))
+            if t is not None:
+                out[e["type"]] = datetime.fromtimestamp(t, tz=timezone.utc).isoformat(timespec="milliseconds")
+    return out

@@ -35,6 +35,11 @@ STRANDED_S = 5.0  # a flat battery off the base for this long ends the trial
 RESEND_AFTER_S = 1.0  # standing still short of the base this long: ask for the base once more
 
 
+def any_reader(topic: str) -> str:
+    """How `wait_for` says "whichever node reads this topic" (somebody's own planner)."""
+    return "/" + topic.lstrip("/")
+
+
 @dataclass(frozen=True)
 class DirectorConfig:
     scenario: str = param("hallway", "a shipped scenario name or a scenario YAML")
@@ -49,7 +54,7 @@ class DirectorConfig:
 @dataclass(frozen=True)
 class ScenarioNodeConfig:
     director: DirectorConfig = group(DirectorConfig)
-    wait_for: tuple[str, ...] = param(("planner",), "nodes that must be listening before the trial starts")
+    wait_for: tuple[str, ...] = param(("planner",), "nodes that must be listening before the trial starts (/topic: any reader of it)")
     hold_start: bool = param(False, "the trial starts only on a `start` on /haven/trial_control (the researcher console's Start)")
 
 

@@ -99,7 +99,9 @@ def resolve_world(spec: str, base: Path | None = None) -> Path:
     return p
 
 
-def load_scenario(spec: str | Path) -> Scenario:
+def load_scenario(spec: str | Path, world: str | None = None) -> Scenario:
+    """A shipped scenario by name, or a scenario file; `world` (a packaged world name or a world
+    file) plays it in another world, which must have the rooms, gems and humans it names."""
     path = Path(spec)
     if not (path.suffix in (".yaml", ".yml") or path.exists()):
         path = Path(str(resources.files("haven_scenarios") / "scenarios" / f"{spec}.yaml"))
@@ -111,6 +113,8 @@ def load_scenario(spec: str | Path) -> Scenario:
         raise ScenarioError(f"{path}: cannot read scenario file: {e.strerror}") from None
     except yaml.YAMLError as e:
         raise ScenarioError(f"{path}: YAML syntax error: {getattr(e, 'problem', None) or e}") from None
+    if world is not None and isinstance(data, dict):
+        data = {**data, "world": str(Path(world).resolve()) if Path(world).exists() else world}
     return _parse(data, str(path))
 
 

@@ -4,7 +4,10 @@ from __future__ import annotations
 
 import argparse
 import sys
+import time
+from pathlib import Path
 
+from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, git_commit, new_session_dir, rmw, versions, write_json
 from haven_scenarios.tools.commands.common import (
     add_ros_options,
     add_suite_options,
@@ -23,6 +26,8 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     sim = sub.add_parser("sim", help="run the simulator, velocity mux, planner, controller and viz until Ctrl-C")
     _suite_arguments(sim, rtf=1.0)
     sim.add_argument("--duration", type=positive, default=None, help="stop after this many wall seconds")
+    sim.add_argument("--record", action="store_true", help="record every topic into a session folder (bag, world.yaml, session.json)")
+    sim.add_argument("--sessions", default="sessions", help="folder for the session folder with --record (default: ./sessions)")
     sim.set_defaults(func=run_suite)
     demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
     _suite_arguments(demo, rtf=4.0)
@@ -37,6 +42,28 @@ def _suite_arguments(p: argparse.ArgumentParser, rtf: float) -> None:
     add_ros_options(p)
 
 
+def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
+    """A session folder for `haven sim --record`: no scenario, no trial; the bag, the world and a
+    record of how it was run."""
+    name = load_world(world).name
+    folder = new_session_dir(root, "sim", name)
+    (folder / WORLD_FILE).write_text(Path(world).read_text())
+    info = {
+        "kind": "ad hoc (haven sim --record)",
+        "world": name,
+        "world_file": WORLD_FILE,
+        "real_time_factor": args.rtf,
+        "without": list(args.without),
+        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
+        "versions": versions(),
+        "git_commit": git_commit(),
+        "rmw": rmw(),
+        "command": sys.argv,
+    }
+    write_json(folder / SESSION_FILE, info)
+    return folder
+
+
 def run_suite(args: argparse.Namespace) -> int:
     try:
         world = str(resolve_world_path(args.world))
@@ -47,6 +74,11 @@ def run_suite(args: argparse.Namespace) -> int:
         {"sim": {"world": world, "real_time_factor": args.rtf}, "planner": {"world": world}, "viz": {"world": world}}, params_file(args), args.without
     )
     until, timeout = None, getattr(args, "duration", None)
+    folder = None
+    if getattr(args, "record", False):
+        folder = _ad_hoc_session(Path(args.sessions), world, args)
+        recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": "."}, params_file=params_file(args))
+        specs.insert(0, ProcessSpec("recorder", recorder, cwd=str(folder.resolve())))
     if args.command == "demo":
         specs.append(ProcessSpec("demo_driver", node_argv("haven_scenarios.nodes.demo_driver", {"use_sim_time": True, "laps": args.laps})))
         until, timeout = "demo_driver", 300.0
@@ -56,7 +88,9 @@ def run_suite(args: argparse.Namespace) -> int:
             sup.start(spec)
         print(f"haven: started {', '.join(f'{n} (pid {p})' for n, p in sup.pids().items())}; Ctrl-C stops all", flush=True)
         exited = sup.wait(timeout_s=timeout, until_exit_of=until)
-        codes = sup.stop()
+        codes = sup.stop(first=tuple(n for n in sup.pids() if n != "recorder"))  # the recorder last: it gets everything
+    if folder is not None:
+        print(f"haven: recorded in {folder}")
     if exited is not None and not (exited.name == until and exited.code == 0):
         print(f"haven: {exited.name} exited with code {exited.code}; stopped the others", file=sys.stderr)
         return exited.code or 1

@@ -24,18 +24,21 @@ from haven_scenarios.record.session import (
     session_info,
     session_scenario,
     trajectory_picture,
+    trial_wall_clock,
     versions,
     write_inputs,
     write_json,
 )
 from haven_scenarios.run.suite import SuiteConfig, load_suite_config, render
 from haven_scenarios.run.trial import condition_name, parse_condition, scenario_suite
+from haven_scenarios.study.director import any_reader
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
-from haven_scenarios.tools.commands.common import add_ros_options, environment, fail, positive, suite_specs
+from haven_scenarios.tools.commands.common import add_ros_options, add_suite_options, environment, fail, positive, suite_specs
 from haven_scenarios.tools.commands.studies import CONDITION_HELP
 from haven_scenarios.tools.supervisor import Exited, ProcessSpec, Supervisor, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
+from haven_sim.common import topics
 from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
 from haven_viz.cues import CUES, Toggles
 
@@ -64,7 +67,10 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         help="these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`",
     )
     run.add_argument("--sessions", default="sessions", help="folder for session folders (default: ./sessions)")
-    run.add_argument("--params-file", default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
+    run.add_argument(
+        "--world", default=None, help="play the scenario in this world (a packaged world name or a YAML with the rooms, gems and humans it names)"
+    )
+    add_suite_options(run)
     web = run.add_argument_group("in the browser")
     web.add_argument(
         "--web", action="store_true", help="serve the participants' first-person pages and the researcher console (the URLs are printed)"
@@ -87,7 +93,7 @@ def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
     """The scenario as this run plays it (teleoperated humans marked), the condition and the
     parameter file's configuration; raises ScenarioError or ValueError (including for a bad
     parameter file) before anything starts."""
-    scenario = load_scenario(args.scenario)
+    scenario = load_scenario(args.scenario, args.world)
     toggles = parse_condition(args.condition or scenario.condition)
     if args.teleop is not None:
         ids = args.teleop or [h.id for h in scenario.humans]
@@ -117,11 +123,13 @@ class SessionPlan:
     free_running: bool = False  # simulated participants on the free-running clock
     extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
     web: WebOptions | None = None  # the pages, with `haven run --web`
+    without: tuple[str, ...] = ()  # our nodes left out: the user runs their own in their place
 
     @property
     def lockstep(self) -> bool:
-        """Simulated participants run on the lockstep clock; a person plays on the free-running one."""
-        return not self.free_running and not any(h.model == "teleop" for h in self.scenario.humans)
+        """Simulated participants run on the lockstep clock; a person plays on the free-running
+        one, and so does a suite with a node of the user's (it does not take the clock's ticks)."""
+        return not self.free_running and not self.without and not any(h.model == "teleop" for h in self.scenario.humans)
 
     @property
     def real_time_factor(self) -> float:
@@ -138,16 +146,18 @@ class SessionPlan:
             sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=("viz",), lockstep_wait_for=("recorder",))
         else:
             sim = replace(sim, lockstep_participants=(), lockstep_observers=(), lockstep_wait_for=())
-        scenario = replace(c.scenario, wait_for=("planner", "recorder"), hold_start=self.web is not None)
+        # The trial starts once the planner listens (somebody's own: whichever node reads /goal_pose).
+        planner = "planner" if "planner" not in self.without else any_reader(topics.GOAL)
+        scenario = replace(c.scenario, wait_for=(planner, "recorder"), hold_start=self.web is not None)
         return replace(c, sim=sim, scenario=scenario, lockstep=LockstepParams(self.lockstep))
 
 
-def _specs(folder: Path, lockstep: bool) -> list[ProcessSpec]:
+def _specs(folder: Path, lockstep: bool, without: tuple[str, ...]) -> list[ProcessSpec]:
     """The nodes, run in the session folder, each reading its params.yaml (node sections there win
     over `-p`, so the file holds everything); on the command line only which clock they read."""
     # On the lockstep clock the ticks carry the time: the participants need no /clock.
     stepped: dict[str, object] = {"use_sim_time": False} if lockstep else {}
-    suite = suite_specs({"mux": stepped, "planner": stepped, "controller": stepped, "viz": stepped}, PARAMS_FILE)
+    suite = suite_specs({"mux": stepped, "planner": stepped, "controller": stepped, "viz": stepped}, PARAMS_FILE, without)
     recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": "."})
     scenario_node = node_argv("haven_scenarios.nodes.scenario_node", {"use_sim_time": True, **stepped}, params_file=PARAMS_FILE)
     specs = [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
@@ -216,6 +226,7 @@ def _finish(folder: Path, scenario: Scenario, info: dict[str, Any], wall: float)
     metrics, world, rec = analyse(folder)
     write_json(folder / METRICS_FILE, metrics)
     info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
+    info["wall_clock"] = trial_wall_clock(folder)
     write_json(folder / SESSION_FILE, info)
     if world is not None:
         trajectory_picture(folder, world, rec, f"{scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
@@ -245,6 +256,7 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
         "git_commit": git_commit(),
         "rmw": rmw(),
         "command": sys.argv,
+        "without": list(plan.without),
         **plan.extra,
     }
     write_json(folder / SESSION_FILE, info)
@@ -256,7 +268,7 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
     )
     started = time.monotonic()
     limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
-    specs = _specs(folder, lockstep)
+    specs = _specs(folder, lockstep, plan.without)
     if plan.web is not None:
         specs.append(_web_spec(plan, plan.web, folder))
     exited = _supervise(args, specs, folder, None if plan.web is not None else limit)  # the researcher decides when it starts
@@ -298,7 +310,7 @@ def run_cmd(args: argparse.Namespace) -> int:
         if busy:
             return fail(busy)
     participant = args.participant or "-".join(h.id for h in scenario.humans if h.model == "teleop") or "sim"
-    plan = SessionPlan(scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, web=web)
+    plan = SessionPlan(scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, web=web, without=tuple(args.without))
     return run_session(args, plan, Path(args.sessions))
 
 
@@ -317,5 +329,6 @@ def rerun_cmd(args: argparse.Namespace) -> int:
         rtf = args.rtf if args.rtf is not None else (float(info.get("real_time_factor") or 1.0) if free else None)
     except (TypeError, ValueError) as e:
         return fail(f"{folder / SESSION_FILE}: {e}")
-    plan = SessionPlan(scenario, toggles, seed, str(info.get("participant", "sim")), base, rtf, free, {"rerun_of": folder.name})
+    without = tuple(str(n) for n in info.get("without") or ())  # (their own nodes must run again too)
+    plan = SessionPlan(scenario, toggles, seed, str(info.get("participant", "sim")), base, rtf, free, {"rerun_of": folder.name}, without=without)
     return run_session(args, plan, Path(args.sessions) if args.sessions else folder.parent)
