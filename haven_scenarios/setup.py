@@ -31,6 +31,7 @@ setup(
             "keyboard_teleop = haven_scenarios.nodes.keyboard_teleop:main",
             "foxglove_bridge = haven_scenarios.nodes.bridge:main",
             "web_node = haven_scenarios.nodes.web_node:main",
+            "player = haven_scenarios.nodes.player:main",
         ],
     },
 )

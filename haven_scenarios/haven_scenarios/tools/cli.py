@@ -8,6 +8,7 @@
                        [--web [--host H] [--port P]]  ... with first-person participant pages and a researcher console
     haven teleop [HUMAN]                              drive a participant's avatar from the keyboard
     haven report SESSION... [--out CSV]               metrics recomputed from recordings
+    haven play SESSION [--rate R] [--hold]            a recorded session back on the graph (latched topics latched)
     haven topics | echo TOPIC | hz TOPIC              graph inspection without the ros2 command
     haven bridge [--host H] [--port P]                live Foxglove WebSocket view of a running suite
     haven batch SCENARIO --trials N --seed S          simulated trials without ROS, one CSV row each

@@ -1,4 +1,5 @@
-"""Commands that talk to a running suite: goto, snapshot, teleop, topics / echo / hz, bridge."""
+"""Commands that talk to a running suite: goto, snapshot, teleop, topics / echo / hz, bridge; and
+play, which puts a recorded session back on the graph."""
 
 from __future__ import annotations
 
@@ -43,7 +44,12 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     bridge.add_argument("--port", type=int, default=8765)
     bridge.add_argument("--topics", nargs="+", default=None, help="only these topics (default: every topic)")
     bridge.set_defaults(func=bridge_cmd)
-    for p in (goto, snap, teleop, bridge, *(sub.choices[n] for n in ("topics", "echo", "hz"))):
+    play = sub.add_parser("play", help="play a recorded session back onto the graph, latched topics latched (for installs without ros2 bag)")
+    play.add_argument("session", type=Path, help="a session folder (or its bag/)")
+    play.add_argument("--rate", type=positive, default=1.0, help="playback speed (default 1)")
+    play.add_argument("--hold", action="store_true", help="stay up after the end, so the latched topics remain for late viewers")
+    play.set_defaults(func=play_cmd)
+    for p in (goto, snap, teleop, bridge, play, *(sub.choices[n] for n in ("topics", "echo", "hz"))):
         add_ros_options(p)
 
 
@@ -71,6 +77,13 @@ def _call(argv: list[str], args: argparse.Namespace) -> int:
 
 def teleop_cmd(args: argparse.Namespace) -> int:
     return _call(node_argv("haven_scenarios.nodes.keyboard_teleop", {"human": args.human, "speed_mps": args.speed}), args)
+
+
+def play_cmd(args: argparse.Namespace) -> int:
+    bag = args.session / "bag" if (args.session / "bag").is_dir() else args.session
+    if not (bag / "metadata.yaml").is_file():
+        return fail(f"{args.session}: no bag here (a session folder or its bag/, with metadata.yaml)")
+    return run_client(args, "player", "haven_scenarios.nodes.player", {"bag": str(bag.resolve()), "rate": args.rate, "hold": args.hold})
 
 
 def graph_cmd(args: argparse.Namespace) -> int:

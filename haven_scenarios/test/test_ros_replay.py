@@ -1,0 +1,38 @@
+"""A recorded session played back looks like the live run: a viewer that joins late (RViz with the
+shipped config: reliable, transient local) gets /tf_static, /map and the world markers again,
+because the bag keeps the QoS each topic was offered with (as `ros2 bag play` reads it too)."""
+
+import subprocess
+import sys
+
+import pytest
+from nav_msgs.msg import OccupancyGrid
+from rosgraph_msgs.msg import Clock
+from visualization_msgs.msg import MarkerArray
+
+from haven_sim.nodes import qos
+
+pytestmark = [pytest.mark.ros, pytest.mark.slow]
+HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
+
+
+def test_a_replayed_session_relatches_static_tf_the_map_and_the_world(ros, tmp_path):
+    tf2 = pytest.importorskip("tf2_msgs.msg", reason="tf2_msgs not built on this machine (scripts/build_interfaces.py)")
+    r = ros.run([*HAVEN, "sim", "--record", "--duration", "6", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)], 120)
+    assert r.returncode == 0, r.stderr[-2000:]
+    (folder,) = tmp_path.iterdir()
+    assert (folder / "bag" / "metadata.yaml").is_file() and (folder / "world.yaml").is_file()
+
+    clock = ros.collect(Clock, "/clock", qos.CLOCK)
+    player = subprocess.Popen([*HAVEN, "play", str(folder), "--hold", "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True)
+    ros.procs.append(player)
+    ros.wait_for_messages(clock, 20, timeout_s=30)  # playing: the viewer below joins late
+    rviz = qos.LATCHED  # the shipped RViz config's Map, World and TF (static) QoS
+    late = {
+        topic: ros.collect(t, topic, rviz)
+        for topic, t in (("/tf_static", tf2.TFMessage), ("/map", OccupancyGrid), ("/haven/world_markers", MarkerArray))
+    }
+    for topic, got in late.items():
+        ros.wait_for_messages(got, 1, timeout_s=30)
+    assert {(t.header.frame_id, t.child_frame_id) for t in late["/tf_static"][0].transforms} >= {("map", "odom"), ("base_footprint", "base_link")}
+    assert late["/map"][0].info.width > 0 and len(late["/haven/world_markers"][0].markers) > 4
