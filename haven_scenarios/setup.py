@@ -29,7 +29,7 @@ setup(
             "scenario_node = haven_scenarios.nodes.scenario_node:main",
             "recorder = haven_scenarios.nodes.recorder:main",
             "keyboard_teleop = haven_scenarios.nodes.keyboard_teleop:main",
-            "foxglove_bridge = haven_scenarios.nodes.bridge:main",
+            "haven_bridge = haven_scenarios.nodes.bridge:main",
             "web_node = haven_scenarios.nodes.web_node:main",
             "player = haven_scenarios.nodes.player:main",
         ],

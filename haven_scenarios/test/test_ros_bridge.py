@@ -81,3 +81,68 @@ def test_bridge_is_local_by_default():
 
     args = build_parser().parse_args(["bridge"])
     assert args.host == "127.0.0.1" and args.port == 8765
+
+
+async def foxglove_client(port, goal_cdr, timeout_s=30.0):
+    """As Foxglove's app does: read the server's capabilities and time, flip a cue toggle from the
+    Parameters panel, publish a goal (allowed) and try a topic that is not."""
+    async with websockets.connect(f"ws://127.0.0.1:{port}", subprotocols=["foxglove.sdk.v1", "foxglove.websocket.v1"]) as ws:
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + timeout_s
+        seen = {"values": [], "status": [], "time": []}
+        info = None
+        sent = False
+        while loop.time() < deadline and not (info and len(seen["values"]) >= 2 and seen["status"] and seen["time"]):
+            try:
+                frame = await asyncio.wait_for(ws.recv(), timeout=1.0)
+            except asyncio.TimeoutError:
+                continue
+            if isinstance(frame, bytes):
+                if frame[0] == 2:  # time
+                    seen["time"].append(struct.unpack_from("<Q", frame, 1)[0])
+                continue
+            msg = json.loads(frame)
+            if msg["op"] == "serverInfo":
+                info = msg
+            elif msg["op"] == "parameterValues":
+                seen["values"].append({p["name"]: p["value"] for p in msg["parameters"]})
+            elif msg["op"] == "status":
+                seen["status"].append(msg["message"])
+            if info and not sent:
+                sent = True
+                await ws.send(json.dumps({"op": "getParameters", "parameterNames": [], "id": "get"}))
+                await ws.send(json.dumps({"op": "setParameters", "parameters": [{"name": "/viz.thought_bubble", "value": False}], "id": "set"}))
+                channels = [
+                    {"id": 1, "topic": "/goal_pose", "encoding": "cdr", "schemaName": "geometry_msgs/msg/PoseStamped"},
+                    {"id": 2, "topic": "/cmd_vel", "encoding": "cdr", "schemaName": "geometry_msgs/msg/Twist"},
+                ]
+                await ws.send(json.dumps({"op": "advertise", "channels": channels}))
+                await ws.send(b"\x01" + struct.pack("<I", 1) + goal_cdr)
+        return info, seen
+
+
+def test_foxglove_parameters_panel_toggles_a_cue_and_clients_publish_only_the_allow_list(ros):
+    from geometry_msgs.msg import PoseStamped
+    from rclpy.parameter_client import AsyncParameterClient
+    from rclpy.serialization import serialize_message
+
+    goals = ros.collect(PoseStamped, "/goal_pose", qos.RELIABLE)
+    ros.start("haven_sim.nodes.sim_node", {"real_time_factor": 2.0})
+    ros.start("haven_viz.nodes.viz_node", {"use_sim_time": True, "world": "small_test"})
+    port = free_port()
+    ros.start("haven_scenarios.nodes.bridge", {"port": port})
+    viz = AsyncParameterClient(ros.node, "viz")
+    assert ros.spin_until(lambda: viz.services_are_ready() and ros.node.count_subscribers("/clock") >= 2, 30)
+    goal = PoseStamped()
+    goal.header.frame_id = "map"
+    goal.pose.position.x, goal.pose.position.y, goal.pose.orientation.w = 2.0, 3.0, 1.0
+    info, seen = asyncio.run(foxglove_client(port, bytes(serialize_message(goal))))
+    assert {"parameters", "clientPublish", "time"} <= set(info["capabilities"])
+    assert seen["values"][0]["/viz.thought_bubble"] is True and seen["values"][1]["/viz.thought_bubble"] is False
+    assert any("may not publish on /cmd_vel" in s for s in seen["status"])  # refused: not on the allow-list
+    assert seen["time"][-1] > 0  # the suite's sim time
+    future = viz.get_parameters(["thought_bubble"])
+    ros.spin_until(future.done, 10)
+    assert future.result().values[0].bool_value is False  # the viz node's own parameter changed
+    ros.wait_for_messages(goals, 1)
+    assert (goals[0].pose.position.x, goals[0].pose.position.y) == (2.0, 3.0)

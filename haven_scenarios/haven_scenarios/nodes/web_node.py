@@ -19,16 +19,14 @@ import os
 import sys
 import threading
 import time
-from typing import Any
 
 from foxglove import Parameter as FoxgloveParameter
 from rclpy.node import Node
-from rclpy.parameter import Parameter
-from rclpy.parameter_client import AsyncParameterClient
 from rclpy.publisher import Publisher
 from rclpy.serialization import deserialize_message
 from std_msgs.msg import String
 
+from haven_scenarios.nodes.cue_parameters import CueParameters
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.study.rules import TrialCommand
 from haven_scenarios.study.scenario import load_scenario
@@ -42,10 +40,7 @@ from haven_sim.common.events import Event, Sequencer
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
 from haven_sim.nodes.runner import run_node
-from haven_viz.cues import CUES
 
-VIZ_NODE = "viz"
-PARAMETER_TIMEOUT_S = 3.0
 EVENTS_KEPT = 2000  # a trial logs a few hundred
 RELAYED = tuple(
     absolute(t)
@@ -61,11 +56,6 @@ RELAYED = tuple(
         topics.TRIAL_STATUS,
     )
 )
-
-
-def parameter_name(cue: str) -> str:
-    """A cue toggle as Foxglove's ROS bridge names node parameters: '/viz.path_projection'."""
-    return f"/{VIZ_NODE}.{cue}"
 
 
 class RoleSink:
@@ -84,12 +74,10 @@ class RoleSink:
         self.node.forward(self.role, topic, data)
 
     def get_parameters(self, names: list[str]) -> list[FoxgloveParameter]:
-        return self.node.cue_parameters(names) if self.role.parameters else []
+        return self.node.cues.get(names) if self.role.parameters else []
 
     def set_parameters(self, parameters: list[FoxgloveParameter]) -> list[FoxgloveParameter]:
-        if not self.role.parameters:
-            return []
-        return self.node.set_cues({p.name: p.get_value() for p in parameters})
+        return self.node.cues.set(parameters) if self.role.parameters else []
 
 
 class WebNode(Node):
@@ -112,7 +100,7 @@ class WebNode(Node):
         self.sequencer, self.wizard, self._lock = Sequencer(), Wizard(), threading.Lock()
         self.gate = StartGate(humans, researcher_start)
         self.events = self._publisher(absolute(topics.EVENTS))
-        self.viz = AsyncParameterClient(self, VIZ_NODE)
+        self.cues = CueParameters(self)
         self.relay = FoxgloveRelay()
         self.relay.keep(absolute(topics.EVENTS), EVENTS_KEPT)  # a console opened mid-trial shows the whole log
         ports = {}
@@ -164,29 +152,6 @@ class WebNode(Node):
                 elif topic == absolute(topics.THOUGHT):
                     self._log(self.wizard.thought(str(msg.data), self.now()))
             pub.publish(data)
-
-    # -- the cue toggles (the console; Foxglove's Parameters panel) ---------------------------------
-    def _wait(self, future: Any) -> Any:
-        done = threading.Event()
-        future.add_done_callback(lambda _: done.set())
-        if not done.wait(PARAMETER_TIMEOUT_S):
-            self.get_logger().warning(f"the {VIZ_NODE} node did not answer within {PARAMETER_TIMEOUT_S:g} s")
-            return None
-        return future.result()
-
-    def cue_parameters(self, names: list[str]) -> list[FoxgloveParameter]:
-        cues = [c for c in CUES if not names or parameter_name(c) in names]
-        result = self._wait(self.viz.get_parameters(cues)) if cues else None
-        if result is None:
-            return []
-        return [FoxgloveParameter(parameter_name(c), value=bool(v.bool_value)) for c, v in zip(cues, result.values, strict=False)]
-
-    def set_cues(self, values: dict[str, Any]) -> list[FoxgloveParameter]:
-        by_name = {parameter_name(c): c for c in CUES}
-        changes = [Parameter(by_name[n], value=bool(v)) for n, v in values.items() if n in by_name and isinstance(v, bool)]
-        if changes:
-            self._wait(self.viz.set_parameters(changes))
-        return self.cue_parameters([])
 
     def destroy_node(self) -> None:
         self.door.stop()

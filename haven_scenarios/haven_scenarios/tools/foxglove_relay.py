@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import threading
 from collections import deque
-from collections.abc import Sequence
 from typing import Any, Protocol
 
 import foxglove
@@ -83,12 +82,23 @@ class FoxgloveRelay:
         self._lock = threading.Lock()
         self.servers: list[Any] = []
 
-    def serve(self, host: str = "127.0.0.1", port: int = 8765, name: str = "haven", sink: ClientSink | None = None, parameters: bool = False) -> Any:
+    def serve(
+        self,
+        host: str = "127.0.0.1",
+        port: int = 8765,
+        name: str = "haven",
+        sink: ClientSink | None = None,
+        parameters: bool = False,
+        time: bool = False,
+    ) -> Any:
         """Start one more server on these channels (port 0: any free port; see `.port`). With a
-        `sink`, its clients may publish (and set parameters, if `parameters`)."""
-        caps: Sequence[Capability] = ()
+        `sink`, its clients may publish (and set parameters, if `parameters`); with `time`, it
+        tells its clients the time (`broadcast_time`)."""
+        caps: list[Capability] = []
         if sink is not None:
             caps = [Capability.ClientPublish, *([Capability.Parameters] if parameters else [])]
+        if time:
+            caps.append(Capability.Time)
         listener = _Listener(self, sink)
         server = foxglove.start_server(
             name=name, host=host, port=port, capabilities=list(caps), supported_encodings=["cdr"], server_listener=listener
@@ -96,6 +106,11 @@ class FoxgloveRelay:
         listener.server = server
         self.servers.append(server)
         return server
+
+    def broadcast_time(self, ns: int) -> None:
+        """The current time (sim time) to every server's clients."""
+        for server in self.servers:
+            server.broadcast_time(ns)
 
     @property
     def port(self) -> int:
