@@ -6,7 +6,7 @@ import signal
 import time
 
 import pytest
-from geometry_msgs.msg import PoseArray, Twist, TwistStamped
+from geometry_msgs.msg import PoseArray, PoseStamped, Twist, TwistStamped
 from nav_msgs.msg import OccupancyGrid, Odometry
 from rclpy.duration import Duration
 from ros_harness import tracebacks
@@ -49,6 +49,7 @@ def test_odom_rate_pose_scan_and_topics(ros):
     scans = ros.collect(LaserScan, "/scan", qos.SENSOR)
     clock = ros.collect(Clock, "/clock", qos.CLOCK)
     humans = ros.collect(PoseArray, "/humans", qos.RELIABLE)
+    h1 = ros.collect(PoseStamped, "/humans/h1/pose", qos.RELIABLE)
     battery = ros.collect(BatteryState, "/battery_state", qos.RELIABLE)
     ros.start(SIM, {"real_time_factor": 2.0})
     ros.wait_matched(odom)
@@ -56,6 +57,7 @@ def test_odom_rate_pose_scan_and_topics(ros):
     ros.wait_for_messages(scans, 3)
     ros.wait_for_messages(battery, 2)
     ros.wait_for_messages(humans, 2)
+    ros.wait_for_messages(h1, 2)
     stamps = [conv.time_from_msg(m.header.stamp) for m in odom[-50:]]
     gaps = [b - a for a, b in zip(stamps, stamps[1:])]
     assert all(g == pytest.approx(0.02, abs=1e-6) for g in gaps)  # 50 Hz in sim time, none lost
@@ -71,6 +73,8 @@ def test_odom_rate_pose_scan_and_topics(ros):
     ss = conv.time_from_msg(scans[-1].header.stamp) - conv.time_from_msg(scans[-2].header.stamp)
     assert ss == pytest.approx(0.1, abs=1e-6)
     assert humans[-1].header.frame_id == "map" and len(humans[-1].poses) == 1
+    # the same person by id, on a topic of its own
+    assert h1[-1].header.frame_id == "map" and conv.pose_from_msg(h1[-1].pose) == pytest.approx((7.0, 1.0, 3.14159), abs=1e-4)
     b = battery[-1]
     assert b.percentage == pytest.approx(1.0) and b.power_supply_status == BatteryState.POWER_SUPPLY_STATUS_FULL
 

@@ -192,7 +192,8 @@ def trial_wall_clock(folder: Path) -> dict[str, str]:
             e = json.loads(line)
         except ValueError:
             continue
-        if isinstance(e, dict) and e.get("type") in ("trial_start", "trial_end") and isinstance(e.get("stamp"), (int, float)):
+        kinds = (EventKind.TRIAL_START.value, EventKind.TRIAL_END.value)
+        if isinstance(e, dict) and e.get("type") in kinds and isinstance(e.get("stamp"), (int, float)):
             t = to_wall_time(pairs, float(e["stamp"]))
             if t is not None:
                 out[e["type"]] = datetime.fromtimestamp(t, tz=timezone.utc).isoformat(timespec="milliseconds")

@@ -44,6 +44,12 @@ def human_cmd_vel(human_id: str) -> str:
     return f"humans/{human_id}/cmd_vel"
 
 
+def human_pose(human_id: str) -> str:
+    """One person's pose by id (geometry_msgs/PoseStamped in map), beside /humans: no consumer has
+    to rely on the world file's order of the PoseArray."""
+    return f"humans/{human_id}/pose"
+
+
 def human_of_cmd_vel(topic: str) -> str | None:
     """The human id of a `humans/<id>/cmd_vel` topic, else None."""
     parts = topic.strip("/").split("/")

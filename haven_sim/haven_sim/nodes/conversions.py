@@ -201,6 +201,18 @@ def goal_from_msg(msg: PoseStamped) -> Goal:
     return Goal(pose_from_msg(msg.pose), msg.header.frame_id)
 
 
+def pose_stamped_msg(stamp: float, pose: Pose2D, frame_id: str = "map") -> PoseStamped:
+    msg = PoseStamped()
+    msg.header.stamp = time_msg(stamp)
+    msg.header.frame_id = frame_id
+    msg.pose = pose_msg(pose)
+    return msg
+
+
+def pose_from_stamped(msg: PoseStamped) -> Pose2D:
+    return pose_from_msg(msg.pose)
+
+
 def path_msg(stamp: float, poses: Sequence[Pose2D], frame_id: str = "map") -> Path:
     msg = Path()
     msg.header.stamp = time_msg(stamp)

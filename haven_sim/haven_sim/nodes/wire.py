@@ -100,4 +100,7 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
         table[topics.TF_STATIC] = TopicSpec(TFMessage, lambda fr, t: conv.tf_msg(t, fr), _unsupported, qos.LATCHED, qos.LATCHED)
     for hid in human_ids:
         table[topics.human_cmd_vel(hid)] = _twist()
+        table[topics.human_pose(hid)] = TopicSpec(
+            PoseStamped, lambda p, t: conv.pose_stamped_msg(t, p, f.map), conv.pose_from_stamped, qos.STREAM, qos.LATEST
+        )
     return table

@@ -83,7 +83,8 @@ class SimulatorComponent:
         return out
 
     def outputs(self) -> Sequence[str]:
-        return (topics.CLOCK, topics.MAP, topics.ODOM, topics.TF, topics.TF_STATIC, topics.SCAN, topics.BATTERY, topics.HUMANS, topics.EVENTS)
+        fixed = (topics.CLOCK, topics.MAP, topics.ODOM, topics.TF, topics.TF_STATIC, topics.SCAN, topics.BATTERY, topics.HUMANS, topics.EVENTS)
+        return (*fixed, *(topics.human_pose(h.id) for h in self.world.humans))
 
     def on_cmd_vel(self, cmd: Twist2D, now: float) -> list[Message]:
         self._check(self.sim.command_robot(cmd), topics.CMD_VEL)
@@ -134,6 +135,7 @@ class SimulatorComponent:
             humans = sim.human_poses()
             frames += human_frames(humans, c.map_frame)
             out.append(Message(topics.HUMANS, humans, now))
+            out += [Message(topics.human_pose(hid), pose, now) for hid, pose in humans.items()]
         out.append(Message(topics.TF, frames, now))
         if due(k, self._step_ns, self._scan_ns) and topics.SCAN not in self.unread:
             out.append(Message(topics.SCAN, ScanData(sim.scan(), c.sim.scan, 1.0 / c.sim.scan.rate_hz), now))
