@@ -168,12 +168,7 @@ def _read_run(xy: FloatArray, offset: int, rotate_above: float, headings: FloatA
         while j + 1 < len(s) and sign[j + 1] == sign[k]:
             j += 1
         total = wrap_angle(float(chord(np.array([j]), np.array([j + w]))[0] - chord(np.array([k - w]), np.array([k]))[0]))
-        # Less the chords' reach on each side: |turn| rises from the threshold to its peak over
-        # that much of the path before the curve (a corner's: all of w; an arc's: less).
-        reach = (w * (s[1] - s[0])) * (1.0 - threshold / float(np.max(np.abs(turn[k : j + 1]))))
-        a, b = s[k] + (reach if k > 0 else 0.0), s[j] - (reach if j < len(s) - 1 else 0.0)  # (a run may start turning)
-        if a > b:
-            a = b = 0.5 * (s[k] + s[j])
+        a, b = _turn_extent(s[k], s[j], k == 0, j == len(s) - 1, abs(total), float(np.max(np.abs(turn[k : j + 1]))), w * (s[1] - s[0]), threshold)
         if b - a < CORNER_RADIUS_M * abs(total) and abs(total) > rotate_above:
             at = int(np.argmin(np.abs(cum - 0.5 * (a + b))))
             corners[offset + at] = wrap_angle(float(chord(np.array([j]), np.array([j + w]))[0]))
@@ -184,6 +179,28 @@ def _read_run(xy: FloatArray, offset: int, rotate_above: float, headings: FloatA
             arcs.append((float(a), float(b)))
         k = j + 1
     return arcs
+
+
+def _turn_extent(
+    lo: float, hi: float, at_start: bool, at_end: bool, total: float, peak: float, chord: float, threshold: float
+) -> tuple[float, float]:
+    """Where a turn lies, from the stretch [lo, hi] where the chords' turn exceeds `threshold`.
+
+    The chords see a turn before it begins: by `d` ahead of an arc of curvature k the turn is
+    k (chord - d)^2 / (2 chord), so the stretch reaches chord - sqrt(2 chord threshold / k) beyond
+    each end, and an arc of length L that turns by `total` (k = total / L) gives a stretch
+    L + 2 (chord - sqrt(2 chord threshold L / total)) long: solved here for L, centred on the
+    stretch. A corner (L = 0) reads as a tiny arc. At the start or end of a run the turn may begin
+    right there, and its other end is found from the peak (a long arc's: k chord)."""
+    if at_start or at_end:
+        k = max(peak / chord, 1e-9)
+        reach = max(0.0, chord - math.sqrt(2.0 * chord * threshold / k))
+        return (lo if at_start else lo + reach), (hi if at_end else hi - reach)
+    q = math.sqrt(2.0 * chord * threshold / max(total, 1e-9))
+    disc = q * q - (2.0 * chord - (hi - lo))
+    length = (q + math.sqrt(disc)) ** 2 if disc > 0 else 0.0
+    centre = 0.5 * (lo + hi)
+    return centre - 0.5 * length, centre + 0.5 * length
 
 
 def _segments(poses: Sequence[Pose2D], kinds: list[SegmentKind | None], corners: dict[int, float]) -> list[Segment]:
