@@ -11,7 +11,8 @@ The recorder subscribes /haven/events only once /odom and /humans reach it: the 
 trial when the recorder listens to its events, so the state streams are recorded from the start
 (DDS matches each topic on its own; on a busy machine at 10x the streams matched 7 s of sim time
 after the events once). Its publishers keep the last 100 events for it, so none are lost by waiting.
-Without a simulator (the streams never come) it subscribes after STREAMS_WAIT_S all the same.
+Without a simulator (nobody publishes the streams) it subscribes after STREAMS_WAIT_S all the same;
+a simulator that is still starting up (a busy machine) is waited for.
 
 Log times are sim time (rosbag2's convention on /clock). To align a session with other recordings of
 the study (video, eye tracking, questionnaires), the recorder pairs sim time with the wall clock once
@@ -118,11 +119,17 @@ class Recorder(Node):
         return build(WireParams, values, where="recorder: parameter ")
 
     def _streams_missing(self) -> None:
+        """Without a simulator (nobody publishes a missing stream) /haven/events is recorded
+        without them; while a publisher exists (a simulator still starting up), keep waiting."""
+        if not self.topics.held:
+            self._give_up.cancel()
+            return
+        missing = sorted(set(STREAMS) - self.flowing)
+        if any(self.count_publishers(t) > 0 for t in missing):
+            return
         self._give_up.cancel()
-        if self.topics.held:
-            missing = ", ".join(sorted(set(STREAMS) - self.flowing))
-            self.get_logger().info(f"no {missing} after {STREAMS_WAIT_S:g} s: recording /haven/events without")
-            self.topics.release()
+        self.get_logger().info(f"nobody publishes {', '.join(missing)}: recording /haven/events without")
+        self.topics.release()
 
     def _on_lost(self, topic: str, n: int, best_effort: bool) -> None:
         """Counted for the bag's metadata; a warning unless the publisher sends best effort (a

@@ -23,6 +23,9 @@ from haven_sim.nodes.runner import run_node
 END_ACK_TIMEOUT_S = 10.0
 
 
+OBSERVERS = frozenset({"recorder", "viz", "web", "haven_bridge"})  # ours, which read every topic but act on none
+
+
 class ScenarioNode(ComponentNode):
     def __init__(self) -> None:
         super().__init__("scenario")
@@ -63,15 +66,16 @@ class ScenarioNode(ComponentNode):
         super().destroy_node()
 
     def _everyone_listening(self) -> bool:
-        """The nodes in `wait_for` subscribe (an entry like "/goal_pose": any node reads that topic:
-        somebody's own planner), and our publishers have matched every subscription the graph knows
+        """The nodes in `wait_for` subscribe (an entry like "/goal_pose": a node that is not one of
+        our OBSERVERS reads that topic: somebody's own planner), and our publishers have matched every subscription the graph knows
         of (seeing a reader in the graph comes before being able to deliver to it)."""
         listeners: set[str] = set()
         for topic in (topics.EVENTS, topics.GOAL):
             infos = self.get_subscriptions_info_by_topic(self.resolve_topic_name(topic))
             if self._pubs[topic].get_subscription_count() < len(infos):
                 return False
-            listeners |= {i.node_name for i in infos} | ({any_reader(topic)} if infos else set())
+            names = {i.node_name for i in infos}
+            listeners |= names | ({any_reader(topic)} if names - OBSERVERS else set())
         return all(name in listeners for name in self.wait_for)
 
 

@@ -18,6 +18,7 @@ from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
+from rclpy.qos import DurabilityPolicy
 from rclpy.subscription import Subscription
 
 from haven_sim.common.events import Event, Sequencer
@@ -30,6 +31,7 @@ from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import LockstepParams
 
 C = TypeVar("C")
+CATCH_UP_S = 10.0  # wall time a latched reader waits for what was published before the node started
 
 
 class ComponentNode(Node):
@@ -112,9 +114,12 @@ class ComponentNode(Node):
                     self.get_logger().warning(f"{name}: {info.node_name} publishes {info.topic_type}, this node reads {ours}; ignored{hint}")
 
     def _subscribe(self, topic: str, spec: TopicSpec, on_message: Callable[[Any], None]) -> Subscription:
-        """A reader with the spec's QoS; with a `late_qos` also a second, latched one for what was
-        published before this node started. A message both readers get (from a latched publisher)
-        is handled once: the publisher's timestamp and sequence number say it is the same."""
+        """A reader with the spec's QoS; with a `late_qos`, for the first CATCH_UP_S also a latched
+        one, for what a latched publisher sent before this node started (an e-stop). It is made
+        only while no publisher offers volatile and dropped after, so that a volatile publisher
+        (Nav2's planner_server, `ros2 topic pub`) sees no reader it cannot serve and nobody logs
+        "incompatible QoS". A message both readers get is handled once: the publisher's timestamp
+        and sequence number say it is the same."""
         if spec.late_qos is None:
             return self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
         seen: deque[tuple[int, int]] = deque(maxlen=64)
@@ -125,8 +130,16 @@ class ComponentNode(Node):
                 seen.append(key)
                 on_message(msg)
 
-        # (rclpy hands a two-argument callback the message info; its type hints do not say so)
-        self.create_subscription(spec.msg_type, topic, once, spec.late_qos)  # type: ignore[arg-type]
+        name = self.resolve_topic_name(topic)
+        if all(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in self.get_publishers_info_by_topic(name)):
+            # (rclpy hands a two-argument callback the message info; its type hints do not say so)
+            late = self.create_subscription(spec.msg_type, topic, once, spec.late_qos)  # type: ignore[arg-type]
+
+            def drop() -> None:
+                timer.cancel()
+                self.destroy_subscription(late)
+
+            timer = self.create_timer(CATCH_UP_S, drop, clock=Clock(clock_type=ClockType.STEADY_TIME))
         return self.create_subscription(spec.msg_type, topic, once, spec.sub_qos)  # type: ignore[arg-type]
 
     # -- translate -------------------------------------------------------------------------------
