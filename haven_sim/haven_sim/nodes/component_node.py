@@ -9,12 +9,14 @@ warning naming the topic, and the node keeps running.
 
 from __future__ import annotations
 
+import time
 from collections import deque
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypeVar
 
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy.clock import Clock, ClockType
+from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
@@ -116,10 +118,11 @@ class ComponentNode(Node):
     def _subscribe(self, topic: str, spec: TopicSpec, on_message: Callable[[Any], None]) -> Subscription:
         """A reader with the spec's QoS; with a `late_qos`, for the first CATCH_UP_S also a latched
         one, for what a latched publisher sent before this node started (an e-stop). It is made
-        only while no publisher offers volatile and dropped after, so that a volatile publisher
-        (Nav2's planner_server, `ros2 topic pub`) sees no reader it cannot serve and nobody logs
-        "incompatible QoS". A message both readers get is handled once: the publisher's timestamp
-        and sequence number say it is the same."""
+        only while no publisher offers volatile, and dropped as soon as one appears, so that a
+        volatile publisher (Nav2's planner_server, `ros2 topic pub`) meets no reader it cannot
+        serve (it may log "incompatible QoS" once if it starts within those seconds). A message
+        both readers get is handled once: the publisher's timestamp and sequence number say it is
+        the same."""
         if spec.late_qos is None:
             return self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
         seen: deque[tuple[int, int]] = deque(maxlen=64)
@@ -131,15 +134,23 @@ class ComponentNode(Node):
                 on_message(msg)
 
         name = self.resolve_topic_name(topic)
-        if all(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL for i in self.get_publishers_info_by_topic(name)):
-            # (rclpy hands a two-argument callback the message info; its type hints do not say so)
-            late = self.create_subscription(spec.msg_type, topic, once, spec.late_qos)  # type: ignore[arg-type]
 
-            def drop() -> None:
-                timer.cancel()
-                self.destroy_subscription(late)
+        def volatile_publisher() -> bool:
+            return any(i.qos_profile.durability != DurabilityPolicy.TRANSIENT_LOCAL for i in self.get_publishers_info_by_topic(name))
 
-            timer = self.create_timer(CATCH_UP_S, drop, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        if not volatile_publisher():
+            # (rclpy hands a two-argument callback the message info; its type hints do not say so. The
+            # incompatible-QoS event of a volatile publisher is expected here: not logged.)
+            quiet = SubscriptionEventCallbacks(incompatible_qos=lambda _: None)
+            late = self.create_subscription(spec.msg_type, topic, once, spec.late_qos, event_callbacks=quiet)  # type: ignore[arg-type]
+            started = time.monotonic()
+
+            def drop_when_done() -> None:
+                if time.monotonic() - started >= CATCH_UP_S or volatile_publisher():
+                    timer.cancel()
+                    self.destroy_subscription(late)
+
+            timer = self.create_timer(0.5, drop_when_done, clock=Clock(clock_type=ClockType.STEADY_TIME))
         return self.create_subscription(spec.msg_type, topic, once, spec.sub_qos)  # type: ignore[arg-type]
 
     # -- translate -------------------------------------------------------------------------------
