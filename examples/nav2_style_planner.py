@@ -51,13 +51,28 @@ class Nav2StylePlanner(Node):
         super().__init__("nav2_style_planner")
         self.radius = float(self.declare_parameter("turn_radius_m", 0.6).value)
         self.odom: Odometry | None = None
+        self.pending: PoseStamped | None = None  # a goal that came before /odom or before anyone read /plan
         self.create_subscription(Odometry, "odom", lambda m: setattr(self, "odom", m), 10)
         self.create_subscription(PoseStamped, "goal_pose", self.on_goal, 10)
         self.plan = self.create_publisher(Path, "plan", QoSProfile(depth=1))  # planner_server's QoS
+        self.current: Path | None = None
+        self.readers = 0
+        self.create_timer(0.5, self.retry)
+
+    def retry(self) -> None:
+        """A goal still waiting is planned; the current plan goes again to readers that matched
+        since it went out (the topic is volatile: they would not get it otherwise)."""
+        if self.pending is not None:
+            goal, self.pending = self.pending, None
+            self.on_goal(goal)
+        readers = self.plan.get_subscription_count()
+        if self.current is not None and readers > self.readers:
+            self.plan.publish(self.current)
+        self.readers = readers
 
     def on_goal(self, goal: PoseStamped) -> None:
-        if self.odom is None:
-            self.get_logger().warning("no /odom yet: goal ignored")
+        if self.odom is None or self.plan.get_subscription_count() == 0:
+            self.pending = goal  # planned once the robot's pose is known and a controller listens
             return
         # (the suite's map -> odom is the identity; a real planner would look the pose up in TF)
         p = self.odom.pose.pose
@@ -73,6 +88,7 @@ class Nav2StylePlanner(Node):
             path.poses.append(pose)
         path.poses[-1].pose.orientation = goal.pose.orientation  # the goal yaw on the last pose
         self.plan.publish(path)
+        self.current, self.readers = path, self.plan.get_subscription_count()
         self.get_logger().info(f"plan: {len(path.poses)} poses to ({goal.pose.position.x:.2f}, {goal.pose.position.y:.2f})")
 
 

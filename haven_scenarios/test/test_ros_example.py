@@ -35,10 +35,14 @@ def test_the_example_planner_drives_the_suite_to_the_goal_pose_with_cubes_on_its
         ros.procs.append(subprocess.Popen(argv, env=ros.env, start_new_session=True, stderr=subprocess.PIPE, text=True))
     goal = ros.node.create_publisher(PoseStamped, "/goal_pose", 10)  # RViz's 2D Goal Pose: default QoS
     ros.wait_for_messages(odom, 5)
-    assert ros.spin_until(lambda: ros.node.count_subscribers("/goal_pose") > 0 and ros.node.count_subscribers("/plan") >= 2, 30)
+
+    def planner_listens():  # the example's goal reader is matched (not only some other node's)
+        readers = ros.node.get_subscriptions_info_by_topic("/goal_pose")
+        return "nav2_style_planner" in {r.node_name for r in readers} and goal.get_subscription_count() >= len(readers)
+
+    assert ros.spin_until(lambda: planner_listens() and ros.node.count_subscribers("/plan") >= 2, 60)
     (plan_pub,) = ros.node.get_publishers_info_by_topic("/plan")
     assert plan_pub.node_name == "nav2_style_planner" and plan_pub.qos_profile.durability == DurabilityPolicy.VOLATILE
-    ros.wait_matched(goal)
     goal.publish(conv.goal_msg(0.0, Goal(Pose2D(*GOAL), "map")))
 
     def at_goal():

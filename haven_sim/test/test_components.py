@@ -51,6 +51,13 @@ def test_controller_reports_arrival_once_per_path():
     ctrl.on_plan(path, 0.2)  # the same goal sent again is a new path: reported again
     assert [e.kind for e in by_topic(ctrl.tick(0.25), topics.EVENTS)] == [EventKind.GOAL_REACHED]
     assert by_topic(ctrl.on_plan([], 0.3), topics.CMD_VEL_NAV) == [Twist2D()]  # a cleared plan stops at once
+    # The plan being followed, sent again mid-way (a planner re-sending it), does not restart it.
+    long = [Pose2D(0.05 * k, 0, 0) for k in range(80)]
+    ctrl.on_plan(long, 0.4)
+    ctrl.on_odom(RobotState(Pose2D(1.0, 0, 0)), 0.5)
+    ctrl.tick(0.5)
+    ctrl.on_plan(long, 0.6)
+    assert ctrl.follower._progress > 0.9  # not back to the start
 
 
 def test_planner_refuses_bad_goals_and_keeps_a_goal_until_it_has_map_and_pose():

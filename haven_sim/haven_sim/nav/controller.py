@@ -40,6 +40,7 @@ class ControllerComponent:
         self.follower = PathFollower(self.config.follower, self.config.style)
         self.robot: Pose2D | None = None
         self._active = False  # the last tick drove or rotated the robot
+        self._plan: list[Pose2D] = []
 
     @property
     def period_s(self) -> float:
@@ -52,6 +53,9 @@ class ControllerComponent:
         return (topics.CMD_VEL_NAV, topics.EVENTS)
 
     def on_plan(self, poses: Sequence[Pose2D], now: float) -> list[Message]:
+        if poses and list(poses) == self._plan and self.follower.active:
+            return []  # the plan being followed, sent again (a planner re-sending it): nothing changes
+        self._plan = list(poses)
         self.follower.set_path(poses)
         if not poses:  # a cleared plan stops the robot at once
             self._active = False
