@@ -8,6 +8,9 @@ import math
 import numpy as np
 
 from haven_sim.common.geometry import Pose2D
+from haven_sim.nav.motion_style import MotionStyle
+
+STYLE = (MotionStyle().arc_max_angle_rad, MotionStyle().facing_tolerance_rad)  # read_path's style arguments, HAVEN's defaults
 
 RADIUS_M = 0.6
 LEG_M = 2.0

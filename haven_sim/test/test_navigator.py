@@ -2,6 +2,7 @@
 is impossible or the person is at the next stop, re-decide while waiting, revert, resume."""
 
 import pytest
+from foreign_paths import STYLE
 from helpers import corridor, drive_closed_loop
 
 from haven_sim.common.events import EventKind
@@ -95,7 +96,7 @@ def test_the_pass_is_a_curve_out_held_past_the_person_and_back_to_the_route():
     sim, nav, follower = setup((6.0, 1.5))
     out = nav.update(Pose2D(2.5, 1.5, 0.0), [(6.0, 1.5)], 1.0)
     assert nav.state is NavState.DETOUR and out.path is not None
-    kinds = {seg.kind for seg in read_path(out.path).segments}
+    kinds = {seg.kind for seg in read_path(out.path, *STYLE).segments}
     assert SegmentKind.ARC in kinds and SegmentKind.ROTATE not in kinds
     beside = [p for p in out.path if abs(p.x - 6.0) < 0.3]
     assert beside and all(abs(p.y - 1.5) >= nav._need(nav.params.min_pass_clearance_m) - 1e-6 for p in beside)

@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from foreign_paths import ARC_END_M, ARC_START_M, GOAL, arc_path, corner_path
+from foreign_paths import ARC_END_M, ARC_START_M, GOAL, STYLE, arc_path, corner_path
 
 from haven_sim.common.geometry import Pose2D, wrap_angle
 from haven_sim.common.paths import SegmentKind, read_path
@@ -16,7 +16,7 @@ R, A, S = SegmentKind.ROTATE, SegmentKind.ARC, SegmentKind.STRAIGHT
 
 
 def kinds(poses):
-    return [s.kind for s in read_path(poses).segments]
+    return [s.kind for s in read_path(poses, *STYLE).segments]
 
 
 def corner(deg, leg=3.0):
@@ -46,7 +46,7 @@ def test_start_arc_or_rotation_from_the_robot_heading(start_deg, expected):
 
 def test_arc_is_tangent_smooth_and_removes_the_heading_change():
     poses = shape_path(corner(40.0), 0.0)
-    arc = read_path(poses).segments[1]
+    arc = read_path(poses, *STYLE).segments[1]
     pts = poses[arc.start : arc.end + 1]
     assert pts[0].yaw == pytest.approx(0.0) and pts[-1].yaw == pytest.approx(math.radians(40.0))
     radii = []
@@ -64,7 +64,7 @@ def test_spacing_goal_yaw_and_endpoints():
     assert max(steps) <= 0.25 + 1e-9
     assert kinds(poses) == [S, R, S, R]
     assert tuple(poses[-1][:2]) == pytest.approx((2.0, 3.0)) and abs(wrap_angle(poses[-1].yaw - math.pi)) < 1e-9
-    rot = read_path(poses).segments[1]
+    rot = read_path(poses, *STYLE).segments[1]
     yaws = [poses[i].yaw for i in range(rot.start, rot.end + 1)]
     assert all(abs(wrap_angle(b - a)) <= math.radians(15.0) + 1e-9 for a, b in zip(yaws, yaws[1:]))
 
@@ -91,16 +91,16 @@ def test_classify_reads_a_foreign_path():
     poses = [Pose2D(math.sin(t), 1 - math.cos(t), t) for t in np.linspace(0, math.pi / 2, 30)]
     poses += [Pose2D(1.0, 1.0, math.pi / 2 + d) for d in (0.8, math.pi / 2)]
     poses += [Pose2D(1.0 - d, 1.0, math.pi) for d in (0.5, 1.0)]
-    segs = read_path(poses).segments
+    segs = read_path(poses, *STYLE).segments
     assert [s.kind for s in segs] == [A, R, S]
     assert segs[1].yaw == pytest.approx(math.pi)
     assert (segs[0].start, segs[0].end) == (0, 29)
-    assert read_path([]).segments == [] and read_path([Pose2D(0, 0, 0)]).segments == []
+    assert read_path([], *STYLE).segments == [] and read_path([Pose2D(0, 0, 0)], *STYLE).segments == []
 
 
 def test_classify_round_trips_shape_path():
     poses = shape_path([(0, 0), (3, 0), (3, 2), (0.5, 2.2)], math.radians(30))
-    segs = read_path(poses).segments
+    segs = read_path(poses, *STYLE).segments
     assert [s.kind for s in segs] == [A, S, R, S, R, S]
     assert segs[0].start == 0 and segs[-1].end == len(poses) - 1
     assert all(a.end == b.start for a, b in zip(segs, segs[1:]))
@@ -126,7 +126,7 @@ NAV2_SHAPES = {
 @pytest.mark.parametrize("shape", NAV2_SHAPES)
 def test_a_nav2_shaped_arc_reads_as_straight_arc_straight_then_the_goal_yaw(shape):
     poses = arc_path(**NAV2_SHAPES[shape])
-    reading = read_path(poses)
+    reading = read_path(poses, *STYLE)
     segs = reading.segments
     assert [s.kind for s in segs] == [S, A, S, R]
     assert (segs[-1].start, segs[-1].end, segs[-1].yaw) == (len(poses) - 1, len(poses) - 1, GOAL.yaw)  # the goal yaw, at the end
@@ -143,14 +143,14 @@ def test_a_nav2_shaped_arc_reads_as_straight_arc_straight_then_the_goal_yaw(shap
 def test_a_path_that_arrives_facing_its_goal_yaw_gets_no_final_rotation():
     poses = arc_path(orientation="tangent")
     poses[-1] = Pose2D(poses[-1].x, poses[-1].y, math.pi / 2 + math.radians(1.0))
-    assert [s.kind for s in read_path(poses).segments] == [S, A, S]
+    assert [s.kind for s in read_path(poses, *STYLE).segments] == [S, A, S]
 
 
 @pytest.mark.parametrize("spacing", [0.05, None])
 def test_thetastar_corners_rotate_when_havens_style_would_and_arc_otherwise(spacing):
-    sharp = read_path(corner_path(90.0, spacing)).segments
+    sharp = read_path(corner_path(90.0, spacing), *STYLE).segments
     assert [s.kind for s in sharp][:3] == [S, R, S] and sharp[1].yaw == pytest.approx(math.pi / 2, abs=0.05)
-    gentle = read_path(corner_path(30.0, spacing))  # (its identity orientations: a goal yaw of 0, rotated to at the end)
+    gentle = read_path(corner_path(30.0, spacing), *STYLE)  # (its identity orientations: a goal yaw of 0, rotated to at the end)
     assert [s.kind for s in gentle.segments] == ([S, A, S, R] if spacing else [A, R])  # (two steps: both touch the arc)
     ((a, b),) = gentle.arcs  # the arc the robot drives around the corner, centred on it
     assert a == pytest.approx(2.0 - 0.15, abs=0.02) and b == pytest.approx(2.0 + 0.15, abs=0.02)
@@ -165,7 +165,7 @@ def test_our_planners_paths_read_as_written():
         for _ in range(rng.integers(2, 5)):
             pts.append((pts[-1][0] + rng.uniform(-4, 4), pts[-1][1] + rng.uniform(-4, 4)))
         poses = shape_path(pts, rng.uniform(-3, 3))
-        for seg in read_path(poses).segments:
+        for seg in read_path(poses, *STYLE).segments:
             for a, b in zip(poses[seg.start : seg.end], poses[seg.start + 1 : seg.end + 1]):
                 moved, turned = math.hypot(b.x - a.x, b.y - a.y) > 1e-3, abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) > math.radians(0.5)
                 small = abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) < math.radians(2.0)

@@ -35,6 +35,7 @@ from haven_sim.common.geometry import FloatArray, Point, Pose2D, wrap_angle
 from haven_sim.common.params import param
 from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.common.polyline import Polyline
+from haven_sim.nav.motion_style import MotionStyle
 from haven_viz.markers import Color, MarkerSpec, Shape
 
 PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS = "path_projection", "turn_signals", "thought_bubble", "battery_indicator"
@@ -53,6 +54,8 @@ BATTERY_BANDS: tuple[tuple[float, Color], ...] = (  # HAVEN's indicator: level a
     (0.2, (1.0, 0.55, 0.0, 1.0)),  # orange
 )
 BATTERY_LOW: Color = (0.9, 0.0, 0.0, 1.0)  # red
+
+STYLE = MotionStyle()  # how a path reads: HAVEN's turning rule (the viz node takes no motion-style parameters)
 
 
 @dataclass(frozen=True)
@@ -165,7 +168,7 @@ def _layout(poses: Sequence[Pose2D], spacing: float) -> tuple[list[_PathMarker],
     """Marker positions every `spacing` along the path, the rotations in place, the path as a
     polyline and its travel heading per segment (read from its geometry: any planner's path)."""
     line = Polyline(poses)
-    reading = read_path(poses)
+    reading = read_path(poses, STYLE.arc_max_angle_rad, STYLE.facing_tolerance_rad)
     if not poses:
         return [], [], line, reading.headings
     rotations = [

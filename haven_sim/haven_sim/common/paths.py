@@ -9,10 +9,10 @@ that meet at sharp corners. `read_path` reads them all the same way, from positi
   * the travel heading along the way, read from chords `SMOOTHING_M` long (so grid wiggle and
     jitter average out), turning faster than `MIN_ARC_CURVATURE` (radius under 2 m): an arc;
   * a turn packed into a corner (tighter than `CORNER_RADIUS_M`): an arc when HAVEN's motion style
-    would drive it as one (up to `rotate_above_rad`, 60 deg), else a rotation in place at the corner;
+    would drive it as one (up to its 60 deg), else a rotation in place at the corner;
   * the rest: straight;
-  * a last pose whose yaw differs from the arrival heading by more than `GOAL_YAW_TOLERANCE_RAD`:
-    a final rotation to it (the goal yaw is honoured).
+  * a last pose whose yaw differs from the arrival heading by more than the style's facing
+    tolerance: a final rotation to it (the goal yaw is honoured).
 
 A path whose yaws agree with its geometry everywhere (ours: every step runs along the mean of its two
 yaws) is read from the yaws as written. So the controller, the path projection's cubes and spheres
@@ -37,8 +37,6 @@ SAMPLE_M = 0.01  # the path is read at this spacing
 MIN_ARC_CURVATURE = 0.5  # 1/m: turning faster than this (radius under 2 m) is an arc
 CORNER_RADIUS_M = 0.1  # a turn tighter than this is a corner, not an arc
 CONVENTION_SHARE = 0.9  # of steps whose yaws agree with the geometry, for a path to be read from its yaws
-GOAL_YAW_TOLERANCE_RAD = math.radians(5.0)  # HAVEN's facing tolerance
-ARC_MAX_RAD = math.radians(60.0)  # HAVEN's motion style: sharper corners are rotations (motion_style.py)
 
 
 class SegmentKind(Enum):
@@ -62,8 +60,10 @@ class PathReading:
     headings: FloatArray  # per step (pose k to k+1): the travel heading (a step in place: the travel's before it, else after)
 
 
-def read_path(poses: Sequence[Pose2D], rotate_above_rad: float = ARC_MAX_RAD) -> PathReading:
-    """The segments, arcs and travel headings of any pose list (ours or another planner's)."""
+def read_path(poses: Sequence[Pose2D], rotate_above_rad: float, goal_tolerance_rad: float) -> PathReading:
+    """The segments, arcs and travel headings of any pose list (ours or another planner's), for
+    HAVEN's motion style (nav/motion_style.py): corners sharper than `rotate_above_rad` are
+    rotations; a goal yaw within `goal_tolerance_rad` of the arrival needs none."""
     n = len(poses)
     headings = np.full(max(0, n - 1), np.nan)
     if n < 2:
@@ -108,7 +108,7 @@ def read_path(poses: Sequence[Pose2D], rotate_above_rad: float = ARC_MAX_RAD) ->
     segments = _segments(poses, kinds, corners)
     final = _final_heading(segments, headings)
     _fill_in_place(headings)
-    if math.isfinite(goal) and math.isfinite(final) and abs(wrap_angle(goal - final)) > GOAL_YAW_TOLERANCE_RAD:
+    if math.isfinite(goal) and math.isfinite(final) and abs(wrap_angle(goal - final)) > goal_tolerance_rad:
         segments.append(Segment(SegmentKind.ROTATE, n - 1, n - 1, goal))
     return PathReading(segments, _merged(arcs), headings)
 

@@ -56,7 +56,7 @@ class _Rotate:
 
 def _actions(poses: Sequence[Pose2D], style: MotionStyle) -> list[_Rotate | Polyline]:
     actions: list[_Rotate | Polyline] = []
-    for seg in read_path(poses, style.arc_max_angle_rad).segments:
+    for seg in read_path(poses, style.arc_max_angle_rad, style.facing_tolerance_rad).segments:
         if seg.kind is SegmentKind.ROTATE:
             end = poses[seg.end]
             actions.append(_Rotate(end.x, end.y, seg.yaw))
