@@ -19,7 +19,7 @@ from rclpy.parameter_client import AsyncParameterClient
 from haven_viz.cues import CUES
 
 VIZ_NODE = "viz"
-PARAMETER_TIMEOUT_S = 3.0
+PARAMETER_TIMEOUT_S = 5.0
 
 
 def parameter_name(cue: str) -> str:
@@ -32,6 +32,14 @@ class CueParameters:
         self.node = node
         self.client = AsyncParameterClient(node, VIZ_NODE)
 
+    def _ready(self) -> bool:
+        """The viz node's parameter services found (a client that asks right after start-up, or
+        on a busy machine, is answered once they are, within the timeout)."""
+        if self.client.services_are_ready() or self.client.wait_for_services(timeout_sec=PARAMETER_TIMEOUT_S):
+            return True
+        self.node.get_logger().warning(f"no {VIZ_NODE} node answers parameter requests (within {PARAMETER_TIMEOUT_S:g} s)")
+        return False
+
     def _wait(self, future: Any) -> Any:
         done = threading.Event()
         future.add_done_callback(lambda _: done.set())
@@ -43,7 +51,7 @@ class CueParameters:
     def get(self, names: list[str]) -> list[FoxgloveParameter]:
         """The toggles named (all of them for no names)."""
         cues = [c for c in CUES if not names or parameter_name(c) in names]
-        result = self._wait(self.client.get_parameters(cues)) if cues else None
+        result = self._wait(self.client.get_parameters(cues)) if cues and self._ready() else None
         if result is None:
             return []
         return [FoxgloveParameter(parameter_name(c), value=bool(v.bool_value)) for c, v in zip(cues, result.values, strict=False)]
@@ -53,6 +61,6 @@ class CueParameters:
         by_name = {parameter_name(c): c for c in CUES}
         values = {p.name: p.get_value() for p in parameters}
         changes = [Parameter(by_name[n], value=bool(v)) for n, v in values.items() if n in by_name and isinstance(v, bool)]
-        if changes:
+        if changes and self._ready():
             self._wait(self.client.set_parameters(changes))
         return self.get([])
