@@ -2,6 +2,8 @@
 shipped config: reliable, transient local) gets /tf_static, /map and the world markers again,
 because the bag keeps the QoS each topic was offered with (as `ros2 bag play` reads it too)."""
 
+import os
+import signal
 import subprocess
 import sys
 
@@ -18,15 +20,20 @@ HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 
 def test_a_replayed_session_relatches_static_tf_the_map_and_the_world(ros, tmp_path):
     tf2 = pytest.importorskip("tf2_msgs.msg", reason="tf2_msgs not built on this machine (scripts/build_interfaces.py)")
-    r = ros.run([*HAVEN, "sim", "--record", "--duration", "6", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)], 120)
-    assert r.returncode == 0, r.stderr[-2000:]
+    clock = ros.collect(Clock, "/clock", qos.CLOCK)
+    live = subprocess.Popen(
+        [*HAVEN, "sim", "--record", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True
+    )
+    ros.procs.append(live)
+    ros.wait_for_messages(clock, 200, timeout_s=60)  # 4 s of sim time recorded, however slowly the suite started
+    os.killpg(live.pid, signal.SIGINT)  # Ctrl-C
+    assert live.wait(timeout=60) == 0
     (folder,) = tmp_path.iterdir()
     assert (folder / "bag" / "metadata.yaml").is_file() and (folder / "world.yaml").is_file()
-
-    clock = ros.collect(Clock, "/clock", qos.CLOCK)
+    del clock[:]
     player = subprocess.Popen([*HAVEN, "play", str(folder), "--hold", "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True)
     ros.procs.append(player)
-    ros.wait_for_messages(clock, 20, timeout_s=30)  # playing: the viewer below joins late
+    ros.wait_for_messages(clock, 10, timeout_s=60)  # playing, past the latched messages at the bag's start: the viewer below joins late
     rviz = qos.LATCHED  # the shipped RViz config's Map, World and TF (static) QoS
     late = {
         topic: ros.collect(t, topic, rviz)

@@ -20,7 +20,7 @@ from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPo
 from rclpy.subscription import Subscription
 
 from haven_sim.common.topics import WireParams
-from haven_sim.nodes import wire
+from haven_sim.nodes import qos, wire
 from haven_sim.nodes.lockstep import take_all
 from haven_sim.nodes.wire import type_name
 from haven_viz.nodes.conversions import viz_specs
@@ -34,7 +34,7 @@ def known_topics(params: WireParams = WireParams()) -> list[tuple[str, str, QoSP
     out = []
     for topic, spec in table.items():
         profile = spec.pub_qos
-        if spec.late_qos is not None:
+        if spec.sub_qos == qos.ANY_DURABILITY:  # /plan, /haven/estop: outsiders publish them volatile
             profile = QoSProfile(depth=profile.depth, history=profile.history, reliability=profile.reliability, durability=DurabilityPolicy.VOLATILE)
         latched = spec.pub_qos.durability == DurabilityPolicy.TRANSIENT_LOCAL
         out.append(("/" + topic.lstrip("/"), type_name(spec.msg_type), profile, latched))

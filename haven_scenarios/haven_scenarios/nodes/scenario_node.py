@@ -51,6 +51,9 @@ class ScenarioNode(ComponentNode):
             self._finished = True
         elif not self.director.start_allowed:
             self.director.start_allowed = self._everyone_listening()
+            if not self.director.start_allowed:
+                wanted = ", ".join(f"a node reading {w}" if w.startswith("/") else w for w in self.wait_for)
+                self.get_logger().info(f"the trial starts when these listen: {wanted}", throttle_duration_sec=10.0)
 
     def _deliver_events(self) -> None:
         """The events publisher must not go before every reader (the recorder) has trial_end."""

@@ -27,9 +27,9 @@ STREAM = QoSProfile(depth=1000, history=HistoryPolicy.KEEP_LAST, reliability=Rel
 LATEST = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # Readers of what other nodes may publish either way: /plan (Nav2's planner_server: volatile),
 # /haven/estop (`ros2 topic pub`: volatile, default QoS). A volatile reader matches volatile and
-# transient-local publishers alike; beside it, a transient-local LATCHED reader picks up what a
-# latched publisher sent before this node started (the two readers' copies are told apart by the
-# publisher's timestamp and sequence number; nodes/component_node.py).
+# transient-local publishers alike. For the e-stop, a transient-local LATCHED reader beside it picks
+# up, in the node's first seconds, a stop that a latched publisher sent before the node started
+# (nodes/component_node.py). /plan has none: like Nav2's, a plan reaches the readers there are.
 ANY_DURABILITY = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # /clock: the rosgraph default (reliable, depth 10) so every use_sim_time node matches.
 CLOCK = RELIABLE

@@ -39,6 +39,7 @@ from haven_scenarios.tools.commands.studies import CONDITION_HELP
 from haven_scenarios.tools.supervisor import Exited, ProcessSpec, Supervisor, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
 from haven_sim.common import topics
+from haven_sim.common.events import EventKind
 from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
 from haven_viz.cues import CUES, Toggles
 
@@ -203,6 +204,9 @@ def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
     """Until the recorder has the `trial_end` event and the state streams up to it (it writes
     END_MARK), or `timeout_s` (a stream that stopped: a node died), before everything stops."""
     mark = folder / END_MARK
+    events = folder / "events.jsonl"
+    if not (events.exists() and f'"{EventKind.TRIAL_START.value}"' in events.read_text(encoding="utf-8", errors="replace")):
+        return  # no trial started (stopped while held): no end to wait for
     deadline = time.monotonic() + timeout_s
     while time.monotonic() < deadline and not mark.exists():
         time.sleep(0.05)
