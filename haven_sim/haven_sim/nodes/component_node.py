@@ -119,7 +119,7 @@ class ComponentNode(Node):
         """A reader with the spec's QoS; with a `late_qos`, for the first CATCH_UP_S also a latched
         one, for what a latched publisher sent before this node started (an e-stop). It is made
         only while no publisher offers volatile, and dropped as soon as one appears, so that a
-        volatile publisher (Nav2's planner_server, `ros2 topic pub`) meets no reader it cannot
+        volatile publisher (`ros2 topic pub` on the e-stop) meets no reader it cannot
         serve (it may log "incompatible QoS" once if it starts within those seconds). A message
         both readers get is handled once: the publisher's timestamp and sequence number say it is
         the same."""
