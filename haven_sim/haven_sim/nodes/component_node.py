@@ -16,7 +16,6 @@ from typing import Any, TypeVar
 
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy.clock import Clock, ClockType
-from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
@@ -33,7 +32,8 @@ from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import LockstepParams
 
 C = TypeVar("C")
-CATCH_UP_S = 10.0  # wall time a latched reader waits for what was published before the node started
+CATCH_UP_S = 10.0  # wall time after start-up in which a latched reader picks up what latched publishers sent
+CATCH_UP_POLL_S = 0.2  # how often the graph is read for it
 
 
 class ComponentNode(Node):
@@ -116,13 +116,12 @@ class ComponentNode(Node):
                     self.get_logger().warning(f"{name}: {info.node_name} publishes {info.topic_type}, this node reads {ours}; ignored{hint}")
 
     def _subscribe(self, topic: str, spec: TopicSpec, on_message: Callable[[Any], None]) -> Subscription:
-        """A reader with the spec's QoS; with a `late_qos`, for the first CATCH_UP_S also a latched
-        one, for what a latched publisher sent before this node started (an e-stop). It is made
-        only while no publisher offers volatile, and dropped as soon as one appears, so that a
-        volatile publisher (`ros2 topic pub` on the e-stop) meets no reader it cannot
-        serve (it may log "incompatible QoS" once if it starts within those seconds). A message
-        both readers get is handled once: the publisher's timestamp and sequence number say it is
-        the same."""
+        """A reader with the spec's QoS; with a `late_qos`, in the node's first CATCH_UP_S also a
+        latched one, for what a latched publisher (our planner, `haven`'s e-stop) sent before the
+        readers matched. It exists only while a latched publisher is there and no volatile one, so
+        a volatile publisher (Nav2's planner_server, `ros2 topic pub`) never meets a reader it
+        cannot serve and nobody logs "incompatible QoS". A message both readers get is handled
+        once: the publisher's timestamp and sequence number say it is the same."""
         if spec.late_qos is None:
             return self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
         seen: deque[tuple[int, int]] = deque(maxlen=64)
@@ -133,25 +132,24 @@ class ComponentNode(Node):
                 seen.append(key)
                 on_message(msg)
 
-        name = self.resolve_topic_name(topic)
+        name, started = self.resolve_topic_name(topic), time.monotonic()
+        late: list[Subscription] = []  # the latched reader, while there is one
+        # (rclpy hands a two-argument callback the message info; its type hints do not say so)
+        reader = self.create_subscription(spec.msg_type, topic, once, spec.sub_qos)  # type: ignore[arg-type]
 
-        def volatile_publisher() -> bool:
-            return any(i.qos_profile.durability != DurabilityPolicy.TRANSIENT_LOCAL for i in self.get_publishers_info_by_topic(name))
+        def catch_up() -> None:
+            durabilities = {i.qos_profile.durability for i in self.get_publishers_info_by_topic(name)}
+            wanted = time.monotonic() - started < CATCH_UP_S and durabilities == {DurabilityPolicy.TRANSIENT_LOCAL}
+            if wanted and not late:
+                late.append(self.create_subscription(spec.msg_type, topic, once, spec.late_qos))  # type: ignore[arg-type]
+            elif not wanted and late:
+                self.destroy_subscription(late.pop())
+            if time.monotonic() - started >= CATCH_UP_S:
+                timer.cancel()
 
-        if not volatile_publisher():
-            # (rclpy hands a two-argument callback the message info; its type hints do not say so. The
-            # incompatible-QoS event of a volatile publisher is expected here: not logged.)
-            quiet = SubscriptionEventCallbacks(incompatible_qos=lambda _: None)
-            late = self.create_subscription(spec.msg_type, topic, once, spec.late_qos, event_callbacks=quiet)  # type: ignore[arg-type]
-            started = time.monotonic()
-
-            def drop_when_done() -> None:
-                if time.monotonic() - started >= CATCH_UP_S or volatile_publisher():
-                    timer.cancel()
-                    self.destroy_subscription(late)
-
-            timer = self.create_timer(0.5, drop_when_done, clock=Clock(clock_type=ClockType.STEADY_TIME))
-        return self.create_subscription(spec.msg_type, topic, once, spec.sub_qos)  # type: ignore[arg-type]
+        timer = self.create_timer(CATCH_UP_POLL_S, catch_up, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        catch_up()
+        return reader
 
     # -- translate -------------------------------------------------------------------------------
     def now(self) -> float:

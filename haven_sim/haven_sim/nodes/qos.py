@@ -27,9 +27,9 @@ STREAM = QoSProfile(depth=1000, history=HistoryPolicy.KEEP_LAST, reliability=Rel
 LATEST = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # Readers of what other nodes may publish either way: /plan (Nav2's planner_server: volatile),
 # /haven/estop (`ros2 topic pub`: volatile, default QoS). A volatile reader matches volatile and
-# transient-local publishers alike. For the e-stop, a transient-local LATCHED reader beside it picks
-# up, in the node's first seconds, a stop that a latched publisher sent before the node started
-# (nodes/component_node.py). /plan has none: like Nav2's, a plan reaches the readers there are.
+# transient-local publishers alike. In a node's first seconds, while only latched publishers are
+# there (our planner, `haven`'s e-stop), a LATCHED reader beside it picks up what they sent before
+# the readers matched (nodes/component_node.py).
 ANY_DURABILITY = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 # /clock: the rosgraph default (reliable, depth 10) so every use_sim_time node matches.
 CLOCK = RELIABLE
