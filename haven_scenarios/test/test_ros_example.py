@@ -1,5 +1,5 @@
 """The README's "Using your own planner" section, as a user would do it: `haven sim --without
-planner` and the example planner (examples/nav2_style_planner.py: Nav2's /plan QoS, NavFn-shaped
+planner` and the example planner (examples/nodes/nav2_style_planner.py: Nav2's /plan QoS, NavFn-shaped
 paths) in its own process; a goal from RViz's QoS. The robot reaches the goal pose, the path
 projection shows cubes on the arc, and the plan's QoS is Nav2's. And a recorded study session with
 that planner in place of ours, in a world of the user's."""
@@ -24,7 +24,7 @@ from haven_sim.nodes import qos
 
 pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
-EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "nav2_style_planner.py"
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "nodes" / "nav2_style_planner.py"
 GOAL = (2.2, 4.2, 2.6)  # from the robot's start (1.0, 2.5, facing east): a left turn, a straight, a turn to the goal yaw
 
 

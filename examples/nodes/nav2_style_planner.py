@@ -2,19 +2,20 @@
 /plan the way Nav2's planner_server does (nav_msgs/Path, reliable, volatile, depth 1), shaped like
 NavFn's paths: poses every 5 cm, identity orientations, the goal's yaw on the last pose.
 
-Its path is a turn of radius `turn_radius_m` from the robot's heading until it faces the goal, then
-a straight line (it does not avoid obstacles: it shows the interface, not a planning method). HAVEN
+Its path (examples/nav2_style_path.py, no ROS there) is a turn of radius `turn_radius_m` from the
+robot's heading until it faces the goal, then a straight line; this node only translates. HAVEN
 reads the path from its geometry: cubes on the arc, spheres on the straight, a rotation to the goal
 yaw at the end.
 
     haven sim --without planner &
-    python examples/nav2_style_planner.py
+    python examples/nodes/nav2_style_planner.py
     haven goto 2.2 4.2 2.6              # or RViz's "2D Goal Pose"
 """
 
 from __future__ import annotations
 
 import math
+import pathlib
 import sys
 
 import rclpy
@@ -23,27 +24,12 @@ from nav_msgs.msg import Odometry, Path
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
 
-STEP_M = 0.05  # NavFn's pose spacing on a 5 cm map
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))  # examples/: the path, without ROS
+from nav2_style_path import turn_then_straight  # noqa: E402
 
 
 def yaw_of(q) -> float:  # noqa: ANN001 - a geometry_msgs/Quaternion
     return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
-
-
-def turn_then_straight(x: float, y: float, yaw: float, gx: float, gy: float, radius: float) -> list[tuple[float, float]]:
-    """Points every STEP_M: an arc toward the goal until facing it, then straight to it."""
-    points = [(x, y)]
-    for _ in range(int(2 * math.pi * radius / STEP_M) + 1):  # at most a full circle
-        bearing = math.atan2(gy - y, gx - x)
-        error = math.atan2(math.sin(bearing - yaw), math.cos(bearing - yaw))
-        if abs(error) < STEP_M / radius or math.hypot(gx - x, gy - y) < radius:
-            break
-        yaw += math.copysign(STEP_M / radius, error)
-        x, y = x + STEP_M * math.cos(yaw), y + STEP_M * math.sin(yaw)
-        points.append((x, y))
-    n = max(1, math.ceil(math.hypot(gx - x, gy - y) / STEP_M))
-    points += [(x + (gx - x) * k / n, y + (gy - y) * k / n) for k in range(1, n + 1)]
-    return points
 
 
 class Nav2StylePlanner(Node):
