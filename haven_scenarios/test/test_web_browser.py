@@ -46,6 +46,7 @@ def browser():
         b.close()
 
 
+PAGE_LOAD_MS = 120_000  # a limit, not a wait: on a loaded 2-core machine a page took over 30 s to load
 WEB_SOURCES = os.path.join(os.path.dirname(__file__), "..", "web")
 
 
@@ -142,14 +143,14 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     assert status_of(participant_url.replace("/participant/", "/ws/participant/").split("?")[0]) == 403
 
     page = browser.new_page(viewport={"width": 800, "height": 450})
-    page.goto(participant_url)
+    page.goto(participant_url, timeout=PAGE_LOAD_MS)
     page.wait_for_function(
         "s => (s = window.havenState) && s.world > 0 && s.pose && s.robot && s.trial && s.trial.state === 'held' && s.frames > 2",
         timeout=PAGE_TIMEOUT_MS,
     )
     assert page.evaluate("havenState.prompt") == "Welcome"
     console = browser.new_page(viewport={"width": 1100, "height": 600})
-    console.goto(console_url)
+    console.goto(console_url, timeout=PAGE_LOAD_MS)
     console.wait_for_function("s => (s = window.havenState) && s.toggles && s.trial", timeout=PAGE_TIMEOUT_MS)
 
     page.click("#start")  # read the instructions, ready: the trial starts
@@ -189,7 +190,7 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
 
     # A console opened mid-trial has the whole study log, each event once.
     late = browser.new_page(viewport={"width": 1100, "height": 600})
-    late.goto(console_url)
+    late.goto(console_url, timeout=PAGE_LOAD_MS)
     late.wait_for_function("havenState.events.some(e => e.type === 'participant_ready')", timeout=PAGE_TIMEOUT_MS)
     keys = late.evaluate("havenState.events.map(e => e.source + '/' + e.seq)")
     assert len(keys) == len(set(keys)) and "scenario/1" in keys
@@ -238,7 +239,7 @@ def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_
     pages = {}
     for who, url in (("h1", local), ("h2", remote)):
         pages[who] = browser.new_page(viewport={"width": 480, "height": 270})
-        pages[who].goto(url)
+        pages[who].goto(url, timeout=PAGE_LOAD_MS)
     for who, page in pages.items():
         page.wait_for_function(
             "s => (s = window.havenState) && s.pose && s.others === 1 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
@@ -274,7 +275,7 @@ def test_a_gamepad_walks_and_enter_vr_works_with_an_emulated_headset(ros, browse
     context.add_init_script(path=str(emulator))
     context.add_init_script(GAMEPAD)
     page = context.new_page()
-    page.goto(trial.urls()["participant h1"])
+    page.goto(trial.urls()["participant h1"], timeout=PAGE_LOAD_MS)
     page.wait_for_function(
         "s => (s = window.havenState) && s.world > 0 && s.pose && s.xrOffered && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
     )

@@ -14,13 +14,12 @@ from __future__ import annotations
 import sys
 import time
 
-from foxglove import Parameter as FoxgloveParameter
 from rclpy.node import Node
-from rclpy.publisher import Publisher
 from rosgraph_msgs.msg import Clock
 
 from haven_scenarios.nodes.cue_parameters import CueParameters
 from haven_scenarios.nodes.raw_topics import RawTopics
+from haven_scenarios.nodes.role_sink import RoleSink, TablePublishers
 from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_scenarios.web.access import Role, absolute
 from haven_sim.common import topics
@@ -33,35 +32,6 @@ ALLOWED = (topics.GOAL, topics.CMD_VEL_TELEOP, topics.ESTOP)  # what Foxglove cl
 TIME_PERIOD_S = 0.05  # the server's time is broadcast at most this often (wall time)
 
 
-class BridgeSink:
-    """Foxglove clients' messages on the allow-list, published with the topic table's QoS; the cue
-    toggles as parameters."""
-
-    def __init__(self, node: Bridge, table: dict[str, wire.TopicSpec]) -> None:
-        self.node, self.table = node, table
-        self.role = Role("foxglove", {absolute(t): wire.type_name(table[t].msg_type) for t in ALLOWED}, parameters=True)
-        self.pubs: dict[str, Publisher] = {}
-        self.cues = CueParameters(node)
-
-    def advertised(self, topic: str, schema_name: str) -> str | None:
-        refused = self.role.may_publish(topic, schema_name)
-        if refused:
-            self.node.get_logger().warning(f"a Foxglove client: {refused}")
-        return refused
-
-    def message(self, topic: str, schema_name: str, data: bytes) -> None:
-        if topic not in self.pubs:
-            spec = self.table[topic.lstrip("/")]
-            self.pubs[topic] = self.node.create_publisher(spec.msg_type, topic, spec.pub_qos)
-        self.pubs[topic].publish(data)  # the client's CDR bytes as they came
-
-    def get_parameters(self, names: list[str]) -> list[FoxgloveParameter]:
-        return self.cues.get(names)
-
-    def set_parameters(self, parameters: list[FoxgloveParameter]) -> list[FoxgloveParameter]:
-        return self.cues.set(parameters)
-
-
 class Bridge(Node):
     def __init__(self) -> None:
         super().__init__("haven_bridge")
@@ -69,13 +39,20 @@ class Bridge(Node):
         port = self.declare_parameter("port", 8765).value
         only = list(self.declare_parameter("topics", [""]).value)
         params = build(WireParams, {n: self.declare_parameter(n, d).value for n, d in defaults(WireParams).items()}, where="bridge: parameter ")
-        table = wire.with_wire_params(wire.specs(), params)
+        self.table = wire.with_wire_params(wire.specs(), params)
+        self.publisher = TablePublishers(self, self.table)
+        role = Role("foxglove", {absolute(t): wire.type_name(self.table[t].msg_type) for t in ALLOWED}, parameters=True)
         self.relay = FoxgloveRelay()
-        self.relay.serve(host, port, "haven bridge", BridgeSink(self, table), parameters=True, time=True)
+        sink = RoleSink(self, role, self.forward, CueParameters(self), "a Foxglove client")
+        self.relay.serve(host, port, "haven bridge", sink, parameters=True, time=True)
         self.topics = RawTopics(self, self.relay.add_topic, self._on_message, [t for t in only if t] or None, params=params)
         self._time_sent = 0.0
         self.create_subscription(Clock, topics.CLOCK, self._on_clock, qos.CLOCK)
         print(f"bridge: Foxglove WebSocket on ws://{host}:{self.relay.port}", flush=True)
+
+    def forward(self, topic: str, data: bytes) -> None:
+        """A client's message on the allow-list: its CDR bytes as they came, with the topic table's QoS."""
+        self.publisher(topic).publish(data)
 
     def _on_message(self, topic: str, msgtype: str, data: bytes) -> None:
         self.relay.publish(topic, data, time.time_ns())

@@ -15,19 +15,19 @@ The session's secret (each page role's token derives from it) comes from the env
 
 from __future__ import annotations
 
+import functools
 import os
 import sys
 import threading
 import time
 
-from foxglove import Parameter as FoxgloveParameter
 from rclpy.node import Node
-from rclpy.publisher import Publisher
 from rclpy.serialization import deserialize_message
 from std_msgs.msg import String
 
 from haven_scenarios.nodes.cue_parameters import CueParameters
 from haven_scenarios.nodes.raw_topics import RawTopics
+from haven_scenarios.nodes.role_sink import RoleSink, TablePublishers
 from haven_scenarios.study.rules import TrialCommand
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
@@ -58,28 +58,6 @@ RELAYED = tuple(
 )
 
 
-class RoleSink:
-    """A page role's way in: what its clients may publish, and (the console) the cue toggles."""
-
-    def __init__(self, node: WebNode, role: Role) -> None:
-        self.node, self.role = node, role
-
-    def advertised(self, topic: str, schema_name: str) -> str | None:
-        refused = self.role.may_publish(topic, schema_name)
-        if refused:
-            self.node.get_logger().warning(f"page {self.role.name}: {refused}")
-        return refused
-
-    def message(self, topic: str, schema_name: str, data: bytes) -> None:
-        self.node.forward(self.role, topic, data)
-
-    def get_parameters(self, names: list[str]) -> list[FoxgloveParameter]:
-        return self.node.cues.get(names) if self.role.parameters else []
-
-    def set_parameters(self, parameters: list[FoxgloveParameter]) -> list[FoxgloveParameter]:
-        return self.node.cues.set(parameters) if self.role.parameters else []
-
-
 class WebNode(Node):
     def __init__(self) -> None:
         super().__init__("web")
@@ -96,7 +74,7 @@ class WebNode(Node):
         self.roles = roles(humans)
         self.secret = os.environ.get(TOKEN_ENV) or new_token()
         self.table = wire.specs(human_ids=[h.id for h in scenario.world.humans])
-        self.pubs: dict[str, Publisher] = {}
+        self._publisher = TablePublishers(self, self.table)
         self.sequencer, self.wizard, self._lock = Sequencer(), Wizard(), threading.Lock()
         self.gate = StartGate(humans, researcher_start)
         self.events = self._publisher(absolute(topics.EVENTS))
@@ -105,7 +83,8 @@ class WebNode(Node):
         self.relay.keep(absolute(topics.EVENTS), EVENTS_KEPT)  # a console opened mid-trial shows the whole log
         ports = {}
         for name, role in self.roles.items():
-            server = self.relay.serve("127.0.0.1", 0, f"haven {name}", RoleSink(self, role), parameters=role.parameters)
+            sink = RoleSink(self, role, functools.partial(self.forward, role), self.cues, f"page {name}")
+            server = self.relay.serve("127.0.0.1", 0, f"haven {name}", sink, parameters=role.parameters)
             ports[name] = int(server.port)
         self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
@@ -117,12 +96,6 @@ class WebNode(Node):
 
     def _relay(self, topic: str, msgtype: str, data: bytes) -> None:
         self.relay.publish(topic, data, time.time_ns())
-
-    def _publisher(self, topic: str) -> Publisher:
-        if topic not in self.pubs:
-            spec = self.table[topic.lstrip("/")]
-            self.pubs[topic] = self.create_publisher(spec.msg_type, topic, spec.pub_qos)
-        return self.pubs[topic]
 
     def now(self) -> float:
         return self.get_clock().now().nanoseconds * 1e-9

@@ -189,18 +189,6 @@ def event_from_msg(msg: String) -> Event:
     return Event.from_json(msg.data)
 
 
-def goal_msg(stamp: float, goal: Goal) -> PoseStamped:
-    msg = PoseStamped()
-    msg.header.stamp = time_msg(stamp)
-    msg.header.frame_id = goal.frame
-    msg.pose = pose_msg(goal.pose)
-    return msg
-
-
-def goal_from_msg(msg: PoseStamped) -> Goal:
-    return Goal(pose_from_msg(msg.pose), msg.header.frame_id)
-
-
 def pose_stamped_msg(stamp: float, pose: Pose2D, frame_id: str = "map") -> PoseStamped:
     msg = PoseStamped()
     msg.header.stamp = time_msg(stamp)
@@ -211,6 +199,14 @@ def pose_stamped_msg(stamp: float, pose: Pose2D, frame_id: str = "map") -> PoseS
 
 def pose_from_stamped(msg: PoseStamped) -> Pose2D:
     return pose_from_msg(msg.pose)
+
+
+def goal_msg(stamp: float, goal: Goal) -> PoseStamped:
+    return pose_stamped_msg(stamp, goal.pose, goal.frame)
+
+
+def goal_from_msg(msg: PoseStamped) -> Goal:
+    return Goal(pose_from_stamped(msg), msg.header.frame_id)
 
 
 def path_msg(stamp: float, poses: Sequence[Pose2D], frame_id: str = "map") -> Path:

@@ -1,0 +1,51 @@
+"""A Foxglove server's way in for one role (a participant page, the console, `haven bridge`'s
+clients): what its clients may publish (the role's allow-list; anything else is refused, with a
+warning here and a status message to the client), where accepted messages go, and the cue toggles
+when the role may set them; and the publishers such messages go out on."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from foxglove import Parameter as FoxgloveParameter
+from rclpy.node import Node
+from rclpy.publisher import Publisher
+
+from haven_scenarios.nodes.cue_parameters import CueParameters
+from haven_scenarios.web.access import Role
+from haven_sim.nodes.wire import TopicSpec
+
+
+class RoleSink:
+    def __init__(self, node: Node, role: Role, forward: Callable[[str, bytes], None], cues: CueParameters, who: str) -> None:
+        """`forward(topic, cdr)`: an accepted message; `who`: how warnings name the client."""
+        self.node, self.role, self.forward, self.cues, self.who = node, role, forward, cues, who
+
+    def advertised(self, topic: str, schema_name: str) -> str | None:
+        refused = self.role.may_publish(topic, schema_name)
+        if refused:
+            self.node.get_logger().warning(f"{self.who}: {refused}")
+        return refused
+
+    def message(self, topic: str, schema_name: str, data: bytes) -> None:
+        self.forward(topic, data)
+
+    def get_parameters(self, names: list[str]) -> list[FoxgloveParameter]:
+        return self.cues.get(names) if self.role.parameters else []
+
+    def set_parameters(self, parameters: list[FoxgloveParameter]) -> list[FoxgloveParameter]:
+        return self.cues.set(parameters) if self.role.parameters else []
+
+
+class TablePublishers:
+    """Publishers made as clients first send on a topic, with the topic table's type and QoS."""
+
+    def __init__(self, node: Node, table: dict[str, TopicSpec]) -> None:
+        self.node, self.table = node, table
+        self.pubs: dict[str, Publisher] = {}
+
+    def __call__(self, topic: str) -> Publisher:
+        if topic not in self.pubs:
+            spec = self.table[topic.lstrip("/")]
+            self.pubs[topic] = self.node.create_publisher(spec.msg_type, topic, spec.pub_qos)
+        return self.pubs[topic]
