@@ -21,18 +21,27 @@ def free_port():
         return s.getsockname()[1]
 
 
+def connect(port):
+    return websockets.connect(f"ws://127.0.0.1:{port}", subprotocols=["foxglove.sdk.v1", "foxglove.websocket.v1"])
+
+
+async def frames(ws, timeout_s, done):
+    """The server's frames until `done()` holds or `timeout_s` passes."""
+    loop = asyncio.get_running_loop()
+    deadline = loop.time() + timeout_s
+    while loop.time() < deadline and not done():
+        try:
+            yield await asyncio.wait_for(ws.recv(), timeout=1.0)
+        except asyncio.TimeoutError:
+            continue
+
+
 async def fetch(port, topics, timeout_s=30.0, ready=lambda topic, msg: True):
     """Connect, wait for the channels, subscribe to `topics`, return (channels, {topic: the first
     decoded message for which `ready(topic, message)` holds})."""
-    async with websockets.connect(f"ws://127.0.0.1:{port}", subprotocols=["foxglove.sdk.v1", "foxglove.websocket.v1"]) as ws:
+    async with connect(port) as ws:
         channels, got, subs = {}, {}, {}
-        loop = asyncio.get_running_loop()
-        deadline = loop.time() + timeout_s
-        while loop.time() < deadline and len(got) < len(topics):
-            try:
-                frame = await asyncio.wait_for(ws.recv(), timeout=1.0)
-            except asyncio.TimeoutError:
-                continue
+        async for frame in frames(ws, timeout_s, lambda: len(got) >= len(topics)):
             if isinstance(frame, str):
                 msg = json.loads(frame)
                 if msg.get("op") == "advertise":
@@ -86,17 +95,15 @@ def test_bridge_is_local_by_default():
 async def foxglove_client(port, goal_cdr, timeout_s=30.0):
     """As Foxglove's app does: read the server's capabilities and time, flip a cue toggle from the
     Parameters panel, publish a goal (allowed) and try a topic that is not."""
-    async with websockets.connect(f"ws://127.0.0.1:{port}", subprotocols=["foxglove.sdk.v1", "foxglove.websocket.v1"]) as ws:
-        loop = asyncio.get_running_loop()
-        deadline = loop.time() + timeout_s
+    async with connect(port) as ws:
         seen = {"values": [], "status": [], "time": []}
         info = None
         sent = False
-        while loop.time() < deadline and not (info and len(seen["values"]) >= 2 and seen["status"] and seen["time"]):
-            try:
-                frame = await asyncio.wait_for(ws.recv(), timeout=1.0)
-            except asyncio.TimeoutError:
-                continue
+
+        def done():
+            return info and len(seen["values"]) >= 2 and seen["status"] and seen["time"]
+
+        async for frame in frames(ws, timeout_s, done):
             if isinstance(frame, bytes):
                 if frame[0] == 2:  # time
                     seen["time"].append(struct.unpack_from("<Q", frame, 1)[0])
