@@ -107,6 +107,8 @@ class Recorder(Node):
         self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
         self.clock_pairs: list[tuple[int, int]] = []  # (sim ns, wall ns)
         self.create_timer(CLOCK_PAIR_PERIOD_S, self._pair_clocks, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        # (what is published before this line is recorded only if latched: say when recording starts)
+        self.get_logger().info(f"recording every topic into {folder / 'bag'}")
 
     def _pair_clocks(self) -> None:
         sim = self.get_clock().now().nanoseconds

@@ -20,6 +20,7 @@ import json
 import os
 import platform
 import subprocess
+import sys
 import time
 from datetime import datetime, timezone
 from importlib import metadata
@@ -178,6 +179,12 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
     return render_scene(world, markers, out, title=f"{title}\n{subtitle}", trails=trails, points=marks, removed=sorted(removed), events=happened)
 
 
+def provenance() -> dict[str, Any]:
+    """What a session folder's session.json says about how it was made: when, with which
+    versions, commit, RMW and command line."""
+    return {"started": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "versions": versions(), "git_commit": git_commit(), "rmw": rmw(), "command": sys.argv}
+
+
 def trial_wall_clock(folder: Path) -> dict[str, str]:
     """When the trial started and ended by the wall clock (ISO 8601, UTC, ms), from the recorder's
     clock pairs and the trial's events: to align the session with other recordings of the study."""
@@ -187,12 +194,12 @@ def trial_wall_clock(folder: Path) -> dict[str, str]:
         lines = (folder / "events.jsonl").read_text(encoding="utf-8").splitlines()
     except OSError:
         return out
+    kinds = (EventKind.TRIAL_START.value, EventKind.TRIAL_END.value)
     for line in lines:
         try:
             e = json.loads(line)
         except ValueError:
             continue
-        kinds = (EventKind.TRIAL_START.value, EventKind.TRIAL_END.value)
         if isinstance(e, dict) and e.get("type") in kinds and isinstance(e.get("stamp"), (int, float)):
             t = to_wall_time(pairs, float(e["stamp"]))
             if t is not None:

@@ -4,10 +4,9 @@ from __future__ import annotations
 
 import argparse
 import sys
-import time
 from pathlib import Path
 
-from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, git_commit, new_session_dir, rmw, versions, write_json
+from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, new_session_dir, provenance, write_json
 from haven_scenarios.tools.commands.common import (
     add_ros_options,
     add_suite_options,
@@ -54,11 +53,7 @@ def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
         "world_file": WORLD_FILE,
         "real_time_factor": args.rtf,
         "without": list(args.without),
-        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
-        "versions": versions(),
-        "git_commit": git_commit(),
-        "rmw": rmw(),
-        "command": sys.argv,
+        **provenance(),
     }
     write_json(folder / SESSION_FILE, info)
     return folder
