@@ -79,3 +79,29 @@ def test_loop_handles_messages_when_the_component_acts_and_commands_reach_the_si
     assert [m.stamp for m in observed] == echo.seen  # each command reached the simulator in its step
     assert sim.sim.robot_twist().vx > 0.0  # and drives the robot
     assert topics.SCAN in sim.unread and topics.CMD_VEL not in echo.unread
+
+
+def test_lockstep_messages_round_trip_and_refuse_anything_else():
+    import pytest
+
+    from haven_sim.runtime.lockstep import Ack, Hello, Tick
+
+    for m in (
+        Tick(3, 60_000_000, 20_000_000, {"/odom": 4}),
+        Hello("planner", None, ["/odom"], ["/plan"], True),
+        Ack("controller", 3, {"/cmd_vel_nav": 1}),
+    ):
+        assert type(m).from_json(m.to_json()) == m
+    hostile = [
+        "",
+        "{",
+        "[1]",
+        "[" * 100_000,
+        '{"node": ["x"], "ready": true, "inputs": [], "outputs": []}',
+        '{"step": 1e308}',
+        '{"node": "c", "step": 1, "sent": {"/t": "9"}}',
+    ]
+    for text in hostile:
+        for cls in (Tick, Hello, Ack):
+            with pytest.raises(ValueError):
+                cls.from_json(text)

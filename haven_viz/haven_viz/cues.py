@@ -126,12 +126,14 @@ class CueState:
     def from_json(text: str) -> tuple[float, CueState]:
         """(stamp, state) of a /haven/cue_state message; ValueError on anything else."""
         try:
+            if len(text) > 65536:
+                raise ValueError(f"{len(text)} characters")
             d = json.loads(text)
             toggles = Toggles(**{k: bool(v) for k, v in d["toggles"].items() if k in CUES})
             level = d["battery_level"]
             state = CueState(toggles, int(d["path_markers"]), int(d["turn_signal"]), str(d["thought"]), None if level is None else float(level))
             return float(d["stamp"]), state
-        except (ValueError, KeyError, TypeError, AttributeError) as e:
+        except (ValueError, KeyError, TypeError, AttributeError, RecursionError) as e:
             raise ValueError(f"not a cue state: {str(e)[:80]}") from None
 
 

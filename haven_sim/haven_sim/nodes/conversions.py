@@ -1,4 +1,9 @@
-"""Core types <-> ROS messages. The only place in haven_sim that builds or reads messages."""
+"""Core types <-> ROS messages. The only place in haven_sim that builds or reads messages.
+
+Every reader treats its message as untrusted (it may come from any node on the graph): a value
+the core cannot use (a NaN or 1e308 coordinate, a map whose size disagrees with its data) raises
+ValueError naming the field, which the nodes turn into a throttled warning.
+"""
 
 from __future__ import annotations
 
@@ -28,6 +33,16 @@ def time_msg(t: float) -> Time:
     return Time(sec=sec, nanosec=nanosec)
 
 
+MAX_COORDINATE_M = 1e6  # beyond this a position is nonsense (and grid arithmetic would overflow)
+MAX_MAP_CELLS = 100_000_000  # 5 km x 5 km at 0.5 m, or 500 m x 500 m at 5 cm
+
+
+def _finite(value: float, name: str, bound: float = math.inf) -> float:
+    if not math.isfinite(value) or abs(value) > bound:
+        raise ValueError(f"{name} must be finite{'' if bound == math.inf else f' and within +-{bound:g}'}, got {value!r}")
+    return float(value)
+
+
 def time_from_msg(msg: Time) -> float:
     return msg.sec + msg.nanosec * 1e-9
 
@@ -52,13 +67,18 @@ def pose_msg(p: Pose2D) -> Pose:
 
 
 def pose_from_msg(msg: Pose) -> Pose2D:
+    x = _finite(msg.position.x, "position.x", MAX_COORDINATE_M)
+    y = _finite(msg.position.y, "position.y", MAX_COORDINATE_M)
     q = msg.orientation
+    for name in ("x", "y", "z", "w"):
+        _finite(getattr(q, name), f"orientation.{name}")
     if abs(q.x) + abs(q.y) + abs(q.z) + abs(q.w) < 1e-9:
-        return Pose2D(msg.position.x, msg.position.y, math.nan)
-    return Pose2D(msg.position.x, msg.position.y, quaternion_to_yaw(q.x, q.y, q.z, q.w))
+        return Pose2D(x, y, math.nan)
+    return Pose2D(x, y, quaternion_to_yaw(q.x, q.y, q.z, q.w))
 
 
 def twist_from_msg(msg: Twist) -> Twist2D:
+    """Non-finite values pass: the mux and the simulator refuse them (and say so) themselves."""
     return Twist2D(msg.linear.x, msg.linear.y, msg.angular.z)
 
 
@@ -141,6 +161,8 @@ def battery_msg(stamp: float, r: BatteryReading, frame_id: str = "base_link") ->
 
 
 def battery_from_msg(msg: BatteryState) -> BatteryReading:
+    if not 0.0 <= msg.percentage <= 1.0:  # (NaN, "not measured", is no use to the mission either)
+        raise ValueError(f"percentage must be within 0..1, got {msg.percentage!r}")
     status = {v: k for k, v in _STATUS.items()}.get(msg.power_supply_status, PowerStatus.DISCHARGING)
     return BatteryReading(float(msg.percentage), status, float(msg.voltage), float(msg.charge), float(msg.capacity), math.nan)
 
@@ -170,13 +192,20 @@ def occupancy_msg(stamp: float, grid: OccupancyGridData, frame_id: str = "map") 
 
 
 def occupancy_from_msg(msg: OccupancyGrid) -> OccupancyGridData:
+    info = msg.info
+    if not (math.isfinite(info.resolution) and 1e-3 <= info.resolution <= 100.0):
+        raise ValueError(f"resolution must be within 0.001..100 m, got {info.resolution!r}")
+    if not 0 < info.width * info.height <= MAX_MAP_CELLS:
+        raise ValueError(f"a map of {info.width} x {info.height} cells (at most {MAX_MAP_CELLS} and at least one)")
+    if len(msg.data) != info.width * info.height:
+        raise ValueError(f"{len(msg.data)} cells of data for a map of {info.width} x {info.height}")
     return OccupancyGridData(
-        resolution_m=msg.info.resolution,
-        width=msg.info.width,
-        height=msg.info.height,
-        origin_x=msg.info.origin.position.x,
-        origin_y=msg.info.origin.position.y,
-        data=np.asarray(msg.data, dtype=np.int8).reshape(msg.info.height, msg.info.width),
+        resolution_m=info.resolution,
+        width=info.width,
+        height=info.height,
+        origin_x=_finite(info.origin.position.x, "origin.position.x", MAX_COORDINATE_M),
+        origin_y=_finite(info.origin.position.y, "origin.position.y", MAX_COORDINATE_M),
+        data=np.asarray(msg.data, dtype=np.int8).reshape(info.height, info.width),
     )
 
 

@@ -24,10 +24,9 @@ most `WAIT_S` for an announced message, then go on with a warning.
 
 from __future__ import annotations
 
-import json
 import time
 from collections.abc import Callable, Mapping
-from typing import Any
+from typing import Any, TypeVar
 
 from rclpy.callback_groups import CallbackGroup
 from rclpy.clock import Clock, ClockType
@@ -40,11 +39,12 @@ from std_msgs.msg import String
 
 from haven_sim.common import topics
 from haven_sim.common.events import Event, Sequencer, Source
-from haven_sim.nodes.runner import stop_requested
+from haven_sim.nodes.runner import THROTTLE_S, handle, stop_requested
 from haven_sim.nodes.wire import TopicSpec
 from haven_sim.runtime.component import NS_PER_S, Component, Message, due
-from haven_sim.runtime.lockstep import ParticipantInfo, Schedule, inbox_order
+from haven_sim.runtime.lockstep import Ack, Hello, ParticipantInfo, Schedule, Tick, inbox_order
 
+T = TypeVar("T")
 TICKS, ACK, HELLO = "haven/lockstep/tick", "haven/lockstep/ack", "haven/lockstep/hello"
 
 
@@ -141,8 +141,17 @@ class Inbox:
             try:
                 out.append(Message(topic, spec.decode(deserialize_message(raw, spec.msg_type)), 0.0))
             except ValueError as e:
-                self.node.get_logger().warning(f"ignored a message on {self.node.resolve_topic_name(topic)}: {e}", throttle_duration_sec=5.0)
+                self.node.get_logger().warning(f"ignored a message on {self.node.resolve_topic_name(topic)}: {e}", throttle_duration_sec=THROTTLE_S)
         return out
+
+
+def _parse(node: Node, parse: Callable[[str], T], msg: String) -> T | None:
+    """A protocol message, or None (with a throttled warning) for anything else on its topic."""
+    try:
+        return parse(msg.data)
+    except ValueError as e:
+        node.get_logger().warning(f"ignored a lockstep message: {e}", throttle_duration_sec=THROTTLE_S)
+        return None
 
 
 def _never(msg: Any) -> None:  # pragma: no cover - deferred subscriptions have no callback
@@ -187,14 +196,8 @@ class LockstepParticipant:
             self.node.get_logger().info(f"lockstep: waiting for {', '.join(waiting)} to match")
         if ready != self._ready:
             self._ready = ready
-            hello = {
-                "node": self.component.name,
-                "period_ns": self.info.period_ns,
-                "inputs": sorted(self.info.inputs),
-                "outputs": sorted(self.outputs),
-                "ready": ready,
-            }
-            self.hello_pub.publish(String(data=json.dumps(hello)))
+            hello = Hello(self.component.name, self.info.period_ns, sorted(self.info.inputs), sorted(self.outputs), ready)
+            self.hello_pub.publish(String(data=hello.to_json()))
 
     def _due_messages(self, counts: Mapping[str, int], now: float) -> list[Message]:
         """This step's share of the queue: on one-writer topics the first announced messages (all,
@@ -214,22 +217,24 @@ class LockstepParticipant:
         return out
 
     def _on_tick(self, msg: String) -> None:
+        tick = _parse(self.node, Tick.from_json, msg)
+        if tick is None:
+            return
         self._ticked = True
-        tick = json.loads(msg.data)
-        counts: dict[str, int] = tick["counts"]
+        counts = tick.counts
         self.inbox.fill(counts)
-        step, now = int(tick["step"]), int(tick["t_ns"]) / NS_PER_S
+        step, now = tick.step, tick.t_ns / NS_PER_S
         out: list[Message] = []
         for m in inbox_order(self.rank, self._due_messages(counts, now)):
-            out += self.handlers[m.topic](m.data, now)
-        if self.info.period_ns is not None and due(step, int(tick["step_ns"]), self.info.period_ns):
+            out += handle(self.node, m.topic, self.handlers[m.topic], m.data, now)
+        if self.info.period_ns is not None and due(step, tick.step_ns, self.info.period_ns):
             out += self.component.tick(now)
         self.publish(out)
         sent: dict[str, int] = {}
         for m in out:
             if m.topic in self.outputs:
                 sent[m.topic] = sent.get(m.topic, 0) + 1
-        self.ack_pub.publish(String(data=json.dumps({"node": self.component.name, "step": step, "sent": sent})))
+        self.ack_pub.publish(String(data=Ack(self.component.name, step, sent).to_json()))
 
 
 def _before(e: Event, now: float) -> bool:
@@ -270,11 +275,11 @@ class LockstepCoordinator:
         node.create_timer(5.0, self._watchdog, clock=STEADY)
 
     def _on_hello(self, msg: String) -> None:
-        d = json.loads(msg.data)
-        if d["node"] in self.expected:
-            self.schedule.add(ParticipantInfo(d["node"], d["period_ns"], frozenset(d["inputs"])))
-            self.ready[d["node"]] = bool(d["ready"])
-            for topic in d["outputs"]:  # a suite topic: counted from zero (others are outsiders')
+        hello = _parse(self.node, Hello.from_json, msg)
+        if hello is not None and hello.node in self.expected:
+            self.schedule.add(ParticipantInfo(hello.node, hello.period_ns, frozenset(hello.inputs)))
+            self.ready[hello.node] = hello.ready
+            for topic in hello.outputs:  # a suite topic: counted from zero (others are outsiders')
                 self.counts.setdefault(topic, 0)
 
     def _check_ready(self) -> None:
@@ -317,7 +322,7 @@ class LockstepCoordinator:
             acting = self.schedule.acting(k)
             if acting:
                 step_ns = self.schedule.step_ns
-                tick = String(data=json.dumps({"step": k, "t_ns": k * step_ns, "step_ns": step_ns, "counts": self.counts}))
+                tick = String(data=Tick(k, k * step_ns, step_ns, self.counts).to_json())
                 for name in acting:
                     self.tick_pubs[name].publish(tick)
                 self.step, self.waiting, self._since = k, set(acting) - self.observers, time.monotonic()
@@ -326,13 +331,13 @@ class LockstepCoordinator:
             self._advance()
 
     def _on_ack(self, msg: String) -> None:
-        d = json.loads(msg.data)
-        if self.waiting is None or d["step"] != self.step or d["node"] not in self.waiting:
+        ack = _parse(self.node, Ack.from_json, msg)
+        if ack is None or self.waiting is None or ack.step != self.step or ack.node not in self.waiting:
             return
-        for topic, n in d["sent"].items():
-            self.counts[topic] = self.counts.get(topic, 0) + int(n)
-        self.schedule.published(d["node"], d["sent"])
-        self.waiting.discard(d["node"])
+        for topic, n in ack.sent.items():
+            self.counts[topic] = self.counts.get(topic, 0) + n
+        self.schedule.published(ack.node, ack.sent)
+        self.waiting.discard(ack.node)
         if not self.waiting:
             self._advance()
             self._run()
@@ -343,7 +348,7 @@ class LockstepCoordinator:
         now = self.sim.sim.time
         for topic in self.handlers:
             for m in self.inbox.pop(topic):
-                self.handlers[topic](m.data, now)
+                handle(self.node, topic, self.handlers[topic], m.data, now)
         ahead = self.sim.sim.time / self.rtf - (time.monotonic() - self._wall0)
         if ahead > 0:
             time.sleep(ahead)

@@ -11,7 +11,9 @@ from __future__ import annotations
 import signal
 import sys
 import threading
+import traceback
 from collections.abc import Callable, Sequence
+from pathlib import Path
 from typing import Any
 
 import rclpy
@@ -19,9 +21,11 @@ from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 
+from haven_sim.runtime.component import Message
 from haven_sim.sim.world import WorldError
 
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+THROTTLE_S = 5.0  # at most one line per call site in this long about input a node cannot use
 POLL_S = 0.1  # how soon a stop request is noticed when nothing else happens
 _stop = threading.Event()
 
@@ -33,6 +37,29 @@ def stop_requested() -> bool:
 
 def _on_signal(signum: int, frame: Any) -> None:
     _stop.set()
+
+
+def callback_failed(node: Node, e: BaseException) -> None:
+    """The last line of defence against input no check foresaw (rclpy's own /clock reader raises
+    on a negative time, for one): the callback that raised is abandoned with one throttled error
+    line naming the exception and where it was raised, and the node keeps running."""
+    frame = traceback.extract_tb(e.__traceback__)[-1] if e.__traceback__ is not None else None
+    where = f" ({Path(frame.filename).name}:{frame.lineno})" if frame is not None else ""
+    text = str(e).splitlines()[0][:200] if str(e) else ""
+    node.get_logger().error(f"a callback failed and was skipped: {type(e).__name__}: {text}{where}", throttle_duration_sec=THROTTLE_S)
+
+
+def handle(node: Node, topic: str, handler: Callable[[Any, float], Sequence[Message]], data: Any, now: float) -> Sequence[Message]:
+    """A component's handler on one input: a ValueError is the component refusing it (a warning
+    naming the topic), anything else a failure of that message alone (`callback_failed`); either
+    way the node, and a lockstep tick in progress, go on."""
+    try:
+        return handler(data, now)
+    except ValueError as e:
+        node.get_logger().warning(f"ignored a message on {node.resolve_topic_name(topic)}: {e}", throttle_duration_sec=THROTTLE_S)
+    except Exception as e:  # noqa: BLE001 - see callback_failed
+        callback_failed(node, e)
+    return []
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:
@@ -50,7 +77,12 @@ def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> 
         executor = SingleThreadedExecutor()
         executor.add_node(node)
         while not _stop.is_set():
-            executor.spin_once(timeout_sec=POLL_S)
+            try:
+                executor.spin_once(timeout_sec=POLL_S)
+            except ExternalShutdownException:
+                raise
+            except Exception as e:  # noqa: BLE001 - see callback_failed
+                callback_failed(node, e)
     except ExternalShutdownException:
         pass
     finally:

@@ -19,8 +19,10 @@ participant node defers its subscriptions until its tick (`haven_sim.nodes.locks
 
 from __future__ import annotations
 
+import json
 from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import asdict, dataclass, field
+from typing import Any
 
 from haven_sim.common import topics
 from haven_sim.common.events import Event
@@ -28,11 +30,114 @@ from haven_sim.common.params import param
 from haven_sim.runtime.component import Component, Message, due, period_ns
 
 UNCAPPED_RTF = 1e6  # a lockstep real-time factor this high means "as fast as the participants go"
+MAX_COUNT = 2**40  # more messages on one topic than any trial publishes: a count beyond is forged
 
 
 @dataclass(frozen=True)
 class LockstepParams:
     lockstep: bool = param(False, "step with the simulator's lockstep clock (haven run sets it for simulated participants)")
+
+
+# -- the protocol's messages (JSON strings on /haven/lockstep/*), checked as any input is ----------
+def _load(text: str, what: str) -> dict[str, Any]:
+    try:
+        d = json.loads(text) if len(text) <= 65536 else None
+    except (ValueError, RecursionError):
+        d = None
+    if not isinstance(d, dict):
+        raise ValueError(f"not a lockstep {what}: {text[:40]!r}")
+    return d
+
+
+def _int(d: Mapping[str, Any], key: str, what: str, optional: bool = False) -> int:
+    v = d.get(key)
+    if optional and v is None:
+        return -1
+    if isinstance(v, bool) or not isinstance(v, int) or not 0 <= v <= 2**62:
+        raise ValueError(f"lockstep {what}: {key} must be a non-negative integer, got {str(v)[:40]}")
+    return v
+
+
+def _counts(d: Mapping[str, Any], key: str, what: str) -> dict[str, int]:
+    v = d.get(key)
+    if not isinstance(v, dict) or not all(
+        isinstance(t, str) and not isinstance(n, bool) and isinstance(n, int) and 0 <= n <= MAX_COUNT for t, n in v.items()
+    ):
+        raise ValueError(f"lockstep {what}: {key} must map topics to message counts, got {str(v)[:40]}")
+    return dict(v)
+
+
+def _names(d: Mapping[str, Any], key: str, what: str) -> list[str]:
+    v = d.get(key)
+    if not isinstance(v, list) or not all(isinstance(t, str) for t in v):
+        raise ValueError(f"lockstep {what}: {key} must be a list of names, got {str(v)[:40]}")
+    return list(v)
+
+
+def _name(d: Mapping[str, Any], what: str) -> str:
+    v = d.get("node")
+    if not isinstance(v, str):
+        raise ValueError(f"lockstep {what}: node must be a name, got {str(v)[:40]}")
+    return v
+
+
+@dataclass(frozen=True)
+class Tick:
+    """Coordinator -> participant: act at `step` (time `t_ns`), having received `counts`."""
+
+    step: int
+    t_ns: int
+    step_ns: int
+    counts: dict[str, int]
+
+    def to_json(self) -> str:
+        return json.dumps(asdict(self))
+
+    @staticmethod
+    def from_json(text: str) -> Tick:
+        d = _load(text, "tick")
+        return Tick(_int(d, "step", "tick"), _int(d, "t_ns", "tick"), max(1, _int(d, "step_ns", "tick")), _counts(d, "counts", "tick"))
+
+
+@dataclass(frozen=True)
+class Hello:
+    """Participant -> coordinator: who it is, its period, its topics, whether it has matched."""
+
+    node: str
+    period_ns: int | None
+    inputs: list[str]
+    outputs: list[str]
+    ready: bool
+
+    def to_json(self) -> str:
+        return json.dumps(asdict(self))
+
+    @staticmethod
+    def from_json(text: str) -> Hello:
+        d = _load(text, "hello")
+        period = _int(d, "period_ns", "hello", optional=True)
+        if not isinstance(d.get("ready"), bool):
+            raise ValueError(f"lockstep hello: ready must be true or false, got {str(d.get('ready'))[:40]}")
+        return Hello(
+            _name(d, "hello"), None if period < 0 else max(1, period), _names(d, "inputs", "hello"), _names(d, "outputs", "hello"), d["ready"]
+        )
+
+
+@dataclass(frozen=True)
+class Ack:
+    """Participant -> coordinator: done with `step`, having published `sent` messages per topic."""
+
+    node: str
+    step: int
+    sent: dict[str, int]
+
+    def to_json(self) -> str:
+        return json.dumps(asdict(self))
+
+    @staticmethod
+    def from_json(text: str) -> Ack:
+        d = _load(text, "ack")
+        return Ack(_name(d, "ack"), _int(d, "step", "ack"), _counts(d, "sent", "ack"))
 
 
 @dataclass(frozen=True)

@@ -1,0 +1,95 @@
+"""Hostile messages on every topic the suite reads (issue 14): NaN, ±inf and ±1e308 in every float
+field, strings that are not JSON or are JSON of the wrong shape or 100k deep, empty and 10k-long
+sequences, integer extremes, maps whose size disagrees with their data, negative clocks. No node
+may stop; afterwards the suite still does its job (a goal is reached; a recorded trial ends with
+its metrics and `haven report` reads it)."""
+
+import json
+import socket
+import subprocess
+import sys
+
+import pytest
+from hostile import publish_hostile, subscribed_topics
+from ros_harness import tracebacks
+from std_msgs.msg import String
+
+from haven_sim.nodes import qos
+
+pytestmark = [pytest.mark.ros, pytest.mark.slow]
+HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
+SUITE = {"sim_node", "velocity_mux", "planner", "controller", "viz"}
+CROSSING = """name: crossing
+world: small_test
+kind: retrieval
+timeout_s: 40
+robot: {order: nearest}
+humans: [{id: h1, model: walker, speed_mps: 0.8}]
+"""
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def start(ros, *args):
+    proc = subprocess.Popen(
+        [*HAVEN, *args, "--domain-id", str(ros.domain_id)], env=ros.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True
+    )
+    ros.procs.append(proc)
+    return proc
+
+
+def nodes(ros):
+    return {n for n, _ in ros.node.get_node_names_and_namespaces()} - {"haven_test_probe"}
+
+
+def attack(ros, proc, names):
+    """Wait for the nodes `names`, then send every hostile message on every topic they read; each
+    node must still be on the graph afterwards and the supervising `haven` still running."""
+    assert ros.spin_until(lambda: names <= nodes(ros) and len(subscribed_topics(ros.node, names)) > 10, 90), nodes(ros)
+    wanted = subscribed_topics(ros.node, names)
+    sent = publish_hostile(ros, wanted)
+    assert sent > 500
+    ros.spin_for(1.0)
+    assert proc.poll() is None, proc.stdout.read()[-3000:]
+    assert names <= nodes(ros)
+    return wanted
+
+
+def test_the_free_running_suite_and_the_bridge_survive_every_hostile_message_and_still_reach_a_goal(ros):
+    port = free_port()
+    suite = start(ros, "sim")
+    bridge = start(ros, "bridge", "--port", str(port))
+    wanted = attack(ros, suite, SUITE | {"haven_bridge"})
+    assert {"/goal_pose", "/map", "/odom", "/haven/events", "/clock", "/haven/estop", "/cmd_vel_teleop"} <= set(wanted)
+    assert bridge.poll() is None
+    goto = ros.run([*HAVEN, "goto", "2.0", "1.0", "--domain-id", str(ros.domain_id)], timeout_s=120)
+    assert goto.returncode == 0, goto.stdout[-2000:] + goto.stderr[-2000:]
+    for proc in (suite, bridge):
+        ros.stop(proc)
+        out = proc.stdout.read()
+        assert tracebacks(out) == [], tracebacks(out)[0]
+        assert "ignored a message on /goal_pose" in out or proc is bridge
+
+
+def test_a_recorded_trial_survives_every_hostile_message_and_is_scored(ros, tmp_path):
+    scenario = tmp_path / "crossing.yaml"
+    scenario.write_text(CROSSING)
+    sessions = tmp_path / "s"
+    trial = start(ros, "run", str(scenario), "--web", "--port", str(free_port()), "--researcher-start", "--sessions", str(sessions))
+    attack(ros, trial, SUITE | {"scenario", "recorder", "web"})
+    control = ros.node.create_publisher(String, "/haven/trial_control", qos.RELIABLE)
+    ros.wait_matched(control)
+    control.publish(String(data="start"))
+    out, _ = trial.communicate(timeout=600)
+    assert trial.returncode == 0, out[-3000:]
+    assert tracebacks(out) == [], tracebacks(out)[0]
+    assert "exited with code" not in out
+    (session,) = [p for p in sessions.iterdir() if p.is_dir()]
+    metrics = json.loads((session / "metrics.json").read_text())
+    assert metrics["end_reason"] in ("completed", "timeout"), metrics["end_reason"]
+    report = ros.run([*HAVEN, "report", str(session), "--out", str(tmp_path / "r.csv")])
+    assert report.returncode == 0 and tracebacks(report.stderr) == [], report.stderr[-2000:]
