@@ -11,8 +11,9 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.study.director import ScenarioNodeConfig
-from haven_sim.common.params import WILDCARD, build, flatten, load_params_file, node_values, render_params_file
+from haven_sim.common.params import WILDCARD, ParamsError, build, flatten, load_params_file, node_values, render_params_file
 from haven_sim.common.topics import WireParams
+from haven_sim.common.yaml_file import file_label, finite, read_yaml, short, shown_key
 from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.mux import MuxConfig
@@ -73,7 +74,18 @@ def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None) -> Suite
 
 
 def load_suite_config(path: str | Path | None) -> SuiteConfig:
-    return suite_config(load_params_file(path) if path is not None else None)
+    """Every node's config from a parameter file (None: the defaults). The file is first read as any
+    file a user hands us (`read_yaml`: a regular file of at most 1 MiB of UTF-8, bounded nesting and
+    aliases), so a hostile one is refused in one line before its ROS structure is read."""
+    if path is None:
+        return suite_config(None)
+    read_yaml(path, "parameter file", ParamsError)
+    params = load_params_file(path)
+    for node, values in params.items():  # an integer beyond a float's range would overflow where a float is expected
+        for name, v in values.items():
+            if isinstance(v, int) and finite(v) is None:
+                raise ParamsError(f"{file_label(path)}: {shown_key(node)}: {shown_key(name)}: must be a finite number, got {short(v)}")
+    return suite_config(params)
 
 
 if __name__ == "__main__":

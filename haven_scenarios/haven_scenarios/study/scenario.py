@@ -17,20 +17,20 @@ humans:
 dwell_time_s: 3.0
 ```
 
-Errors name the file and the key in one line (`ScenarioError`), like world files.
+Errors name the file and the key in one line (`ScenarioError`), like world files; the file is read
+as they are (`haven_sim.common.yaml_file`: at most 1 MiB of UTF-8, bounded nesting and aliases), and
+every key is type-checked (booleans are true or false, numbers finite, lists lists, ids strings).
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field, fields
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from haven_sim.common.params import build
+from haven_sim.common.yaml_file import file_label, finite, one_line, read_yaml, short, shown_key
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_file import load_world
 from haven_viz.cues import CUES, CueParams
@@ -40,6 +40,8 @@ MODELS = ("walker", "blocker", "yielder", "teleop")
 ORDERS = ("nearest", "random")
 BATTERY_MODES = ("off", "on_arrival", "continuous")
 MAX_WALKING_SPEED_MPS = 3.0
+MAX_TIMEOUT_S = 24 * 3600.0  # also the longest dwell
+MAX_NAME_CHARS = 64
 
 
 class ScenarioError(ValueError):
@@ -88,9 +90,9 @@ def resolve_world(spec: str, base: Path | None = None) -> Path:
     """A path (relative to `base`, the scenario file's folder, when the file is there), or a world
     shipped with haven_scenarios (scenario worlds) or haven_sim (test worlds)."""
     p = Path(spec)
-    if base is not None and not p.is_absolute() and (base / p).exists():
+    if base is not None and not p.is_absolute() and _exists(base / p):
         return base / p
-    if p.suffix in (".yaml", ".yml") or p.exists():
+    if p.suffix in (".yaml", ".yml") or _exists(p):
         return p
     for package in ("haven_scenarios", "haven_sim"):
         candidate = Path(str(resources.files(package) / "worlds" / f"{spec}.yaml"))
@@ -99,26 +101,30 @@ def resolve_world(spec: str, base: Path | None = None) -> Path:
     return p
 
 
+def _exists(p: Path) -> bool:
+    """`p.exists()`, False for a name no file can have (a NUL byte, too long)."""
+    try:
+        return p.exists()
+    except (OSError, ValueError):
+        return False
+
+
 def load_scenario(spec: str | Path, world: str | None = None) -> Scenario:
     """A shipped scenario by name, or a scenario file; `world` (a packaged world name or a world
     file) plays it in another world, which must have the rooms, gems and humans it names."""
     path = Path(spec)
-    if not (path.suffix in (".yaml", ".yml") or path.exists()):
+    if not (path.suffix in (".yaml", ".yml") or _exists(path)):
         path = Path(str(resources.files("haven_scenarios") / "scenarios" / f"{spec}.yaml"))
-        if not path.exists():
-            raise ScenarioError(f"{spec}: no such scenario (shipped: {', '.join(scenario_names())})")
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except OSError as e:
-        raise ScenarioError(f"{path}: cannot read scenario file: {e.strerror}") from None
-    except yaml.YAMLError as e:
-        raise ScenarioError(f"{path}: YAML syntax error: {getattr(e, 'problem', None) or e}") from None
+        if not _exists(path):
+            raise ScenarioError(f"{file_label(spec)}: no such scenario (shipped: {', '.join(scenario_names())})")
+    data = read_yaml(path, "scenario file", ScenarioError)
     if world is not None and isinstance(data, dict):
-        data = {**data, "world": str(Path(world).resolve()) if Path(world).exists() else world}
-    return _parse(data, str(path))
+        data = {**data, "world": str(Path(world).resolve()) if _exists(Path(world)) else world}
+    return parse_scenario(data, str(path))
 
 
-def _parse(data: Any, source: str) -> Scenario:
+def parse_scenario(data: Any, source: str) -> Scenario:
+    """A scenario from its YAML tree (`source`: the file, for messages and to find a relative world)."""
     return _ScenarioParser(source).scenario(data)
 
 
@@ -131,24 +137,36 @@ class _ScenarioParser:
         self.source = source
 
     def fail(self, key: str, msg: str) -> ScenarioError:
-        return ScenarioError(f"{self.source}: {key}: {msg}")
+        return ScenarioError(f"{file_label(self.source)}: {key}: {msg}")
 
     def choice(self, value: Any, key: str, options: tuple[str, ...]) -> str:
         if not isinstance(value, str) or value not in options:
-            raise self.fail(key, f"must be one of {', '.join(options)}, got {_short(value)}")
+            raise self.fail(key, f"must be one of {', '.join(options)}, got {short(value)}")
         return value
 
-    def positive(self, value: Any, key: str) -> float:
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value) or not value > 0:
-            raise self.fail(key, f"must be a positive number, got {_short(value)}")
-        return float(value)
+    def line(self, d: dict[str, Any], key: str, limit: int) -> str:
+        """A required one-line string of at most `limit` characters."""
+        if key not in d:
+            raise self.fail(key, "is required")
+        value = d[key]
+        if not isinstance(value, str) or not value or not value.isprintable() or len(value) > limit:
+            raise self.fail(key, f"must be a non-empty line of at most {limit} characters, got {short(value)}")
+        return value
+
+    def positive(self, value: Any, key: str, limit: float = float("inf")) -> float:
+        f = finite(value)
+        if f is None or not f > 0:
+            raise self.fail(key, f"must be a positive number, got {short(value)}")
+        if f > limit:
+            raise self.fail(key, f"must be at most {limit:g}, got {f:g}")
+        return f
 
     def mapping(self, value: Any, key: str, allowed: tuple[str, ...]) -> dict[str, Any]:
         if value is None:
             return {}
         if not isinstance(value, dict):
             raise self.fail(key, f"must be a mapping, got {type(value).__name__}")
-        unknown = sorted(str(k) for k in value if k not in allowed)
+        unknown = sorted(shown_key(k) for k in value if k not in allowed)
         if unknown:
             raise self.fail(f"{key}.{unknown[0]}" if key else unknown[0], f"unknown key (allowed: {', '.join(sorted(allowed))})")
         return value
@@ -158,27 +176,25 @@ class _ScenarioParser:
         if value is None:
             return ()
         if not isinstance(value, list):
-            raise self.fail(key, f"must be a list of {what} names, got {_short(value)}")
+            raise self.fail(key, f"must be a list of {what} names, got {short(value)}")
         for i, name in enumerate(value):
             if not isinstance(name, str) or name not in known:
-                raise self.fail(f"{key}[{i}]", f"names no {what} of the world (known: {', '.join(sorted(known))}), got {_short(name)}")
+                raise self.fail(f"{key}[{i}]", f"names no {what} of the world (known: {_listing(known)}), got {short(name)}")
         return tuple(value)
 
     def scenario(self, data: Any) -> Scenario:
         d = self.mapping(data, "", self.TOP) if isinstance(data, dict) else None
         if d is None:
             raise self.fail("name", "the scenario file must be a mapping")
-        for key in ("name", "world", "kind"):
-            if key not in d:
-                raise self.fail(key, "is required")
-            if key != "kind" and (not isinstance(d[key], str) or not d[key]):
-                raise self.fail(key, f"must be a non-empty string, got {_short(d[key])}")
+        name, spec = self.line(d, "name", MAX_NAME_CHARS), self.line(d, "world", 4096)
+        if "kind" not in d:
+            raise self.fail("kind", "is required")
         kind = self.choice(d["kind"], "kind", KINDS)
-        world_path = resolve_world(d["world"], Path(self.source).parent)
+        world_path = resolve_world(spec, Path(self.source).parent)
         try:
             world = load_world(world_path)
         except WorldError as e:
-            raise ScenarioError(f"{self.source}: world: {e}") from None
+            raise self.fail("world", str(e)) from None
         robot = self.mapping(d.get("robot"), "robot", ("route", "order", "battery"))
         route = self.names(robot.get("route"), "robot.route", {r.name for r in world.rooms}, "room")
         if kind == "hallway" and not route:
@@ -187,19 +203,19 @@ class _ScenarioParser:
             raise self.fail("world", f"world '{world.name}' has no robot gems to retrieve")
         end_on_contact = d.get("end_on_contact", False)
         if not isinstance(end_on_contact, bool):
-            raise self.fail("end_on_contact", f"must be true or false, got {_short(end_on_contact)}")
+            raise self.fail("end_on_contact", f"must be true or false, got {short(end_on_contact)}")
         battery = self.battery(robot.get("battery"), world)
         return Scenario(
-            name=d["name"],
+            name=name,
             kind=kind,
             world=world,
             world_path=str(world_path),
-            timeout_s=self.positive(d.get("timeout_s", 300.0), "timeout_s"),
+            timeout_s=self.positive(d.get("timeout_s", 300.0), "timeout_s", MAX_TIMEOUT_S),
             robot_route=route,
             robot_order=self.choice(robot.get("order", "nearest"), "robot.order", ORDERS),
             battery=battery,
             humans=self.humans(d.get("humans"), world),
-            dwell_time_s=self.positive(d.get("dwell_time_s", 3.0), "dwell_time_s"),
+            dwell_time_s=self.positive(d.get("dwell_time_s", 3.0), "dwell_time_s", MAX_TIMEOUT_S),
             end_on_contact=end_on_contact,
             condition=self.condition(d.get("condition", ["all"])),
             cues=self.cues(d.get("cues")),
@@ -209,15 +225,18 @@ class _ScenarioParser:
     def condition(self, value: Any) -> tuple[str, ...]:
         known = (*CUES, "all", "none")
         if not isinstance(value, list) or not value:
-            raise self.fail("condition", f"must be a list of cue names (or [all] / [none]), got {_short(value)}")
+            raise self.fail("condition", f"must be a list of cue names (or [all] / [none]), got {short(value)}")
         for i, name in enumerate(value):
             if name not in known:
-                raise self.fail(f"condition[{i}]", f"is no cue (known: {', '.join(known)}), got {_short(name)}")
+                raise self.fail(f"condition[{i}]", f"is no cue (known: {', '.join(known)}), got {short(name)}")
         return tuple(value)
 
     def cues(self, value: Any) -> CueParams:
         known = tuple(f.name for f in fields(CueParams))
         values = self.mapping(value, "cues", known)
+        for name, v in values.items():  # an integer beyond a float's range (build would overflow converting it)
+            if isinstance(v, int) and finite(v) is None:
+                raise self.fail(f"cues.{name}", f"must be a finite number, got {short(v)}")
         try:
             return build(CueParams, values, where="cues.")
         except ValueError as e:
@@ -245,14 +264,16 @@ class _ScenarioParser:
             raise self.fail("humans", f"must be a list, got {type(value).__name__}")
         known = {h.id for h in world.humans}
         rooms = {r.name for r in world.rooms}
-        out = []
+        out: list[HumanTask] = []
         for i, h in enumerate(value):
             key = f"humans[{i}]"
             m = self.mapping(h, key, ("id", "model", "route", "speed_mps"))
             if "id" not in m:
                 raise self.fail(f"{key}.id", "is required")
             if not isinstance(m["id"], str) or m["id"] not in known:
-                raise self.fail(f"{key}.id", f"names no human of world '{world.name}' (humans: {', '.join(sorted(known))}), got {_short(m['id'])}")
+                raise self.fail(f"{key}.id", f"names no human of world '{world.name}' (humans: {_listing(known)}), got {short(m['id'])}")
+            if m["id"] in {t.id for t in out}:
+                raise self.fail(f"{key}.id", f"duplicate id {short(m['id'])}")
             speed = self.positive(m.get("speed_mps", 1.0), f"{key}.speed_mps")
             if speed > MAX_WALKING_SPEED_MPS:
                 raise self.fail(f"{key}.speed_mps", f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {speed:g}")
@@ -261,6 +282,5 @@ class _ScenarioParser:
         return tuple(out)
 
 
-def _short(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
+def _listing(names: set[str]) -> str:
+    return one_line(", ".join(sorted(names)), 80)

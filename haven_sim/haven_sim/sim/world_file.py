@@ -24,7 +24,9 @@ obstructions:                 # solid until removed (by a scenario rule)
 ```
 
 Units are metres and radians, frame `map` (REP-103). Every error names the file, the key and the
-problem in one line (`WorldError`); nothing starts on an invalid world.
+problem in one line (`WorldError`); nothing starts on an invalid world. The file is read by
+`haven_sim.common.yaml_file` (at most 1 MiB of UTF-8, bounded nesting and aliases); the limits on
+coordinates, the world's extent, polygons and the bodies' clearance at start are in `world_checks`.
 """
 
 from __future__ import annotations
@@ -34,10 +36,9 @@ import re
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-import yaml
-
-from haven_sim.common.geometry import Point, Pose2D, points_in_polygon, polygon_area, segment_to_polygon
+from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.geometry import Point, Pose2D, polygon_area, segment_to_polygon
+from haven_sim.common.yaml_file import file_label, finite, read_yaml, short, shown_key
 from haven_sim.sim.world import (
     ChargingBase,
     Gem,
@@ -49,9 +50,11 @@ from haven_sim.sim.world import (
     World,
     WorldError,
 )
+from haven_sim.sim.world_checks import MAX_COORDINATE_M, MAX_EXTENT_M, MAX_POLYGON_VERTICES, overlapping_shape, polygon_problem, span_problem
 
 GEM_OWNERS = ("robot", "human")
-_ID_RE = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+_ID_RE = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
+MAX_NAME_CHARS = 64
 
 
 def _ccw(polygon: list[Point]) -> tuple[Point, ...]:
@@ -60,19 +63,7 @@ def _ccw(polygon: list[Point]) -> tuple[Point, ...]:
 
 
 def load_world(path: str | Path) -> World:
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as e:
-        raise WorldError(f"{p}: cannot read world file: {e.strerror}") from None
-    try:
-        data = yaml.safe_load(text)
-    except yaml.YAMLError as e:
-        mark = getattr(e, "problem_mark", None)
-        where = f" at line {mark.line + 1}" if mark is not None else ""
-        problem = getattr(e, "problem", None) or "invalid YAML"
-        raise WorldError(f"{p}: YAML syntax error{where}: {problem}") from None
-    return parse_world(data, source=str(p))
+    return parse_world(read_yaml(path, "world file", WorldError), source=str(path))
 
 
 def parse_world(data: Any, source: str = "<world>") -> World:
@@ -86,36 +77,45 @@ class _Parser:
         self.source = source
 
     def fail(self, key: str, message: str) -> WorldError:
-        return WorldError(f"{self.source}: {key}: {message}")
+        return WorldError(f"{file_label(self.source)}: {key}: {message}")
 
     # -- scalars ---------------------------------------------------------------------------
-    def number(self, value: Any, key: str, positive: bool = False) -> float:
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise self.fail(key, f"must be a finite number, got {value!r}")
-        if positive and value <= 0:
-            raise self.fail(key, f"must be positive, got {value!r}")
-        return float(value)
+    def number(self, value: Any, key: str, positive: bool = False, limit: float = math.inf) -> float:
+        """A finite number; `positive`: a length (> 0), at most `limit`; else within ±`limit`."""
+        f = finite(value)
+        if f is None:
+            raise self.fail(key, f"must be a finite number, got {short(value)}")
+        if positive and f <= 0:
+            raise self.fail(key, f"must be positive, got {short(value)}")
+        if abs(f) > limit:
+            bound = f"at most {limit:g} m" if positive else f"within ±{limit:g} m"
+            raise self.fail(key, f"must be {bound}, got {f:g}")
+        return f
+
+    def length(self, value: Any, key: str) -> float:
+        return self.number(value, key, positive=True, limit=MAX_EXTENT_M)
 
     def point(self, value: Any, key: str) -> Point:
         if not isinstance(value, (list, tuple)) or len(value) != 2:
-            raise self.fail(key, f"must be a point [x, y], got {value!r}")
-        return (self.number(value[0], f"{key}[0]"), self.number(value[1], f"{key}[1]"))
+            raise self.fail(key, f"must be a point [x, y], got {short(value)}")
+        return (self.number(value[0], f"{key}[0]", limit=MAX_COORDINATE_M), self.number(value[1], f"{key}[1]", limit=MAX_COORDINATE_M))
 
     def pose(self, value: Any, key: str) -> Pose2D:
         if not isinstance(value, (list, tuple)) or len(value) not in (2, 3):
-            raise self.fail(key, f"must be a pose [x, y, yaw], got {value!r}")
+            raise self.fail(key, f"must be a pose [x, y, yaw], got {short(value)}")
         yaw = self.number(value[2], f"{key}[2]") if len(value) == 3 else 0.0
-        return Pose2D(self.number(value[0], f"{key}[0]"), self.number(value[1], f"{key}[1]"), yaw)
+        x, y = self.point(value[:2], key)
+        return Pose2D(x, y, yaw)
 
     def ident(self, value: Any, key: str) -> str:
-        if not isinstance(value, str) or not _ID_RE.match(value):
-            raise self.fail(key, f"must be a name of letters, digits and '_' starting with a letter, got {value!r}")
+        if not isinstance(value, str) or not _ID_RE.fullmatch(value):
+            raise self.fail(key, f"must be a name of up to {MAX_NAME_CHARS} letters, digits and '_' starting with a letter, got {short(value)}")
         return value
 
     def mapping(self, value: Any, key: str, allowed: set[str], required: set[str]) -> dict[str, Any]:
         if not isinstance(value, dict):
             raise self.fail(key, f"must be a mapping, got {type(value).__name__}")
-        unknown = sorted(set(value) - allowed)
+        unknown = sorted(shown_key(k) for k in value if k not in allowed)
         if unknown:
             raise self.fail(f"{key}.{unknown[0]}" if key else unknown[0], f"unknown key (allowed: {', '.join(sorted(allowed))})")
         for r in sorted(required):
@@ -138,12 +138,12 @@ class _Parser:
         if "segment" in m:
             seg = m["segment"]
             if not isinstance(seg, list) or len(seg) != 2:
-                raise self.fail(f"{key}.segment", f"must be two points [[x0, y0], [x1, y1]], got {seg!r}")
+                raise self.fail(f"{key}.segment", f"must be two points [[x0, y0], [x1, y1]], got {short(seg)}")
             a = self.point(seg[0], f"{key}.segment[0]")
             b = self.point(seg[1], f"{key}.segment[1]")
             if "thickness" not in m:
                 raise self.fail(f"{key}.thickness", "is required with 'segment'")
-            thickness = self.number(m["thickness"], f"{key}.thickness", positive=True)
+            thickness = self.length(m["thickness"], f"{key}.thickness")
             if math.hypot(b[0] - a[0], b[1] - a[1]) < 1e-9:
                 raise self.fail(f"{key}.segment", "has zero length")
             return Shape(_ccw(segment_to_polygon(a, b, thickness)), kind, id_)
@@ -152,9 +152,14 @@ class _Parser:
         raw = self.seq(m["polygon"], f"{key}.polygon")
         if len(raw) < 3:
             raise self.fail(f"{key}.polygon", f"needs at least 3 points, got {len(raw)}")
+        if len(raw) > MAX_POLYGON_VERTICES:
+            raise self.fail(f"{key}.polygon", f"has {len(raw)} points; at most {MAX_POLYGON_VERTICES}")
         pts = [self.point(v, f"{key}.polygon[{i}]") for i, v in enumerate(raw)]
         if abs(polygon_area(pts)) < 1e-9:
             raise self.fail(f"{key}.polygon", "has zero area")
+        problem = polygon_problem(pts)
+        if problem:
+            raise self.fail(f"{key}.polygon", problem)
         return Shape(_ccw(pts), kind, id_)
 
     def world(self, data: Any) -> World:
@@ -162,8 +167,8 @@ class _Parser:
         if data is None:
             raise self.fail("name", "the world file is empty")
         d = self.mapping(data, "", top, {"name", "walls", "robot"})
-        if not isinstance(d["name"], str) or not d["name"]:
-            raise self.fail("name", f"must be a non-empty string, got {d['name']!r}")
+        if not isinstance(d["name"], str) or not d["name"] or not d["name"].isprintable() or len(d["name"]) > MAX_NAME_CHARS:
+            raise self.fail("name", f"must be a non-empty line of at most {MAX_NAME_CHARS} characters, got {short(d['name'])}")
         walls = self.shapes(d["walls"], "walls", "wall")
         if not walls:
             raise self.fail("walls", "needs at least one wall")
@@ -182,6 +187,7 @@ class _Parser:
             obstructions=self.obstructions(d.get("obstructions"), {r.name for r in rooms}),
             source=self.source,
         )
+        self.check_extent(world)
         self.check_free(world)
         return world
 
@@ -205,7 +211,7 @@ class _Parser:
             if len(line) < 2:
                 raise self.fail(f"{k}.centreline", "needs at least 2 points")
             points = tuple(self.point(p, f"{k}.centreline[{j}]") for j, p in enumerate(line))
-            hallways.append(Hallway(self.ident(m["name"], f"{k}.name"), points, self.number(m["width"], f"{k}.width", positive=True)))
+            hallways.append(Hallway(self.ident(m["name"], f"{k}.name"), points, self.length(m["width"], f"{k}.width")))
         self.unique([h.name for h in hallways], "hallways", "name")
         return tuple(hallways)
 
@@ -213,7 +219,7 @@ class _Parser:
         if value is None:
             return None
         m = self.mapping(value, "charging_base", {"position", "radius"}, {"position"})
-        radius = self.number(m.get("radius", 0.5), "charging_base.radius", positive=True)
+        radius = self.length(m.get("radius", 0.5), "charging_base.radius")
         return ChargingBase(self.point(m["position"], "charging_base.position"), radius)
 
     def humans(self, value: Any) -> tuple[HumanSpec, ...]:
@@ -230,8 +236,8 @@ class _Parser:
             k = f"gems[{i}]"
             m = self.mapping(g, k, {"id", "owner", "position", "radius"}, {"id", "owner", "position"})
             if m["owner"] not in GEM_OWNERS:
-                raise self.fail(f"{k}.owner", f"must be one of {', '.join(GEM_OWNERS)}, got {m['owner']!r}")
-            radius = self.number(m.get("radius", 0.3), f"{k}.radius", positive=True)
+                raise self.fail(f"{k}.owner", f"must be one of {', '.join(GEM_OWNERS)}, got {short(m['owner'])}")
+            radius = self.length(m.get("radius", 0.3), f"{k}.radius")
             gems.append(Gem(self.ident(m["id"], f"{k}.id"), m["owner"], self.point(m["position"], f"{k}.position"), radius))
         self.unique([g.id for g in gems], "gems", "id")
         return tuple(gems)
@@ -245,8 +251,8 @@ class _Parser:
             oid = self.ident(o["id"], f"{k}.id")
             shape = self.shape(o, k, "obstruction", frozenset({"id", "removed_when_human_reaches"}), oid)
             trigger = o.get("removed_when_human_reaches")
-            if trigger is not None and trigger not in room_names:
-                raise self.fail(f"{k}.removed_when_human_reaches", f"names no room in 'rooms', got {trigger!r}")
+            if trigger is not None and (not isinstance(trigger, str) or trigger not in room_names):
+                raise self.fail(f"{k}.removed_when_human_reaches", f"names no room in 'rooms', got {short(trigger)}")
             obstructions.append(Obstruction(oid, shape, trigger))
         self.unique([o.id for o in obstructions], "obstructions", "id")
         return tuple(obstructions)
@@ -255,17 +261,35 @@ class _Parser:
         seen: set[str] = set()
         for i, n in enumerate(names):
             if n in seen:
-                raise self.fail(f"{key}[{i}].{attr}", f"duplicate {attr} {n!r}")
+                raise self.fail(f"{key}[{i}].{attr}", f"duplicate {attr} {short(n)}")
             seen.add(n)
 
+    def check_extent(self, world: World) -> None:
+        """Everything within a MAX_EXTENT_M square, so the occupancy grids stay small."""
+        items: list[tuple[str, list[Point]]] = [(f"walls[{i}]", list(s.polygon)) for i, s in enumerate(world.walls)]
+        items += [(f"obstacles[{i}]", list(s.polygon)) for i, s in enumerate(world.obstacles)]
+        items += [(f"obstructions[{i}]", list(o.shape.polygon)) for i, o in enumerate(world.obstructions)]
+        items += [("robot.start", [world.robot_start[:2]])] + [(f"humans[{i}].start", [h.start[:2]]) for i, h in enumerate(world.humans)]
+        items += [(f"gems[{i}].position", [g.position]) for i, g in enumerate(world.gems)]
+        items += [(f"rooms[{i}].centre", [r.centre]) for i, r in enumerate(world.rooms)]
+        items += [(f"hallways[{i}].centreline", list(h.centreline)) for i, h in enumerate(world.hallways)]
+        items += [("charging_base.position", [world.charging_base.position])] if world.charging_base else []
+        problem = span_problem(items)
+        if problem:
+            raise self.fail(*problem)
+
     def check_free(self, world: World) -> None:
-        """Start poses must not sit inside solid geometry."""
+        """The robot's and each person's whole body (a disc of its radius) clear of solid geometry at start."""
         shapes = world.solid_shapes()
-        checks = [("robot.start", world.robot_start)] + [(f"humans[{i}].start", h.start) for i, h in enumerate(world.humans)]
-        for key, pose in checks:
-            xs, ys = np.array([pose.x]), np.array([pose.y])
-            for s in shapes:
-                if points_in_polygon(xs, ys, list(s.polygon))[0]:
-                    what = f"{s.kind} {s.id}".strip()
-                    article = "an" if what[0] in "aeiou" else "a"
-                    raise self.fail(key, f"({pose.x:g}, {pose.y:g}) lies inside {article} {what}")
+        checks = [("robot.start", world.robot_start, "the robot", ROBOT_BODY.radius_m)]
+        checks += [(f"humans[{i}].start", h.start, "the person", HUMAN_BODY.radius_m) for i, h in enumerate(world.humans)]
+        for key, pose, who, radius in checks:
+            hit = overlapping_shape(shapes, pose.x, pose.y, radius)
+            if hit is None:
+                continue
+            shape, centre_inside = hit
+            what = f"{shape.kind} {shape.id}".strip()
+            article = "an" if what[0] in "aeiou" else "a"
+            if centre_inside:
+                raise self.fail(key, f"({pose.x:g}, {pose.y:g}) lies inside {article} {what}")
+            raise self.fail(key, f"({pose.x:g}, {pose.y:g}) puts {who}'s body (radius {radius:g} m) into {article} {what}")

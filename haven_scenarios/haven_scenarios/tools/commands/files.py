@@ -1,0 +1,40 @@
+"""`haven validate FILE...`: check world and scenario files without starting anything."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from haven_scenarios.study.scenario import ScenarioError, parse_scenario
+from haven_scenarios.tools.commands.common import fail
+from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
+from haven_sim.sim.world import WorldError
+from haven_sim.sim.world_file import parse_world
+
+
+def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    validate = sub.add_parser("validate", help="check world and scenario files (which is which: by their keys) without starting anything")
+    validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
+    validate.set_defaults(func=validate_cmd)
+
+
+def validate_cmd(args: argparse.Namespace) -> int:
+    """One line per file, "ok: FILE (world NAME)" or the error; exit 0 when every file is valid, else 2."""
+    failed = 0
+    for path in args.files:
+        try:
+            print(f"ok: {file_label(path)} ({describe(path)})", flush=True)
+        except (YamlFileError, WorldError, ScenarioError) as e:
+            fail(str(e))
+            failed += 1
+    return 2 if failed else 0
+
+
+def describe(path: Path) -> str:
+    """What a valid file is, "world NAME" or "scenario NAME": a scenario has `kind` or `world`, a world `walls`."""
+    data = read_yaml(path, "file")
+    if isinstance(data, dict) and ("kind" in data or "world" in data):
+        return f"scenario {parse_scenario(data, str(path)).name}"
+    if isinstance(data, dict) and "walls" in data:
+        return f"world {parse_world(data, str(path)).name}"
+    raise YamlFileError(f"{file_label(path)}: neither a scenario (no 'kind' or 'world' key) nor a world (no 'walls' key)")
