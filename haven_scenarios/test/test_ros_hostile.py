@@ -36,7 +36,12 @@ def free_port():
 
 def start(ros, *args):
     proc = subprocess.Popen(
-        [*HAVEN, *args, "--domain-id", str(ros.domain_id)], env=ros.env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, start_new_session=True
+        [*HAVEN, *args, "--domain-id", str(ros.domain_id)],
+        env=ros.env,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        start_new_session=True,
     )
     ros.procs.append(proc)
     return proc

@@ -1,14 +1,16 @@
 """Sends one goal on /goal_pose (as RViz's "2D Goal Pose" does) and reports what became of it.
 
-Exits 0 when the controller reports `goal_reached`, 1 when the planner refuses the goal or the
-timeout (sim seconds) passes; prints the planner's and controller's events as they come.
+Exits 0 when the controller reports `goal_reached`, 1 when the planner refuses the goal, the
+timeout (sim seconds) passes, or (wall seconds) nobody reads goals or sim time stops; prints the planner's and controller's events as they come.
 """
 
 from __future__ import annotations
 
 import sys
+import time
 
 from geometry_msgs.msg import PoseStamped
+from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from std_msgs.msg import String
 
@@ -29,6 +31,9 @@ SHOWN = {
 }
 
 
+STALL_S = 15.0  # wall seconds without a planner, or without sim time moving, before giving up
+
+
 class GoalClient(Node):
     def __init__(self) -> None:
         super().__init__("goal_client")
@@ -38,12 +43,31 @@ class GoalClient(Node):
         self.pub = self.create_publisher(PoseStamped, "goal_pose", qos.RELIABLE)
         self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
         self.sent_at: float | None = None
-        self.create_timer(0.1, self._tick)
+        # Wall-clock timer and watchdog: with sim time, a simulator that stopped would stop a
+        # sim-time timer too, and the client would wait for ever.
+        self.started = time.monotonic()
+        self.last_time, self.last_change = self._now(), time.monotonic()
+        self.create_timer(0.1, self._tick, clock=Clock(clock_type=ClockType.STEADY_TIME))
 
     def _now(self) -> float:
         return self.get_clock().now().nanoseconds * 1e-9
 
+    def _stalled(self) -> str | None:
+        """Why the client cannot go on (nobody reads goals; sim time stands still), if so."""
+        now, wall = self._now(), time.monotonic()
+        if now != self.last_time:
+            self.last_time, self.last_change = now, wall
+        if self.sent_at is None and wall - self.started > STALL_S:
+            return f"nobody reads /goal_pose after {STALL_S:g} s (is a suite running on this ROS_DOMAIN_ID?)"
+        if self.sent_at is not None and wall - self.last_change > STALL_S:
+            return f"the clock stood still for {STALL_S:g} s at t={now:.2f} (did the simulator stop?)"
+        return None
+
     def _tick(self) -> None:
+        stalled = self._stalled()
+        if stalled:
+            print(f"goto: {stalled}", flush=True)
+            raise SystemExit(1)
         if self.sent_at is None:
             if self.pub.get_subscription_count() == 0:
                 return  # wait for the planner to be there

@@ -6,6 +6,10 @@ written with the receive time in sim time (rosbag2's convention); each topic is 
 QoS its publishers offer, so `ros2 bag play` re-latches the latched ones. Messages DDS reports lost
 on the way (a reader too far behind) are counted per topic into the bag's metadata. On Ctrl-C,
 SIGTERM or SIGHUP the recorder first writes whatever its readers still hold, then closes the bag.
+Once a second the messages held in memory are written out as a complete MCAP chunk, so a recorder
+killed outright (SIGKILL) loses at most the last second; `haven repair` (record/repair.py) rebuilds
+such a bag. A full disk (ENOSPC, or EFBIG over a file size limit) stops the recorder with one line
+naming the file and the reason, and exit code 1; what it had written stays as it was, for the repair.
 
 The recorder subscribes /haven/events only once /odom and /humans reach it: the director starts the
 trial when the recorder listens to its events, so the state streams are recorded from the start
@@ -26,11 +30,13 @@ then, not after a guessed delay, so a busy machine cannot cut the last moments o
 
 from __future__ import annotations
 
+import contextlib
 import struct
 import sys
 import time
 from pathlib import Path
 
+import rclpy
 from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
@@ -85,10 +91,15 @@ class Recorder(Node):
     def __init__(self) -> None:
         super().__init__("recorder")
         folder = Path(self.declare_parameter("session_dir", "session").value)
-        folder.mkdir(parents=True, exist_ok=True)
-        self.bag = BagWriter(folder / "bag")
-        self.bag.__enter__()
-        self.events = (folder / "events.jsonl").open("a", encoding="utf-8")
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+            self.bag = BagWriter(folder / "bag")
+            self.bag.__enter__()
+            self.events = (folder / "events.jsonl").open("a", encoding="utf-8")
+        except OSError as e:  # (run_node says it in one line, exit code 2)
+            raise ValueError(f"cannot record into {folder.resolve()}: {e.strerror or e}") from None
+        self.failed = False  # a write failed (disk full): nothing more is written
+        self.mcap = self.bag.path / f"{self.bag.path.name}.mcap"  # (the file rosbags writes)
         self.lost: dict[str, int] = {}
         self.end_mark = folder / END_MARK
         self.end_stamp: float | None = None
@@ -114,6 +125,24 @@ class Recorder(Node):
         sim = self.get_clock().now().nanoseconds
         if sim > 0 and (not self.clock_pairs or sim > self.clock_pairs[-1][0]):
             self.clock_pairs.append((sim, time.time_ns()))
+        if not self.failed:
+            try:
+                self.bag.flush()  # (once a second: what a SIGKILL would lose)
+            except OSError as e:
+                self._write_failed(self.mcap, e)
+
+    def _write_failed(self, path: Path, e: OSError) -> None:
+        """A full disk: one line naming the file and the reason, the bag left as far as it was
+        written (its footer and metadata.yaml would not fit either), and the process ends (code 1)."""
+        self.failed = True
+        print(
+            f"recorder: error: cannot write {path.resolve()}: {e.strerror or e}; recording stopped "
+            "(what was written is kept: `haven repair` rebuilds the bag)",
+            file=sys.stderr,
+            flush=True,
+        )
+        self.bag.abort()
+        raise SystemExit(1)  # (out of the executor's spin: run_node's cleanup still runs)
 
     def _declare_wire_params(self) -> WireParams:
         """The topic table's parameters (stamped velocity commands), as the other nodes have them."""
@@ -145,12 +174,29 @@ class Recorder(Node):
             self.get_logger().warning(text, throttle_duration_sec=5.0)
 
     def _on_message(self, topic: str, msgtype: str, data: bytes) -> None:
+        if self.failed:
+            return
+        try:
+            if not self._record(topic, msgtype, data):
+                return
+        except OSError as e:
+            self._write_failed(self.mcap, e)
+        self._follow_streams(topic, data)
+        if topic == EVENTS:
+            self._event(data)
+
+    def _record(self, topic: str, msgtype: str, data: bytes) -> bool:
+        """Into the bag; False for a type rosbags does not know (not recorded)."""
         if not self.bag.has_topic(topic):
             offered = [bag_qos(i.qos_profile) for i in self.get_publishers_info_by_topic(topic)]
             if not self.bag.add_topic(topic, msgtype, offered):
                 self.get_logger().warning(f"not recording {topic}: type {msgtype} unknown to rosbags", throttle_duration_sec=60.0)
-                return
+                return False
         self.bag.write(topic, self.get_clock().now().nanoseconds, data)
+        return True
+
+    def _follow_streams(self, topic: str, data: bytes) -> None:
+        """/haven/events released once the streams flow; END_MARK once they reach the trial's end."""
         if topic in STREAMS and self.topics.held:
             self.flowing.add(topic)
             if self.flowing >= set(STREAMS):
@@ -158,24 +204,45 @@ class Recorder(Node):
         if self.end_stamp is not None and topic in STREAMS and topic not in self.reached and header_stamp(data) >= self.end_stamp - 1e-6:
             self.reached.add(topic)
             if self.reached >= set(STREAMS):
-                self.end_mark.write_text(f"{self.end_stamp}\n")
-        if topic == EVENTS:
-            try:
-                event = conv.event_from_msg(deserialize_message(data, String))
-            except ValueError as e:  # kept in the bag as received; left out of events.jsonl
-                self.get_logger().warning(f"not an event on /haven/events: {e}", throttle_duration_sec=5.0)
-                return
+                try:
+                    self.end_mark.write_text(f"{self.end_stamp}\n")
+                except OSError as e:
+                    self._write_failed(self.end_mark, e)
+
+    def _event(self, data: bytes) -> None:
+        try:
+            event = conv.event_from_msg(deserialize_message(data, String))
+        except ValueError as e:  # kept in the bag as received; left out of events.jsonl
+            self.get_logger().warning(f"not an event on /haven/events: {e}", throttle_duration_sec=5.0)
+            return
+        try:
             self.events.write(event.to_json() + "\n")
             self.events.flush()
-            if event.kind is EventKind.TRIAL_END:
-                self.end_stamp = event.stamp
+        except OSError as e:
+            self._write_failed(Path(self.events.name), e)
+        if event.kind is EventKind.TRIAL_END:
+            self.end_stamp = event.stamp
 
     def destroy_node(self) -> None:
-        self.topics.drain()
-        self._pair_clocks()
-        self.bag.close(lost=self.lost, wall_clock=self.clock_pairs)
-        self.events.close()
+        """What the readers still hold into the bag, then the bag closed (its footer and
+        metadata.yaml); a write failing now (disk full) is said in one line and ends with code 1."""
+        failed_before = self.failed
+        if not self.failed:
+            try:
+                self.topics.drain()
+                self._pair_clocks()
+                self.bag.close(lost=self.lost, wall_clock=self.clock_pairs)
+            except SystemExit:
+                pass  # a write failed: said in one line, the bag left as written for the repair
+            except OSError as e:
+                with contextlib.suppress(SystemExit):
+                    self._write_failed(self.mcap, e)
+        with contextlib.suppress(OSError):
+            self.events.close()  # (every event was flushed as it came)
         super().destroy_node()
+        if self.failed and not failed_before:
+            rclpy.try_shutdown()  # (run_node's own shutdown is skipped by the exit)
+            raise SystemExit(1)
 
 
 def main(args: list[str] | None = None) -> None:

@@ -10,20 +10,24 @@ from __future__ import annotations
 import json
 import struct
 from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
+from io import BytesIO
 from pathlib import Path
 from types import TracebackType
-from typing import Any
+from typing import Any, BinaryIO
 
 import numpy as np
 import yaml
 from mcap.exceptions import McapError
 from mcap.records import Channel as McapChannel
+from mcap.records import McapRecord
 from mcap.records import Message as McapMessage
 from mcap.records import Schema as McapSchema
 from mcap.stream_reader import StreamReader
 from rosbags.highlevel import AnyReader
 from rosbags.interfaces import Connection, Qos
 from rosbags.rosbag2 import StoragePlugin, Writer
+from rosbags.rosbag2.storage_mcap import McapWriter
 from rosbags.typesys import Stores, get_typestore
 
 from haven_scenarios.record.timeline import Recording
@@ -38,6 +42,8 @@ from haven_viz.cues import CueState
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
 LOST_KEY = "haven.messages_lost"  # custom_data in metadata.yaml: {topic: messages DDS reported lost}
 WALL_CLOCK_KEY = "haven.wall_clock"  # custom_data: [[sim ns, wall ns (Unix epoch)], ...] paired about once a second
+CHUNK_OPCODE = 0x06  # an MCAP chunk record
+REPAIRED_KEY = "haven.repaired"  # custom_data of a bag rebuilt by record/repair.py: JSON, how and how much
 
 
 class BagWriter:
@@ -67,6 +73,24 @@ class BagWriter:
                 self._writer.set_custom_data(WALL_CLOCK_KEY, json.dumps([list(p) for p in wall_clock]))
             self._writer.close()
             self._writer = None  # type: ignore[assignment]
+
+    def flush(self) -> None:
+        """Write the messages held in memory to the file as a complete MCAP chunk, so that a
+        recorder killed now loses nothing written before (rosbags keeps up to 1 MiB in memory)."""
+        storage = self._writer.storage if self._writer is not None else None
+        if isinstance(storage, McapWriter) and storage.chunk.msgs:
+            storage.close_chunk()
+            storage.bio.flush()
+
+    def abort(self) -> None:
+        """Give up the bag without its footer or metadata.yaml (the disk is full): the file is
+        closed as far as it was written; `record.repair` rebuilds a bag from it."""
+        if self._writer is not None:
+            writer, self._writer = self._writer, None  # type: ignore[assignment]
+            try:
+                writer.abort()
+            except OSError:
+                pass  # (the buffered rest could not be written either; the file is closed)
 
     def has_topic(self, topic: str) -> bool:
         return topic in self._connections
@@ -135,25 +159,77 @@ def read_messages(bag: Path, human_ids: Sequence[str] = ()) -> Iterator[Message]
                 continue
 
 
+@dataclass(frozen=True)
+class RecoveredChannel:
+    """A channel of an MCAP file as its records say: what a repaired bag needs to register it."""
+
+    topic: str
+    msgtype: str
+    schema_encoding: str  # ros2msg or ros2idl
+    msgdef: str  # the message definition (with its dependencies), as recorded
+    message_encoding: str  # cdr
+    offered_qos: str  # the channel's offered_qos_profiles (YAML), as recorded
+
+
+STREAM_ERRORS = (McapError, EOFError, ValueError, struct.error)  # what reading a cut MCAP file raises
+
+
+def _cut_chunk(rest: bytes) -> Iterator[McapRecord]:
+    """The whole records at the start of a chunk cut short by the end of the file (rosbags writes
+    chunks uncompressed, so they can be read up to the cut)."""
+    if len(rest) < 9 or rest[0] != CHUNK_OPCODE:
+        return
+    try:
+        off = 9 + 8 + 8 + 8 + 4  # opcode, length; message start and end time, uncompressed size, crc
+        (n,) = struct.unpack_from("<I", rest, off)
+        if n != 0:  # compressed ("zstd", "lz4"): nothing readable before the chunk's end
+            return
+        off += 4 + 8  # the compression string (empty) and the records' length
+        yield from StreamReader(BytesIO(rest[off:]), skip_magic=True).records
+    except STREAM_ERRORS:
+        return
+
+
+def _stream(f: BinaryIO) -> Iterator[McapRecord]:
+    """Every record of an MCAP file as a stream (the records inside chunks unpacked), up to where
+    the data ends, including the whole records of a chunk the end cuts short."""
+    end = f.tell()
+    try:
+        for record in StreamReader(f, skip_magic=False).records:
+            yield record
+            end = f.tell()  # (records of a chunk come once the whole chunk has been read)
+        return
+    except STREAM_ERRORS:
+        pass
+    f.seek(end)
+    yield from _cut_chunk(f.read())
+
+
+def recovered_records(path: Path) -> Iterator[tuple[RecoveredChannel, int, bytes]]:
+    """(channel, log time ns, CDR bytes) of every message one MCAP file still holds, read as a
+    stream: what a recorder killed before it wrote its footer (or metadata.yaml) leaves readable.
+    Stops quietly where the data ends (a cut file: every whole message before the cut is yielded)."""
+    with path.open("rb") as f:
+        schemas: dict[int, McapSchema] = {}
+        channels: dict[int, RecoveredChannel] = {}
+        for record in _stream(f):
+            if isinstance(record, McapSchema):
+                schemas[record.id] = record
+            elif isinstance(record, McapChannel) and record.schema_id in schemas:
+                schema = schemas[record.schema_id]
+                text = schema.data.decode("utf-8", errors="replace")
+                channels[record.id] = RecoveredChannel(
+                    record.topic, schema.name, schema.encoding, text, record.message_encoding, record.metadata.get("offered_qos_profiles", "")
+                )
+            elif isinstance(record, McapMessage) and record.channel_id in channels:
+                yield channels[record.channel_id], record.log_time, bytes(record.data)
+
+
 def recovered_messages(bag: Path) -> Iterator[tuple[str, str, int, bytes]]:
-    """(topic, type name, log time ns, CDR bytes) of every message the MCAP files of a bag still
-    hold, read as a stream: what a recorder killed before it wrote its footer (or metadata.yaml)
-    leaves readable. Stops quietly where the data ends."""
+    """(topic, type name, log time ns, CDR bytes) of every message the MCAP files of a bag still hold."""
     for path in sorted(bag.glob("*.mcap")):
-        with path.open("rb") as f:
-            schemas: dict[int, str] = {}
-            channels: dict[int, tuple[str, str]] = {}
-            try:
-                for record in StreamReader(f, skip_magic=False).records:
-                    if isinstance(record, McapSchema):
-                        schemas[record.id] = record.name
-                    elif isinstance(record, McapChannel):
-                        channels[record.id] = (record.topic, schemas.get(record.schema_id, ""))
-                    elif isinstance(record, McapMessage) and record.channel_id in channels:
-                        topic, msgtype = channels[record.channel_id]
-                        yield topic, msgtype, record.log_time, bytes(record.data)
-            except (McapError, EOFError, ValueError, struct.error):
-                continue  # a truncated file: everything before the cut was yielded
+        for channel, stamp, data in recovered_records(path):
+            yield channel.topic, channel.msgtype, stamp, data
 
 
 def readable(bag: Path) -> bool:
@@ -165,7 +241,7 @@ def readable(bag: Path) -> bool:
         return False
 
 
-def _custom_data(bag: Path) -> dict[str, str]:
+def custom_data(bag: Path) -> dict[str, str]:
     try:
         info = yaml.safe_load((bag / "metadata.yaml").read_text())["rosbag2_bagfile_information"]
         return {str(k): str(v) for k, v in (info.get("custom_data") or {}).items()}
@@ -176,7 +252,7 @@ def _custom_data(bag: Path) -> dict[str, str]:
 def wall_clock(bag: Path) -> list[tuple[int, int]]:
     """The recorder's (sim ns, wall ns) pairs, in order ([] for a bag without them)."""
     try:
-        return [(int(a), int(b)) for a, b in json.loads(_custom_data(bag).get(WALL_CLOCK_KEY, "[]"))]
+        return [(int(a), int(b)) for a, b in json.loads(custom_data(bag).get(WALL_CLOCK_KEY, "[]"))]
     except (TypeError, ValueError):
         return []
 
@@ -200,20 +276,35 @@ def to_wall_time(pairs: Sequence[tuple[int, int]], sim_s: float) -> float | None
 def lost_messages(bag: Path) -> dict[str, int]:
     """What the recorder noted as lost per topic (custom_data of metadata.yaml)."""
     try:
-        lost = json.loads(_custom_data(bag).get(LOST_KEY, "{}"))
+        lost = json.loads(custom_data(bag).get(LOST_KEY, "{}"))
         return {str(k): int(v) for k, v in lost.items()}
     except (TypeError, ValueError, AttributeError):
         return {}
 
 
+def repaired_note(bag: Path) -> str:
+    """The validity reason of a bag rebuilt by `haven repair` (or at the end of `haven run`): ""
+    for a bag its recorder closed."""
+    text = custom_data(bag).get(REPAIRED_KEY)
+    if text is None:
+        return ""
+    try:
+        info = json.loads(text)
+        n = int(info["messages"])
+    except (TypeError, ValueError, KeyError):
+        return "bag repaired (its recorder did not close it)"
+    return f"bag repaired: its recorder did not close it; {n} messages recovered from the MCAP data, the rest is lost"
+
+
 def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording, str]:
-    """The recording, and a note when it had to be recovered from a damaged bag ("" if not)."""
+    """The recording, and a note when it had to be recovered from a damaged bag or was repaired
+    ("" if neither: a bag its recorder closed)."""
     rec = Recording()
     if readable(bag):
         for m in read_messages(bag, human_ids):
             rec.add(m)
         rec.lost = lost_messages(bag)
-        return rec, ""
+        return rec, repaired_note(bag)
     if not any(bag.glob("*.mcap")):
         return rec, f"no recording: {bag} holds no MCAP file"
     n = 0
@@ -226,4 +317,4 @@ def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording,
             n += 1
         except Exception:  # noqa: BLE001 - a message cut short by the truncation
             continue
-    return rec, f"bag recovered from its MCAP data ({n} messages read; metadata or footer missing)"
+    return rec, f"bag recovered from its MCAP data ({n} messages read; metadata or footer missing: `haven repair` rebuilds it)"

@@ -2,6 +2,7 @@
 
     sessions/<scenario>_<participant>_<YYYYmmdd-HHMMSS>/
         bag/              rosbag2, MCAP storage, metadata version 9: every topic of the trial
+                          (bag.mcap.damaged beside it: the file a dead recorder left, the bag rebuilt from it)
         events.jsonl      /haven/events, one JSON object a line, written as they happen
         scenario.yaml     the scenario as run (teleoperated humans marked); its world is world.yaml
         world.yaml        a copy of the world
@@ -19,6 +20,7 @@ from __future__ import annotations
 import json
 import os
 import platform
+import re
 import subprocess
 import sys
 import time
@@ -44,13 +46,33 @@ SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = "scenario.y
 END_MARK = ".recorded_through_end"  # the recorder has the trial's end on every state stream (nodes/recorder.py)
 
 
+NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}")  # participant ids and scenario names: part of a folder name
+NAME_RULE = "1 to 64 letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
+
+
+def check_name(value: object, what: str) -> str:
+    """`value` if it is a safe name for a session folder (NAME, no '..': never a path); else
+    ValueError naming `what` (the option or the key it came from), in one line."""
+    if isinstance(value, str) and NAME.fullmatch(value) and ".." not in value:
+        return value
+    shown = repr(value) if len(repr(value)) <= 40 else repr(value)[:37] + "..."
+    raise ValueError(f"{what}: must be {NAME_RULE}, got {shown}")
+
+
 def new_session_dir(root: Path, scenario: str, participant: str) -> Path:
+    """A new folder `<scenario>_<participant>_<time>` directly inside `root` (made with its
+    parents). ValueError for a name that is not safe, or a folder that would not be inside `root`
+    (defence in depth: the names are checked where they are read); OSError if it cannot be made."""
+    check_name(scenario, "scenario name")
+    check_name(participant, "participant id")
     stamp = time.strftime("%Y%m%d-%H%M%S")
     folder = root / f"{scenario}_{participant}_{stamp}"
     n = 1
     while folder.exists():
         n += 1
         folder = root / f"{scenario}_{participant}_{stamp}-{n}"
+    if folder.resolve().parent != root.resolve():
+        raise ValueError(f"session folder {folder} would not be inside --sessions {root}")
     folder.mkdir(parents=True)
     return folder
 

@@ -8,11 +8,13 @@
                        [--web [--host H] [--port P]]  ... with first-person participant pages and a researcher console
     haven teleop [HUMAN]                              drive a participant's avatar from the keyboard
     haven report SESSION... [--out CSV]               metrics recomputed from recordings
+    haven repair SESSION...                           rebuild a bag its recorder never closed (killed, disk full)
     haven play SESSION [--rate R] [--hold]            a recorded session back on the graph (latched topics latched)
     haven topics | echo TOPIC | hz TOPIC              graph inspection without the ros2 command
     haven bridge [--host H] [--port P]                live Foxglove WebSocket view of a running suite
     haven batch SCENARIO --trials N --seed S          simulated trials without ROS, one CSV row each
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
+    haven validate FILE...                            check world and scenario files without starting anything
 
 Discovery stays on this machine unless --network is given (study data stays local). Each group of
 subcommands lives in `haven_scenarios.tools.commands`.
@@ -23,14 +25,22 @@ from __future__ import annotations
 import argparse
 import sys
 from collections.abc import Sequence
+from typing import NoReturn
+
+
+class Parser(argparse.ArgumentParser):
+    """Usage errors in one line (naming the argument), with where to find the usage."""
+
+    def error(self, message: str) -> NoReturn:
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from haven_scenarios.tools.commands import clients, studies, suite, trial
+    from haven_scenarios.tools.commands import clients, files, recordings, studies, suite, trial
 
-    parser = argparse.ArgumentParser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
+    parser = Parser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    for group in (suite, clients, trial, studies):
+    for group in (suite, clients, trial, studies, recordings, files):
         group.add(sub)
     return parser
 

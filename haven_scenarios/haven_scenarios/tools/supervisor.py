@@ -4,6 +4,9 @@ Each child runs in its own session, so a terminal's Ctrl-C reaches only the supe
 stops the children in order: SIGTERM (the nodes' clean shutdown; a node still importing just ends,
 where SIGINT would print a KeyboardInterrupt traceback), then SIGKILL.
 When one child exits on its own, the rest are stopped too: a study never runs half a suite.
+No orphans, however the supervisor ends: any catchable stop signal (SIGHUP when the terminal or the
+SSH session closes, too) is a stop request, and the kernel sends each child SIGTERM when the
+supervisor dies of anything else (SIGKILL, a crash): PR_SET_PDEATHSIG.
 """
 
 from __future__ import annotations
@@ -17,6 +20,9 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from importlib import resources
 from types import FrameType, TracebackType
+from typing import Any, TextIO, cast
+
+from haven_sim.runtime.process import STOP_SIGNALS, die_with_parent
 
 
 @dataclass(frozen=True)
@@ -40,17 +46,47 @@ def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args:
     return argv + list(ros_args)
 
 
+# Settings that would take discovery beyond this machine (an inherited discovery range is overridden).
+NETWORK_REACHING = ("ROS_STATIC_PEERS", "ROS_DISCOVERY_SERVER")
+
+
 def ros_environment(base: Mapping[str, str] | None = None, network: bool = False, domain_id: int | None = None) -> dict[str, str]:
     """The environment for node processes: discovery on localhost unless `network`, and the
     quick-discovery Fast DDS profile unless the user chose one."""
     env = dict(os.environ if base is None else base)
-    env["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "SUBNET" if network else env.get("ROS_AUTOMATIC_DISCOVERY_RANGE", "LOCALHOST")
+    env["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "SUBNET" if network else "LOCALHOST"  # whatever the shell says
+    if not network:
+        for name in NETWORK_REACHING:
+            env.pop(name, None)
     if domain_id is not None:
         env["ROS_DOMAIN_ID"] = str(domain_id)
     profile = resources.files("haven_sim") / "config" / "fastdds.xml"
     env.setdefault("FASTRTPS_DEFAULT_PROFILES_FILE", str(profile))
     env.setdefault("PYTHONUNBUFFERED", "1")
     return env
+
+
+class Forgiving:
+    """A text stream whose writes never raise (after SIGHUP a closed terminal answers EIO): the
+    session is still finished and its files written when nobody can read the summary."""
+
+    def __init__(self, stream: TextIO) -> None:
+        self._stream = stream
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._stream, name)
+
+    def write(self, text: str) -> int:
+        try:
+            return self._stream.write(text)
+        except OSError:
+            return len(text)
+
+    def flush(self) -> None:
+        try:
+            self._stream.flush()
+        except OSError:
+            pass
 
 
 @dataclass
@@ -65,6 +101,7 @@ class Supervisor:
         self.grace_s = grace_s
         self.procs: dict[str, subprocess.Popen[bytes]] = {}
         self._stop_requested = False
+        self._preexec = die_with_parent()  # (haven starts no threads, so a preexec_fn is safe)
 
     def __enter__(self) -> Supervisor:
         return self
@@ -74,7 +111,7 @@ class Supervisor:
 
     def start(self, spec: ProcessSpec) -> subprocess.Popen[bytes]:
         env = {**self.env, **spec.env}
-        proc = subprocess.Popen(list(spec.argv), env=env, cwd=spec.cwd, start_new_session=True)
+        proc = subprocess.Popen(list(spec.argv), env=env, cwd=spec.cwd, start_new_session=True, preexec_fn=self._preexec)
         self.procs[spec.name] = proc
         return proc
 
@@ -91,10 +128,12 @@ class Supervisor:
 
     def request_stop(self, signum: int | None = None, frame: FrameType | None = None) -> None:
         self._stop_requested = True
+        if signum == signal.SIGHUP:  # the terminal may be gone: what is still said must not fail
+            sys.stdout, sys.stderr = cast(TextIO, Forgiving(sys.stdout)), cast(TextIO, Forgiving(sys.stderr))
 
     def install_signal_handlers(self) -> None:
-        signal.signal(signal.SIGINT, self.request_stop)
-        signal.signal(signal.SIGTERM, self.request_stop)
+        for sig in STOP_SIGNALS:
+            signal.signal(sig, self.request_stop)
 
     def wait(self, timeout_s: float | None = None, until_exit_of: str | None = None) -> Exited | None:
         """Block until a stop is requested, the timeout passes, or a child exits (only

@@ -1,7 +1,7 @@
 """How every HAVEN node process runs: init, build, spin until asked to stop, clean up.
 
-A stop signal (SIGINT, SIGTERM, SIGHUP) only sets a flag that the spin loop checks between
-callbacks: no KeyboardInterrupt lands in the middle of a callback or of a message being
+A stop signal (SIGINT, SIGTERM, SIGHUP, and the other catchable ones that would end the process)
+only sets a flag that the spin loop checks between callbacks: no KeyboardInterrupt lands in the middle of a callback or of a message being
 deserialised, and `destroy_node` runs while the context still works, so a node can still read its
 subscriptions then (the recorder writes what its readers hold into the bag).
 """
@@ -22,9 +22,9 @@ from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 
 from haven_sim.runtime.component import Message
+from haven_sim.runtime.process import STOP_SIGNALS
 from haven_sim.sim.world import WorldError
 
-STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
 THROTTLE_S = 5.0  # at most one line per call site in this long about input a node cannot use
 POLL_S = 0.1  # how soon a stop request is noticed when nothing else happens
 _stop = threading.Event()

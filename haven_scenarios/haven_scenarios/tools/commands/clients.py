@@ -8,7 +8,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from haven_scenarios.tools.commands.common import add_ros_options, environment, fail, positive, run_client
+from haven_scenarios.tools.commands.common import PORT, add_ros_options, bounded_int, environment, fail, finite, port_free, positive, run_client
 from haven_scenarios.tools.supervisor import node_argv
 from haven_sim.sim.world import WorldError, resolve_world_path
 from haven_sim.sim.world_file import load_world
@@ -16,9 +16,9 @@ from haven_sim.sim.world_file import load_world
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     goto = sub.add_parser("goto", help="send a goal to a running suite (like RViz's 2D Goal Pose) and wait for it")
-    goto.add_argument("x", type=float)
-    goto.add_argument("y", type=float)
-    goto.add_argument("yaw", type=float, nargs="?", default=0.0, help="radians (default 0)")
+    goto.add_argument("x", type=finite)
+    goto.add_argument("y", type=finite)
+    goto.add_argument("yaw", type=finite, nargs="?", default=0.0, help="radians (default 0)")
     goto.add_argument("--timeout", type=positive, default=120.0, help="sim seconds to wait for arrival")
     goto.set_defaults(func=goto_cmd)
     snap = sub.add_parser("snapshot", help="save what a running suite's viewers show as a top-down PNG")
@@ -37,11 +37,11 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         g = sub.add_parser(name, help=text + " (for installs without the ros2 command)")
         if name != "topics":
             g.add_argument("topic")
-        g.add_argument("--count", type=int, default=0, help=argparse.SUPPRESS if name != "echo" else "stop after N messages")
+        g.add_argument("--count", type=bounded_int(0), default=0, help=argparse.SUPPRESS if name != "echo" else "stop after N messages")
         g.set_defaults(func=graph_cmd)
     bridge = sub.add_parser("bridge", help="relay the running suite's topics to a Foxglove WebSocket server")
     bridge.add_argument("--host", default="127.0.0.1", help="address to bind (default 127.0.0.1: this machine only)")
-    bridge.add_argument("--port", type=int, default=8765)
+    bridge.add_argument("--port", type=PORT, default=8765)
     bridge.add_argument("--topics", nargs="+", default=None, help="only these topics (default: every topic)")
     bridge.set_defaults(func=bridge_cmd)
     play = sub.add_parser("play", help="play a recorded session back onto the graph, latched topics latched (for installs without ros2 bag)")
@@ -94,5 +94,8 @@ def graph_cmd(args: argparse.Namespace) -> int:
 
 
 def bridge_cmd(args: argparse.Namespace) -> int:
+    busy = port_free(args.host, args.port)
+    if busy:
+        return fail(busy)
     extra = ["-p", f"topics:=[{','.join(args.topics)}]"] if args.topics else []
     return run_client(args, "bridge", "haven_scenarios.nodes.bridge", {"host": args.host, "port": args.port}, extra)

@@ -3,8 +3,10 @@
 from __future__ import annotations
 
 import argparse
+import math
+import socket
 import sys
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
@@ -19,23 +21,72 @@ NODE_MODULES = {
 }
 
 
-def positive(text: str) -> float:
+MAX_DOMAIN_ID = 232  # DDS's port arithmetic ends here (0..101 also keeps clear of Linux's ephemeral ports)
+
+
+def finite(text: str) -> float:
     try:
         value = float(text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"must be a finite number, got {text}")
+    return value
+
+
+def positive(text: str) -> float:
+    value = finite(text)
     if not value > 0:
         raise argparse.ArgumentTypeError(f"must be positive, got {text}")
     return value
 
 
+def bounded_int(low: int, high: int | None = None) -> Callable[[str], int]:
+    """An argparse type: an integer in low..high."""
+
+    def parse(text: str) -> int:
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected an integer, got {text!r}") from None
+        if value < low or (high is not None and value > high):
+            raise argparse.ArgumentTypeError(f"must be {'at least ' + str(low) if high is None else f'{low}..{high}'}, got {value}")
+        return value
+
+    parse.__name__ = "integer"  # (argparse names the type in its messages)
+    return parse
+
+
+def existing_file(text: str) -> str:
+    p = Path(text)
+    if not p.is_file():
+        raise argparse.ArgumentTypeError(f"{text}: {'not a regular file' if p.exists() else 'no such file'}")
+    return text
+
+
+PORT = bounded_int(0, 65535)
+SEED = bounded_int(0)  # (numpy takes no negative seed)
+
+
+def port_free(host: str, port: int) -> str | None:
+    """None if the port can be bound on `host` (0: any free one), else why not: checked before
+    anything starts, so a busy port is one line, not a server's traceback."""
+    try:
+        with socket.socket() as s:
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            s.bind((host, port))
+    except (OSError, OverflowError) as e:
+        return f"--host {host} --port {port}: {getattr(e, 'strerror', None) or e}"
+    return None
+
+
 def add_ros_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--domain-id", type=int, default=None, help="ROS_DOMAIN_ID for the nodes (default: inherited)")
+    p.add_argument("--domain-id", type=bounded_int(0, MAX_DOMAIN_ID), default=None, help="ROS_DOMAIN_ID for the nodes (default: inherited)")
     p.add_argument("--network", action="store_true", help="allow DDS discovery beyond localhost")
 
 
 def add_suite_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--params-file", default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
+    p.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
     p.add_argument(
         "--without",
         nargs="+",

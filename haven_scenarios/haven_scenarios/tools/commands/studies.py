@@ -12,7 +12,7 @@ from haven_scenarios.run.batch import progress_bar, run_batch, summary
 from haven_scenarios.run.suite import load_suite_config
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
-from haven_scenarios.tools.commands.common import fail
+from haven_scenarios.tools.commands.common import SEED, bounded_int, existing_file, fail
 
 CONDITION_HELP = "cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator (default: the scenario's condition)"
 
@@ -24,11 +24,11 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     report.set_defaults(func=report_cmd)
     batch = sub.add_parser("batch", help="run many simulated trials without ROS, one CSV row per trial")
     batch.add_argument("scenario", help=f"a shipped scenario ({', '.join(scenario_names())}) or a scenario YAML")
-    batch.add_argument("--trials", type=int, default=10)
-    batch.add_argument("--seed", type=int, default=0)
+    batch.add_argument("--trials", type=bounded_int(1), default=10)
+    batch.add_argument("--seed", type=SEED, default=0)
     batch.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
     batch.add_argument("--out", default=None, help="CSV path (default: sessions/batch_<scenario>_<time>.csv)")
-    batch.add_argument("--params-file", default=None, help="ROS parameter YAML (the same file `haven run` takes)")
+    batch.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML (the same file `haven run` takes)")
     batch.set_defaults(func=batch_cmd)
 
 

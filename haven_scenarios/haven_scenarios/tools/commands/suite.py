@@ -6,16 +6,18 @@ import argparse
 import sys
 from pathlib import Path
 
-from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, new_session_dir, provenance, write_json
+from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, check_name, new_session_dir, provenance, write_json
 from haven_scenarios.tools.commands.common import (
     add_ros_options,
     add_suite_options,
+    bounded_int,
     environment,
     fail,
     params_file,
     positive,
     suite_specs,
 )
+from haven_scenarios.tools.commands.recordings import repair_bag
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
 from haven_sim.sim.world import WorldError, resolve_world_path
 from haven_sim.sim.world_file import load_world
@@ -30,7 +32,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     sim.set_defaults(func=run_suite)
     demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
     _suite_arguments(demo, rtf=4.0)
-    demo.add_argument("--laps", type=int, default=1)
+    demo.add_argument("--laps", type=bounded_int(1), default=1)
     demo.set_defaults(func=run_suite)
 
 
@@ -44,7 +46,7 @@ def _suite_arguments(p: argparse.ArgumentParser, rtf: float) -> None:
 def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
     """A session folder for `haven sim --record`: no scenario, no trial; the bag, the world and a
     record of how it was run."""
-    name = load_world(world).name
+    name = check_name(load_world(world).name, f"{world}: name")
     folder = new_session_dir(root, "sim", name)
     (folder / WORLD_FILE).write_text(Path(world).read_text())
     info = {
@@ -71,7 +73,10 @@ def run_suite(args: argparse.Namespace) -> int:
     until, timeout = None, getattr(args, "duration", None)
     folder = None
     if getattr(args, "record", False):
-        folder = _ad_hoc_session(Path(args.sessions), world, args)
+        try:
+            folder = _ad_hoc_session(Path(args.sessions), world, args)
+        except (ValueError, OSError) as e:
+            return fail(f"--sessions {args.sessions}: {getattr(e, 'strerror', None) or e}")
         recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": "."}, params_file=params_file(args))
         specs.insert(0, ProcessSpec("recorder", recorder, cwd=str(folder.resolve())))
     if args.command == "demo":
@@ -85,6 +90,7 @@ def run_suite(args: argparse.Namespace) -> int:
         exited = sup.wait(timeout_s=timeout, until_exit_of=until)
         codes = sup.stop(first=tuple(n for n in sup.pids() if n != "recorder"))  # the recorder last: it gets everything
     if folder is not None:
+        repair_bag(folder / "bag", how="haven sim --record")  # (a recorder that died leaves a bag to mend)
         print(f"haven: recorded in {folder}")
     if exited is not None and not (exited.name == until and exited.code == 0):
         print(f"haven: {exited.name} exited with code {exited.code}; stopped the others", file=sys.stderr)

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import argparse
-import socket
+import shutil
 import sys
 import time
 from dataclasses import dataclass, field, replace
@@ -18,6 +18,7 @@ from haven_scenarios.record.session import (
     SESSION_FILE,
     WORLD_FILE,
     analyse,
+    check_name,
     new_session_dir,
     provenance,
     session_info,
@@ -32,9 +33,10 @@ from haven_scenarios.run.trial import condition_name, parse_condition, scenario_
 from haven_scenarios.study.director import any_reader
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
-from haven_scenarios.tools.commands.common import add_ros_options, add_suite_options, environment, fail, positive, suite_specs
+from haven_scenarios.tools.commands.common import PORT, SEED, add_ros_options, add_suite_options, environment, fail, port_free, positive, suite_specs
+from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
 from haven_scenarios.tools.commands.studies import CONDITION_HELP
-from haven_scenarios.tools.supervisor import Exited, ProcessSpec, Supervisor, node_argv
+from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind
@@ -57,7 +59,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument(
         "--free-running", action="store_true", help="simulated participants on the free-running clock too (machine load then changes what happens)"
     )
-    run.add_argument("--seed", type=int, default=0)
+    run.add_argument("--seed", type=SEED, default=0)
     run.add_argument(
         "--teleop",
         nargs="*",
@@ -75,7 +77,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         "--web", action="store_true", help="serve the participants' first-person pages and the researcher console (the URLs are printed)"
     )
     web.add_argument("--host", default="127.0.0.1", help="address the pages are served on (0.0.0.0: the lab network; default: this machine)")
-    web.add_argument("--port", type=int, default=8088, help="port of the pages (default 8088)")
+    web.add_argument("--port", type=PORT, default=8088, help="port of the pages (default 8088)")
     web.add_argument("--researcher-start", action="store_true", help="the trial starts on the console's Start, not when the participants are ready")
     web.add_argument("--no-map-inset", action="store_true", help="no map inset on the participants' pages")
     add_ros_options(run)
@@ -187,17 +189,6 @@ def _web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
     return ProcessSpec("web", node_argv("haven_scenarios.nodes.web_node", params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))
 
 
-def port_free(host: str, port: int) -> str | None:
-    """None if the pages' port can be bound, else why not (checked before anything starts)."""
-    try:
-        with socket.socket() as s:
-            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-            s.bind((host, port))
-    except OSError as e:
-        return f"--host {host} --port {port}: {e.strerror}"
-    return None
-
-
 def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
     """Until the recorder has the `trial_end` event and the state streams up to it (it writes
     END_MARK), or `timeout_s` (a stream that stopped: a node died), before everything stops."""
@@ -211,16 +202,59 @@ def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
     mark.unlink(missing_ok=True)
 
 
-def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path, timeout_s: float | None) -> Exited | None:
+def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path, timeout_s: float | None) -> Ended:
+    started = time.monotonic()
     with Supervisor(environment(args)) as sup:
         sup.install_signal_handlers()
         for spec in specs:
             sup.start(spec)
         exited = sup.wait(timeout_s=timeout_s, until_exit_of="scenario")
+        timed_out = exited is None and timeout_s is not None and time.monotonic() - started >= timeout_s
         sup.stop(first=("scenario",))  # (a scenario stopped mid-trial still publishes trial_end, interrupted)
-        _wait_for_recorded_end(folder, 10.0)
-        sup.stop()
-    return exited
+        if exited is None or exited.name != "recorder":  # (a dead recorder marks no end)
+            _wait_for_recorded_end(folder, 10.0)
+        codes = sup.stop()
+    return Ended(exited, timed_out, codes.get("recorder"))
+
+
+def _session_info(plan: SessionPlan) -> dict[str, Any]:
+    """session.json as the run starts (its outcome is written however the run ends)."""
+    scenario, rtf = plan.scenario, plan.real_time_factor
+    return {
+        "participant": plan.participant,
+        "condition": condition_name(plan.toggles),
+        "cues": {c: getattr(plan.toggles, c) for c in CUES},
+        "seed": plan.seed,
+        "scenario": scenario.name,
+        "scenario_file": SCENARIO_FILE,
+        "world_file": WORLD_FILE,
+        "params_file": PARAMS_FILE,
+        "clock": "lockstep" if plan.lockstep else "free-running",
+        "real_time_factor": None if rtf >= UNCAPPED_RTF else rtf,
+        "humans": [h.id for h in scenario.world.humans],
+        "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
+        **provenance(),
+        "without": list(plan.without),
+        **plan.extra,
+        "outcome": NO_OUTCOME,
+    }
+
+
+def _new_session(plan: SessionPlan, sessions: Path) -> tuple[Path, dict[str, Any]]:
+    """The session folder with the run's inputs and session.json; ValueError (one line) if it
+    cannot be made: a name that is not safe, --sessions under a file, not writable, a full disk."""
+    try:
+        folder = new_session_dir(sessions, plan.scenario.name, plan.participant)
+    except OSError as e:
+        raise ValueError(f"--sessions {sessions}: cannot make a session folder there: {e.strerror or e}") from None
+    info = _session_info(plan)
+    try:
+        write_inputs(folder, plan.scenario, render(plan.config(folder), header=SESSION_PARAMS_HEADER))
+        write_json(folder / SESSION_FILE, info)
+    except OSError as e:
+        shutil.rmtree(folder, ignore_errors=True)  # (only the inputs just copied: nothing is lost)
+        raise ValueError(f"{folder}: cannot write the session's files: {e.strerror or e}") from None
+    return folder, info
 
 
 def _finish(folder: Path, scenario: Scenario, info: dict[str, Any], wall: float) -> dict[str, Any]:
@@ -236,28 +270,13 @@ def _finish(folder: Path, scenario: Scenario, info: dict[str, Any], wall: float)
 
 
 def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> int:
-    """Run and record one trial into a new session folder under `sessions`; the exit code."""
+    """Run and record one trial into a new session folder under `sessions`; the exit code.
+    session.json gets the run's outcome however it ends."""
     scenario, lockstep, rtf = plan.scenario, plan.lockstep, plan.real_time_factor
-    folder = new_session_dir(sessions, scenario.name, plan.participant)
-    write_inputs(folder, scenario, render(plan.config(folder), header=SESSION_PARAMS_HEADER))
-    info: dict[str, Any] = {
-        "participant": plan.participant,
-        "condition": condition_name(plan.toggles),
-        "cues": {c: getattr(plan.toggles, c) for c in CUES},
-        "seed": plan.seed,
-        "scenario": scenario.name,
-        "scenario_file": SCENARIO_FILE,
-        "world_file": WORLD_FILE,
-        "params_file": PARAMS_FILE,
-        "clock": "lockstep" if lockstep else "free-running",
-        "real_time_factor": None if rtf >= UNCAPPED_RTF else rtf,
-        "humans": [h.id for h in scenario.world.humans],
-        "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
-        **provenance(),
-        "without": list(plan.without),
-        **plan.extra,
-    }
-    write_json(folder / SESSION_FILE, info)
+    try:
+        folder, info = _new_session(plan, sessions)
+    except ValueError as e:
+        return fail(str(e))
     pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf < UNCAPPED_RTF else "") if lockstep else f"{rtf:g}x real time"
     print(
         f"haven: {scenario.name} trial, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
@@ -269,17 +288,35 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
     specs = _specs(folder, lockstep, plan.without)
     if plan.web is not None:
         specs.append(_web_spec(plan, plan.web, folder))
-    exited = _supervise(args, specs, folder, None if plan.web is not None else limit)  # the researcher decides when it starts
-    wall = time.monotonic() - started
-    metrics = _finish(folder, scenario, info, wall)
+    ended, metrics, repaired = None, None, None
+    try:
+        ended = _supervise(args, specs, folder, None if plan.web is not None else limit)  # the researcher decides when it starts
+        if ended.died is not None:
+            print(f"haven: {exit_text(ended.died.name, ended.died.code)}; the trial was cut short", file=sys.stderr, flush=True)
+        repaired = repair_bag(folder / "bag", "haven run" + (f" ({exit_text(ended.died.name, ended.died.code)})" if ended.died else ""))
+        if repaired is not None:
+            info["bag_repaired"] = repair_record(repaired)
+        metrics = _finish(folder, scenario, info, time.monotonic() - started)
+    except OSError as e:  # a full disk while the session is completed: what was written stays
+        print(f"haven: error: {folder}: {e.strerror or e}", file=sys.stderr)
+        return 1
+    finally:
+        info["outcome"] = outcome(ended, metrics["end_reason"] if metrics else None, repaired, limit)
+        write_outcome(folder, info)
+    return _said(folder, ended, metrics, time.monotonic() - started)
+
+
+def _said(folder: Path, ended: Ended, metrics: dict[str, Any], wall: float) -> int:
+    """The run's last lines, and its exit code."""
     print(summary(metrics, wall))
     if not metrics["valid"]:
         print(f"haven: the recording is not complete: {'; '.join(metrics['invalid_reasons'])}", file=sys.stderr)
     made = sorted(p.name + ("/" if p.is_dir() else "") for p in folder.iterdir())
     print(f"haven: session in {folder} ({', '.join(made)})")
-    if exited is not None and exited.name != "scenario":
-        print(f"haven: {exited.name} exited with code {exited.code}; the trial was cut short", file=sys.stderr)
+    if ended.died is not None:
         return 1
+    if ended.timed_out:
+        print("haven: the trial did not end in time; everything was stopped", file=sys.stderr)
     return 0 if metrics["end_reason"] != EndReason.INTERRUPTED else 1
 
 
@@ -308,6 +345,11 @@ def run_cmd(args: argparse.Namespace) -> int:
         if busy:
             return fail(busy)
     participant = args.participant or "-".join(h.id for h in scenario.humans if h.model == "teleop") or "sim"
+    try:  # before any path is built from them
+        check_name(participant, "--participant")
+        check_name(scenario.name, f"{scenario.source or args.scenario}: name")
+    except ValueError as e:
+        return fail(str(e))
     plan = SessionPlan(scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, web=web, without=tuple(args.without))
     return run_session(args, plan, Path(args.sessions))
 
@@ -328,5 +370,10 @@ def rerun_cmd(args: argparse.Namespace) -> int:
     except (TypeError, ValueError) as e:
         return fail(f"{folder / SESSION_FILE}: {e}")
     without = tuple(str(n) for n in info.get("without") or ())  # (their own nodes must run again too)
-    plan = SessionPlan(scenario, toggles, seed, str(info.get("participant", "sim")), base, rtf, free, {"rerun_of": folder.name}, without=without)
+    try:  # session.json and scenario.yaml are data: their names are checked before a path is built
+        participant = check_name(info.get("participant", "sim"), f"{folder / SESSION_FILE}: participant")
+        check_name(scenario.name, f"{folder / SCENARIO_FILE}: name")
+    except ValueError as e:
+        return fail(str(e))
+    plan = SessionPlan(scenario, toggles, seed, participant, base, rtf, free, {"rerun_of": folder.name}, without=without)
     return run_session(args, plan, Path(args.sessions) if args.sessions else folder.parent)

@@ -1,0 +1,153 @@
+"""`haven repair`: rebuild the bags their recorder never closed (killed, or stopped by a full disk).
+
+`haven run` does the same at the end of a trial whose recorder died; `haven repair` is for the
+sessions left behind otherwise (a machine that lost power, an older run). The session's
+metrics.json is then recomputed from the repaired bag (flagged not valid: the bag was repaired),
+and session.json notes the repair.
+"""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from haven_scenarios.record.repair import Repaired, RepairError, needs_repair, repair
+from haven_scenarios.record.report import session_folders
+from haven_scenarios.record.session import METRICS_FILE, SESSION_FILE, analyse, session_info, write_json
+from haven_scenarios.tools.commands.common import fail
+from haven_scenarios.tools.supervisor import Exited
+
+NO_OUTCOME = "unknown: haven run ended before it wrote the outcome"
+
+
+def exit_text(name: str, code: int) -> str:
+    """How a node process ended, for a person: "recorder was killed by SIGKILL", "planner exited with code 1"."""
+    if code < 0:
+        try:
+            return f"{name} was killed by {signal.Signals(-code).name}"
+        except ValueError:
+            return f"{name} was killed by signal {-code}"
+    return f"{name} exited with code {code}"
+
+
+@dataclass(frozen=True)
+class Ended:
+    """How the supervised trial ended."""
+
+    exited: Exited | None  # the node whose exit ended it (None: a stop signal or the time limit)
+    timed_out: bool = False  # the time limit passed
+    recorder_code: int | None = None  # the recorder's exit code once everything stopped
+
+    @property
+    def died(self) -> Exited | None:
+        """The node that ended the trial by exiting when it should not have."""
+        e = self.exited
+        return e if e is not None and (e.name != "scenario" or e.code != 0) else None
+
+
+def outcome(ended: Ended | None, end_reason: str | None, repaired: Repaired | None, limit_s: float) -> str:
+    """session.json's `outcome`: how the run ended, in words (also when it ended by an exception)."""
+    if ended is None:
+        text = "interrupted: haven run stopped before the nodes were stopped in order"
+    elif ended.died is not None:
+        text = f"cut short: {exit_text(ended.died.name, ended.died.code)}"
+    elif ended.timed_out:
+        text = f"cut short: the trial did not end within {limit_s:.0f} s (wall)"
+    elif ended.exited is None:
+        text = "interrupted (stopped by a signal)"
+    else:
+        text = end_reason or "unknown: the metrics were not computed"
+    code = ended.recorder_code if ended is not None else None
+    if code not in (None, 0) and not (ended is not None and ended.died is not None and ended.died.name == "recorder"):
+        text += f"; {exit_text('recorder', code)} while stopping"
+    if repaired is not None:
+        text += f"; bag repaired ({repaired.messages} messages recovered)"
+    return text
+
+
+def write_outcome(folder: Path, info: dict[str, Any]) -> None:
+    """session.json with the run's outcome; a full disk is said in one line (the outcome with it)."""
+    try:
+        write_json(folder / SESSION_FILE, info)
+    except OSError as e:
+        print(f"haven: error: cannot write {folder / SESSION_FILE}: {e.strerror or e} (outcome: {info['outcome']})", file=sys.stderr)
+
+
+def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    p = sub.add_parser("repair", help="rebuild the bags of sessions whose recorder died (metadata.yaml and footer from the MCAP data)")
+    p.add_argument("paths", nargs="+", type=Path, metavar="SESSION", help="session folders, folders of sessions, or bag folders")
+    p.set_defaults(func=repair_cmd)
+
+
+def repair_bag(bag: Path, how: str = "haven repair") -> Repaired | None:
+    """Repair `bag` if it needs it, saying so in one line on stderr; None if it did not need it or
+    could not be repaired (then the line says why, and the damaged files are left as they were)."""
+    if not needs_repair(bag):
+        return None
+    try:
+        done = repair(bag, how)
+    except RepairError as e:
+        print(f"haven: {e}", file=sys.stderr)
+        return None
+    print(f"haven: {done.line()}", file=sys.stderr)
+    return done
+
+
+def repair_record(done: Repaired) -> dict[str, object]:
+    """What session.json says about a repair."""
+    return {"messages": done.messages, "topics": done.topics, "kept": [str(p.relative_to(done.bag)) for p in done.kept], "skipped": done.skipped}
+
+
+def _rescore(folder: Path, done: Repaired) -> None:
+    """A session's metrics.json again from its repaired bag, and the repair in session.json."""
+    metrics, _, _ = analyse(folder)
+    write_json(folder / METRICS_FILE, metrics)
+    info = session_info(folder)
+    if (folder / SESSION_FILE).exists() and not info:
+        return  # an unreadable session.json is left as it is
+    info["bag_repaired"] = repair_record(done)
+    info.setdefault("outcome", NO_OUTCOME)
+    info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], valid=metrics["valid"])
+    write_json(folder / SESSION_FILE, info)
+
+
+def _bags(paths: list[Path]) -> list[tuple[Path, Path | None]]:
+    """(bag folder, its session folder or None) for every path: bag folders as given, session
+    folders and folders of sessions through their `bag`."""
+    out: list[tuple[Path, Path | None]] = []
+    for p in paths:
+        if any(p.glob("*.mcap")) or any(p.glob("*.mcap.damaged")):
+            out.append((p, p.parent if (p.parent / SESSION_FILE).is_file() and p.name == "bag" else None))
+        else:
+            out += [(folder / "bag", folder) for folder in session_folders([p]) if (folder / "bag").is_dir()]
+    return out
+
+
+def repair_cmd(args: argparse.Namespace) -> int:
+    """Every damaged bag among the paths repaired; exit 1 if one could not be, 2 for a path that is
+    not there or holds no bag."""
+    missing = [p for p in args.paths if not p.exists()]
+    if missing:
+        return fail(f"{missing[0]}: no such session folder or bag")
+    bags = _bags(list(args.paths))
+    if not bags:
+        return fail(f"no bags in {', '.join(map(str, args.paths))}")
+    failed = 0
+    for bag, folder in bags:
+        if not needs_repair(bag):
+            print(f"haven: {bag}: a complete bag, nothing to repair")
+            continue
+        done = repair_bag(bag)
+        if done is None:
+            failed += 1
+        elif folder is not None:
+            try:
+                _rescore(folder, done)
+            except OSError as e:
+                print(f"haven: {folder}: the bag is repaired but the session files could not be updated: {e.strerror or e}", file=sys.stderr)
+                failed += 1
+    return 1 if failed else 0

@@ -1,0 +1,34 @@
+"""How HAVEN's processes end: the signals that mean "stop cleanly", and children that die with
+their supervisor however it ends (Linux's PR_SET_PDEATHSIG; elsewhere, the supervisor's own stop).
+"""
+
+from __future__ import annotations
+
+import ctypes
+import ctypes.util
+import os
+import signal
+import sys
+from collections.abc import Callable
+
+# Every signal whose default action ends a process and that a process can catch: each one stops
+# a node cleanly (the recorder closes its bag) and the supervisor with all its children.
+STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM, signal.SIGXCPU)
+PR_SET_PDEATHSIG = 1
+
+
+def die_with_parent(sig: int = signal.SIGTERM) -> Callable[[], None] | None:
+    """A `preexec_fn` that has the kernel send `sig` to the child when the process that started it
+    ends, even by SIGKILL (SIGTERM: the child still stops cleanly); None where there is no prctl.
+    libc is loaded here, before the fork, so the child only makes two system calls."""
+    if not sys.platform.startswith("linux"):
+        return None
+    prctl = ctypes.CDLL(ctypes.util.find_library("c"), use_errno=True).prctl
+    parent = os.getpid()
+
+    def preexec() -> None:
+        prctl(PR_SET_PDEATHSIG, sig, 0, 0, 0)
+        if os.getppid() != parent:  # the parent ended before the prctl: nobody would send it
+            os.kill(os.getpid(), sig)
+
+    return preexec
