@@ -59,3 +59,32 @@ def test_sim_time_converts_to_the_wall_clock_between_and_beyond_the_recorders_pa
     assert to_wall_time(pairs, 25.0) == pytest.approx(1_700_000_003.0)  # beyond: at the nearest pace
     assert to_wall_time(pairs, 5.0) == pytest.approx(1_699_999_999.0)
     assert to_wall_time([], 5.0) is None
+
+
+def test_hostile_messages_recorded_from_other_nodes_are_skipped_when_read(tmp_path):
+    """A bag holds what was on the wire, a hostile node's messages too: the reader (and so the
+    metrics) skips every one the live nodes would have refused, and reads the rest."""
+    from hostile import hostile_messages
+    from nav_msgs.msg import Odometry
+    from sensor_msgs.msg import BatteryState
+
+    from haven_sim.nodes.wire import type_name
+
+    good = conv.odometry_msg(0.0, RobotState(Pose2D(1.0, 2.0, 0.3), Twist2D(0.2, 0, 0)))
+    bag = tmp_path / "bag"
+    written = 0
+    with BagWriter(bag) as w:
+        for topic, msg_type in (("/odom", Odometry), ("/battery_state", BatteryState), ("/haven/events", String), ("/haven/cue_state", String)):
+            w.add_topic(topic, type_name(msg_type))
+            for _, msg in hostile_messages(type_name(msg_type)):
+                w.write(topic, written, bytes(serialize_message(msg)))
+                written += 1
+        w.write("/odom", written, bytes(serialize_message(good)))
+    back = list(read_messages(bag))
+    for m in back:
+        if m.topic == topics.ODOM:
+            assert abs(m.data.pose.x) <= 1e6 and abs(m.data.pose.y) <= 1e6
+        if m.topic == topics.BATTERY:
+            assert 0.0 <= m.data.level <= 1.0
+    assert back[-1].topic == topics.ODOM and back[-1].data.pose.x == 1.0
+    assert not [m for m in back if m.topic in (topics.EVENTS, topics.CUE_STATE)]  # none of the strings is one

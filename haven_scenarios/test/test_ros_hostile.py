@@ -1,4 +1,4 @@
-"""Hostile messages on every topic the suite reads (issue 14): NaN, ±inf and ±1e308 in every float
+"""Hostile messages on every topic the suite reads, and hostile values for every parameter (issue 14): NaN, ±inf and ±1e308 in every float
 field, strings that are not JSON or are JSON of the wrong shape or 100k deep, empty and 10k-long
 sequences, integer extremes, maps whose size disagrees with their data, negative clocks. No node
 may stop; afterwards the suite still does its job (a goal is reached; a recorded trial ends with
@@ -8,13 +8,15 @@ import json
 import socket
 import subprocess
 import sys
+import time
 
 import pytest
-from hostile import publish_hostile, subscribed_topics
+from hostile import publish_hostile, set_hostile_parameters, subscribed_topics
 from ros_harness import tracebacks
 from std_msgs.msg import String
 
 from haven_sim.nodes import qos
+from haven_viz.cues import CUES
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
@@ -51,11 +53,17 @@ def nodes(ros):
     return {n for n, _ in ros.node.get_node_names_and_namespaces()} - {"haven_test_probe"}
 
 
-def attack(ros, proc, names):
-    """Wait for the nodes `names`, then send every hostile message on every topic they read; each
-    node must still be on the graph afterwards and the supervising `haven` still running."""
-    assert ros.spin_until(lambda: names <= nodes(ros) and len(subscribed_topics(ros.node, names)) > 10, 90), nodes(ros)
-    wanted = subscribed_topics(ros.node, names)
+def attack(ros, proc, names, required):
+    """Wait for the nodes `names` and what they read (at least `required`; the graph is learnt a
+    piece at a time, so also until it has not grown for 2 s), then send every hostile message on
+    every topic they read; each node must still be on the graph afterwards and the supervising
+    `haven` still running."""
+    assert ros.spin_until(lambda: names <= nodes(ros) and required <= set(subscribed_topics(ros.node, names)), 90), nodes(ros)
+    wanted, since = subscribed_topics(ros.node, names), time.monotonic()
+    while time.monotonic() - since < 2.0:
+        ros.spin_for(0.2)
+        if len(now := subscribed_topics(ros.node, names)) > len(wanted):
+            wanted, since = now, time.monotonic()
     sent = publish_hostile(ros, wanted)
     assert sent > 500
     ros.spin_for(1.0)
@@ -68,11 +76,18 @@ def test_the_free_running_suite_and_the_bridge_survive_every_hostile_message_and
     port = free_port()
     suite = start(ros, "sim")
     bridge = start(ros, "bridge", "--port", str(port))
-    wanted = attack(ros, suite, SUITE | {"haven_bridge"})
-    assert {"/goal_pose", "/map", "/odom", "/haven/events", "/clock", "/haven/estop", "/cmd_vel_teleop"} <= set(wanted)
-    assert bridge.poll() is None
-    goto = ros.run([*HAVEN, "goto", "2.0", "1.0", "--domain-id", str(ros.domain_id)], timeout_s=120)
-    assert goto.returncode == 0, goto.stdout[-2000:] + goto.stderr[-2000:]
+    attack(
+        ros, suite, SUITE | {"haven_bridge"}, {"/goal_pose", "/map", "/odom", "/plan", "/haven/events", "/clock", "/haven/estop", "/cmd_vel_teleop"}
+    )
+    assert bridge.poll() is None, bridge.stdout.read()[-3000:]
+    for name in sorted(SUITE):  # parameters: refused at run time, but for the cue toggles (booleans)
+        tried, accepted = set_hostile_parameters(ros, name)
+        assert tried > 0 and all(a.split("=")[0] in CUES and a.endswith("=True") for a in accepted), (name, accepted)
+    assert suite.poll() is None and SUITE <= nodes(ros)
+    goto = ros.run([*HAVEN, "goto", "2.0", "1.0", "--timeout", "60", "--domain-id", str(ros.domain_id)], timeout_s=240)
+    if goto.returncode != 0:
+        ros.stop(suite)
+        raise AssertionError(goto.stdout[-2000:] + suite.stdout.read()[-6000:])
     for proc in (suite, bridge):
         ros.stop(proc)
         out = proc.stdout.read()
@@ -85,7 +100,9 @@ def test_a_recorded_trial_survives_every_hostile_message_and_is_scored(ros, tmp_
     scenario.write_text(CROSSING)
     sessions = tmp_path / "s"
     trial = start(ros, "run", str(scenario), "--web", "--port", str(free_port()), "--researcher-start", "--sessions", str(sessions))
-    attack(ros, trial, SUITE | {"scenario", "recorder", "web"})
+    attack(
+        ros, trial, SUITE | {"scenario", "recorder", "web"}, {"/goal_pose", "/haven/events", "/haven/trial_control", "/haven/lockstep/ack", "/odom"}
+    )
     control = ros.node.create_publisher(String, "/haven/trial_control", qos.RELIABLE)
     ros.wait_matched(control)
     control.publish(String(data="start"))

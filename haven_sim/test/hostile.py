@@ -183,3 +183,28 @@ def publish_hostile(ros: Any, wanted: dict[str, str], spin_s: float = 0.002) -> 
     for pub in pubs.values():
         ros.node.destroy_publisher(pub)
     return sent
+
+
+HOSTILE_VALUES = (float("nan"), float("inf"), -1e308, "x" * 10_000, [1.0, float("nan")], True, -(2**63))
+
+
+def set_hostile_parameters(ros: Any, node_name: str) -> tuple[int, list[str]]:
+    """Try every hostile value on every parameter of a node (through its parameter services);
+    returns (how many were tried, the names whose hostile value was accepted)."""
+    from rclpy.parameter import Parameter
+    from rclpy.parameter_client import AsyncParameterClient
+
+    client = AsyncParameterClient(ros.node, node_name)
+    assert client.wait_for_services(timeout_sec=30.0), f"{node_name} offers no parameter services"
+    listed = client.list_parameters()
+    ros.spin_until(listed.done, 30.0)
+    names = [n for n in listed.result().result.names if n not in ("use_sim_time", "qos_overrides")]
+    tried, accepted = 0, []
+    for name in names:
+        for value in HOSTILE_VALUES:
+            future = client.set_parameters([Parameter(name, value=value)])
+            assert ros.spin_until(future.done, 30.0), f"{node_name} did not answer a parameter request"
+            tried += 1
+            if future.result().results[0].successful:
+                accepted.append(f"{name}={str(value)[:20]}")
+    return tried, accepted

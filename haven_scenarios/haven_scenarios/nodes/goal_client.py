@@ -31,6 +31,7 @@ SHOWN = {
 }
 
 
+RESEND_S = 2.0  # wall seconds without an answer from the planner before the goal is sent again
 STALL_S = 15.0  # wall seconds without a planner, or without sim time moving, before giving up
 
 
@@ -43,6 +44,7 @@ class GoalClient(Node):
         self.pub = self.create_publisher(PoseStamped, "goal_pose", qos.RELIABLE)
         self.create_subscription(String, "haven/events", self._on_event, qos.EVENTS)
         self.sent_at: float | None = None
+        self.sent_wall, self.answered = 0.0, False
         # Wall-clock timer and watchdog: with sim time, a simulator that stopped would stop a
         # sim-time timer too, and the client would wait for ever.
         self.started = time.monotonic()
@@ -68,16 +70,19 @@ class GoalClient(Node):
         if stalled:
             print(f"goto: {stalled}", flush=True)
             raise SystemExit(1)
-        if self.sent_at is None:
+        if self.sent_at is None or (not self.answered and time.monotonic() - self.sent_wall > RESEND_S):
+            # (re-sent until the planner answers: a reader that matched after the send, while
+            # another one, a recorder or a bridge, was already there, never saw it)
             if self.pub.get_subscription_count() == 0:
-                return  # wait for the planner to be there
+                return  # wait for a reader
             msg = PoseStamped()
             msg.header.frame_id = "map"
             msg.header.stamp = conv.time_msg(self._now())
             msg.pose = conv.pose_msg(self.goal)
             self.pub.publish(msg)
-            self.sent_at = self._now()
-            print(f"goto: sent goal ({self.goal.x:.2f}, {self.goal.y:.2f}, yaw {self.goal.yaw:.2f})", flush=True)
+            if self.sent_at is None:
+                print(f"goto: sent goal ({self.goal.x:.2f}, {self.goal.y:.2f}, yaw {self.goal.yaw:.2f})", flush=True)
+            self.sent_at, self.sent_wall = self._now(), time.monotonic()
         elif self._now() - self.sent_at > self.timeout_s:
             print(f"goto: no arrival within {self.timeout_s:g} s", flush=True)
             raise SystemExit(1)
@@ -87,8 +92,9 @@ class GoalClient(Node):
             event = conv.event_from_msg(msg)
         except ValueError:
             return
-        if self.sent_at is None or event.kind not in SHOWN:
-            return
+        if self.sent_at is None or event.kind not in SHOWN or event.stamp < self.sent_at - 1e-6:
+            return  # (the events publisher keeps its last ones for late joiners: older ones are not ours)
+        self.answered = True
         detail = ", ".join(f"{k}={v}" for k, v in event.data.items())
         print(f"goto: {event.kind} at t={round(event.stamp, 4)} {detail}", flush=True)
         if event.kind is EventKind.GOAL_REACHED:

@@ -33,10 +33,10 @@ from rosbags.typesys import Stores, get_typestore
 from haven_scenarios.record.timeline import Recording
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventError
-from haven_sim.common.geometry import Pose2D, Twist2D, quaternion_to_yaw
+from haven_sim.common.geometry import Pose2D, Twist2D, checked_pose
 from haven_sim.common.state import RobotState, name_humans
 from haven_sim.runtime.component import Message
-from haven_sim.sim.battery import BatteryReading, PowerStatus
+from haven_sim.sim.battery import BatteryReading, PowerStatus, checked_percentage
 from haven_viz.cues import CueState
 
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
@@ -112,10 +112,9 @@ class BagWriter:
 
 
 def _pose(p: Any) -> Pose2D:
+    """(ValueError, so the message is skipped, for a pose no node should have sent.)"""
     q = p.orientation
-    if abs(q.x) + abs(q.y) + abs(q.z) + abs(q.w) < 1e-9:
-        return Pose2D(p.position.x, p.position.y, float("nan"))
-    return Pose2D(p.position.x, p.position.y, quaternion_to_yaw(q.x, q.y, q.z, q.w))
+    return checked_pose(p.position.x, p.position.y, q.x, q.y, q.z, q.w)
 
 
 def _stamp(msg: Any) -> float:
@@ -131,7 +130,7 @@ def _message(topic: str, msg: Any, human_ids: Sequence[str]) -> Message:
     if topic == topics.HUMANS:
         return Message(topic, name_humans([_pose(p) for p in msg.poses], human_ids), _stamp(msg))
     if topic == topics.BATTERY:
-        level = float(msg.percentage)
+        level = checked_percentage(msg.percentage)
         reading = BatteryReading(level, PowerStatus.DISCHARGING, float(msg.voltage), float(msg.charge), float(msg.capacity), float("nan"))
         return Message(topic, reading, _stamp(msg))
     if topic == topics.PLAN:

@@ -57,6 +57,24 @@ def quaternion_to_yaw(x: float, y: float, z: float, w: float) -> float:
     return math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
 
 
+MAX_WIRE_COORDINATE_M = 1e6  # a position beyond this in a message is nonsense (and grid arithmetic would overflow)
+
+
+def checked_pose(x: float, y: float, qx: float, qy: float, qz: float, qw: float) -> Pose2D:
+    """A pose read from a message (a live one, or one recorded in a bag) that may come from any
+    node: ValueError names the field that is not finite or out of range. The all-zero quaternion
+    is "any heading" (a NaN yaw), as a goal without a heading is sent."""
+    for name, value, bound in (("position.x", x, MAX_WIRE_COORDINATE_M), ("position.y", y, MAX_WIRE_COORDINATE_M)):
+        if not (math.isfinite(value) and abs(value) <= bound):
+            raise ValueError(f"{name} must be finite and within +-{bound:g}, got {value!r}")
+    for name, value in (("orientation.x", qx), ("orientation.y", qy), ("orientation.z", qz), ("orientation.w", qw)):
+        if not math.isfinite(value):
+            raise ValueError(f"{name} must be finite, got {value!r}")
+    if abs(qx) + abs(qy) + abs(qz) + abs(qw) < 1e-9:
+        return Pose2D(float(x), float(y), math.nan)
+    return Pose2D(float(x), float(y), quaternion_to_yaw(qx, qy, qz, qw))
+
+
 def polygon_edges(polygon: list[Point]) -> FloatArray:
     """Closed polygon -> (N, 4) array of edges x0, y0, x1, y1."""
     pts = np.asarray(polygon, dtype=float)

@@ -15,7 +15,8 @@ from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypeVar
 
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
-from rclpy.clock import Clock, ClockType
+from rclpy.clock import Clock, ClockType, JumpThreshold, TimeJump
+from rclpy.duration import Duration
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
@@ -35,6 +36,7 @@ from haven_sim.runtime.lockstep import LockstepParams
 C = TypeVar("C")
 CATCH_UP_S = 10.0  # wall time after start-up in which a latched reader picks up what latched publishers sent
 CATCH_UP_POLL_S = 0.2  # how often the graph is read for it
+CLOCK_LEAP_S = 60.0  # a jump of the clock this large either way is no simulator's step
 
 
 class ComponentNode(Node):
@@ -51,6 +53,16 @@ class ComponentNode(Node):
         self.sequencer = Sequencer()
         self.component: Component | None = None
         self.add_on_set_parameters_callback(self._check_parameters)
+        # A /clock message from another node can make time leap far ahead and back: a timer whose
+        # next call was computed from the leap would then not fire again for years. Each leap
+        # (either way) restarts the timers from the time it landed on.
+        leap = JumpThreshold(min_forward=Duration(seconds=CLOCK_LEAP_S), min_backward=Duration(seconds=-CLOCK_LEAP_S), on_clock_change=False)
+        self._leap_handle = self.get_clock().create_jump_callback(leap, post_callback=self._restart_timers)
+
+    def _restart_timers(self, jump: TimeJump) -> None:
+        for timer in self.timers:
+            if timer.clock is self.get_clock():
+                timer.reset()
 
     # -- declare and configure -------------------------------------------------------------------
     def declare_config(self, cls: type[C]) -> C:

@@ -20,9 +20,9 @@ from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import String
 
 from haven_sim.common.events import Event
-from haven_sim.common.geometry import Pose2D, Twist2D, quaternion_to_yaw, stamp_parts, yaw_to_quaternion
+from haven_sim.common.geometry import MAX_WIRE_COORDINATE_M, Pose2D, Twist2D, checked_pose, stamp_parts, yaw_to_quaternion
 from haven_sim.common.state import Goal, HumanPoses, RobotState, name_humans
-from haven_sim.sim.battery import BatteryReading, PowerStatus
+from haven_sim.sim.battery import BatteryReading, PowerStatus, checked_percentage
 from haven_sim.sim.frames import Frame
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.simulator import ScanData
@@ -33,7 +33,6 @@ def time_msg(t: float) -> Time:
     return Time(sec=sec, nanosec=nanosec)
 
 
-MAX_COORDINATE_M = 1e6  # beyond this a position is nonsense (and grid arithmetic would overflow)
 MAX_MAP_CELLS = 100_000_000  # 5 km x 5 km at 0.5 m, or 500 m x 500 m at 5 cm
 
 
@@ -67,14 +66,8 @@ def pose_msg(p: Pose2D) -> Pose:
 
 
 def pose_from_msg(msg: Pose) -> Pose2D:
-    x = _finite(msg.position.x, "position.x", MAX_COORDINATE_M)
-    y = _finite(msg.position.y, "position.y", MAX_COORDINATE_M)
-    q = msg.orientation
-    for name in ("x", "y", "z", "w"):
-        _finite(getattr(q, name), f"orientation.{name}")
-    if abs(q.x) + abs(q.y) + abs(q.z) + abs(q.w) < 1e-9:
-        return Pose2D(x, y, math.nan)
-    return Pose2D(x, y, quaternion_to_yaw(q.x, q.y, q.z, q.w))
+    p, q = msg.position, msg.orientation
+    return checked_pose(p.x, p.y, q.x, q.y, q.z, q.w)
 
 
 def twist_from_msg(msg: Twist) -> Twist2D:
@@ -161,10 +154,8 @@ def battery_msg(stamp: float, r: BatteryReading, frame_id: str = "base_link") ->
 
 
 def battery_from_msg(msg: BatteryState) -> BatteryReading:
-    if not 0.0 <= msg.percentage <= 1.0:  # (NaN, "not measured", is no use to the mission either)
-        raise ValueError(f"percentage must be within 0..1, got {msg.percentage!r}")
     status = {v: k for k, v in _STATUS.items()}.get(msg.power_supply_status, PowerStatus.DISCHARGING)
-    return BatteryReading(float(msg.percentage), status, float(msg.voltage), float(msg.charge), float(msg.capacity), math.nan)
+    return BatteryReading(checked_percentage(msg.percentage), status, float(msg.voltage), float(msg.charge), float(msg.capacity), math.nan)
 
 
 def humans_msg(stamp: float, poses: HumanPoses, frame_id: str = "map") -> PoseArray:
@@ -203,8 +194,8 @@ def occupancy_from_msg(msg: OccupancyGrid) -> OccupancyGridData:
         resolution_m=info.resolution,
         width=info.width,
         height=info.height,
-        origin_x=_finite(info.origin.position.x, "origin.position.x", MAX_COORDINATE_M),
-        origin_y=_finite(info.origin.position.y, "origin.position.y", MAX_COORDINATE_M),
+        origin_x=_finite(info.origin.position.x, "origin.position.x", MAX_WIRE_COORDINATE_M),
+        origin_y=_finite(info.origin.position.y, "origin.position.y", MAX_WIRE_COORDINATE_M),
         data=np.asarray(msg.data, dtype=np.int8).reshape(info.height, info.width),
     )
 

@@ -97,3 +97,11 @@ class Battery:
             capacity_ah=DESIGN_CAPACITY_AH,
             range_m=self.range_m,
         )
+
+
+def checked_percentage(value: float) -> float:
+    """A BatteryState percentage read from a message or a bag: ValueError unless within 0..1 (NaN,
+    "not measured", is no use to the mission or the metrics either)."""
+    if not 0.0 <= value <= 1.0:
+        raise ValueError(f"percentage must be within 0..1, got {value!r}")
+    return float(value)

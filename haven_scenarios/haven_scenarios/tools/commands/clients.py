@@ -10,6 +10,7 @@ from pathlib import Path
 
 from haven_scenarios.tools.commands.common import PORT, add_ros_options, bounded_int, environment, fail, finite, port_free, positive, run_client
 from haven_scenarios.tools.supervisor import node_argv
+from haven_sim.runtime.process import die_with_parent
 from haven_sim.sim.world import WorldError, resolve_world_path
 from haven_sim.sim.world_file import load_world
 
@@ -68,9 +69,10 @@ def snapshot_cmd(args: argparse.Namespace) -> int:
 
 
 def _call(argv: list[str], args: argparse.Namespace) -> int:
-    """In this terminal's process group, so that it reads the keyboard; Ctrl-C ends it."""
+    """In this terminal's process group, so that it reads the keyboard; Ctrl-C ends it (and it ends
+    with `haven` however that ends)."""
     try:
-        return subprocess.call(argv, env=environment(args))
+        return subprocess.call(argv, env=environment(args), preexec_fn=die_with_parent())
     except KeyboardInterrupt:
         return 0
 
