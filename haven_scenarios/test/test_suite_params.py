@@ -42,3 +42,12 @@ def test_batch_refuses_a_bad_params_file_in_one_line(tmp_path):
         [sys.executable, "-m", "haven_scenarios", "batch", "shared_room", "--params-file", str(f)], capture_output=True, text=True, timeout=60
     )
     assert r.returncode == 2 and r.stderr.strip() == "haven: error: controller: rate_hz: must be a finite number, got 'fast'"
+
+
+def test_booleans_in_a_parameter_file_are_booleans_not_numbers(tmp_path):
+    """(A session's own params.yaml says `lockstep: true`; `haven rerun` reads it back.)"""
+    from haven_scenarios.run.suite import load_suite_config
+
+    p = tmp_path / "params.yaml"
+    p.write_text("/**:\n  ros__parameters:\n    lockstep: true\n")
+    load_suite_config(str(p))

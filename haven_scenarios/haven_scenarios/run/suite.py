@@ -83,7 +83,7 @@ def load_suite_config(path: str | Path | None) -> SuiteConfig:
     params = load_params_file(path)
     for node, values in params.items():  # an integer beyond a float's range would overflow where a float is expected
         for name, v in values.items():
-            if isinstance(v, int) and finite(v) is None:
+            if isinstance(v, int) and not isinstance(v, bool) and finite(v) is None:
                 raise ParamsError(f"{file_label(path)}: {shown_key(node)}: {shown_key(name)}: must be a finite number, got {short(v)}")
     return suite_config(params)
 
