@@ -11,6 +11,7 @@ from pathlib import Path
 
 import pytest
 import yaml
+from hostile import BOMB, refused
 
 from haven_scenarios.run.suite import load_suite_config
 from haven_scenarios.study.scenario import MAX_TIMEOUT_S, ScenarioError, load_scenario
@@ -24,17 +25,6 @@ WORLDS = sorted(Path(str(resources.files("haven_scenarios") / "worlds")).glob("*
 )
 SCENARIOS = sorted(Path(str(resources.files("haven_scenarios") / "scenarios")).glob("*.yaml"))
 SCENARIO = "name: s\nworld: small_test\nkind: retrieval\n"  # small_test has human h1, rooms west and east, a charging base
-BOMB = "l0: &l0 [lol, lol, lol, lol, lol, lol, lol, lol, lol]\n" + "".join(f"l{i}: &l{i} [{', '.join([f'*l{i - 1}'] * 9)}]\n" for i in range(1, 9))
-
-
-def one_line(error, path, load, *needles):
-    with pytest.raises(error) as e:
-        load(path)
-    msg = str(e.value)
-    assert "\n" not in msg and len(msg) < 300 and msg.startswith(f"{path}: "), msg
-    for needle in needles:
-        assert needle in msg, msg
-    return msg
 
 
 def scenario_file(tmp_path, extra, name="s.yaml"):
@@ -69,48 +59,48 @@ SCENARIO_CASES = [
 
 @pytest.mark.parametrize("extra,key,problem", SCENARIO_CASES, ids=[c[0].strip()[:30] for c in SCENARIO_CASES])
 def test_bad_scenario_values_are_one_line_naming_the_key(tmp_path, extra, key, problem):
-    one_line(ScenarioError, scenario_file(tmp_path, extra), load_scenario, key, problem)
+    refused(ScenarioError, scenario_file(tmp_path, extra), load_scenario, key, problem)
 
 
 def test_scenario_names_and_world_paths_that_are_not_one_line_are_refused(tmp_path):
     p = tmp_path / "s.yaml"
     p.write_text('name: "two\\nlines"\nworld: small_test\nkind: retrieval\n')
-    one_line(ScenarioError, p, load_scenario, "name", "must be a non-empty line")
+    refused(ScenarioError, p, load_scenario, "name", "must be a non-empty line")
     p.write_text('name: s\nworld: "no\\0such"\nkind: retrieval\n')
-    one_line(ScenarioError, p, load_scenario, "world", "must be a non-empty line")
+    refused(ScenarioError, p, load_scenario, "world", "must be a non-empty line")
     with pytest.raises(ScenarioError, match="no such scenario"):
         load_scenario("no\0such")
     p.write_text(f"name: {'n' * 5000}\nworld: small_test\nkind: retrieval\n")
-    one_line(ScenarioError, p, load_scenario, "name", "at most 64 characters")
+    refused(ScenarioError, p, load_scenario, "name", "at most 64 characters")
 
 
 def test_hostile_scenario_files_get_the_world_files_reader(tmp_path):
-    one_line(ScenarioError, scenario_file(tmp_path, BOMB), load_scenario, "more than 100000 values")
+    refused(ScenarioError, scenario_file(tmp_path, BOMB), load_scenario, "more than 100000 values")
     p = tmp_path / "utf16.yaml"
     p.write_bytes(SCENARIO.encode("utf-16"))
-    one_line(ScenarioError, p, load_scenario, "UTF-16")
-    one_line(ScenarioError, "/dev/zero", load_scenario, "not a regular file")
+    refused(ScenarioError, p, load_scenario, "UTF-16")
+    refused(ScenarioError, "/dev/zero", load_scenario, "not a regular file")
     fifo = tmp_path / "fifo.yaml"
     os.mkfifo(fifo)
     guard = threading.Timer(30.0, lambda: os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK)))  # unblocks a reader that opened it
     guard.start()
     try:
-        one_line(ScenarioError, fifo, load_scenario, "not a regular file")
-        one_line(ParamsError, fifo, load_suite_config, "cannot read parameter file: not a regular file")
+        refused(ScenarioError, fifo, load_scenario, "not a regular file")
+        refused(ParamsError, fifo, load_suite_config, "cannot read parameter file: not a regular file")
     finally:
         guard.cancel()
 
 
-def test_hostile_parameter_files_get_one_line(tmp_path):
+def test_hostile_parameter_files_get_refused(tmp_path):
     p = tmp_path / "params.yaml"
     p.write_text("controller:\n  ros__parameters: {rate_hz: 10.0}\n" + BOMB)
-    one_line(ParamsError, p, load_suite_config, "more than 100000 values")
+    refused(ParamsError, p, load_suite_config, "more than 100000 values")
     p.write_bytes("controller:\n  ros__parameters: {rate_hz: 10.0}\n".encode("utf-16"))
-    one_line(ParamsError, p, load_suite_config, "not UTF-8")
+    refused(ParamsError, p, load_suite_config, "not UTF-8")
     p.write_text("controller:\n  ros__parameters: " + "[" * 10_000 + "]" * 10_000 + "\n")
-    one_line(ParamsError, p, load_suite_config, "controller.ros__parameters", "nested deeper")
+    refused(ParamsError, p, load_suite_config, "controller.ros__parameters", "nested deeper")
     p.write_text("controller:\n  ros__parameters: {rate_hz: 1" + "0" * 400 + "}\n")
-    one_line(ParamsError, p, load_suite_config, "controller: rate_hz: must be a finite number")
+    refused(ParamsError, p, load_suite_config, "controller: rate_hz: must be a finite number")
 
 
 # -- the fuzzer -------------------------------------------------------------------------------------
@@ -243,11 +233,11 @@ def _fuzz(files, load, error, seeds, tmp_path):
     assert failures == [], f"{len(failures)} of {len(seeds)} mutated files neither loaded nor got one line:\n" + "\n".join(failures[:10])
 
 
-def test_fuzzed_worlds_load_or_are_refused_in_one_line(tmp_path):
+def test_fuzzed_worlds_load_or_are_refused_in_refused(tmp_path):
     _fuzz(WORLDS, load_world, WorldError, range(1000, 1300), tmp_path)
 
 
-def test_fuzzed_scenarios_load_or_are_refused_in_one_line(tmp_path):
+def test_fuzzed_scenarios_load_or_are_refused_in_refused(tmp_path):
     _fuzz(SCENARIOS, load_scenario, ScenarioError, range(2000, 2300), tmp_path)
 
 
@@ -268,3 +258,10 @@ def test_validate_checks_worlds_and_scenarios_without_starting_anything(tmp_path
         f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key) nor a world (no 'walls' key)",
         "haven: error: /dev/zero: cannot read file: not a regular file",
     ]
+
+
+def test_validate_applies_the_session_name_rule_haven_run_applies(tmp_path, capsys):
+    p = scenario_file(tmp_path, "").with_name("esc.yaml")
+    p.write_text(SCENARIO.replace("name: s", "name: ../../escape"))
+    assert main(["validate", str(p)]) == 2
+    assert "name: must be" in capsys.readouterr().err

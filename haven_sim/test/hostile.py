@@ -48,6 +48,21 @@ INT_RANGES = {
     "uint64": (0, 2**64 - 1),
 }
 LONG = 10_000  # elements in a "long" sequence
+# A YAML alias bomb ("billion laughs"): 9^9 values in about 450 bytes.
+BOMB = "l0: &l0 [lol, lol, lol, lol, lol, lol, lol, lol, lol]\n" + "".join(f"l{i}: &l{i} [{', '.join([f'*l{i - 1}'] * 9)}]\n" for i in range(1, 9))
+
+
+def refused(error: type[Exception], path: Any, load: Any, *needles: str) -> str:
+    """The error `load(path)` raises for a hostile file: one short line naming the file, and each needle."""
+    import pytest
+
+    with pytest.raises(error) as e:
+        load(path)
+    msg = str(e.value)
+    assert "\n" not in msg and len(msg) < 300 and msg.startswith(f"{path}: "), msg
+    for needle in needles:
+        assert needle in msg, msg
+    return msg
 
 
 def message_class(type_name: str) -> Any:
@@ -165,9 +180,10 @@ def subscribed_topics(node: Any, of_nodes: set[str]) -> dict[str, str]:
     return found
 
 
-def publish_hostile(ros: Any, wanted: dict[str, str], spin_s: float = 0.002) -> int:
-    """Publish every hostile variant on every topic of `wanted` from the harness's node, with a
-    QoS every reader matches (reliable, transient local); returns the number of messages sent."""
+def publish_hostile(ros: Any, wanted: dict[str, str], spin_s: float = 0.002, keep: Any = None) -> int:
+    """Publish every hostile variant (those `keep(topic, message)` keeps, if given) on every topic
+    of `wanted` from the harness's node, with a QoS every reader matches (reliable, transient
+    local); returns the number of messages sent."""
     from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 
     qos = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
@@ -177,6 +193,8 @@ def publish_hostile(ros: Any, wanted: dict[str, str], spin_s: float = 0.002) -> 
     sent = 0
     for topic, type_name in sorted(wanted.items()):
         for _, msg in hostile_messages(type_name):
+            if keep is not None and not keep(topic, msg):
+                continue
             pubs[topic].publish(msg)
             sent += 1
             ros.spin_for(spin_s)

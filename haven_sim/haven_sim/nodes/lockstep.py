@@ -128,21 +128,20 @@ class Inbox:
             time.sleep(0.0001)
             self.take(short)
 
-    def pop(self, topic: str, n: int | None = None) -> list[Message]:
-        """The first `n` queued messages of a topic (all when None), decoded; one that cannot be
-        read is skipped with a warning. Of a state stream only the newest is decoded."""
+    def pop(self, topic: str, n: int | None = None) -> tuple[list[Message], int]:
+        """The first `n` queued messages of a topic (all when None), decoded, and how many were
+        refused (with a throttled warning): those came from outside the suite, which sends none
+        that cannot be read. Of a state stream only the newest readable one is handed over."""
         queued = self.queued[topic]
         n = len(queued) if n is None else n
         taken, self.queued[topic] = queued[:n], queued[n:]
-        if topic in topics.STATE:
-            taken = taken[-1:]
         spec, out = self.specs[topic], []
         for raw in taken:
             try:
                 out.append(Message(topic, spec.decode(deserialize_message(raw, spec.msg_type)), 0.0))
             except ValueError as e:
                 self.node.get_logger().warning(f"ignored a message on {self.node.resolve_topic_name(topic)}: {e}", throttle_duration_sec=THROTTLE_S)
-        return out
+        return (out[-1:] if topic in topics.STATE else out), len(taken) - len(out)
 
 
 def _parse(node: Node, parse: Callable[[str], T], msg: String) -> T | None:
@@ -200,20 +199,24 @@ class LockstepParticipant:
             self.hello_pub.publish(String(data=hello.to_json()))
 
     def _due_messages(self, counts: Mapping[str, int], now: float) -> list[Message]:
-        """This step's share of the queue: on one-writer topics the first announced messages (all,
-        on a topic outsiders write), on the events topic those stamped before this step (and the
-        simulator's of this step)."""
+        """This step's share of the queue: on one-writer topics the first announced messages, on
+        the events topic those stamped before this step (and the simulator's of this step).
+        Messages from outside the suite must not shift the count: a refused one is not counted,
+        and while a topic has a writer besides the suite's all its queue is handled and the count
+        starts again from the announced one (such a topic's timing is the outsider's anyway)."""
         out: list[Message] = []
         for topic in self.inbox.queued:
             if topic == topics.EVENTS:
-                events = self.later_events + self.inbox.pop(topic)
+                events = self.later_events + self.inbox.pop(topic)[0]
                 out += [m for m in events if _before(m.data, now)]
                 self.later_events = [m for m in events if not _before(m.data, now)]
                 continue
-            n = None if topic not in counts else max(0, counts[topic] - self.handled[topic])
+            outsiders = topic in counts and self.node.count_publishers(self.node.resolve_topic_name(topic)) > 1
+            n = None if topic not in counts or outsiders else max(0, counts[topic] - self.handled[topic])
             before = len(self.inbox.queued[topic])
-            out += self.inbox.pop(topic, n)
-            self.handled[topic] += before - len(self.inbox.queued[topic])
+            messages, refused = self.inbox.pop(topic, n)
+            out += messages
+            self.handled[topic] = counts[topic] if outsiders else self.handled[topic] + before - len(self.inbox.queued[topic]) - refused
         return out
 
     def _on_tick(self, msg: String) -> None:
@@ -347,7 +350,7 @@ class LockstepCoordinator:
         self.inbox.fill(self.counts)
         now = self.sim.sim.time
         for topic in self.handlers:
-            for m in self.inbox.pop(topic):
+            for m in self.inbox.pop(topic)[0]:
                 handle(self.node, topic, self.handlers[topic], m.data, now)
         ahead = self.sim.sim.time / self.rtf - (time.monotonic() - self._wall0)
         if ahead > 0:

@@ -84,7 +84,7 @@ def teleop_cmd(args: argparse.Namespace) -> int:
 def play_cmd(args: argparse.Namespace) -> int:
     bag = args.session / "bag" if (args.session / "bag").is_dir() else args.session
     if not (bag / "metadata.yaml").is_file():
-        return fail(f"{args.session}: no bag here (a session folder or its bag/, with metadata.yaml)")
+        return fail(f"{args.session}: no bag here (a session folder or its bag/ with metadata.yaml; an unclosed bag: haven repair first)")
     return run_client(args, "player", "haven_scenarios.nodes.player", {"bag": str(bag.resolve()), "rate": args.rate, "hold": args.hold})
 
 

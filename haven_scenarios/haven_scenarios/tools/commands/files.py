@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from haven_scenarios.record.session import check_name
 from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.tools.commands.common import fail
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
@@ -34,7 +35,12 @@ def describe(path: Path) -> str:
     """What a valid file is, "world NAME" or "scenario NAME": a scenario has `kind` or `world`, a world `walls`."""
     data = read_yaml(path, "file")
     if isinstance(data, dict) and ("kind" in data or "world" in data):
-        return f"scenario {parse_scenario(data, str(path)).name}"
+        name = parse_scenario(data, str(path)).name
+        try:  # (the rule `haven run` applies before it makes a session folder of the name)
+            check_name(name, f"{file_label(path)}: name")
+        except ValueError as e:
+            raise ScenarioError(str(e)) from None
+        return f"scenario {name}"
     if isinstance(data, dict) and "walls" in data:
         return f"world {parse_world(data, str(path)).name}"
     raise YamlFileError(f"{file_label(path)}: neither a scenario (no 'kind' or 'world' key) nor a world (no 'walls' key)")
