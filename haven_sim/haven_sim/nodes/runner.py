@@ -25,7 +25,7 @@ from haven_sim.runtime.component import Message
 from haven_sim.runtime.process import STOP_SIGNALS
 from haven_sim.sim.world import WorldError
 
-THROTTLE_S = 5.0  # at most one line per call site in this long about input a node cannot use
+THROTTLE_S = 5.0  # lines about input a node cannot use: at most one per call site in this many seconds
 POLL_S = 0.1  # how soon a stop request is noticed when nothing else happens
 _stop = threading.Event()
 

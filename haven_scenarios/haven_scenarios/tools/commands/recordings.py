@@ -111,7 +111,7 @@ def _rescore(folder: Path, done: Repaired) -> None:
         return  # an unreadable session.json is left as it is
     info["bag_repaired"] = repair_record(done)
     if info.get("outcome", NO_OUTCOME) == NO_OUTCOME:  # haven run itself died: the recording says how far it got
-        info["outcome"] = f"{metrics['end_reason']} (from the bag repaired by haven repair; haven run ended before it wrote the outcome)"
+        info["outcome"] = f"{NO_OUTCOME}; the repaired recording ends: {metrics['end_reason']}"
     info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], valid=metrics["valid"])
     write_json(folder / SESSION_FILE, info)
 
