@@ -17,6 +17,8 @@ from dataclasses import dataclass, field
 from enum import StrEnum
 from typing import Any
 
+from haven_sim.common.yaml_file import short
+
 MAX_EVENT_BYTES = 64 * 1024  # an event is a few hundred bytes; anything this big is refused
 
 
@@ -118,21 +120,21 @@ class Event:
             raise EventError(f"an event must be a JSON object, got {type(d).__name__}")
         kind = d.get("type")
         if not isinstance(kind, str) or kind not in _KINDS:
-            raise EventError(f"unknown event type {_short(kind)}")
+            raise EventError(f"unknown event type {short(kind)}")
         k = EventKind(kind)
         stamp = d.get("stamp")
         if isinstance(stamp, bool) or not isinstance(stamp, (int, float)) or not math.isfinite(stamp):
-            raise EventError(f"{k.value}: stamp must be a finite number, got {_short(stamp)}")
+            raise EventError(f"{k.value}: stamp must be a finite number, got {short(stamp)}")
         source = d.get("source", "")
         if not isinstance(source, str):
-            raise EventError(f"{k.value}: source must be a string, got {_short(source)}")
+            raise EventError(f"{k.value}: source must be a string, got {short(source)}")
         data = {key: v for key, v in d.items() if key not in _RESERVED}
         missing = [key for key in REQUIRED.get(k, ()) if key not in data]
         if missing:
             raise EventError(f"{k.value}: missing {', '.join(missing)}")
         for key in ("gem", "by", "id", "room", "cue", "other", "reason"):
             if key in data and not isinstance(data[key], str):
-                raise EventError(f"{k.value}: {key} must be a string, got {_short(data[key])}")
+                raise EventError(f"{k.value}: {key} must be a string, got {short(data[key])}")
         return Event(k, float(stamp), source, data)
 
     @staticmethod
@@ -149,11 +151,6 @@ class Event:
 def event(kind: EventKind, stamp: float, source: str, **data: Any) -> Event:
     """Shorthand for producers: `event(EventKind.WAITING, now, Source.PLANNER, reason=...)`."""
     return Event(kind, stamp, source, data)
-
-
-def _short(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
 
 
 class Sequencer:

@@ -28,7 +28,7 @@ from haven_sim.common.params import build, defaults, docs
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import wire
 from haven_sim.nodes.lockstep import LockstepParticipant
-from haven_sim.nodes.runner import THROTTLE_S, handle
+from haven_sim.nodes.runner import handle, refused
 from haven_sim.nodes.wire import TopicSpec, type_name
 from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import LockstepParams
@@ -106,7 +106,7 @@ class ComponentNode(Node):
                 try:
                     data = spec.decode(msg)
                 except ValueError as e:
-                    self.get_logger().warning(f"ignored a message on {self.resolve_topic_name(topic)}: {e}", throttle_duration_sec=THROTTLE_S)
+                    refused(self, topic, e)
                     return
                 self.publish(handle(self, topic, handler, data, self.now()))
 

@@ -39,7 +39,7 @@ from std_msgs.msg import String
 
 from haven_sim.common import topics
 from haven_sim.common.events import Event, Sequencer, Source
-from haven_sim.nodes.runner import THROTTLE_S, handle, stop_requested
+from haven_sim.nodes.runner import THROTTLE_S, handle, refused, stop_requested
 from haven_sim.nodes.wire import TopicSpec
 from haven_sim.runtime.component import NS_PER_S, Component, Message, due
 from haven_sim.runtime.lockstep import Ack, Hello, ParticipantInfo, Schedule, Tick, inbox_order
@@ -140,7 +140,7 @@ class Inbox:
             try:
                 out.append(Message(topic, spec.decode(deserialize_message(raw, spec.msg_type)), 0.0))
             except ValueError as e:
-                self.node.get_logger().warning(f"ignored a message on {self.node.resolve_topic_name(topic)}: {e}", throttle_duration_sec=THROTTLE_S)
+                refused(self.node, topic, e)
         return (out[-1:] if topic in topics.STATE else out), len(taken) - len(out)
 
 

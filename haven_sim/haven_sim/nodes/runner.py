@@ -49,6 +49,11 @@ def callback_failed(node: Node, e: BaseException) -> None:
     node.get_logger().error(f"a callback failed and was skipped: {type(e).__name__}: {text}{where}", throttle_duration_sec=THROTTLE_S)
 
 
+def refused(node: Node, topic: str, reason: object) -> None:
+    """One throttled line for a message a node cannot use, naming the topic and why."""
+    node.get_logger().warning(f"ignored a message on {node.resolve_topic_name(topic)}: {reason}", throttle_duration_sec=THROTTLE_S)
+
+
 def handle(node: Node, topic: str, handler: Callable[[Any, float], Sequence[Message]], data: Any, now: float) -> Sequence[Message]:
     """A component's handler on one input: a ValueError is the component refusing it (a warning
     naming the topic), anything else a failure of that message alone (`callback_failed`); either
@@ -56,7 +61,7 @@ def handle(node: Node, topic: str, handler: Callable[[Any, float], Sequence[Mess
     try:
         return handler(data, now)
     except ValueError as e:
-        node.get_logger().warning(f"ignored a message on {node.resolve_topic_name(topic)}: {e}", throttle_duration_sec=THROTTLE_S)
+        refused(node, topic, e)
     except Exception as e:  # noqa: BLE001 - see callback_failed
         callback_failed(node, e)
     return []
