@@ -69,8 +69,8 @@ def assert_independent_score_agrees(folder):
     assert m["min_human_distance_m"] == pytest.approx(s.min_human_distance_m, abs=0.02)
     assert m["robot_path_length_m"] == pytest.approx(s.robot_path_length_m, rel=0.02)
     assert m["h1_path_length_m"] == pytest.approx(s.human_path_length_m[0], rel=0.02)
-    # (98 %: on a short free-running trial one message of about 100 is 1 %; seen twice at 98.99 %
-    # with the largest gap 0.06 s. No gap over 0.1 s is the stronger promise and stays.)
+    # (98 %: seen at 98.5 % and 98.99 % on a loaded machine, single messages missing here and there,
+    # the largest gap 0.06 s; cause not found. No gap over 0.1 s is the stronger promise and stays.)
     assert s.odom_coverage >= 0.98 and s.humans_coverage >= 0.98, s
     assert s.odom_max_gap_s <= 0.1 and s.humans_max_gap_s <= 0.1, s
 
