@@ -1,0 +1,213 @@
+"""Post-trial questionnaires: the built-ins, a study's own Likert items, checking and scoring answers.
+
+Built-ins:
+  * `nasa_tlx`: the NASA Task Load Index, raw (unweighted) form: six subscales rated 0-100 in steps
+    of 5 (the paper form's 21 marks); the raw TLX is their mean (Hart & Staveland 1988; Hart 2006,
+    "NASA-TLX: 20 years later", on dropping the pairwise weighting). Performance runs from
+    "Perfect" (0) to "Failure" (100), so higher is more load on every subscale.
+  * `godspeed`: the Godspeed series (Bartneck, Kulic, Croft & Zoghbi 2009): 5-point semantic
+    differentials for anthropomorphism, animacy, likeability, perceived intelligence and perceived
+    safety; each series scores as the mean of its items. "Quiescent - Surprised" is reverse-scored
+    so that a higher perceived-safety score is always safer.
+
+A study adds its own Likert questionnaire as a mapping (in the study file, or a YAML file named on
+`haven run --questionnaire`):
+
+```yaml
+name: legibility                 # [A-Za-z0-9_]+, the score's column name
+title: About the robot           # shown above the items (default: the name)
+points: 7                        # 2..11 answer points, 1..points
+anchors: [Strongly disagree, Strongly agree]
+items:
+  - {id: side, text: "I could tell which way the robot would pass me."}
+  - {id: surprise, text: "The robot surprised me.", reverse: true}
+```
+
+Answers are integers keyed by item id; `score` gives one number per scale, named
+`<questionnaire>_<scale>` (`nasa_tlx_raw`, `nasa_tlx_mental`, ..., `godspeed_likeability`, or the
+custom questionnaire's own name). `ANSWERS_FILE` in a session folder holds, per person, each
+questionnaire's answers and scores (`answers_record`).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Mapping, Sequence
+from dataclasses import asdict, dataclass
+from typing import Any
+
+ANSWERS_FILE = "questionnaires.json"
+NAME = re.compile(r"[A-Za-z0-9_]{1,40}")
+MAX_ITEMS = 100
+MAX_TEXT = 300
+
+
+@dataclass(frozen=True)
+class Item:
+    id: str
+    text: str  # the question, or for a semantic differential the scale's low end
+    low: str  # the anchor at the scale's low end
+    high: str  # ... and at its high end
+    reverse: bool = False  # scored as (min + max - answer)
+
+
+@dataclass(frozen=True)
+class Questionnaire:
+    """One questionnaire as the participant page shows it: answers are `minimum..maximum` in `step`s."""
+
+    name: str
+    title: str
+    instructions: str
+    minimum: int
+    maximum: int
+    step: int
+    items: tuple[Item, ...]
+    scales: tuple[tuple[str, tuple[str, ...]], ...]  # (scale name, its item ids): scored as means
+
+    def to_dict(self) -> dict[str, Any]:
+        """As the web node hands it to the page (JSON)."""
+        d = asdict(self)
+        d["scales"] = {name: list(ids) for name, ids in self.scales}
+        return d
+
+
+def _tlx() -> Questionnaire:
+    subscales = (
+        ("mental", "Mental demand: how mentally demanding was the task?", "Very low", "Very high"),
+        ("physical", "Physical demand: how physically demanding was the task?", "Very low", "Very high"),
+        ("temporal", "Temporal demand: how hurried or rushed was the pace of the task?", "Very low", "Very high"),
+        ("performance", "Performance: how successful were you in accomplishing what you were asked to do?", "Perfect", "Failure"),
+        ("effort", "Effort: how hard did you have to work to accomplish your level of performance?", "Very low", "Very high"),
+        ("frustration", "Frustration: how insecure, discouraged, irritated, stressed and annoyed were you?", "Very low", "Very high"),
+    )
+    items = tuple(Item(i, text, low, high) for i, text, low, high in subscales)
+    scales = (("raw", tuple(i.id for i in items)), *((i.id, (i.id,)) for i in items))
+    return Questionnaire("nasa_tlx", "NASA Task Load Index", "Rate the trial you just did on each scale.", 0, 100, 5, items, scales)
+
+
+GODSPEED_SERIES: dict[str, tuple[tuple[str, str], ...]] = {
+    "anthropomorphism": (("Fake", "Natural"), ("Machinelike", "Humanlike"), ("Unconscious", "Conscious"),
+                         ("Artificial", "Lifelike"), ("Moving rigidly", "Moving elegantly")),
+    "animacy": (("Dead", "Alive"), ("Stagnant", "Lively"), ("Mechanical", "Organic"), ("Artificial", "Lifelike"),
+                ("Inert", "Interactive"), ("Apathetic", "Responsive")),
+    "likeability": (("Dislike", "Like"), ("Unfriendly", "Friendly"), ("Unkind", "Kind"), ("Unpleasant", "Pleasant"), ("Awful", "Nice")),
+    "intelligence": (("Incompetent", "Competent"), ("Ignorant", "Knowledgeable"), ("Irresponsible", "Responsible"),
+                     ("Unintelligent", "Intelligent"), ("Foolish", "Sensible")),
+    "safety": (("Anxious", "Relaxed"), ("Agitated", "Calm"), ("Quiescent", "Surprised")),
+}  # fmt: skip
+GODSPEED_REVERSED = {("safety", "Quiescent")}
+
+
+def _godspeed() -> Questionnaire:
+    items: list[Item] = []
+    scales: list[tuple[str, tuple[str, ...]]] = []
+    for series, pairs in GODSPEED_SERIES.items():
+        ids = tuple(f"{series}_{k + 1}" for k in range(len(pairs)))
+        items += [Item(i, f"{low} - {high}", low, high, (series, low) in GODSPEED_REVERSED) for i, (low, high) in zip(ids, pairs)]
+        scales.append((series, ids))
+    text = "Please rate your impression of the robot on these scales."
+    return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales))
+
+
+BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (_tlx(), _godspeed())}
+
+
+def _text(value: Any, where: str, limit: int = MAX_TEXT) -> str:
+    if not isinstance(value, str) or not value.strip() or len(value) > limit or "\n" in value.strip():
+        raise ValueError(f"{where}: must be one line of text (at most {limit} characters)")
+    return value.strip()
+
+
+def _name(value: Any, where: str) -> str:
+    if not isinstance(value, str) or not NAME.fullmatch(value):
+        raise ValueError(f"{where}: must be a name of letters, digits and _ (at most 40), got {str(value)[:50]!r}")
+    return value
+
+
+def likert(spec: Mapping[str, Any], where: str) -> Questionnaire:
+    """A study's own Likert questionnaire from its mapping (see the module docstring); ValueError
+    with one line naming `where` and the key."""
+    allowed = {"name", "title", "instructions", "points", "anchors", "items"}
+    extra = sorted(set(spec) - allowed)
+    if extra:
+        raise ValueError(f"{where}: unknown key {extra[0]!r} (keys: {', '.join(sorted(allowed))})")
+    name = _name(spec.get("name"), f"{where}.name")
+    if name in BUILTINS:
+        raise ValueError(f"{where}.name: {name!r} is a built-in questionnaire; name yours otherwise")
+    points = spec.get("points", 7)
+    if isinstance(points, bool) or not isinstance(points, int) or not 2 <= points <= 11:
+        raise ValueError(f"{where}.points: must be a whole number 2..11, got {str(points)[:50]!r}")
+    anchors = spec.get("anchors", ["Strongly disagree", "Strongly agree"])
+    if not isinstance(anchors, list) or len(anchors) != 2:
+        raise ValueError(f"{where}.anchors: must be a list of two labels [low, high]")
+    low, high = (_text(a, f"{where}.anchors", 60) for a in anchors)
+    raw = spec.get("items")
+    if not isinstance(raw, list) or not 1 <= len(raw) <= MAX_ITEMS:
+        raise ValueError(f"{where}.items: must be a list of 1..{MAX_ITEMS} items")
+    items: list[Item] = []
+    for k, it in enumerate(raw):
+        at = f"{where}.items[{k}]"
+        if not isinstance(it, dict) or set(it) - {"id", "text", "reverse"}:
+            raise ValueError(f"{at}: must be a mapping with id, text and optionally reverse")
+        reverse = it.get("reverse", False)
+        if not isinstance(reverse, bool):
+            raise ValueError(f"{at}.reverse: must be true or false")
+        items.append(Item(_name(it.get("id"), f"{at}.id"), _text(it.get("text"), f"{at}.text"), low, high, reverse))
+    ids = [i.id for i in items]
+    if len(set(ids)) != len(ids):
+        raise ValueError(f"{where}.items: item ids must differ")
+    title = _text(spec.get("title", name), f"{where}.title", 80)
+    instructions = _text(spec.get("instructions", "How much do you agree with each statement?"), f"{where}.instructions")
+    return Questionnaire(name, title, instructions, 1, points, 1, tuple(items), ((name, tuple(ids)),))
+
+
+def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
+    """Built-in names and Likert mappings, in order; ValueError (one line) on anything else."""
+    out: list[Questionnaire] = []
+    for k, spec in enumerate(specs):
+        at = f"{where}[{k}]"
+        if isinstance(spec, str):
+            if spec not in BUILTINS:
+                raise ValueError(f"{at}: unknown questionnaire {spec[:50]!r} (built-ins: {', '.join(BUILTINS)}, or a mapping of Likert items)")
+            out.append(BUILTINS[spec])
+        elif isinstance(spec, dict):
+            out.append(likert(spec, at))
+        else:
+            raise ValueError(f"{at}: must be a built-in name or a mapping of Likert items")
+    names = [q.name for q in out]
+    if len(set(names)) != len(names):
+        raise ValueError(f"{where}: a questionnaire is named twice")
+    return tuple(out)
+
+
+def check_answers(q: Questionnaire, answers: Any) -> dict[str, int]:
+    """Every item answered with a value on the scale; ValueError (one line) otherwise."""
+    if not isinstance(answers, dict):
+        raise ValueError(f"{q.name}: answers must be a mapping of item id to value")
+    out: dict[str, int] = {}
+    for item in q.items:
+        v = answers.get(item.id)
+        if isinstance(v, bool) or not isinstance(v, int) or not q.minimum <= v <= q.maximum or (v - q.minimum) % q.step:
+            raise ValueError(f"{q.name}.{item.id}: must be one of {q.minimum}..{q.maximum} in steps of {q.step}, got {repr(v)[:30]}")
+        out[item.id] = v
+    extra = sorted(set(answers) - set(out))
+    if extra:
+        raise ValueError(f"{q.name}: no item {str(extra[0])[:40]!r}")
+    return out
+
+
+def score(q: Questionnaire, answers: Mapping[str, int]) -> dict[str, float]:
+    """One mean per scale (reverse-scored items turned round), named `<questionnaire>_<scale>`
+    (a custom questionnaire's single scale is named as the questionnaire)."""
+    value = {i.id: (q.minimum + q.maximum - answers[i.id]) if i.reverse else answers[i.id] for i in q.items}
+    out: dict[str, float] = {}
+    for scale, ids in q.scales:
+        key = q.name if scale == q.name else f"{q.name}_{scale}"
+        out[key] = round(sum(value[i] for i in ids) / len(ids), 4)
+    return out
+
+
+def answers_record(q: Questionnaire, answers: Any, answered_at: str) -> dict[str, Any]:
+    """What `ANSWERS_FILE` holds for one person's questionnaire: checked answers, scores, when."""
+    checked = check_answers(q, answers)
+    return {"answers": checked, "scores": score(q, checked), "answered_at": answered_at}
