@@ -19,7 +19,11 @@ from haven_scenarios.study.questionnaires import ANSWERS_FILE, BUILTINS, answers
 from haven_scenarios.tools.cli import main
 
 HAVEN = [sys.executable, "-m", "haven_scenarios"]
-LEGIBILITY = {"name": "legibility", "points": 7, "items": [{"id": "side", "text": "I knew its side."}, {"id": "odd", "text": "It surprised me.", "reverse": True}]}
+LEGIBILITY = {
+    "name": "legibility",
+    "points": 7,
+    "items": [{"id": "side", "text": "I knew its side."}, {"id": "odd", "text": "It surprised me.", "reverse": True}],
+}
 STUDY = {
     "name": "pilot",
     "scenarios": ["shared_room"],
@@ -100,7 +104,9 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     with (root / "report" / "study_long.csv").open() as f:
         rows = list(csv.DictReader(f))
     assert list(rows[0])[:3] == ["participant", "human", "trial_id"] and list(rows[0])[-2:] == ["measure", "value"]
-    assert {(r["participant"], r["trial_id"]) for r in rows} == {(f"p0{k}", t) for k in (1, 2, 3) for t in ("practice1-shared_room-all", "shared_room-none", "shared_room-all")}
+    assert {(r["participant"], r["trial_id"]) for r in rows} == {
+        (f"p0{k}", t) for k in (1, 2, 3) for t in ("practice1-shared_room-all", "shared_room-none", "shared_room-all")
+    }
     closest = [r for r in rows if r["measure"] == "min_human_distance_m"]
     assert len(closest) == 9 and all(r["human"] == "" for r in closest)
     standing = [r for r in rows if r["measure"] == "time_not_moving_s" and r["human"] == "h1"]
@@ -145,6 +151,10 @@ def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, 
     assert sum(int(r["n"]) + int(r["n_invalid"]) for r in leg.values()) == 4  # 2 participants x 2 conditions: practice left out
     bad_condition = next(r["condition"] for r in rows if r["session"] == str(bad.relative_to(root)))
     assert (int(leg[bad_condition]["n"]), int(leg[bad_condition]["n_invalid"])) == (1, 1)
-    good = [float(r["value"]) for r in rows if r["measure"] == "legibility" and r["condition"] == bad_condition and r["valid"] == "True" and r["practice"] == "False"]
+    good = [
+        float(r["value"])
+        for r in rows
+        if r["measure"] == "legibility" and r["condition"] == bad_condition and r["valid"] == "True" and r["practice"] == "False"
+    ]
     assert float(leg[bad_condition]["mean"]) == pytest.approx(sum(good) / len(good))
     assert (tmp_path / "out" / "summary.png").stat().st_size > 20_000

@@ -110,7 +110,9 @@ def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) 
     assert [s.name for s in paper.scenarios] == ["hallway", "shared_room"] and len(paper.conditions) == 4
     assert [q.name for q in paper.resolved_questionnaires()] == ["nasa_tlx", "godspeed", "legibility"]
     shipped = Path(__file__).resolve().parents[1] / "haven_scenarios" / "scenarios" / "shared_room.yaml"
-    (tmp_path / "mine.yaml").write_text(shipped.read_text().replace("world: shared_room", f"world: {shipped.parents[1] / 'worlds' / 'shared_room.yaml'}"))
+    (tmp_path / "mine.yaml").write_text(
+        shipped.read_text().replace("world: shared_room", f"world: {shipped.parents[1] / 'worlds' / 'shared_room.yaml'}")
+    )
     study = load_study(write(tmp_path, scenarios=["mine.yaml"]))
     assert study.scenarios[0].spec == str((tmp_path / "mine.yaml").resolve())
 
@@ -122,7 +124,10 @@ def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) 
         ({"scenarios": ["nowhere"]}, "scenarios[0]: nowhere: no such scenario"),
         ({"scenarios": []}, "scenarios: must be a non-empty list"),
         ({"conditions": {"x": ["blink"]}}, "conditions.x: unknown cue 'blink'"),
-        ({"conditions": {"a": ["all"], "b": ["path_projection", "turn_signals", "thought_bubble", "battery_indicator"]}}, "shows the same cues as condition 'a'"),
+        (
+            {"conditions": {"a": ["all"], "b": ["path_projection", "turn_signals", "thought_bubble", "battery_indicator"]}},
+            "shows the same cues as condition 'a'",
+        ),
         ({"conditions": {"a-b": ["all"]}}, "conditions.a-b: a condition name has no '-'"),
         ({"participants": 0}, "participants: must be a whole number 1..999"),
         ({"participants": ["p1", "p1"]}, "participants[1]: participant 'p1' is listed twice"),

@@ -90,8 +90,8 @@ def panels(results: Sequence[TrialResults], questionnaires: Sequence[Questionnai
 
 
 def draw(results: Sequence[TrialResults], conditions: Sequence[str], questionnaires: Sequence[Questionnaire], out: Path, title: str) -> Path | None:
-    """summary.png: a panel per main measure, per condition a box and the trials' points for each
-    scenario, n under each; None when there is nothing to draw."""
+    """summary.png: for each main measure a panel per scenario (each on its own scale), per
+    condition a box and the trials' points, n under each; None when there is nothing to draw."""
     shown = panels(results, questionnaires)
     if not shown:
         return None
@@ -103,34 +103,31 @@ def draw(results: Sequence[TrialResults], conditions: Sequence[str], questionnai
 
     values, _ = _groups(results, pool_people=True)
     scenarios = sorted({k[0] for k in values})
-    cols = min(3, len(shown))
-    rows = math.ceil(len(shown) / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(4.6 * cols, 3.6 * rows), squeeze=False)
+    cells = [(panel, scenario) for panel in shown for scenario in scenarios]
+    cols = min(len(cells), len(scenarios) * max(1, 4 // len(scenarios)))
+    rows = math.ceil(len(cells) / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(3.9 * cols, 3.3 * rows), squeeze=False)
     rng = np.random.default_rng(0)
-    colors = plt.get_cmap("tab10").colors
-    width = 0.8 / max(len(scenarios), 1)
-    for ax, panel in zip(axes.flat, shown):
-        for j, scenario in enumerate(scenarios):
-            for i, condition in enumerate(conditions):
-                v = values.get((scenario, condition, "person" if panel.per_person else "", panel.measure), [])
-                x = i - 0.4 + width * (j + 0.5)
-                if v:
-                    ax.boxplot([v], positions=[x], widths=width * 0.8, showfliers=False, medianprops={"color": "black"})
-                    ax.scatter(x + rng.uniform(-width / 5, width / 5, len(v)), v, s=12, color=colors[j % 10], alpha=0.7, zorder=3)
-                ax.annotate(f"n={len(v)}", (x, 0), xycoords=("data", "axes fraction"), xytext=(0, 2), textcoords="offset points",
-                            ha="center", va="bottom", fontsize=7, color=colors[j % 10])  # fmt: skip
-        ax.set_xticks(range(len(conditions)), [c.replace("_", " ") for c in conditions], fontsize=8)
+    for ax, (panel, scenario) in zip(axes.flat, cells):
+        counts = []
+        for i, condition in enumerate(conditions):
+            v = values.get((scenario, condition, "person" if panel.per_person else "", panel.measure), [])
+            counts.append(len(v))
+            if v:
+                ax.boxplot([v], positions=[i], widths=0.55, showfliers=False, medianprops={"color": "black"})
+                ax.scatter(i + rng.uniform(-0.12, 0.12, len(v)), v, s=14, color=f"C{i % 10}", alpha=0.75, zorder=3)
+        ticks = [c.replace("_", "\n") + f"\nn={n}" for c, n in zip(conditions, counts)]
+        ax.set_xticks(range(len(conditions)), ticks, fontsize=8)
         ax.set_xlim(-0.6, len(conditions) - 0.4)
-        ax.set_title(panel.label, fontsize=9)
+        ax.set_title(f"{panel.label}\n{scenario}", fontsize=9)
         if panel.limits is not None:
-            ax.set_ylim(panel.limits[0] - 0.05 * (panel.limits[1] - panel.limits[0]), panel.limits[1] * 1.02)
+            low, high = panel.limits
+            ax.set_ylim(low - 0.05 * (high - low), high + 0.05 * (high - low))
         ax.grid(axis="y", alpha=0.3)
-    for ax in list(axes.flat)[len(shown) :]:
+    for ax in list(axes.flat)[len(cells) :]:
         ax.axis("off")
-    handles = [plt.Line2D([], [], marker="o", ls="", color=colors[j % 10], label=s) for j, s in enumerate(scenarios)]
-    fig.legend(handles=handles, loc="upper right", title="scenario", fontsize=8, title_fontsize=8)
-    fig.suptitle(f"{title}\nper condition: box = quartiles and median, points = trials (valid, practice left out), n = trials", fontsize=10)
-    fig.tight_layout(rect=(0, 0, 0.9 if len(scenarios) > 1 else 1, 0.95))
-    fig.savefig(out, dpi=110)
+    fig.suptitle(f"{title}\nper condition: box = quartiles and median, whiskers to 1.5 IQR, points = trials (valid; practice left out)", fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / rows / 3.3 * 1.6))
+    fig.savefig(out, dpi=100)
     plt.close(fig)
     return out

@@ -104,7 +104,7 @@ def bind(study: Study, root: Path, replan: bool = False) -> list[PlannedTrial]:
     refused (StudyError, one line) unless `replan` (then the new schedule is stored; trials done
     keep their folders, and a trial whose id and position are unchanged stays done)."""
     trials = schedule(study)
-    record = {"study": study.describe(), "source": study.source, "schedule": [t.to_json() for t in trials]}
+    record: dict[str, Any] = {"study": study.describe(), "source": study.source, "schedule": [t.to_json() for t in trials]}
     old = stored(root)
     if old is not None and not replan:
         changed = differences(old["study"], record["study"])

@@ -25,7 +25,9 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("study", help=spec)
     run.add_argument("--participant", required=True, help="the participant's id (one of the study's)")
     run.add_argument("--batch", action="store_true", help="simulated participants in this process without ROS: a quick pilot (no bag)")
-    run.add_argument("--web", action="store_true", help="the participant plays in the browser (haven run --web --teleop), questionnaires after each trial")
+    run.add_argument(
+        "--web", action="store_true", help="the participant plays in the browser (haven run --web --teleop), questionnaires after each trial"
+    )
     run.add_argument("--host", default="127.0.0.1", help="with --web: address the pages are served on")
     run.add_argument("--port", type=PORT, default=8088, help="with --web: port of the pages")
     run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN", help="these humans (default: all) are driven by the participant")
@@ -74,7 +76,8 @@ def plan_cmd(args: argparse.Namespace) -> int:
     trials = participant_schedule(study, args.participant) if args.participant else schedule(study)
     print(
         f"study {study.name}: {len(study.participants)} participant(s) x {trials_per_participant(study)} trial(s) "
-        f"({len(study.practice)} practice); {len(study.scenarios)} scenario(s) x {len(study.conditions)} condition(s) x {study.repetitions} repetition(s)"
+        f"({len(study.practice)} practice); {len(study.scenarios)} scenario(s) x {len(study.conditions)} condition(s) "
+        f"x {study.repetitions} repetition(s)"
     )
     print(f"order: {design_note(study)} Scenarios run as blocks in the file's order, each with the participant's condition order.")
     print(f"seeds: {study.seed_policy}, base {study.seed_base}; questionnaires after each trial: {_questionnaires(study)}")
@@ -164,4 +167,6 @@ def _counts(results: list[TrialResults]) -> str:
     practice = sum(1 for r in results if r.design["practice"])
     invalid = sum(1 for r in results if not r.design["valid"])
     participants = len({r.design["participant"] for r in results})
-    return f"{participants} participant(s), {len(results) - practice} trials ({practice} practice, left out of the summary), {invalid} flagged not valid"
+    return (
+        f"{participants} participant(s), {len(results) - practice} trials ({practice} practice, left out of the summary), {invalid} flagged not valid"
+    )

@@ -76,7 +76,15 @@ def _raise_stopped(signum: int, frame: FrameType | None) -> None:
 def run_batch_trial(args: argparse.Namespace, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
     """The trial in this process; True if a stop signal (or Ctrl-C) cut it short."""
     scenario = load_scenario(trial.scenario_spec)
-    extra = {"study": {"name": study.name, "trial_id": trial.trial_id, "position": trial.position, "condition": trial.condition, "practice": trial.practice}}
+    extra = {
+        "study": {
+            "name": study.name,
+            "trial_id": trial.trial_id,
+            "position": trial.position,
+            "condition": trial.condition,
+            "practice": trial.practice,
+        }
+    }
     previous = {sig: signal.signal(sig, _raise_stopped) for sig in STOP_SIGNALS if sig != signal.SIGINT}
     try:
         run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(args.params_file))
@@ -90,7 +98,8 @@ def run_batch_trial(args: argparse.Namespace, trial: PlannedTrial, sessions: Pat
 
 def describe(trial: PlannedTrial, total: int) -> str:
     practice = " (practice)" if trial.practice else ""
-    return f"trial {trial.position}/{total} {trial.trial_id}{practice}: {trial.scenario}, condition {trial.condition} ({' '.join(trial.cues)}), seed {trial.seed}"
+    cues = " ".join(trial.cues)
+    return f"trial {trial.position}/{total} {trial.trial_id}{practice}: {trial.scenario}, condition {trial.condition} ({cues}), seed {trial.seed}"
 
 
 def wait_for_enter(args: argparse.Namespace, person: bool) -> None:
@@ -129,7 +138,9 @@ def run_cmd(args: argparse.Namespace) -> int:
         return fail(f"cannot write the study's folder: {e.strerror or e}")
     todo = [t for t in progress(root, trials) if t.status != "done"]
     done = len(trials) - len(todo)
-    print(f"haven study: {study.name}, participant {args.participant}: {done}/{len(trials)} trials done; folder {root / args.participant}", flush=True)
+    print(
+        f"haven study: {study.name}, participant {args.participant}: {done}/{len(trials)} trials done; folder {root / args.participant}", flush=True
+    )
     person = args.web or args.teleop is not None
     for p in todo:
         code = _one(args, study, p, len(trials), root, questionnaires, person)
