@@ -43,4 +43,5 @@ def test_a_tiny_study_runs_each_trial_as_a_recorded_haven_run(ros, tmp_path):
     assert rep.returncode == 0, rep.stderr
     with (tmp_path / "tiny" / "report" / "study_wide.csv").open() as f:
         rows = list(csv.DictReader(f))
-    assert [(r["trial_id"], r["order_position"], r["valid"]) for r in rows] == [("shared_room-none", "1", "True"), ("shared_room-signals", "2", "True")]
+    expected = [("shared_room-none", "1", "True"), ("shared_room-signals", "2", "True")]
+    assert [(r["trial_id"], r["order_position"], r["valid"]) for r in rows] == expected

@@ -10,7 +10,7 @@ from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_
 from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
 from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
 from haven_scenarios.study.schedule import PlannedTrial, design_note, participant_schedule, schedule, trials_per_participant
-from haven_scenarios.tools.commands.common import PORT, existing_file, fail
+from haven_scenarios.tools.commands.common import PORT, add_ros_options, existing_file, fail
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -34,6 +34,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("--no-pause", action="store_true", help="with a person: do not wait for Enter between trials")
     run.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every trial")
     run.add_argument("--replan", action="store_true", help="accept a study file changed since the first run (its new schedule is stored)")
+    add_ros_options(run)
     status = steps.add_parser("status", help="per participant: trials done, failed, and what comes next")
     status.add_argument("study", help=spec)
     report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv and summary.png")

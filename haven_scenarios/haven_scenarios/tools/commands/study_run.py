@@ -40,6 +40,8 @@ def haven_run_argv(args: argparse.Namespace, trial: PlannedTrial, sessions: Path
     argv += ["--condition", *trial.cues, "--seed", str(trial.seed), "--sessions", str(sessions)]
     if args.params_file:
         argv += ["--params-file", str(Path(args.params_file).resolve())]
+    argv += ["--domain-id", str(args.domain_id)] if args.domain_id is not None else []
+    argv += ["--network"] if args.network else []
     if args.web:
         argv += ["--web", "--host", args.host, "--port", str(args.port), "--teleop", *(args.teleop or [])]
         argv += ["--questionnaire", *questionnaires] if questionnaires else []
