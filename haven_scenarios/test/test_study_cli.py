@@ -158,3 +158,25 @@ def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, 
     ]
     assert float(leg[bad_condition]["mean"]) == pytest.approx(sum(good) / len(good))
     assert (tmp_path / "out" / "summary.png").stat().st_size > 20_000
+
+
+def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(tmp_path: Path) -> None:
+    from haven_scenarios.study.progress import questionnaire_specs
+    from haven_scenarios.study.protocol import load_study
+    from haven_scenarios.study.schedule import participant_schedule
+    from haven_scenarios.tools.cli import build_parser
+    from haven_scenarios.tools.commands.study_run import haven_run_argv
+
+    path = study_file(tmp_path)
+    args = build_parser().parse_args(["study", "run", str(path), "--participant", "p02", "--web", "--port", "9000", "--domain-id", "7"])
+    study = load_study(path)
+    specs = questionnaire_specs(study, tmp_path / "studies" / "pilot")
+    trial = participant_schedule(study, "p02")[1]
+    argv = haven_run_argv(args, trial, tmp_path / "t", specs)
+    assert argv[1:5] == ["-m", "haven_scenarios", "run", "shared_room"]
+    tail = " ".join(argv[5:])
+    assert f"--participant p02 --condition {' '.join(trial.cues)} --seed 1 --sessions {tmp_path / 't'}" in tail
+    assert "--domain-id 7" in tail and "--web --host 127.0.0.1 --port 9000 --teleop --questionnaire nasa_tlx " in tail
+    written = Path(argv[-1])
+    assert written.parent == (tmp_path / "studies" / "pilot" / "questionnaires").resolve()
+    assert likert(yaml.safe_load(written.read_text()), "file") == likert(LEGIBILITY, "file")  # the study's own, as `haven run` reads it
