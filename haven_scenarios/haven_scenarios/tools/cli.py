@@ -13,6 +13,7 @@
     haven topics | echo TOPIC | hz TOPIC              graph inspection without the ros2 command
     haven bridge [--host H] [--port P]                live Foxglove WebSocket view of a running suite
     haven batch SCENARIO --trials N --seed S          simulated trials without ROS, one CSV row each
+    haven study plan|run|status|report STUDY          a whole study: schedule, a participant's trials, progress, tables
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
     haven validate FILE...                            check world and scenario files without starting anything
 
@@ -36,11 +37,11 @@ class Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from haven_scenarios.tools.commands import clients, files, recordings, studies, suite, trial
+    from haven_scenarios.tools.commands import clients, files, recordings, studies, study, suite, trial
 
     parser = Parser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    for group in (suite, clients, trial, studies, recordings, files):
+    for group in (suite, clients, trial, studies, study, recordings, files):
         group.add(sub)
     return parser
 

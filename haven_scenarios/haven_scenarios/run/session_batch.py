@@ -1,0 +1,53 @@
+"""One batch-mode trial (simulated participants in this process, no ROS) written as a session
+folder: session.json, metrics.json and events.jsonl as `haven run` writes them, without the bag.
+
+session.json is written first with the outcome unknown, so a trial stopped part-way leaves a
+folder that says so (a study then runs it again), and completed when the trial has ended.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+from haven_scenarios.record.session import METRICS_FILE, SESSION_FILE, new_session_dir, provenance, write_json
+from haven_scenarios.run.suite import SuiteConfig
+from haven_scenarios.run.trial import condition_name, parse_condition, run_trial
+from haven_scenarios.study.scenario import Scenario
+from haven_viz.cues import CUES
+
+NO_OUTCOME = "unknown: the batch trial ended before it wrote the outcome"
+EVENTS_FILE = "events.jsonl"
+
+
+def run_batch_session(
+    scenario: Scenario, participant: str, cues: tuple[str, ...], seed: int, sessions: Path, extra: dict[str, Any], suite: SuiteConfig | None = None
+) -> tuple[Path, dict[str, Any]]:
+    """Run the trial into a new session folder under `sessions`; (the folder, its metrics)."""
+    if any(h.model == "teleop" for h in scenario.humans):
+        raise ValueError(f"scenario {scenario.name} has a teleoperated participant: a batch trial needs simulated ones")
+    toggles = parse_condition(cues)
+    folder = new_session_dir(sessions, scenario.name, participant)
+    info: dict[str, Any] = {
+        "participant": participant,
+        "condition": condition_name(toggles),
+        "cues": {c: getattr(toggles, c) for c in CUES},
+        "seed": seed,
+        "scenario": scenario.name,
+        "clock": "batch",
+        "humans": [h.id for h in scenario.world.humans],
+        "teleoperated": [],
+        **provenance(),
+        **extra,
+        "outcome": NO_OUTCOME,
+    }
+    write_json(folder / SESSION_FILE, info)
+    result = run_trial(scenario, seed, toggles, suite)
+    with (folder / EVENTS_FILE).open("w", encoding="utf-8") as f:
+        for e in result.recording.events:
+            f.write(e.to_json() + "\n")
+    metrics = {**result.metrics, "participant": participant, "session": folder.name}
+    write_json(folder / METRICS_FILE, metrics)
+    info.update(end_reason=str(result.end_reason), duration_s=metrics["duration_s"], valid=metrics["valid"], outcome=str(result.end_reason))
+    write_json(folder / SESSION_FILE, info)
+    return folder, metrics

@@ -1,0 +1,275 @@
+"""Study files: which scenarios and cue conditions, who takes part, how often, in which order.
+
+```yaml
+name: haven_paper                  # the study's folder: studies/<name>
+scenarios: [hallway, shared_room]  # shipped names or scenario files (relative to this file)
+conditions:                        # name: the cues shown (a list `haven run --condition` takes)
+  none: [none]
+  path_projection: [path_projection]
+  all: [all]
+participants: 8                    # a count (p01..p08) or a list of ids [p01, anna, ...]
+repetitions: 1                     # each scenario x condition this often per participant
+counterbalancing: williams         # williams | latin | full | none (see study/schedule.py)
+practice:                          # run first, flagged practice, left out of the statistics
+  - {scenario: shared_room, condition: all}
+seeds: {policy: per_participant, base: 0}   # fixed | per_participant | per_trial
+questionnaires: [nasa_tlx, godspeed]        # after each trial: built-ins or Likert mappings
+```
+
+Scenarios run as blocks in the file's order; each block shows the conditions in the participant's
+counterbalanced order (repetitions repeat that order within the block). Seeds: `fixed` gives
+every trial `base`; `per_participant` gives participant k (from 0, in the list's order) `base + k`
+for all their trials, so conditions differ in the cue alone for each person; `per_trial` gives
+every trial of the study its own seed, `base + k * trials per participant + position - 1`.
+
+Errors name the file and the key in one line (`StudyError`), as scenario files do; the file is read
+with `haven_sim.common.yaml_file` (size, nesting and alias limits).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from haven_scenarios.record.session import check_name
+from haven_scenarios.run.trial import parse_condition
+from haven_scenarios.study.questionnaires import Questionnaire, resolve
+from haven_scenarios.study.scenario import ScenarioError, load_scenario
+from haven_sim.common.yaml_file import file_label, read_yaml, short, shown_key
+
+DESIGNS = ("williams", "latin", "full", "none")
+SEED_POLICIES = ("fixed", "per_participant", "per_trial")
+MAX_PARTICIPANTS = 999
+MAX_REPETITIONS = 100
+MAX_CONDITIONS = 12  # `full` on more would be 12! orders
+TOP = ("name", "scenarios", "conditions", "participants", "repetitions", "counterbalancing", "practice", "seeds", "questionnaires")
+
+
+class StudyError(ValueError):
+    """A study file is missing or invalid; the message is one line for the user."""
+
+
+@dataclass(frozen=True)
+class StudyScenario:
+    spec: str  # as `haven run` takes it: a shipped name, or the file's absolute path
+    name: str  # the scenario's own name
+
+
+@dataclass(frozen=True)
+class Condition:
+    name: str
+    cues: tuple[str, ...]  # as `haven run --condition` takes them
+
+
+@dataclass(frozen=True)
+class Practice:
+    scenario: StudyScenario
+    condition: Condition
+
+
+@dataclass(frozen=True)
+class Study:
+    name: str
+    scenarios: tuple[StudyScenario, ...]
+    conditions: tuple[Condition, ...]
+    participants: tuple[str, ...]
+    repetitions: int = 1
+    counterbalancing: str = "williams"
+    practice: tuple[Practice, ...] = ()
+    seed_policy: str = "per_participant"
+    seed_base: int = 0
+    questionnaires: tuple[Any, ...] = ()  # as written: built-in names and Likert mappings
+    source: str = ""
+
+    def resolved_questionnaires(self) -> tuple[Questionnaire, ...]:
+        return resolve(self.questionnaires, "questionnaires")
+
+    def condition(self, name: str) -> Condition:
+        return next(c for c in self.conditions if c.name == name)
+
+    def describe(self) -> dict[str, Any]:
+        """Everything that decides the schedule and the trials, as JSON (stored with the schedule
+        to tell a changed study file)."""
+        return {
+            "name": self.name,
+            "scenarios": [[s.spec, s.name] for s in self.scenarios],
+            "conditions": {c.name: list(c.cues) for c in self.conditions},
+            "participants": list(self.participants),
+            "repetitions": self.repetitions,
+            "counterbalancing": self.counterbalancing,
+            "practice": [[p.scenario.spec, p.condition.name] for p in self.practice],
+            "seeds": {"policy": self.seed_policy, "base": self.seed_base},
+            "questionnaires": list(self.questionnaires),
+        }
+
+
+def study_names() -> list[str]:
+    return sorted(p.stem for p in Path(str(resources.files("haven_scenarios") / "studies")).glob("*.yaml"))
+
+
+def study_path(spec: str) -> Path:
+    """A study file, or a shipped study by name."""
+    p = Path(spec)
+    if p.suffix in (".yaml", ".yml") or p.exists():
+        return p
+    shipped = Path(str(resources.files("haven_scenarios") / "studies" / f"{spec}.yaml"))
+    if shipped.exists():
+        return shipped
+    raise StudyError(f"{file_label(spec)}: no such study file (shipped: {', '.join(study_names())})")
+
+
+def load_study(spec: str | Path) -> Study:
+    path = study_path(str(spec))
+    return _StudyParser(str(path)).study(read_yaml(path, "study file", StudyError))
+
+
+class _StudyParser:
+    """Reads the raw YAML tree; every error names the file and the key in one line."""
+
+    def __init__(self, source: str) -> None:
+        self.source = source
+
+    def fail(self, key: str, msg: str) -> StudyError:
+        return StudyError(f"{file_label(self.source)}: {key}: {msg}")
+
+    def whole(self, value: Any, key: str, low: int, high: int) -> int:
+        if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
+            raise self.fail(key, f"must be a whole number {low}..{high}, got {short(value)}")
+        return value
+
+    def name(self, value: Any, key: str) -> str:
+        try:
+            return check_name(value, key)
+        except ValueError as e:
+            raise self.fail(key, str(e).removeprefix(f"{key}: ")) from None
+
+    def study(self, data: Any) -> Study:
+        if not isinstance(data, dict):
+            raise self.fail("name", "the study file must be a mapping")
+        unknown = sorted(shown_key(k) for k in data if k not in TOP)
+        if unknown:
+            raise self.fail(unknown[0], f"unknown key (allowed: {', '.join(TOP)})")
+        for key in ("name", "scenarios", "conditions", "participants"):
+            if key not in data:
+                raise self.fail(key, "is required")
+        scenarios, conditions = self.scenarios(data["scenarios"]), self.conditions(data["conditions"])
+        design = data.get("counterbalancing", "williams")
+        if design not in DESIGNS:
+            raise self.fail("counterbalancing", f"must be one of {', '.join(DESIGNS)}, got {short(design)}")
+        if design == "full" and len(conditions) > 8:
+            raise self.fail("counterbalancing", f"full: {len(conditions)} conditions have too many orders; use williams")
+        policy, base = self.seeds(data.get("seeds"))
+        return Study(
+            name=self.name(data["name"], "name"),
+            scenarios=scenarios,
+            conditions=conditions,
+            participants=self.participants(data["participants"]),
+            repetitions=self.whole(data.get("repetitions", 1), "repetitions", 1, MAX_REPETITIONS),
+            counterbalancing=design,
+            practice=self.practice(data.get("practice"), scenarios, conditions),
+            seed_policy=policy,
+            seed_base=base,
+            questionnaires=self.questionnaires(data.get("questionnaires")),
+            source=self.source,
+        )
+
+    def scenario(self, value: Any, key: str) -> StudyScenario:
+        if not isinstance(value, str) or not value:
+            raise self.fail(key, f"must be a shipped scenario name or a scenario file, got {short(value)}")
+        path = Path(value)
+        if not path.is_absolute() and (Path(self.source).parent / path).is_file():
+            path = Path(self.source).parent / path
+        spec = str(path.resolve()) if path.is_file() else value
+        try:
+            scenario = load_scenario(spec)
+        except ScenarioError as e:
+            raise self.fail(key, str(e)) from None
+        return StudyScenario(spec, self.name(scenario.name, f"{key} (its name)"))
+
+    def scenarios(self, value: Any) -> tuple[StudyScenario, ...]:
+        if not isinstance(value, list) or not value:
+            raise self.fail("scenarios", f"must be a non-empty list of scenarios, got {short(value)}")
+        out = tuple(self.scenario(v, f"scenarios[{i}]") for i, v in enumerate(value))
+        names = [s.name for s in out]
+        for i, n in enumerate(names):
+            if n in names[:i]:
+                raise self.fail(f"scenarios[{i}]", f"scenario {n!r} is listed twice")
+        return out
+
+    def conditions(self, value: Any) -> tuple[Condition, ...]:
+        if not isinstance(value, dict) or not value:
+            raise self.fail("conditions", "must be a mapping of condition name to its cue list, e.g. {none: [none], all: [all]}")
+        if len(value) > MAX_CONDITIONS:
+            raise self.fail("conditions", f"at most {MAX_CONDITIONS} conditions, got {len(value)}")
+        out: list[Condition] = []
+        seen: dict[Any, str] = {}
+        for name, cues in value.items():
+            key = f"conditions.{shown_key(name)}"
+            self.name(name, key)
+            if "-" in name:  # (trial ids join scenario and condition with '-')
+                raise self.fail(key, "a condition name has no '-' (use '_')")
+            if not isinstance(cues, list) or not cues or not all(isinstance(c, str) for c in cues):
+                raise self.fail(key, f"must be a list of cue names (or [all] / [none]), got {short(cues)}")
+            try:
+                toggles = parse_condition(cues)
+            except ValueError as e:
+                raise self.fail(key, str(e)) from None
+            if toggles in seen:
+                raise self.fail(key, f"shows the same cues as condition {seen[toggles]!r}")
+            seen[toggles] = name
+            out.append(Condition(name, tuple(cues)))
+        return tuple(out)
+
+    def participants(self, value: Any) -> tuple[str, ...]:
+        if isinstance(value, int) and not isinstance(value, bool):
+            n = self.whole(value, "participants", 1, MAX_PARTICIPANTS)
+            width = max(2, len(str(n)))
+            return tuple(f"p{k:0{width}d}" for k in range(1, n + 1))
+        if not isinstance(value, list) or not value or len(value) > MAX_PARTICIPANTS:
+            raise self.fail("participants", f"must be a count (1..{MAX_PARTICIPANTS}) or a list of participant ids, got {short(value)}")
+        ids = tuple(self.name(v, f"participants[{i}]") for i, v in enumerate(value))
+        for i, p in enumerate(ids):
+            if p in ids[:i]:
+                raise self.fail(f"participants[{i}]", f"participant {p!r} is listed twice")
+        return ids
+
+    def practice(self, value: Any, scenarios: tuple[StudyScenario, ...], conditions: tuple[Condition, ...]) -> tuple[Practice, ...]:
+        if value is None:
+            return ()
+        if not isinstance(value, list):
+            raise self.fail("practice", f"must be a list of {{scenario: S, condition: C}}, got {short(value)}")
+        by_name = {c.name: c for c in conditions}
+        out = []
+        for i, p in enumerate(value):
+            key = f"practice[{i}]"
+            if not isinstance(p, dict) or set(p) != {"scenario", "condition"}:
+                raise self.fail(key, f"must be a mapping {{scenario: S, condition: C}}, got {short(p)}")
+            if p["condition"] not in by_name:
+                raise self.fail(f"{key}.condition", f"names no condition of the study ({', '.join(by_name)}), got {short(p['condition'])}")
+            listed = {s.name: s for s in scenarios}
+            scenario = listed.get(p["scenario"]) or self.scenario(p["scenario"], f"{key}.scenario")
+            out.append(Practice(scenario, by_name[p["condition"]]))
+        return tuple(out)
+
+    def seeds(self, value: Any) -> tuple[str, int]:
+        if value is None:
+            return "per_participant", 0
+        if not isinstance(value, dict) or set(value) - {"policy", "base"}:
+            raise self.fail("seeds", f"must be a mapping {{policy: P, base: N}}, got {short(value)}")
+        policy = value.get("policy", "per_participant")
+        if policy not in SEED_POLICIES:
+            raise self.fail("seeds.policy", f"must be one of {', '.join(SEED_POLICIES)}, got {short(policy)}")
+        return policy, self.whole(value.get("base", 0), "seeds.base", 0, 2**31 - 1)
+
+    def questionnaires(self, value: Any) -> tuple[Any, ...]:
+        if value is None:
+            return ()
+        if not isinstance(value, list):
+            raise self.fail("questionnaires", "must be a list of built-in names (nasa_tlx, godspeed) and Likert mappings")
+        try:
+            resolve(value, "questionnaires")
+        except ValueError as e:
+            raise StudyError(f"{file_label(self.source)}: {e}") from None
+        return tuple(value)

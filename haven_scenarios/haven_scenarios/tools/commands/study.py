@@ -1,0 +1,173 @@
+"""`haven study plan | run | status | report`: a whole study from one study file (study/protocol.py)."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from haven_scenarios.record.study_summary import SUMMARY, draw, summary_rows
+from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows, write_csv
+from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
+from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
+from haven_scenarios.study.schedule import PlannedTrial, design_note, participant_schedule, schedule, trials_per_participant
+from haven_scenarios.tools.commands.common import PORT, add_ros_options, existing_file, fail
+
+
+def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
+    study = sub.add_parser("study", help="a whole study from a study file: plan, run a participant's trials, status, report")
+    steps = study.add_subparsers(dest="step", required=True)
+    spec = f"a study file, or a shipped study ({', '.join(study_names())})"
+    plan = steps.add_parser("plan", help="print the schedule: every participant's trials in order")
+    plan.add_argument("study", help=spec)
+    plan.add_argument("--participant", default=None, help="only this participant's trials")
+    plan.set_defaults(func=plan_cmd)
+    run = steps.add_parser("run", help="run a participant's trials in order (resumable: a finished trial never runs twice)")
+    run.add_argument("study", help=spec)
+    run.add_argument("--participant", required=True, help="the participant's id (one of the study's)")
+    run.add_argument("--batch", action="store_true", help="simulated participants in this process without ROS: a quick pilot (no bag)")
+    run.add_argument(
+        "--web", action="store_true", help="the participant plays in the browser (haven run --web --teleop), questionnaires after each trial"
+    )
+    run.add_argument("--host", default="127.0.0.1", help="with --web: address the pages are served on")
+    run.add_argument("--port", type=PORT, default=8088, help="with --web: port of the pages")
+    run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN", help="these humans (default: all) are driven by the participant")
+    run.add_argument("--no-pause", action="store_true", help="with a person: do not wait for Enter between trials")
+    run.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every trial")
+    run.add_argument("--replan", action="store_true", help="accept a study file changed since the first run (its new schedule is stored)")
+    add_ros_options(run)
+    status = steps.add_parser("status", help="per participant: trials done, failed, and what comes next")
+    status.add_argument("study", help=spec)
+    report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv and summary.png")
+    report.add_argument("study", help=spec)
+    report.add_argument("--out", type=Path, default=None, help="folder for the report (default: <study dir>/report)")
+    for p in (plan, run, status, report):
+        p.add_argument("--dir", type=Path, default=None, help="the study's folder (default: studies/<study name> here)")
+    run.set_defaults(func=_run)
+    status.set_defaults(func=status_cmd)
+    report.set_defaults(func=report_cmd)
+
+
+def _run(args: argparse.Namespace) -> int:
+    from haven_scenarios.tools.commands.study_run import run_cmd  # (the runner: subprocesses, batch trials)
+
+    return run_cmd(args)
+
+
+def study_dir(args: argparse.Namespace, study: Study) -> Path:
+    return args.dir if args.dir is not None else Path("studies") / study.name
+
+
+def table(rows: list[list[str]]) -> str:
+    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+    return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows)
+
+
+def plan_rows(trials: list[PlannedTrial]) -> list[list[str]]:
+    head = ["participant", "position", "trial id", "scenario", "condition", "seed", "practice"]
+    return [head] + [[t.participant, str(t.position), t.trial_id, t.scenario, t.condition, str(t.seed), "yes" if t.practice else ""] for t in trials]
+
+
+def plan_cmd(args: argparse.Namespace) -> int:
+    try:
+        study = load_study(args.study)
+    except StudyError as e:
+        return fail(str(e))
+    if args.participant is not None and args.participant not in study.participants:
+        return fail(f"--participant: {args.participant!r} is not a participant of study {study.name} ({_listing(study)})")
+    trials = participant_schedule(study, args.participant) if args.participant else schedule(study)
+    print(
+        f"study {study.name}: {len(study.participants)} participant(s) x {trials_per_participant(study)} trial(s) "
+        f"({len(study.practice)} practice); {len(study.scenarios)} scenario(s) x {len(study.conditions)} condition(s) "
+        f"x {study.repetitions} repetition(s)"
+    )
+    print(f"order: {design_note(study)} Scenarios run as blocks in the file's order, each with the participant's condition order.")
+    print(f"seeds: {study.seed_policy}, base {study.seed_base}; questionnaires after each trial: {_questionnaires(study)}")
+    print(table(plan_rows(trials)))
+    return 0
+
+
+def _listing(study: Study) -> str:
+    ids = study.participants
+    return ", ".join(ids) if len(ids) <= 6 else f"{ids[0]} .. {ids[-1]}"
+
+
+def _questionnaires(study: Study) -> str:
+    return ", ".join(q if isinstance(q, str) else str(q.get("name")) for q in study.questionnaires) or "none"
+
+
+def _load(args: argparse.Namespace) -> tuple[Study, Path, list[TrialProgress]]:
+    """The study, its folder and every trial's progress (StudyError, one line, if unreadable)."""
+    study = load_study(args.study)
+    root = study_dir(args, study)
+    return study, root, progress(root, schedule(study))
+
+
+def status_cmd(args: argparse.Namespace) -> int:
+    try:
+        study, root, done = _load(args)
+        old = stored(root)
+    except StudyError as e:
+        return fail(str(e))
+    if old is None:
+        print(f"study {study.name}: not started in {root}")
+    else:
+        changed = differences(old["study"], study.describe())
+        note = f" (the study file changed since the first run: {', '.join(changed)}; `study run` needs --replan)" if changed else ""
+        print(f"study {study.name} in {root}{note}")
+    rows = [["participant", "done", "failed", "next"]]
+    for p in study.participants:
+        mine = [t for t in done if t.trial.participant == p]
+        failed = [t for t in mine if t.status == "failed"]
+        following = next((t for t in mine if t.status != "done"), None)
+        rows.append([p, f"{sum(t.status == 'done' for t in mine)}/{len(mine)}", ", ".join(_failed(t) for t in failed) or "-", _next(following)])
+    print(table(rows))
+    total = sum(t.status == "done" for t in done)
+    print(f"{total}/{len(done)} trials done")
+    return 0
+
+
+def _failed(t: TrialProgress) -> str:
+    last = t.attempts[-1].outcome
+    return f"{t.trial.folder} ({len(t.attempts)} attempt(s), last: {last[:60]})"
+
+
+def _next(t: TrialProgress | None) -> str:
+    if t is None:
+        return "- (all done)"
+    tr = t.trial
+    return f"{tr.folder}: {tr.scenario}, {tr.condition}, seed {tr.seed}" + (", practice" if tr.practice else "")
+
+
+def report_cmd(args: argparse.Namespace) -> int:
+    try:
+        study, root, done = _load(args)
+        questionnaires = study.resolved_questionnaires()
+    except (StudyError, ValueError) as e:
+        return fail(str(e))
+    results = [r for r in (trial_results(t) for t in done) if r is not None]
+    if not results:
+        return fail(f"no finished trials of study {study.name} in {root} (see `haven study status`)")
+    out = args.out if args.out is not None else root / "report"
+    try:
+        write_csv(out / "study_long.csv", long_rows(results), LONG)
+        write_csv(out / "study_wide.csv", wide_rows(results), DESIGN)
+        conditions = [c.name for c in study.conditions]
+        write_csv(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
+        picture = draw(results, conditions, questionnaires, out / "summary.png", f"{study.name}: {_counts(results)}")
+    except OSError as e:
+        return fail(f"--out {out}: cannot write the report: {e.strerror or e}")
+    print(f"haven: study {study.name}: {len(results)}/{len(done)} trials done; {_counts(results)}")
+    print(f"haven: wrote {out / 'study_long.csv'}, study_wide.csv, summary.csv" + (", summary.png" if picture else " (no measures to draw)"))
+    old = stored(root)
+    if old is not None and differences(old["study"], study.describe()):
+        print(f"haven: note: the study file changed since the first run in {root}")
+    return 0
+
+
+def _counts(results: list[TrialResults]) -> str:
+    practice = sum(1 for r in results if r.design["practice"])
+    invalid = sum(1 for r in results if not r.design["valid"])
+    participants = len({r.design["participant"] for r in results})
+    return (
+        f"{participants} participant(s), {len(results) - practice} trials ({practice} practice, left out of the summary), {invalid} flagged not valid"
+    )

@@ -1,0 +1,183 @@
+"""`haven study run`: one participant's trials in order, each into its own trial folder.
+
+Each trial is a `haven run` subprocess (this python; with `--web` the participant plays in the
+browser and answers the study's questionnaires after it), or with `--batch` a batch trial in this
+process. The child runs in this process group, so a terminal's Ctrl-C reaches it too and it ends
+its trial cleanly (its session folder says "interrupted"); a stop signal sent to this process
+alone is passed on; and the child dies with this process however it ends (die_with_parent).
+A trial that does not finish stops the study: the same command later runs it again.
+"""
+
+from __future__ import annotations
+
+import argparse
+import signal
+import subprocess
+import sys
+from pathlib import Path
+from types import FrameType
+
+from haven_scenarios.run.session_batch import run_batch_session
+from haven_scenarios.run.suite import load_suite_config
+from haven_scenarios.study.progress import TrialProgress, attempts, bind, progress, questionnaire_specs, trial_dir
+from haven_scenarios.study.protocol import Study, StudyError, load_study
+from haven_scenarios.study.scenario import ScenarioError, load_scenario
+from haven_scenarios.study.schedule import PlannedTrial
+from haven_scenarios.tools.commands.common import fail
+from haven_scenarios.tools.commands.study import study_dir
+from haven_sim.runtime.process import STOP_SIGNALS, die_with_parent
+
+INTERRUPTED = 130
+
+
+class Stopped(Exception):
+    """A stop signal arrived: the study stops after the current trial has ended cleanly."""
+
+
+def haven_run_argv(args: argparse.Namespace, trial: PlannedTrial, sessions: Path, questionnaires: list[str]) -> list[str]:
+    """`haven run` for one trial of the schedule."""
+    argv = [sys.executable, "-m", "haven_scenarios", "run", trial.scenario_spec, "--participant", trial.participant]
+    argv += ["--condition", *trial.cues, "--seed", str(trial.seed), "--sessions", str(sessions)]
+    if args.params_file:
+        argv += ["--params-file", str(Path(args.params_file).resolve())]
+    argv += ["--domain-id", str(args.domain_id)] if args.domain_id is not None else []
+    argv += ["--network"] if args.network else []
+    if args.web:
+        argv += ["--web", "--host", args.host, "--port", str(args.port), "--teleop", *(args.teleop or [])]
+        argv += ["--questionnaire", *questionnaires] if questionnaires else []
+    elif args.teleop is not None:
+        argv += ["--teleop", *args.teleop]
+    return argv
+
+
+def run_child(argv: list[str]) -> bool:
+    """Run `haven run` to its end; True if a stop signal arrived meanwhile (passed on as SIGTERM,
+    the child's clean stop; a Ctrl-C at the terminal reaches it directly)."""
+    stopped = False
+    proc = subprocess.Popen(argv, preexec_fn=die_with_parent())
+
+    def forward(signum: int, frame: FrameType | None) -> None:
+        nonlocal stopped
+        stopped = True
+        if proc.poll() is None:
+            proc.send_signal(signal.SIGTERM)
+
+    previous = {sig: signal.signal(sig, forward) for sig in STOP_SIGNALS}
+    try:
+        proc.wait()
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+    return stopped
+
+
+def _raise_stopped(signum: int, frame: FrameType | None) -> None:
+    raise Stopped()
+
+
+def run_batch_trial(args: argparse.Namespace, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
+    """The trial in this process; True if a stop signal (or Ctrl-C) cut it short."""
+    scenario = load_scenario(trial.scenario_spec)
+    extra = {
+        "study": {
+            "name": study.name,
+            "trial_id": trial.trial_id,
+            "position": trial.position,
+            "condition": trial.condition,
+            "practice": trial.practice,
+        }
+    }
+    previous = {sig: signal.signal(sig, _raise_stopped) for sig in STOP_SIGNALS if sig != signal.SIGINT}
+    try:
+        run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(args.params_file))
+    except (KeyboardInterrupt, Stopped):
+        return True
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+    return False
+
+
+def describe(trial: PlannedTrial, total: int) -> str:
+    practice = " (practice)" if trial.practice else ""
+    cues = " ".join(trial.cues)
+    return f"trial {trial.position}/{total} {trial.trial_id}{practice}: {trial.scenario}, condition {trial.condition} ({cues}), seed {trial.seed}"
+
+
+def wait_for_enter(args: argparse.Namespace, person: bool) -> None:
+    """With a person, between trials: until the researcher presses Enter (not with --no-pause, or
+    when nobody is at the terminal)."""
+    if person and not args.no_pause and sys.stdin.isatty():
+        input("haven study: press Enter to start it (Ctrl-C stops the study here; it resumes from this trial) ")
+
+
+def _check(args: argparse.Namespace, study: Study) -> str | None:
+    """What is wrong with the command line for this study, if anything."""
+    if args.participant not in study.participants:
+        shown = ", ".join(study.participants[:6]) + (" .." if len(study.participants) > 6 else "")
+        return f"--participant: {args.participant!r} is not a participant of study {study.name} ({shown})"
+    if args.batch and (args.web or args.teleop is not None):
+        return "--batch runs simulated participants in this process: not with --web or --teleop"
+    if args.batch:
+        for s in sorted({s.spec for s in study.scenarios} | {p.scenario.spec for p in study.practice}):
+            if any(h.model == "teleop" for h in load_scenario(s).humans):
+                return f"--batch: scenario {s} has a teleoperated participant (run it without --batch)"
+    return None
+
+
+def run_cmd(args: argparse.Namespace) -> int:
+    try:
+        study = load_study(args.study)
+        problem = _check(args, study)
+        if problem:
+            return fail(problem)
+        root = study_dir(args, study)
+        trials = [t for t in bind(study, root, args.replan) if t.participant == args.participant]
+        questionnaires = questionnaire_specs(study, root) if args.web else []
+    except (StudyError, ScenarioError) as e:
+        return fail(str(e))
+    except OSError as e:
+        return fail(f"cannot write the study's folder: {e.strerror or e}")
+    todo = [t for t in progress(root, trials) if t.status != "done"]
+    done = len(trials) - len(todo)
+    print(
+        f"haven study: {study.name}, participant {args.participant}: {done}/{len(trials)} trials done; folder {root / args.participant}", flush=True
+    )
+    person = args.web or args.teleop is not None
+    for p in todo:
+        code = _one(args, study, p, len(trials), root, questionnaires, person)
+        if code:
+            return code
+    print(f"haven study: participant {args.participant}: all {len(trials)} trials done (`haven study report {args.study}` for the tables)")
+    return 0
+
+
+def _one(args: argparse.Namespace, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool) -> int:
+    """Run one trial; 0 when it finished, else the study's exit code (and why, said)."""
+    trial = p.trial
+    again = f" (again: {len(p.attempts)} attempt(s) did not finish)" if p.attempts else ""
+    print(f"haven study: next: {describe(trial, total)}{again}", flush=True)
+    try:
+        wait_for_enter(args, person)
+    except (KeyboardInterrupt, EOFError):
+        print(f"\nhaven study: stopped before {trial.folder}; the same command goes on from it", file=sys.stderr)
+        return INTERRUPTED
+    sessions = trial_dir(root, trial)
+    try:
+        stopped = run_batch_trial(args, trial, sessions, study) if args.batch else run_child(haven_run_argv(args, trial, sessions, questionnaires))
+    except KeyboardInterrupt:
+        stopped = True
+    except (OSError, ValueError) as e:
+        print(f"haven: error: {trial.folder}: {e}", file=sys.stderr)
+        return 1
+    made = attempts(sessions)
+    if made and made[-1].finished:
+        print(f"haven study: {trial.folder}: {made[-1].outcome} -> {made[-1].folder}", flush=True)
+        if not stopped:
+            return 0
+    if stopped:
+        print(f"haven study: stopped during {trial.folder}; the same command goes on from the first trial not finished", file=sys.stderr)
+        return INTERRUPTED
+    outcome = made[-1].outcome if made else "no session folder was made"
+    print(f"haven study: {trial.folder} did not finish ({outcome}); the study stops here: the same command runs it again", file=sys.stderr)
+    return 1

@@ -1,0 +1,182 @@
+"""`haven study` as a researcher uses it: a batch pilot of three simulated participants, stopped
+with Ctrl-C part-way and resumed, its status, and the report's tables and figure."""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+import yaml
+
+from haven_scenarios.study.questionnaires import ANSWERS_FILE, BUILTINS, answers_record, likert
+from haven_scenarios.tools.cli import main
+
+HAVEN = [sys.executable, "-m", "haven_scenarios"]
+LEGIBILITY = {
+    "name": "legibility",
+    "points": 7,
+    "items": [{"id": "side", "text": "I knew its side."}, {"id": "odd", "text": "It surprised me.", "reverse": True}],
+}
+STUDY = {
+    "name": "pilot",
+    "scenarios": ["shared_room"],
+    "conditions": {"none": ["none"], "all": ["all"]},
+    "participants": 3,
+    "practice": [{"scenario": "shared_room", "condition": "all"}],
+    "seeds": {"policy": "per_participant", "base": 0},
+    "questionnaires": ["nasa_tlx", LEGIBILITY],
+}
+
+
+def study_file(tmp_path: Path, **changes: object) -> Path:
+    path = tmp_path / "pilot.yaml"
+    path.write_text(yaml.safe_dump({**STUDY, **changes}, sort_keys=False))
+    return path
+
+
+def sessions(root: Path) -> dict[str, list[tuple[str, str]]]:
+    """Per trial folder (`p01/02_shared_room-none`), its attempts: (session folder, outcome)."""
+    out: dict[str, list[tuple[str, str]]] = {}
+    for info in sorted(root.glob("*/*/*/session.json")):
+        trial = f"{info.parents[2].name}/{info.parents[1].name}"
+        out.setdefault(trial, []).append((info.parent.name, json.loads(info.read_text())["outcome"]))
+    return out
+
+
+def wait_for(condition, timeout_s: float = 60.0) -> None:  # type: ignore[no-untyped-def]
+    deadline = time.monotonic() + timeout_s
+    while not condition():
+        assert time.monotonic() < deadline, "timed out"
+        time.sleep(0.01)
+
+
+def haven(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([*HAVEN, *args], cwd=cwd, capture_output=True, text=True, timeout=300)
+
+
+def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice(tmp_path: Path) -> None:
+    path = study_file(tmp_path)
+    root = tmp_path / "studies" / "pilot"
+    assert haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path).returncode == 0
+    # p02: Ctrl-C (SIGINT to the process group, as a terminal sends it) once its second trial has begun.
+    proc = subprocess.Popen([*HAVEN, "study", "run", str(path), "--participant", "p02", "--batch"], cwd=tmp_path, start_new_session=True,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)  # fmt: skip
+    wait_for(lambda: any(root.glob("p02/02_*/*/session.json")))
+    os.killpg(proc.pid, signal.SIGINT)
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    assert "stopped during 02_" in err and "Traceback" not in err
+    before = sessions(root)
+    interrupted = [t for t, a in before.items() if t.startswith("p02/") and not a[-1][1] == "completed"]
+    assert interrupted == [next(t for t in before if t.startswith("p02/02_"))]
+    assert before[interrupted[0]][0][1].startswith("unknown")
+
+    status = haven("study", "status", str(path), cwd=tmp_path)
+    assert status.returncode == 0
+    lines = {line.split()[0]: line for line in status.stdout.splitlines() if line.startswith("p0")}
+    assert "3/3" in lines["p01"] and "1/3" in lines["p02"] and "1 attempt(s)" in lines["p02"] and "0/3" in lines["p03"]
+    assert "02_shared_room-" in lines["p02"].split("last:")[1]  # what comes next: the interrupted trial
+
+    for p in ("p02", "p03"):
+        r = haven("study", "run", str(path), "--participant", p, "--batch", cwd=tmp_path)
+        assert r.returncode == 0, r.stderr
+    after = sessions(root)
+    assert len(after) == 9
+    for trial, tried in before.items():  # nothing finished ran again; the interrupted attempt is kept
+        assert after[trial][: len(tried)] == tried
+        assert len(after[trial]) == len(tried) + (trial in interrupted)
+    assert all(a[-1][1] == "completed" for a in after.values())
+    again = haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path)
+    assert again.returncode == 0 and "3/3 trials done" in again.stdout and sessions(root) == after
+
+    changed = haven("study", "run", str(study_file(tmp_path, participants=4)), "--participant", "p04", "--batch", cwd=tmp_path)
+    assert changed.returncode == 2 and changed.stderr.count("\n") == 1 and "the study changed since its first run" in changed.stderr
+
+    report = haven("study", "report", str(study_file(tmp_path)), cwd=tmp_path)
+    assert report.returncode == 0, report.stderr
+    with (root / "report" / "study_long.csv").open() as f:
+        rows = list(csv.DictReader(f))
+    assert list(rows[0])[:3] == ["participant", "human", "trial_id"] and list(rows[0])[-2:] == ["measure", "value"]
+    assert {(r["participant"], r["trial_id"]) for r in rows} == {
+        (f"p0{k}", t) for k in (1, 2, 3) for t in ("practice1-shared_room-all", "shared_room-none", "shared_room-all")
+    }
+    closest = [r for r in rows if r["measure"] == "min_human_distance_m"]
+    assert len(closest) == 9 and all(r["human"] == "" for r in closest)
+    standing = [r for r in rows if r["measure"] == "time_not_moving_s" and r["human"] == "h1"]
+    assert len(standing) == 9
+    with (root / "report" / "study_wide.csv").open() as f:
+        wide = list(csv.DictReader(f))
+    assert len(wide) == 9 and "h1_time_not_moving_s" in wide[0] and "min_human_distance_m" in wide[0]
+    png = root / "report" / "summary.png"
+    assert png.stat().st_size > 20_000
+
+
+def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    conditions = {"none": ["none"], "path": ["path_projection"]}
+    path = study_file(tmp_path, participants=2, conditions=conditions, practice=[{"scenario": "shared_room", "condition": "path"}])
+    monkeypatch.chdir(tmp_path)
+    for p in ("p01", "p02"):
+        assert main(["study", "run", str(path), "--participant", p, "--batch"]) == 0
+    root = tmp_path / "studies" / "pilot"
+    tlx, legibility = BUILTINS["nasa_tlx"], likert(LEGIBILITY, "test")
+    folders = sorted(s.parent for s in root.glob("*/*/*/session.json"))
+    for k, folder in enumerate(folders):
+        answers = {"h1": {"nasa_tlx": answers_record(tlx, {i.id: 5 * k for i in tlx.items}, "2026-11-24T10:00:00"),
+                          "legibility": answers_record(legibility, {"side": 1 + k % 7, "odd": 2}, "2026-11-24T10:01:00")}}  # fmt: skip
+        (folder / ANSWERS_FILE).write_text(json.dumps(answers))
+    bad = next(f for f in folders if f.parents[1].name == "p01" and f.parent.name.startswith("02_"))
+    metrics = json.loads((bad / "metrics.json").read_text())
+    (bad / "metrics.json").write_text(json.dumps({**metrics, "valid": False, "invalid_reasons": ["lost messages"]}))
+
+    assert main(["study", "report", str(path), "--out", str(tmp_path / "out")]) == 0
+    with (tmp_path / "out" / "study_long.csv").open() as f:
+        rows = list(csv.DictReader(f))
+    tlx_rows = {(r["participant"], r["trial_id"]): r for r in rows if r["measure"] == "nasa_tlx_raw"}
+    assert len(tlx_rows) == 6 and all(r["human"] == "h1" for r in tlx_rows.values())
+    expected = {(f.parents[1].name, f.parent.name.split("_", 1)[1]): 5.0 * k for k, f in enumerate(folders)}
+    assert {key: float(r["value"]) for key, r in tlx_rows.items()} == expected
+    flagged = {r["session"] for r in rows if r["valid"] == "False"}
+    assert flagged == {str(bad.relative_to(root))}  # the invalid session is in the table, flagged
+    with (tmp_path / "out" / "summary.csv").open() as f:
+        summary = list(csv.DictReader(f))
+    leg = {r["condition"]: r for r in summary if r["measure"] == "legibility"}
+    assert set(leg) == {"none", "path"}
+    assert sum(int(r["n"]) + int(r["n_invalid"]) for r in leg.values()) == 4  # 2 participants x 2 conditions: practice left out
+    bad_condition = next(r["condition"] for r in rows if r["session"] == str(bad.relative_to(root)))
+    assert (int(leg[bad_condition]["n"]), int(leg[bad_condition]["n_invalid"])) == (1, 1)
+    good = [
+        float(r["value"])
+        for r in rows
+        if r["measure"] == "legibility" and r["condition"] == bad_condition and r["valid"] == "True" and r["practice"] == "False"
+    ]
+    assert float(leg[bad_condition]["mean"]) == pytest.approx(sum(good) / len(good))
+    assert (tmp_path / "out" / "summary.png").stat().st_size > 20_000
+
+
+def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(tmp_path: Path) -> None:
+    from haven_scenarios.study.progress import questionnaire_specs
+    from haven_scenarios.study.protocol import load_study
+    from haven_scenarios.study.schedule import participant_schedule
+    from haven_scenarios.tools.cli import build_parser
+    from haven_scenarios.tools.commands.study_run import haven_run_argv
+
+    path = study_file(tmp_path)
+    args = build_parser().parse_args(["study", "run", str(path), "--participant", "p02", "--web", "--port", "9000", "--domain-id", "7"])
+    study = load_study(path)
+    specs = questionnaire_specs(study, tmp_path / "studies" / "pilot")
+    trial = participant_schedule(study, "p02")[1]
+    argv = haven_run_argv(args, trial, tmp_path / "t", specs)
+    assert argv[1:5] == ["-m", "haven_scenarios", "run", "shared_room"]
+    tail = " ".join(argv[5:])
+    assert f"--participant p02 --condition {' '.join(trial.cues)} --seed 1 --sessions {tmp_path / 't'}" in tail
+    assert "--domain-id 7" in tail and "--web --host 127.0.0.1 --port 9000 --teleop --questionnaire nasa_tlx " in tail
+    written = Path(argv[-1])
+    assert written.parent == (tmp_path / "studies" / "pilot" / "questionnaires").resolve()
+    assert likert(yaml.safe_load(written.read_text()), "file") == likert(LEGIBILITY, "file")  # the study's own, as `haven run` reads it
