@@ -1,5 +1,5 @@
 // What the participant is told: the task line (their progress) and the prompts before and after
-// the trial, from the latched /haven/trial_status.
+// the trial, from the latched /haven/trial_status (the questionnaires after it: questionnaire.js).
 export function taskLine(t, me) {
   if (!t || !t.humans[me] || t.state === "ended") return "";
   const h = t.humans[me];
@@ -32,7 +32,8 @@ export function promptFor(t, cfg, pressedStart) {
     };
   }
   if (t.state === "ended") {
-    return { title: "Trial over", text: `${ENDINGS[t.end_reason] || ""} Thank you!`, small: "You can close this page.", start: false };
+    const answered = cfg.questionnaires.length && t.end_reason !== "aborted" ? " Thank you for your answers!" : " Thank you!";
+    return { title: "Trial over", text: `${ENDINGS[t.end_reason] || ""}${answered}`, small: "You can close this page.", start: false };
   }
   return null;
 }
