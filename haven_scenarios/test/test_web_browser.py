@@ -307,6 +307,25 @@ items:
 """
 
 
+def stopped_trial(ros, browser, tmp_path, questionnaires, viewport):
+    """`haven run --web --teleop h1 --questionnaire ...`: the participant starts, the researcher
+    stops the trial (the console's text before it is kept as havenState.before)."""
+    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    trial = WebTrial(ros, [*argv, "--questionnaire", *questionnaires])
+    urls = trial.urls()
+    page = browser.new_page(viewport=viewport)
+    page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
+    page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
+    console = browser.new_page(viewport={"width": 1100, "height": 600})
+    console.goto(urls["researcher console"], timeout=PAGE_LOAD_MS)
+    console.wait_for_function("s => (s = window.havenState) && s.trial", timeout=PAGE_TIMEOUT_MS)
+    console.evaluate("havenState.before = document.getElementById('questionnaires').textContent")
+    page.click("#start")
+    page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
+    console.click("#stop")
+    return trial, page, console
+
+
 def answer_with_clicks(page, q, values):
     for item, value in values.items():
         page.check(f'input[name="{q}.{item}"][value="{value}"]')
@@ -326,19 +345,8 @@ def test_after_the_trial_the_participant_answers_the_questionnaires_in_the_page(
 
     custom = tmp_path / "legibility.yaml"
     custom.write_text(LEGIBILITY_YAML)
-    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
-    trial = WebTrial(ros, [*argv, "--questionnaire", "nasa_tlx", "godspeed", str(custom)])
-    urls = trial.urls()
-    page = browser.new_page(viewport={"width": 1000, "height": 700})
-    page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
-    page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
-    console = browser.new_page(viewport={"width": 1100, "height": 600})
-    console.goto(urls["researcher console"], timeout=PAGE_LOAD_MS)
-    console.wait_for_function("s => (s = window.havenState) && s.trial", timeout=PAGE_TIMEOUT_MS)
-    assert console.inner_text("#questionnaires") == "after the trial: nasa_tlx, godspeed, legibility"
-    page.click("#start")
-    page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
-    console.click("#stop")
+    trial, page, console = stopped_trial(ros, browser, tmp_path, ["nasa_tlx", "godspeed", str(custom)], {"width": 1000, "height": 700})
+    assert console.evaluate("havenState.before") == "after the trial: nasa_tlx, godspeed, legibility"
 
     # The trial is over: the first questionnaire instead of "Thank you"; haven run waits.
     page.wait_for_function("havenState.questionnaire === 'nasa_tlx' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
@@ -406,18 +414,7 @@ def test_after_the_trial_the_participant_answers_the_questionnaires_in_the_page(
 def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros, browser, tmp_path):
     """Nobody answers: the console's Skip questionnaires ends the wait; the session is complete and
     valid, session.json says nothing was answered and that the researcher skipped."""
-    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
-    trial = WebTrial(ros, [*argv, "--questionnaire", "godspeed", "nasa_tlx"])
-    urls = trial.urls()
-    page = browser.new_page(viewport={"width": 640, "height": 480})
-    page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
-    page.wait_for_function("s => (s = window.havenState) && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
-    console = browser.new_page(viewport={"width": 1100, "height": 600})
-    console.goto(urls["researcher console"], timeout=PAGE_LOAD_MS)
-    console.wait_for_function("s => (s = window.havenState) && s.trial", timeout=PAGE_TIMEOUT_MS)
-    page.click("#start")
-    page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
-    console.click("#stop")
+    trial, page, console = stopped_trial(ros, browser, tmp_path, ["godspeed", "nasa_tlx"], {"width": 640, "height": 480})
     page.wait_for_function("havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
     console.wait_for_function("havenState.questionnaires.join() === 'h1: questionnaire 1 of 2'", timeout=PAGE_TIMEOUT_MS)
     assert trial.proc.poll() is None  # haven run waits for the answers
@@ -430,4 +427,38 @@ def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros
     assert not os.path.exists(os.path.join(folder, "questionnaires.json"))
     events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
     assert [(e.get("action"), e.get("by")) for e in events if e["type"] == "intervention"] == [("skip_questionnaires", "researcher")]
+    assert tracebacks("".join(trial.lines)) == []
+
+
+def test_ctrl_c_while_waiting_for_answers_keeps_the_session_and_says_what_was_answered(ros, tmp_path):
+    """No browser needed: the trial is started and stopped on /haven/trial_control; while haven run
+    waits for the answers (the trial's nodes stopped, the recorder and the web node running), Ctrl-C
+    ends the wait: the session is complete and valid, session.json says nothing was answered."""
+    import signal
+
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+    from std_msgs.msg import String
+
+    from haven_sim.nodes import qos
+
+    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    trial = WebTrial(ros, [*argv, "--questionnaire", "nasa_tlx"])
+    trial.urls()
+    latched = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    status = ros.collect(String, "/haven/trial_status", latched)
+    assert ros.spin_until(lambda: status and json.loads(status[-1].data)["state"] == "held", timeout_s=90), "".join(trial.lines)[-3000:]
+    control = ros.node.create_publisher(String, "/haven/trial_control", qos.RELIABLE)
+    ros.wait_matched(control)
+    for command, state in (("start", "running"), ("stop", "ended")):
+        control.publish(String(data=command))
+        assert ros.spin_until(lambda state=state: json.loads(status[-1].data)["state"] == state, timeout_s=60), "".join(trial.lines)[-3000:]
+    deadline = time.monotonic() + 60
+    while not any("waiting for h1 to answer nasa_tlx" in line for line in trial.lines):
+        assert time.monotonic() < deadline and trial.proc.poll() is None, "".join(trial.lines)[-3000:]
+        time.sleep(0.05)
+    trial.proc.send_signal(signal.SIGINT)
+    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    session = json.load(open(os.path.join(trial.session(), "session.json")))
+    assert session["questionnaires"] == ["nasa_tlx"] and session["questionnaires_answered"] == {"h1": []}
+    assert session["questionnaires_end"] == "interrupted" and session["valid"] and session["outcome"] == "stopped"
     assert tracebacks("".join(trial.lines)) == []
