@@ -419,6 +419,7 @@ def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros
     console.wait_for_function("havenState.questionnaires.join() === 'h1: questionnaire 1 of 2'", timeout=PAGE_TIMEOUT_MS)
     assert trial.proc.poll() is None  # haven run waits for the answers
     console.click("#skip-questionnaires")
+    page.wait_for_function("havenState.prompt === 'Trial over' && havenState.questionnaire === null", timeout=PAGE_TIMEOUT_MS)
     assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
     session = json.load(open(os.path.join(folder, "session.json")))

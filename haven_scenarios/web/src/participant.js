@@ -102,10 +102,13 @@ const link = new Link(
       state.trial = JSON.parse(m.data);
       showTrial();
     },
-    "/haven/events": (m) => {  // the web node confirms each questionnaire this participant answered
+    "/haven/events": (m) => {  // the web node confirms each questionnaire this participant answered; the researcher may skip them
       const e = JSON.parse(m.data);
       if (e.type === "questionnaire_answered" && e.by === me && !state.answered.includes(e.questionnaire)) {
         state.answered.push(e.questionnaire);
+        showTrial();
+      } else if (e.type === "intervention" && e.action === "skip_questionnaires") {
+        state.skipped = true;
         showTrial();
       }
     },
@@ -135,7 +138,7 @@ const form = new QuestionnaireForm(document.getElementById("questionnaire"), (q,
 window.havenForm = form;
 // After a trial that was not called off: the questionnaires this participant has not answered, in order.
 function pendingQuestionnaire(t) {
-  if (!t || t.state !== "ended" || t.end_reason === "aborted") return null;
+  if (!t || t.state !== "ended" || t.end_reason === "aborted" || state.skipped) return null;
   return cfg.questionnaires.find((q) => !state.answered.includes(q.name)) || null;
 }
 function showTrial() {
@@ -147,7 +150,7 @@ function showTrial() {
   taskEl.textContent = taskLine(t, me);
   const dwell = t && t.humans[me] && t.humans[me].dwell;
   document.getElementById("dwell").style.width = dwell ? `${Math.round(100 * dwell)}%` : "0";
-  const prompt = promptFor(t, cfg, state.pressedStart);
+  const prompt = promptFor(t, cfg, state.pressedStart, state.skipped);
   promptEl.hidden = !prompt || !!q;
   state.prompt = prompt && !q ? prompt.title : null;
   if (prompt) {

@@ -21,7 +21,7 @@ const ENDINGS = {
   interrupted: "The trial was stopped.",
 };
 
-export function promptFor(t, cfg, pressedStart) {
+export function promptFor(t, cfg, pressedStart, skipped) {
   if (!t || t.state === "waiting" || t.state === "held") {
     const held = t && t.state === "held";
     return {
@@ -32,7 +32,7 @@ export function promptFor(t, cfg, pressedStart) {
     };
   }
   if (t.state === "ended") {
-    const answered = cfg.questionnaires.length && t.end_reason !== "aborted" ? " Thank you for your answers!" : " Thank you!";
+    const answered = cfg.questionnaires.length && t.end_reason !== "aborted" && !skipped ? " Thank you for your answers!" : " Thank you!";
     return { title: "Trial over", text: `${ENDINGS[t.end_reason] || ""}${answered}`, small: "You can close this page.", start: false };
   }
   return null;
