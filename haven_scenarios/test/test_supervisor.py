@@ -71,3 +71,26 @@ def test_wait_returns_on_a_stop_request(tmp_path):
         sup.start(ProcessSpec("sleeper", child(SLEEPER, tmp_path / "ready")))
         sup.request_stop()
         assert sup.wait(timeout_s=10) is None
+
+
+def test_some_children_stop_while_the_others_run_on_until_a_condition_holds(tmp_path):
+    """As after a trial with questionnaires: the trial's nodes stop, the recorder and the web node
+    run on; their stopping does not end the wait, which ends when `until` holds or one of the
+    others exits."""
+    with Supervisor(env={}) as sup:
+        for name in ("sim", "web"):
+            sup.start(ProcessSpec(name, child(SLEEPER, tmp_path / name)))
+            wait_ready(tmp_path / name)
+        sup.stop_some(["sim"])
+        assert sup.procs["sim"].poll() == -signal.SIGTERM and sup.procs["web"].poll() is None
+        checks = []
+
+        def third_check():
+            checks.append(1)
+            return len(checks) == 3
+
+        assert sup.wait(until=third_check) is None  # (not ended by the stopped child)
+        assert len(checks) == 3 and sup.procs["web"].poll() is None
+        sup.start(ProcessSpec("recorder", [sys.executable, "-c", "raise SystemExit(0)"]))
+        exited = sup.wait(until=lambda: False)
+        assert exited is not None and (exited.name, exited.code) == ("recorder", 0)

@@ -295,3 +295,171 @@ def test_a_gamepad_walks_and_enter_vr_works_with_an_emulated_headset(ros, browse
     page.evaluate("havenXrDevice.quaternion.set(0, Math.SQRT1_2, 0, Math.SQRT1_2)")
     page.wait_for_function("havenState.view.y < -0.9", timeout=PAGE_TIMEOUT_MS)
     assert ahead["x"] < -0.9, ahead  # before: straight down the hallway
+
+
+LEGIBILITY_YAML = """name: legibility
+title: About the robot
+points: 7
+anchors: [Strongly disagree, Strongly agree]
+items:
+  - {id: side, text: "I could tell which way the robot would pass me."}
+  - {id: surprise, text: "The robot surprised me.", reverse: true}
+"""
+
+
+def stopped_trial(ros, browser, tmp_path, questionnaires, viewport):
+    """`haven run --web --teleop h1 --questionnaire ...`: the participant starts, the researcher
+    stops the trial (the console's text before it is kept as havenState.before)."""
+    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    trial = WebTrial(ros, [*argv, "--questionnaire", *questionnaires])
+    urls = trial.urls()
+    page = browser.new_page(viewport=viewport)
+    page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
+    page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
+    console = browser.new_page(viewport={"width": 1100, "height": 600})
+    console.goto(urls["researcher console"], timeout=PAGE_LOAD_MS)
+    console.wait_for_function("s => (s = window.havenState) && s.trial", timeout=PAGE_TIMEOUT_MS)
+    console.evaluate("havenState.before = document.getElementById('questionnaires').textContent")
+    page.click("#start")
+    page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
+    console.click("#stop")
+    return trial, page, console
+
+
+def answer_with_clicks(page, q, values):
+    for item, value in values.items():
+        page.check(f'input[name="{q}.{item}"][value="{value}"]')
+
+
+def submit_and_wait(page, q, answered):
+    page.click("#questionnaire button[type=submit]")
+    page.wait_for_function(f"havenState.answered.length === {answered} && havenState.questionnaire !== '{q}'", timeout=PAGE_TIMEOUT_MS)
+
+
+def test_after_the_trial_the_participant_answers_the_questionnaires_in_the_page(ros, browser, tmp_path):
+    """`--questionnaire nasa_tlx godspeed <a Likert YAML>`: the researcher stops the trial; the page
+    asks each questionnaire in turn (TLX by keyboard alone, the others by clicks), refuses Submit
+    while an item is unanswered, and the answers and scores land in questionnaires.json, the
+    events and session.json; `haven run` then exits 0 by itself."""
+    from haven_scenarios.study.questionnaires import BUILTINS, score
+
+    custom = tmp_path / "legibility.yaml"
+    custom.write_text(LEGIBILITY_YAML)
+    trial, page, console = stopped_trial(ros, browser, tmp_path, ["nasa_tlx", "godspeed", str(custom)], {"width": 1000, "height": 700})
+    assert console.evaluate("havenState.before") == "after the trial: nasa_tlx, godspeed, legibility"
+
+    # The trial is over: the first questionnaire instead of "Thank you"; haven run waits.
+    page.wait_for_function("havenState.questionnaire === 'nasa_tlx' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("document.getElementById('questionnaires').textContent === 'h1: questionnaire 1 of 3'", timeout=PAGE_TIMEOUT_MS)
+    assert console.is_visible("#skip-questionnaires")
+    assert page.locator("#questionnaire input:checked").count() == 0  # nothing preselected
+    assert page.locator("#questionnaire fieldset").count() == 6 and page.locator("#questionnaire input[name='nasa_tlx.mental']").count() == 21
+
+    # Submit with nothing answered, then with one item left: refused, the missing items marked.
+    page.click("#questionnaire button[type=submit]")
+    assert page.evaluate("havenForm.refused") == 1 and page.locator("fieldset.unanswered").count() == 6
+    assert "6 are not answered yet" in page.inner_text("#questionnaire .missing")
+    # By keyboard: the first mark has the focus; each right arrow chooses the next mark (5 more);
+    # Tab goes on to the next item. Mental demand 5, physical 10, ... frustration left out.
+    tlx = [i.id for i in BUILTINS["nasa_tlx"].items]
+    for k, _ in enumerate(tlx[:-1]):
+        for _ in range(k + 1):
+            page.keyboard.press("ArrowRight")
+        page.keyboard.press("Tab")
+    page.keyboard.press("Tab")  # (past the last item, left out: Submit)
+    page.keyboard.press("Enter")
+    assert page.evaluate("havenForm.refused") == 2 and page.locator("fieldset.unanswered").count() == 1
+    assert "1 is not answered yet" in page.inner_text("#questionnaire .missing")
+    assert page.evaluate("havenState.answered.length") == 0
+    screenshot("web_questionnaire.png", page.screenshot())
+    assert page.evaluate("document.activeElement.name") == "nasa_tlx.frustration"  # the refusal took the focus to it
+    page.keyboard.press("ArrowRight")  # frustration: 5
+    submit_and_wait(page, "nasa_tlx", 1)
+    console.wait_for_function("document.getElementById('questionnaires').textContent === 'h1: questionnaire 2 of 3'", timeout=PAGE_TIMEOUT_MS)
+
+    page.wait_for_function("havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
+    godspeed = {item.id: 1 + k % 5 for k, item in enumerate(BUILTINS["godspeed"].items)}
+    assert page.locator("#questionnaire fieldset.differential").count() == len(godspeed)
+    answer_with_clicks(page, "godspeed", godspeed)
+    submit_and_wait(page, "godspeed", 2)
+    page.wait_for_function("havenState.questionnaire === 'legibility'", timeout=PAGE_TIMEOUT_MS)
+    assert page.locator("#questionnaire input[name='legibility.side']").count() == 7
+    answer_with_clicks(page, "legibility", {"side": 6, "surprise": 2})
+    submit_and_wait(page, "legibility", 3)
+    page.wait_for_function("havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)
+    assert "Thank you for your answers" in page.inner_text("#prompt")
+
+    # Every answer in: haven run stops by itself.
+    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    folder = trial.session()
+    data = json.load(open(os.path.join(folder, "questionnaires.json")))
+    assert set(data) == {"h1"} and list(data["h1"]) == ["godspeed", "legibility", "nasa_tlx"]
+    tlx_answers = {item: 5 * (k + 1) for k, item in enumerate(tlx[:-1])} | {tlx[-1]: 5}
+    assert data["h1"]["nasa_tlx"]["answers"] == tlx_answers
+    assert abs(data["h1"]["nasa_tlx"]["scores"]["nasa_tlx_raw"] - (5 + 10 + 15 + 20 + 25 + 5) / 6) < 1e-3
+    assert data["h1"]["godspeed"]["answers"] == godspeed
+    assert data["h1"]["godspeed"]["scores"] == score(BUILTINS["godspeed"], godspeed)
+    assert data["h1"]["legibility"]["scores"] == {"legibility": 6.0}  # (6 + (8 - 2)) / 2: "surprised" reversed
+    events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
+    answered = [(e["by"], e["questionnaire"], e["scores"]) for e in events if e["type"] == "questionnaire_answered"]
+    assert [(b, q) for b, q, _ in answered] == [("h1", "nasa_tlx"), ("h1", "godspeed"), ("h1", "legibility")]
+    assert [s for *_, s in answered] == [data["h1"][q]["scores"] for q in ("nasa_tlx", "godspeed", "legibility")]
+    session = json.load(open(os.path.join(folder, "session.json")))
+    assert session["questionnaires"] == ["nasa_tlx", "godspeed", "legibility"]
+    assert session["questionnaires_answered"] == {"h1": ["nasa_tlx", "godspeed", "legibility"]}
+    assert session["questionnaires_end"] == "answered" and session["valid"] and session["end_reason"] == "stopped"
+    assert tracebacks("".join(trial.lines)) == []
+
+
+def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros, browser, tmp_path):
+    """Nobody answers: the console's Skip questionnaires ends the wait; the session is complete and
+    valid, session.json says nothing was answered and that the researcher skipped."""
+    trial, page, console = stopped_trial(ros, browser, tmp_path, ["godspeed", "nasa_tlx"], {"width": 640, "height": 480})
+    page.wait_for_function("havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("havenState.questionnaires.join() === 'h1: questionnaire 1 of 2'", timeout=PAGE_TIMEOUT_MS)
+    assert trial.proc.poll() is None  # haven run waits for the answers
+    console.click("#skip-questionnaires")
+    page.wait_for_function("havenState.prompt === 'Trial over' && havenState.questionnaire === null", timeout=PAGE_TIMEOUT_MS)
+    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    folder = trial.session()
+    session = json.load(open(os.path.join(folder, "session.json")))
+    assert session["questionnaires_answered"] == {"h1": []} and session["questionnaires_end"] == "skipped"
+    assert session["valid"] and session["end_reason"] == "stopped" and session["outcome"] == "stopped"
+    assert not os.path.exists(os.path.join(folder, "questionnaires.json"))
+    events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
+    assert [(e.get("action"), e.get("by")) for e in events if e["type"] == "intervention"] == [("skip_questionnaires", "researcher")]
+    assert tracebacks("".join(trial.lines)) == []
+
+
+def test_ctrl_c_while_waiting_for_answers_keeps_the_session_and_says_what_was_answered(ros, tmp_path):
+    """No browser needed: the trial is started and stopped on /haven/trial_control; while haven run
+    waits for the answers (the trial's nodes stopped, the recorder and the web node running), Ctrl-C
+    ends the wait: the session is complete and valid, session.json says nothing was answered."""
+    import signal
+
+    from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
+    from std_msgs.msg import String
+
+    from haven_sim.nodes import qos
+
+    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    trial = WebTrial(ros, [*argv, "--questionnaire", "nasa_tlx"])
+    trial.urls()
+    latched = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    status = ros.collect(String, "/haven/trial_status", latched)
+    assert ros.spin_until(lambda: status and json.loads(status[-1].data)["state"] == "held", timeout_s=90), "".join(trial.lines)[-3000:]
+    control = ros.node.create_publisher(String, "/haven/trial_control", qos.RELIABLE)
+    ros.wait_matched(control)
+    for command, state in (("start", "running"), ("stop", "ended")):
+        control.publish(String(data=command))
+        assert ros.spin_until(lambda state=state: json.loads(status[-1].data)["state"] == state, timeout_s=60), "".join(trial.lines)[-3000:]
+    deadline = time.monotonic() + 60
+    while not any("waiting for h1 to answer nasa_tlx" in line for line in trial.lines):
+        assert time.monotonic() < deadline and trial.proc.poll() is None, "".join(trial.lines)[-3000:]
+        time.sleep(0.05)
+    trial.proc.send_signal(signal.SIGINT)
+    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    session = json.load(open(os.path.join(trial.session(), "session.json")))
+    assert session["questionnaires"] == ["nasa_tlx"] and session["questionnaires_answered"] == {"h1": []}
+    assert session["questionnaires_end"] == "interrupted" and session["valid"] and session["outcome"] == "stopped"
+    assert tracebacks("".join(trial.lines)) == []

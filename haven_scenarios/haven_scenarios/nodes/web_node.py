@@ -7,7 +7,10 @@ capability and is published only where their role allows (`haven_scenarios.web.a
 participant's velocity on /humans/<id>/cmd_vel; the console's robot driving on /cmd_vel_teleop
 (the velocity mux's teleop input, so the e-stop still wins), the thought text on /haven/thought,
 trial start / stop / abort on /haven/trial_control, and the cue toggles as the viz node's
-parameters. The console's interventions are study events (`haven_scenarios.web.wizard`).
+parameters. The console's interventions are study events (`haven_scenarios.web.wizard`). After the
+trial, participants answer the run's questionnaires in their page (`haven run --questionnaire`):
+each is checked and written to the session folder's questionnaires.json, and is a
+`questionnaire_answered` event (`haven_scenarios.record.answers`).
 
 The session's secret (each page role's token derives from it) comes from the environment
 (HAVEN_WEB_TOKEN, set by `haven run --web`), else a new one.
@@ -20,6 +23,8 @@ import os
 import sys
 import threading
 import time
+from datetime import datetime, timezone
+from pathlib import Path
 
 from rclpy.node import Node
 from rclpy.serialization import deserialize_message
@@ -28,10 +33,11 @@ from std_msgs.msg import String
 from haven_scenarios.nodes.cue_parameters import CueParameters
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.nodes.role_sink import RoleSink, TablePublishers
+from haven_scenarios.record.answers import AnswerBook, from_parameter
 from haven_scenarios.study.rules import TrialCommand
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
-from haven_scenarios.web.access import CONSOLE, READY, TOKEN_ENV, Role, absolute, new_token, roles, urls
+from haven_scenarios.web.access import ANSWERS, CONSOLE, READY, SKIP_QUESTIONNAIRES, TOKEN_ENV, Role, absolute, new_token, roles, urls
 from haven_scenarios.web.front_door import FrontDoor, address_for_others
 from haven_scenarios.web.page_config import PageSettings, page_config
 from haven_scenarios.web.wizard import StartGate, Wizard
@@ -39,7 +45,7 @@ from haven_sim.common import topics
 from haven_sim.common.events import Event, Sequencer
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
-from haven_sim.nodes.runner import run_node
+from haven_sim.nodes.runner import refused, run_node
 
 EVENTS_KEPT = 2000  # a trial logs a few hundred
 RELAYED = tuple(
@@ -66,10 +72,13 @@ class WebNode(Node):
         humans = [h for h in self.declare_parameter("humans", [""]).value or () if h]  # `[]` on the command line reads as None
         scenario = load_scenario(str(self.declare_parameter("scenario", "hallway").value))
         researcher_start = bool(self.declare_parameter("researcher_start", False).value)
+        questionnaires = from_parameter(str(self.declare_parameter("questionnaires", "[]").value))
         settings = PageSettings(
             participant=str(self.declare_parameter("participant", "sim").value),
             session=str(self.declare_parameter("session", "").value),
             map_inset=bool(self.declare_parameter("map_inset", True).value),
+            questionnaires=questionnaires,
+            teleoperated=tuple(humans),
         )
         self.roles = roles(humans)
         self.secret = os.environ.get(TOKEN_ENV) or new_token()
@@ -77,6 +86,7 @@ class WebNode(Node):
         self._publisher = TablePublishers(self, self.table)
         self.sequencer, self.wizard, self._lock = Sequencer(), Wizard(), threading.Lock()
         self.gate = StartGate(humans, researcher_start)
+        self.answers = AnswerBook(Path.cwd(), humans, questionnaires)  # (its cwd is the session folder)
         self.events = self._publisher(absolute(topics.EVENTS))
         self.cues = CueParameters(self)
         self.relay = FoxgloveRelay()
@@ -113,6 +123,9 @@ class WebNode(Node):
                 if start:
                     self._publisher(absolute(topics.TRIAL_CONTROL)).publish(String(data=TrialCommand.START))
                 return
+            if topic in (ANSWERS, SKIP_QUESTIONNAIRES):
+                self._after_trial(role, topic, data)
+                return
             pub = self._publisher(topic)
             if role.is_console:
                 try:
@@ -125,6 +138,23 @@ class WebNode(Node):
                 elif topic == absolute(topics.THOUGHT):
                     self._log(self.wizard.thought(str(msg.data), self.now()))
             pub.publish(data)
+
+    def _after_trial(self, role: Role, topic: str, data: bytes) -> None:
+        """A participant's answers to one questionnaire (checked, written), or the console's skip."""
+        try:
+            text = str(deserialize_message(data, String).data)
+        except Exception:  # noqa: BLE001 - bad bytes from a page: refused, said in one line
+            refused(self, topic, f"undecodable message from page {role.name}")
+            return
+        if topic == SKIP_QUESTIONNAIRES:
+            self._log(self.wizard.skip_questionnaires(self.now()))
+            return
+        try:
+            self._log([self.answers.take(role.name, text, self.now(), datetime.now(timezone.utc).isoformat(timespec="seconds"))])
+        except ValueError as e:
+            refused(self, topic, e)
+        except OSError as e:  # (a full disk: the page's answers stay unsent, it can send them again)
+            refused(self, topic, f"cannot write {e.filename}: {e.strerror or e}")
 
     def destroy_node(self) -> None:
         self.door.stop()

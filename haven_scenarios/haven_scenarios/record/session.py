@@ -9,6 +9,7 @@
         params.yaml       every node's parameters as run (a ROS parameter file)
         session.json      participant, condition, seed, versions, git commit, RMW, clock, outcome
         metrics.json      computed from the bag (so `haven report` gives the same numbers later)
+        questionnaires.json  with `haven run --questionnaire`: each participant's answers and scores (record/answers.py)
         trajectory.png    top-down: walls, the tracks, gems, where the robot waited or re-planned
 
 Everything a re-run or a re-scoring needs is inside the folder under relative names, so a study

@@ -63,6 +63,7 @@ class Questionnaire:
     step: int
     items: tuple[Item, ...]
     scales: tuple[tuple[str, tuple[str, ...]], ...]  # (scale name, its item ids): scored as means
+    differential: bool = False  # semantic differentials: each item is a row between its own two labels
 
     def to_dict(self) -> dict[str, Any]:
         """As the web node hands it to the page (JSON)."""
@@ -106,7 +107,7 @@ def _godspeed() -> Questionnaire:
         items += [Item(i, f"{low} - {high}", low, high, (series, low) in GODSPEED_REVERSED) for i, (low, high) in zip(ids, pairs)]
         scales.append((series, ids))
     text = "Please rate your impression of the robot on these scales."
-    return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales))
+    return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales), differential=True)
 
 
 BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (_tlx(), _godspeed())}

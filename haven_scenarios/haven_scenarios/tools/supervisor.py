@@ -16,7 +16,7 @@ import signal
 import subprocess
 import sys
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from importlib import resources
 from types import FrameType, TracebackType
@@ -100,6 +100,7 @@ class Supervisor:
         self.env = dict(env) if env is not None else ros_environment()
         self.grace_s = grace_s
         self.procs: dict[str, subprocess.Popen[bytes]] = {}
+        self.stopped: set[str] = set()  # children stopped on purpose while the others run on
         self._stop_requested = False
         self._preexec = die_with_parent()  # (haven starts no threads, so a preexec_fn is safe)
 
@@ -119,9 +120,9 @@ class Supervisor:
         return {n: p.pid for n, p in self.procs.items()}
 
     def poll(self) -> Exited | None:
-        """The first child found to have exited, if any."""
+        """The first child found to have exited, if any (of those not stopped on purpose)."""
         for name, proc in self.procs.items():
-            code = proc.poll()
+            code = None if name in self.stopped else proc.poll()
             if code is not None:
                 return Exited(name, code)
         return None
@@ -135,11 +136,11 @@ class Supervisor:
         for sig in STOP_SIGNALS:
             signal.signal(sig, self.request_stop)
 
-    def wait(self, timeout_s: float | None = None, until_exit_of: str | None = None) -> Exited | None:
-        """Block until a stop is requested, the timeout passes, or a child exits (only
-        `until_exit_of`, if given, when it exits cleanly); returns the child that ended it."""
+    def wait(self, timeout_s: float | None = None, until_exit_of: str | None = None, until: Callable[[], bool] | None = None) -> Exited | None:
+        """Block until a stop is requested, the timeout passes, `until()` holds, or a child exits
+        (only `until_exit_of`, if given, when it exits cleanly); returns the child that ended it."""
         deadline = None if timeout_s is None else time.monotonic() + timeout_s
-        while not self._stop_requested:
+        while not self._stop_requested and not (until is not None and until()):
             exited = self.poll()
             if exited is not None and (until_exit_of is None or exited.name == until_exit_of or exited.code != 0):
                 return exited
@@ -155,6 +156,11 @@ class Supervisor:
             self._stop([p for n, p in self.procs.items() if n in first])
         self._stop(list(self.procs.values()))
         return {n: p.wait() for n, p in self.procs.items()}
+
+    def stop_some(self, names: Sequence[str]) -> None:
+        """Stop these children now while the others run on (their exits no longer end a wait)."""
+        self._stop([p for n, p in self.procs.items() if n in names])
+        self.stopped.update(names)
 
     def _stop(self, procs: list[subprocess.Popen[bytes]]) -> None:
         for sig, wait_s in ((signal.SIGTERM, self.grace_s), (signal.SIGKILL, 2.0)):

@@ -1,8 +1,9 @@
 """Who may do what through the study's web pages: one role per page, one token per session.
 
-A participant's page (`/participant/<id>`) may publish only that person's velocity; the researcher
-console (`/console`) may drive the robot through the velocity mux's teleop input, type the thought
-bubble's text, start, stop or abort the trial, and set the viz node's cue toggles. Every page, bundle
+A participant's page (`/participant/<id>`) may publish only that person's velocity, Start and
+questionnaire answers (the web node checks the answers are that person's); the researcher console
+(`/console`) may drive the robot through the velocity mux's teleop input, type the thought bubble's
+text, start, stop or abort the trial, skip the questionnaires, and set the viz node's cue toggles. Every page, bundle
 and WebSocket request must carry its role's token (in the URL, or the cookie the page sets): each
 role's token is derived from the session's secret and the role, so a participant's address opens
 their own page only: not the console, not another participant's avatar.
@@ -55,16 +56,24 @@ class Role:
         return None
 
 
-READY = "/haven/ready"  # a participant's Start (handled by the web node; String: their id)
+# Handled by the web node, not ROS topics:
+READY = "/haven/ready"  # a participant's Start (String: their id)
+ANSWERS = "/haven/questionnaire"  # a participant's answers to one questionnaire (String: JSON, record/answers.py)
+SKIP_QUESTIONNAIRES = "/haven/skip_questionnaires"  # the console ends the wait for answers (String, any)
 
 
 def participant_role(human: str) -> Role:
-    return Role(human, {absolute(topics.human_cmd_vel(human)): TWIST, READY: STRING})
+    return Role(human, {absolute(topics.human_cmd_vel(human)): TWIST, READY: STRING, ANSWERS: STRING})
 
 
 CONSOLE_ROLE = Role(
     CONSOLE,
-    {absolute(topics.CMD_VEL_TELEOP): TWIST, absolute(topics.THOUGHT): STRING, absolute(topics.TRIAL_CONTROL): STRING},
+    {
+        absolute(topics.CMD_VEL_TELEOP): TWIST,
+        absolute(topics.THOUGHT): STRING,
+        absolute(topics.TRIAL_CONTROL): STRING,
+        SKIP_QUESTIONNAIRES: STRING,
+    },
     parameters=True,
 )
 

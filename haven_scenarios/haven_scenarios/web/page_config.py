@@ -2,7 +2,7 @@
 
 The pages read everything that moves from the relayed topics; this is what does not: the role and
 its allowed topics with their message definitions (the page encodes its own CDR), the order of the
-poses on /humans, the world's extent, and the participant's prompts.
+poses on /humans, the world's extent, the participant's prompts and the questionnaires after the trial.
 """
 
 from __future__ import annotations
@@ -11,6 +11,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+from haven_scenarios.study.questionnaires import Questionnaire
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.foxglove_relay import msgdef
 from haven_scenarios.web.access import Role
@@ -35,6 +36,8 @@ class PageSettings:
     participant: str = "sim"  # the study's participant id
     session: str = ""  # the session folder's name
     map_inset: bool = True
+    questionnaires: tuple[Questionnaire, ...] = ()  # asked after the trial
+    teleoperated: tuple[str, ...] = ()  # the humans with a page (who answers them)
 
 
 def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[str, Any]:
@@ -61,4 +64,6 @@ def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[
         "map_inset": settings.map_inset,
         "instructions": INSTRUCTIONS.get(scenario.kind, ""),
         "controls": CONTROLS,
+        "questionnaires": [q.to_dict() for q in settings.questionnaires],
+        "teleoperated": list(settings.teleoperated),
     }

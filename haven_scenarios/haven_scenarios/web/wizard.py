@@ -3,12 +3,14 @@ and the start gate: a held trial starts when every participant has pressed Start
 
 Typing the thought bubble's text is one `intervention` event (action `thought`, with the text);
 driving the robot from the console is one event when it starts (`drive`) and one when the
-console's commands come back to zero (`drive_end`). The velocity mux logs the switch of its source
+console's commands come back to zero (`drive_end`); skipping the questionnaires after the trial is
+one (`skip_questionnaires`). The velocity mux logs the switch of its source
 (`cmd_source`) as well; these say that the researcher did it.
 """
 
 from __future__ import annotations
 
+from haven_scenarios.record.answers import SKIP
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Twist2D
 
@@ -21,6 +23,10 @@ class Wizard:
 
     def thought(self, text: str, now: float) -> list[Event]:
         return [event(EventKind.INTERVENTION, now, Source.WEB, action="thought", text=text, by=BY)]
+
+    def skip_questionnaires(self, now: float) -> list[Event]:
+        """The researcher ends the wait for questionnaire answers (`haven run` stops then)."""
+        return [event(EventKind.INTERVENTION, now, Source.WEB, action=SKIP, by=BY)]
 
     def drive(self, cmd: Twist2D, now: float) -> list[Event]:
         moving = any(abs(v) > 1e-6 for v in (cmd.vx, cmd.vy, cmd.wz))

@@ -1,6 +1,7 @@
 // The researcher console: the live top-down scene with everyone's tracks, the trial's status and
-// controls, the condition's four cue toggles (the viz node's parameters), the event stream, and
-// Wizard-of-Oz control of the robot (teleop velocity, thought text). Every intervention is an event.
+// controls, the condition's four cue toggles (the viz node's parameters), the event stream,
+// Wizard-of-Oz control of the robot (teleop velocity, thought text), and after the trial each
+// participant's questionnaire progress with Skip questionnaires. Every intervention is an event.
 import { Link, config as readConfig, twist, yawOf } from "./link.js";
 import { fit, footprint, disc, rgba } from "./topdown.js";
 
@@ -40,6 +41,9 @@ const link = new Link(
       if (seen.has(key)) return;
       seen.add(key);
       state.events.push(e);
+      if (e.type === "questionnaire_answered") (answeredBy[e.by] ||= []).push(e.questionnaire);
+      if (e.type === "intervention" && e.action === "skip_questionnaires") state.skipped = true;
+      showQuestionnaires();
       const line = document.createElement("div");
       const { stamp, source, type, seq, ...rest } = e;
       line.textContent = `${stamp.toFixed(1)}  ${source}  ${type}  ${Object.entries(rest).map(([k, v]) => `${k}=${JSON.stringify(v)}`).join(" ")}`;
@@ -81,7 +85,25 @@ function showStatus() {
   document.getElementById("start").disabled = !t || t.state !== "held";
   const over = !t || t.state === "ended";
   for (const el of document.querySelectorAll("#stop, #abort, #toggles input, #drive-pad button, #thought-form *")) el.disabled = over;
+  showQuestionnaires();
 }
+
+// -- the questionnaires after the trial: each participant's progress, and Skip (haven run then stops) --
+const answeredBy = {}; // human -> the questionnaires they answered
+function showQuestionnaires() {
+  const names = cfg.questionnaires.map((q) => q.name);
+  const t = state.trial;
+  const asked = names.length > 0 && !!t && t.state === "ended" && t.end_reason !== "aborted";
+  const progress = Object.fromEntries(cfg.teleoperated.map((h) => [h, (answeredBy[h] || []).length]));
+  const lines = cfg.teleoperated.map((h) => (progress[h] >= names.length ? `${h}: questionnaires done` : `${h}: questionnaire ${progress[h] + 1} of ${names.length}`));
+  state.questionnaires = asked ? lines : [];
+  const el = document.getElementById("questionnaires");
+  if (!names.length) el.textContent = "";
+  else if (!asked) el.textContent = `after the trial: ${names.join(", ")}`;
+  else el.textContent = state.skipped ? "questionnaires skipped" : lines.join(" · ");
+  document.getElementById("skip-questionnaires").hidden = !asked || !!state.skipped || Object.values(progress).every((k) => k >= names.length);
+}
+document.getElementById("skip-questionnaires").addEventListener("click", () => link.publish("/haven/skip_questionnaires", { data: "skip" }));
 
 // What the robot "thinks" now, and whether a participant sees it (the bubble shows within 3 m).
 function showThought() {

@@ -9,10 +9,11 @@ import { turtlebot, person } from "./bodies.js";
 import { drawInset } from "./inset.js";
 import { Controls } from "./controls.js";
 import { taskLine, promptFor } from "./task.js";
+import { QuestionnaireForm } from "./questionnaire.js";
 
 const cfg = readConfig();
 const me = cfg.role;
-const state = (window.havenState = { frames: 0, pose: null, trial: null, markers: {}, world: 0, latencies: [], wire: [], xr: false });
+const state = (window.havenState = { frames: 0, pose: null, trial: null, markers: {}, world: 0, latencies: [], wire: [], xr: false, answered: [] });
 
 // -- the scene, in ROS coordinates (z up) -------------------------------------------------------
 const renderer = new THREE.WebGLRenderer({ antialias: true });
@@ -101,6 +102,16 @@ const link = new Link(
       state.trial = JSON.parse(m.data);
       showTrial();
     },
+    "/haven/events": (m) => {  // the web node confirms each questionnaire this participant answered; the researcher may skip them
+      const e = JSON.parse(m.data);
+      if (e.type === "questionnaire_answered" && e.by === me && !state.answered.includes(e.questionnaire)) {
+        state.answered.push(e.questionnaire);
+        showTrial();
+      } else if (e.type === "intervention" && e.action === "skip_questionnaires") {
+        state.skipped = true;
+        showTrial();
+      }
+    },
   },
   state,
 );
@@ -121,14 +132,27 @@ startButton.addEventListener("click", () => {
     showTrial();
   }
 });
+const form = new QuestionnaireForm(document.getElementById("questionnaire"), (q, answers) =>
+  link.publish("/haven/questionnaire", { data: JSON.stringify({ human: me, questionnaire: q.name, answers }) }),
+);
+window.havenForm = form;
+// After a trial that was not called off: the questionnaires this participant has not answered, in order.
+function pendingQuestionnaire(t) {
+  if (!t || t.state !== "ended" || t.end_reason === "aborted" || state.skipped) return null;
+  return cfg.questionnaires.find((q) => !state.answered.includes(q.name)) || null;
+}
 function showTrial() {
   const t = state.trial;
+  const q = pendingQuestionnaire(t);
+  state.questionnaire = q ? q.name : null;
+  if (q) form.show(q, cfg.questionnaires.indexOf(q) + 1, cfg.questionnaires.length);
+  else form.hide();
   taskEl.textContent = taskLine(t, me);
   const dwell = t && t.humans[me] && t.humans[me].dwell;
   document.getElementById("dwell").style.width = dwell ? `${Math.round(100 * dwell)}%` : "0";
-  const prompt = promptFor(t, cfg, state.pressedStart);
-  promptEl.hidden = !prompt;
-  state.prompt = prompt ? prompt.title : null;
+  const prompt = promptFor(t, cfg, state.pressedStart, state.skipped);
+  promptEl.hidden = !prompt || !!q;
+  state.prompt = prompt && !q ? prompt.title : null;
   if (prompt) {
     promptEl.querySelector("h1").textContent = prompt.title;
     promptEl.querySelector("p").textContent = prompt.text;
@@ -137,8 +161,8 @@ function showTrial() {
   }
   const over = !!t && t.state === "ended";
   controls.enabled = !!t && t.state === "running" && state.connected;
-  link.reconnect = !over; // the study is over: its server goes away, and that is no loss
-  document.getElementById("lost").hidden = state.connected || !state.everConnected || over;
+  link.reconnect = !over || !!q; // the study is over: its server goes away, and that is no loss
+  document.getElementById("lost").hidden = state.connected || !state.everConnected || (over && !q);
 }
 setInterval(() => {  // the connection: a notice when it is lost, and no walking blind
   state.everConnected ||= state.connected;
@@ -189,6 +213,7 @@ window.havenMarker = (ns, id) => {
 
 // -- every frame -----------------------------------------------------------------------------------
 renderer.setAnimationLoop((time) => {
+  if (state.questionnaire) return; // the last view stays under the questionnaire; software rendering would only slow it
   controls.poll(renderer.xr.isPresenting ? renderer.xr.getSession() : null);
   if (state.pose) {
     rig.position.set(state.pose.x, state.pose.y, 0);

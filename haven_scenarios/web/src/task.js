@@ -1,5 +1,5 @@
 // What the participant is told: the task line (their progress) and the prompts before and after
-// the trial, from the latched /haven/trial_status.
+// the trial, from the latched /haven/trial_status (the questionnaires after it: questionnaire.js).
 export function taskLine(t, me) {
   if (!t || !t.humans[me] || t.state === "ended") return "";
   const h = t.humans[me];
@@ -21,7 +21,7 @@ const ENDINGS = {
   interrupted: "The trial was stopped.",
 };
 
-export function promptFor(t, cfg, pressedStart) {
+export function promptFor(t, cfg, pressedStart, skipped) {
   if (!t || t.state === "waiting" || t.state === "held") {
     const held = t && t.state === "held";
     return {
@@ -32,7 +32,8 @@ export function promptFor(t, cfg, pressedStart) {
     };
   }
   if (t.state === "ended") {
-    return { title: "Trial over", text: `${ENDINGS[t.end_reason] || ""} Thank you!`, small: "You can close this page.", start: false };
+    const answered = cfg.questionnaires.length && t.end_reason !== "aborted" && !skipped ? " Thank you for your answers!" : " Thank you!";
+    return { title: "Trial over", text: `${ENDINGS[t.end_reason] || ""}${answered}`, small: "You can close this page.", start: false };
   }
   return null;
 }

@@ -58,8 +58,9 @@ class EventKind(StrEnum):
     TASK_DONE = "task_done"  # by
     TRIAL_END = "trial_end"  # reason
     # researcher console (Wizard of Oz)
-    INTERVENTION = "intervention"  # action: thought (text) | drive | drive_end, by
+    INTERVENTION = "intervention"  # action: thought (text) | drive | drive_end | skip_questionnaires, by
     PARTICIPANT_READY = "participant_ready"  # by: a participant pressed Start on their page
+    QUESTIONNAIRE_ANSWERED = "questionnaire_answered"  # by, questionnaire, scores, answers: after the trial, on their page
 
 
 class Source(StrEnum):
@@ -86,6 +87,7 @@ REQUIRED: dict[EventKind, tuple[str, ...]] = {
     EventKind.TRIAL_END: ("reason",),
     EventKind.INTERVENTION: ("action",),
     EventKind.PARTICIPANT_READY: ("by",),
+    EventKind.QUESTIONNAIRE_ANSWERED: ("by", "questionnaire", "scores"),
 }
 _RESERVED = ("stamp", "source", "type")
 _KINDS = frozenset(k.value for k in EventKind)

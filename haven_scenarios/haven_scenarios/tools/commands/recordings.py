@@ -41,6 +41,7 @@ class Ended:
     exited: Exited | None  # the node whose exit ended it (None: a stop signal or the time limit)
     timed_out: bool = False  # the time limit passed
     recorder_code: int | None = None  # the recorder's exit code once everything stopped
+    questionnaires: str | None = None  # how the questionnaires after it ended (tools/commands/after_trial.py)
 
     @property
     def died(self) -> Exited | None:

@@ -33,6 +33,8 @@ from haven_scenarios.run.trial import condition_name, parse_condition, scenario_
 from haven_scenarios.study.director import any_reader
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
+from haven_scenarios.tools.commands import after_trial
+from haven_scenarios.tools.commands.after_trial import Asked
 from haven_scenarios.tools.commands.common import PORT, SEED, add_ros_options, add_suite_options, environment, fail, port_free, positive, suite_specs
 from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
 from haven_scenarios.tools.commands.studies import CONDITION_HELP
@@ -80,6 +82,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     web.add_argument("--port", type=PORT, default=8088, help="port of the pages (default 8088)")
     web.add_argument("--researcher-start", action="store_true", help="the trial starts on the console's Start, not when the participants are ready")
     web.add_argument("--no-map-inset", action="store_true", help="no map inset on the participants' pages")
+    after_trial.add_option(web)
     add_ros_options(run)
     run.set_defaults(func=run_cmd)
     rerun = sub.add_parser("rerun", help="run a recorded session again from its folder (same scenario, world, parameters, seed, condition)")
@@ -172,6 +175,7 @@ class WebOptions:
     researcher_start: bool = False
     map_inset: bool = True
     secret: str = field(default_factory=new_token)  # each page role's token derives from it
+    questionnaires: tuple[str | dict[str, Any], ...] = ()  # asked after the trial: built-in names, Likert mappings
 
 
 def _web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
@@ -185,6 +189,7 @@ def _web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
         "session": folder.name,
         "researcher_start": web.researcher_start,
         "map_inset": web.map_inset,
+        **({"questionnaires": after_trial.as_parameter(web.questionnaires)} if web.questionnaires else {}),
     }
     return ProcessSpec("web", node_argv("haven_scenarios.nodes.web_node", params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))
 
@@ -202,7 +207,8 @@ def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
     mark.unlink(missing_ok=True)
 
 
-def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path, timeout_s: float | None) -> Ended:
+def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path, timeout_s: float | None, asked: Asked | None = None) -> Ended:
+    """`asked`: the teleoperated humans and the questionnaires they answer after the trial."""
     started = time.monotonic()
     with Supervisor(environment(args)) as sup:
         sup.install_signal_handlers()
@@ -210,11 +216,15 @@ def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path,
             sup.start(spec)
         exited = sup.wait(timeout_s=timeout_s, until_exit_of="scenario")
         timed_out = exited is None and timeout_s is not None and time.monotonic() - started >= timeout_s
+        questionnaires = None
+        if asked is not None and exited is not None and exited.name == "scenario" and exited.code == 0:
+            _wait_for_recorded_end(folder, 10.0)  # (the trial's nodes still run: its end is recorded)
+            questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
         sup.stop(first=("scenario",))  # (a scenario stopped mid-trial still publishes trial_end, interrupted)
-        if exited is None or exited.name != "recorder":  # (a dead recorder marks no end)
+        if questionnaires is None and (exited is None or exited.name != "recorder"):  # (a dead recorder marks no end)
             _wait_for_recorded_end(folder, 10.0)
         codes = sup.stop()
-    return Ended(exited, timed_out, codes.get("recorder"))
+    return Ended(exited, timed_out, codes.get("recorder"), questionnaires)
 
 
 def _session_info(plan: SessionPlan) -> dict[str, Any]:
@@ -290,7 +300,8 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
         specs.append(_web_spec(plan, plan.web, folder))
     ended, metrics, repaired = None, None, None
     try:
-        ended = _supervise(args, specs, folder, None if plan.web is not None else limit)  # the researcher decides when it starts
+        asked = after_trial.asked(plan.scenario, plan.web)
+        ended = _supervise(args, specs, folder, None if plan.web is not None else limit, asked)  # the researcher decides when it starts
         if ended.died is not None:
             print(f"haven: {exit_text(ended.died.name, ended.died.code)}; the trial was cut short", file=sys.stderr, flush=True)
         repaired = repair_bag(folder / "bag", "haven run" + (f" ({exit_text(ended.died.name, ended.died.code)})" if ended.died else ""))
@@ -302,6 +313,8 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
         return 1
     finally:
         info["outcome"] = outcome(ended, metrics["end_reason"] if metrics else None, repaired, limit)
+        if (asked := after_trial.asked(plan.scenario, plan.web)) is not None:  # (also when interrupted)
+            info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
         write_outcome(folder, info)
     return _said(folder, ended, metrics, time.monotonic() - started)
 
@@ -338,19 +351,24 @@ def run_cmd(args: argparse.Namespace) -> int:
         scenario, toggles, base = _prepare(args)
     except (ScenarioError, ValueError) as e:
         return fail(str(e))
-    web = None
+    web, teleop = None, [h.id for h in scenario.humans if h.model == "teleop"]
+    try:
+        questionnaires = after_trial.specs(args, teleop)
+    except ValueError as e:
+        return fail(str(e))
     if args.web:
-        web = WebOptions(args.host, args.port, args.researcher_start, not args.no_map_inset)
+        web = WebOptions(args.host, args.port, args.researcher_start, not args.no_map_inset, questionnaires=questionnaires)
         busy = port_free(args.host, args.port)
         if busy:
             return fail(busy)
-    participant = args.participant or "-".join(h.id for h in scenario.humans if h.model == "teleop") or "sim"
+    participant = args.participant or "-".join(teleop) or "sim"
     try:  # before any path is built from them
         check_name(participant, "--participant")
         check_name(scenario.name, f"{scenario.source or args.scenario}: name")
     except ValueError as e:
         return fail(str(e))
-    plan = SessionPlan(scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, web=web, without=tuple(args.without))
+    extra = {"questionnaires": after_trial.names(questionnaires)} if questionnaires else {}
+    plan = SessionPlan(scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, extra, web, tuple(args.without))
     return run_session(args, plan, Path(args.sessions))
 
 
