@@ -220,7 +220,7 @@ def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path,
         if asked is not None and exited is not None and exited.name == "scenario" and exited.code == 0:
             _wait_for_recorded_end(folder, 10.0)  # (the trial's nodes still run: its end is recorded)
             questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
-        sup.stop(first=("scenario",))  # (a scenario stopped mid-trial still publishes trial_end, interrupted)
+        sup.stop_some(("scenario",))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
         if questionnaires is None and (exited is None or exited.name != "recorder"):  # (a dead recorder marks no end)
             _wait_for_recorded_end(folder, 10.0)
         codes = sup.stop()
