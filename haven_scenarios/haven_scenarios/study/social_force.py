@@ -17,15 +17,30 @@ a few dozen lines of numpy cover one or two people here.)
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol, overload
+
+import numpy as np
 
 from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
-from haven_sim.common.geometry import Point
+from haven_sim.common.geometry import FloatArray, Point
 
-RayFn = Callable[[Point, Point], float]  # free distance from a point along a unit direction (walls)
+
+class RayFn(Protocol):
+    """Free distance from a point along a unit direction to the walls (the planner's `free_run`);
+    given an (N, 2) array of directions, the N distances at once."""
+
+    @overload
+    def __call__(self, start: Point, direction: Point, max_m: float = 10.0) -> float: ...
+
+    @overload
+    def __call__(self, start: Point, direction: FloatArray, max_m: float = 10.0) -> FloatArray: ...
+
 
 RAYS = 16  # directions sampled for walls
+# Their unit vectors, computed once (as the loop over k did: the same floats).
+_RAY_DIRS = np.array([(math.cos(2.0 * math.pi * k / RAYS), math.sin(2.0 * math.pi * k / RAYS)) for k in range(RAYS)])
 
 
 @dataclass(frozen=True)
@@ -120,12 +135,8 @@ class SocialForce:
 
     def _rays(self, me: Point) -> list[tuple[float, float, float]]:
         """(direction x, direction y, gap from my body to the wall) for `RAYS` directions."""
-        out = []
-        for k in range(RAYS):
-            a = 2.0 * math.pi * k / RAYS
-            c, s = math.cos(a), math.sin(a)
-            out.append((c, s, self.free_run(me, (c, s)) - self.radius))
-        return out
+        gaps = self.free_run(me, _RAY_DIRS) - self.radius
+        return [(float(c), float(s), float(g)) for (c, s), g in zip(_RAY_DIRS, gaps, strict=True)]
 
     def _walls(self, rays: Sequence[tuple[float, float, float]]) -> Point:
         p = self.p
