@@ -39,10 +39,11 @@ class Progress:
             self.bar.update(done - self.done)
         self.done = done
 
-    def close(self) -> None:
+    def close(self, finished: bool = True) -> None:
+        """`finished`: the sweep ran to its end (a log gets its one line then, not after an error)."""
         if self.bar is not None:
             self.bar.close()
-        else:
+        elif finished:
             self.out.write(f"{self.done}/{self.total} trials in {time.monotonic() - self.started:.1f} s\n")
 
 
@@ -76,13 +77,17 @@ def run_batch(
     csv_path.parent.mkdir(parents=True, exist_ok=True)
     journal = journal_path(csv_path)
     rows: list[Row] = []
-    with journal.open("w") as j:
-        for row in run_rows(specs, suite, workers, cluster):
-            j.write(json.dumps(row) + "\n")
-            j.flush()
-            rows.append(row)
-            if progress is not None:
-                progress.update(len(rows))
+    try:
+        with journal.open("w") as j:
+            for row in run_rows(specs, suite, workers, cluster):
+                j.write(json.dumps(row) + "\n")
+                j.flush()
+                rows.append(row)
+                if progress is not None:
+                    progress.update(len(rows))
+    finally:
+        if not rows:  # (nothing ran: a cluster not reached, say) no journal of nothing
+            journal.unlink(missing_ok=True)
     rows.sort(key=lambda r: r["trial"])
     write_csv(rows, csv_path)
     journal.unlink()

@@ -14,11 +14,11 @@ dependencies add about 37 MB), a `LocalCluster` needs no daemon, and a lab's mac
 from __future__ import annotations
 
 import functools
-import itertools
 import multiprocessing
 import os
+import signal
+import threading
 from collections.abc import Callable, Iterator, Sequence
-from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
 from typing import Any
 
 from haven_scenarios.record.report import csv_row
@@ -27,8 +27,8 @@ from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.trial import run_trial
 
 Row = dict[str, Any]
+Done = tuple[int, Row]  # a trial's index and metrics
 LOCAL = "local"  # --cluster local: a Dask LocalCluster on this machine
-IN_FLIGHT_PER_WORKER = 4  # trials handed to the pool ahead of need (bounded memory on a long sweep)
 
 
 def cores() -> int:
@@ -37,41 +37,58 @@ def cores() -> int:
 
 
 def run_spec(spec: TrialSpec, suite: SuiteConfig | None = None) -> Row:
-    """One trial's CSV row: its design columns, then its metrics (flat, as `haven report` writes them)."""
-    result = run_trial(spec.scenario, spec.seed, spec.toggles, suite)
+    """One trial's metrics, as compute() gives them (the parent makes the CSV row: a worker then
+    need not import the recording reader behind `csv_row`, a second of start-up on a loaded machine)."""
+    return run_trial(spec.scenario, spec.seed, spec.toggles, suite).metrics
+
+
+def row_of(spec: TrialSpec, metrics: Row) -> Row:
+    """A trial's CSV row: its design columns, then its metrics (flat, as `haven report` writes them)."""
     design = spec.columns()
-    return {**design, **{k: v for k, v in csv_row(result.metrics).items() if k not in design}}
+    return {**design, **{k: v for k, v in csv_row(metrics).items() if k not in design}}
 
 
 def run_rows(specs: Sequence[TrialSpec], suite: SuiteConfig | None = None, workers: int = 1, cluster: str | None = None) -> Iterator[Row]:
     """Every spec's row, in the order the trials finish."""
-    task = functools.partial(run_spec, suite=suite)
+    task = functools.partial(_indexed, suite=suite)
     if cluster is not None:
-        return _on_dask(specs, task, cluster, workers)
-    if workers <= 1 or len(specs) <= 1:
-        return map(task, specs)
-    return _on_processes(specs, task, workers)
+        done = _on_dask(specs, task, cluster, workers)
+    elif workers <= 1 or len(specs) <= 1:
+        done = map(task, specs)
+    else:
+        done = _on_processes(specs, task, workers)
+    by_index = {s.index: s for s in specs}
+    return (row_of(by_index[i], metrics) for i, metrics in done)
 
 
-def _on_processes(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Row], workers: int) -> Iterator[Row]:
-    """A pool of fresh worker processes; a failed trial stops the sweep (the pending ones are cancelled)."""
-    todo = iter(specs)
-    with ProcessPoolExecutor(max_workers=min(workers, len(specs)), mp_context=multiprocessing.get_context("spawn")) as pool:
-        running: set[Future[Row]] = set()
-        try:
-            while True:
-                running |= {pool.submit(task, s) for s in itertools.islice(todo, workers * IN_FLIGHT_PER_WORKER - len(running))}
-                if not running:
-                    return
-                done, running = wait(running, return_when=FIRST_COMPLETED)
-                for f in done:
-                    yield f.result()
-        finally:
-            for f in running:
-                f.cancel()
+def _indexed(spec: TrialSpec, suite: SuiteConfig | None) -> tuple[int, Row]:
+    return spec.index, run_spec(spec, suite)
 
 
-def _on_dask(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Row], cluster: str, workers: int) -> Iterator[Row]:
+def _ignore_interrupts() -> None:
+    """In a worker: Ctrl-C is the parent's to handle (it stops the pool), not each worker's traceback."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _on_processes(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Done], workers: int) -> Iterator[Done]:
+    """A pool of fresh worker processes. A failed trial or a Ctrl-C stops the sweep: the workers are
+    terminated (the trials they were running are lost; the finished ones have been yielded)."""
+    main = threading.current_thread() is threading.main_thread()  # (only the main thread may set handlers)
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None  # inherited: a Ctrl-C while they start is not theirs
+    try:
+        pool = multiprocessing.get_context("spawn").Pool(min(workers, len(specs)), initializer=_ignore_interrupts)
+    finally:
+        if main:
+            signal.signal(signal.SIGINT, previous)
+    try:
+        yield from pool.imap_unordered(task, specs, chunksize=1)
+        pool.close()
+    finally:
+        pool.terminate()
+        pool.join()
+
+
+def _on_dask(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Done], cluster: str, workers: int) -> Iterator[Done]:
     """On a Dask cluster: a LocalCluster of `workers` processes (one thread each: a trial is
     CPU-bound Python), or the scheduler at `cluster`'s address with the workers it has."""
     import logging

@@ -8,7 +8,7 @@ import time
 from pathlib import Path
 
 from haven_scenarios.record.report import report_csv, session_folders
-from haven_scenarios.run.batch import Progress, group_summaries, run_batch
+from haven_scenarios.run.batch import Progress, group_summaries, journal_path, run_batch
 from haven_scenarios.run.grid import TrialSpec, param_keys, parse_grid, parse_seeds, plan_sweep
 from haven_scenarios.run.suite import load_suite_config
 from haven_scenarios.run.sweep import LOCAL, cores
@@ -96,9 +96,14 @@ def batch_cmd(args: argparse.Namespace) -> int:
     try:
         rows = run_batch(specs, out, suite, workers, args.cluster, progress)
     except OSError as e:  # a cluster that cannot be reached, a CSV that cannot be written
+        progress.close(finished=False)
         return fail(f"{args.cluster or out}: {e}")
-    finally:
-        progress.close()
+    except KeyboardInterrupt:
+        progress.close(finished=False)
+        kept = journal_path(out)
+        print(f"haven: interrupted; the {progress.done} finished trial(s) are in {kept}" if kept.exists() else "haven: interrupted", file=sys.stderr)
+        return 130
+    progress.close()
     for line in group_summaries(specs, rows):
         print(f"haven: {line}")
     print(f"haven: wrote {out}")
