@@ -42,7 +42,8 @@ RAYS = 16  # directions sampled for walls
 WALL_STOP_S = 0.1  # the slide rule stops motion into a wall this many seconds (at the current speed) before wall_stop_m
 RAY_MARGIN_M = 0.1  # rays go this much further than a wall can matter (a gap at the limit is not rounded below it)
 # Their unit vectors, computed once (as the loop over k did: the same floats).
-_RAY_DIRS = np.array([(math.cos(2.0 * math.pi * k / RAYS), math.sin(2.0 * math.pi * k / RAYS)) for k in range(RAYS)])
+_RAY_UNITS = [(math.cos(2.0 * math.pi * k / RAYS), math.sin(2.0 * math.pi * k / RAYS)) for k in range(RAYS)]
+_RAY_DIRS = np.array(_RAY_UNITS)
 
 
 @dataclass(frozen=True)
@@ -142,8 +143,8 @@ class SocialForce:
         person moves exactly as with rays to the far wall (10 m)."""
         p = self.p
         reach = max(p.wall_look_m, p.wall_stop_m + cap * WALL_STOP_S) + RAY_MARGIN_M
-        gaps = self.free_run(me, _RAY_DIRS, self.radius + reach) - self.radius
-        return [(float(c), float(s), float(g)) for (c, s), g in zip(_RAY_DIRS, gaps, strict=True)]
+        gaps = (self.free_run(me, _RAY_DIRS, self.radius + reach) - self.radius).tolist()
+        return [(c, s, g) for (c, s), g in zip(_RAY_UNITS, gaps, strict=True)]
 
     def _walls(self, rays: Sequence[tuple[float, float, float]]) -> Point:
         p = self.p
