@@ -6,7 +6,14 @@ PY=${HAVEN_PYTHON:-.venv/bin/python}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 "$PY" -m venv "$tmp/venv"
-"$tmp/venv/bin/pip" install --quiet --disable-pip-version-check -r requirements.in
+# The current pins constrain the resolution, so adding a package changes no other pin unless it must
+# (then pip says which one conflicts: drop that line from the lock and run again); HAVEN_LOCK_UPGRADE=1 re-resolves all.
+constraints=()
+if [[ -f requirements.lock && -z "${HAVEN_LOCK_UPGRADE:-}" ]]; then
+  grep '==' requirements.lock | sed 's/\[[a-z]*\]==/==/' > "$tmp/constraints.txt"
+  constraints=(-c "$tmp/constraints.txt")
+fi
+"$tmp/venv/bin/pip" install --quiet --disable-pip-version-check -r requirements.in "${constraints[@]}"
 {
   echo "# Exact versions of everything requirements.in pulls in (Python 3.12; 3.11 resolves the same set)."
   echo "# Regenerate: make lock. The import-name metadata the ros-* wheels also register (rclpy==7.1.5,"

@@ -3,6 +3,8 @@ other, keeping right, along walls, never closing in on the robot."""
 
 import math
 
+import numpy as np
+
 from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, make_walker
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
 from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
@@ -19,8 +21,9 @@ HALL = {  # a 2 m wide, 12 m long hallway along x (HAVEN's hallway width)
 }
 
 
-def open_space(start, direction):
-    return 10.0
+def open_space(start, direction, max_m=10.0):
+    """No wall anywhere: a `RayFn` (one direction, or an (N, 2) array of them)."""
+    return np.full(np.shape(direction)[:-1], max_m) if isinstance(direction, np.ndarray) else max_m
 
 
 def glide(force, start, desired, others_at, seconds, dt=0.1):

@@ -6,6 +6,7 @@ from dataclasses import replace
 import pytest
 
 from haven_scenarios.run.batch import run_batch
+from haven_scenarios.run.grid import plan_sweep
 from haven_scenarios.run.trial import parse_condition, run_trial
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_sim.common.events import EventKind
@@ -63,7 +64,7 @@ def test_the_hallway_shows_the_turn_signals_only_as_hallway_did_unless_a_run_say
 
 def test_batch_writes_one_csv_row_per_trial(tmp_path):
     out = tmp_path / "b.csv"
-    rows = run_batch(load_scenario("shared_room"), 3, 10, Toggles(), out)
+    rows = run_batch(plan_sweep([load_scenario("shared_room")], {"condition": ("all",)}, (10, 11, 12)), out)
     with out.open() as f:
         read = list(csv.DictReader(f))
     assert [r["trial"] for r in read] == ["0", "1", "2"] and [r["seed"] for r in read] == ["10", "11", "12"]

@@ -107,3 +107,13 @@ def test_random_queries_on_the_small_world_are_all_clear(small):
         assert min_clearance(world, plan.points) >= planner.params.inflation_m - 0.02
         assert plan.length_m >= math.dist(s, g) - 1e-9
         done += 1
+
+
+def test_free_run_to_the_walls_of_a_box_one_ray_or_many_at_once():
+    planner = GridPlanner(rasterise(box_world(4.0)))  # walls 0.1 thick on the border: inner faces at 0.05 and 3.95
+    start = (1.0, 2.0)
+    dirs = np.array([(1.0, 0.0), (-1.0, 0.0), (0.0, 1.0), (0.0, -1.0)])
+    one_by_one = [planner.free_run(start, (float(x), float(y))) for x, y in dirs]
+    assert one_by_one == pytest.approx([2.95, 0.95, 1.95, 1.95], abs=planner.grid.resolution_m)
+    assert planner.free_run(start, dirs).tolist() == one_by_one  # the same samples, the same first hit
+    assert planner.free_run(start, dirs, max_m=0.5).tolist() == [0.5] * 4  # nothing within reach

@@ -1,63 +1,96 @@
-"""Batch mode: many seeded trials of a scenario without DDS, one CSV row each."""
+"""Batch mode: a sweep of seeded trials without DDS, one CSV row each, on every core or a cluster.
+
+Rows are journaled as the trials finish (`<csv>.rows.jsonl`, flushed line by line: a crash or a
+Ctrl-C loses no finished trial), then the CSV is written in trial order with every column any row
+has (scenarios with more participants have more columns) and the journal removed.
+"""
 
 from __future__ import annotations
 
 import csv
+import json
+import os
 import sys
 import time
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, TextIO
 
-from haven_scenarios.record.report import csv_row
+from tqdm import tqdm
+
+from haven_scenarios.run.grid import TrialSpec
 from haven_scenarios.run.suite import SuiteConfig
-from haven_scenarios.run.trial import TrialResult, run_trial
+from haven_scenarios.run.sweep import Row, run_rows
 from haven_scenarios.study.rules import EndReason
-from haven_scenarios.study.scenario import Scenario
-from haven_viz.cues import Toggles
+
+NOT_DESIGN = ("trial", "seed")  # design columns that do not make a group of the summary
+MAX_SUMMARY_LINES = 24
 
 
-def progress_bar(done: int, total: int, started: float, out: TextIO = sys.stderr) -> None:
-    elapsed = time.monotonic() - started
-    if not out.isatty():  # a log, not a terminal: one line at the end
-        if done == total:
-            out.write(f"{done}/{total} trials in {elapsed:.1f} s\n")
-        return
-    width = 30
-    filled = int(width * done / max(total, 1))
-    eta = elapsed / done * (total - done) if done else 0.0
-    out.write(f"\r[{'#' * filled}{'.' * (width - filled)}] {done}/{total} trials  {elapsed:5.1f} s  eta {eta:5.1f} s")
-    if done == total:
-        out.write("\n")
-    out.flush()
+class Progress:
+    """Trials done of the total with rate and ETA (tqdm) on a terminal; elsewhere (a log) one line at the end."""
+
+    def __init__(self, total: int, out: TextIO = sys.stderr) -> None:
+        self.total, self.out, self.started, self.done = total, out, time.monotonic(), 0
+        self.bar = tqdm(total=total, unit="trial", file=out, smoothing=0.05) if out.isatty() else None
+
+    def update(self, done: int) -> None:
+        if self.bar is not None:
+            self.bar.update(done - self.done)
+        self.done = done
+
+    def close(self, finished: bool = True) -> None:
+        """`finished`: the sweep ran to its end (a log gets its one line then, not after an error)."""
+        if self.bar is not None:
+            self.bar.close()
+        elif finished:
+            self.out.write(f"{self.done}/{self.total} trials in {time.monotonic() - self.started:.1f} s\n")
+
+
+def journal_path(csv_path: Path) -> Path:
+    return csv_path.with_name(csv_path.name + ".rows.jsonl")
+
+
+def write_csv(rows: Sequence[Row], path: Path) -> None:
+    """The rows in trial order under the union of their columns (first seen first), written whole
+    to a temporary file and then renamed over `path`."""
+    keys: dict[str, None] = {}
+    for r in rows:
+        keys.update(dict.fromkeys(r))
+    tmp = path.with_name(path.name + ".tmp")
+    with tmp.open("w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(keys))
+        writer.writeheader()
+        writer.writerows(sorted(rows, key=lambda r: r["trial"]))
+    os.replace(tmp, path)
 
 
 def run_batch(
-    scenario: Scenario,
-    trials: int,
-    seed: int,
-    toggles: Toggles,
+    specs: Sequence[TrialSpec],
     csv_path: Path,
-    on_trial: Callable[[int, TrialResult], None] | None = None,
     suite: SuiteConfig | None = None,
-) -> list[dict[str, Any]]:
-    """Trials with seeds seed, seed + 1, ...; the CSV is written row by row (a crash loses nothing)."""
-    rows: list[dict[str, Any]] = []
+    workers: int = 1,
+    cluster: str | None = None,
+    progress: Progress | None = None,
+) -> list[Row]:
+    """Run the sweep (`workers` processes, or on the Dask `cluster`) into the CSV; rows in trial order."""
     csv_path.parent.mkdir(parents=True, exist_ok=True)
-    with csv_path.open("w", newline="") as f:
-        writer: csv.DictWriter[str] | None = None
-        for i in range(trials):
-            result = run_trial(scenario, seed + i, toggles, suite)
-            row = {"trial": i, "seed": seed + i, **result.metrics}
-            flat = csv_row(row)
-            if writer is None:
-                writer = csv.DictWriter(f, fieldnames=list(flat), extrasaction="ignore")
-                writer.writeheader()
-            writer.writerow(flat)
-            f.flush()
-            rows.append(row)
-            if on_trial is not None:
-                on_trial(i, result)
+    journal = journal_path(csv_path)
+    rows: list[Row] = []
+    try:
+        with journal.open("w") as j:
+            for row in run_rows(specs, suite, workers, cluster):
+                j.write(json.dumps(row) + "\n")
+                j.flush()
+                rows.append(row)
+                if progress is not None:
+                    progress.update(len(rows))
+    finally:
+        if not rows:  # (nothing ran: a cluster not reached, say) no journal of nothing
+            journal.unlink(missing_ok=True)
+    rows.sort(key=lambda r: r["trial"])
+    write_csv(rows, csv_path)
+    journal.unlink()
     return rows
 
 
@@ -69,3 +102,15 @@ def summary(rows: Sequence[dict[str, Any]]) -> str:
     contacts = sum(r["human_contacts"] for r in rows)
     dmin = min((r["min_human_distance_m"] for r in rows if r["min_human_distance_m"] is not None), default=float("nan"))
     return f"{done}/{n} completed, robot finishes in {mean_t:.1f} s on average, {contacts} human contact(s), closest approach {dmin:.2f} m"
+
+
+def group_summaries(specs: Sequence[TrialSpec], rows: Sequence[Row]) -> list[str]:
+    """One summary line per design group (scenario, condition, model, grid parameters; all seeds)."""
+    groups: dict[str, list[Row]] = {}
+    for spec, row in zip(specs, rows, strict=True):
+        label = ", ".join(f"{v}" if k == "scenario" else f"{k} {v}" for k, v in spec.columns().items() if k not in NOT_DESIGN)
+        groups.setdefault(label, []).append(row)
+    lines = [f"{label}: {summary(g)}" for label, g in groups.items()]
+    if len(lines) > MAX_SUMMARY_LINES:
+        lines = [*lines[:MAX_SUMMARY_LINES], f"... and {len(lines) - MAX_SUMMARY_LINES} more groups (see the CSV)"]
+    return lines

@@ -17,15 +17,33 @@ a few dozen lines of numpy cover one or two people here.)
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Protocol, overload
+
+import numpy as np
 
 from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
-from haven_sim.common.geometry import Point
+from haven_sim.common.geometry import FloatArray, Point
 
-RayFn = Callable[[Point, Point], float]  # free distance from a point along a unit direction (walls)
+
+class RayFn(Protocol):
+    """Free distance from a point along a unit direction to the walls (the planner's `free_run`);
+    given an (N, 2) array of directions, the N distances at once."""
+
+    @overload
+    def __call__(self, start: Point, direction: Point, max_m: float = 10.0) -> float: ...
+
+    @overload
+    def __call__(self, start: Point, direction: FloatArray, max_m: float = 10.0) -> FloatArray: ...
+
 
 RAYS = 16  # directions sampled for walls
+WALL_STOP_S = 0.1  # the slide rule stops motion into a wall this many seconds (at the current speed) before wall_stop_m
+RAY_MARGIN_M = 0.1  # rays go this much further than a wall can matter (a gap at the limit is not rounded below it)
+# Their unit vectors, computed once (as the loop over k did: the same floats).
+_RAY_UNITS = [(math.cos(2.0 * math.pi * k / RAYS), math.sin(2.0 * math.pi * k / RAYS)) for k in range(RAYS)]
+_RAY_DIRS = np.array(_RAY_UNITS)
 
 
 @dataclass(frozen=True)
@@ -83,10 +101,10 @@ class SocialForce:
         for b in others:
             fx, fy = self._agent(me, heading, b)
             ax, ay = ax + fx, ay + fy
-        rays = self._rays(me)
+        cap = max(speed0, 0.3) * p.max_speed_factor
+        rays = self._rays(me, cap)
         fx, fy = self._walls(rays)
         vx, vy = self.v[0] + (ax + fx) * dt, self.v[1] + (ay + fy) * dt
-        cap = max(speed0, 0.3) * p.max_speed_factor
         ux, uy, n = _unit(vx, vy)
         if n > cap:
             vx, vy = ux * cap, uy * cap
@@ -118,14 +136,15 @@ class SocialForce:
             fy -= p.keep_right * heading[0] * (1.0 - dist / p.oncoming_m)
         return fx, fy
 
-    def _rays(self, me: Point) -> list[tuple[float, float, float]]:
-        """(direction x, direction y, gap from my body to the wall) for `RAYS` directions."""
-        out = []
-        for k in range(RAYS):
-            a = 2.0 * math.pi * k / RAYS
-            c, s = math.cos(a), math.sin(a)
-            out.append((c, s, self.free_run(me, (c, s)) - self.radius))
-        return out
+    def _rays(self, me: Point, cap: float) -> list[tuple[float, float, float]]:
+        """(direction x, direction y, gap from my body to the wall) for `RAYS` directions, cast only
+        as far as a wall can matter: the wall force's reach, or where the slide rule starts at the
+        top speed `cap` (the velocity never exceeds it). A gap beyond that changes nothing, so the
+        person moves exactly as with rays to the far wall (10 m)."""
+        p = self.p
+        reach = max(p.wall_look_m, p.wall_stop_m + cap * WALL_STOP_S) + RAY_MARGIN_M
+        gaps = (self.free_run(me, _RAY_DIRS, self.radius + reach) - self.radius).tolist()
+        return [(c, s, g) for (c, s), g in zip(_RAY_UNITS, gaps, strict=True)]
 
     def _walls(self, rays: Sequence[tuple[float, float, float]]) -> Point:
         p = self.p
@@ -149,7 +168,7 @@ class SocialForce:
                 vx, vy = vx + toward * ux, vy + toward * uy
         for c, s, gap in rays:  # slide along walls, never into them
             into = vx * c + vy * s
-            if into > 0 and gap < self.p.wall_stop_m + into * 0.1:
+            if into > 0 and gap < self.p.wall_stop_m + into * WALL_STOP_S:
                 vx, vy = vx - into * c, vy - into * s
         return vx, vy
 

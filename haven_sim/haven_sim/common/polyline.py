@@ -29,6 +29,7 @@ class Polyline:
     def __init__(self, points: FloatArray | Sequence[Point] | Sequence[Pose2D]) -> None:
         pts = np.asarray([(p[0], p[1]) for p in points], dtype=float).reshape(-1, 2)
         self.points = pts
+        self._xy: list[tuple[float, float]] = [(px, py) for px, py in pts.tolist()]
         steps = np.hypot(*np.diff(pts, axis=0).T) if len(pts) > 1 else np.zeros(0)
         self.cumulative: FloatArray = np.concatenate([[0.0], np.cumsum(steps)]) if len(pts) else np.zeros(0)
 
@@ -40,7 +41,7 @@ class Polyline:
         return float(self.cumulative[-1]) if len(self.points) else 0.0
 
     def _segment_at(self, s: float) -> int:
-        return min(len(self.points) - 2, max(0, int(np.searchsorted(self.cumulative, s, side="right")) - 1))
+        return min(len(self.points) - 2, max(0, int(self.cumulative.searchsorted(s, side="right")) - 1))
 
     def project(self, x: float, y: float, s_from: float = 0.0, s_to: float = math.inf) -> Projection:
         """The closest point among the segments overlapping arc lengths [s_from, s_to]."""
@@ -51,15 +52,26 @@ class Polyline:
             return Projection(math.hypot(pts[0, 0] - x, pts[0, 1] - y), 0, 0.0, (float(pts[0, 0]), float(pts[0, 1])))
         lo = self._segment_at(s_from)
         hi = len(pts) - 1 if math.isinf(s_to) else max(lo + 1, min(len(pts) - 1, self._segment_at(s_to) + 1))
-        a, b = pts[lo:hi], pts[lo + 1 : hi + 1]
-        d = b - a
-        ln2 = np.einsum("ij,ij->i", d, d)
-        t = np.clip(np.einsum("ij,ij->i", np.array([x, y]) - a, d) / np.where(ln2 > 0, ln2, 1.0), 0.0, 1.0)
-        closest = a + d * t[:, None]
-        dist = np.hypot(closest[:, 0] - x, closest[:, 1] - y)
-        k = int(np.argmin(dist))
-        s = float(self.cumulative[lo + k] + t[k] * math.sqrt(ln2[k]))
-        return Projection(float(dist[k]), lo + k, s, (float(closest[k, 0]), float(closest[k, 1])))
+        dist, k, t, ln2, cx, cy = self._closest(x, y, lo, hi)
+        return Projection(dist, k, float(self.cumulative[k] + t * math.sqrt(ln2)), (cx, cy))
+
+    def _closest(self, x: float, y: float, lo: int, hi: int) -> tuple[float, int, float, float, float, float]:
+        """(distance, segment, t along it, its squared length, closest point) of the first nearest
+        segment in lo..hi-1. Plain floats, segment by segment: a query spans a few segments, and
+        numpy's per-call overhead cost more than the arithmetic. The same operations in the same
+        order as the array form this replaced, and numpy's hypot for the distances that can be the
+        nearest (squared distances within rounding of the least): the same numbers to the last bit."""
+        xy = self._xy
+        found = []
+        for i in range(lo, hi):
+            (ax, ay), (bx, by) = xy[i], xy[i + 1]
+            dx, dy = bx - ax, by - ay
+            ln2 = dx * dx + dy * dy
+            t = min(max(((x - ax) * dx + (y - ay) * dy) / (ln2 if ln2 > 0 else 1.0), 0.0), 1.0)
+            cx, cy = ax + dx * t, ay + dy * t
+            found.append(((cx - x) ** 2 + (cy - y) ** 2, i, t, ln2, cx, cy))
+        near = min(f[0] for f in found) * (1.0 + 1e-9) + 1e-300
+        return min(((float(np.hypot(cx - x, cy - y)), i, t, ln2, cx, cy) for q, i, t, ln2, cx, cy in found if q <= near), key=lambda c: c[0])
 
     def point_at(self, s: float) -> Point:
         """The point at arc length s (clamped to the ends); on a zero-length segment, its start."""

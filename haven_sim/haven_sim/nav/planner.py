@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Protocol
+from typing import Protocol, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -94,7 +94,11 @@ class Planner(Protocol):
 
     def hard_clear(self, pts: FloatArray) -> bool: ...
 
+    @overload
     def free_run(self, start: Point, direction: Point, max_m: float = 10.0) -> float: ...
+
+    @overload
+    def free_run(self, start: Point, direction: FloatArray, max_m: float = 10.0) -> FloatArray: ...
 
 
 class GridPlanner:
@@ -138,17 +142,26 @@ class GridPlanner:
         rows, cols, inside = self._cells_of(np.asarray(pts, dtype=float).reshape(-1, 2))
         return bool(inside.all() and not self.hard_blocked[rows, cols].any())
 
-    def free_run(self, start: Point, direction: Point, max_m: float = 10.0) -> float:
+    @overload
+    def free_run(self, start: Point, direction: Point, max_m: float = 10.0) -> float: ...
+
+    @overload
+    def free_run(self, start: Point, direction: FloatArray, max_m: float = 10.0) -> FloatArray: ...
+
+    def free_run(self, start: Point, direction: Point | FloatArray, max_m: float = 10.0) -> float | FloatArray:
         """How far one can go from `start` along the unit vector `direction` before hitting an
-        obstacle of the map (not inflated)."""
+        obstacle of the map (not inflated); given an (N, 2) array of directions, the N distances,
+        cast in one numpy pass (a simulated participant looks for walls in 16 directions a tick)."""
+        dirs = np.asarray(direction, dtype=float).reshape(-1, 2)
         step = self.grid.resolution_m / 2.0
         s = np.arange(0.0, max_m + step, step)
-        pts = np.column_stack([start[0] + direction[0] * s, start[1] + direction[1] * s])
-        rows, cols, inside = self._cells_of(pts)
+        pts = np.asarray(start, dtype=float) + dirs[:, None, :] * s[None, :, None]  # (rays, samples, 2)
+        rows, cols, inside = self._cells_of(pts.reshape(-1, 2))
         hit = ~inside
         hit[inside] = self.occupied[rows[inside], cols[inside]]
-        idx = np.flatnonzero(hit)
-        return float(s[idx[0]]) if len(idx) else max_m
+        hit = hit.reshape(len(dirs), len(s))
+        runs = np.where(hit.any(axis=1), s[hit.argmax(axis=1)], max_m)
+        return runs if isinstance(direction, np.ndarray) else float(runs[0])
 
     def visible(self, a: FloatArray, b: FloatArray) -> npt.NDArray[np.bool_]:
         """Line of sight for each segment a[i] -> b[i] (arrays (M, 2)) through the inflated grid."""

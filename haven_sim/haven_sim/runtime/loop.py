@@ -50,11 +50,14 @@ class InProcessLoop:
             self.schedule.add(ParticipantInfo.of(c))
         # Tell each component which of its outputs nobody reads, so it may skip making them.
         read = set(observed) | set(self._sim_handlers) | {t for h in self._handlers.values() for t in h}
+        self._read = frozenset(read)  # a message on any other topic reaches no one: it is not routed
         for c in [sim, *self.components]:
             c.unread = frozenset(t for t in c.outputs() if t not in read)
 
     def _route(self, messages: Sequence[Message], to_sim: bool) -> None:
         for sent in messages:
+            if sent.topic not in self._read:
+                continue
             data = self.sequencer.number(sent.data) if isinstance(sent.data, Event) else sent.data
             m = Message(sent.topic, on_the_wire(sent.topic, data), sent.stamp)
             late = self.delay(m.topic) if self.delay is not None else 0.0

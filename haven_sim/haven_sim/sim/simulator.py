@@ -120,7 +120,8 @@ class SimulatorComponent:
         """What is published for the current step (state at `sim.time`)."""
         sim, c = self.sim, self.config
         now, k = sim.time, sim.steps
-        out = [Message(topics.CLOCK, now, now)]
+        skip = self.unread
+        out = [Message(topics.CLOCK, now, now)] if topics.CLOCK not in skip else []
         events = sim.pop_events()
         if self._static_due:
             self._static_due = False
@@ -130,14 +131,16 @@ class SimulatorComponent:
             out.append(Message(topics.MAP, sim.occupancy(c.map_resolution_m), now))
         odom = sim.odometry_pose()
         out.append(Message(topics.ODOM, RobotState(odom, sim.robot_twist()), now))
-        frames = [robot_frame(odom, c.odom_frame, c.base_frame)]
+        tf = topics.TF not in skip
+        frames = [robot_frame(odom, c.odom_frame, c.base_frame)] if tf else []
         if due(k, self._step_ns, self._humans_ns):
             humans = sim.human_poses()
-            frames += human_frames(humans, c.map_frame)
+            frames += human_frames(humans, c.map_frame) if tf else []
             out.append(Message(topics.HUMANS, humans, now))
-            out += [Message(topics.human_pose(hid), pose, now) for hid, pose in humans.items()]
-        out.append(Message(topics.TF, frames, now))
-        if due(k, self._step_ns, self._scan_ns) and topics.SCAN not in self.unread:
+            out += [Message(topics.human_pose(hid), pose, now) for hid, pose in humans.items() if topics.human_pose(hid) not in skip]
+        if tf:
+            out.append(Message(topics.TF, frames, now))
+        if due(k, self._step_ns, self._scan_ns) and topics.SCAN not in skip:
             out.append(Message(topics.SCAN, ScanData(sim.scan(), c.sim.scan, 1.0 / c.sim.scan.rate_hz), now))
         if due(k, self._step_ns, self._battery_ns):
             out.append(Message(topics.BATTERY, sim.battery_reading(), now))

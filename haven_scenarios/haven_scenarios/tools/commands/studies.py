@@ -8,12 +8,20 @@ import time
 from pathlib import Path
 
 from haven_scenarios.record.report import report_csv, session_folders
-from haven_scenarios.run.batch import progress_bar, run_batch, summary
+from haven_scenarios.run.batch import Progress, group_summaries, journal_path, run_batch
+from haven_scenarios.run.grid import TrialSpec, param_keys, parse_grid, parse_seeds, plan_sweep
 from haven_scenarios.run.suite import load_suite_config
+from haven_scenarios.run.sweep import LOCAL, cores
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands.common import SEED, bounded_int, existing_file, fail
 
+MAX_WORKERS = 1024
+GRID_HELP = (
+    "an axis of the sweep (repeat for more): condition=all,none,path_projection (cues joined by +), model=walker,yielder,blocker, "
+    f"speed_mps=0.8,1.2 or a participant parameter{' (' + ', '.join(param_keys()) + ')' if param_keys() else ''}"
+)
+CLUSTER_HELP = "run on Dask: local (a LocalCluster of --workers processes) or a running scheduler's address (tcp://host:8786)"
 CONDITION_HELP = "cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator (default: the scenario's condition)"
 
 
@@ -22,11 +30,15 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     report.add_argument("paths", nargs="+", type=Path)
     report.add_argument("--out", type=Path, default=Path("report.csv"))
     report.set_defaults(func=report_cmd)
-    batch = sub.add_parser("batch", help="run many simulated trials without ROS, one CSV row per trial")
-    batch.add_argument("scenario", help=f"a shipped scenario ({', '.join(scenario_names())}) or a scenario YAML")
-    batch.add_argument("--trials", type=bounded_int(1), default=10)
-    batch.add_argument("--seed", type=SEED, default=0)
+    batch = sub.add_parser("batch", help="run many simulated trials without ROS, one CSV row per trial, on every core or a Dask cluster")
+    batch.add_argument("scenarios", nargs="+", metavar="scenario", help=f"shipped scenarios ({', '.join(scenario_names())}) or scenario YAMLs")
+    batch.add_argument("--trials", type=bounded_int(1), default=None, help="seeds --seed, --seed + 1, ... (default 10)")
+    batch.add_argument("--seed", type=SEED, default=None, help="the first seed (default 0)")
+    batch.add_argument("--seeds", default=None, help="the seeds, e.g. 0-9 or 1,4,7 (instead of --trials/--seed)")
     batch.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
+    batch.add_argument("--grid", action="append", default=[], metavar="KEY=V1,V2", help=GRID_HELP)
+    batch.add_argument("--workers", type=bounded_int(1, MAX_WORKERS), default=None, help=f"worker processes (default: every core, {cores()} here)")
+    batch.add_argument("--cluster", default=None, metavar="local|ADDRESS", help=CLUSTER_HELP)
     batch.add_argument("--out", default=None, help="CSV path (default: sessions/batch_<scenario>_<time>.csv)")
     batch.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML (the same file `haven run` takes)")
     batch.set_defaults(func=batch_cmd)
@@ -46,21 +58,53 @@ def report_cmd(args: argparse.Namespace) -> int:
     return 1 if missing else 0
 
 
-def batch_cmd(args: argparse.Namespace) -> int:
-    try:
-        scenario = load_scenario(args.scenario)
-        toggles = parse_condition(args.condition or scenario.condition)
-        if args.trials < 1:
-            raise ValueError(f"--trials must be at least 1, got {args.trials}")
+def _seeds(args: argparse.Namespace) -> tuple[int, ...]:
+    if args.seeds is not None:
+        if args.trials is not None or args.seed is not None:
+            raise ValueError("give either --seeds or --trials/--seed, not both")
+        return parse_seeds(args.seeds)
+    first = args.seed or 0
+    return tuple(range(first, first + (args.trials or 10)))
+
+
+def _sweep(args: argparse.Namespace) -> list[TrialSpec]:
+    """The trials the arguments ask for; ValueError (one line) for anything wrong."""
+    scenarios = [load_scenario(s) for s in dict.fromkeys(args.scenarios)]
+    for scenario in scenarios:
         if any(h.model == "teleop" for h in scenario.humans):
             raise ValueError(f"scenario {scenario.name} has a teleoperated participant: run it with `haven run`")
+    axes = parse_grid(args.grid)
+    if args.condition is not None:
+        if "condition" in axes:
+            raise ValueError("give either --condition or --grid condition=..., not both")
+        axes = {"condition": (condition_name(parse_condition(args.condition)),), **axes}
+    if args.cluster is not None and args.cluster != LOCAL and "://" not in args.cluster:
+        raise ValueError(f"--cluster: expected local or a scheduler address like tcp://host:8786, got {args.cluster!r}")
+    return plan_sweep(scenarios, axes, _seeds(args))
+
+
+def batch_cmd(args: argparse.Namespace) -> int:
+    try:
+        specs = _sweep(args)
         suite = load_suite_config(args.params_file)
     except (ScenarioError, ValueError) as e:
         return fail(str(e))
-    out = Path(args.out) if args.out else Path("sessions") / f"batch_{scenario.name}_{time.strftime('%Y%m%d_%H%M%S')}.csv"
-    started = time.monotonic()
-    progress_bar(0, args.trials, started)
-    rows = run_batch(scenario, args.trials, args.seed, toggles, out, lambda i, _: progress_bar(i + 1, args.trials, started), suite)
-    print(f"haven: {scenario.name}, condition {condition_name(toggles)}: {summary(rows)}")
+    names = "+".join(dict.fromkeys(s.scenario.name for s in specs))
+    out = Path(args.out) if args.out else Path("sessions") / f"batch_{names}_{time.strftime('%Y%m%d_%H%M%S')}.csv"
+    workers = args.workers or cores()
+    progress = Progress(len(specs))
+    try:
+        rows = run_batch(specs, out, suite, workers, args.cluster, progress)
+    except OSError as e:  # a cluster that cannot be reached, a CSV that cannot be written
+        progress.close(finished=False)
+        return fail(f"{args.cluster or out}: {e}")
+    except KeyboardInterrupt:
+        progress.close(finished=False)
+        kept = journal_path(out)
+        print(f"haven: interrupted; the {progress.done} finished trial(s) are in {kept}" if kept.exists() else "haven: interrupted", file=sys.stderr)
+        return 130
+    progress.close()
+    for line in group_summaries(specs, rows):
+        print(f"haven: {line}")
     print(f"haven: wrote {out}")
     return 0

@@ -1,0 +1,111 @@
+"""Where a sweep's trials run: in this process, in worker processes on every core, or on a Dask cluster.
+
+A trial's row depends only on its `TrialSpec` (its own seed; no module-level random state, caches
+that change results or set-ordering in the core), so one worker, all cores and a cluster give
+byte-identical rows. Worker processes are started with "spawn": a fresh interpreter, like a Dask
+worker, so nothing inherited from the parent (an RNG, a cache, numpy's thread pools) can leak in.
+Rows come back in the order trials finish; `run/batch.py` journals them and sorts the CSV.
+
+Dask rather than Ray for the cluster: Dask's wheels are pure Python (dask, distributed and their
+dependencies add about 37 MB), a `LocalCluster` needs no daemon, and a lab's machines run
+`dask scheduler` on one and `dask worker tcp://HOST:8786` on the others.
+"""
+
+from __future__ import annotations
+
+import functools
+import multiprocessing
+import os
+import signal
+import threading
+from collections.abc import Callable, Iterator, Sequence
+from typing import Any
+
+from haven_scenarios.record.report import csv_row
+from haven_scenarios.run.grid import TrialSpec
+from haven_scenarios.run.suite import SuiteConfig
+from haven_scenarios.run.trial import run_trial
+
+Row = dict[str, Any]
+Done = tuple[int, Row]  # a trial's index and metrics
+LOCAL = "local"  # --cluster local: a Dask LocalCluster on this machine
+
+
+def cores() -> int:
+    """The cores this process may use (a container's or taskset's limit, not the machine's count)."""
+    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+
+
+def run_spec(spec: TrialSpec, suite: SuiteConfig | None = None) -> Row:
+    """One trial's metrics, as compute() gives them (the parent makes the CSV row: a worker then
+    need not import the recording reader behind `csv_row`, a second of start-up on a loaded machine)."""
+    return run_trial(spec.scenario, spec.seed, spec.toggles, suite).metrics
+
+
+def row_of(spec: TrialSpec, metrics: Row) -> Row:
+    """A trial's CSV row: its design columns, then its metrics (flat, as `haven report` writes them)."""
+    design = spec.columns()
+    return {**design, **{k: v for k, v in csv_row(metrics).items() if k not in design}}
+
+
+def run_rows(specs: Sequence[TrialSpec], suite: SuiteConfig | None = None, workers: int = 1, cluster: str | None = None) -> Iterator[Row]:
+    """Every spec's row, in the order the trials finish."""
+    task = functools.partial(_indexed, suite=suite)
+    if cluster is not None:
+        done = _on_dask(specs, task, cluster, workers)
+    elif workers <= 1 or len(specs) <= 1:
+        done = map(task, specs)
+    else:
+        done = _on_processes(specs, task, workers)
+    by_index = {s.index: s for s in specs}
+    return (row_of(by_index[i], metrics) for i, metrics in done)
+
+
+def _indexed(spec: TrialSpec, suite: SuiteConfig | None) -> tuple[int, Row]:
+    return spec.index, run_spec(spec, suite)
+
+
+def _ignore_interrupts() -> None:
+    """In a worker: Ctrl-C is the parent's to handle (it stops the pool), not each worker's traceback."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _on_processes(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Done], workers: int) -> Iterator[Done]:
+    """A pool of fresh worker processes. A failed trial or a Ctrl-C stops the sweep: the workers are
+    terminated (the trials they were running are lost; the finished ones have been yielded)."""
+    main = threading.current_thread() is threading.main_thread()  # (only the main thread may set handlers)
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None  # inherited: a Ctrl-C while they start is not theirs
+    try:
+        pool = multiprocessing.get_context("spawn").Pool(min(workers, len(specs)), initializer=_ignore_interrupts)
+    finally:
+        if main:
+            signal.signal(signal.SIGINT, previous)
+    try:
+        yield from pool.imap_unordered(task, specs, chunksize=1)
+        pool.close()
+    finally:
+        pool.terminate()
+        pool.join()
+
+
+def _on_dask(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Done], cluster: str, workers: int) -> Iterator[Done]:
+    """On a Dask cluster: a LocalCluster of `workers` processes (one thread each: a trial is
+    CPU-bound Python), or the scheduler at `cluster`'s address with the workers it has."""
+    import logging
+
+    from distributed import Client, LocalCluster, as_completed
+
+    local = None
+    if cluster == LOCAL:
+        local = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=logging.ERROR)
+    try:
+        with Client(local if local is not None else cluster, timeout="10s") as client:
+            futures = client.map(task, specs, pure=False)
+            try:
+                for f in as_completed(futures):
+                    yield f.result()
+            finally:
+                client.cancel(futures)
+    finally:
+        if local is not None:
+            local.close()
