@@ -3,8 +3,8 @@ adjusting the walk they want.
 
   * `DelayLine`: a person acts on what they perceived one reaction time ago (`PersonParams.reaction_s`),
     the robot's motion included: its velocity is what they saw it move between two observations.
-  * `intent_points`: where the robot will go, as far as the cues show it: the projected-path markers
-    the person sees, or, from a lit turn signal, a short curve off the robot's heading to that side.
+  * `intent_ways`: where the robot will go, as far as the cues show it: from a lit turn signal, a
+    short curve off the robot's heading to that side, and the projected-path markers the person sees.
     Nothing without a cue: the robot's motion alone does not say where it will turn.
   * `keep_clear`: a person who sees the robot's way ahead along their own (head-on or overtaking)
     moves to the far side of it early, to keep `pass_gap_m` between their body and the robot's; one
@@ -77,15 +77,15 @@ class DelayLine:
         return self._current
 
 
-def intent_points(p: Percept) -> list[Point]:
-    """Where the cues say the robot goes: the seen path, else a lit signal's curve, else nothing."""
-    if p.path:
-        return list(p.path)
-    if p.signal == 0 or p.robot is None:
-        return []
-    r = p.robot
-    yaw = r.yaw + p.signal * SIGNAL_TURN_RAD
-    return [(r.x + s * math.cos(yaw), r.y + s * math.sin(yaw)) for s in SIGNAL_REACH_M]
+def intent_ways(p: Percept) -> list[list[Point]]:
+    """Where the cues say the robot goes, each way nearest the robot first: a lit signal's curve
+    off the robot, and the seen projected path; none without a cue."""
+    ways = [list(p.path)] if p.path else []
+    if p.signal != 0 and p.robot is not None:
+        r = p.robot
+        yaw = r.yaw + p.signal * SIGNAL_TURN_RAD
+        ways.insert(0, [(r.x + s * math.cos(yaw), r.y + s * math.sin(yaw)) for s in SIGNAL_REACH_M])
+    return ways
 
 
 def _unit(v: Point) -> tuple[float, float, float]:
@@ -93,31 +93,40 @@ def _unit(v: Point) -> tuple[float, float, float]:
     return (v[0] / n, v[1] / n, n) if n > 1e-9 else (0.0, 0.0, 0.0)
 
 
-def keep_clear(me: Pose2D, task: Point, points: Sequence[Point], seen: Seen, params: PersonParams, free_run: RayFn) -> Point | None:
-    """The walk `task` adjusted for the robot's shown way (`points`, nearest the robot first), or
-    None when the shown way does not bother this person."""
-    hx, hy, speed = _unit(task)
-    if speed == 0.0 or len(points) == 0:
-        return None
-    nx, ny = -hy, hx  # my left
-    c = clearance_m(params)
-    along: list[float] = []  # lateral offsets of shown points running along my way, ahead of me
-    crossing: tuple[float, int] | None = None  # (how far ahead, index) of the first shown point in my way
+def _read(me: Pose2D, way: tuple[float, float], points: Sequence[Point], params: PersonParams) -> tuple[list[float], tuple[float, int] | None]:
+    """Of one shown way: the lateral offsets of its points ahead of me that run along my way (or
+    against it), and (how far ahead, index) of the first point that crosses my way."""
+    hx, hy = way
+    along: list[float] = []
     for i, p in enumerate(points):
         dx, dy = p[0] - me.x, p[1] - me.y
-        ahead, lateral = dx * hx + dy * hy, dx * nx + dy * ny
+        ahead, lateral = dx * hx + dy * hy, -dx * hy + dy * hx
         if not 0.0 < ahead < params.anticipate_m:
             continue
         a, b = (p, points[i + 1]) if i + 1 < len(points) else (points[max(i - 1, 0)], p)
         tx, ty, n = _unit((b[0] - a[0], b[1] - a[1]))
         if n == 0.0 or abs(tx * hx + ty * hy) >= ALONG_COS:
             along.append(lateral)
-        elif abs(lateral) < c and crossing is None:
-            crossing = (ahead, i)
+        elif abs(lateral) < clearance_m(params):
+            return along, (ahead, i)
+    return along, None
+
+
+def keep_clear(me: Pose2D, task: Point, ways: Sequence[Sequence[Point]], seen: Seen, params: PersonParams, free_run: RayFn) -> Point | None:
+    """The walk `task` adjusted for the robot's shown ways (`intent_ways`), or None when they do
+    not bother this person."""
+    hx, hy, speed = _unit(task)
+    if speed == 0.0:
+        return None
+    c = clearance_m(params)
+    along: list[float] = []
+    for points in ways:
+        lateral, crossing = _read(me, (hx, hy), points, params)
+        along += lateral
+        if crossing is not None and not (along and min(abs(a) for a in along) < c):
+            return _give_way(task, crossing, points, seen, params)
     if along and min(abs(a) for a in along) < c:
         return _sidestep(me, (hx, hy, speed), along, c, free_run)
-    if crossing is not None:
-        return _give_way(task, crossing, points, seen, params)
     return None
 
 

@@ -26,7 +26,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
-from haven_scenarios.study.anticipation import DelayLine, Seen, hesitant, intent_points, keep_clear, waits_for_me
+from haven_scenarios.study.anticipation import DelayLine, Seen, hesitant, intent_ways, keep_clear, waits_for_me
 from haven_scenarios.study.perception import Percept, ahead_of
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
@@ -114,9 +114,9 @@ class Walker:
         slowed while a robot they cannot read closes in."""
         if seen is None:
             return task
-        points = intent_points(seen.percept)
-        if points:
-            adjusted = keep_clear(me, task, points, seen, self.params, self.planner.free_run)
+        ways = intent_ways(seen.percept)
+        if ways:
+            adjusted = keep_clear(me, task, ways, seen, self.params, self.planner.free_run)
             return task if adjusted is None else adjusted
         if hesitant(me, task, seen, self.params, self.half_fov):
             return (task[0] * self.params.hesitate_factor, task[1] * self.params.hesitate_factor)
@@ -297,7 +297,7 @@ class Yielder(Walker):
 
     def _desired(self, now: float, me: Pose2D, seen: Seen | None) -> Point:
         robot = seen.percept.robot if seen is not None else None
-        shown = intent_points(seen.percept) if seen is not None else []
+        shown = intent_ways(seen.percept) if seen is not None else []
         reach = self.yield_m * (2.0 if shown else 1.0)
         ahead = robot is not None and math.hypot(robot.x - me.x, robot.y - me.y) < reach and ahead_of(me, (robot.x, robot.y), math.radians(70))
         if robot is None or not ahead or now < self._walk_on_until:
@@ -313,7 +313,7 @@ class Yielder(Walker):
         side = -1.0  # right, unless the shown way lies to the right
         if shown:
             left = (-math.sin(me.yaw), math.cos(me.yaw))
-            side = 1.0 if sum((p[0] - me.x) * left[0] + (p[1] - me.y) * left[1] for p in shown) < 0.0 else -1.0
+            side = 1.0 if sum((p[0] - me.x) * left[0] + (p[1] - me.y) * left[1] for way in shown for p in way) < 0.0 else -1.0
         away = (-side * math.sin(me.yaw), side * math.cos(me.yaw))
         room = self.planner.free_run((me.x, me.y), away, 1.0) - HUMAN_BODY.radius_m - 0.05  # to the wall, body and margin off
         step = min(0.4, max(0.0, 2.0 * room))
