@@ -22,8 +22,7 @@ from haven_viz.cues import CueState, Toggles
 ROOM = {
     "name": "room",
     "walls": [
-        {"segment": s, "thickness": 0.1}
-        for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]], [[5, 0], [5, 4]])
+        {"segment": s, "thickness": 0.1} for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]], [[5, 0], [5, 4]])
     ],
     "robot": {"start": [3.0, 2.0, 0.0]},
     "humans": [{"id": "h1", "start": [1.0, 2.0, 0.0]}],
