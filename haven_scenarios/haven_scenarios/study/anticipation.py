@@ -112,9 +112,12 @@ def _read(me: Pose2D, way: tuple[float, float], points: Sequence[Point], params:
     return along, None
 
 
-def keep_clear(me: Pose2D, task: Point, ways: Sequence[Sequence[Point]], seen: Seen, params: PersonParams, free_run: RayFn) -> Point | None:
-    """The walk `task` adjusted for the robot's shown ways (`intent_ways`), or None when they do
-    not bother this person."""
+def keep_clear(
+    me: Pose2D, task: Point, ways: Sequence[Sequence[Point]], seen: Seen, params: PersonParams, free_run: RayFn, side: float = 0.0
+) -> tuple[Point, float] | None:
+    """The walk `task` adjusted for the robot's shown ways (`intent_ways`) and the side (+1 my left,
+    -1 my right) it passes them on, or None when they do not bother this person. `side`: the side
+    already chosen (a person who has picked a side keeps it, though a signal flickers), 0 for none."""
     hx, hy, speed = _unit(task)
     if speed == 0.0:
         return None
@@ -124,18 +127,19 @@ def keep_clear(me: Pose2D, task: Point, ways: Sequence[Sequence[Point]], seen: S
         lateral, crossing = _read(me, (hx, hy), points, params)
         along += lateral
         if crossing is not None and not (along and min(abs(a) for a in along) < c):
-            return _give_way(task, crossing, points, seen, params)
-    if along and min(abs(a) for a in along) < c:
-        return _sidestep(me, (hx, hy, speed), along, c, free_run)
-    return None
+            slowed = _give_way(task, crossing, points, seen, params)
+            return None if slowed is None else (slowed, 0.0)
+    close = [a for a in along if abs(a) < c]
+    if not close:
+        return None
+    side = side or (-1.0 if sum(close) >= 0.0 else 1.0)  # the way to my left (or dead ahead): go right
+    return _sidestep(me, (hx, hy, speed), close, c, side, free_run), side
 
 
-def _sidestep(me: Pose2D, way: tuple[float, float, float], lateral: list[float], c: float, free_run: RayFn) -> Point:
-    """Move to the far side of the robot's way (right when it comes straight at me)."""
+def _sidestep(me: Pose2D, way: tuple[float, float, float], close: list[float], c: float, side: float, free_run: RayFn) -> Point:
+    """Move to `side` of the robot's way, `c` from its points that are `close` (lateral offsets)."""
     hx, hy, speed = way
-    close = [a for a in lateral if abs(a) < c]
-    side = -1.0 if sum(close) >= 0.0 else 1.0  # the path to my left (or dead ahead): go right
-    need = max(c + side * a for a in close)
+    need = max(0.0, max(c + side * a for a in close))
     sx, sy = side * -hy, side * hx
     # The room to that side here and a stride ahead (no stepping round a corner into the wall beyond it).
     free = min(free_run((me.x, me.y), (sx, sy)), free_run((me.x + hx * STRIDE_M, me.y + hy * STRIDE_M), (sx, sy)))

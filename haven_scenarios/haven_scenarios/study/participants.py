@@ -37,6 +37,7 @@ from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
 # How a simulated participant plans their own walks: their body, a little margin, generous snapping.
 CLOSE_ENOUGH_M = 0.3  # a stop the person cannot get nearer to than this (someone beside it) counts as reached
 ROBOT_ON_STOP_M = 0.6  # the robot this close to a stop stands on it
+SIDE_HOLD_S = 3.0  # a side chosen to pass the robot on is kept this long after the last step aside
 HUMAN_PLANNER = PlannerParams(safety_margin_m=0.05, snap_radius_m=0.5, body_radius_m=HUMAN_BODY.radius_m)
 
 
@@ -97,6 +98,7 @@ class Walker:
         self._dt = 0.1
         self._others: Sequence[Pose2D] = ()  # the other people, as of this tick
         self._robot: Pose2D | None = None  # the robot as the person acts on it (None: not seen)
+        self._side = (0.0, -math.inf)  # the side they pass the robot's shown way on, until when
         self.done = not self.stops
 
     def command(self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()) -> Twist2D:
@@ -107,17 +109,23 @@ class Walker:
 
     def _desired(self, now: float, me: Pose2D, seen: Seen | None) -> Point:
         """The velocity the person wants (world frame), before the social forces."""
-        return self._react(me, self._task(now, me), seen)
+        return self._react(now, me, self._task(now, me), seen)
 
-    def _react(self, me: Pose2D, task: Point, seen: Seen | None) -> Point:
-        """The task's walk as what the person saw changes it: clear of the robot's shown way, or
-        slowed while a robot they cannot read closes in."""
+    def _react(self, now: float, me: Pose2D, task: Point, seen: Seen | None) -> Point:
+        """The task's walk as what the person saw changes it: clear of the robot's shown way (on the
+        side first chosen, for `SIDE_HOLD_S` after the last step aside), or slowed while a robot they
+        cannot read closes in."""
         if seen is None:
             return task
         ways = intent_ways(seen.percept)
         if ways:
-            adjusted = keep_clear(me, task, ways, seen, self.params, self.planner.free_run)
-            return task if adjusted is None else adjusted
+            side = self._side[0] if now < self._side[1] else 0.0
+            adjusted = keep_clear(me, task, ways, seen, self.params, self.planner.free_run, side)
+            if adjusted is None:
+                return task
+            if adjusted[1]:
+                self._side = (adjusted[1], now + SIDE_HOLD_S)
+            return adjusted[0]
         if hesitant(me, task, seen, self.params, self.half_fov):
             return (task[0] * self.params.hesitate_factor, task[1] * self.params.hesitate_factor)
         return task
@@ -180,8 +188,9 @@ class Walker:
             if d <= self._close_enough(stop):  # held off the spot (by someone beside it): this is as close as it gets
                 self._arrived_at = now
                 return (0.0, 0.0)
-            if self._contested(stop) and len(self.stops) > 1 and self.rng.random() < 0.5:
-                self.stops.append(self.stops.pop(0))  # others are going for it: come back to it later
+            # Others are going for it: come back to it later (a stop to stand on; a route's rooms keep their order).
+            if stop.dwell_s > 0.0 and self._contested(stop) and len(self.stops) > 1 and self.rng.random() < 0.5:
+                self.stops.append(self.stops.pop(0))
             self._plan(me)
         while len(self._waypoints) > 1 and math.hypot(self._waypoints[0][0] - me.x, self._waypoints[0][1] - me.y) < 0.3:
             self._waypoints.pop(0)
@@ -217,8 +226,8 @@ class Walker:
 class Blocker(Walker):
     """Walks (along a planned path, round walls) into the robot's way `ahead_m` in front of the
     robot, stands `block_s`, then goes about its task; gives the block up if the spot cannot be
-    reached within `give_up_s`. The spot is on the projected path when the person sees it, else
-    `ahead_m` along the robot's motion as they saw it; with neither, they just walk."""
+    reached within `give_up_s`. The spot is on the projected path when the person sees enough of
+    it, else `ahead_m` along the robot's motion as they saw it; with neither, they just walk."""
 
     def __init__(self, *args: object, ahead_m: float = 3.0, block_s: float = 8.0, give_up_s: float = 30.0, **kwargs: object) -> None:
         super().__init__(*args, **kwargs)  # type: ignore[arg-type]
@@ -251,7 +260,7 @@ class Blocker(Walker):
         return (x, y) if self.planner.is_free(x, y) else None
 
     def _choose_spot(self, now: float, me: Pose2D, seen: Seen) -> None:
-        spot = self._spot_on_path(seen) if seen.percept.path else self._spot_on_motion(seen)
+        spot = (self._spot_on_path(seen) if seen.percept.path else None) or self._spot_on_motion(seen)
         if spot is None:
             return
         try:
@@ -302,7 +311,7 @@ class Yielder(Walker):
         ahead = robot is not None and math.hypot(robot.x - me.x, robot.y - me.y) < reach and ahead_of(me, (robot.x, robot.y), math.radians(70))
         if robot is None or not ahead or now < self._walk_on_until:
             self._yielding = None
-            return self._react(me, self._task(now, me), seen)
+            return self._react(now, me, self._task(now, me), seen)
         if self._yielding is None:
             self._yielding = (now, robot)
         since, robot_then = self._yielding
