@@ -31,6 +31,7 @@ SIGNAL_TURN_RAD = math.radians(35.0)  # the curve a lit turn signal announces (H
 SIGNAL_REACH_M = (0.6, 1.2, 1.8, 2.4, 3.0)  # ... read this far along
 ALONG_COS = 0.7  # a path segment within ~45 deg of the person's way (or against it) runs along it
 ROBOT_MIN_MPS = 0.15  # a robot slower than this is not judged to arrive anywhere soon
+CONFLICT_S = 2.0  # arrivals at a crossing this close (plus two reaction times) conflict
 CLOSING_MPS = 0.05  # a robot closing in faster than this approaches
 WALL_MARGIN_M = 0.05
 STRIDE_M = 1.0
@@ -162,7 +163,7 @@ def _give_way(task: Point, crossing: tuple[float, int], points: Sequence[Point],
     robot_speed = max(math.hypot(*seen.robot_v), ROBOT_MIN_MPS)
     mine = ahead / max(math.hypot(*task), 1e-9)
     theirs = along / robot_speed
-    if theirs < mine and mine - theirs < 2.0 * params.reaction_s + 2.0:
+    if theirs < mine and mine - theirs < CONFLICT_S + 2.0 * params.reaction_s:
         return (task[0] * params.hesitate_factor, task[1] * params.hesitate_factor)
     return None
 
@@ -178,7 +179,7 @@ def hesitant(me: Pose2D, task: Point, seen: Seen, params: PersonParams, half_fov
         return False
     closing = (seen.robot_v[0] * dx + seen.robot_v[1] * dy) / d
     hx, hy, _ = _unit(task)
-    lateral = abs(-dx * -hy + -dy * hx)  # the robot's offset from my way
+    lateral = abs(dx * hy - dy * hx)  # the robot's offset from my way
     return closing > CLOSING_MPS and lateral < clearance_m(params)
 
 
