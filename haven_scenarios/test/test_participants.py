@@ -3,11 +3,13 @@
 import math
 
 from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, make_walker, shuffled_nearest
+from haven_scenarios.study.perception import Sight, perceive
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.planner import GridPlanner
 from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.simulation import Simulation
 from haven_sim.sim.world_file import parse_world
+from haven_viz.cues import CueState, Toggles
 
 ROOM = {
     "name": "room",
@@ -18,15 +20,20 @@ ROOM = {
 
 
 def walk(model, stops, seconds, robot_path=(), robot_at=None):
+    """The person in ROOM for `seconds`, perceiving the robot (and `robot_path` as the projected
+    path on show, when given) as a participant does."""
     world = parse_world(ROOM)
     sim = Simulation(world)
-    planner = GridPlanner(rasterise(world), HUMAN_PLANNER)
+    grid = rasterise(world)
+    planner, sight = GridPlanner(grid, HUMAN_PLANNER), Sight(grid)
     person = make_walker(model, "h1", stops, planner, 1.0, seed=3)
+    cues = CueState(Toggles(), path_markers=len(robot_path))
     poses = []
     for k in range(int(seconds * 50)):
         if k % 5 == 0:
-            robot = robot_at or sim.robot_pose()
-            sim.command_human("h1", person.command(sim.time, sim.human_poses()["h1"], robot, list(robot_path)))
+            robot, me = robot_at or sim.robot_pose(), sim.human_poses()["h1"]
+            seen = perceive(person.params, sight, sim.time, me, robot, cues, [(p.x, p.y) for p in robot_path])
+            sim.command_human("h1", person.command(sim.time, me, robot, seen))
         sim.step()
         poses.append(sim.human_poses()["h1"])
     return person, poses
@@ -51,8 +58,8 @@ def test_blocker_steps_onto_the_robots_path_ahead_of_it():
 
 def test_yielder_stops_and_steps_aside_for_a_robot_in_front():
     robot = Pose2D(3.0, 1.0, math.pi)  # 2 m ahead of the person, facing them
-    _, free = walk("walker", [Stop(8.0, 1.0)], 2.5)
-    _, yielding = walk("yielder", [Stop(8.0, 1.0)], 2.5, robot_at=robot)
+    _, free = walk("walker", [Stop(8.0, 1.0)], 3.5)  # (the person reacts one reaction time late)
+    _, yielding = walk("yielder", [Stop(8.0, 1.0)], 3.5, robot_at=robot)
     assert yielding[-1].x < free[-1].x - 0.5  # held back
     assert yielding[-1].y < 1.0 - 0.3  # stepped to its right
 

@@ -6,6 +6,7 @@ import math
 import numpy as np
 
 from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, make_walker
+from haven_scenarios.study.perception import Sight, perceive
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
 from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
 from haven_sim.nav.planner import GridPlanner
@@ -79,10 +80,12 @@ def test_a_walker_passes_a_robot_standing_in_a_hallway_without_touching_it():
     sim = Simulation(world)
     planner = GridPlanner(rasterise(world), HUMAN_PLANNER)
     person = make_walker("walker", "h1", [Stop(11.0, 1.0)], planner, 1.0, seed=1)
+    sight = Sight(rasterise(world))
     closest = math.inf
     for k in range(30 * 50):
         if k % 5 == 0:
-            sim.command_human("h1", person.command(sim.time, sim.human_poses()["h1"], sim.robot_pose(), []))
+            me, robot = sim.human_poses()["h1"], sim.robot_pose()
+            sim.command_human("h1", person.command(sim.time, me, robot, perceive(person.params, sight, sim.time, me, robot, None)))
         sim.step()
         closest = min(closest, sim.human_poses()["h1"].distance_to((6.0, 1.0)))
         if person.done:

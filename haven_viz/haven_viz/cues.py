@@ -280,20 +280,27 @@ class ArCues:
     ) -> list[MarkerSpec]:
         return self.frame(robot, humans, battery_level, thought, toggles).markers
 
-    def _path_markers(self) -> list[MarkerSpec]:
+    def _shown(self) -> list[tuple[int, _PathMarker]]:
+        """(id, marker) of the projected path's markers on show: not consumed, `steps_ahead` of them."""
         p = self.params
         limit = self._progress + p.consume_distance_m
+        out = [(i, m) for i, m in enumerate(self._markers) if m.s > limit]
+        return out[: p.steps_ahead] if p.steps_ahead else out
+
+    def shown_points(self, robot: Pose2D) -> list[Point]:
+        """Where the projected path's markers on show are, nearest the robot first, after the robot
+        reached `robot` (what a participant can look at; the markers themselves need a frame)."""
+        self._advance(robot)
+        return [(m.x, m.y) for _, m in self._shown()]
+
+    def _path_markers(self) -> list[MarkerSpec]:
+        p = self.params
         color = SCHEMES[p.scheme]
         size = p.marker_size_m
-        out = []
-        for i, m in enumerate(self._markers):
-            if m.s <= limit:
-                continue
-            shape = Shape.CUBE if m.arc else Shape.SPHERE
-            out.append(MarkerSpec(PATH_NS, i, shape, (m.x, m.y, size / 2.0), 0.0, (size, size, size), color))
-            if p.steps_ahead and len(out) >= p.steps_ahead:
-                break
-        return out
+        return [
+            MarkerSpec(PATH_NS, i, Shape.CUBE if m.arc else Shape.SPHERE, (m.x, m.y, size / 2.0), 0.0, (size, size, size), color)
+            for i, m in self._shown()
+        ]
 
     def signal_side(self, robot: Pose2D, now: float | None = None) -> int:
         """+1 (left) or -1 (right) while the turn ahead reaches the threshold (a lit side stays lit

@@ -19,6 +19,7 @@ from haven_sim.common import topics
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.runner import run_node
+from haven_viz.nodes.conversions import viz_specs
 
 END_ACK_TIMEOUT_S = 10.0
 
@@ -34,7 +35,8 @@ class ScenarioNode(ComponentNode):
         scenario = load_scenario(c.scenario)
         self.director = TrialDirector(scenario, c.seed, c.rate_hz)
         self.wait_for = config.wait_for
-        self.wire(self.director, wire.specs(human_ids=[h.id for h in scenario.world.humans]))
+        # /haven/cue_state (what the participants can perceive) is haven_viz's topic.
+        self.wire(self.director, {**wire.specs(human_ids=[h.id for h in scenario.world.humans]), **viz_specs()})
         # On the lockstep clock the simulator starts stepping only when everyone is there.
         self.director.start_allowed = self.lockstep_mode
         self.director.held = config.hold_start

@@ -67,6 +67,8 @@ METRICS: tuple[tuple[str, str, str, str], ...] = (
     ("<h>_time_to_finish_s", "s", "when the person's own task was done (their last gem or room)", OURS),
     ("<h>_path_length_m", "m", "length of the person's track", OURS),
     ("<h>_time_not_moving_s", "s", "time the person stood (speed < 0.05 m/s)", HUNAV),
+    ("<h>_hesitations", "", "times the person, walking their task, went slower than half their own walking speed for 0.5 s or more", OURS),
+    ("<h>_hesitation_s", "s", "time spent in those hesitations", OURS),
     ("<h>_detour_m", "m", "walked length minus the shortest walk through where each gem or room counted, in order (needs the world)", OURS),
     ("<h>_gems", "", "gems the person collected", OURS),
     ("<h>_min_distance_m", "m", "closest approach of the robot to this person, centre to centre", HUNAV),

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from haven_scenarios.record.contacts import PERSON_ON_ROBOT, ROBOT_ON_PERSON, attribute, episodes
+from haven_scenarios.record.hesitation import hesitations
 from haven_scenarios.record.metric_table import ZONES
 from haven_scenarios.record.timeline import Recording, Timeline
 from haven_scenarios.record.validity import check
@@ -271,6 +272,9 @@ def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None
         f"{hid}_gems": sum(1 for e in own if e.kind is EventKind.GEM_COLLECTED),
         f"{hid}_min_distance_m": _r(float(np.min(d)) if len(d) else None),
     }
+    at = [min(int(np.searchsorted(tl.t, e.stamp - 1e-9)), len(xy) - 1) for e in own]
+    count, seconds = hesitations(tl.t, xy, xy[at] if at else np.zeros((0, 2)), done)
+    out[f"{hid}_hesitations"], out[f"{hid}_hesitation_s"] = count, _r(seconds, 2)
     previous = 0.0
     for zone, r in ZONES.items():
         inside = d < r

@@ -1,10 +1,12 @@
 """The trial director: runs one trial of a scenario, shared by batch mode and the scenario node.
 
 `TrialDirector` holds the mission executive, the study rules and the simulated participants. It reads
-what any node can read (the map, /odom, /humans, /battery_state, /plan, /haven/wait, and contacts on
-the study log) and publishes what the scenario node publishes: goals, the thought text, the simulated
+what any node can read (the map, /odom, /humans, /battery_state, /plan, /haven/wait, what the AR cues
+show on /haven/cue_state, and contacts on the study log) and publishes what the scenario node publishes: goals, the thought text, the simulated
 participants' velocities, obstruction removals (a control topic, not the event log) and the study's
-events. It starts the trial once it has the state it needs and `start_allowed` is set (the node
+events. Each simulated participant gets what they perceive (`perception.perceive`: the robot and the
+cues they can see, the projected path's markers laid out from /plan as the viz lays them out), never
+the plan itself. It starts the trial once it has the state it needs and `start_allowed` is set (the node
 waits for every listener first), and ends it by the scenario's rules with a `trial_end` event.
 """
 
@@ -13,11 +15,12 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 from haven_scenarios.study.mission import Mission, MissionOutput, Phase, Target
 from haven_scenarios.study.participants import HUMAN_PLANNER, Participant, Stop, make_walker, shuffled_nearest
+from haven_scenarios.study.perception import Percept, Sight, perceive
 from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules, TrialCommand, TrialState
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import topics
@@ -29,6 +32,7 @@ from haven_sim.nav.planner import GridPlanner, PlanningError
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.occupancy import OccupancyGridData
+from haven_viz.cues import ArCues, CueState
 
 STOPPED_MPS = 0.02  # the robot counts as standing still (the battery charges only then)
 STRANDED_S = 5.0  # a flat battery off the base for this long ends the trial
@@ -92,7 +96,7 @@ def make_participants(scenario: Scenario, grid: OccupancyGridData, seed: int) ->
             gems = [Stop(g.position[0], g.position[1], dwell_s=scenario.dwell_time_s + 0.5, reach_m=0.12) for g in w.gems if g.owner == "human"]
             start = starts[task.id]
             stops = shuffled_nearest(gems, (start.x, start.y), s)
-        out[task.id] = make_walker(task.model, task.id, stops, planner, task.speed_mps, s)
+        out[task.id] = make_walker(task.model, task.id, stops, planner, task.speed_mps, s, task.params)
     return out
 
 
@@ -124,6 +128,10 @@ class TrialDirector:
         self.humans: HumanPoses = {}
         self.level: float | None = None
         self.path: list[Pose2D] = []
+        self.cue_state: CueState | None = None  # what the AR cues show (None until the viz says)
+        self.projection = ArCues(replace(scenario.cues, steps_ahead=0))  # the projected path's markers, as the viz lays them out
+        self.sight: Sight | None = None
+        self.percepts: dict[str, Percept] = {}  # what each simulated participant perceived at the last tick
         self.waiting = False
         self.empty_since: float | None = None  # when the battery ran out (the robot cannot drive)
         self.still_since: float | None = None  # when the robot last stopped moving
@@ -142,6 +150,7 @@ class TrialDirector:
             topics.HUMANS: self.on_humans,
             topics.BATTERY: self.on_battery,
             topics.PLAN: self.on_plan,
+            topics.CUE_STATE: self.on_cue_state,
             topics.WAIT: self.on_wait,
             topics.EVENTS: self.on_event,
             topics.TRIAL_CONTROL: self.on_control,
@@ -155,6 +164,7 @@ class TrialDirector:
     def on_map(self, grid: OccupancyGridData, now: float) -> list[Message]:
         first = self.planner is None
         self.planner = GridPlanner(grid)
+        self.sight = Sight(grid)
         if first:
             self.participants = make_participants(self.scenario, grid, self.seed)
             base = self.scenario.world.charging_base
@@ -185,6 +195,11 @@ class TrialDirector:
 
     def on_plan(self, poses: Sequence[Pose2D], now: float) -> list[Message]:
         self.path = list(poses)
+        self.projection.set_path(self.path)
+        return []
+
+    def on_cue_state(self, state: CueState, now: float) -> list[Message]:
+        self.cue_state = state
         return []
 
     def on_wait(self, waiting: bool, now: float) -> list[Message]:
@@ -314,10 +329,16 @@ class TrialDirector:
     def _step(self, now: float, mission: Mission, robot: Pose2D, level: float) -> list[Message]:
         """The 10 Hz step: participants move, rules fire, the mission decides, the end is checked."""
         out: list[Message] = []
+        cues, sight = self.cue_state, self.sight
+        assert sight is not None
+        shows_path = cues is not None and cues.toggles.path_projection and cues.path_markers > 0
+        markers = self.projection.shown_points(robot) if shows_path else []
         for hid, walker in self.participants.items():
             if hid in self.humans:
+                me = self.humans[hid]
                 others = [pose for other, pose in self.humans.items() if other != hid]
-                out.append(Message(topics.human_cmd_vel(hid), walker.command(now, self.humans[hid], robot, self.path, others), now))
+                self.percepts[hid] = seen = perceive(walker.params, sight, now, me, robot, cues, markers)
+                out.append(Message(topics.human_cmd_vel(hid), walker.command(now, me, robot, seen, others), now))
         fired = self.gems.update(now, robot, self.humans) + self.routes.update(now, {"robot": robot, **self.humans})
         fired += self.obstructions.update(now, self.humans)
         out += [Message(topics.EVENTS, e, now) for e in fired]

@@ -33,6 +33,8 @@ from haven_sim.common.geometry import Point, Pose2D
 
 PathLength = Callable[[Point, Point], float]  # planned length, math.inf when unreachable
 
+WAITING_THOUGHT = "Waiting for you to pass"  # the thought while the robot waits for a person (participants read it)
+
 
 def _m(x: float) -> float | None:
     return round(x, 2) if math.isfinite(x) else None  # (JSON has no inf)
@@ -239,5 +241,5 @@ class Mission:
                 self._to_base(out, f"range {self._range(level):.1f} m <= {p.safety_factor:g} x {home:.1f} m home")
                 return out
         if self.phase is Phase.GOING and self.current is not None:
-            self._say(out, "Waiting for you to pass" if waiting else f"Going to {self.current.label}")
+            self._say(out, WAITING_THOUGHT if waiting else f"Going to {self.current.label}")
         return out

@@ -2,13 +2,20 @@
 
   * `Walker`: walks its task (room centres in order, or the human gems, standing on each for the
     dwell time) along planned paths, with seeded variation in speed and, for gems, in route;
-  * `Blocker`: a walker that first steps into the robot's projected path a few metres ahead of the
-    robot and stands there a while (the case that makes HAVEN's robot wait or detour);
-  * `Yielder`: a walker that stops and steps aside when the robot comes close in front of it.
+  * `Blocker`: a walker that first steps into the robot's way a few metres ahead of the robot and
+    stands there a while (the case that makes HAVEN's robot wait or detour): onto the projected path
+    when they see it, else where the robot's motion, as they saw it, leads;
+  * `Yielder`: a walker that stops and steps aside when the robot comes close in front of it (from
+    farther, and away from its shown path, when the cues show where it goes).
 
-They see what a participant sees: the robot's pose and its projected path, and the other people.
-All of them move by the social-force model (`social_force`): their task gives a desired velocity,
-walls, people and the robot push them off it, and they never close in on the robot.
+They act on what they perceive (`perception`: the robot and the cues within their field of view and
+viewing distance, not behind walls), one reaction time late (`anticipation.DelayLine`), with the
+parameters of `person.PersonParams` (cited there). One who sees the robot's way ahead (the projected
+path, a lit turn signal) moves to its far side early or gives way early; one who does not reacts to
+the robot's motion only, and slows while a robot whose intent they cannot read closes in, in their
+way (`anticipation`). All of them move by the social-force model (`social_force`): their task gives
+a desired velocity, walls, people and the robot as seen push them off it, and they never close in on
+the robot (that rule uses where the robot really is: a robot at arm's length is felt, seen or not).
 """
 
 from __future__ import annotations
@@ -19,6 +26,9 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Protocol
 
+from haven_scenarios.study.anticipation import DelayLine, Seen, hesitant, intent_ways, keep_clear, waits_for_me
+from haven_scenarios.study.perception import Percept, ahead_of
+from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, Twist2D, wrap_angle
@@ -27,16 +37,19 @@ from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
 # How a simulated participant plans their own walks: their body, a little margin, generous snapping.
 CLOSE_ENOUGH_M = 0.3  # a stop the person cannot get nearer to than this (someone beside it) counts as reached
 ROBOT_ON_STOP_M = 0.6  # the robot this close to a stop stands on it
+SIDE_HOLD_S = 3.0  # a side chosen to pass the robot on is kept this long after the last step aside
 HUMAN_PLANNER = PlannerParams(safety_margin_m=0.05, snap_radius_m=0.5, body_radius_m=HUMAN_BODY.radius_m)
 
 
 class Participant(Protocol):
-    """A simulated participant model: a velocity for /humans/<id>/cmd_vel from what they see."""
+    """A simulated participant model: a velocity for /humans/<id>/cmd_vel from what they perceive
+    (`robot`: where the robot is, for the never-close-in rule alone)."""
 
     id: str
     done: bool  # their task is finished
+    params: PersonParams
 
-    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D], others: Sequence[Pose2D] = ()) -> Twist2D: ...
+    def command(self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()) -> Twist2D: ...
 
 
 @dataclass(frozen=True)
@@ -66,40 +79,69 @@ class Walker:
     steers round walls, other people and the robot, keeps right of oncoming traffic and never
     closes in on the robot."""
 
-    def __init__(self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float = 1.0, seed: int = 0) -> None:
+    def __init__(
+        self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float = 1.0, seed: int = 0, params: PersonParams | None = None
+    ) -> None:
         self.id = human_id
+        self.params = p = params or PersonParams()
         self.rng = random.Random(seed)
-        self.speed = speed_mps * self.rng.uniform(0.85, 1.15)
+        self.speed = speed_mps * self.rng.uniform(1.0 - p.speed_spread, 1.0 + p.speed_spread)
+        self.attention = DelayLine(p.reaction_s * self.rng.uniform(1.0 - p.reaction_spread, 1.0 + p.reaction_spread))
+        self.half_fov = math.radians(p.fov_deg) / 2.0
         self.stops = list(stops)
         self.planner = planner
         self.crowd = SocialForce(planner.free_run)
         self._waypoints: list[Point] = []
         self._arrived_at: float | None = None
         self._progress_mark: tuple[float, float] | None = None  # (when, distance to the waypoint) at the last progress
-        self._last: tuple[float, Pose2D] | None = None  # (when, the robot's pose) at the last tick
+        self._last_tick: float | None = None
         self._dt = 0.1
         self._others: Sequence[Pose2D] = ()  # the other people, as of this tick
-        self._robot: Pose2D | None = None  # the robot, as of this tick
+        self._robot: Pose2D | None = None  # the robot as the person acts on it (None: not seen)
+        self._side = (0.0, -math.inf)  # the side they pass the robot's shown way on, until when
         self.done = not self.stops
 
-    def command(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D], others: Sequence[Pose2D] = ()) -> Twist2D:
-        self._others, self._robot = others, robot
-        return self._move(now, me, robot, others, self._desired(now, me, robot, robot_path))
+    def command(self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()) -> Twist2D:
+        self.attention.push(percept)
+        seen = self.attention.acted_on(now)
+        self._others, self._robot = others, seen.percept.robot if seen is not None else None
+        return self._move(now, me, robot, seen, others, self._desired(now, me, seen))
 
-    def _desired(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Point:
+    def _desired(self, now: float, me: Pose2D, seen: Seen | None) -> Point:
         """The velocity the person wants (world frame), before the social forces."""
-        return self._task(now, me)
+        return self._react(now, me, self._task(now, me), seen)
+
+    def _react(self, now: float, me: Pose2D, task: Point, seen: Seen | None) -> Point:
+        """The task's walk as what the person saw changes it: clear of the robot's shown way (on the
+        side first chosen, for `SIDE_HOLD_S` after the last step aside), or slowed while a robot they
+        cannot read closes in."""
+        if seen is None:
+            return task
+        ways = intent_ways(seen.percept)
+        if ways:
+            side = self._side[0] if now < self._side[1] else 0.0
+            adjusted = keep_clear(me, task, ways, seen, self.params, self.planner.free_run, side)
+            if adjusted is None:
+                return task
+            if adjusted[1]:
+                self._side = (adjusted[1], now + SIDE_HOLD_S)
+            return adjusted[0]
+        if hesitant(me, task, seen, self.params, self.half_fov):
+            return (task[0] * self.params.hesitate_factor, task[1] * self.params.hesitate_factor)
+        return task
 
     # -- moving ------------------------------------------------------------------------------------
-    def _move(self, now: float, me: Pose2D, robot: Pose2D, others: Sequence[Pose2D], desired: Point) -> Twist2D:
-        """The social-force step from the desired velocity, as a command in the person's frame."""
-        rvx = rvy = 0.0
-        if self._last is not None and now > self._last[0]:
-            self._dt = min(0.5, now - self._last[0])
-            rvx, rvy = (robot.x - self._last[1].x) / self._dt, (robot.y - self._last[1].y) / self._dt
-        self._last = (now, robot)
-        bodies = [robot_body(robot.x, robot.y, rvx, rvy)] + [Body(o.x, o.y, 0.0, 0.0, HUMAN_BODY.radius_m) for o in others]
-        vx, vy = self.crowd.step((me.x, me.y), desired, bodies, self._dt)
+    def _move(self, now: float, me: Pose2D, robot: Pose2D, seen: Seen | None, others: Sequence[Pose2D], desired: Point) -> Twist2D:
+        """The social-force step from the desired velocity, as a command in the person's frame: the
+        robot pushes where and as the person saw it move; where it is only for the hard rule."""
+        if self._last_tick is not None and now > self._last_tick:
+            self._dt = min(0.5, now - self._last_tick)
+        self._last_tick = now
+        bodies = [Body(o.x, o.y, 0.0, 0.0, HUMAN_BODY.radius_m) for o in others]
+        if seen is not None and seen.percept.robot is not None:
+            r = seen.percept.robot
+            bodies.insert(0, robot_body(r.x, r.y, *seen.robot_v))
+        vx, vy = self.crowd.step((me.x, me.y), desired, bodies, self._dt, guard=(robot_body(robot.x, robot.y, 0.0, 0.0),))
         return self._twist(me, (vx, vy), desired)
 
     def _twist(self, me: Pose2D, v: Point, desired: Point) -> Twist2D:
@@ -146,8 +188,9 @@ class Walker:
             if d <= self._close_enough(stop):  # held off the spot (by someone beside it): this is as close as it gets
                 self._arrived_at = now
                 return (0.0, 0.0)
-            if self._contested(stop) and len(self.stops) > 1 and self.rng.random() < 0.5:
-                self.stops.append(self.stops.pop(0))  # others are going for it: come back to it later
+            # Others are going for it: come back to it later (a stop to stand on; a route's rooms keep their order).
+            if stop.dwell_s > 0.0 and self._contested(stop) and len(self.stops) > 1 and self.rng.random() < 0.5:
+                self.stops.append(self.stops.pop(0))
             self._plan(me)
         while len(self._waypoints) > 1 and math.hypot(self._waypoints[0][0] - me.x, self._waypoints[0][1] - me.y) < 0.3:
             self._waypoints.pop(0)
@@ -181,9 +224,10 @@ class Walker:
 
 
 class Blocker(Walker):
-    """Walks (along a planned path, round walls) onto the robot's projected path `ahead_m` in front
-    of the robot, stands `block_s`, then goes about its task; gives the block up if the spot
-    cannot be reached within `give_up_s`."""
+    """Walks (along a planned path, round walls) into the robot's way `ahead_m` in front of the
+    robot, stands `block_s`, then goes about its task; gives the block up if the spot cannot be
+    reached within `give_up_s`. The spot is on the projected path when the person sees enough of
+    it, else `ahead_m` along the robot's motion as they saw it; with neither, they just walk."""
 
     def __init__(self, *args: object, ahead_m: float = 3.0, block_s: float = 8.0, give_up_s: float = 30.0, **kwargs: object) -> None:
         super().__init__(*args, **kwargs)  # type: ignore[arg-type]
@@ -194,23 +238,42 @@ class Blocker(Walker):
         self._blocking_since: float | None = None
         self.blocked = False
 
-    def _choose_spot(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> None:
-        walked = 0.0
-        for a, b in zip(robot_path, robot_path[1:]):
-            walked += math.hypot(b.x - a.x, b.y - a.y)
-            if walked >= self.ahead_m and math.hypot(b.x - robot.x, b.y - robot.y) >= self.ahead_m * 0.8:
-                try:
-                    self._route = self.planner.plan((me.x, me.y), (b.x, b.y)).points[1:]
-                except PlanningError:
-                    return
-                self._spot, self._spot_since = (b.x, b.y), now
-                return
+    def _spot_on_path(self, seen: Seen) -> Point | None:
+        """The first seen marker `ahead_m` along the shown path (and not much nearer in a straight line)."""
+        path = seen.percept.path
+        robot = seen.percept.robot
+        ref = (robot.x, robot.y) if robot is not None else path[0]
+        walked = math.hypot(path[0][0] - ref[0], path[0][1] - ref[1])
+        for a, b in zip(path, path[1:]):
+            walked += math.hypot(b[0] - a[0], b[1] - a[1])
+            if walked >= self.ahead_m and math.hypot(b[0] - ref[0], b[1] - ref[1]) >= self.ahead_m * 0.8:
+                return b
+        return None
 
-    def _desired(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Point:
+    def _spot_on_motion(self, seen: Seen) -> Point | None:
+        """`ahead_m` along the robot's seen motion, if it moves and that place is free."""
+        robot, (vx, vy) = seen.percept.robot, seen.robot_v
+        speed = math.hypot(vx, vy)
+        if robot is None or speed < 0.1:
+            return None
+        x, y = robot.x + vx / speed * self.ahead_m, robot.y + vy / speed * self.ahead_m
+        return (x, y) if self.planner.is_free(x, y) else None
+
+    def _choose_spot(self, now: float, me: Pose2D, seen: Seen) -> None:
+        spot = (self._spot_on_path(seen) if seen.percept.path else None) or self._spot_on_motion(seen)
+        if spot is None:
+            return
+        try:
+            self._route = self.planner.plan((me.x, me.y), spot).points[1:]
+        except PlanningError:
+            return
+        self._spot, self._spot_since = spot, now
+
+    def _desired(self, now: float, me: Pose2D, seen: Seen | None) -> Point:
         if self.blocked:
             return self._task(now, me)
-        if self._spot is None and len(robot_path) >= 2:
-            self._choose_spot(now, me, robot, robot_path)
+        if self._spot is None and seen is not None:
+            self._choose_spot(now, me, seen)
         if self._spot is None:
             return self._task(now, me)
         if self._blocking_since is None and math.hypot(self._spot[0] - me.x, self._spot[1] - me.y) > 0.2:
@@ -229,9 +292,11 @@ class Blocker(Walker):
 
 
 class Yielder(Walker):
-    """Stops and steps to its right, as far as the wall allows, when the robot is within `yield_m`
-    in front of it. If the robot does not move on for `patience_s` (it waits for them in turn),
-    the person walks on past it for `walk_on_s`: nobody waits for ever."""
+    """Stops and steps to its right, as far as the wall allows, when the robot is seen within
+    `yield_m` in front of it; when the cues show the robot's way, from twice as far, and to the far
+    side of that way. If the robot does not move on for `patience_s` (it waits for them in turn),
+    or its thought bubble says it waits for them, the person walks on past it for `walk_on_s`:
+    nobody waits for ever."""
 
     def __init__(self, *args: object, yield_m: float = 1.5, patience_s: float = 4.0, walk_on_s: float = 6.0, **kwargs: object) -> None:
         super().__init__(*args, **kwargs)  # type: ignore[arg-type]
@@ -239,27 +304,36 @@ class Yielder(Walker):
         self._yielding: tuple[float, Pose2D] | None = None  # since when, and where the robot was then
         self._walk_on_until = -math.inf
 
-    def _desired(self, now: float, me: Pose2D, robot: Pose2D, robot_path: Sequence[Pose2D]) -> Point:
-        dx, dy = robot.x - me.x, robot.y - me.y
-        ahead = math.hypot(dx, dy) < self.yield_m and abs(wrap_angle(math.atan2(dy, dx) - me.yaw)) < math.radians(70)
-        if not ahead or now < self._walk_on_until:
+    def _desired(self, now: float, me: Pose2D, seen: Seen | None) -> Point:
+        robot = seen.percept.robot if seen is not None else None
+        shown = intent_ways(seen.percept) if seen is not None else []
+        reach = self.yield_m * (2.0 if shown else 1.0)
+        ahead = robot is not None and math.hypot(robot.x - me.x, robot.y - me.y) < reach and ahead_of(me, (robot.x, robot.y), math.radians(70))
+        if robot is None or not ahead or now < self._walk_on_until:
             self._yielding = None
-            return self._task(now, me)
+            return self._react(now, me, self._task(now, me), seen)
         if self._yielding is None:
             self._yielding = (now, robot)
         since, robot_then = self._yielding
-        if now - since >= self.patience_s and robot.distance_to(robot_then) < 0.1:
+        waits = seen is not None and waits_for_me(seen.percept)  # it says so in its thought bubble
+        if waits or now - since >= self.patience_s and robot.distance_to(robot_then) < 0.1:
             self._walk_on_until, self._yielding = now + self.walk_on_s, None  # the robot waits for us: go on
             return self._task(now, me)
-        right = (math.sin(me.yaw), -math.cos(me.yaw))
-        room = self.planner.free_run((me.x, me.y), right, 1.0) - HUMAN_BODY.radius_m - 0.05  # to the wall, body and margin off
+        side = -1.0  # right, unless the shown way lies to the right
+        if shown:
+            left = (-math.sin(me.yaw), math.cos(me.yaw))
+            side = 1.0 if sum((p[0] - me.x) * left[0] + (p[1] - me.y) * left[1] for way in shown for p in way) < 0.0 else -1.0
+        away = (-side * math.sin(me.yaw), side * math.cos(me.yaw))
+        room = self.planner.free_run((me.x, me.y), away, 1.0) - HUMAN_BODY.radius_m - 0.05  # to the wall, body and margin off
         step = min(0.4, max(0.0, 2.0 * room))
-        return (right[0] * step, right[1] * step)
+        return (away[0] * step, away[1] * step)
 
 
 MODELS: dict[str, type[Walker]] = {"walker": Walker, "blocker": Blocker, "yielder": Yielder}
 
 
-def make_walker(model: str, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int) -> Participant:
+def make_walker(
+    model: str, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int, params: PersonParams | None = None
+) -> Participant:
     """A simulated participant of the named model (the names a scenario file uses)."""
-    return MODELS[model](human_id, stops, planner, speed_mps, seed)
+    return MODELS[model](human_id, stops, planner, speed_mps, seed, params)

@@ -14,8 +14,13 @@ robot:
   battery: {mode: off, capacity_m: 100.0, charge_until: 1.0, safety_factor: 1.2}
 humans:
   - {id: h1, model: walker, route: [B, A, D, C], speed_mps: 1.0}   # walker | blocker | yielder | teleop
+  - {id: h2, model: yielder, params: {reaction_s: 1.0, fov_deg: 110}}  # perception parameters
 dwell_time_s: 3.0
 ```
+
+A simulated person's `params` are `person.PersonParams` (field of view, viewing distance, reaction
+time, passing gap, ...; defaults from the literature, cited there); `HumanTask.params` holds them as
+a frozen dataclass of numbers, so a sweep varies one with `dataclasses.replace(task.params, reaction_s=0.8)`.
 
 Errors name the file and the key in one line (`ScenarioError`), like world files; the file is read
 as they are (`haven_sim.common.yaml_file`: at most 1 MiB of UTF-8, bounded nesting and aliases), and
@@ -29,6 +34,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.study.person import PersonParams
 from haven_sim.common.params import build
 from haven_sim.common.yaml_file import file_label, finite, one_line, read_yaml, short, shown_key
 from haven_sim.sim.world import World, WorldError
@@ -62,6 +68,7 @@ class HumanTask:
     model: str = "walker"
     route: tuple[str, ...] = ()  # hallway: room names; retrieval: ignored (the human gems)
     speed_mps: float = 1.0
+    params: PersonParams = field(default_factory=PersonParams)  # a simulated person's perception and walk
 
 
 @dataclass(frozen=True)
@@ -267,7 +274,7 @@ class _ScenarioParser:
         out: list[HumanTask] = []
         for i, h in enumerate(value):
             key = f"humans[{i}]"
-            m = self.mapping(h, key, ("id", "model", "route", "speed_mps"))
+            m = self.mapping(h, key, ("id", "model", "route", "speed_mps", "params"))
             if "id" not in m:
                 raise self.fail(f"{key}.id", "is required")
             if not isinstance(m["id"], str) or m["id"] not in known:
@@ -278,8 +285,20 @@ class _ScenarioParser:
             if speed > MAX_WALKING_SPEED_MPS:
                 raise self.fail(f"{key}.speed_mps", f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {speed:g}")
             route = self.names(m.get("route"), f"{key}.route", rooms, "room")
-            out.append(HumanTask(m["id"], self.choice(m.get("model", "walker"), f"{key}.model", MODELS), route, speed))
+            model = self.choice(m.get("model", "walker"), f"{key}.model", MODELS)
+            out.append(HumanTask(m["id"], model, route, speed, self.person(m.get("params"), f"{key}.params")))
         return tuple(out)
+
+    def person(self, value: Any, key: str) -> PersonParams:
+        """A person's `params`: numbers for `PersonParams` fields, checked in range."""
+        values = self.mapping(value, key, tuple(f.name for f in fields(PersonParams)))
+        for name, v in values.items():
+            if isinstance(v, bool) or finite(v) is None:
+                raise self.fail(f"{key}.{name}", f"must be a finite number, got {short(v)}")
+        try:
+            return PersonParams(**{name: float(v) for name, v in values.items()})
+        except ValueError as e:
+            raise self.fail(key, str(e)) from None
 
 
 def _listing(names: set[str]) -> str:

@@ -91,8 +91,10 @@ class SocialForce:
         self.radius = radius_m
         self.v = (0.0, 0.0)
 
-    def step(self, me: Point, desired: Point, others: Sequence[Body], dt: float) -> Point:
-        """The new world-frame velocity for `dt`, given the desired velocity and the bodies around."""
+    def step(self, me: Point, desired: Point, others: Sequence[Body], dt: float, guard: Sequence[Body] = ()) -> Point:
+        """The new world-frame velocity for `dt`, given the desired velocity and the bodies around
+        (as the person perceives them); `guard`: bodies that only the hard rules see (the robot where
+        it really is, which the person must never close in on, perceived or not)."""
         p = self.p
         ax = (desired[0] - self.v[0]) / p.relax_s
         ay = (desired[1] - self.v[1]) / p.relax_s
@@ -108,7 +110,7 @@ class SocialForce:
         ux, uy, n = _unit(vx, vy)
         if n > cap:
             vx, vy = ux * cap, uy * cap
-        vx, vy = self._hard_rules(me, (vx, vy), others, rays)
+        vx, vy = self._hard_rules(me, (vx, vy), [*others, *guard], rays)
         self.v = (vx, vy)
         return self.v
 

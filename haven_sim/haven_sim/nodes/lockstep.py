@@ -4,8 +4,9 @@ The simulator node coordinates. For each step it publishes its state and sends e
 that acts a tick on /haven/lockstep/tick/<node> with the number of messages the suite has published
 so far on each topic; it waits for their acknowledgements on /haven/lockstep/ack (each says how many
 messages it published on each topic), then for every command those announce to be in its own
-readers, applies them and advances. It does not wait for observers (the viz node), whose outputs no
-participant reads: they work through their ticks at their own pace, with the same inputs.
+readers, applies them and advances. It does not wait for observers, whose outputs no participant
+reads: they work through their ticks at their own pace, with the same inputs. (The viz node is not
+one: the scenario node hands its simulated participants what /haven/cue_state shows.)
 
 A participant's readers are left alone until a tick comes (they are in a callback group the
 executor never waits on, so a participant wakes for its ticks only). On a tick it takes from its

@@ -40,7 +40,7 @@ class SimulatorConfig:
     base_frame: str = param("base_footprint", "robot frame")
     scan_frame: str = param("base_scan", "laser frame")
     lockstep_participants: tuple[str, ...] = param((), "with lockstep: the nodes that act on the clock's ticks")
-    lockstep_observers: tuple[str, ...] = param((), "with lockstep: participants nobody reads during a tick, not waited for (viz)")
+    lockstep_observers: tuple[str, ...] = param((), "with lockstep: participants nobody reads during a tick, not waited for")
     lockstep_wait_for: tuple[str, ...] = param((), "with lockstep: nodes that must listen before the first step (the recorder)")
 
     def __post_init__(self) -> None:

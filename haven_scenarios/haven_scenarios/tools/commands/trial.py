@@ -147,7 +147,8 @@ class SessionPlan:
         if self.web is not None:  # a first-person camera moves with every physics step, not at 20 Hz
             sim = replace(sim, humans_rate_hz=max(sim.humans_rate_hz, 1.0 / sim.sim.step_s))
         if self.lockstep:
-            sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=("viz",), lockstep_wait_for=("recorder",))
+            # The viz is waited for like any participant: the scenario reads what it shows (/haven/cue_state).
+            sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=(), lockstep_wait_for=("recorder",))
         else:
             sim = replace(sim, lockstep_participants=(), lockstep_observers=(), lockstep_wait_for=())
         # The trial starts once the planner listens (somebody's own: whichever node reads /goal_pose).
