@@ -13,10 +13,11 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, fields, is_dataclass, replace
+from dataclasses import dataclass, fields, replace
 from typing import Any
 
 from haven_scenarios.run.trial import condition_name, parse_condition
+from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.scenario import MAX_WALKING_SPEED_MPS, MODELS, HumanTask, Scenario
 from haven_viz.cues import Toggles
 
@@ -27,10 +28,8 @@ Point = Mapping[str, Any]  # one combination of the grid: key -> value
 
 
 def param_keys() -> tuple[str, ...]:
-    """The fields of a participant's perception parameters (`HumanTask.params`, a frozen dataclass
-    of floats), or none while the scenario's human task has no such field."""
-    params = getattr(HumanTask(id="_"), "params", None)
-    return tuple(f.name for f in fields(params)) if params is not None and is_dataclass(params) else ()
+    """The fields of a participant's parameters (`HumanTask.params`: `PersonParams`, floats)."""
+    return tuple(f.name for f in fields(PersonParams))
 
 
 def _number(key: str, text: str) -> float:
@@ -116,8 +115,10 @@ def _human(task: HumanTask, point: Point) -> HumanTask:
         return task
     task = replace(task, **{k: v for k, v in point.items() if k in ("model", "speed_mps")})
     params = {k: v for k, v in point.items() if k not in TASK_KEYS}
-    # (written so for HumanTask's `params`, a field still to come: then `replace(task, params=replace(task.params, **params))`)
-    return replace(task, **{"params": replace(getattr(task, "params"), **params)}) if params else task
+    try:
+        return replace(task, params=replace(task.params, **params)) if params else task
+    except ValueError as e:  # PersonParams says which value is out of its range
+        raise ValueError(f"--grid: {e}") from None
 
 
 def apply(scenario: Scenario, point: Point) -> tuple[Scenario, Toggles]:
