@@ -8,6 +8,7 @@ Two participants (one through the machine's network address) see each other, and
 with an emulated headset. Skipped, with one line, where no Chromium can be had.
 """
 
+import csv
 import http.client
 import json
 import os
@@ -307,11 +308,11 @@ items:
 """
 
 
-def stopped_trial(ros, browser, tmp_path, questionnaires, viewport):
-    """`haven run --web --teleop h1 --questionnaire ...`: the participant starts, the researcher
-    stops the trial (the console's text before it is kept as havenState.before)."""
-    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
-    trial = WebTrial(ros, [*argv, "--questionnaire", *questionnaires])
+def stopped_trial(ros, browser, tmp_path, questionnaires, viewport, argv=None):
+    """`haven run --web --teleop h1 --questionnaire ...` (or `argv`): the participant starts, the
+    researcher stops the trial (the console's text before it is kept as havenState.before)."""
+    argv = argv or ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    trial = WebTrial(ros, [*argv, *(["--questionnaire", *questionnaires] if questionnaires else [])])
     urls = trial.urls()
     page = browser.new_page(viewport=viewport)
     page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
@@ -336,16 +337,37 @@ def submit_and_wait(page, q, answered):
     page.wait_for_function(f"havenState.answered.length === {answered} && havenState.questionnaire !== '{q}'", timeout=PAGE_TIMEOUT_MS)
 
 
-def test_after_the_trial_the_participant_answers_the_questionnaires_in_the_page(ros, browser, tmp_path):
-    """`--questionnaire nasa_tlx godspeed <a Likert YAML>`: the researcher stops the trial; the page
-    asks each questionnaire in turn (TLX by keyboard alone, the others by clicks), refuses Submit
-    while an item is unanswered, and the answers and scores land in questionnaires.json, the
-    events and session.json; `haven run` then exits 0 by itself."""
+STUDY_YAML = """name: browser_study
+scenarios: [head_on.yaml]
+conditions: {signals: [turn_signals]}
+participants: [p01]
+counterbalancing: none
+questionnaires:
+  - nasa_tlx
+  - godspeed
+  - name: legibility
+    title: About the robot
+    points: 7
+    anchors: [Strongly disagree, Strongly agree]
+    items:
+      - {id: side, text: "I could tell which way the robot would pass me."}
+      - {id: surprise, text: "The robot surprised me.", reverse: true}
+"""
+
+
+def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_report_has_them(ros, browser, tmp_path):
+    """A study with nasa_tlx, godspeed and its own Likert items, run for p01 in the browser
+    (`haven study run --web`): the researcher stops the trial; the page asks each questionnaire in
+    turn (TLX by keyboard alone, the others by clicks), refuses Submit while an item is unanswered;
+    the answers and scores land in questionnaires.json, the events and session.json; the study run
+    then ends by itself, and `haven study report` has the scores in its tidy table."""
     from haven_scenarios.study.questionnaires import BUILTINS, score
 
-    custom = tmp_path / "legibility.yaml"
-    custom.write_text(LEGIBILITY_YAML)
-    trial, page, console = stopped_trial(ros, browser, tmp_path, ["nasa_tlx", "godspeed", str(custom)], {"width": 1000, "height": 700})
+    head_on_scenario(tmp_path)
+    (tmp_path / "study.yaml").write_text(STUDY_YAML)
+    argv = ["study", "run", str(tmp_path / "study.yaml"), "--participant", "p01", "--web", "--teleop", "h1", "--port", "0", "--no-pause"]
+    argv += ["--dir", str(tmp_path / "study")]
+    trial, page, console = stopped_trial(ros, browser, tmp_path, [], {"width": 1000, "height": 700}, argv)
     assert console.evaluate("havenState.before") == "after the trial: nasa_tlx, godspeed, legibility"
 
     # The trial is over: the first questionnaire instead of "Thank you"; haven run waits.
@@ -409,6 +431,17 @@ def test_after_the_trial_the_participant_answers_the_questionnaires_in_the_page(
     assert session["questionnaires_answered"] == {"h1": ["nasa_tlx", "godspeed", "legibility"]}
     assert session["questionnaires_end"] == "answered" and session["valid"] and session["end_reason"] == "stopped"
     assert tracebacks("".join(trial.lines)) == []
+    assert "haven study: participant p01: all 1 trials done" in "".join(trial.lines)
+
+    report_argv = [*HAVEN, "study", "report", str(tmp_path / "study.yaml"), "--dir", str(tmp_path / "study")]
+    report = subprocess.run(report_argv, capture_output=True, text=True)
+    assert report.returncode == 0, report.stderr
+    with open(tmp_path / "study" / "report" / "study_long.csv") as f:
+        rows = {(r["human"], r["measure"]): r for r in csv.DictReader(f)}
+    raw = rows[("h1", "nasa_tlx_raw")]
+    assert (raw["participant"], raw["condition"], raw["scenario"]) == ("p01", "signals", "head_on")
+    assert abs(float(raw["value"]) - (5 + 10 + 15 + 20 + 25 + 5) / 6) < 1e-3 and float(rows[("h1", "legibility")]["value"]) == 6.0
+    assert (tmp_path / "study" / "report" / "summary.png").stat().st_size > 10_000
 
 
 def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros, browser, tmp_path):
