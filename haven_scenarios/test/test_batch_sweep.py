@@ -135,6 +135,7 @@ def test_a_participant_parameter_is_a_grid_axis_set_on_every_simulated_person():
     room = load_scenario("shared_room")
     specs = plan_sweep([room], {"reaction_s": (0.3, 2.0), "fov_deg": (60.0,)}, (0,))
     assert [(s.scenario.humans[0].params.reaction_s, s.scenario.humans[0].params.fov_deg) for s in specs] == [(0.3, 60.0), (2.0, 60.0)]
-    assert specs[1].columns() == {"trial": 1, "scenario": "shared_room", "condition": "all", "model": "walker", "reaction_s": 2.0, "fov_deg": 60.0, "seed": 0}
+    columns = {"trial": 1, "scenario": "shared_room", "condition": "all", "model": "walker", "reaction_s": 2.0, "fov_deg": 60.0, "seed": 0}
+    assert specs[1].columns() == columns
     with pytest.raises(ValueError, match=r"^--grid: fov_deg must be within \(0, 360\], got 400$"):
         plan_sweep([room], {"fov_deg": (400.0,)}, (0,))
