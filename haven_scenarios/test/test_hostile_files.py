@@ -54,6 +54,8 @@ SCENARIO_CASES = [
     ("cues: {steps_ahead: .inf}\n", "cues", "steps_ahead"),
     ("cues: {marker_size_m: 1" + "0" * 400 + "}\n", "cues.marker_size_m", "must be a finite number"),
     ("? [1, 2]\n: x\n", "YAML syntax error at line 4", "unhashable"),
+    ("dwell_time_s: 3.0\ndwell_time_s: 1.0\n", "dwell_time_s", "given twice (line 5); YAML would keep only the last"),
+    ("robot: {order: nearest, order: random}\n", "robot.order", "given twice (line 4)"),
 ]
 
 

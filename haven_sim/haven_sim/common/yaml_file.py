@@ -8,6 +8,7 @@ may be hostile: every refusal is one line naming the file (and, where there is o
 - the YAML event stream is checked before anything is built from it: at most `MAX_DEPTH` levels
   of nesting and at most `MAX_NODES` values with every alias expanded (aliases and merge keys stay
   usable, an alias bomb or a self-referencing alias is refused at the alias that blows the budget);
+  a key given twice in one mapping is refused (YAML itself would keep the last one silently);
 - then the document is built by the safe loader (libyaml's `CSafeLoader` where PyYAML has it).
 
 `short()` shows a value in a message: one line and bounded, however large or deep the value is.
@@ -18,7 +19,7 @@ from __future__ import annotations
 import os
 import reprlib
 import stat
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -150,6 +151,7 @@ class _Frame:
     nodes: int = 1  # values in it with every alias expanded, itself included
     depth: int = 1
     key: str = ""  # a mapping's latest key
+    keys: set[str] = field(default_factory=set)  # a mapping's keys so far
 
 
 def _path(stack: list[_Frame]) -> str:
@@ -157,6 +159,17 @@ def _path(stack: list[_Frame]) -> str:
     parts = [(f".{f.key}" if f.children % 2 else "") if f.mapping else f"[{f.children}]" for f in stack]
     path = "".join(parts).lstrip(".") or "(top level)"
     return path if len(path) <= 80 else path[:30] + "..." + path[-47:]
+
+
+def _new_key(stack: list[_Frame], key: str, name: str, line: int) -> None:
+    """A mapping's next key; a key given twice is refused (YAML would keep the last one silently)."""
+    mapping = stack[-1]
+    if key in mapping.keys and key != "<<":
+        where = _path(stack)
+        shown = shown_key(key) if where == "(top level)" else f"{where}.{shown_key(key)}"
+        raise YamlFileError(f"{name}: {shown}: given twice (line {line}); YAML would keep only the last")
+    mapping.keys.add(key)
+    mapping.key = shown_key(key)
 
 
 def _check_events(text: str, name: str) -> None:
@@ -187,7 +200,7 @@ def _check_events(text: str, name: str) -> None:
             nodes, depth, anchor = 1, 1, event.anchor
             total += 1
             if stack and stack[-1].mapping and stack[-1].children % 2 == 0:
-                stack[-1].key = shown_key(event.value)
+                _new_key(stack, event.value, name, line)
         else:
             continue
         if total > MAX_NODES:
