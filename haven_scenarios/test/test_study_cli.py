@@ -117,6 +117,20 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     png = root / "report" / "summary.png"
     assert png.stat().st_size > 20_000
 
+    # Re-planned with other seeds: p01's finished sessions ran with the old ones, so they are kept
+    # but no longer count, and the trials run again; the table labels each session as it ran.
+    reseeded = study_file(tmp_path, seeds={"policy": "per_participant", "base": 100})
+    r = haven("study", "run", str(reseeded), "--participant", "p01", "--batch", "--replan", cwd=tmp_path)
+    assert r.returncode == 0 and "0/3 trials done" in r.stdout, r.stderr
+    replanned = sessions(root)
+    assert all(replanned[t][: len(after[t])] == after[t] and len(replanned[t]) == len(after[t]) + t.startswith("p01/") for t in after)
+    status = haven("study", "status", str(reseeded), cwd=tmp_path)
+    assert "3/3" in next(line for line in status.stdout.splitlines() if line.startswith("p01")), status.stdout
+    assert haven("study", "report", str(reseeded), cwd=tmp_path).returncode == 0
+    with (root / "report" / "study_long.csv").open() as f:
+        seeds = {(r["participant"], r["seed"]) for r in csv.DictReader(f)}
+    assert seeds == {("p01", "100")}  # (p02's and p03's sessions ran with the old seeds: theirs are to run again)
+
 
 def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     conditions = {"none": ["none"], "path": ["path_projection"]}

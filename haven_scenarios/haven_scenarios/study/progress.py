@@ -8,8 +8,11 @@
             <scenario>_<participant>_<time>/   session.json, metrics.json, events.jsonl, ...
 
 A trial is done when one of its attempts has a finished outcome (the trial ended: completed,
-timeout, contact, battery_empty, or stopped by the researcher) and is never run again; an attempt
-that was interrupted, cut short, or aborted by the researcher is kept, and the trial runs again.
+timeout, contact, battery_empty, or stopped by the researcher) and ran as the schedule says
+(scenario, cues and seed, as its session.json records them), and is never run again; an attempt
+that was interrupted, cut short, or aborted by the researcher is kept, and the trial runs again; so
+is a finished attempt that ran otherwise (the study was re-planned with another seed or condition
+since): the table never labels a session with what it did not run.
 """
 
 from __future__ import annotations
@@ -23,6 +26,7 @@ from typing import Any
 import yaml
 
 from haven_scenarios.record.session import SESSION_FILE, session_info, write_json
+from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.protocol import Study, StudyError
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.schedule import PlannedTrial, schedule
@@ -66,20 +70,32 @@ def trial_dir(root: Path, trial: PlannedTrial) -> Path:
     return root / trial.participant / trial.folder
 
 
-def attempts(folder: Path) -> tuple[Attempt, ...]:
-    """The session folders in a trial's folder, oldest first (their names end in the start time)."""
+def ran_otherwise(info: dict[str, Any], trial: PlannedTrial) -> str | None:
+    """How a session ran other than the trial is planned (scenario, condition, seed), if it did."""
+    ran = (info.get("scenario"), info.get("condition"), info.get("seed"))
+    planned = (trial.scenario, condition_name(parse_condition(trial.cues)), trial.seed)
+    if ran == planned:
+        return None
+    return f"ran as {ran[0]}, condition {ran[1]}, seed {ran[2]}; the schedule now says {planned[0]}, condition {planned[1]}, seed {planned[2]}"
+
+
+def attempts(folder: Path, trial: PlannedTrial) -> tuple[Attempt, ...]:
+    """The session folders in a trial's folder, oldest first (their names end in the start time);
+    a finished one that ran other than `trial` is planned does not count as finished."""
     if not folder.is_dir():
         return ()
     out = []
     for session in sorted(p for p in folder.iterdir() if p.is_dir()):
         if (session / SESSION_FILE).exists() or (session / "bag").is_dir():
-            outcome = session_info(session).get("outcome", "unknown: no readable session.json")
-            out.append(Attempt(session, str(outcome)))
+            info = session_info(session)
+            outcome = str(info.get("outcome", "unknown: no readable session.json"))
+            otherwise = ran_otherwise(info, trial) if finished(outcome) else None
+            out.append(Attempt(session, f"replanned: {otherwise}" if otherwise else outcome))
     return tuple(out)
 
 
 def progress(root: Path, trials: Sequence[PlannedTrial]) -> list[TrialProgress]:
-    return [TrialProgress(t, attempts(trial_dir(root, t))) for t in trials]
+    return [TrialProgress(t, attempts(trial_dir(root, t), t)) for t in trials]
 
 
 def stored(root: Path) -> dict[str, Any] | None:
@@ -102,7 +118,7 @@ def differences(old: dict[str, Any], new: dict[str, Any]) -> list[str]:
 def bind(study: Study, root: Path, replan: bool = False) -> list[PlannedTrial]:
     """The study's schedule, stored in `root` on first use; a study file changed since then is
     refused (StudyError, one line) unless `replan` (then the new schedule is stored; trials done
-    keep their folders, and a trial whose id and position are unchanged stays done)."""
+    keep their folders, and one stays done if it ran as the new schedule says: see `attempts`)."""
     trials = schedule(study)
     record: dict[str, Any] = {"study": study.describe(), "source": study.source, "schedule": [t.to_json() for t in trials]}
     old = stored(root)

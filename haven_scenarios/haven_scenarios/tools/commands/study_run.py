@@ -170,7 +170,7 @@ def _one(args: argparse.Namespace, study: Study, p: TrialProgress, total: int, r
     except (OSError, ValueError) as e:
         print(f"haven: error: {trial.folder}: {e}", file=sys.stderr)
         return 1
-    made = attempts(sessions)
+    made = attempts(sessions, trial)
     if made and made[-1].finished:
         print(f"haven study: {trial.folder}: {made[-1].outcome} -> {made[-1].folder}", flush=True)
         if not stopped:
