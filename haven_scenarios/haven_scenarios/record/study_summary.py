@@ -22,7 +22,7 @@ SUMMARY = ("scenario", "condition", "human", "measure", "n", "n_invalid", "mean"
 MAIN = (
     (False, "min_human_distance_m", "closest approach of the robot (m)"),
     (False, "robot_time_to_finish_s", "robot's time to finish its task (s)"),
-    (True, "time_not_moving_s", "person standing still (s)"),
+    (True, "time_to_finish_s", "person's time to finish their task (s)"),
     (True, "detour_m", "person's detour (m)"),
     (True, "hesitations", "person's hesitations (count)"),
 )
@@ -127,7 +127,7 @@ def draw(results: Sequence[TrialResults], conditions: Sequence[str], questionnai
     for ax in list(axes.flat)[len(cells) :]:
         ax.axis("off")
     fig.suptitle(f"{title}\nper condition: box = quartiles and median, whiskers to 1.5 IQR, points = trials (valid; practice left out)", fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / rows / 3.3 * 1.6))
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / (3.3 * rows)))  # (the title's two lines: about half an inch)
     fig.savefig(out, dpi=100)
     plt.close(fig)
     return out
