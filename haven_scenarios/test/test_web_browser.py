@@ -396,6 +396,7 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     screenshot("web_questionnaire.png", page.screenshot())
     assert page.evaluate("document.activeElement.name") == "nasa_tlx.frustration"  # the refusal took the focus to it
     page.keyboard.press("ArrowRight")  # frustration: 5
+    assert page.inner_text("#questionnaire .missing") == ""  # every item answered: the refusal is gone
     submit_and_wait(page, "nasa_tlx", 1)
     console.wait_for_function("document.getElementById('questionnaires').textContent === 'h1: questionnaire 2 of 3'", timeout=PAGE_TIMEOUT_MS)
 

@@ -5,6 +5,7 @@
 // missing and marking them, until every item has an answer. Keyboard: Tab moves from item to item,
 // the arrow keys choose within one (Space picks the first), Enter submits.
 
+const MISSING = "Please answer every item:";
 const CONFIRM_MS = 15000; // the web node's questionnaire_answered event comes back within a second
 
 export class QuestionnaireForm {
@@ -48,8 +49,15 @@ export class QuestionnaireForm {
       e.preventDefault();
       this.submit(form);
     });
-    form.addEventListener("change", (e) => e.target.closest("fieldset").classList.remove("unanswered"));
+    form.addEventListener("change", (e) => {
+      e.target.closest("fieldset").classList.remove("unanswered");
+      if (this.message.textContent.startsWith(MISSING)) this.sayMissing(form.querySelectorAll("fieldset.unanswered").length);
+    });
     return form;
+  }
+
+  sayMissing(count) {  // the refusal's count follows the answers given since; gone once none is missing
+    this.message.textContent = count ? `${MISSING} ${count} ${count === 1 ? "is" : "are"} not answered yet (marked in red).` : "";
   }
 
   row(q, item, values) {
@@ -81,7 +89,7 @@ export class QuestionnaireForm {
     }
     if (missing.length) {
       this.refused++;
-      this.message.textContent = `Please answer every item: ${missing.length} ${missing.length === 1 ? "is" : "are"} not answered yet (marked in red).`;
+      this.sayMissing(missing.length);
       missing[0].scrollIntoView({ block: "center" });
       missing[0].querySelector("input").focus({ preventScroll: true });
       return;
