@@ -194,3 +194,12 @@ def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(t
     written = Path(argv[-1])
     assert written.parent == (tmp_path / "studies" / "pilot" / "questionnaires").resolve()
     assert likert(yaml.safe_load(written.read_text()), "file") == likert(LEGIBILITY, "file")  # the study's own, as `haven run` reads it
+
+
+def test_a_reader_that_stops_early_gets_no_traceback(tmp_path: Path) -> None:
+    """`haven study plan haven_paper | head -1`: the pipe closes; haven stops quietly."""
+    proc = subprocess.Popen([*HAVEN, "study", "plan", "haven_paper"], cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdout is not None and proc.stderr is not None
+    proc.stdout.close()
+    err = proc.stderr.read().decode()
+    assert proc.wait(timeout=60) == 141 and err == ""

@@ -24,6 +24,7 @@ subcommands lives in `haven_scenarios.tools.commands`.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from collections.abc import Sequence
 from typing import NoReturn
@@ -53,6 +54,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("haven: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:  # `haven study plan | head`: the reader has what it wanted
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())  # (so the interpreter's last flush cannot fail again)
+        return 141  # 128 + SIGPIPE, as a shell reports a command ended by a closed pipe
     return code
 
 

@@ -169,5 +169,6 @@ def _counts(results: list[TrialResults]) -> str:
     invalid = sum(1 for r in results if not r.design["valid"])
     participants = len({r.design["participant"] for r in results})
     return (
-        f"{participants} participant(s), {len(results) - practice} trials and {practice} practice trial(s) (left out of the summary), {invalid} flagged not valid"
+        f"{participants} participant(s), {len(results) - practice} trials and {practice} practice trial(s) (left out of the summary), "
+        f"{invalid} flagged not valid"
     )
