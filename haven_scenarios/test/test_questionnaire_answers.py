@@ -157,7 +157,7 @@ def test_questionnaire_usage_errors_are_one_line(tmp_path, capsys):
     ]
     bad = tmp_path / "bad.yaml"
     bad.write_text("name: legibility\npoints: 12\nitems: [{id: a, text: A}]\n")
-    assert run_errors(capsys, *web, "--questionnaire", str(bad)) == [f"haven: error: {bad}.points: must be a whole number 2..11, got '12'"]
+    assert run_errors(capsys, *web, "--questionnaire", str(bad)) == [f"haven: error: {bad}: points: must be a whole number 2..11, got 12"]
     bad.write_text("- just a list\n")
     assert run_errors(capsys, *web, "--questionnaire", str(bad)) == [
         f"haven: error: {bad}: must be a mapping of one Likert questionnaire (name, points, anchors, items)"

@@ -125,40 +125,48 @@ def _name(value: Any, where: str) -> str:
     return value
 
 
+def _at(where: str, key: str) -> str:
+    """A key's place: `where.key`, or `file.yaml: key` when `where` is a file's label ending in ':'."""
+    return f"{where} {key}" if where.endswith(":") else f"{where}.{key}"
+
+
 def likert(spec: Mapping[str, Any], where: str) -> Questionnaire:
     """A study's own Likert questionnaire from its mapping (see the module docstring); ValueError
-    with one line naming `where` and the key."""
+    with one line naming `where` (a key path, or a file's label ending in ':') and the key."""
     allowed = {"name", "title", "instructions", "points", "anchors", "items"}
-    extra = sorted(set(spec) - allowed)
+    extra = sorted(map(str, set(spec) - allowed))
     if extra:
-        raise ValueError(f"{where}: unknown key {extra[0]!r} (keys: {', '.join(sorted(allowed))})")
-    name = _name(spec.get("name"), f"{where}.name")
+        raise ValueError(f"{where.rstrip(':')}: unknown key {extra[0][:40]!r} (keys: {', '.join(sorted(allowed))})")
+    name = _name(spec.get("name"), _at(where, "name"))
     if name in BUILTINS:
-        raise ValueError(f"{where}.name: {name!r} is a built-in questionnaire; name yours otherwise")
+        raise ValueError(f"{_at(where, 'name')}: {name!r} is a built-in questionnaire; name yours otherwise")
     points = spec.get("points", 7)
     if isinstance(points, bool) or not isinstance(points, int) or not 2 <= points <= 11:
-        raise ValueError(f"{where}.points: must be a whole number 2..11, got {str(points)[:50]!r}")
+        raise ValueError(f"{_at(where, 'points')}: must be a whole number 2..11, got {repr(points)[:50]}")
     anchors = spec.get("anchors", ["Strongly disagree", "Strongly agree"])
     if not isinstance(anchors, list) or len(anchors) != 2:
-        raise ValueError(f"{where}.anchors: must be a list of two labels [low, high]")
-    low, high = (_text(a, f"{where}.anchors", 60) for a in anchors)
+        raise ValueError(f"{_at(where, 'anchors')}: must be a list of two labels [low, high]")
+    low, high = (_text(a, _at(where, "anchors"), 60) for a in anchors)
     raw = spec.get("items")
     if not isinstance(raw, list) or not 1 <= len(raw) <= MAX_ITEMS:
-        raise ValueError(f"{where}.items: must be a list of 1..{MAX_ITEMS} items")
+        raise ValueError(f"{_at(where, 'items')}: must be a list of 1..{MAX_ITEMS} items")
     items: list[Item] = []
     for k, it in enumerate(raw):
-        at = f"{where}.items[{k}]"
-        if not isinstance(it, dict) or set(it) - {"id", "text", "reverse"}:
+        at = _at(where, f"items[{k}]")
+        if not isinstance(it, dict):
             raise ValueError(f"{at}: must be a mapping with id, text and optionally reverse")
+        unknown = sorted(map(str, set(it) - {"id", "text", "reverse"}))
+        if unknown:
+            raise ValueError(f"{at}: unknown key {unknown[0][:40]!r} (keys: id, text, reverse)")
         reverse = it.get("reverse", False)
         if not isinstance(reverse, bool):
             raise ValueError(f"{at}.reverse: must be true or false")
         items.append(Item(_name(it.get("id"), f"{at}.id"), _text(it.get("text"), f"{at}.text"), low, high, reverse))
     ids = [i.id for i in items]
     if len(set(ids)) != len(ids):
-        raise ValueError(f"{where}.items: item ids must differ")
-    title = _text(spec.get("title", name), f"{where}.title", 80)
-    instructions = _text(spec.get("instructions", "How much do you agree with each statement?"), f"{where}.instructions")
+        raise ValueError(f"{_at(where, 'items')}: item ids must differ")
+    title = _text(spec.get("title", name), _at(where, "title"), 80)
+    instructions = _text(spec.get("instructions", "How much do you agree with each statement?"), _at(where, "instructions"))
     return Questionnaire(name, title, instructions, 1, points, 1, tuple(items), ((name, tuple(ids)),))
 
 

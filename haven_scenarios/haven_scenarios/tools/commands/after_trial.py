@@ -61,7 +61,7 @@ def spec(text: str) -> str | dict[str, Any]:
     data = read_yaml(path, "questionnaire file")
     if not isinstance(data, dict):
         raise ValueError(f"{file_label(path)}: must be a mapping of one Likert questionnaire (name, points, anchors, items)")
-    likert(data, file_label(path))
+    likert(data, file_label(path) + ":")
     return data
 
 
