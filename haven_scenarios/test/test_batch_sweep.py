@@ -139,3 +139,18 @@ def test_a_participant_parameter_is_a_grid_axis_set_on_every_simulated_person():
     assert specs[1].columns() == columns
     with pytest.raises(ValueError, match=r"^--grid: fov_deg must be within \(0, 360\], got 400$"):
         plan_sweep([room], {"fov_deg": (400.0,)}, (0,))
+
+
+def test_in_a_log_the_progress_is_a_line_now_and_then_with_rate_and_eta(monkeypatch):
+    import io
+
+    from haven_scenarios.run.batch import Progress
+
+    monkeypatch.setattr(Progress, "LOG_EVERY_S", 0.0)
+    out = io.StringIO()  # not a terminal: no bar
+    progress = Progress(3, out)
+    for done in (1, 2, 3):
+        progress.update(done)
+    progress.close()
+    lines = out.getvalue().splitlines()
+    assert len(lines) == 3 and all("trials/min, about" in line and "s to go" in line for line in lines[:2]) and lines[2].startswith("3/3 trials in ")

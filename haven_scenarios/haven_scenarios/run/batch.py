@@ -28,16 +28,27 @@ MAX_SUMMARY_LINES = 24
 
 
 class Progress:
-    """Trials done of the total with rate and ETA (tqdm) on a terminal; elsewhere (a log) one line at the end."""
+    """Trials done of the total with rate and ETA: a tqdm bar on a terminal; elsewhere (a log, nohup)
+    one line every `LOG_EVERY_S` and one at the end."""
+
+    LOG_EVERY_S = 30.0
 
     def __init__(self, total: int, out: TextIO = sys.stderr) -> None:
         self.total, self.out, self.started, self.done = total, out, time.monotonic(), 0
         self.bar = tqdm(total=total, unit="trial", file=out, smoothing=0.05) if out.isatty() else None
+        self.logged = self.started
 
     def update(self, done: int) -> None:
         if self.bar is not None:
             self.bar.update(done - self.done)
         self.done = done
+        now = time.monotonic()
+        if self.bar is None and now - self.logged >= self.LOG_EVERY_S and done < self.total:
+            self.logged = now
+            rate = done / (now - self.started)
+            eta = (self.total - done) / rate if rate > 0 else float("inf")
+            self.out.write(f"{done}/{self.total} trials in {now - self.started:.0f} s, {rate * 60:.0f} trials/min, about {eta:.0f} s to go\n")
+            self.out.flush()
 
     def close(self, finished: bool = True) -> None:
         """`finished`: the sweep ran to its end (a log gets its one line then, not after an error)."""

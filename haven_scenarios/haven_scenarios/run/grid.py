@@ -44,7 +44,10 @@ def _number(key: str, text: str) -> float:
 
 def _value(key: str, text: str) -> Any:
     if key == "condition":
-        return condition_name(parse_condition(text.split("+")))
+        try:
+            return condition_name(parse_condition(text.split("+")))
+        except ValueError as e:
+            raise ValueError(f"--grid condition: {e}") from None
     if key == "model":
         if text not in SIMULATED_MODELS:
             raise ValueError(f"--grid model: {text!r} is not a simulated participant model ({', '.join(SIMULATED_MODELS)})")
