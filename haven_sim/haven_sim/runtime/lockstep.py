@@ -173,12 +173,9 @@ class Schedule:
 
     def acting(self, step: int) -> list[str]:
         """The participants that act at `step` (in registration order); clears their pending flag."""
-        out = [
-            p.name
-            for p in self.participants.values()
-            if p.name in self._pending or (p.period_ns is not None and due(step, self.step_ns, p.period_ns))
-        ]
-        self._pending -= set(out)
+        pending, step_ns = self._pending, self.step_ns
+        out = [name for name, p in self.participants.items() if name in pending or (p.period_ns is not None and due(step, step_ns, p.period_ns))]
+        pending.difference_update(out)
         return out
 
 

@@ -53,13 +53,17 @@ class InProcessLoop:
         self._read = frozenset(read)  # a message on any other topic reaches no one: it is not routed
         for c in [sim, *self.components]:
             c.unread = frozenset(t for t in c.outputs() if t not in read)
+        # Per step, by name: the component, its handlers, its topics' rank and its period (lookups done once).
+        self._parts = {c.name: (c, self._handlers[c.name], self._rank[c.name], self.schedule.participants[c.name].period_ns) for c in self.components}
+        self._readers = {t: [c.name for c in self.components if t in self._handlers[c.name]] for t in read}
 
     def _route(self, messages: Sequence[Message], to_sim: bool) -> None:
         for sent in messages:
             if sent.topic not in self._read:
                 continue
             data = self.sequencer.number(sent.data) if isinstance(sent.data, Event) else sent.data
-            m = Message(sent.topic, on_the_wire(sent.topic, data), sent.stamp)
+            wired = on_the_wire(sent.topic, data)
+            m = sent if wired is sent.data else Message(sent.topic, wired, sent.stamp)  # unchanged: the same (frozen) message
             late = self.delay(m.topic) if self.delay is not None else 0.0
             if late > 0.0:
                 heapq.heappush(self._held, (self.sim.sim.time + late, next(self._order), m, to_sim))
@@ -77,9 +81,8 @@ class InProcessLoop:
         if m.topic in self.observed:
             for observer in self.observers:
                 observer(m)
-        for c in self.components:
-            if m.topic in self._handlers[c.name]:
-                self._inbox[c.name].append(m)
+        for name in self._readers[m.topic]:
+            self._inbox[name].append(m)
         if to_sim and m.topic in self._sim_handlers:
             self._sim_handlers[m.topic](m.data, m.stamp)
 
@@ -89,23 +92,23 @@ class InProcessLoop:
 
     def step(self) -> None:
         k, now = self.sim.sim.steps, self.sim.sim.time
-        self._release()
+        if self._held:
+            self._release()
         self._route(self.sim.sense(), to_sim=False)
-        acting = set(self.schedule.acting(k))
-        produced: list[Message] = []
-        for c in self.components:
-            if c.name not in acting:
-                continue
-            inbox, self._inbox[c.name] = self._inbox[c.name], []
-            handlers = self._handlers[c.name]
+        step_ns, produced = self.schedule.step_ns, []
+        for name in self.schedule.acting(k):  # in registration order: the components' order
+            c, handlers, rank, period_ns = self._parts[name]
+            inbox = self._inbox[name]
             out: list[Message] = []
-            for m in inbox_order(self._rank[c.name], inbox):
-                out += handlers[m.topic](m.data, now)
-            info = self.schedule.participants[c.name]
-            if info.period_ns is not None and due(k, self.schedule.step_ns, info.period_ns):
+            if inbox:
+                self._inbox[name] = []
+                for m in inbox_order(rank, inbox):
+                    out += handlers[m.topic](m.data, now)
+            if period_ns is not None and due(k, step_ns, period_ns):
                 out += c.tick(now)
-            self.schedule.published(c.name, (m.topic for m in out))
-            produced += out
+            if out:
+                self.schedule.published(name, [m.topic for m in out])
+                produced += out
         self._route(produced, to_sim=True)
         self.sim.advance()
 
