@@ -69,7 +69,8 @@ class Polyline:
             (ax, ay), (bx, by) = xy[i], xy[i + 1]
             dx, dy = bx - ax, by - ay
             ln2 = dx * dx + dy * dy
-            t = min(max(((x - ax) * dx + (y - ay) * dy) / (ln2 if ln2 > 0 else 1.0), 0.0), 1.0)
+            t = ((x - ax) * dx + (y - ay) * dy) / (ln2 if ln2 > 0 else 1.0)
+            t = 0.0 if t < 0.0 else (1.0 if t > 1.0 else t)  # = min(max(t, 0.0), 1.0), NaN and -0.0 kept alike
             cx, cy = ax + dx * t, ay + dy * t
             found.append(((cx - x) ** 2 + (cy - y) ** 2, i, t, ln2, cx, cy))
         near = min(f[0] for f in found) * (1.0 + 1e-9) + 1e-300
