@@ -232,8 +232,13 @@ class ArCues:
         # The path's heading at points ahead: the nearest that turns away by the threshold, else
         # the largest turn within the look-ahead.
         ahead = np.arange(self._progress, min(line.length, self._progress + p.signal_lookahead_m) + 1e-9, LOOKAHEAD_STEP_M)
-        errs = [wrap_angle(self._heading[line.moving_segment_at(float(s))] - robot.yaw) for s in ahead]
-        return next((e for e in errs if abs(e) >= p.turn_signal_threshold_rad), max(errs, key=abs))
+        largest: float | None = None
+        for s in ahead.tolist():
+            e = wrap_angle(self._heading[line.moving_segment_at(s)] - robot.yaw)
+            if abs(e) >= p.turn_signal_threshold_rad:
+                return e
+            largest = e if largest is None or abs(e) > abs(largest) else largest  # the first of the largest, as max() keeps
+        return largest
 
     def _update_bubble(self, robot: Pose2D, humans: Sequence[Point]) -> bool:
         p = self.params
@@ -300,8 +305,7 @@ class ArCues:
         color = SCHEMES[p.scheme]
         size = p.marker_size_m
         return [
-            MarkerSpec(PATH_NS, i, Shape.CUBE if m.arc else Shape.SPHERE, (m.x, m.y, size / 2.0), 0.0, (size, size, size), color)
-            for i, m in shown
+            MarkerSpec(PATH_NS, i, Shape.CUBE if m.arc else Shape.SPHERE, (m.x, m.y, size / 2.0), 0.0, (size, size, size), color) for i, m in shown
         ]
 
     def signal_side(self, robot: Pose2D, now: float | None = None) -> int:

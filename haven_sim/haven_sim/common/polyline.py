@@ -43,7 +43,9 @@ class Polyline:
         return self._cum[-1] if self._cum else 0.0
 
     def _segment_at(self, s: float) -> int:
-        return min(len(self._xy) - 2, max(0, bisect.bisect_right(self._cum, s) - 1))  # = cumulative.searchsorted(s, "right") - 1
+        i = bisect.bisect_right(self._cum, s) - 1  # = cumulative.searchsorted(s, "right") - 1
+        i, last = (0 if i < 0 else i), len(self._xy) - 2
+        return i if i < last else last  # = min(last, max(0, i))
 
     def project(self, x: float, y: float, s_from: float = 0.0, s_to: float = math.inf) -> Projection:
         """The closest point among the segments overlapping arc lengths [s_from, s_to]."""
