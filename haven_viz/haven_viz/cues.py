@@ -232,8 +232,13 @@ class ArCues:
         # The path's heading at points ahead: the nearest that turns away by the threshold, else
         # the largest turn within the look-ahead.
         ahead = np.arange(self._progress, min(line.length, self._progress + p.signal_lookahead_m) + 1e-9, LOOKAHEAD_STEP_M)
-        errs = [wrap_angle(self._heading[line.moving_segment_at(float(s))] - robot.yaw) for s in ahead]
-        return next((e for e in errs if abs(e) >= p.turn_signal_threshold_rad), max(errs, key=abs))
+        largest: float | None = None
+        for s in ahead.tolist():
+            e = wrap_angle(self._heading[line.moving_segment_at(s)] - robot.yaw)
+            if abs(e) >= p.turn_signal_threshold_rad:
+                return e
+            largest = e if largest is None or abs(e) > abs(largest) else largest  # the first of the largest, as max() keeps
+        return largest
 
     def _update_bubble(self, robot: Pose2D, humans: Sequence[Point]) -> bool:
         p = self.params
@@ -253,26 +258,28 @@ class ArCues:
         thought: str = "",
         toggles: Toggles = Toggles(),
         now: float | None = None,
+        markers: bool = True,
     ) -> CueFrame:
         """Every cue marker for this moment (cues that are off are simply absent) and what they show.
-        With the time `now`, a lit turn signal is held at least `turn_signal_hold_s`."""
+        With the time `now`, a lit turn signal is held at least `turn_signal_hold_s`. `markers=False`:
+        what they show only, no markers (no one reads them in batch mode)."""
         self._advance(robot)
         shown_bubble = self._update_bubble(robot, humans)  # tracked even while the cue is off
         out: list[MarkerSpec] = []
         path, side, text, level = 0, 0, "", None
         if toggles.path_projection:
-            path_markers = self._path_markers()
-            path = len(path_markers)
-            out += path_markers
+            shown = self._shown()
+            path = len(shown)
+            out += self._path_markers(shown) if markers else []
         if toggles.turn_signals:
             side = self.signal_side(robot, now)
-            out += self._signal_markers(robot, side)
+            out += self._signal_markers(robot, side) if markers else []
         if toggles.thought_bubble and shown_bubble and thought:
             text = thought
-            out += self._thought_markers(robot, thought)
+            out += self._thought_markers(robot, thought) if markers else []
         if toggles.battery_indicator and battery_level is not None:
             level = min(1.0, max(0.0, battery_level))
-            out += self._battery_markers(robot, level)
+            out += self._battery_markers(robot, level) if markers else []
         return CueFrame(out, CueState(toggles, path, side, text, level))
 
     def markers(
@@ -293,13 +300,12 @@ class ArCues:
         self._advance(robot)
         return [(m.x, m.y) for _, m in self._shown()]
 
-    def _path_markers(self) -> list[MarkerSpec]:
+    def _path_markers(self, shown: list[tuple[int, _PathMarker]]) -> list[MarkerSpec]:
         p = self.params
         color = SCHEMES[p.scheme]
         size = p.marker_size_m
         return [
-            MarkerSpec(PATH_NS, i, Shape.CUBE if m.arc else Shape.SPHERE, (m.x, m.y, size / 2.0), 0.0, (size, size, size), color)
-            for i, m in self._shown()
+            MarkerSpec(PATH_NS, i, Shape.CUBE if m.arc else Shape.SPHERE, (m.x, m.y, size / 2.0), 0.0, (size, size, size), color) for i, m in shown
         ]
 
     def signal_side(self, robot: Pose2D, now: float | None = None) -> int:

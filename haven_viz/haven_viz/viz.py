@@ -132,7 +132,7 @@ class VizComponent:
 
     # -- outputs ---------------------------------------------------------------------------------
     def _world_messages(self, now: float) -> list[Message]:
-        if not self._world_due or self.world is None:
+        if not self._world_due or self.world is None or topics.WORLD_MARKERS in self.unread:
             return []
         self._world_due = False
         # Latched with depth 1: a late viewer gets only the last message, so it carries everything.
@@ -144,11 +144,12 @@ class VizComponent:
         if self.robot is None:
             return out
         humans_xy = [(h.x, h.y) for h in self.humans.values()]
-        frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles, now)
+        shown = topics.AR_MARKERS not in self.unread
+        frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles, now, markers=shown)
         refresh = self._refresh_now or self._last_refresh is None or now - self._last_refresh >= self.config.refresh_period_s
         if refresh:
             self._last_refresh, self._refresh_now = now, False
-        if topics.AR_MARKERS not in self.unread:
+        if shown:
             update = self.ar_diff.update(frame.markers + body_markers(self.robot, self.humans), resend_all=refresh)
             if update:
                 out.append(Message(topics.AR_MARKERS, update, now))

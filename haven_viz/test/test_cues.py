@@ -173,3 +173,19 @@ def test_turn_signal_has_hysteresis_so_a_wobbling_heading_does_not_flicker():
     assert sides == [1] * 7
     assert cues.signal_side(Pose2D(0.5, 0.0, math.radians(-4))) == 0
     assert cues.signal_side(Pose2D(0.5, 0.0, math.radians(-9))) == 0  # below the threshold: stays dark
+
+
+def test_a_frame_without_markers_shows_the_same_cue_state():
+    """Batch mode asks for the state only (no one reads the markers): the same state at every step."""
+    poses = shape_path([(0, 0), (4, 0), (7, 2.5)], 0.0, goal_yaw=None)
+    full, bare = ArCues(CueParams(marker_spacing_m=0.2)), ArCues(CueParams(marker_spacing_m=0.2))
+    full.set_path(poses)
+    bare.set_path(poses)
+    states = set()
+    for k in range(60):
+        robot, now = Pose2D(0.12 * k, 0.02 * k * k / 60, 0.01 * k), 0.1 * k
+        a = full.frame(robot, [(2.0, 0.5)], 0.01 * k, "going", Toggles(), now)
+        b = bare.frame(robot, [(2.0, 0.5)], 0.01 * k, "going", Toggles(), now, markers=False)
+        assert b.state == a.state and b.markers == [] and a.markers
+        states.add((a.state.path_markers, a.state.turn_signal, a.state.thought))
+    assert len(states) > 3  # the state changed along the way

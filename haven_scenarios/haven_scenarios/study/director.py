@@ -251,7 +251,10 @@ class TrialDirector:
         return {"scenario": self.scenario.name, "kind": self.scenario.kind, "state": state, "end_reason": self.ended, "humans": people}
 
     def _status_messages(self, now: float) -> list[Message]:
-        """/haven/trial_status when it changed (latched: a page that opens late still learns it)."""
+        """/haven/trial_status when it changed (latched: a page that opens late still learns it);
+        nothing when no one reads it (batch mode)."""
+        if topics.TRIAL_STATUS in self.unread:
+            return []
         text = json.dumps(self.status(now), sort_keys=True)
         if text == self._status:
             return []

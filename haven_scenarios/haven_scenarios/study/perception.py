@@ -11,6 +11,7 @@ pass the same test, never the whole plan.
 
 from __future__ import annotations
 
+import functools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -42,6 +43,14 @@ class Percept:
         return bool(self.path) or self.signal != 0
 
 
+@functools.lru_cache(maxsize=256)
+def _fractions(k: int) -> np.ndarray:
+    """np.linspace(0, 1, k), made once per k (read-only, as it is shared)."""
+    out = np.linspace(0.0, 1.0, k)
+    out.setflags(write=False)
+    return out
+
+
 class Sight:
     """Lines of sight on an occupancy grid: walls (not unknown space) block them."""
 
@@ -59,7 +68,7 @@ class Sight:
         delta = targets - np.asarray(eye, dtype=float)
         lengths = np.hypot(delta[:, 0], delta[:, 1])
         k = max(2, int(math.ceil(float(lengths.max()) / g.resolution_m)) + 1)
-        frac = np.linspace(0.0, 1.0, k)
+        frac = _fractions(k)
         xs = eye[0] + delta[:, :1] * frac  # (N, k)
         ys = eye[1] + delta[:, 1:] * frac
         cols = np.floor((xs - g.origin_x) / g.resolution_m).astype(np.intp)

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import bisect
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -32,16 +33,19 @@ class Polyline:
         self._xy: list[tuple[float, float]] = [(px, py) for px, py in pts.tolist()]
         steps = np.hypot(*np.diff(pts, axis=0).T) if len(pts) > 1 else np.zeros(0)
         self.cumulative: FloatArray = np.concatenate([[0.0], np.cumsum(steps)]) if len(pts) else np.zeros(0)
+        self._cum: list[float] = self.cumulative.tolist()  # the same values as plain floats, for per-query use
 
     def __len__(self) -> int:
         return len(self.points)
 
     @property
     def length(self) -> float:
-        return float(self.cumulative[-1]) if len(self.points) else 0.0
+        return self._cum[-1] if self._cum else 0.0
 
     def _segment_at(self, s: float) -> int:
-        return min(len(self.points) - 2, max(0, int(self.cumulative.searchsorted(s, side="right")) - 1))
+        i = bisect.bisect_right(self._cum, s) - 1  # = cumulative.searchsorted(s, "right") - 1
+        i, last = (0 if i < 0 else i), len(self._xy) - 2
+        return i if i < last else last  # = min(last, max(0, i))
 
     def project(self, x: float, y: float, s_from: float = 0.0, s_to: float = math.inf) -> Projection:
         """The closest point among the segments overlapping arc lengths [s_from, s_to]."""
@@ -53,7 +57,7 @@ class Polyline:
         lo = self._segment_at(s_from)
         hi = len(pts) - 1 if math.isinf(s_to) else max(lo + 1, min(len(pts) - 1, self._segment_at(s_to) + 1))
         dist, k, t, ln2, cx, cy = self._closest(x, y, lo, hi)
-        return Projection(dist, k, float(self.cumulative[k] + t * math.sqrt(ln2)), (cx, cy))
+        return Projection(dist, k, float(self._cum[k] + t * math.sqrt(ln2)), (cx, cy))
 
     def _closest(self, x: float, y: float, lo: int, hi: int) -> tuple[float, int, float, float, float, float]:
         """(distance, segment, t along it, its squared length, closest point) of the first nearest
@@ -67,7 +71,8 @@ class Polyline:
             (ax, ay), (bx, by) = xy[i], xy[i + 1]
             dx, dy = bx - ax, by - ay
             ln2 = dx * dx + dy * dy
-            t = min(max(((x - ax) * dx + (y - ay) * dy) / (ln2 if ln2 > 0 else 1.0), 0.0), 1.0)
+            t = ((x - ax) * dx + (y - ay) * dy) / (ln2 if ln2 > 0 else 1.0)
+            t = 0.0 if t < 0.0 else (1.0 if t > 1.0 else t)  # = min(max(t, 0.0), 1.0), NaN and -0.0 kept alike
             cx, cy = ax + dx * t, ay + dy * t
             found.append(((cx - x) ** 2 + (cy - y) ** 2, i, t, ln2, cx, cy))
         near = min(f[0] for f in found) * (1.0 + 1e-9) + 1e-300
@@ -75,18 +80,19 @@ class Polyline:
 
     def point_at(self, s: float) -> Point:
         """The point at arc length s (clamped to the ends); on a zero-length segment, its start."""
-        pts = self.points
-        if len(pts) == 1:
-            return (float(pts[0, 0]), float(pts[0, 1]))
-        s = min(max(s, 0.0), self.length)
+        xy, cum = self._xy, self._cum
+        if len(xy) == 1:
+            return xy[0]
+        s = min(max(s, 0.0), cum[-1])
         i = self._segment_at(s)
-        seg = self.cumulative[i + 1] - self.cumulative[i]
-        f = 0.0 if seg <= 0 else (s - self.cumulative[i]) / seg
-        return (float(pts[i, 0] + (pts[i + 1, 0] - pts[i, 0]) * f), float(pts[i, 1] + (pts[i + 1, 1] - pts[i, 1]) * f))
+        seg = cum[i + 1] - cum[i]
+        f = 0.0 if seg <= 0 else (s - cum[i]) / seg
+        (ax, ay), (bx, by) = xy[i], xy[i + 1]
+        return (float(ax + (bx - ax) * f), float(ay + (by - ay) * f))
 
     def moving_segment_at(self, s: float) -> int:
         """Index of the segment of non-zero length that holds arc length s (rotations skipped)."""
         i = self._segment_at(s)
-        while i > 0 and self.cumulative[i + 1] - self.cumulative[i] <= 1e-12:
+        while i > 0 and self._cum[i + 1] - self._cum[i] <= 1e-12:
             i -= 1
         return i

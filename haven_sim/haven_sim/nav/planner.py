@@ -153,13 +153,15 @@ class GridPlanner:
         obstacle of the map (not inflated); given an (N, 2) array of directions, the N distances,
         cast in one numpy pass (a simulated participant looks for walls in 16 directions a tick)."""
         dirs = np.asarray(direction, dtype=float).reshape(-1, 2)
-        step = self.grid.resolution_m / 2.0
+        g = self.grid
+        step = g.resolution_m / 2.0
         s = np.arange(0.0, max_m + step, step)
-        pts = np.asarray(start, dtype=float) + dirs[:, None, :] * s[None, :, None]  # (rays, samples, 2)
-        rows, cols, inside = self._cells_of(pts.reshape(-1, 2))
+        # (rays, samples) cells of start + direction * s, x and y apart (the same numbers as (rays, samples, 2) points)
+        cols = np.floor((dirs[:, :1] * s + start[0] - g.origin_x) / g.resolution_m).astype(np.intp)
+        rows = np.floor((dirs[:, 1:] * s + start[1] - g.origin_y) / g.resolution_m).astype(np.intp)
+        inside = (rows >= 0) & (rows < g.height) & (cols >= 0) & (cols < g.width)
         hit = ~inside
         hit[inside] = self.occupied[rows[inside], cols[inside]]
-        hit = hit.reshape(len(dirs), len(s))
         runs = np.where(hit.any(axis=1), s[hit.argmax(axis=1)], max_m)
         return runs if isinstance(direction, np.ndarray) else float(runs[0])
 

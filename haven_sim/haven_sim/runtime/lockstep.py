@@ -173,12 +173,17 @@ class Schedule:
 
     def acting(self, step: int) -> list[str]:
         """The participants that act at `step` (in registration order); clears their pending flag."""
-        out = [
-            p.name
-            for p in self.participants.values()
-            if p.name in self._pending or (p.period_ns is not None and due(step, self.step_ns, p.period_ns))
-        ]
-        self._pending -= set(out)
+        return [name for name, _ in self.acting_ticks(step)]
+
+    def acting_ticks(self, step: int) -> list[tuple[str, bool]]:
+        """`acting`, each with whether its period is due at `step` (it ticks as well as handling its inbox)."""
+        pending, step_ns = self._pending, self.step_ns
+        out = []
+        for name, p in self.participants.items():
+            ticks = p.period_ns is not None and due(step, step_ns, p.period_ns)
+            if ticks or name in pending:
+                out.append((name, ticks))
+        pending.difference_update(name for name, _ in out)
         return out
 
 
@@ -186,6 +191,8 @@ def inbox_order(rank: Mapping[str, int], inbox: Sequence[Message]) -> list[Messa
     """The order a participant handles what it received: by its topics' order (`rank`), events by
     (stamp, source), other topics as they came (each has one publisher); of a state stream
     (`topics.STATE`) only the newest message."""
+    if len(inbox) < 2:
+        return list(inbox)
     newest = {m.topic: i for i, m in enumerate(inbox) if m.topic in topics.STATE}
     inbox = [m for i, m in enumerate(inbox) if m.topic not in topics.STATE or newest[m.topic] == i]
     if len(inbox) < 2:

@@ -12,7 +12,7 @@ import itertools
 from collections.abc import Callable, Collection, Sequence
 
 from haven_sim.common.events import Event, Sequencer
-from haven_sim.runtime.component import Component, Message, due
+from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import ParticipantInfo, Schedule, inbox_order
 from haven_sim.runtime.wire import on_the_wire
 from haven_sim.sim.simulator import SimulatorComponent
@@ -53,14 +53,21 @@ class InProcessLoop:
         self._read = frozenset(read)  # a message on any other topic reaches no one: it is not routed
         for c in [sim, *self.components]:
             c.unread = frozenset(t for t in c.outputs() if t not in read)
+        # Per step, by name: the component, its handlers and its topics' rank (lookups done once).
+        self._parts = {c.name: (c, self._handlers[c.name], self._rank[c.name]) for c in self.components}
+        self._readers = {t: [c.name for c in self.components if t in self._handlers[c.name]] for t in read}
 
     def _route(self, messages: Sequence[Message], to_sim: bool) -> None:
+        read, delay = self._read, self.delay
         for sent in messages:
-            if sent.topic not in self._read:
+            topic, data = sent.topic, sent.data
+            if topic not in read:
                 continue
-            data = self.sequencer.number(sent.data) if isinstance(sent.data, Event) else sent.data
-            m = Message(sent.topic, on_the_wire(sent.topic, data), sent.stamp)
-            late = self.delay(m.topic) if self.delay is not None else 0.0
+            if isinstance(data, Event):
+                data = self.sequencer.number(data)
+            wired = on_the_wire(topic, data)
+            m = sent if wired is sent.data else Message(topic, wired, sent.stamp)  # unchanged: the same (frozen) message
+            late = delay(topic) if delay is not None else 0.0
             if late > 0.0:
                 heapq.heappush(self._held, (self.sim.sim.time + late, next(self._order), m, to_sim))
                 continue
@@ -74,14 +81,17 @@ class InProcessLoop:
             self._deliver(m, to_sim)
 
     def _deliver(self, m: Message, to_sim: bool) -> None:
-        if m.topic in self.observed:
+        topic = m.topic
+        if topic in self.observed:
             for observer in self.observers:
                 observer(m)
-        for c in self.components:
-            if m.topic in self._handlers[c.name]:
-                self._inbox[c.name].append(m)
-        if to_sim and m.topic in self._sim_handlers:
-            self._sim_handlers[m.topic](m.data, m.stamp)
+        inbox = self._inbox
+        for name in self._readers[topic]:
+            inbox[name].append(m)
+        if to_sim:
+            handler = self._sim_handlers.get(topic)
+            if handler is not None:
+                handler(m.data, m.stamp)
 
     def publish(self, messages: Sequence[Message]) -> None:
         """Messages from outside the loop (a study condition set by the caller, say)."""
@@ -89,23 +99,23 @@ class InProcessLoop:
 
     def step(self) -> None:
         k, now = self.sim.sim.steps, self.sim.sim.time
-        self._release()
+        if self._held:
+            self._release()
         self._route(self.sim.sense(), to_sim=False)
-        acting = set(self.schedule.acting(k))
-        produced: list[Message] = []
-        for c in self.components:
-            if c.name not in acting:
-                continue
-            inbox, self._inbox[c.name] = self._inbox[c.name], []
-            handlers = self._handlers[c.name]
+        produced = []
+        for name, ticks in self.schedule.acting_ticks(k):  # in registration order: the components' order
+            c, handlers, rank = self._parts[name]
+            inbox = self._inbox[name]
             out: list[Message] = []
-            for m in inbox_order(self._rank[c.name], inbox):
-                out += handlers[m.topic](m.data, now)
-            info = self.schedule.participants[c.name]
-            if info.period_ns is not None and due(k, self.schedule.step_ns, info.period_ns):
+            if inbox:
+                self._inbox[name] = []
+                for m in inbox_order(rank, inbox):
+                    out += handlers[m.topic](m.data, now)
+            if ticks:
                 out += c.tick(now)
-            self.schedule.published(c.name, (m.topic for m in out))
-            produced += out
+            if out:
+                self.schedule.published(name, [m.topic for m in out])
+                produced += out
         self._route(produced, to_sim=True)
         self.sim.advance()
 

@@ -41,8 +41,17 @@ class CommandStatus(Enum):
 
 
 def clamp(cmd: Twist2D, limits: VelocityLimits) -> Twist2D:
-    v, side, w = limits.max_linear_speed_mps, limits.max_lateral_speed_mps, limits.max_angular_speed_rps
-    return Twist2D(max(-v, min(v, cmd.vx)), max(-side, min(side, cmd.vy)), max(-w, min(w, cmd.wz)))
+    return Twist2D(
+        _within(cmd.vx, limits.max_linear_speed_mps),
+        _within(cmd.vy, limits.max_lateral_speed_mps),
+        _within(cmd.wz, limits.max_angular_speed_rps),
+    )
+
+
+def _within(x: float, limit: float) -> float:
+    """max(-limit, min(limit, x)) without the calls, and as it is (a zero limit gives -0.0)."""
+    y = x if x < limit else limit
+    return y if y > -limit else -limit
 
 
 def _approach(current: float, target: float, max_step: float) -> float:

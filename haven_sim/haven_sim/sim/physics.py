@@ -81,10 +81,12 @@ class _DrivenBody:
 
     def body_twist(self) -> Twist2D:
         """Velocity in the body frame (relative to the heading it will be integrated about)."""
-        vx, vy = self.body.velocity
-        heading = self.body.angle + 0.5 * self.body.angular_velocity * self._dt
+        body = self.body
+        vx, vy = body.velocity
+        w = body.angular_velocity
+        heading = body.angle + 0.5 * w * self._dt
         c, s = math.cos(heading), math.sin(heading)
-        return Twist2D(c * vx + s * vy, -s * vx + c * vy, self.body.angular_velocity)
+        return Twist2D(c * vx + s * vy, -s * vx + c * vy, w)
 
 
 class Physics:

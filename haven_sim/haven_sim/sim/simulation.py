@@ -69,6 +69,7 @@ class Simulation:
         if base is not None and self.config.battery.base_radius_m != base.radius:
             self.config = replace(self.config, battery=replace(self.config.battery, base_radius_m=base.radius))
         self.steps = 0
+        self._step_ns, self._step_s = self.config.step_ns, self.config.step_s  # config is frozen: read per step
         self.robot_gate = CommandGate(self.config.robot_limits, self.config.cmd_timeout_s)
         self.human_gates = {h.id: CommandGate(self.config.human_limits, self.config.cmd_timeout_s) for h in world.humans}
         self.battery = Battery(self.config.battery)
@@ -121,10 +122,10 @@ class Simulation:
     @property
     def time(self) -> float:
         """Sim seconds since the start."""
-        return self.steps * self.config.step_ns / NS_PER_S
+        return self.steps * self._step_ns / NS_PER_S
 
     def step(self) -> None:
-        dt = self.config.step_s
+        dt = self._step_s
         now = self.time
         robot_cmd = self.robot_gate.update(now, dt, enabled=not self.battery.empty)
         human_cmds = {hid: g.update(now, dt) for hid, g in self.human_gates.items()}

@@ -126,7 +126,7 @@ class SimulatorComponent:
         if self._static_due:
             self._static_due = False
             out.append(Message(topics.TF_STATIC, static_frames(c.map_frame, c.odom_frame, c.base_frame, c.scan_frame, c.publish_map_to_odom), now))
-        if self._map_due or any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in events):
+        if self._map_due or (events and any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in events)):
             self._map_due = False
             out.append(Message(topics.MAP, sim.occupancy(c.map_resolution_m), now))
         odom = sim.odometry_pose()
@@ -137,7 +137,8 @@ class SimulatorComponent:
             humans = sim.human_poses()
             frames += human_frames(humans, c.map_frame) if tf else []
             out.append(Message(topics.HUMANS, humans, now))
-            out += [Message(topics.human_pose(hid), pose, now) for hid, pose in humans.items() if topics.human_pose(hid) not in skip]
+            poses = ((topics.human_pose(hid), pose) for hid, pose in humans.items())
+            out += [Message(topic, pose, now) for topic, pose in poses if topic not in skip]
         if tf:
             out.append(Message(topics.TF, frames, now))
         if due(k, self._step_ns, self._scan_ns) and topics.SCAN not in skip:
