@@ -298,16 +298,6 @@ def test_a_gamepad_walks_and_enter_vr_works_with_an_emulated_headset(ros, browse
     assert ahead["x"] < -0.9, ahead  # before: straight down the hallway
 
 
-LEGIBILITY_YAML = """name: legibility
-title: About the robot
-points: 7
-anchors: [Strongly disagree, Strongly agree]
-items:
-  - {id: side, text: "I could tell which way the robot would pass me."}
-  - {id: surprise, text: "The robot surprised me.", reverse: true}
-"""
-
-
 def stopped_trial(ros, browser, tmp_path, questionnaires, viewport, argv=None):
     """`haven run --web --teleop h1 --questionnaire ...` (or `argv`): the participant starts, the
     researcher stops the trial (the console's text before it is kept as havenState.before)."""
