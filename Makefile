@@ -22,6 +22,7 @@ bench: setup
 	.venv/bin/python bench/trials.py
 	.venv/bin/python bench/web_wire.py
 	.venv/bin/python bench/web_loop.py
+	.venv/bin/python bench/batch_throughput.py --trials 300 --repeat 1 --dask
 
 lock:
 	./scripts/lock.sh
