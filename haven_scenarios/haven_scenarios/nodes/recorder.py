@@ -46,7 +46,7 @@ from std_msgs.msg import String
 
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.record.bag import BagWriter
-from haven_scenarios.record.session import END_MARK
+from haven_scenarios.record.session import END_MARK, EVENTS_FILE
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import build, defaults
@@ -95,7 +95,7 @@ class Recorder(Node):
             folder.mkdir(parents=True, exist_ok=True)
             self.bag = BagWriter(folder / "bag")
             self.bag.__enter__()
-            self.events = (folder / "events.jsonl").open("a", encoding="utf-8")
+            self.events = (folder / EVENTS_FILE).open("a", encoding="utf-8")
         except OSError as e:  # (run_node says it in one line, exit code 2)
             raise ValueError(f"cannot record into {folder.resolve()}: {e.strerror or e}") from None
         self.failed = False  # a write failed (disk full): nothing more is written

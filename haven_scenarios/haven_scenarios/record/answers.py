@@ -22,13 +22,13 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.record.session import EVENTS_FILE
 from haven_scenarios.study.questionnaires import ANSWERS_FILE, Questionnaire, answers_record, resolve
 from haven_scenarios.study.rules import EndReason
 from haven_sim.common.events import Event, EventKind, Source, event
 
 MAX_MESSAGE_BYTES = 64 * 1024  # a 100-item questionnaire's answers take about 3 KB
 SKIP = "skip_questionnaires"  # the console's intervention action: the researcher ends the wait
-EVENTS_FILE = "events.jsonl"  # (the recorder's)
 RECORDED = (EventKind.TRIAL_START, EventKind.TRIAL_END, EventKind.QUESTIONNAIRE_ANSWERED, EventKind.INTERVENTION)  # what is read of it
 
 

@@ -7,6 +7,7 @@ still gets its row, with `valid` false and the reason; nothing aborts the report
 from __future__ import annotations
 
 import csv
+import os
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -35,14 +36,22 @@ def session_folders(paths: Sequence[Path]) -> list[Path]:
     return out
 
 
-def report_csv(paths: Sequence[Path], out: Path) -> list[dict[str, Any]]:
-    rows = [csv_row(analyse(folder)[0]) for folder in session_folders(paths)]
-    keys: list[str] = []
+def write_table(path: Path, rows: Sequence[dict[str, Any]], first: Sequence[str] = ()) -> None:
+    """A CSV of `rows` under the union of their columns (`first`, then as first seen), written whole
+    to a temporary file and renamed over `path`: a reader never sees half a table."""
+    keys = dict.fromkeys(first)
     for r in rows:
-        keys += [k for k in r if k not in keys]
-    out.parent.mkdir(parents=True, exist_ok=True)
-    with out.open("w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=keys)
+        keys.update(dict.fromkeys(r))
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(path.name + ".tmp")
+    with tmp.open("w", newline="", encoding="utf-8") as f:
+        writer = csv.DictWriter(f, fieldnames=list(keys))
         writer.writeheader()
         writer.writerows(rows)
+    os.replace(tmp, path)
+
+
+def report_csv(paths: Sequence[Path], out: Path) -> list[dict[str, Any]]:
+    rows = [csv_row(analyse(folder)[0]) for folder in session_folders(paths)]
+    write_table(out, rows)
     return rows

@@ -36,14 +36,17 @@ import yaml
 from haven_scenarios.record.bag import read_recording, to_wall_time, wall_clock
 from haven_scenarios.record.metrics import compute
 from haven_scenarios.record.timeline import GRID_S, Recording, Timeline
+from haven_scenarios.run.trial import condition_name
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario
 from haven_sim.common.events import EventKind
 from haven_sim.sim.world import World, WorldError
+from haven_viz.cues import CUES, Toggles
 from haven_viz.world_markers import world_markers
 
 PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags", "mcap")
 SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = "scenario.yaml", "world.yaml", "params.yaml", "session.json", "metrics.json"
+EVENTS_FILE = "events.jsonl"
 END_MARK = ".recorded_through_end"  # the recorder has the trial's end on every state stream (nodes/recorder.py)
 
 
@@ -108,6 +111,21 @@ def rmw() -> str:
 
 def write_json(path: Path, data: dict[str, Any]) -> None:
     path.write_text(json.dumps(data, indent=2, sort_keys=True, default=str) + "\n")
+
+
+def trial_record(participant: str, toggles: Toggles, seed: int, scenario: Scenario) -> dict[str, Any]:
+    """What every session.json says of its trial (`haven run` and a study's batch trials add
+    how it ran): who, the condition and its cues, the seed, the scenario, its people, provenance."""
+    return {
+        "participant": participant,
+        "condition": condition_name(toggles),
+        "cues": {c: getattr(toggles, c) for c in CUES},
+        "seed": seed,
+        "scenario": scenario.name,
+        "humans": [h.id for h in scenario.world.humans],
+        "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
+        **provenance(),
+    }
 
 
 def session_info(folder: Path) -> dict[str, Any]:
@@ -215,7 +233,7 @@ def trial_wall_clock(folder: Path) -> dict[str, str]:
     pairs = wall_clock(folder / "bag")
     out: dict[str, str] = {}
     try:
-        lines = (folder / "events.jsonl").read_text(encoding="utf-8").splitlines()
+        lines = (folder / EVENTS_FILE).read_text(encoding="utf-8").splitlines()
     except OSError:
         return out
     kinds = (EventKind.TRIAL_START.value, EventKind.TRIAL_END.value)

@@ -11,7 +11,6 @@ Every trial with a finished session is in both, valid or not (`valid` says which
 
 from __future__ import annotations
 
-import csv
 import json
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -126,13 +125,3 @@ def long_rows(results: Sequence[TrialResults]) -> list[dict[str, Any]]:
 def wide_rows(results: Sequence[TrialResults]) -> list[dict[str, Any]]:
     return [{**r.design, **{m.column: m.value for m in r.measures}} for r in results]
 
-
-def write_csv(path: Path, rows: Sequence[dict[str, Any]], first: Sequence[str]) -> None:
-    keys = list(first)
-    for r in rows:
-        keys += [k for k in r if k not in keys]
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with path.open("w", newline="", encoding="utf-8") as f:
-        writer = csv.DictWriter(f, fieldnames=keys)
-        writer.writeheader()
-        writer.writerows(rows)

@@ -7,9 +7,7 @@ has (scenarios with more participants have more columns) and the journal removed
 
 from __future__ import annotations
 
-import csv
 import json
-import os
 import sys
 import time
 from collections.abc import Sequence
@@ -18,6 +16,7 @@ from typing import Any, TextIO
 
 from tqdm import tqdm
 
+from haven_scenarios.record.report import write_table
 from haven_scenarios.run.grid import TrialSpec
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.sweep import Row, run_rows
@@ -63,17 +62,8 @@ def journal_path(csv_path: Path) -> Path:
 
 
 def write_csv(rows: Sequence[Row], path: Path) -> None:
-    """The rows in trial order under the union of their columns (first seen first), written whole
-    to a temporary file and then renamed over `path`."""
-    keys: dict[str, None] = {}
-    for r in rows:
-        keys.update(dict.fromkeys(r))
-    tmp = path.with_name(path.name + ".tmp")
-    with tmp.open("w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(keys))
-        writer.writeheader()
-        writer.writerows(sorted(rows, key=lambda r: r["trial"]))
-    os.replace(tmp, path)
+    """The rows in trial order under the union of their columns, written whole (`write_table`)."""
+    write_table(path, sorted(rows, key=lambda r: r["trial"]))
 
 
 def run_batch(

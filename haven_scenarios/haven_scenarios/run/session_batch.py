@@ -10,14 +10,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from haven_scenarios.record.session import METRICS_FILE, SESSION_FILE, new_session_dir, provenance, write_json
+from haven_scenarios.record.session import EVENTS_FILE, METRICS_FILE, SESSION_FILE, new_session_dir, trial_record, write_json
 from haven_scenarios.run.suite import SuiteConfig
-from haven_scenarios.run.trial import condition_name, parse_condition, run_trial
+from haven_scenarios.run.trial import parse_condition, run_trial
 from haven_scenarios.study.scenario import Scenario
-from haven_viz.cues import CUES
 
 NO_OUTCOME = "unknown: the batch trial ended before it wrote the outcome"
-EVENTS_FILE = "events.jsonl"
 
 
 def run_batch_session(
@@ -28,19 +26,7 @@ def run_batch_session(
         raise ValueError(f"scenario {scenario.name} has a teleoperated participant: a batch trial needs simulated ones")
     toggles = parse_condition(cues)
     folder = new_session_dir(sessions, scenario.name, participant)
-    info: dict[str, Any] = {
-        "participant": participant,
-        "condition": condition_name(toggles),
-        "cues": {c: getattr(toggles, c) for c in CUES},
-        "seed": seed,
-        "scenario": scenario.name,
-        "clock": "batch",
-        "humans": [h.id for h in scenario.world.humans],
-        "teleoperated": [],
-        **provenance(),
-        **extra,
-        "outcome": NO_OUTCOME,
-    }
+    info: dict[str, Any] = {**trial_record(participant, toggles, seed, scenario), "clock": "batch", **extra, "outcome": NO_OUTCOME}
     write_json(folder / SESSION_FILE, info)
     result = run_trial(scenario, seed, toggles, suite)
     with (folder / EVENTS_FILE).open("w", encoding="utf-8") as f:

@@ -5,8 +5,9 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from haven_scenarios.record.report import write_table
 from haven_scenarios.record.study_summary import SUMMARY, draw, summary_rows
-from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows, write_csv
+from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows
 from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
 from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
 from haven_scenarios.study.schedule import PlannedTrial, design_note, participant_schedule, schedule, trials_per_participant
@@ -149,10 +150,10 @@ def report_cmd(args: argparse.Namespace) -> int:
         return fail(f"no finished trials of study {study.name} in {root} (see `haven study status`)")
     out = args.out if args.out is not None else root / "report"
     try:
-        write_csv(out / "study_long.csv", long_rows(results), LONG)
-        write_csv(out / "study_wide.csv", wide_rows(results), DESIGN)
+        write_table(out / "study_long.csv", long_rows(results), LONG)
+        write_table(out / "study_wide.csv", wide_rows(results), DESIGN)
         conditions = [c.name for c in study.conditions]
-        write_csv(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
+        write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
         picture = draw(results, conditions, questionnaires, out / "summary.png", f"{study.name}: {_counts(results)}")
     except OSError as e:
         return fail(f"--out {out}: cannot write the report: {e.strerror or e}")

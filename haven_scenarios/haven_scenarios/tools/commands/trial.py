@@ -12,6 +12,7 @@ from typing import Any
 
 from haven_scenarios.record.session import (
     END_MARK,
+    EVENTS_FILE,
     METRICS_FILE,
     PARAMS_FILE,
     SCENARIO_FILE,
@@ -20,10 +21,10 @@ from haven_scenarios.record.session import (
     analyse,
     check_name,
     new_session_dir,
-    provenance,
     session_info,
     session_scenario,
     trajectory_picture,
+    trial_record,
     trial_wall_clock,
     write_inputs,
     write_json,
@@ -199,7 +200,7 @@ def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
     """Until the recorder has the `trial_end` event and the state streams up to it (it writes
     END_MARK), or `timeout_s` (a stream that stopped: a node died), before everything stops."""
     mark = folder / END_MARK
-    events = folder / "events.jsonl"
+    events = folder / EVENTS_FILE
     if not (events.exists() and f'"{EventKind.TRIAL_START.value}"' in events.read_text(encoding="utf-8", errors="replace")):
         return  # no trial started (stopped while held): no end to wait for
     deadline = time.monotonic() + timeout_s
@@ -232,19 +233,12 @@ def _session_info(plan: SessionPlan) -> dict[str, Any]:
     """session.json as the run starts (its outcome is written however the run ends)."""
     scenario, rtf = plan.scenario, plan.real_time_factor
     return {
-        "participant": plan.participant,
-        "condition": condition_name(plan.toggles),
-        "cues": {c: getattr(plan.toggles, c) for c in CUES},
-        "seed": plan.seed,
-        "scenario": scenario.name,
+        **trial_record(plan.participant, plan.toggles, plan.seed, scenario),
         "scenario_file": SCENARIO_FILE,
         "world_file": WORLD_FILE,
         "params_file": PARAMS_FILE,
         "clock": "lockstep" if plan.lockstep else "free-running",
         "real_time_factor": None if rtf >= UNCAPPED_RTF else rtf,
-        "humans": [h.id for h in scenario.world.humans],
-        "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
-        **provenance(),
         "without": list(plan.without),
         **plan.extra,
         "outcome": NO_OUTCOME,
