@@ -240,3 +240,10 @@ def test_a_complete_20_hz_stream_on_50_hz_physics_is_complete_however_short():
     stamps = [0.1 * i + d for i in range(8) for d in (0.0, 0.06)][:-1]  # 0.0, 0.06, 0.1, ... 0.7
     assert _stream("/humans", stamps, (0.0, 0.7)) == []
     assert _stream("/humans", stamps[:5] + stamps[7:], (0.0, 0.7)) != []  # two missing
+
+
+def test_a_stream_recorded_only_from_after_trial_start_is_not_complete():
+    """The recorder subscribed late: every message from then on, but the start of the trial missing."""
+    stamps = [0.02 * i for i in range(115, 950)]  # 2.3 s to 19 s, no gap
+    assert _stream("/odom", stamps, (0.0, 19.0)) == ["/odom: recorded only from 2.30 s into the trial"]
+    assert _stream("/odom", [0.02 * i for i in range(2, 950)], (0.0, 19.0)) == []  # (0.04 s late: within a step or two)

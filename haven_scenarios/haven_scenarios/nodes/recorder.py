@@ -11,8 +11,10 @@ killed outright (SIGKILL) loses at most the last second; `haven repair` (record/
 such a bag. A full disk (ENOSPC, or EFBIG over a file size limit) stops the recorder with one line
 naming the file and the reason, and exit code 1; what it had written stays as it was, for the repair.
 
-The recorder subscribes /haven/events only once /odom and /humans reach it: the director starts the
-trial when the recorder listens to its events, so the state streams are recorded from the start
+The recorder subscribes /haven/events and /goal_pose only once /odom and /humans reach it: the
+director starts the trial when the recorder listens to either (the topics it watches), so the state
+streams are recorded from the start (with /goal_pose subscribed early, a busy machine once started
+the trial 2.3 s of sim time before /odom reached the recorder)
 (DDS matches each topic on its own; on a busy machine at 10x the streams matched 7 s of sim time
 after the events once). Its publishers keep the last 100 events for it, so none are lost by waiting.
 Without a simulator (nobody publishes the streams) it subscribes after STREAMS_WAIT_S all the same;
@@ -55,6 +57,7 @@ from haven_sim.nodes import conversions as conv
 from haven_sim.nodes.runner import run_node
 
 EVENTS = "/" + topics.EVENTS
+GATED = (EVENTS, "/" + topics.GOAL)  # what the scenario node's start waits for the recorder to read
 STREAMS = ("/" + topics.ODOM, "/" + topics.HUMANS)  # header-first messages the metrics need to the end
 STREAMS_WAIT_S = 5.0  # wall time
 CLOCK_PAIR_PERIOD_S = 1.0  # wall time between (sim, wall) clock pairs
@@ -112,7 +115,7 @@ class Recorder(Node):
             keep_all=True,
             on_lost=self._on_lost,
             batched=True,
-            held=(EVENTS,),
+            held=GATED,
             params=self._declare_wire_params(),
         )
         self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
@@ -159,7 +162,7 @@ class Recorder(Node):
         if any(self.count_publishers(t) > 0 for t in missing):
             return
         self._give_up.cancel()
-        self.get_logger().info(f"nobody publishes {', '.join(missing)}: recording /haven/events without")
+        self.get_logger().info(f"nobody publishes {', '.join(missing)}: recording {' and '.join(GATED)} without")
         self.topics.release()
 
     def _on_lost(self, topic: str, n: int, best_effort: bool) -> None:

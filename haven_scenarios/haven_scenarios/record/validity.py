@@ -1,7 +1,7 @@
 """How complete a recording is: a session is valid only when nothing the metrics rest on was lost.
 
 Checked on the recording itself: /odom comes every physics step and /humans at a fixed rate, so
-their header stamps show every missing message and every gap; events carry a sequence number per
+their header stamps show every missing message and every gap, a late start included; events carry a sequence number per
 source (`seq`), so a missing one shows too; the recorder notes every message DDS reports lost,
 and a loss on a topic the metrics read counts; and a trial must have ended with `trial_end`.
 """
@@ -29,6 +29,8 @@ def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list
     period = float(np.median((gaps[:-1] + gaps[1:]) / 2.0)) if len(gaps) > 1 else float(gaps[0])
     expected = round((t[-1] - t[0]) / period) + 1.0  # rounded: a stream may end on its short gap
     out = []
+    if t[0] > window[0] + MAX_GAP_S + 1e-6:  # (coverage counts from the first message: a late start is a gap of its own)
+        out.append(f"{name}: recorded only from {t[0] - window[0]:.2f} s into the trial")
     if len(t) < MIN_COVERAGE * expected:
         out.append(f"{name}: {100.0 * len(t) / expected:.1f} % of the messages recorded")
     if gaps.max() > MAX_GAP_S + 1e-6:
