@@ -50,8 +50,9 @@ def test_sim_runs_and_ctrl_c_stops_every_process(ros):
     params = resources.files("haven_sim") / "config" / "haven.yaml"
     proc = start_haven(ros, "sim", "--rtf", "2", "--params-file", str(params))
     ros.wait_for_messages(odom, 10)
-    ros.spin_until(lambda: ros.node.count_publishers("/haven/ar_markers") > 0 and ros.node.count_publishers("/plan") > 0, 20)
-    assert ros.node.count_publishers("/cmd_vel_nav") == 1  # controller up
+    # Every node up: viz (markers), planner (plan) and controller (cmd_vel_nav), each discovered in its own time.
+    assert ros.spin_until(lambda: all(ros.node.count_publishers(t) > 0 for t in ("/haven/ar_markers", "/plan", "/cmd_vel_nav")), 30)
+    assert ros.node.count_publishers("/cmd_vel_nav") == 1  # one controller
     kids = children_of(proc.pid)
     assert len(kids) == 5  # sim, mux, planner, controller, viz
     os.killpg(proc.pid, signal.SIGINT)  # what a terminal's Ctrl-C does
