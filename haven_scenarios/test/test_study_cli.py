@@ -35,6 +35,26 @@ STUDY = {
 }
 
 
+# `haven ARGS...` whose second batch trial, once running, touches the file argv[1] and waits.
+HOLD_SECOND_TRIAL = """
+import pathlib, sys, time
+from haven_scenarios.run import session_batch
+from haven_scenarios.tools.cli import main
+
+real, calls = session_batch.run_trial, []
+
+def held(*args, **kwargs):
+    calls.append(1)
+    if len(calls) == 2:
+        pathlib.Path(sys.argv[1]).touch()
+        time.sleep(300)
+    return real(*args, **kwargs)
+
+session_batch.run_trial = held
+sys.exit(main(sys.argv[2:]))
+"""
+
+
 def study_file(tmp_path: Path, **changes: object) -> Path:
     path = tmp_path / "pilot.yaml"
     path.write_text(yaml.safe_dump({**STUDY, **changes}, sort_keys=False))
@@ -65,10 +85,13 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     path = study_file(tmp_path)
     root = tmp_path / "studies" / "pilot"
     assert haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path).returncode == 0
-    # p02: Ctrl-C (SIGINT to the process group, as a terminal sends it) once its second trial has begun.
-    proc = subprocess.Popen([*HAVEN, "study", "run", str(path), "--participant", "p02", "--batch"], cwd=tmp_path, start_new_session=True,
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)  # fmt: skip
-    wait_for(lambda: any(root.glob("p02/02_*/*/session.json")))
+    # p02: Ctrl-C (SIGINT to the process group, as a terminal sends it) while its second trial runs.
+    # A batch trial takes a fraction of a second, so the second one is held until the signal comes:
+    # where the study is cut is the test's choice, not the machine's speed.
+    held = tmp_path / "second_trial_running"
+    proc = subprocess.Popen([sys.executable, "-c", HOLD_SECOND_TRIAL, str(held), "study", "run", str(path), "--participant", "p02", "--batch"],
+                            cwd=tmp_path, start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)  # fmt: skip
+    wait_for(held.exists, 120.0)
     os.killpg(proc.pid, signal.SIGINT)
     out, err = proc.communicate(timeout=60)
     assert proc.returncode == 130, err
