@@ -35,9 +35,11 @@ STUDY = {
 }
 
 
-# `haven ARGS...` whose second batch trial, once running, touches the file argv[1] and waits.
+# `haven ARGS...` whose second batch trial, once running, touches the file argv[1] and waits; with
+# Ctrl-C as in a terminal (a shell's background job would start it with SIGINT ignored).
 HOLD_SECOND_TRIAL = """
-import pathlib, sys, time
+import pathlib, signal, sys, time
+signal.signal(signal.SIGINT, signal.default_int_handler)
 from haven_scenarios.run import session_batch
 from haven_scenarios.tools.cli import main
 
