@@ -38,11 +38,11 @@ class Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from haven_scenarios.tools.commands import clients, files, recordings, studies, study, suite, trial
+    from haven_scenarios.tools.commands import batch_report, clients, files, recordings, study, suite, trial
 
     parser = Parser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    for group in (suite, clients, trial, studies, study, recordings, files):
+    for group in (suite, clients, trial, batch_report, study, recordings, files):
         group.add(sub)
     return parser
 

@@ -36,9 +36,9 @@ from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands import after_trial
 from haven_scenarios.tools.commands.after_trial import Asked
+from haven_scenarios.tools.commands.batch_report import CONDITION_HELP
 from haven_scenarios.tools.commands.common import PORT, SEED, add_ros_options, add_suite_options, environment, fail, port_free, positive, suite_specs
 from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
-from haven_scenarios.tools.commands.studies import CONDITION_HELP
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
 from haven_sim.common import topics
