@@ -1,6 +1,7 @@
 """The README's Figure 3 picture: the shipped hallway (seed 0, every cue on so the projected path
-shows), the moment the robot has decided to pass the person and lit its turn signal, before the
-curve begins; with both tracks through the pass. Prints what the picture shows, measured.
+shows, and the simulated person, seeing it, keeps to their side early), the moment the robot has
+decided to pass the person and lit its turn signal, before the curve begins; with both tracks
+through the pass. Prints what the picture shows, measured.
 
 usage: python bench/figure3.py [--seed 0] [--out haven_scenarios/doc/figure3_pass.png]
 """
@@ -50,8 +51,8 @@ def main() -> None:
     x = float(np.mean(tl.robot_xy[span, 0]))
     lead, closest = m["pass_signal_lead_s_median"], m["min_human_distance_m"]
     title = (
-        f"Figure 3: a person on the centre line {passed['gap_m']:.1f} m ahead; the robot lights its {side} signal,\n"
-        f"curves {side} {lead:.1f} s later, and passes {closest:.2f} m from them (centre to centre)"
+        f"Figure 3: an oncoming person {passed['gap_m']:.1f} m ahead (who has seen the projected path and keeps to their side);\n"
+        f"the robot lights its {side} signal, curves {side} {lead:.1f} s later, and passes {closest:.2f} m from them (centre to centre)"
     )
     k = int(np.argmin(np.hypot(*(tl.humans["h1"] - tl.robot_xy).T)))
     points = [(*tl.humans["h1"][k], "h1 when passed", "tab:red"), (*tl.robot_xy[k], "robot then", "tab:blue")]
