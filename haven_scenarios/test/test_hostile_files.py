@@ -257,9 +257,21 @@ def test_validate_checks_worlds_and_scenarios_without_starting_anything(tmp_path
     assert captured.out.splitlines() == [f"ok: {world} (world {load_world(world).name})"]
     assert captured.err.splitlines() == [
         f"haven: error: {bad}: timeout_s: must be a positive number, got inf",
-        f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key) nor a world (no 'walls' key)",
+        f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key) nor a study (no 'scenarios' key)",
         "haven: error: /dev/zero: cannot read file: not a regular file",
     ]
+
+
+def test_validate_checks_study_files(tmp_path, capsys):
+    from haven_scenarios.study.protocol import study_path
+
+    shipped = study_path("haven_paper")
+    typo = tmp_path / "typo.yaml"
+    typo.write_text(shipped.read_text().replace("counterbalancing:", "counterbalancng:"))
+    assert main(["validate", str(shipped), str(typo)]) == 2
+    captured = capsys.readouterr()
+    assert captured.out.splitlines() == [f"ok: {shipped} (study haven_paper)"]
+    assert len(captured.err.splitlines()) == 1 and f"{typo}: counterbalancng: unknown key" in captured.err
 
 
 def test_validate_applies_the_session_name_rule_haven_run_applies(tmp_path, capsys):

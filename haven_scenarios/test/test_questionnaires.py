@@ -63,6 +63,8 @@ def test_answers_off_the_scale_are_refused_in_one_line(answers: object, message:
         ([{"name": "x", "colour": 1, "items": [{"id": "a", "text": "x"}]}], "unknown key 'colour'"),
         (["godspeed", "godspeed"], "named twice"),
         ([3], "must be a built-in name or a mapping"),
+        # YAML reads `anchors: [No, Yes]` as booleans
+        ([{"name": "x", "anchors": [False, True], "items": [{"id": "a", "text": "x"}]}], r"anchors.*must be text, got False \(put the words"),
     ],
 )
 def test_bad_questionnaire_specs_are_one_line_errors(specs: list[object], message: str) -> None:

@@ -102,7 +102,10 @@ def summary(rows: Sequence[dict[str, Any]]) -> str:
     mean_t = sum(times) / len(times) if times else float("nan")
     contacts = sum(r["human_contacts"] for r in rows)
     dmin = min((r["min_human_distance_m"] for r in rows if r["min_human_distance_m"] is not None), default=float("nan"))
-    return f"{done}/{n} completed, robot finishes in {mean_t:.1f} s on average, {contacts} human contact(s), closest approach {dmin:.2f} m"
+    return (
+        f"{done}/{n} completed, robot finishes in {mean_t:.1f} s on average, {contacts} human contact(s), "
+        f"closest approach {dmin:.2f} m (the least of any trial)"
+    )
 
 
 def group_summaries(specs: Sequence[TrialSpec], rows: Sequence[Row]) -> list[str]:

@@ -122,7 +122,12 @@ def study_path(spec: str) -> Path:
 
 def load_study(spec: str | Path) -> Study:
     path = study_path(str(spec))
-    return _StudyParser(str(path)).study(read_yaml(path, "study file", StudyError))
+    return parse_study(read_yaml(path, "study file", StudyError), str(path))
+
+
+def parse_study(data: Any, source: str) -> Study:
+    """A study from its YAML tree; `source` names the file in errors."""
+    return _StudyParser(source).study(data)
 
 
 class _StudyParser:

@@ -36,6 +36,8 @@ from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass
 from typing import Any
 
+from haven_sim.common.yaml_file import short
+
 ANSWERS_FILE = "questionnaires.json"
 NAME = re.compile(r"[A-Za-z0-9_]{1,40}")
 MAX_ITEMS = 100
@@ -114,6 +116,8 @@ BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (_tlx(), _godspeed())}
 
 
 def _text(value: Any, where: str, limit: int = MAX_TEXT) -> str:
+    if isinstance(value, (bool, int, float)):  # YAML reads Yes, No, On, Off as booleans, 5 as a number
+        raise ValueError(f'{where}: must be text, got {short(value)} (put the words in quotes: "Yes")')
     if not isinstance(value, str) or not value.strip() or len(value) > limit or "\n" in value.strip():
         raise ValueError(f"{where}: must be one line of text (at most {limit} characters)")
     return value.strip()

@@ -1,4 +1,4 @@
-"""`haven validate FILE...`: check world and scenario files without starting anything."""
+"""`haven validate FILE...`: check world, scenario and study files without starting anything."""
 
 from __future__ import annotations
 
@@ -6,6 +6,7 @@ import argparse
 from pathlib import Path
 
 from haven_scenarios.record.session import check_name
+from haven_scenarios.study.protocol import StudyError, parse_study
 from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.tools.commands.common import fail
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
@@ -14,7 +15,7 @@ from haven_sim.sim.world_file import parse_world
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    validate = sub.add_parser("validate", help="check world and scenario files (which is which: by their keys) without starting anything")
+    validate = sub.add_parser("validate", help="check world, scenario and study files (which is which: by their keys) without starting anything")
     validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
     validate.set_defaults(func=validate_cmd)
 
@@ -25,15 +26,18 @@ def validate_cmd(args: argparse.Namespace) -> int:
     for path in args.files:
         try:
             print(f"ok: {file_label(path)} ({describe(path)})", flush=True)
-        except (YamlFileError, WorldError, ScenarioError) as e:
+        except (YamlFileError, WorldError, ScenarioError, StudyError) as e:
             fail(str(e))
             failed += 1
     return 2 if failed else 0
 
 
 def describe(path: Path) -> str:
-    """What a valid file is, "world NAME" or "scenario NAME": a scenario has `kind` or `world`, a world `walls`."""
+    """What a valid file is, "world NAME", "scenario NAME" or "study NAME": a scenario has `kind` or
+    `world`, a world `walls`, a study `scenarios` and `conditions`."""
     data = read_yaml(path, "file")
+    if isinstance(data, dict) and ("scenarios" in data or "conditions" in data):
+        return f"study {parse_study(data, str(path)).name}"
     if isinstance(data, dict) and ("kind" in data or "world" in data):
         name = parse_scenario(data, str(path)).name
         try:  # (the rule `haven run` applies before it makes a session folder of the name)
@@ -43,4 +47,5 @@ def describe(path: Path) -> str:
         return f"scenario {name}"
     if isinstance(data, dict) and "walls" in data:
         return f"world {parse_world(data, str(path)).name}"
-    raise YamlFileError(f"{file_label(path)}: neither a scenario (no 'kind' or 'world' key) nor a world (no 'walls' key)")
+    kinds = "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key) nor a study (no 'scenarios' key)"
+    raise YamlFileError(f"{file_label(path)}: {kinds}")
