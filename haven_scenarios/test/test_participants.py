@@ -56,6 +56,15 @@ def test_blocker_steps_onto_the_robots_path_ahead_of_it():
     assert len(on_path) > 100  # stood on the path, about 3 m ahead of the robot, for a while
 
 
+def test_blocker_seeing_only_a_short_piece_of_path_goes_to_its_farthest_marker():
+    """A robot turning on the spot shows a few markers; 2 m of them is enough to block on."""
+    path = [Pose2D(x, 3.0, 0.0) for x in (5.0, 5.5, 6.0, 6.5, 7.0)]
+    _, poses = walk("blocker", [Stop(1.0, 5.0)], 12.0, robot_path=path, robot_at=Pose2D(5.0, 3.0, 0.0))
+    assert len([p for p in poses if math.hypot(p.x - 7.0, p.y - 3.0) < 0.25]) > 100
+    _, short = walk("blocker", [Stop(1.0, 5.0)], 12.0, robot_path=path[:3], robot_at=Pose2D(5.0, 3.0, 0.0))  # 1 m: too little
+    assert all(abs(p.y - 3.0) > 0.3 or p.x < 5.5 for p in short)
+
+
 def test_yielder_stops_and_steps_aside_for_a_robot_in_front():
     robot = Pose2D(3.0, 1.0, math.pi)  # 2 m ahead of the person, facing them
     _, free = walk("walker", [Stop(8.0, 1.0)], 3.5)  # (the person reacts one reaction time late)

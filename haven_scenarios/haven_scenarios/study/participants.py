@@ -239,7 +239,8 @@ class Blocker(Walker):
         self.blocked = False
 
     def _spot_on_path(self, seen: Seen) -> Point | None:
-        """The first seen marker `ahead_m` along the shown path (and not much nearer in a straight line)."""
+        """The first seen marker `ahead_m` along the shown path (and not much nearer in a straight
+        line); when less of the path is in view, its farthest seen marker at least half that far."""
         path = seen.percept.path
         robot = seen.percept.robot
         ref = (robot.x, robot.y) if robot is not None else path[0]
@@ -248,7 +249,8 @@ class Blocker(Walker):
             walked += math.hypot(b[0] - a[0], b[1] - a[1])
             if walked >= self.ahead_m and math.hypot(b[0] - ref[0], b[1] - ref[1]) >= self.ahead_m * 0.8:
                 return b
-        return None
+        last = path[-1]
+        return last if walked >= self.ahead_m / 2 and math.hypot(last[0] - ref[0], last[1] - ref[1]) >= self.ahead_m * 0.4 else None
 
     def _spot_on_motion(self, seen: Seen) -> Point | None:
         """`ahead_m` along the robot's seen motion, if it moves and that place is free."""
