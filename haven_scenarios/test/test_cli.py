@@ -121,6 +121,9 @@ def test_goto_sends_a_goal_to_a_running_suite_and_waits_for_arrival(ros):
 
 @pytest.mark.slow
 def test_snapshot_saves_what_the_viewers_show(ros, tmp_path):
+    alone = ros.run([*HAVEN, "snapshot", str(tmp_path / "none.png"), "--timeout", "2", "--domain-id", str(ros.domain_id)], timeout_s=60)
+    assert alone.returncode == 1 and "no HAVEN suite here" in alone.stderr and alone.stderr.count("\n") == 1, alone.stderr
+    assert not (tmp_path / "none.png").exists()
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     start_haven(ros, "sim", "--rtf", "2")
     ros.wait_for_messages(odom, 5)

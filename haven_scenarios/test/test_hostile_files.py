@@ -257,9 +257,21 @@ def test_validate_checks_worlds_and_scenarios_without_starting_anything(tmp_path
     assert captured.out.splitlines() == [f"ok: {world} (world {load_world(world).name})"]
     assert captured.err.splitlines() == [
         f"haven: error: {bad}: timeout_s: must be a positive number, got inf",
-        f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key) nor a study (no 'scenarios' key)",
+        f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key), a study (no 'scenarios' key) "
+        "nor a parameter file (no 'ros__parameters')",
         "haven: error: /dev/zero: cannot read file: not a regular file",
     ]
+
+
+def test_validate_checks_parameter_files(tmp_path, capsys):
+    from haven_scenarios.run.suite import packaged_params_file
+
+    typo = tmp_path / "typo.yaml"
+    typo.write_text("controller:\n  ros__parameters:\n    rate_hx: 10.0\n")
+    assert main(["validate", str(packaged_params_file()), str(typo)]) == 2
+    captured = capsys.readouterr()
+    assert captured.out.startswith(f"ok: {packaged_params_file()} (parameter file for /**, sim_node, velocity_mux, planner")
+    assert captured.err == f"haven: error: {typo}: controller: rate_hx: no such parameter (did you mean rate_hz?)\n"
 
 
 def test_validate_checks_study_files(tmp_path, capsys):

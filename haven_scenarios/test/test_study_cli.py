@@ -157,6 +157,33 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     assert seeds == {("p01", "100")}  # (p02's and p03's sessions ran with the old seeds: theirs are to run again)
 
 
+def test_a_second_runner_on_the_same_participant_is_refused_and_a_killed_runner_leaves_no_lock(tmp_path: Path) -> None:
+    """Two `haven study run --batch` on one participant: the second says who holds the participant
+    and exits before running anything; after the first is killed outright (SIGKILL: no clean-up),
+    the lock is gone and the study goes on; no trial ever has two finished attempts."""
+    path = study_file(tmp_path, participants=1)
+    root = tmp_path / "studies" / "pilot"
+    held = tmp_path / "second_trial_running"
+    first = subprocess.Popen([sys.executable, "-c", HOLD_SECOND_TRIAL, str(held), "study", "run", str(path), "--participant", "p01", "--batch"],
+                             cwd=tmp_path, start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)  # fmt: skip
+    try:
+        wait_for(held.exists, 120.0)
+        before = sessions(root)
+        second = haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path)
+        assert second.returncode == 2 and second.stderr.count("\n") == 1, second.stderr
+        assert f"participant p01 of study pilot is already being run (pid {first.pid}" in second.stderr and "study run" in second.stderr
+        assert sessions(root) == before  # it ran nothing
+        other = haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path)  # (still held: still refused)
+        assert other.returncode == 2
+    finally:
+        os.killpg(first.pid, signal.SIGKILL)
+        first.communicate(timeout=60)
+    after = haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path)
+    assert after.returncode == 0, after.stderr
+    finished = {t: [a for a in tried if a[1] == "completed"] for t, tried in sessions(root).items()}
+    assert len(finished) == 3 and all(len(a) == 1 for a in finished.values()), finished
+
+
 def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     conditions = {"none": ["none"], "path": ["path_projection"]}
     path = study_file(tmp_path, participants=2, conditions=conditions, practice=[{"scenario": "shared_room", "condition": "path"}])

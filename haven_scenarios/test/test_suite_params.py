@@ -4,12 +4,13 @@ edited copy changes batch mode as it changes the nodes."""
 import subprocess
 import sys
 
+import pytest
 import yaml
 
 from haven_scenarios.run.suite import NODES, load_suite_config, packaged_params_file, render
 from haven_scenarios.run.trial import run_trial
 from haven_scenarios.study.scenario import load_scenario
-from haven_sim.common.params import defaults
+from haven_sim.common.params import ParamsError, defaults
 
 
 def test_shipped_haven_yaml_is_generated_from_the_configs():
@@ -41,13 +42,43 @@ def test_batch_refuses_a_bad_params_file_in_one_line(tmp_path):
     r = subprocess.run(
         [sys.executable, "-m", "haven_scenarios", "batch", "shared_room", "--params-file", str(f)], capture_output=True, text=True, timeout=60
     )
-    assert r.returncode == 2 and r.stderr.strip() == "haven: error: controller: rate_hz: must be a finite number, got 'fast'"
+    assert r.returncode == 2 and r.stderr.strip() == f"haven: error: {f}: controller: rate_hz: must be a finite number, got 'fast'"
 
 
 def test_booleans_in_a_parameter_file_are_booleans_not_numbers(tmp_path):
     """(A session's own params.yaml says `lockstep: true`; `haven rerun` reads it back.)"""
-    from haven_scenarios.run.suite import load_suite_config
-
     p = tmp_path / "params.yaml"
-    p.write_text("/**:\n  ros__parameters:\n    lockstep: true\n")
-    load_suite_config(str(p))
+    p.write_text("/**:\n  ros__parameters:\n    lockstep: true\nviz:\n  ros__parameters:\n    turn_signals: false\n")
+    config = load_suite_config(str(p))
+    assert config.lockstep.lockstep is True and config.viz.toggles.turn_signals is False
+    p.write_text("/**:\n  ros__parameters:\n    lockstep: 1\n")
+    with pytest.raises(ParamsError, match=f"^{p}: sim_node: lockstep: must be true or false, got 1$"):
+        load_suite_config(str(p))
+
+
+@pytest.mark.parametrize(
+    ("text", "problem"),
+    [
+        ("sim_node:\n  ros__parameters:\n    physics_hz: fast\n", "sim_node: physics_hz: no such parameter (did you mean physics_rate_hz?)"),
+        ("planer:\n  ros__parameters:\n    check_rate_hz: 5.0\n", "planer: no such node (did you mean planner?)"),
+        ('"/**":\n  ros__parameters:\n    use_sim_time: .nan\n', "/**: use_sim_time: must be a finite number, got nan"),
+        ('"/**":\n  ros__parameters:\n    use_sim_tim: true\n', "/**: use_sim_tim: no such parameter (did you mean use_sim_time?)"),
+        ("controller:\n  ros__parameters:\n    use_sim_time: 1\n", "controller: use_sim_time: must be true or false, got 1"),
+        ("controller:\n  ros__parameters:\n    linear_speed_mps: -.inf\n", "controller: linear_speed_mps: must be a finite number, got -inf"),
+        ("controller:\n  ros__parameters:\n    linear_speed_mps: 1" + "0" * 400 + "\n", "controller: linear_speed_mps: must be a finite number"),
+        ("viz:\n  ros__parameters:\n    turn_signal: true\n", "viz: turn_signal: no such parameter (did you mean turn_signals?)"),
+    ],
+)
+def test_a_typo_or_a_non_finite_value_in_a_parameter_file_is_refused_naming_file_node_and_key(tmp_path, text, problem):
+    p = tmp_path / "params.yaml"
+    p.write_text(text)
+    with pytest.raises(ParamsError) as e:
+        load_suite_config(str(p))
+    assert str(e.value).startswith(f"{p}: {problem}") and "\n" not in str(e.value)
+
+
+def test_namespaced_and_wildcard_node_keys_name_the_node(tmp_path):
+    p = tmp_path / "params.yaml"
+    p.write_text("/robot1/controller:\n  ros__parameters:\n    linear_speed_mps: 0.3\n/**/planner:\n  ros__parameters:\n    check_rate_hz: 4.0\n")
+    config = load_suite_config(str(p))
+    assert config.controller.follower.linear_speed_mps == 0.3 and config.planner.check_rate_hz == 4.0

@@ -70,7 +70,7 @@ def test_params_files_wildcard_then_node(tmp_path):
     f.write_text("planner: [1, 2]\n")
     with pytest.raises(ParamsError, match="planner: needs a 'ros__parameters' mapping"):
         load_params_file(f)
-    with pytest.raises(ParamsError, match="no such parameter file"):
+    with pytest.raises(ParamsError, match="cannot read parameter file: No such file"):
         load_params_file(tmp_path / "missing.yaml")
 
 

@@ -19,6 +19,7 @@ from matplotlib.axes import Axes  # noqa: E402
 from matplotlib.patches import Circle, FancyArrow, Polygon, Rectangle  # noqa: E402
 from matplotlib.transforms import Affine2D  # noqa: E402
 
+from haven_sim.common import atomic  # noqa: E402
 from haven_sim.common.geometry import FloatArray  # noqa: E402
 from haven_sim.sim.world import World  # noqa: E402
 from haven_viz.cues import BATTERY_NS, THOUGHT_NS  # noqa: E402
@@ -161,6 +162,9 @@ def render_scene(
     fig.tight_layout()
     path = Path(out)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=150)
-    plt.close(fig)
+    try:
+        with atomic.replacing(path) as tmp:
+            fig.savefig(tmp, dpi=150, format="png")
+    finally:
+        plt.close(fig)
     return path

@@ -17,12 +17,11 @@ researcher's skip (an `intervention` event, action `skip_questionnaires`).
 from __future__ import annotations
 
 import json
-import os
-from collections.abc import Mapping, Sequence
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from haven_scenarios.record.session import EVENTS_FILE
+from haven_scenarios.record.session import EVENTS_FILE, write_json
 from haven_scenarios.study.questionnaires import ANSWERS_FILE, Questionnaire, answers_record, resolve
 from haven_scenarios.study.rules import EndReason
 from haven_sim.common.events import Event, EventKind, Source, event
@@ -30,16 +29,6 @@ from haven_sim.common.events import Event, EventKind, Source, event
 MAX_MESSAGE_BYTES = 64 * 1024  # a 100-item questionnaire's answers take about 3 KB
 SKIP = "skip_questionnaires"  # the console's intervention action: the researcher ends the wait
 RECORDED = (EventKind.TRIAL_START, EventKind.TRIAL_END, EventKind.QUESTIONNAIRE_ANSWERED, EventKind.INTERVENTION)  # what is read of it
-
-
-def write_atomically(path: Path, data: Mapping[str, Any]) -> None:
-    """`path` holds either its old content or all of `data`, whenever the process stops."""
-    tmp = path.with_name(f".{path.name}.tmp")
-    with tmp.open("w", encoding="utf-8") as f:
-        f.write(json.dumps(data, indent=2, sort_keys=True) + "\n")
-        f.flush()
-        os.fsync(f.fileno())
-    os.replace(tmp, path)
 
 
 def read_answers(folder: Path) -> dict[str, Any]:
@@ -99,7 +88,7 @@ class AnswerBook:
             raise ValueError(f"{human} has answered {name} already")
         record = answers_record(q, answers, answered_at)
         data = {**self.data, human: {**self.data.get(human, {}), name: record}}
-        write_atomically(self.path, data)
+        write_json(self.path, data)
         self.data = data
         scores, checked = record["scores"], record["answers"]
         return event(EventKind.QUESTIONNAIRE_ANSWERED, now, Source.WEB, by=human, questionnaire=name, scores=scores, answers=checked)
@@ -135,7 +124,7 @@ def wanted(folder: Path) -> bool:
 
 
 def over(folder: Path, humans: Sequence[str], names: Sequence[str]) -> str | None:
-    """"answered" once every answer is in the file and in the recording, "skipped" once the
+    """ "answered" once every answer is in the file and in the recording, "skipped" once the
     researcher's skip is recorded; None while the questionnaires go on."""
     events = [e for e in _recorded(folder) if e["type"] in (EventKind.QUESTIONNAIRE_ANSWERED, EventKind.INTERVENTION)]
     if any(e["type"] == EventKind.INTERVENTION and e.get("action") == SKIP for e in events):

@@ -7,12 +7,12 @@ still gets its row, with `valid` false and the reason; nothing aborts the report
 from __future__ import annotations
 
 import csv
-import os
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.session import analyse
+from haven_sim.common import atomic
 
 NOT_IN_CSV = ("condition_segments",)  # nested: in metrics.json only
 # The design columns come first, as a statistics package expects them (then the metrics).
@@ -43,12 +43,10 @@ def write_table(path: Path, rows: Sequence[dict[str, Any]], first: Sequence[str]
     for r in rows:
         keys.update(dict.fromkeys(r))
     path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(path.name + ".tmp")
-    with tmp.open("w", newline="", encoding="utf-8") as f:
+    with atomic.replacing(path) as tmp, tmp.open("w", newline="", encoding="utf-8") as f:
         writer = csv.DictWriter(f, fieldnames=list(keys))
         writer.writeheader()
         writer.writerows(rows)
-    os.replace(tmp, path)
 
 
 def report_csv(paths: Sequence[Path], out: Path) -> list[dict[str, Any]]:

@@ -25,6 +25,7 @@ import re
 import subprocess
 import sys
 import time
+from collections.abc import Mapping
 from datetime import datetime, timezone
 from importlib import metadata
 from pathlib import Path
@@ -39,6 +40,7 @@ from haven_scenarios.record.timeline import GRID_S, Recording, Timeline
 from haven_scenarios.run.trial import condition_name
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario
+from haven_sim.common import atomic
 from haven_sim.common.events import EventKind
 from haven_sim.sim.world import World, WorldError
 from haven_viz.cues import CUES, Toggles
@@ -109,8 +111,9 @@ def rmw() -> str:
     return os.environ.get("RMW_IMPLEMENTATION", "rmw_fastrtps_cpp")
 
 
-def write_json(path: Path, data: dict[str, Any]) -> None:
-    path.write_text(json.dumps(data, indent=2, sort_keys=True, default=str) + "\n")
+def write_json(path: Path, data: Mapping[str, Any]) -> None:
+    """Written whole or not at all (a full disk leaves the old file, never an empty one)."""
+    atomic.write_text(path, json.dumps(data, indent=2, sort_keys=True, default=str) + "\n")
 
 
 def trial_record(participant: str, toggles: Toggles, seed: int, scenario: Scenario) -> dict[str, Any]:
@@ -142,9 +145,9 @@ def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
     data = yaml.safe_load(Path(scenario.source).read_text()) if scenario.source else {"name": scenario.name}
     data["world"] = WORLD_FILE
     data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps} for h in scenario.humans]
-    (folder / WORLD_FILE).write_text(Path(scenario.world_path).read_text())
-    (folder / SCENARIO_FILE).write_text(yaml.safe_dump(data, sort_keys=False))
-    (folder / PARAMS_FILE).write_text(params_yaml)
+    atomic.write_text(folder / WORLD_FILE, Path(scenario.world_path).read_text(encoding="utf-8"))
+    atomic.write_text(folder / SCENARIO_FILE, yaml.safe_dump(data, sort_keys=False))
+    atomic.write_text(folder / PARAMS_FILE, params_yaml)
 
 
 def session_scenario(folder: Path) -> tuple[Scenario | None, str]:

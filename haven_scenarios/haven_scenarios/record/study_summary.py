@@ -16,6 +16,7 @@ from typing import Any
 
 from haven_scenarios.record.study_table import TrialResults
 from haven_scenarios.study.questionnaires import Questionnaire
+from haven_sim.common import atomic
 
 SUMMARY = ("scenario", "condition", "human", "measure", "n", "n_invalid", "mean", "sd", "median")
 # The main measures of the figure: (per person?, measure, axis label); questionnaire scores follow.
@@ -128,6 +129,9 @@ def draw(results: Sequence[TrialResults], conditions: Sequence[str], questionnai
         ax.axis("off")
     fig.suptitle(f"{title}\nper condition: box = quartiles and median, whiskers to 1.5 IQR, points = trials (valid; practice left out)", fontsize=10)
     fig.tight_layout(rect=(0, 0, 1, 1 - 0.5 / (3.3 * rows)))  # (the title's two lines: about half an inch)
-    fig.savefig(out, dpi=100)
-    plt.close(fig)
+    try:
+        with atomic.replacing(out) as tmp:
+            fig.savefig(tmp, dpi=100, format="png")
+    finally:
+        plt.close(fig)
     return out

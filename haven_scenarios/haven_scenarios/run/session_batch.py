@@ -14,6 +14,7 @@ from haven_scenarios.record.session import EVENTS_FILE, METRICS_FILE, SESSION_FI
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.trial import parse_condition, run_trial
 from haven_scenarios.study.scenario import Scenario
+from haven_sim.common import atomic
 
 NO_OUTCOME = "unknown: the batch trial ended before it wrote the outcome"
 
@@ -29,9 +30,7 @@ def run_batch_session(
     info: dict[str, Any] = {**trial_record(participant, toggles, seed, scenario), "clock": "batch", **extra, "outcome": NO_OUTCOME}
     write_json(folder / SESSION_FILE, info)
     result = run_trial(scenario, seed, toggles, suite)
-    with (folder / EVENTS_FILE).open("w", encoding="utf-8") as f:
-        for e in result.recording.events:
-            f.write(e.to_json() + "\n")
+    atomic.write_text(folder / EVENTS_FILE, "".join(e.to_json() + "\n" for e in result.recording.events))
     metrics = {**result.metrics, "participant": participant, "session": folder.name}
     write_json(folder / METRICS_FILE, metrics)
     info.update(end_reason=str(result.end_reason), duration_s=metrics["duration_s"], valid=metrics["valid"], outcome=str(result.end_reason))

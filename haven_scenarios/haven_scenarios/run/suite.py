@@ -11,9 +11,9 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.study.director import ScenarioNodeConfig
-from haven_sim.common.params import WILDCARD, ParamsError, build, flatten, load_params_file, node_values, render_params_file
+from haven_sim.common.params import WILDCARD, ParamsError, build, check_names, defaults, flatten, load_params_file, node_values, render_params_file
 from haven_sim.common.topics import WireParams
-from haven_sim.common.yaml_file import file_label, finite, read_yaml, short, shown_key
+from haven_sim.common.yaml_file import file_label, short
 from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.mux import MuxConfig
@@ -66,26 +66,44 @@ def render(config: SuiteConfig | None = None, header: str = HEADER) -> str:
     return render_params_file(NODES, SHARED, header, values)
 
 
-def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None) -> SuiteConfig:
-    """Every node's config from a loaded parameter file (None: the defaults)."""
+def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None, label: str = "") -> SuiteConfig:
+    """Every node's config from a loaded parameter file (None: the defaults); `label` names the
+    file in refusals."""
     p = params or {}
-    made = {f.name: build(cls, node_values(p, name), where=f"{name}: ") for (name, cls), f in zip(NODES, fields(SuiteConfig))}
-    return SuiteConfig(**made, lockstep=build(LockstepParams, node_values(p, "sim_node")))
+    where = f"{label}: " if label else ""
+    made = {f.name: build(cls, node_values(p, name), where=f"{where}{name}: ") for (name, cls), f in zip(NODES, fields(SuiteConfig))}
+    return SuiteConfig(**made, lockstep=build(LockstepParams, node_values(p, "sim_node"), where=f"{where}sim_node: "))
+
+
+# Parameters every node has beside its config: rclpy's own (a node declares them itself) and what
+# every component node declares (the velocity topics' type, the lockstep switch).
+ROS_BUILTIN = {"use_sim_time": False, "start_type_description_service": True}
+EVERY_NODE = (WireParams, LockstepParams)
+
+
+def known_parameters() -> dict[str, dict[str, Any]]:
+    """Node name -> the parameters it declares (with their defaults): what a parameter file may set."""
+    common = {**ROS_BUILTIN, **{k: v for cls in EVERY_NODE for k, v in defaults(cls).items()}}
+    return {name: {**common, **defaults(cls)} for name, cls in NODES}
 
 
 def load_suite_config(path: str | Path | None) -> SuiteConfig:
-    """Every node's config from a parameter file (None: the defaults). The file is first read as any
-    file a user hands us (`read_yaml`: a regular file of at most 1 MiB of UTF-8, bounded nesting and
-    aliases), so a hostile one is refused in one line before its ROS structure is read."""
-    if path is None:
-        return suite_config(None)
-    read_yaml(path, "parameter file", ParamsError)
-    params = load_params_file(path)
-    for node, values in params.items():  # an integer beyond a float's range would overflow where a float is expected
-        for name, v in values.items():
-            if isinstance(v, int) and not isinstance(v, bool) and finite(v) is None:
-                raise ParamsError(f"{file_label(path)}: {shown_key(node)}: {shown_key(name)}: must be a finite number, got {short(v)}")
-    return suite_config(params)
+    """Every node's config from a parameter file (None: the defaults), as strict as a study file:
+    the file is first read as any file a user hands us (`read_yaml`: a regular file of at most 1 MiB
+    of UTF-8, bounded nesting and aliases), then `checked_suite_config`."""
+    return suite_config(None) if path is None else checked_suite_config(load_params_file(path), file_label(path))
+
+
+def checked_suite_config(params: Mapping[str, Mapping[str, Any]], label: str) -> SuiteConfig:
+    """A node or a parameter that no node has, a number that is not finite, and a value of the
+    wrong type are refused in one line naming file (`label`), node and key: the nodes themselves
+    would silently ignore a misspelt name and run on the default."""
+    check_names(params, known_parameters(), label)
+    for node, values in params.items():  # (rclpy's own parameters are booleans; the configs check the rest)
+        for name in ROS_BUILTIN.keys() & values.keys():
+            if not isinstance(values[name], bool):
+                raise ParamsError(f"{label}: {node}: {name}: must be true or false, got {short(values[name])}")
+    return suite_config(params, label)
 
 
 if __name__ == "__main__":

@@ -30,6 +30,7 @@ from haven_sim.sim.simulator import SimulatorComponent
 from haven_viz.cues import CUES, CueParams, Toggles
 from haven_viz.viz import VizComponent
 
+SEED_MAX = 2**31 - 1  # a trial's seed: 0..this (a ROS integer parameter of the nodes, numpy's seed)
 GRACE_S = 60.0  # the loop stops this long after the scenario's timeout even if nothing ended it
 
 

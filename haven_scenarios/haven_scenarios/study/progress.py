@@ -30,6 +30,7 @@ from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.protocol import Study, StudyError
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.schedule import PlannedTrial, schedule
+from haven_sim.common import atomic
 
 STORED = "study.json"
 FINISHED = (EndReason.COMPLETED, EndReason.TIMEOUT, EndReason.CONTACT, EndReason.BATTERY_EMPTY, EndReason.STOPPED)
@@ -145,6 +146,6 @@ def questionnaire_specs(study: Study, root: Path) -> list[str]:
             continue
         path = root / "questionnaires" / f"{spec['name']}.yaml"
         path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(yaml.safe_dump(spec, sort_keys=False, allow_unicode=True), encoding="utf-8")
+        atomic.write_text(path, yaml.safe_dump(spec, sort_keys=False, allow_unicode=True))
         out.append(str(path.resolve()))
     return out

@@ -34,7 +34,7 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.session import check_name
-from haven_scenarios.run.trial import parse_condition
+from haven_scenarios.run.trial import SEED_MAX, parse_condition
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_sim.common.yaml_file import file_label, read_yaml, short, shown_key
@@ -266,7 +266,7 @@ class _StudyParser:
         policy = value.get("policy", "per_participant")
         if policy not in SEED_POLICIES:
             raise self.fail("seeds.policy", f"must be one of {', '.join(SEED_POLICIES)}, got {short(policy)}")
-        return policy, self.whole(value.get("base", 0), "seeds.base", 0, 2**31 - 1)
+        return policy, self.whole(value.get("base", 0), "seeds.base", 0, SEED_MAX)
 
     def questionnaires(self, value: Any) -> tuple[Any, ...]:
         if value is None:

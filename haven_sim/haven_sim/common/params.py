@@ -11,17 +11,19 @@ generated from them (`render_params_file`), so a default is written in exactly o
 from __future__ import annotations
 
 import dataclasses
+import difflib
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import Any, TypeVar
 
 import yaml
 
+from haven_sim.common.yaml_file import file_label, read_yaml
+
 T = TypeVar("T")
 ParamValue = bool | int | float | str | list[str]
 WILDCARD = "/**"  # a ROS parameter-file section that applies to every node
-MAX_PARAMS_FILE_BYTES = 1_000_000
 
 
 class ParamsError(ValueError):
@@ -129,29 +131,78 @@ def build(cls: type[T], values: Mapping[str, Any], where: str = "", prefix: str 
 
 
 def load_params_file(path: str | Path) -> dict[str, dict[str, Any]]:
-    """A ROS 2 parameter file as {node name: {parameter: value}} (without the ros__parameters level)."""
-    p = Path(path)
-    try:
-        if not p.is_file():
-            raise ParamsError(f"{p}: no such parameter file")
-        if p.stat().st_size > MAX_PARAMS_FILE_BYTES:
-            raise ParamsError(f"{p}: larger than {MAX_PARAMS_FILE_BYTES} bytes")
-        data = yaml.safe_load(p.read_text(encoding="utf-8"))
-    except (OSError, UnicodeDecodeError) as e:
-        raise ParamsError(f"{p}: cannot read parameter file: {e}") from None
-    except yaml.YAMLError as e:
-        raise ParamsError(f"{p}: YAML syntax error: {getattr(e, 'problem', None) or 'invalid YAML'}") from None
+    """A ROS 2 parameter file as {node name: {parameter: value}} (without the ros__parameters level),
+    read as any file a user hands us (`read_yaml`: a regular file of at most 1 MiB of UTF-8,
+    bounded nesting and aliases, no key given twice), so a hostile one is refused in one line."""
+    return params_of(read_yaml(path, "parameter file", ParamsError), file_label(path))
+
+
+def node_key(key: Any) -> str:
+    """A parameter file's node key as the node's name: "/sim_node", "/**/sim_node" and a namespaced
+    "/robot1/sim_node" all name sim_node; "/**" (or "**") is the section for every node."""
+    text = str(key)
+    if text.strip("/") == "**":
+        return WILDCARD
+    return text.rstrip("/").rsplit("/", 1)[-1]
+
+
+def params_of(data: Any, label: str) -> dict[str, dict[str, Any]]:
+    """A parameter file's document as {node name: {parameter: value}}; ParamsError (naming the
+    file, `label`) where it is not shaped like one."""
     if data is None:
         return {}
     if not isinstance(data, dict):
-        raise ParamsError(f"{p}: a parameter file maps node names to 'ros__parameters'")
+        raise ParamsError(f"{label}: a parameter file maps node names to 'ros__parameters'")
     out: dict[str, dict[str, Any]] = {}
     for node, section in data.items():
         params = section.get("ros__parameters") if isinstance(section, dict) else None
         if not isinstance(params, dict):
-            raise ParamsError(f"{p}: {node}: needs a 'ros__parameters' mapping")
-        out[str(node).lstrip("/") if node != WILDCARD else WILDCARD] = params
+            raise ParamsError(f"{label}: {node}: needs a 'ros__parameters' mapping")
+        out.setdefault(node_key(node), {}).update(params)
     return out
+
+
+def check_names(params: Mapping[str, Mapping[str, Any]], known: Mapping[str, Mapping[str, Any]], label: str) -> None:
+    """Refuse what no node would read: a node section of no known node, a parameter a node does not
+    have (both with the nearest known name), and any number that is not finite (NaN, inf, or an
+    integer beyond a float's range), each in one line naming file, node and key. `known` maps each
+    node name to its parameters' defaults (the wildcard section may hold any node's parameter);
+    a value of the wrong type is left to `build`, which names the node and key."""
+    every = {name: default for names in known.values() for name, default in names.items()}
+    for node, values in params.items():
+        if node != WILDCARD and node not in known:
+            raise ParamsError(f"{label}: {shown(node)}: no such node{_nearest(node, known)} (nodes: {', '.join(known)})")
+        names = every if node == WILDCARD else known[node]
+        for name, value in values.items():
+            if not isinstance(name, str) or name not in names:
+                raise ParamsError(f"{label}: {shown(node)}: {shown(name)}: no such parameter{_nearest(name, names)}")
+            bad = _not_finite(value)
+            if bad is not None:
+                raise ParamsError(f"{label}: {shown(node)}: {name}: must be a finite number, got {bad}")
+
+
+def shown(key: Any) -> str:
+    text = str(key)
+    return text if text.isprintable() and 0 < len(text) <= 40 else repr(text)[:40]
+
+
+def _nearest(name: Any, names: Iterable[str]) -> str:
+    close = difflib.get_close_matches(str(name), list(names), n=1, cutoff=0.6)
+    return f" (did you mean {close[0]}?)" if close else ""
+
+
+def _not_finite(value: Any) -> str | None:
+    """How a value shows that is a number but not a finite one (in a list, too), else None."""
+    for v in value if isinstance(value, list) else [value]:
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            continue
+        try:
+            finite = math.isfinite(float(v))
+        except OverflowError:
+            finite = False
+        if not finite:
+            return str(v) if isinstance(v, float) else "an integer beyond a float's range"
+    return None
 
 
 def node_values(params_file: Mapping[str, Mapping[str, Any]], node: str) -> dict[str, Any]:

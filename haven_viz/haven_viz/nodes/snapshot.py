@@ -1,10 +1,14 @@
 """Saves what the viewers show right now as a top-down PNG: listens to /haven/world_markers and
-/haven/ar_markers until the viz node's next full refresh, then renders them with the world's walls."""
+/haven/ar_markers until the viz node's next full refresh, then renders them with the world's walls.
+With no suite there (nothing on /haven/world_markers within `timeout_s` of wall time) it says so
+and exits with code 1."""
 
 from __future__ import annotations
 
+import os
 import sys
 
+from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from visualization_msgs.msg import Marker, MarkerArray
 
@@ -28,7 +32,19 @@ class Snapshot(Node):
         self.start: float | None = None
         self.create_subscription(MarkerArray, "haven/world_markers", self._on_world, qos.LATCHED)
         self.create_subscription(MarkerArray, "haven/ar_markers", self._on_ar, qos.RELIABLE)
+        self.timeout_s = float(self.declare_parameter("timeout_s", 10.0).value)
         self.create_timer(0.1, self._tick)
+        self.create_timer(self.timeout_s, self._give_up, clock=Clock(clock_type=ClockType.STEADY_TIME))
+
+    def _give_up(self) -> None:
+        if not self.have_world:
+            print(
+                f"snapshot: error: no HAVEN suite here: nothing on /haven/world_markers within {self.timeout_s:g} s "
+                f"(ROS_DOMAIN_ID {os.environ.get('ROS_DOMAIN_ID', '0')}; is `haven sim` or `haven run` running with the same --domain-id?)",
+                file=sys.stderr,
+                flush=True,
+            )
+            raise SystemExit(1)
 
     def _apply(self, msg: MarkerArray) -> None:
         for m in msg.markers:

@@ -25,6 +25,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     snap = sub.add_parser("snapshot", help="save what a running suite's viewers show as a top-down PNG")
     snap.add_argument("output", nargs="?", default="haven_snapshot.png")
     snap.add_argument("--world", default="small_test", help="the world the suite runs (for the walls)")
+    snap.add_argument("--timeout", type=positive, default=10.0, help="give up when no suite shows anything within this many seconds (default 10)")
     snap.set_defaults(func=snapshot_cmd)
     teleop = sub.add_parser("teleop", help="drive a human avatar of a running trial from this terminal")
     teleop.add_argument("human", nargs="?", default="h1")
@@ -65,7 +66,9 @@ def snapshot_cmd(args: argparse.Namespace) -> int:
         load_world(world)
     except WorldError as e:
         return fail(str(e))
-    return run_client(args, "snapshot", "haven_viz.nodes.snapshot", {"world": world, "output": str(Path(args.output).resolve())})
+    return run_client(
+        args, "snapshot", "haven_viz.nodes.snapshot", {"world": world, "output": str(Path(args.output).resolve()), "timeout_s": args.timeout}
+    )
 
 
 def _call(argv: list[str], args: argparse.Namespace) -> int:

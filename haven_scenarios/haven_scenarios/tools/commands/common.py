@@ -9,6 +9,7 @@ import sys
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 
+from haven_scenarios.run.trial import SEED_MAX
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 
 SUITE = ("sim", "mux", "planner", "controller", "viz")
@@ -41,16 +42,22 @@ def positive(text: str) -> float:
     return value
 
 
-def bounded_int(low: int, high: int | None = None) -> Callable[[str], int]:
-    """An argparse type: an integer in low..high."""
+INT64_MAX = 2**63 - 1  # a ROS integer parameter's range: every integer option may become one
+
+
+def bounded_int(low: int, high: int = INT64_MAX) -> Callable[[str], int]:
+    """An argparse type: an integer in low..high (checked before anything starts: a node would
+    refuse it only once the suite is up)."""
 
     def parse(text: str) -> int:
         try:
-            value = int(text)
+            value = int(text) if len(text) <= 40 else None
         except ValueError:
-            raise argparse.ArgumentTypeError(f"expected an integer, got {text!r}") from None
-        if value < low or (high is not None and value > high):
-            raise argparse.ArgumentTypeError(f"must be {'at least ' + str(low) if high is None else f'{low}..{high}'}, got {value}")
+            value = None
+        if value is None:
+            raise argparse.ArgumentTypeError(f"expected an integer, got {text[:40]!r}")
+        if value < low or value > high:
+            raise argparse.ArgumentTypeError(f"must be {'at least ' + str(low) if high == INT64_MAX else f'{low}..{high}'}, got {value}")
         return value
 
     parse.__name__ = "integer"  # (argparse names the type in its messages)
@@ -65,7 +72,7 @@ def existing_file(text: str) -> str:
 
 
 PORT = bounded_int(0, 65535)
-SEED = bounded_int(0)  # (numpy takes no negative seed)
+SEED = bounded_int(0, SEED_MAX)
 
 
 def port_free(host: str, port: int) -> str | None:

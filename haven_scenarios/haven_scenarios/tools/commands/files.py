@@ -1,4 +1,4 @@
-"""`haven validate FILE...`: check world, scenario and study files without starting anything."""
+"""`haven validate FILE...`: check world, scenario, study and parameter files without starting anything."""
 
 from __future__ import annotations
 
@@ -6,16 +6,20 @@ import argparse
 from pathlib import Path
 
 from haven_scenarios.record.session import check_name
+from haven_scenarios.run.suite import checked_suite_config
 from haven_scenarios.study.protocol import StudyError, parse_study
 from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.tools.commands.common import fail
+from haven_sim.common.params import ParamsError, params_of
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import parse_world
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    validate = sub.add_parser("validate", help="check world, scenario and study files (which is which: by their keys) without starting anything")
+    validate = sub.add_parser(
+        "validate", help="check world, scenario, study and parameter files (which is which: by their keys) without starting anything"
+    )
     validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
     validate.set_defaults(func=validate_cmd)
 
@@ -26,15 +30,16 @@ def validate_cmd(args: argparse.Namespace) -> int:
     for path in args.files:
         try:
             print(f"ok: {file_label(path)} ({describe(path)})", flush=True)
-        except (YamlFileError, WorldError, ScenarioError, StudyError) as e:
+        except (YamlFileError, WorldError, ScenarioError, StudyError, ParamsError) as e:
             fail(str(e))
             failed += 1
     return 2 if failed else 0
 
 
 def describe(path: Path) -> str:
-    """What a valid file is, "world NAME", "scenario NAME" or "study NAME": a scenario has `kind` or
-    `world`, a world `walls`, a study `scenarios` and `conditions`."""
+    """What a valid file is, "world NAME", "scenario NAME", "study NAME" or "parameter file for NODES":
+    a scenario has `kind` or `world`, a world `walls`, a study `scenarios` and `conditions`, a
+    parameter file `ros__parameters` under each node."""
     data = read_yaml(path, "file")
     if isinstance(data, dict) and ("scenarios" in data or "conditions" in data):
         return f"study {parse_study(data, str(path)).name}"
@@ -47,5 +52,12 @@ def describe(path: Path) -> str:
         return f"scenario {name}"
     if isinstance(data, dict) and "walls" in data:
         return f"world {parse_world(data, str(path)).name}"
-    kinds = "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key) nor a study (no 'scenarios' key)"
+    if isinstance(data, dict) and data and all(isinstance(v, dict) and "ros__parameters" in v for v in data.values()):
+        params = params_of(data, file_label(path))
+        checked_suite_config(params, file_label(path))
+        return f"parameter file for {', '.join(params)}"
+    kinds = (
+        "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key), a study (no 'scenarios' key) "
+        "nor a parameter file (no 'ros__parameters')"
+    )
     raise YamlFileError(f"{file_label(path)}: {kinds}")

@@ -6,6 +6,8 @@ process. The child runs in this process group, so a terminal's Ctrl-C reaches it
 its trial cleanly (its session folder says "interrupted"); a stop signal sent to this process
 alone is passed on; and the child dies with this process however it ends (die_with_parent).
 A trial that does not finish stops the study: the same command later runs it again.
+One runner works on a participant at a time (an OS lock on their folder, which a crash releases):
+a second `haven study run` for them says who holds it and exits.
 """
 
 from __future__ import annotations
@@ -25,9 +27,11 @@ from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.commands.common import fail
 from haven_scenarios.tools.commands.study import study_dir
+from haven_scenarios.tools.locks import FileLock, Locked
 from haven_sim.runtime.process import STOP_SIGNALS, die_with_parent
 
 INTERRUPTED = 130
+RUNNER_LOCK = ".runner.lock"  # in the participant's folder, held while a `haven study run` works on it
 
 
 class Stopped(Exception):
@@ -138,6 +142,18 @@ def run_cmd(args: argparse.Namespace) -> int:
         return fail(str(e))
     except OSError as e:
         return fail(f"cannot write the study's folder: {e.strerror or e}")
+    try:  # one runner per participant: a second one would run the same trials again
+        lock = FileLock(root / args.participant / RUNNER_LOCK).acquire()
+    except Locked as e:
+        who = e.holder.describe()
+        return fail(f"participant {args.participant} of study {study.name} is already being run ({who}); wait for it to end or stop it")
+    except OSError as e:
+        return fail(f"cannot lock {root / args.participant}: {e.strerror or e}")
+    with lock:
+        return _run_trials(args, study, root, trials, questionnaires)
+
+
+def _run_trials(args: argparse.Namespace, study: Study, root: Path, trials: list[PlannedTrial], questionnaires: list[str]) -> int:
     todo = [t for t in progress(root, trials) if t.status != "done"]
     done = len(trials) - len(todo)
     print(

@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, check_name, new_session_dir, provenance, write_json
+from haven_scenarios.run.suite import load_suite_config
 from haven_scenarios.tools.commands.common import (
     add_ros_options,
     add_suite_options,
@@ -19,6 +20,8 @@ from haven_scenarios.tools.commands.common import (
 )
 from haven_scenarios.tools.commands.recordings import repair_bag
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
+from haven_sim.common import atomic
+from haven_sim.common.params import ParamsError
 from haven_sim.sim.world import WorldError, resolve_world_path
 from haven_sim.sim.world_file import load_world
 
@@ -48,7 +51,7 @@ def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
     record of how it was run."""
     name = check_name(load_world(world).name, f"{world}: name")
     folder = new_session_dir(root, "sim", name)
-    (folder / WORLD_FILE).write_text(Path(world).read_text())
+    atomic.write_text(folder / WORLD_FILE, Path(world).read_text(encoding="utf-8"))
     info = {
         "kind": "ad hoc (haven sim --record)",
         "world": name,
@@ -62,10 +65,11 @@ def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
 
 
 def run_suite(args: argparse.Namespace) -> int:
-    try:
+    try:  # fail before starting anything
         world = str(resolve_world_path(args.world))
-        load_world(world)  # fail before starting anything
-    except WorldError as e:
+        load_world(world)
+        load_suite_config(args.params_file)
+    except (WorldError, ParamsError) as e:
         return fail(str(e))
     specs = suite_specs(
         {"sim": {"world": world, "real_time_factor": args.rtf}, "planner": {"world": world}, "viz": {"world": world}}, params_file(args), args.without

@@ -30,7 +30,7 @@ from haven_scenarios.record.session import (
     write_json,
 )
 from haven_scenarios.run.suite import SuiteConfig, load_suite_config, render
-from haven_scenarios.run.trial import condition_name, parse_condition, scenario_suite
+from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition, scenario_suite
 from haven_scenarios.study.director import any_reader
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
@@ -356,7 +356,7 @@ def run_cmd(args: argparse.Namespace) -> int:
         busy = port_free(args.host, args.port)
         if busy:
             return fail(busy)
-    participant = args.participant or "-".join(teleop) or "sim"
+    participant = args.participant if args.participant is not None else "-".join(teleop) or "sim"  # ("" is refused below)
     try:  # before any path is built from them
         check_name(participant, "--participant")
         check_name(scenario.name, f"{scenario.source or args.scenario}: name")
@@ -378,7 +378,9 @@ def rerun_cmd(args: argparse.Namespace) -> int:
     try:
         base = load_suite_config(folder / PARAMS_FILE if (folder / PARAMS_FILE).exists() else None)
         toggles = Toggles(**{c: bool(v) for c, v in dict(info.get("cues", {})).items() if c in CUES})
-        seed = int(info.get("seed", 0))
+        seed = info.get("seed", 0)
+        if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed <= SEED_MAX:
+            raise ValueError(f"seed: must be an integer 0..{SEED_MAX}, got {str(seed)[:40]}")
         rtf = args.rtf if args.rtf is not None else (float(info.get("real_time_factor") or 1.0) if free else None)
     except (TypeError, ValueError) as e:
         return fail(f"{folder / SESSION_FILE}: {e}")

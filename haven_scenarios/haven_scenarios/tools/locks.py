@@ -1,0 +1,108 @@
+"""Exclusive OS file locks that say who holds them: one runner per study participant, one HAVEN
+suite per ROS domain on this machine.
+
+A lock is `flock(2)` on a small file: the kernel drops it when the holder's process ends in any way
+(a crash, SIGKILL), so a lock is never left stale. The holder writes who it is into the file (pid,
+command, when), and a refused taker reads that back to say who is in the way. Lock files are
+only ever opened, never deleted (deleting one while another process waits on it would let two
+holders in at once).
+"""
+
+from __future__ import annotations
+
+import errno
+import fcntl
+import json
+import os
+import sys
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from types import TracebackType
+
+
+@dataclass(frozen=True)
+class Holder:
+    """Who holds a lock, as its holder wrote it (fields may be missing in a file from elsewhere)."""
+
+    pid: int | None
+    command: str
+    since: str
+
+    def describe(self) -> str:
+        parts = [f"pid {self.pid}" if self.pid else "", self.command, f"since {self.since}" if self.since else ""]
+        return ", ".join(p for p in parts if p) or "another process"
+
+
+class Locked(Exception):
+    """The lock is held by another process (`holder` says who, as far as it is known)."""
+
+    def __init__(self, path: Path, holder: Holder) -> None:
+        super().__init__(f"{path}: held by {holder.describe()}")
+        self.path, self.holder = path, holder
+
+
+class FileLock:
+    """`with FileLock(path, what)`: held until the block ends or the process does; `Locked` when
+    another process holds it. OSError when the file cannot be opened at all."""
+
+    def __init__(self, path: Path, what: str = "") -> None:
+        self.path, self.what = Path(path), what or " ".join(Path(a).name if i == 0 else a for i, a in enumerate(sys.argv))
+        self.fd: int | None = None
+
+    def acquire(self) -> FileLock:
+        fd = _open(self.path)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError as e:
+            os.close(fd)
+            if e.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):
+                raise Locked(self.path, read_holder(self.path)) from None
+            raise
+        self.fd = fd
+        info = {"pid": os.getpid(), "command": self.what[:200], "since": time.strftime("%Y-%m-%d %H:%M:%S")}
+        try:  # (a lock file another user made may not be writable: the lock holds all the same)
+            os.ftruncate(fd, 0)
+            os.pwrite(fd, (json.dumps(info) + "\n").encode(), 0)
+        except OSError:
+            pass
+        return self
+
+    def release(self) -> None:
+        if self.fd is not None:
+            os.close(self.fd)  # (closing the descriptor drops the flock)
+            self.fd = None
+
+    def __enter__(self) -> FileLock:
+        return self if self.fd is not None else self.acquire()
+
+    def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
+        self.release()
+
+
+def _open(path: Path) -> int:
+    """The lock file's descriptor, made if missing. Opened for reading and writing where allowed,
+    else read-only (flock works on either). Not inherited by children (os.open's default)."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    for flags in (os.O_RDWR, os.O_RDONLY):
+        try:
+            return os.open(path, flags)
+        except FileNotFoundError:
+            try:
+                return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o666)
+            except FileExistsError:
+                continue  # made by another process just now: open it
+        except PermissionError:
+            continue
+    return os.open(path, os.O_RDONLY)
+
+
+def read_holder(path: Path) -> Holder:
+    try:
+        d = json.loads(path.read_text(encoding="utf-8", errors="replace")[:1000])
+    except (OSError, ValueError):
+        d = None
+    if not isinstance(d, dict):
+        return Holder(None, "", "")
+    pid = d.get("pid")
+    return Holder(pid if isinstance(pid, int) and not isinstance(pid, bool) else None, str(d.get("command", ""))[:200], str(d.get("since", ""))[:40])

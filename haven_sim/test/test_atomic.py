@@ -1,0 +1,39 @@
+"""Session files are written whole or not at all: a write that fails (a full disk; here a file size
+limit, which fails the same way with EFBIG) leaves the old file, never an empty or half one."""
+
+import json
+import subprocess
+import sys
+
+from haven_sim.common import atomic
+
+WRITE_UNDER_A_SIZE_LIMIT = """
+import json, resource, sys
+from pathlib import Path
+from haven_sim.common import atomic
+resource.setrlimit(resource.RLIMIT_FSIZE, (200, 200))  # (Python ignores SIGXFSZ: the write fails with EFBIG)
+try:
+    atomic.write_text(Path(sys.argv[1]), json.dumps({"big": "x" * 5000}))
+except OSError as e:
+    print(e.errno)
+"""
+
+
+def test_a_write_that_fails_leaves_the_old_file_and_no_temporary_one(tmp_path):
+    target = tmp_path / "metrics.json"
+    atomic.write_text(target, json.dumps({"old": 1}))
+    r = subprocess.run([sys.executable, "-c", WRITE_UNDER_A_SIZE_LIMIT, str(target)], capture_output=True, text=True, timeout=60)
+    assert r.stdout.strip() == "27", r.stderr  # EFBIG
+    assert json.loads(target.read_text()) == {"old": 1}
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["metrics.json"]
+    fresh = tmp_path / "new.json"
+    r = subprocess.run([sys.executable, "-c", WRITE_UNDER_A_SIZE_LIMIT, str(fresh)], capture_output=True, text=True, timeout=60)
+    assert r.stdout.strip() == "27" and not fresh.exists()  # no 0-byte file
+
+
+def test_the_file_appears_only_when_the_block_ends(tmp_path):
+    target = tmp_path / "a.txt"
+    with atomic.replacing(target) as tmp:
+        tmp.write_bytes(b"abc")
+        assert not target.exists()
+    assert target.read_bytes() == b"abc" and not tmp.exists()
