@@ -10,6 +10,7 @@ from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 
 from haven_scenarios.run.trial import SEED_MAX
+from haven_scenarios.tools.domains import Claim, claim_domain
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 
 SUITE = ("sim", "mux", "planner", "controller", "viz")
@@ -20,6 +21,7 @@ NODE_MODULES = {
     "controller": "haven_sim.nodes.controller_node",
     "viz": "haven_viz.nodes.viz_node",
 }
+NODE_NAMES = {"sim": "sim_node", "mux": "velocity_mux", "planner": "planner", "controller": "controller", "viz": "viz"}  # ROS node names
 
 
 MAX_DOMAIN_ID = 232  # DDS's port arithmetic ends here (0..101 also keeps clear of Linux's ephemeral ports)
@@ -87,8 +89,11 @@ def port_free(host: str, port: int) -> str | None:
     return None
 
 
-def add_ros_options(p: argparse.ArgumentParser) -> None:
-    p.add_argument("--domain-id", type=bounded_int(0, MAX_DOMAIN_ID), default=None, help="ROS_DOMAIN_ID for the nodes (default: inherited)")
+def add_ros_options(p: argparse.ArgumentParser, suite: bool = False) -> None:
+    """`suite`: the command starts a suite, which takes a domain of its own (tools/domains.py)."""
+    own = "the inherited one if no other HAVEN suite runs there, else a free one (said); given: refused if another suite holds it"
+    help = f"ROS_DOMAIN_ID for the nodes (default: {own if suite else 'inherited'})"
+    p.add_argument("--domain-id", type=bounded_int(0, MAX_DOMAIN_ID), default=None, help=help)
     p.add_argument("--network", action="store_true", help="allow DDS discovery beyond localhost")
 
 
@@ -112,6 +117,20 @@ def fail(message: str) -> int:
 
 def environment(args: argparse.Namespace) -> dict[str, str]:
     return ros_environment(network=args.network, domain_id=args.domain_id)
+
+
+def claim(args: argparse.Namespace, ignore: Sequence[str] = ()) -> Claim:
+    """The ROS domain this suite runs on (`tools/domains.py`), set as `args.domain_id` for its
+    nodes; DomainBusy (one line) when `--domain-id` names a domain another suite holds. Said when
+    the inherited domain was taken and the suite moved. `ignore`: our nodes left out (`--without`),
+    whose names the user's own nodes may have."""
+    got = claim_domain(args.domain_id, ros_environment(network=args.network), [NODE_NAMES.get(n, n) for n in ignore])
+    args.domain_id = got.domain_id
+    if got.moved_from is not None:
+        home, why = got.moved_from
+        here = got.domain_id
+        print(f"haven: ROS domain {home}: {why}; this suite runs on ROS domain {here} (ROS_DOMAIN_ID={here} to join it)", flush=True)
+    return got
 
 
 def params_file(args: argparse.Namespace) -> str | None:

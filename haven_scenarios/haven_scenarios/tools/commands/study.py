@@ -35,7 +35,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("--no-pause", action="store_true", help="with a person: do not wait for Enter between trials")
     run.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every trial")
     run.add_argument("--replan", action="store_true", help="accept a study file changed since the first run (its new schedule is stored)")
-    add_ros_options(run)
+    add_ros_options(run, suite=True)
     status = steps.add_parser("status", help="per participant: trials done, failed, and what comes next")
     status.add_argument("study", help=spec)
     report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv and summary.png")

@@ -12,6 +12,7 @@ from haven_scenarios.tools.commands.common import (
     add_ros_options,
     add_suite_options,
     bounded_int,
+    claim,
     environment,
     fail,
     params_file,
@@ -19,6 +20,7 @@ from haven_scenarios.tools.commands.common import (
     suite_specs,
 )
 from haven_scenarios.tools.commands.recordings import repair_bag
+from haven_scenarios.tools.domains import DomainBusy
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
 from haven_sim.common import atomic
 from haven_sim.common.params import ParamsError
@@ -43,7 +45,7 @@ def _suite_arguments(p: argparse.ArgumentParser, rtf: float) -> None:
     p.add_argument("--world", default="small_test", help="packaged world name or world YAML path (default: small_test)")
     p.add_argument("--rtf", type=positive, default=rtf, help=f"real-time factor of the simulation (default: {rtf:g})")
     add_suite_options(p)
-    add_ros_options(p)
+    add_ros_options(p, suite=True)
 
 
 def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
@@ -58,6 +60,7 @@ def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
         "world_file": WORLD_FILE,
         "real_time_factor": args.rtf,
         "without": list(args.without),
+        "ros_domain_id": args.domain_id,
         **provenance(),
     }
     write_json(folder / SESSION_FILE, info)
@@ -71,6 +74,15 @@ def run_suite(args: argparse.Namespace) -> int:
         load_suite_config(args.params_file)
     except (WorldError, ParamsError) as e:
         return fail(str(e))
+    try:
+        domain = claim(args, args.without)
+    except DomainBusy as e:
+        return fail(str(e))
+    with domain.lock:
+        return _run_claimed(args, world)
+
+
+def _run_claimed(args: argparse.Namespace, world: str) -> int:
     specs = suite_specs(
         {"sim": {"world": world, "real_time_factor": args.rtf}, "planner": {"world": world}, "viz": {"world": world}}, params_file(args), args.without
     )
@@ -90,7 +102,8 @@ def run_suite(args: argparse.Namespace) -> int:
         sup.install_signal_handlers()
         for spec in specs:
             sup.start(spec)
-        print(f"haven: started {', '.join(f'{n} (pid {p})' for n, p in sup.pids().items())}; Ctrl-C stops all", flush=True)
+        started = ", ".join(f"{n} (pid {p})" for n, p in sup.pids().items())
+        print(f"haven: started {started} on ROS domain {args.domain_id}; Ctrl-C stops all", flush=True)
         exited = sup.wait(timeout_s=timeout, until_exit_of=until)
         codes = sup.stop(first=tuple(n for n in sup.pids() if n != "recorder"))  # the recorder last: it gets everything
     if folder is not None:

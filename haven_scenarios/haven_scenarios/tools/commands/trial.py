@@ -37,8 +37,20 @@ from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenari
 from haven_scenarios.tools.commands import after_trial
 from haven_scenarios.tools.commands.after_trial import Asked
 from haven_scenarios.tools.commands.batch_report import CONDITION_HELP
-from haven_scenarios.tools.commands.common import PORT, SEED, add_ros_options, add_suite_options, environment, fail, port_free, positive, suite_specs
+from haven_scenarios.tools.commands.common import (
+    PORT,
+    SEED,
+    add_ros_options,
+    add_suite_options,
+    claim,
+    environment,
+    fail,
+    port_free,
+    positive,
+    suite_specs,
+)
 from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
+from haven_scenarios.tools.domains import DomainBusy
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
 from haven_sim.common import topics
@@ -84,13 +96,13 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     web.add_argument("--researcher-start", action="store_true", help="the trial starts on the console's Start, not when the participants are ready")
     web.add_argument("--no-map-inset", action="store_true", help="no map inset on the participants' pages")
     after_trial.add_option(web)
-    add_ros_options(run)
+    add_ros_options(run, suite=True)
     run.set_defaults(func=run_cmd)
     rerun = sub.add_parser("rerun", help="run a recorded session again from its folder (same scenario, world, parameters, seed, condition)")
     rerun.add_argument("session", type=Path, help="a session folder")
     rerun.add_argument("--sessions", default=None, help="folder for the new session (default: beside the old one)")
     rerun.add_argument("--rtf", type=positive, default=None, help="real-time factor (default: as recorded)")
-    add_ros_options(rerun)
+    add_ros_options(rerun, suite=True)
     rerun.set_defaults(func=rerun_cmd)
 
 
@@ -277,6 +289,15 @@ def _finish(folder: Path, scenario: Scenario, info: dict[str, Any], wall: float)
 def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> int:
     """Run and record one trial into a new session folder under `sessions`; the exit code.
     session.json gets the run's outcome however it ends."""
+    try:
+        domain = claim(args, plan.without)
+    except DomainBusy as e:
+        return fail(str(e))
+    with domain.lock:
+        return _run_claimed(args, replace(plan, extra={**plan.extra, "ros_domain_id": domain.domain_id}), sessions)
+
+
+def _run_claimed(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> int:
     scenario, lockstep, rtf = plan.scenario, plan.lockstep, plan.real_time_factor
     try:
         folder, info = _new_session(plan, sessions)
@@ -285,7 +306,7 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
     pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf < UNCAPPED_RTF else "") if lockstep else f"{rtf:g}x real time"
     print(
         f"haven: {scenario.name} trial, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
-        f"seed {plan.seed}, {pace} -> {folder}",
+        f"seed {plan.seed}, {pace}, ROS domain {args.domain_id} -> {folder}",
         flush=True,
     )
     started = time.monotonic()
