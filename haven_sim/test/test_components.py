@@ -72,6 +72,25 @@ def test_planner_refuses_bad_goals_and_keeps_a_goal_until_it_has_map_and_pose():
     assert by_topic(out, topics.EVENTS)[0].kind is EventKind.PLAN_MADE and planner.pending is None
 
 
+def test_a_goal_storm_costs_one_plan_per_interval_the_newest_wins_and_is_told_once():
+    planner = PlannerComponent()
+    planner.on_map(rasterise(box_world(10.0)), 0.0)
+    planner.on_odom(RobotState(Pose2D(5, 5, 0)), 0.0)
+    plans, t = 0, 1.0
+    for k in range(1000):  # 1 kHz of sim time for one second
+        t = 1.0 + k * 0.001
+        out = planner.on_goal(Goal(Pose2D(2.0 + (k % 5), 3.0, 0)), t)
+        out += planner.on_odom(RobotState(Pose2D(5, 5, 0)), t)
+        plans += len(by_topic(out, topics.PLAN))
+    assert 9 <= plans <= 11  # one each goal_interval_s (0.1 s)
+    assert len(planner.warnings) == 1 and "goal storm" in planner.warnings[0]
+    last = planner.tick(t + 0.2)  # the newest goal, held, is planned at the next check
+    assert by_topic(last, topics.EVENTS)[0]["goal"] == [2.0 + (999 % 5), 3.0]
+    (storm,) = [e for e in by_topic(planner.tick(t + 1.5), topics.EVENTS) if e.kind is EventKind.GOAL_STORM]
+    assert storm["goals"] == 1000 and storm["superseded"] >= 980 and storm["seconds"] == pytest.approx(0.999)
+    assert planner.on_goal(Goal(Pose2D(3, 3, 0)), t + 3.0) != []  # after the storm, a goal is planned at once
+
+
 @pytest.mark.parametrize("own", [True, False])
 def test_map_to_odom_can_be_left_to_a_localization_node(own):
     sim = SimulatorComponent(box_world(10.0), SimulatorConfig(publish_map_to_odom=own))

@@ -87,9 +87,9 @@ def test_lockstep_messages_round_trip_and_refuse_anything_else():
     from haven_sim.runtime.lockstep import Ack, Hello, Tick
 
     for m in (
-        Tick(3, 60_000_000, 20_000_000, {"/odom": 4}),
+        Tick(3, 60_000_000, 20_000_000, {"/odom": ["00ff00ff00ff00ff"]}, ["/odom"]),
         Hello("planner", None, ["/odom"], ["/plan"], True),
-        Ack("controller", 3, {"/cmd_vel_nav": 1}),
+        Ack("controller", 3, {"/cmd_vel_nav": ["0123456789abcdef", "0123456789abcdef"]}),
     ):
         assert type(m).from_json(m.to_json()) == m
     hostile = [
@@ -100,6 +100,8 @@ def test_lockstep_messages_round_trip_and_refuse_anything_else():
         '{"node": ["x"], "ready": true, "inputs": [], "outputs": []}',
         '{"step": 1e308}',
         '{"node": "c", "step": 1, "sent": {"/t": "9"}}',
+        '{"node": "c", "step": 1, "sent": {"/t": [9]}}',
+        '{"step": 1, "t_ns": 1, "step_ns": 1, "expect": {}, "owned": "/odom"}',
     ]
     for text in hostile:
         for cls in (Tick, Hello, Ack):

@@ -3,12 +3,20 @@
 The suite's own topics are subscribed at once with the topic table's QoS, so that nothing published
 right after start-up is missed; other topics are found through the graph API once a second and
 subscribed with the durability and reliability their publishers offer.
+
+A topic that others may publish either way (/plan: our planner latches it, Nav2's publishes it
+volatile) is read volatile, which matches both. For a recorder (`catch_up`), a latched reader runs
+beside it while every publisher there latches: a publisher's history (our planner keeps its last
+100 plans) then reaches the recording even when its first messages went out before the readers
+matched, whatever the start-up order. A message that both readers get is recorded once: its
+publisher's timestamp and sequence number say it is the same.
 """
 
 from __future__ import annotations
 
 import functools
 import importlib
+from collections import deque
 from collections.abc import Callable
 from typing import Any
 
@@ -21,7 +29,7 @@ from rclpy.subscription import Subscription
 
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import qos, wire
-from haven_sim.nodes.lockstep import take_all
+from haven_sim.nodes.lockstep import take_all, take_all_with_info
 from haven_sim.nodes.wire import type_name
 from haven_viz.nodes.conversions import viz_specs
 
@@ -39,6 +47,12 @@ def known_topics(params: WireParams = WireParams()) -> list[tuple[str, str, QoSP
         latched = spec.pub_qos.durability == DurabilityPolicy.TRANSIENT_LOCAL
         out.append(("/" + topic.lstrip("/"), type_name(spec.msg_type), profile, latched))
     return out
+
+
+def _late_readable(params: WireParams) -> dict[str, QoSProfile]:
+    """The suite's topics with a latched catch-up reader in the topic table (`late_qos`): its QoS."""
+    table = wire.with_wire_params({**wire.specs(), **viz_specs()}, params)
+    return {"/" + t.lstrip("/"): s.late_qos for t, s in table.items() if s.late_qos is not None}
 
 
 DRAIN_PERIOD_S = 0.01  # batched readers are emptied this often (wall time)
@@ -97,14 +111,22 @@ class RawTopics:
         batched: bool = False,
         held: tuple[str, ...] = (),
         params: WireParams = WireParams(),
+        on_matched: Callable[[str], None] | None = None,
+        catch_up: bool = False,
     ) -> None:
         """`topics`: only these (all of the graph when None); `keep_all`: readers that drop nothing
         (a recorder's), else the depth of the topic's profile; `on_lost(topic, n)`: DDS reports
         that n messages of a topic never reached the reader (and whether it is a best-effort topic); `batched`: messages are handed over
         every DRAIN_PERIOD_S instead of one callback each (a recorder at 10x real time gets
         thousands a second); `held`: suite topics not subscribed until `release()`; `params`: the
-        topic table's (stamped velocity commands)."""
+        topic table's (stamped velocity commands); `on_matched(topic)`: a publisher matched or left
+        one of the readers (however briefly it lived); `catch_up`: latched readers beside the
+        volatile ones where every publisher latches (batched mode)."""
         self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = node, add, on_message, topics, keep_all, on_lost
+        self.on_matched = on_matched
+        self.late: dict[str, Subscription] = {}  # topic -> its latched catch-up reader, while it has one
+        self.late_qos = _late_readable(params) if catch_up and batched else {}
+        self.seen: dict[str, deque[tuple[int, int]]] = {t: deque(maxlen=1000) for t in self.late_qos}
         self.group = DrainedReaders() if batched else None
         self.handled: set[str] = set(held)
         known = known_topics(params)
@@ -122,8 +144,42 @@ class RawTopics:
     def drain(self) -> None:
         """Hand over every message the readers hold (in batched mode; at shutdown in any)."""
         for topic, (msgtype, sub) in list(self.subscriptions.items()):
+            if topic in self.seen:  # read by two readers: each message once
+                for data in self._once(topic, [take_all_with_info(sub), take_all_with_info(self.late[topic]) if topic in self.late else []]):
+                    self.on_message(topic, msgtype, data)
+                continue
             for data in take_all(sub):
                 self.on_message(topic, msgtype, data)
+
+    def _once(self, topic: str, batches: list[list[tuple[bytes, dict[str, Any]]]]) -> list[bytes]:
+        seen, out = self.seen[topic], []
+        for batch in batches:
+            for data, info in batch:
+                key = (info["source_timestamp"], info["publication_sequence_number"])
+                if key not in seen:
+                    seen.append(key)
+                    out.append(data)
+        return out
+
+    def catch_up(self, topic: str) -> None:
+        """A latched reader beside the volatile one while every publisher of `topic` latches."""
+        if topic not in self.late_qos or topic not in self.subscriptions:
+            return
+        durabilities = {i.qos_profile.durability for i in self.node.get_publishers_info_by_topic(topic)}
+        wanted = durabilities == {DurabilityPolicy.TRANSIENT_LOCAL}
+        if wanted and topic not in self.late:
+            msgtype, sub = self.subscriptions[topic]
+            self.late[topic] = self.node.create_subscription(
+                sub.msg_type, topic, functools.partial(self.on_message, topic, msgtype), self.late_qos[topic], raw=True, callback_group=self.group
+            )
+        elif not wanted and topic in self.late:
+            self._drain_late(topic)
+            self.node.destroy_subscription(self.late.pop(topic))
+
+    def _drain_late(self, topic: str) -> None:
+        msgtype, _ = self.subscriptions[topic]
+        for data in self._once(topic, [take_all_with_info(self.late[topic])]):
+            self.on_message(topic, msgtype, data)
 
     def _wanted(self, topic: str) -> bool:
         return topic not in IGNORED and not topic.startswith(IGNORED) and (self.only is None or topic in self.only)
@@ -136,6 +192,8 @@ class RawTopics:
         self.held = {}
 
     def discover(self) -> None:
+        for topic in self.late_qos:
+            self.catch_up(topic)
         for topic, types in self.node.get_topic_names_and_types():
             if topic in self.handled or not self._wanted(topic) or self.node.count_publishers(topic) == 0:
                 continue
@@ -152,12 +210,21 @@ class RawTopics:
             return
         if self.keep_all:
             profile = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=profile.reliability, durability=profile.durability)
-        events = None
+        callbacks: dict[str, Any] = {}
         if self.on_lost is not None:
             on_lost = self.on_lost
             best_effort = profile.reliability == ReliabilityPolicy.BEST_EFFORT
-            events = SubscriptionEventCallbacks(message_lost=lambda info: on_lost(topic, int(info.total_count_change), best_effort))  # type: ignore[attr-defined]
+            callbacks["message_lost"] = lambda info: on_lost(topic, int(info.total_count_change), best_effort)
+        if self.on_matched is not None or topic in self.late_qos:
+            callbacks["matched"] = lambda info: self._matched(topic)
+        events = SubscriptionEventCallbacks(**callbacks) if callbacks else None
         sub = self.node.create_subscription(
             cls, topic, functools.partial(self.on_message, topic, msgtype), profile, raw=True, event_callbacks=events, callback_group=self.group
         )
         self.subscriptions[topic] = (msgtype, sub)
+        self.catch_up(topic)
+
+    def _matched(self, topic: str) -> None:
+        self.catch_up(topic)
+        if self.on_matched is not None:
+            self.on_matched(topic)

@@ -25,6 +25,12 @@ the study (video, eye tracking, questionnaires), the recorder pairs sim time wit
 a second and keeps the pairs in the bag's metadata (custom_data `haven.wall_clock`;
 `record.bag.wall_clock` reads them, `record.bag.to_wall_time` converts).
 
+Every publisher of the topics a trial rests on is noted with when it was seen (looked for twice a
+second and whenever a publisher matches one of the readers, so a short-lived one is caught too),
+into the bag's metadata (custom_data `haven.publishers`); one from outside the suite (its
+`suite_nodes` and `open_topics` parameters say what is the run's own) is said in the log at once.
+/plan's history is caught up on where its publisher latches (`RawTopics`' catch-up readers).
+
 Once it has the `trial_end` event and, on every state stream, a message stamped at or after it,
 the recorder says so with a file (`END_MARK` in the session folder): `haven run` stops the nodes
 then, not after a guessed delay, so a busy machine cannot cut the last moments of a trial.
@@ -39,6 +45,7 @@ import time
 from pathlib import Path
 
 import rclpy
+from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
@@ -48,6 +55,7 @@ from std_msgs.msg import String
 
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.record.bag import BagWriter
+from haven_scenarios.record.outsiders import Declared, PublisherLog, describe, outsiders, watched
 from haven_scenarios.record.session import END_MARK, EVENTS_FILE
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind
@@ -61,6 +69,7 @@ GATED = (EVENTS, "/" + topics.GOAL)  # what the scenario node's start waits for 
 STREAMS = ("/" + topics.ODOM, "/" + topics.HUMANS)  # header-first messages the metrics need to the end
 STREAMS_WAIT_S = 5.0  # wall time
 CLOCK_PAIR_PERIOD_S = 1.0  # wall time between (sim, wall) clock pairs
+PUBLISHERS_PERIOD_S = 0.5  # wall time between looks at who publishes (and whenever a publisher matches a reader)
 
 
 def header_stamp(cdr: bytes) -> float:
@@ -108,6 +117,10 @@ class Recorder(Node):
         self.end_stamp: float | None = None
         self.reached: set[str] = set()  # streams recorded up to the end
         self.flowing: set[str] = set()  # streams that have reached the recorder
+        self.publisher_log = PublisherLog()
+        nodes, opened = (self.declare_parameter(n, [], ParameterDescriptor(dynamic_typing=True)).value or [] for n in ("suite_nodes", "open_topics"))
+        lockstep = bool(self.declare_parameter("suite_lockstep", False).value)
+        self.declared = Declared(frozenset(nodes), tuple(opened), lockstep) if nodes else None  # (`haven sim --record`: no trial to judge)
         self.topics = RawTopics(
             self,
             lambda topic, msgtype, latched: True,
@@ -117,7 +130,10 @@ class Recorder(Node):
             batched=True,
             held=GATED,
             params=self._declare_wire_params(),
+            on_matched=self._watch_publishers,
+            catch_up=True,
         )
+        self.create_timer(PUBLISHERS_PERIOD_S, self._watch_publishers, clock=Clock(clock_type=ClockType.STEADY_TIME))
         self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
         self.clock_pairs: list[tuple[int, int]] = []  # (sim ns, wall ns)
         self.create_timer(CLOCK_PAIR_PERIOD_S, self._pair_clocks, clock=Clock(clock_type=ClockType.STEADY_TIME))
@@ -133,6 +149,25 @@ class Recorder(Node):
                 self.bag.flush()  # (once a second: what a SIGKILL would lose)
             except OSError as e:
                 self._write_failed(self.mcap, e)
+
+    def _watch_publishers(self, topic: str | None = None) -> None:
+        """Who publishes each topic the trial rests on (`record/outsiders.py`), kept for the bag's
+        metadata; a publisher from outside the suite is said at once, so the researcher knows while
+        the trial runs that the session will not be valid."""
+        now = self.get_clock().now().nanoseconds * 1e-9
+        names = [topic] if topic is not None else [t for t, _ in self.get_topic_names_and_types()]
+        for name in names:
+            if not watched(name):
+                continue
+            publishers = [(i.node_name, bytes(i.endpoint_gid).hex()) for i in self.get_publishers_info_by_topic(name)]
+            new = self.publisher_log.observe(name, publishers, now)
+            if new and self.declared is not None:
+                outside = {s.gid for s in outsiders(self.publisher_log, self.declared)}
+                for s in new:
+                    if s.gid in outside:
+                        ignored = self.declared.ignores(name)
+                        then = "ignored on the lockstep clock (noted in the session)" if ignored else "the session will not be valid"
+                        self.get_logger().warning(f"{describe(s, self.declared)}: {then}")
 
     def _write_failed(self, path: Path, e: OSError) -> None:
         """A full disk: one line naming the file and the reason, the bag left as far as it was
@@ -234,7 +269,8 @@ class Recorder(Node):
             try:
                 self.topics.drain()
                 self._pair_clocks()
-                self.bag.close(lost=self.lost, wall_clock=self.clock_pairs)
+                self._watch_publishers()
+                self.bag.close(lost=self.lost, wall_clock=self.clock_pairs, publishers=self.publisher_log.to_json())
             except SystemExit:
                 pass  # a write failed: said in one line, the bag left as written for the repair
             except OSError as e:

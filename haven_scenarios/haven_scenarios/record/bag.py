@@ -30,6 +30,7 @@ from rosbags.rosbag2 import StoragePlugin, Writer
 from rosbags.rosbag2.storage_mcap import McapWriter
 from rosbags.typesys import Stores, get_typestore
 
+from haven_scenarios.record.outsiders import PublisherLog
 from haven_scenarios.record.timeline import Recording
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventError
@@ -43,6 +44,7 @@ TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
 LOST_KEY = "haven.messages_lost"  # custom_data in metadata.yaml: {topic: messages DDS reported lost}
 WALL_CLOCK_KEY = "haven.wall_clock"  # custom_data: [[sim ns, wall ns (Unix epoch)], ...] paired about once a second
 CHUNK_OPCODE = 0x06  # an MCAP chunk record
+PUBLISHERS_KEY = "haven.publishers"  # custom_data: every publisher the recorder saw (record/outsiders.py PublisherLog)
 REPAIRED_KEY = "haven.repaired"  # custom_data of a bag rebuilt by record/repair.py: JSON, how and how much
 
 
@@ -62,15 +64,18 @@ class BagWriter:
     def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
         self.close()
 
-    def close(self, lost: Mapping[str, int] | None = None, wall_clock: Sequence[tuple[int, int]] = ()) -> None:
+    def close(self, lost: Mapping[str, int] | None = None, wall_clock: Sequence[tuple[int, int]] = (), publishers: str | None = None) -> None:
         """Close the bag; `lost`: messages per topic that never reached the recorder, kept in the
         metadata's custom_data (LOST_KEY) so the session can say how complete it is; `wall_clock`:
-        (sim ns, wall ns) pairs (WALL_CLOCK_KEY), to align the bag with other recordings."""
+        (sim ns, wall ns) pairs (WALL_CLOCK_KEY), to align the bag with other recordings;
+        `publishers`: who published what (PUBLISHERS_KEY, a `PublisherLog` as JSON)."""
         if self._writer is not None:
             if lost is not None:
                 self._writer.set_custom_data(LOST_KEY, json.dumps(dict(lost), sort_keys=True))
             if wall_clock:
                 self._writer.set_custom_data(WALL_CLOCK_KEY, json.dumps([list(p) for p in wall_clock]))
+            if publishers is not None:
+                self._writer.set_custom_data(PUBLISHERS_KEY, publishers)
             self._writer.close()
             self._writer = None  # type: ignore[assignment]
 
@@ -303,6 +308,8 @@ def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording,
         for m in read_messages(bag, human_ids):
             rec.add(m)
         rec.lost = lost_messages(bag)
+        logged = custom_data(bag).get(PUBLISHERS_KEY)
+        rec.publishers = PublisherLog.from_json(logged) if logged is not None else None
         return rec, repaired_note(bag)
     if not any(bag.glob("*.mcap")):
         return rec, f"no recording: {bag} holds no MCAP file"

@@ -17,6 +17,7 @@ import numpy as np
 from haven_scenarios.record.contacts import PERSON_ON_ROBOT, ROBOT_ON_PERSON, attribute, episodes
 from haven_scenarios.record.hesitation import hesitations
 from haven_scenarios.record.metric_table import ZONES
+from haven_scenarios.record.outsiders import Declared
 from haven_scenarios.record.timeline import Recording, Timeline
 from haven_scenarios.record.validity import check
 from haven_scenarios.study.participants import HUMAN_PLANNER
@@ -40,11 +41,12 @@ def _length(xy: FloatArray) -> float:
     return float(np.sum(np.hypot(*np.diff(xy, axis=0).T))) if len(xy) > 1 else 0.0
 
 
-def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: World | None = None) -> dict[str, Any]:
+def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: World | None = None, declared: Declared | None = None) -> dict[str, Any]:
+    """`declared`: what a recorded run said of itself, for its validity (record/validity.py)."""
     window = rec.window()
     m: dict[str, Any] = {"scenario": scenario, "end_reason": end_reason}
     if window is None:
-        return {**m, "duration_s": None, **check(rec, None)}
+        return {**m, "duration_s": None, **check(rec, None, declared)}
     t0, t1 = window
     tl = Timeline.of(rec, t0, t1)
     events = sorted((replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp)
@@ -58,7 +60,7 @@ def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: Wor
     m.update(_passes(tl, events))
     for hid in tl.humans:
         m.update(_person(hid, tl, events, world, rec))
-    m.update(check(rec, window))
+    m.update(check(rec, window, declared))
     return m
 
 

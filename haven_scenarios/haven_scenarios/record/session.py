@@ -36,6 +36,7 @@ import yaml
 
 from haven_scenarios.record.bag import read_recording, to_wall_time, wall_clock
 from haven_scenarios.record.metrics import compute
+from haven_scenarios.record.outsiders import declared_of
 from haven_scenarios.record.timeline import GRID_S, Recording, Timeline
 from haven_scenarios.run.trial import condition_name
 from haven_scenarios.study.rules import EndReason
@@ -174,7 +175,8 @@ def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
     except Exception as e:  # noqa: BLE001 - whatever a damaged bag raises, the row says so
         rec, note = Recording(), f"bag unreadable: {str(e)[:120]}"
     end = rec.first(EventKind.TRIAL_END)
-    metrics = compute(rec, str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED, world)
+    name, reason = str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED
+    metrics = compute(rec, name, reason, world, declared_of(info))
     problems = [p for p in (note, problem) if p]
     if problems:
         metrics["valid"] = False

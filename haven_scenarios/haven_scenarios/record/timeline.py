@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from haven_scenarios.record.outsiders import PublisherLog
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import FloatArray, Pose2D
@@ -21,9 +22,6 @@ from haven_sim.runtime.component import Message
 from haven_viz.cues import CueState, Toggles
 
 GRID_S = 0.02  # the physics step: /odom comes every step
-# What the metrics rest on: a loss on one of these makes a session invalid; losses elsewhere
-# (/clock, /scan, /tf, cmd_vel) are kept in the bag's metadata and do not change a metric.
-METRIC_TOPICS = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, topics.PLAN, topics.EVENTS)
 
 
 @dataclass
@@ -35,6 +33,7 @@ class Recording:
     plans: list[tuple[float, list[Pose2D]]] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
     lost: dict[str, int] = field(default_factory=dict)  # topic -> messages the recorder reported lost
+    publishers: PublisherLog | None = None  # who published what, as the recorder saw it (None: not kept)
 
     def add(self, m: Message) -> None:
         """One message, stamped with its header stamp."""

@@ -3,7 +3,8 @@
 Checked on the recording itself: /odom comes every physics step and /humans at a fixed rate, so
 their header stamps show every missing message and every gap, a late start included; events carry a sequence number per
 source (`seq`), so a missing one shows too; the recorder notes every message DDS reports lost,
-and a loss on a topic the metrics read counts; and a trial must have ended with `trial_end`.
+and a loss on a topic the metrics read counts; a trial must have ended with `trial_end`; and no
+publisher from outside the suite may have been there while it ran (`record/outsiders.py`).
 """
 
 from __future__ import annotations
@@ -12,7 +13,8 @@ from typing import Any
 
 import numpy as np
 
-from haven_scenarios.record.timeline import METRIC_TOPICS, Recording
+from haven_scenarios.record.outsiders import METRIC_TOPICS, Declared, judge
+from haven_scenarios.record.timeline import Recording
 from haven_sim.common.events import EventKind
 
 MIN_COVERAGE = 0.99
@@ -39,8 +41,13 @@ def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list
     return out
 
 
-def check(rec: Recording, window: tuple[float, float] | None) -> dict[str, Any]:
+def check(rec: Recording, window: tuple[float, float] | None, declared: Declared | None = None) -> dict[str, Any]:
+    """`declared`: what the run said of itself (session.json), to judge the publishers the recorder
+    saw (record/outsiders.py); None: nothing to judge (batch mode, sessions from before)."""
     reasons: list[str] = []
+    noted: list[str] = []
+    if declared is not None and rec.publishers is not None:
+        reasons, noted = judge(rec.publishers, declared, window)
     if window is None:
         reasons.append("no trial_start or no /odom recorded")
     else:
@@ -59,4 +66,4 @@ def check(rec: Recording, window: tuple[float, float] | None) -> dict[str, Any]:
         missing = max(numbers) - len(set(numbers))
         if missing:
             reasons.append(f"events: {missing} of {source}'s missing")
-    return {"valid": not reasons, "invalid_reasons": reasons}
+    return {"valid": not reasons, "invalid_reasons": reasons, "outside_publishers": "; ".join(noted)}

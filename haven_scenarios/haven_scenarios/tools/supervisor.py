@@ -42,6 +42,8 @@ def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args:
     for k, v in (params or {}).items():
         if isinstance(v, bool):
             v = "true" if v else "false"
+        elif isinstance(v, (list, tuple)):
+            v = "[" + ",".join(str(x) for x in v) + "]"
         argv += ["-p", f"{k}:={v}"]
     return argv + list(ros_args)
 

@@ -38,6 +38,7 @@ class EventKind(StrEnum):
     RESUMED = "resumed"
     REPLANNED = "replanned"  # side, human
     REVERTED = "reverted"
+    GOAL_STORM = "goal_storm"  # goals, superseded, seconds: goals came faster than goal_interval_s (the newest won)
     # controller
     GOAL_REACHED = "goal_reached"  # goal, pose
     # viz
@@ -57,6 +58,9 @@ class EventKind(StrEnum):
     BATTERY_INSUFFICIENT = "battery_insufficient"
     TASK_DONE = "task_done"  # by
     TRIAL_END = "trial_end"  # reason
+    # any node on the lockstep clock (nodes/lockstep.py)
+    OUTSIDE_INPUT = "outside_input"  # topic, ignored, taken, dropped: messages from outside the suite since the last one
+    INPUT_LOST = "input_lost"  # topic, messages: announced by the suite, never arrived
     # researcher console (Wizard of Oz)
     INTERVENTION = "intervention"  # action: thought (text) | drive | drive_end | skip_questionnaires, by
     PARTICIPANT_READY = "participant_ready"  # by: a participant pressed Start on their page
@@ -86,6 +90,8 @@ REQUIRED: dict[EventKind, tuple[str, ...]] = {
     EventKind.TASK_DONE: ("by",),
     EventKind.TRIAL_END: ("reason",),
     EventKind.INTERVENTION: ("action",),
+    EventKind.OUTSIDE_INPUT: ("topic",),
+    EventKind.INPUT_LOST: ("topic", "messages"),
     EventKind.PARTICIPANT_READY: ("by",),
     EventKind.QUESTIONNAIRE_ANSWERED: ("by", "questionnaire", "scores"),
 }

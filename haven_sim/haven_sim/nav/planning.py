@@ -30,6 +30,14 @@ from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import World
 
 ODOM_FRAME = "odom"  # coincides with the map frame while odometry has no drift
+STORM_QUIET_S = 1.0  # sim time without a goal that ends a goal storm
+
+
+@dataclass
+class GoalStorm:
+    start: float
+    goals: int  # received since the quiet spell before it
+    superseded: int = 0  # replaced before they were planned
 
 
 @dataclass(frozen=True)
@@ -39,12 +47,17 @@ class PlannerConfig:
     style: MotionStyle = group(MotionStyle)
     navigator: NavigatorParams = group(NavigatorParams)
     check_rate_hz: float = param(5.0, "how often the path is checked for people (sim time)")
+    goal_interval_s: float = param(
+        0.1, "goals closer together than this (sim time) are coalesced: the newest is planned once it has passed (a goal storm: one plan each)"
+    )
     map_frame: str = param("map", "frame of /plan and of accepted goals")
     world: str = param("", "world file whose hallway centre lines the robot keeps to ('': plan on /map alone; haven run passes its world)")
 
     def __post_init__(self) -> None:
         if not self.check_rate_hz > 0:
             raise ValueError(f"check_rate_hz must be positive, got {self.check_rate_hz}")
+        if not 0 <= self.goal_interval_s <= 10:
+            raise ValueError(f"goal_interval_s must be 0..10 s, got {self.goal_interval_s}")
 
 
 def world_lanes(world: World) -> tuple[Lane, ...]:
@@ -62,7 +75,11 @@ class PlannerComponent:
         self.nav: Navigator | None = None
         self.robot: Pose2D | None = None
         self.humans: list[tuple[float, float]] = []
-        self.pending: Pose2D | None = None
+        self.pending: Pose2D | None = None  # the newest goal not planned yet (no map or pose yet, or coalesced)
+        self.planned_at: float | None = None  # when the last goal was planned (sim time)
+        self.storm: GoalStorm | None = None  # goals coming faster than goal_interval_s
+        self.last_goal: float | None = None  # when the last goal came (sim time)
+        self.burst, self.burst_start = 0, 0.0  # goals since the last STORM_QUIET_S without one, and when the first came
         self.notes: list[str] = []  # for the node's log
         self.warnings: list[str] = []
 
@@ -99,6 +116,16 @@ class PlannerComponent:
             self.warnings.append(f"refused goal: {reason}")
             refused = event(EventKind.PLAN_REFUSED, now, Source.PLANNER, reason=reason)
             return [Message(topics.EVENTS, refused, now)]
+        if self.last_goal is None or now - self.last_goal >= STORM_QUIET_S:
+            self.burst, self.burst_start = 0, now  # goals since the last quiet spell
+        self.burst, self.last_goal = self.burst + 1, now
+        if self.pending is not None and self.nav is not None and self.robot is not None:  # one not planned yet: the newest wins
+            if self.storm is None:
+                self.storm = GoalStorm(self.burst_start, self.burst - 1)
+                self.warnings.append(f"goal storm: goals closer together than {self.config.goal_interval_s:g} s; planning only the newest (counted)")
+            self.storm.superseded += 1
+        if self.storm is not None:
+            self.storm.goals += 1
         self.pending = goal.pose
         return self._try_pending(now)
 
@@ -114,7 +141,9 @@ class PlannerComponent:
     def _try_pending(self, now: float) -> list[Message]:
         if self.pending is None or self.nav is None or self.robot is None:
             return []
-        goal, self.pending = self.pending, None
+        if self.planned_at is not None and now - self.planned_at < self.config.goal_interval_s - 1e-9:
+            return []  # coalesced: planned once the interval has passed (at an /odom or the next check)
+        goal, self.pending, self.planned_at = self.pending, None, now
         out = self.nav.set_goal(self.robot, goal, now)
         self.warnings += [f"refused goal ({goal.x:.2f}, {goal.y:.2f}): {e['reason']}" for e in out.events if e.kind is EventKind.PLAN_REFUSED]
         return self._messages(out, now)
@@ -122,7 +151,18 @@ class PlannerComponent:
     def tick(self, now: float) -> list[Message]:
         if self.nav is None or self.robot is None:
             return []
-        return self._messages(self.nav.update(self.robot, self.humans, now), now)
+        out = self._try_pending(now) + self._storm_over(now)
+        return out + self._messages(self.nav.update(self.robot, self.humans, now), now)
+
+    def _storm_over(self, now: float) -> list[Message]:
+        """A goal storm ends after STORM_QUIET_S without a goal: one event with how many it brought."""
+        storm, last = self.storm, self.last_goal or 0.0
+        if storm is None or self.pending is not None or now - last < STORM_QUIET_S:
+            return []
+        self.storm, seconds = None, round(last - storm.start, 3)
+        self.notes.append(f"goal storm over: {storm.goals} goals in {seconds:g} s, {storm.superseded} never planned")
+        e = event(EventKind.GOAL_STORM, now, Source.PLANNER, goals=storm.goals, superseded=storm.superseded, seconds=seconds)
+        return [Message(topics.EVENTS, e, now)]
 
     @staticmethod
     def _messages(out: NavOutput, now: float) -> list[Message]:

@@ -21,6 +21,7 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy
+from rclpy.serialization import serialize_message
 from rclpy.subscription import Subscription
 
 from haven_sim.common.events import Event, Sequencer
@@ -94,10 +95,11 @@ class ComponentNode(Node):
             spec = self._specs.get(topic)
             if spec is not None:  # (no spec: TF where tf2_msgs is not installed)
                 self._pubs[topic] = self.create_publisher(spec.msg_type, topic, spec.pub_qos)
-        self.lockstep_mode = self.declare_config(LockstepParams).lockstep
+        self.lockstep_params = self.declare_config(LockstepParams)
+        self.lockstep_mode = self.lockstep_params.lockstep
         if self.lockstep_mode:  # (the simulator, which runs the clock, reads its inputs itself)
             if participant:
-                self.lockstep = LockstepParticipant(self, component, self._specs, self.publish, self._pubs)
+                self.lockstep = LockstepParticipant(self, component, self._specs, self.publish, self._pubs, self.lockstep_params)
             return
         for topic, handler in component.handlers().items():
             spec = self._specs[topic]
@@ -168,19 +170,25 @@ class ComponentNode(Node):
     def now(self) -> float:
         return self.get_clock().now().nanoseconds * 1e-9
 
-    def publish(self, messages: Sequence[Message]) -> list[Publisher]:
-        """Publish; returns the publishers used (for the lockstep clock, which waits on them)."""
-        used: dict[str, Publisher] = {}
+    def publish(self, messages: Sequence[Message], serialized: bool = False) -> list[tuple[str, bytes]]:
+        """Publish; with `serialized`, each message is serialized here and published as bytes, which
+        are returned per topic (the lockstep clock names each message by a digest of them)."""
+        sent: list[tuple[str, bytes]] = []
         for m in messages:
             pub = self._pubs.get(m.topic)
             if pub is not None:
                 data = self.sequencer.number(m.data) if isinstance(m.data, Event) else m.data
-                pub.publish(self._specs[m.topic].encode(data, m.stamp))
-                used[m.topic] = pub
+                msg = self._specs[m.topic].encode(data, m.stamp)
+                if serialized:
+                    raw = serialize_message(msg)
+                    pub.publish(raw)
+                    sent.append((m.topic, raw))
+                else:
+                    pub.publish(msg)
         # Components may keep lists of what to log (`notes`: info, `warnings`): drained here.
         for attr, log in (("notes", self.get_logger().info), ("warnings", self.get_logger().warning)):
             lines: list[str] = getattr(self.component, attr, [])
             for line in lines:
                 log(line, throttle_duration_sec=2.0) if attr == "warnings" else log(line)
             lines.clear()
-        return list(used.values())
+        return sent

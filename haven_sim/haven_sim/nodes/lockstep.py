@@ -1,32 +1,36 @@
 """The lockstep clock over DDS (the rule itself is `haven_sim.runtime.lockstep`).
 
 The simulator node coordinates. For each step it publishes its state and sends each participant
-that acts a tick on /haven/lockstep/tick/<node> with the number of messages the suite has published
-so far on each topic; it waits for their acknowledgements on /haven/lockstep/ack (each says how many
-messages it published on each topic), then for every command those announce to be in its own
-readers, applies them and advances. It does not wait for observers, whose outputs no participant
-reads: they work through their ticks at their own pace, with the same inputs. (The viz node is not
-one: the scenario node hands its simulated participants what /haven/cue_state shows.)
+that acts a tick on /haven/lockstep/tick/<node> naming, by digest, the suite's messages on its
+inputs since it last acted (`runtime.suite_messages.Expected`); it waits for their
+acknowledgements on /haven/lockstep/ack (each names the messages it published), then for every
+command those announce to be in its own readers, applies them and advances. It does not wait for
+observers, whose outputs no participant reads. (The viz node is not one: the scenario node hands
+its simulated participants what /haven/cue_state shows.)
 
 A participant's readers are left alone until a tick comes (they are in a callback group the
 executor never waits on, so a participant wakes for its ticks only). On a tick it takes from its
-readers until it holds as many messages on each input topic as the tick announces, handles
-exactly those (on a topic with one writer: the first so many, of a state stream the newest of
-them; on /haven/events, which every node writes: the simulator's up to this step and the others'
-from earlier steps, by their stamps), does its periodic work if due, and acknowledges with what it
-published. Messages on topics no suite node writes (teleop, e-stop) are handled when the
-participant next acts.
+readers until it holds every announced message, handles exactly those (of a state stream the
+newest), does its periodic work if due, and acknowledges with what it published.
+
+Messages from outside the suite are told apart by their digests, whoever sends them and however
+many (a second suite on the domain, a node flooding /goal_pose): on a topic the suite writes they
+are ignored and counted, unless the run opened it (`lockstep_open`: `haven run --allow`); on a topic
+no suite node writes (teleop, e-stop, trial control) they are handled when the participant next
+acts, at most `suite_messages.OUTSIDE_RATE_HZ` a second. Each node says so once per topic in an
+`outside_input` event (and again every OUTSIDE_REPORT_S of sim time while it goes on).
 
 DDS acknowledgements cannot pace this: Fast DDS acknowledges on its heartbeat, every few seconds.
-Counting is exact with every publisher of the suite's topics inside the suite; a message from
-outside on such a topic is handled a step late at worst. Participants and the coordinator wait at
-most `WAIT_S` for an announced message, then go on with a warning.
+Participants and the coordinator wait at most `WAIT_S` for an announced message, then go on
+without it (an `input_lost` event, the message dropped should it come later): a loss costs one
+wait, never every step after it.
 """
 
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Mapping
+from collections import Counter
+from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypeVar
 
 from rclpy.callback_groups import CallbackGroup
@@ -34,19 +38,21 @@ from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from rclpy.publisher import Publisher
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
-from rclpy.serialization import deserialize_message
+from rclpy.serialization import deserialize_message, serialize_message
 from rclpy.subscription import Subscription
 from std_msgs.msg import String
 
 from haven_sim.common import topics
-from haven_sim.common.events import Event, Sequencer, Source
+from haven_sim.common.events import Event, EventKind, Sequencer, event
 from haven_sim.nodes.runner import THROTTLE_S, handle, refused, stop_requested
 from haven_sim.nodes.wire import TopicSpec
 from haven_sim.runtime.component import NS_PER_S, Component, Message, due
-from haven_sim.runtime.lockstep import Ack, Hello, ParticipantInfo, Schedule, Tick, inbox_order
+from haven_sim.runtime.lockstep import Ack, Hello, LockstepParams, ParticipantInfo, Schedule, Tick, inbox_order
+from haven_sim.runtime.suite_messages import Expected, OutsideInputs, Queue, absolute, digest
 
 T = TypeVar("T")
 TICKS, ACK, HELLO = "haven/lockstep/tick", "haven/lockstep/ack", "haven/lockstep/hello"
+OUTSIDE_REPORT_S = 10.0  # sim time between a node's `outside_input` events on one topic while they go on
 
 
 def tick_topic(participant: str) -> str:
@@ -63,7 +69,7 @@ WAIT_S = 5.0  # longest wait for an announced message before going on without it
 
 
 def keep_all(profile: QoSProfile) -> QoSProfile:
-    """A reader that drops nothing: in lockstep every announced message must be there to count."""
+    """A reader that drops nothing: in lockstep every announced message must be there."""
     return QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=profile.reliability, durability=profile.durability)
 
 
@@ -83,10 +89,16 @@ class Deferred(CallbackGroup):
 
 def take_all(sub: Subscription) -> list[bytes]:
     """Everything a (raw) subscription's reader holds now."""
+    return [data for data, _ in take_all_with_info(sub)]
+
+
+def take_all_with_info(sub: Subscription) -> list[tuple[bytes, dict[str, Any]]]:
+    """Everything a (raw) subscription's reader holds now, each with its message info (the
+    publisher's source timestamp and sequence number among it)."""
     out = []
     with sub.handle:
         while (taken := sub.handle.take_message(sub.msg_type, sub.raw)) is not None:
-            out.append(taken[0])
+            out.append((taken[0], taken[1]))
     return out
 
 
@@ -98,51 +110,72 @@ def unmatched(node: Node, subs: Mapping[str, Subscription], pubs: Mapping[str, P
 
 
 class Inbox:
-    """A node's deferred readers: raw messages per topic, counted as they are taken, decoded only
-    when handed over."""
+    """A node's deferred readers: raw messages per topic, matched against what the ticks announce
+    and decoded only when handed over; outside messages go by `outside`'s rule."""
 
-    def __init__(self, node: Node, specs: Mapping[str, TopicSpec], inputs: list[str]) -> None:
-        self.node, self.specs = node, specs
-        self.queued: dict[str, list[bytes]] = {t: [] for t in inputs}
-        self.received: dict[str, int] = dict.fromkeys(inputs, 0)
+    def __init__(self, node: Node, specs: Mapping[str, TopicSpec], inputs: list[str], settle: int, outside: OutsideInputs) -> None:
+        self.node, self.specs, self.outside = node, specs, outside
+        self.queues = {t: Queue(t, settle) for t in inputs}
+        self.lost: Counter[str] = Counter()  # announced messages that never came, per topic
         group = Deferred()
         self.subs = {
             t: node.create_subscription(specs[t].msg_type, t, _never, keep_all(specs[t].sub_qos), callback_group=group, raw=True) for t in inputs
         }
 
-    def take(self, only: list[str] | None = None) -> None:
+    def take(self, only: Sequence[str] | None = None) -> None:
         for t in self.subs if only is None else only:
-            raw = take_all(self.subs[t])
-            self.queued[t] += raw
-            self.received[t] += len(raw)
+            self.queues[t].add(take_all(self.subs[t]))
 
-    def fill(self, counts: Mapping[str, int]) -> None:
-        """Take from the readers until each topic has received the announced number of messages."""
+    def fill(self, expect: Mapping[str, Sequence[str]]) -> None:
+        """Take from the readers until every announced message is in; give up after WAIT_S."""
         self.take()
         deadline = time.monotonic() + WAIT_S
-        while short := [t for t in self.subs if self.received[t] < counts.get(t, 0)]:
+        while missing := {t: m for t, ds in expect.items() if t in self.queues and (m := self.queues[t].missing(ds))}:
             if stop_requested():
                 return
             if time.monotonic() > deadline:
-                self.node.get_logger().warning(f"lockstep: announced messages on {', '.join(short)} did not arrive; going on")
+                for t, m in missing.items():
+                    self.queues[t].give_up(m)
+                    self.lost[t] += sum(m.values())
+                said = ", ".join(f"{sum(m.values())} on {t}" for t, m in missing.items())
+                self.node.get_logger().warning(f"lockstep: announced messages did not arrive within {WAIT_S:g} s ({said}); going on without them")
                 return
             time.sleep(0.0001)
-            self.take(short)
+            self.take(list(missing))
 
-    def pop(self, topic: str, n: int | None = None) -> tuple[list[Message], int]:
-        """The first `n` queued messages of a topic (all when None), decoded, and how many were
-        refused (with a throttled warning): those came from outside the suite, which sends none
-        that cannot be read. Of a state stream only the newest readable one is handed over."""
-        queued = self.queued[topic]
-        n = len(queued) if n is None else n
-        taken, self.queued[topic] = queued[:n], queued[n:]
+    def pop(self, topic: str, expected: Sequence[str], now: float) -> list[Message]:
+        """The suite's announced messages on `topic`, then the outside ones `outside` lets through, decoded."""
+        ours, others = self.queues[topic].split(expected)
         spec, out = self.specs[topic], []
-        for raw in taken:
+        for raw in ours + self.outside.take(topic, others, now):
             try:
                 out.append(Message(topic, spec.decode(deserialize_message(raw, spec.msg_type)), 0.0))
             except ValueError as e:
                 refused(self.node, topic, e)
-        return (out[-1:] if topic in topics.STATE else out), len(taken) - len(out)
+        return out
+
+
+class OutsideReport:
+    """The `outside_input` and `input_lost` events a node publishes about its inbox."""
+
+    def __init__(self, source: str) -> None:
+        self.source = source
+        self.said: dict[str, tuple[float, int, int, int]] = {}  # topic -> (when, ignored, taken, dropped) last said
+        self.lost_said: Counter[str] = Counter()
+
+    def events(self, inbox: Inbox, now: float) -> list[Message]:
+        o, out = inbox.outside, []
+        for topic in sorted(set(o.ignored) | set(o.taken)):
+            counts = (o.ignored[topic], o.taken[topic], o.limit.dropped[topic])
+            when, *before = self.said.get(topic, (-OUTSIDE_REPORT_S, 0, 0, 0))
+            if counts != tuple(before) and (topic not in self.said or now - when >= OUTSIDE_REPORT_S):
+                self.said[topic] = (now, *counts)
+                new = dict(zip(("ignored", "taken", "dropped"), (c - b for c, b in zip(counts, before))))
+                out.append(Message(topics.EVENTS, event(EventKind.OUTSIDE_INPUT, now, self.source, topic=topic, **new), now))
+        for topic, n in (inbox.lost - self.lost_said).items():
+            out.append(Message(topics.EVENTS, event(EventKind.INPUT_LOST, now, self.source, topic="/" + topic.lstrip("/"), messages=n), now))
+        self.lost_said = Counter(inbox.lost)
+        return out
 
 
 def _parse(node: Node, parse: Callable[[str], T], msg: String) -> T | None:
@@ -158,6 +191,13 @@ def _never(msg: Any) -> None:  # pragma: no cover - deferred subscriptions have 
     raise AssertionError("a deferred subscription's callback ran")
 
 
+def digests(sent: Sequence[tuple[str, bytes]]) -> dict[str, list[str]]:
+    out: dict[str, list[str]] = {}
+    for topic, raw in sent:
+        out.setdefault(topic, []).append(digest(raw))
+    return out
+
+
 class LockstepParticipant:
     """Defers a component node's inputs to the ticks that name it."""
 
@@ -166,16 +206,16 @@ class LockstepParticipant:
         node: Node,
         component: Component,
         specs: Mapping[str, TopicSpec],
-        publish: Callable[[list[Message]], list[Publisher]],
+        publish: Callable[[list[Message], bool], list[tuple[str, bytes]]],
         outputs: Mapping[str, Publisher],
+        params: LockstepParams,
     ) -> None:
         self.node, self.component, self.publish, self.outputs = node, component, publish, outputs
         self.info = ParticipantInfo.of(component)
         self.handlers = dict(component.handlers())
         self.rank = {t: i for i, t in enumerate(self.handlers)}
-        self.inbox = Inbox(node, specs, list(self.handlers))
-        self.handled: dict[str, int] = dict.fromkeys(self.handlers, 0)  # messages handled per topic
-        self.later_events: list[Message] = []  # received, stamped at or after the last tick
+        self.inbox = Inbox(node, specs, list(self.handlers), settle=1, outside=OutsideInputs(opened=absolute(params.lockstep_open)))
+        self.report = OutsideReport(component.name)
         self.ack_pub = node.create_publisher(String, ACK, CONTROL)
         self.hello_pub = node.create_publisher(String, HELLO, ANNOUNCE)
         self._ready: bool | None = None
@@ -199,51 +239,25 @@ class LockstepParticipant:
             hello = Hello(self.component.name, self.info.period_ns, sorted(self.info.inputs), sorted(self.outputs), ready)
             self.hello_pub.publish(String(data=hello.to_json()))
 
-    def _due_messages(self, counts: Mapping[str, int], now: float) -> list[Message]:
-        """This step's share of the queue: on one-writer topics the first announced messages, on
-        the events topic those stamped before this step (and the simulator's of this step).
-        Messages from outside the suite must not shift the count: a refused one is not counted,
-        and while a topic has a writer besides the suite's all its queue is handled and the count
-        starts again from the announced one (such a topic's timing is the outsider's anyway)."""
-        out: list[Message] = []
-        for topic in self.inbox.queued:
-            if topic == topics.EVENTS:
-                events = self.later_events + self.inbox.pop(topic)[0]
-                out += [m for m in events if _before(m.data, now)]
-                self.later_events = [m for m in events if not _before(m.data, now)]
-                continue
-            outsiders = topic in counts and self.node.count_publishers(self.node.resolve_topic_name(topic)) > 1
-            n = None if topic not in counts or outsiders else max(0, counts[topic] - self.handled[topic])
-            before = len(self.inbox.queued[topic])
-            messages, refused = self.inbox.pop(topic, n)
-            out += messages
-            self.handled[topic] = counts[topic] if outsiders else self.handled[topic] + before - len(self.inbox.queued[topic]) - refused
-        return out
-
     def _on_tick(self, msg: String) -> None:
         tick = _parse(self.node, Tick.from_json, msg)
         if tick is None:
             return
         self._ticked = True
-        counts = tick.counts
-        self.inbox.fill(counts)
-        step, now = tick.step, tick.t_ns / NS_PER_S
+        self.inbox.outside.owned = absolute(tick.owned)
+        self.inbox.fill(tick.expect)
+        now = tick.t_ns / NS_PER_S
+        received: list[Message] = []
+        for topic in self.handlers:
+            received += self.inbox.pop(topic, tick.expect.get(topic, ()), now)
         out: list[Message] = []
-        for m in inbox_order(self.rank, self._due_messages(counts, now)):
+        for m in inbox_order(self.rank, received):
             out += handle(self.node, m.topic, self.handlers[m.topic], m.data, now)
-        if self.info.period_ns is not None and due(step, tick.step_ns, self.info.period_ns):
+        if self.info.period_ns is not None and due(tick.step, tick.step_ns, self.info.period_ns):
             out += self.component.tick(now)
-        self.publish(out)
-        sent: dict[str, int] = {}
-        for m in out:
-            if m.topic in self.outputs:
-                sent[m.topic] = sent.get(m.topic, 0) + 1
-        self.ack_pub.publish(String(data=Ack(self.component.name, step, sent).to_json()))
-
-
-def _before(e: Event, now: float) -> bool:
-    """An event handled at the step of time `now`: the simulator's up to now, the others' before."""
-    return e.stamp <= now + 1e-9 if e.source == Source.SIM else e.stamp < now - 1e-9
+        out += self.report.events(self.inbox, now)
+        sent = self.publish(out, True)
+        self.ack_pub.publish(String(data=Ack(self.component.name, tick.step, digests(sent)).to_json()))
 
 
 class LockstepCoordinator:
@@ -260,14 +274,19 @@ class LockstepCoordinator:
         real_time_factor: float,
         specs: Mapping[str, TopicSpec],
         outputs: Mapping[str, Publisher],
+        params: LockstepParams,
     ) -> None:
         self.node, self.sim, self.specs, self.outputs = node, sim, specs, outputs
         self.sequencer = Sequencer()
-        self.expected, self.observers, self.wait_for, self.rtf = set(participants), set(observers), list(wait_for), real_time_factor
+        self.expected_names, self.observers, self.wait_for, self.rtf = set(participants), set(observers), list(wait_for), real_time_factor
         self.handlers = dict(sim.handlers())
-        self.inbox = Inbox(node, specs, list(self.handlers))
+        self.inbox = Inbox(node, specs, list(self.handlers), settle=0, outside=OutsideInputs(opened=absolute(params.lockstep_open)))
+        self.report = OutsideReport(sim.name)
         self.schedule = Schedule(sim.config.sim.step_ns)
-        self.counts: dict[str, int] = {}  # messages the suite has published per topic
+        self.expected = Expected()  # what each participant is to receive
+        self.own: dict[str, list[str]] = {}  # the suite's messages on the simulator's inputs since it last stepped
+        self.writes: dict[str, list[str]] = {"": list(outputs)}  # node -> its outputs (the simulator's under "")
+        self.owned: frozenset[str] = frozenset()  # every topic the suite writes (known once stepping starts)
         self.ready: dict[str, bool] = {}
         self.waiting: set[str] | None = None  # None until the first step
         self.step = -1
@@ -280,17 +299,17 @@ class LockstepCoordinator:
 
     def _on_hello(self, msg: String) -> None:
         hello = _parse(self.node, Hello.from_json, msg)
-        if hello is not None and hello.node in self.expected:
+        if hello is not None and hello.node in self.expected_names:
             self.schedule.add(ParticipantInfo(hello.node, hello.period_ns, frozenset(hello.inputs)))
+            self.expected.reads(hello.node, hello.inputs)
+            self.writes[hello.node] = list(hello.outputs)
             self.ready[hello.node] = hello.ready
-            for topic in hello.outputs:  # a suite topic: counted from zero (others are outsiders')
-                self.counts.setdefault(topic, 0)
 
     def _check_ready(self) -> None:
         """Start once every participant is there and matched, the `wait_for` nodes (the recorder)
         listen, and that has held for half a second of wall time."""
         clock_readers = {i.node_name for i in self.node.get_subscriptions_info_by_topic("/clock")}
-        missing = sorted(self.expected - set(self.ready)) + sorted(n for n, r in self.ready.items() if not r)
+        missing = sorted(self.expected_names - set(self.ready)) + sorted(n for n, r in self.ready.items() if not r)
         missing += sorted(set(self.wait_for) - clock_readers)
         missing += unmatched(self.node, self.inbox.subs, {**self.outputs, **{tick_topic(n): p for n, p in self.tick_pubs.items()}})
         self._stable = 0 if missing else self._stable + 1
@@ -299,9 +318,9 @@ class LockstepCoordinator:
             self.node.get_logger().info(f"lockstep: waiting for {', '.join(dict.fromkeys(missing))}")
         if self._stable >= 10:
             self._timer.cancel()
-            self.node.get_logger().info(f"lockstep: {len(self.expected)} participant(s) ready; stepping")
-            for topic in self.outputs:
-                self.counts.setdefault(topic, 0)
+            self.node.get_logger().info(f"lockstep: {len(self.expected_names)} participant(s) ready; stepping")
+            self.owned = absolute(t for ts in self.writes.values() for t in ts)
+            self.inbox.outside.owned = self.owned
             self._wall0 = time.monotonic()
             self.waiting = set()
             self._run()
@@ -311,12 +330,19 @@ class LockstepCoordinator:
             self.node.get_logger().warning(f"lockstep: step {self.step} still waits for {', '.join(sorted(self.waiting))}")
 
     def _publish(self, messages: list[Message]) -> None:
+        """The simulator's messages; those a participant reads are named for its next tick."""
         for m in messages:
             pub = self.outputs.get(m.topic)
-            if pub is not None:
-                data = self.sequencer.number(m.data) if isinstance(m.data, Event) else m.data
-                pub.publish(self.specs[m.topic].encode(data, m.stamp))
-                self.counts[m.topic] = self.counts.get(m.topic, 0) + 1
+            if pub is None:
+                continue
+            data = self.sequencer.number(m.data) if isinstance(m.data, Event) else m.data
+            msg = self.specs[m.topic].encode(data, m.stamp)
+            if m.topic in self.expected.readers:
+                raw = serialize_message(msg)
+                pub.publish(raw)
+                self.expected.sent(m.topic, [digest(raw)])
+            else:
+                pub.publish(msg)
 
     def _run(self) -> None:
         """Step until a step needs acknowledgements."""
@@ -326,9 +352,11 @@ class LockstepCoordinator:
             acting = self.schedule.acting(k)
             if acting:
                 step_ns = self.schedule.step_ns
-                tick = String(data=Tick(k, k * step_ns, step_ns, self.counts).to_json())
                 for name in acting:
-                    self.tick_pubs[name].publish(tick)
+                    inputs = self.schedule.participants[name].inputs
+                    owned = sorted(t for t in inputs if "/" + t.lstrip("/") in self.owned)
+                    tick = Tick(k, k * step_ns, step_ns, self.expected.take(name), owned)
+                    self.tick_pubs[name].publish(String(data=tick.to_json()))
                 self.step, self.waiting, self._since = k, set(acting) - self.observers, time.monotonic()
                 if self.waiting:
                     return
@@ -338,21 +366,26 @@ class LockstepCoordinator:
         ack = _parse(self.node, Ack.from_json, msg)
         if ack is None or self.waiting is None or ack.step != self.step or ack.node not in self.waiting:
             return
-        for topic, n in ack.sent.items():
-            self.counts[topic] = self.counts.get(topic, 0) + n
-        self.schedule.published(ack.node, ack.sent)
+        for topic, names in ack.sent.items():
+            self.expected.sent(topic, names)
+            if topic in self.handlers:
+                self.own.setdefault(topic, []).extend(names)
+        self.schedule.published(ack.node, [t for t, names in ack.sent.items() if names])
         self.waiting.discard(ack.node)
         if not self.waiting:
             self._advance()
             self._run()
 
     def _advance(self) -> None:
-        """Apply every command announced (and any from outside), keep below the real-time factor, step."""
-        self.inbox.fill(self.counts)
+        """Apply every command announced (and those from outside the rule lets through), keep below
+        the real-time factor, step."""
+        self.inbox.fill(self.own)
         now = self.sim.sim.time
         for topic in self.handlers:
-            for m in self.inbox.pop(topic)[0]:
+            for m in self.inbox.pop(topic, self.own.get(topic, ()), now):
                 handle(self.node, topic, self.handlers[topic], m.data, now)
+        self.own = {}
+        self._publish(self.report.events(self.inbox, now))
         ahead = self.sim.sim.time / self.rtf - (time.monotonic() - self._wall0)
         if ahead > 0:
             time.sleep(ahead)

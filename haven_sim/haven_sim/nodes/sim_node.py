@@ -49,6 +49,7 @@ class SimNode(ComponentNode):
                 config.real_time_factor,
                 self._specs,
                 self._pubs,
+                self.lockstep_params,
             )
             cap = "as fast as they go" if config.real_time_factor >= UNCAPPED_RTF else f"at most {config.real_time_factor:g}x real time"
             pace = f"lockstep with {', '.join(config.lockstep_participants) or 'no participants'}, {cap}"

@@ -30,18 +30,21 @@ from haven_sim.common.params import param
 from haven_sim.runtime.component import Component, Message, due, period_ns
 
 UNCAPPED_RTF = 1e6  # a lockstep real-time factor this high means "as fast as the participants go"
-MAX_COUNT = 2**40  # more messages on one topic than any trial publishes: a count beyond is forged
+MAX_DIGESTS = 100_000  # more messages announced in one tick or ack than any step makes: refused as forged
 
 
 @dataclass(frozen=True)
 class LockstepParams:
     lockstep: bool = param(False, "step with the simulator's lockstep clock (haven run sets it for simulated participants)")
+    lockstep_open: tuple[str, ...] = param(
+        (), "topics the suite writes on which messages from outside are still taken on the lockstep clock (haven run --allow)"
+    )
 
 
 # -- the protocol's messages (JSON strings on /haven/lockstep/*), checked as any input is ----------
 def _load(text: str, what: str) -> dict[str, Any]:
     try:
-        d = json.loads(text) if len(text) <= 65536 else None
+        d = json.loads(text) if len(text) <= 1 << 20 else None
     except (ValueError, RecursionError):
         d = None
     if not isinstance(d, dict):
@@ -58,13 +61,12 @@ def _int(d: Mapping[str, Any], key: str, what: str, optional: bool = False) -> i
     return v
 
 
-def _counts(d: Mapping[str, Any], key: str, what: str) -> dict[str, int]:
+def _digests(d: Mapping[str, Any], key: str, what: str) -> dict[str, list[str]]:
     v = d.get(key)
-    if not isinstance(v, dict) or not all(
-        isinstance(t, str) and not isinstance(n, bool) and isinstance(n, int) and 0 <= n <= MAX_COUNT for t, n in v.items()
-    ):
-        raise ValueError(f"lockstep {what}: {key} must map topics to message counts, got {str(v)[:40]}")
-    return dict(v)
+    if isinstance(v, dict) and all(isinstance(t, str) and isinstance(ds, list) and all(isinstance(x, str) for x in ds) for t, ds in v.items()):
+        if sum(len(ds) for ds in v.values()) <= MAX_DIGESTS:
+            return {t: list(ds) for t, ds in v.items()}
+    raise ValueError(f"lockstep {what}: {key} must map topics to message digests, got {str(v)[:40]}")
 
 
 def _names(d: Mapping[str, Any], key: str, what: str) -> list[str]:
@@ -83,12 +85,15 @@ def _name(d: Mapping[str, Any], what: str) -> str:
 
 @dataclass(frozen=True)
 class Tick:
-    """Coordinator -> participant: act at `step` (time `t_ns`), having received `counts`."""
+    """Coordinator -> one participant: act at `step` (time `t_ns`), having received the suite's
+    messages `expect` names (digests per topic, `runtime.suite_messages`); `owned`: its inputs
+    that the suite writes."""
 
     step: int
     t_ns: int
     step_ns: int
-    counts: dict[str, int]
+    expect: dict[str, list[str]]
+    owned: list[str]
 
     def to_json(self) -> str:
         return json.dumps(asdict(self))
@@ -96,7 +101,8 @@ class Tick:
     @staticmethod
     def from_json(text: str) -> Tick:
         d = _load(text, "tick")
-        return Tick(_int(d, "step", "tick"), _int(d, "t_ns", "tick"), max(1, _int(d, "step_ns", "tick")), _counts(d, "counts", "tick"))
+        step, t_ns, step_ns = _int(d, "step", "tick"), _int(d, "t_ns", "tick"), max(1, _int(d, "step_ns", "tick"))
+        return Tick(step, t_ns, step_ns, _digests(d, "expect", "tick"), _names(d, "owned", "tick"))
 
 
 @dataclass(frozen=True)
@@ -125,11 +131,12 @@ class Hello:
 
 @dataclass(frozen=True)
 class Ack:
-    """Participant -> coordinator: done with `step`, having published `sent` messages per topic."""
+    """Participant -> coordinator: done with `step`, having published the messages `sent` names
+    (digests per topic)."""
 
     node: str
     step: int
-    sent: dict[str, int]
+    sent: dict[str, list[str]]
 
     def to_json(self) -> str:
         return json.dumps(asdict(self))
@@ -137,7 +144,7 @@ class Ack:
     @staticmethod
     def from_json(text: str) -> Ack:
         d = _load(text, "ack")
-        return Ack(_name(d, "ack"), _int(d, "step", "ack"), _counts(d, "sent", "ack"))
+        return Ack(_name(d, "ack"), _int(d, "step", "ack"), _digests(d, "sent", "ack"))
 
 
 @dataclass(frozen=True)

@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import argparse
+import difflib
 import math
 import socket
 import sys
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 
+from haven_scenarios.record.outsiders import WRITERS, watched
 from haven_scenarios.run.trial import SEED_MAX
 from haven_scenarios.tools.domains import Claim, claim_domain
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
@@ -64,6 +66,17 @@ def bounded_int(low: int, high: int = INT64_MAX) -> Callable[[str], int]:
 
     parse.__name__ = "integer"  # (argparse names the type in its messages)
     return parse
+
+
+def allowed_topic(text: str) -> str:
+    """An argparse type: a topic the trial rests on (record/outsiders.py), absolute."""
+    topic = "/" + text.lstrip("/")
+    if not watched(topic):
+        known = [t for t in WRITERS if "*" not in t]
+        close = difflib.get_close_matches(topic, known, n=1)
+        hint = f" (did you mean {close[0]}?)" if close else f" (one of {', '.join(sorted(known))}, or /humans/<id>/cmd_vel)"
+        raise argparse.ArgumentTypeError(f"{text[:60]}: not a topic the suite or the metrics read{hint}")
+    return topic
 
 
 def existing_file(text: str) -> str:

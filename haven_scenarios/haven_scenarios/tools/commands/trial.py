@@ -6,7 +6,7 @@ import argparse
 import shutil
 import sys
 import time
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -30,8 +30,7 @@ from haven_scenarios.record.session import (
     write_json,
 )
 from haven_scenarios.run.suite import SuiteConfig, load_suite_config, render
-from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition, scenario_suite
-from haven_scenarios.study.director import any_reader
+from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands import after_trial
@@ -42,20 +41,19 @@ from haven_scenarios.tools.commands.common import (
     SEED,
     add_ros_options,
     add_suite_options,
+    allowed_topic,
     claim,
     environment,
     fail,
     port_free,
     positive,
-    suite_specs,
 )
 from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
+from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
 from haven_scenarios.tools.domains import DomainBusy
-from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
-from haven_scenarios.web.access import TOKEN_ENV, new_token
-from haven_sim.common import topics
+from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor
 from haven_sim.common.events import EventKind
-from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
+from haven_sim.runtime.lockstep import UNCAPPED_RTF
 from haven_viz.cues import CUES, Toggles
 
 
@@ -91,6 +89,15 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     web.add_argument(
         "--web", action="store_true", help="serve the participants' first-person pages and the researcher console (the URLs are printed)"
     )
+    run.add_argument(
+        "--allow",
+        nargs="+",
+        default=[],
+        type=allowed_topic,
+        metavar="TOPIC",
+        help="topics nodes outside the suite may publish on during the trial (e.g. /cmd_vel_teleop for a teleop node, /goal_pose "
+        "for RViz goals); another outside publisher on a topic the trial rests on makes the session not valid",
+    )
     web.add_argument("--host", default="127.0.0.1", help="address the pages are served on (0.0.0.0: the lab network; default: this machine)")
     web.add_argument("--port", type=PORT, default=8088, help="port of the pages (default 8088)")
     web.add_argument("--researcher-start", action="store_true", help="the trial starts on the console's Start, not when the participants are ready")
@@ -119,93 +126,6 @@ def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
             raise ValueError(f"--teleop: no human {unknown[0]!r} in scenario {scenario.name}")
         scenario = replace(scenario, humans=tuple(replace(h, model="teleop") if h.id in ids else h for h in scenario.humans))
     return scenario, toggles, load_suite_config(args.params_file)
-
-
-SESSION_PARAMS_HEADER = """Every node's parameters as run in this session: each node was started with this file, in this
-folder (file names are relative to it, so the folder can move). `haven rerun` on this folder runs
-the session again with them. Parameters are documented in haven_sim/config/haven.yaml."""
-PARTICIPANTS = ("velocity_mux", "planner", "controller", "viz", "scenario")  # the nodes' names
-
-
-@dataclass(frozen=True)
-class SessionPlan:
-    """One recorded trial to run: what `haven run` and `haven rerun` both start."""
-
-    scenario: Scenario
-    toggles: Toggles
-    seed: int
-    participant: str
-    base: SuiteConfig  # the parameter file's configuration (defaults where it is silent)
-    rtf: float | None  # None: 1x with a person, uncapped on the lockstep clock
-    free_running: bool = False  # simulated participants on the free-running clock
-    extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
-    web: WebOptions | None = None  # the pages, with `haven run --web`
-    without: tuple[str, ...] = ()  # our nodes left out: the user runs their own in their place
-
-    @property
-    def lockstep(self) -> bool:
-        """Simulated participants run on the lockstep clock; a person plays on the free-running
-        one, and so does a suite with a node of the user's (it does not take the clock's ticks)."""
-        return not self.free_running and not self.without and not any(h.model == "teleop" for h in self.scenario.humans)
-
-    @property
-    def real_time_factor(self) -> float:
-        return self.rtf if self.rtf is not None else (UNCAPPED_RTF if self.lockstep else 1.0)
-
-    def config(self, folder: Path) -> SuiteConfig:
-        """Every node's parameters as run in a session folder (its own copies of the world and the
-        scenario, named relative to it): the file's, then what the scenario and the run fix."""
-        c = scenario_suite(replace(self.scenario, world_path=WORLD_FILE, source=SCENARIO_FILE), self.seed, self.toggles, self.base)
-        sim = replace(c.sim, real_time_factor=self.real_time_factor)
-        if self.web is not None:  # a first-person camera moves with every physics step, not at 20 Hz
-            sim = replace(sim, humans_rate_hz=max(sim.humans_rate_hz, 1.0 / sim.sim.step_s))
-        if self.lockstep:
-            # The viz is waited for like any participant: the scenario reads what it shows (/haven/cue_state).
-            sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=(), lockstep_wait_for=("recorder",))
-        else:
-            sim = replace(sim, lockstep_participants=(), lockstep_observers=(), lockstep_wait_for=())
-        # The trial starts once the planner listens (somebody's own: whichever node reads /goal_pose).
-        planner = "planner" if "planner" not in self.without else any_reader(topics.GOAL)
-        scenario = replace(c.scenario, wait_for=(planner, "recorder"), hold_start=self.web is not None)
-        return replace(c, sim=sim, scenario=scenario, lockstep=LockstepParams(self.lockstep))
-
-
-def _specs(folder: Path, lockstep: bool, without: tuple[str, ...]) -> list[ProcessSpec]:
-    """The nodes, run in the session folder, each reading its params.yaml (node sections there win
-    over `-p`, so the file holds everything); on the command line only which clock they read."""
-    # On the lockstep clock the ticks carry the time: the participants need no /clock.
-    stepped: dict[str, object] = {"use_sim_time": False} if lockstep else {}
-    suite = suite_specs({"mux": stepped, "planner": stepped, "controller": stepped, "viz": stepped}, PARAMS_FILE, without)
-    recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": "."})
-    scenario_node = node_argv("haven_scenarios.nodes.scenario_node", {"use_sim_time": True, **stepped}, params_file=PARAMS_FILE)
-    specs = [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
-    return [replace(spec, cwd=str(folder.resolve())) for spec in specs]
-
-
-@dataclass(frozen=True)
-class WebOptions:
-    host: str
-    port: int
-    researcher_start: bool = False
-    map_inset: bool = True
-    secret: str = field(default_factory=new_token)  # each page role's token derives from it
-    questionnaires: tuple[str | dict[str, Any], ...] = ()  # asked after the trial: built-in names, Likert mappings
-
-
-def _web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
-    params = {
-        "use_sim_time": True,
-        "scenario": SCENARIO_FILE,
-        "humans": "[" + ",".join(h.id for h in plan.scenario.humans if h.model == "teleop") + "]",
-        "host": web.host,
-        "port": web.port,
-        "participant": plan.participant,
-        "session": folder.name,
-        "researcher_start": web.researcher_start,
-        "map_inset": web.map_inset,
-        **({"questionnaires": after_trial.as_parameter(web.questionnaires)} if web.questionnaires else {}),
-    }
-    return ProcessSpec("web", node_argv("haven_scenarios.nodes.web_node", params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))
 
 
 def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
@@ -252,6 +172,9 @@ def _session_info(plan: SessionPlan) -> dict[str, Any]:
         "clock": "lockstep" if plan.lockstep else "free-running",
         "real_time_factor": None if rtf >= UNCAPPED_RTF else rtf,
         "without": list(plan.without),
+        "allow": list(plan.allow),
+        "suite_nodes": sorted(plan.declared.nodes),
+        "open_topics": list(plan.declared.open),
         **plan.extra,
         "outcome": NO_OUTCOME,
     }
@@ -311,9 +234,9 @@ def _run_claimed(args: argparse.Namespace, plan: SessionPlan, sessions: Path) ->
     )
     started = time.monotonic()
     limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
-    specs = _specs(folder, lockstep, plan.without)
+    specs = specs_of(folder, plan)
     if plan.web is not None:
-        specs.append(_web_spec(plan, plan.web, folder))
+        specs.append(web_spec(plan, plan.web, folder))
     ended, metrics, repaired = None, None, None
     try:
         asked = after_trial.asked(plan.scenario, plan.web)
@@ -384,7 +307,9 @@ def run_cmd(args: argparse.Namespace) -> int:
     except ValueError as e:
         return fail(str(e))
     extra = {"questionnaires": after_trial.names(questionnaires)} if questionnaires else {}
-    plan = SessionPlan(scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, extra, web, tuple(args.without))
+    plan = SessionPlan(
+        scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, extra, web, tuple(args.without), tuple(args.allow)
+    )
     return run_session(args, plan, Path(args.sessions))
 
 
@@ -406,10 +331,11 @@ def rerun_cmd(args: argparse.Namespace) -> int:
     except (TypeError, ValueError) as e:
         return fail(f"{folder / SESSION_FILE}: {e}")
     without = tuple(str(n) for n in info.get("without") or ())  # (their own nodes must run again too)
+    allow = tuple(str(t) for t in info.get("allow") or ())
     try:  # session.json and scenario.yaml are data: their names are checked before a path is built
         participant = check_name(info.get("participant", "sim"), f"{folder / SESSION_FILE}: participant")
         check_name(scenario.name, f"{folder / SCENARIO_FILE}: name")
     except ValueError as e:
         return fail(str(e))
-    plan = SessionPlan(scenario, toggles, seed, participant, base, rtf, free, {"rerun_of": folder.name}, without=without)
+    plan = SessionPlan(scenario, toggles, seed, participant, base, rtf, free, {"rerun_of": folder.name}, without=without, allow=allow)
     return run_session(args, plan, Path(args.sessions) if args.sessions else folder.parent)

@@ -1,0 +1,125 @@
+"""What one recorded trial runs: `SessionPlan` (the scenario, condition, seed, participant,
+parameters, clock and who is in the suite) and the node processes it starts; `haven run` and
+`haven rerun` both make one."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any
+
+from haven_scenarios.record.outsiders import Declared, open_topics, suite_nodes
+from haven_scenarios.record.session import PARAMS_FILE, SCENARIO_FILE, WORLD_FILE
+from haven_scenarios.run.suite import SuiteConfig
+from haven_scenarios.run.trial import scenario_suite
+from haven_scenarios.study.director import any_reader
+from haven_scenarios.study.scenario import Scenario
+from haven_scenarios.tools.commands import after_trial
+from haven_scenarios.tools.commands.common import NODE_NAMES, suite_specs
+from haven_scenarios.tools.supervisor import ProcessSpec, node_argv
+from haven_scenarios.web.access import TOKEN_ENV, new_token
+from haven_sim.common import topics
+from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
+from haven_viz.cues import Toggles
+
+SESSION_PARAMS_HEADER = """Every node's parameters as run in this session: each node was started with this file, in this
+folder (file names are relative to it, so the folder can move). `haven rerun` on this folder runs
+the session again with them. Parameters are documented in haven_sim/config/haven.yaml."""
+PARTICIPANTS = ("velocity_mux", "planner", "controller", "viz", "scenario")  # the nodes' names
+
+
+@dataclass(frozen=True)
+class SessionPlan:
+    """One recorded trial to run: what `haven run` and `haven rerun` both start."""
+
+    scenario: Scenario
+    toggles: Toggles
+    seed: int
+    participant: str
+    base: SuiteConfig  # the parameter file's configuration (defaults where it is silent)
+    rtf: float | None  # None: 1x with a person, uncapped on the lockstep clock
+    free_running: bool = False  # simulated participants on the free-running clock
+    extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
+    web: WebOptions | None = None  # the pages, with `haven run --web`
+    without: tuple[str, ...] = ()  # our nodes left out: the user runs their own in their place
+    allow: tuple[str, ...] = ()  # topics outside nodes may publish on during the trial (record/outsiders.py)
+
+    @property
+    def lockstep(self) -> bool:
+        """Simulated participants run on the lockstep clock; a person plays on the free-running
+        one, and so does a suite with a node of the user's (it does not take the clock's ticks)."""
+        return not self.free_running and not self.without and not any(h.model == "teleop" for h in self.scenario.humans)
+
+    @property
+    def declared(self) -> Declared:
+        """The nodes this run starts and the topics it opens to outside publishers."""
+        without = [NODE_NAMES[n] for n in self.without]
+        teleop = [h.id for h in self.scenario.humans if h.model == "teleop"]
+        return Declared(frozenset(suite_nodes(without, self.web is not None)), open_topics(without, teleop, self.allow), self.lockstep)
+
+    @property
+    def real_time_factor(self) -> float:
+        return self.rtf if self.rtf is not None else (UNCAPPED_RTF if self.lockstep else 1.0)
+
+    def config(self, folder: Path) -> SuiteConfig:
+        """Every node's parameters as run in a session folder (its own copies of the world and the
+        scenario, named relative to it): the file's, then what the scenario and the run fix."""
+        c = scenario_suite(replace(self.scenario, world_path=WORLD_FILE, source=SCENARIO_FILE), self.seed, self.toggles, self.base)
+        sim = replace(c.sim, real_time_factor=self.real_time_factor)
+        if self.web is not None:  # a first-person camera moves with every physics step, not at 20 Hz
+            sim = replace(sim, humans_rate_hz=max(sim.humans_rate_hz, 1.0 / sim.sim.step_s))
+        if self.lockstep:
+            # The viz is waited for like any participant: the scenario reads what it shows (/haven/cue_state).
+            sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=(), lockstep_wait_for=("recorder",))
+        else:
+            sim = replace(sim, lockstep_participants=(), lockstep_observers=(), lockstep_wait_for=())
+        # The trial starts once the planner listens (somebody's own: whichever node reads /goal_pose).
+        planner = "planner" if "planner" not in self.without else any_reader(topics.GOAL)
+        scenario = replace(c.scenario, wait_for=(planner, "recorder"), hold_start=self.web is not None)
+        return replace(c, sim=sim, scenario=scenario, lockstep=LockstepParams(self.lockstep, self.allow))
+
+
+def specs_of(folder: Path, plan: SessionPlan) -> list[ProcessSpec]:
+    """The nodes, run in the session folder, each reading its params.yaml (node sections there win
+    over `-p`, so the file holds everything); on the command line only which clock they read."""
+    # On the lockstep clock the ticks carry the time: the participants need no /clock.
+    stepped: dict[str, object] = {"use_sim_time": False} if plan.lockstep else {}
+    suite = suite_specs({"mux": stepped, "planner": stepped, "controller": stepped, "viz": stepped}, PARAMS_FILE, plan.without)
+    declared = plan.declared
+    recorder_params = {
+        "use_sim_time": True,
+        "session_dir": ".",
+        "suite_nodes": sorted(declared.nodes),
+        "open_topics": list(declared.open),
+        "suite_lockstep": plan.lockstep,
+    }
+    recorder = node_argv("haven_scenarios.nodes.recorder", recorder_params)
+    scenario_node = node_argv("haven_scenarios.nodes.scenario_node", {"use_sim_time": True, **stepped}, params_file=PARAMS_FILE)
+    specs = [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
+    return [replace(spec, cwd=str(folder.resolve())) for spec in specs]
+
+
+@dataclass(frozen=True)
+class WebOptions:
+    host: str
+    port: int
+    researcher_start: bool = False
+    map_inset: bool = True
+    secret: str = field(default_factory=new_token)  # each page role's token derives from it
+    questionnaires: tuple[str | dict[str, Any], ...] = ()  # asked after the trial: built-in names, Likert mappings
+
+
+def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
+    params = {
+        "use_sim_time": True,
+        "scenario": SCENARIO_FILE,
+        "humans": "[" + ",".join(h.id for h in plan.scenario.humans if h.model == "teleop") + "]",
+        "host": web.host,
+        "port": web.port,
+        "participant": plan.participant,
+        "session": folder.name,
+        "researcher_start": web.researcher_start,
+        "map_inset": web.map_inset,
+        **({"questionnaires": after_trial.as_parameter(web.questionnaires)} if web.questionnaires else {}),
+    }
+    return ProcessSpec("web", node_argv("haven_scenarios.nodes.web_node", params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))
