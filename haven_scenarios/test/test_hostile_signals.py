@@ -66,7 +66,11 @@ def test_a_child_dies_with_its_supervisor_even_when_the_supervisor_is_killed(tmp
         (["sim", "--domain-id", "300"], "argument --domain-id: must be 0..232, got 300"),
         (["run", "--params-file", "/no/such/params.yaml"], "argument --params-file: /no/such/params.yaml: no such file"),
         (["run", "--params-file", "/dev"], "argument --params-file: /dev: not a regular file"),
-        (["batch", "hallway", "--seed", "-1"], "argument --seed: must be at least 0, got -1"),
+        (["batch", "hallway", "--seed", "-1"], "argument --seed: must be 0..2147483647, got -1"),
+        (["run", "--seed", "1" + "0" * 40], "argument --seed: expected an integer, got '1000000000"),
+        (["run", "--seed", "10000000000"], "argument --seed: must be 0..2147483647, got 10000000000"),
+        (["demo", "--laps", "99999999999999999999"], "argument --laps: must be at least 1, got 99999999999999999999"),
+        (["run", "--allow", "/cmd_vel_telop"], "argument --allow: /cmd_vel_telop: not a topic the suite or the metrics read (did you mean /cmd_vel_teleop?)"),
         (["goto", "1e999", "0"], "argument x: must be a finite number, got 1e999"),
         (["bridge", "--port", "70000"], "argument --port: must be 0..65535, got 70000"),
     ],
@@ -77,6 +81,13 @@ def test_bad_arguments_are_one_line_before_anything_starts(argv, says, capsys):
     err = capsys.readouterr().err
     assert ended.value.code == 2
     assert len(err.strip().splitlines()) == 1 and says in err
+
+
+def test_an_empty_participant_id_is_refused_not_turned_into_sim(tmp_path, capsys):
+    assert main(["run", "--participant", "", "--sessions", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith("haven: error: --participant: must be 1 to 64 letters") and err.count("\n") == 1
+    assert list(tmp_path.iterdir()) == []
 
 
 @pytest.mark.parametrize("command", [["bridge"], ["run", "--web"]])

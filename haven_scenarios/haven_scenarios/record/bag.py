@@ -31,11 +31,11 @@ from rosbags.rosbag2.storage_mcap import McapWriter
 from rosbags.typesys import Stores, get_typestore
 
 from haven_scenarios.record.outsiders import PublisherLog
-from haven_scenarios.record.timeline import Recording
+from haven_scenarios.record.timeline import RECORDED, Recording
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventError
 from haven_sim.common.geometry import Pose2D, Twist2D, checked_pose
-from haven_sim.common.state import RobotState, name_humans
+from haven_sim.common.state import Goal, RobotState, name_humans
 from haven_sim.runtime.component import Message
 from haven_sim.sim.battery import BatteryReading, PowerStatus, checked_percentage
 from haven_viz.cues import CueState
@@ -143,11 +143,13 @@ def _message(topic: str, msg: Any, human_ids: Sequence[str]) -> Message:
     if topic == topics.CUE_STATE:
         stamp, state = CueState.from_json(msg.data)
         return Message(topic, state, stamp)
+    if topic == topics.GOAL:
+        return Message(topic, Goal(_pose(msg.pose), str(msg.header.frame_id)), _stamp(msg))
     e = Event.from_json(msg.data)
     return Message(topic, e, e.stamp)
 
 
-READ = {"/" + t: t for t in (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.PLAN, topics.EVENTS, topics.CUE_STATE)}
+READ = {"/" + t: t for t in RECORDED}
 
 
 def read_messages(bag: Path, human_ids: Sequence[str] = ()) -> Iterator[Message]:

@@ -17,11 +17,14 @@ from haven_scenarios.record.outsiders import PublisherLog
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import FloatArray, Pose2D
-from haven_sim.common.state import HumanPoses, RobotState
+from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.runtime.component import Message
 from haven_viz.cues import CueState, Toggles
 
 GRID_S = 0.02  # the physics step: /odom comes every step
+# The topics a recording holds for the metrics and the validity checks (read from a bag, or observed
+# in batch mode).
+RECORDED = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, topics.PLAN, topics.EVENTS, topics.GOAL)
 
 
 @dataclass
@@ -31,6 +34,7 @@ class Recording:
     battery: list[tuple[float, float]] = field(default_factory=list)
     cues: list[tuple[float, CueState]] = field(default_factory=list)
     plans: list[tuple[float, list[Pose2D]]] = field(default_factory=list)
+    goals: list[tuple[float, Goal]] = field(default_factory=list)
     events: list[Event] = field(default_factory=list)
     lost: dict[str, int] = field(default_factory=dict)  # topic -> messages the recorder reported lost
     publishers: PublisherLog | None = None  # who published what, as the recorder saw it (None: not kept)
@@ -49,6 +53,8 @@ class Recording:
             self.plans.append((m.stamp, list(m.data)))
         elif m.topic == topics.EVENTS:
             self.events.append(m.data)
+        elif m.topic == topics.GOAL:
+            self.goals.append((m.stamp, m.data))
 
     def first(self, kind: EventKind, **match: object) -> Event | None:
         for e in sorted(self.events, key=lambda e: e.stamp):

@@ -2,20 +2,22 @@
 
 Checked on the recording itself: /odom comes every physics step and /humans at a fixed rate, so
 their header stamps show every missing message and every gap, a late start included; events carry a sequence number per
-source (`seq`), so a missing one shows too; the recorder notes every message DDS reports lost,
+source (`seq`), so a missing one shows too, and the planner's and the scenario's name each /plan and
+/goal_pose they publish, so a missing plan or goal shows; the recorder notes every message DDS reports lost,
 and a loss on a topic the metrics read counts; a trial must have ended with `trial_end`; and no
 publisher from outside the suite may have been there while it ran (`record/outsiders.py`).
 """
 
 from __future__ import annotations
 
+from collections import Counter
 from typing import Any
 
 import numpy as np
 
 from haven_scenarios.record.outsiders import METRIC_TOPICS, Declared, judge
 from haven_scenarios.record.timeline import Recording
-from haven_sim.common.events import EventKind
+from haven_sim.common.events import PLAN_POSES, EventKind, Source
 
 MIN_COVERAGE = 0.99
 MAX_GAP_S = 0.1
@@ -41,6 +43,27 @@ def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list
     return out
 
 
+def _sent_but_not_recorded(rec: Recording, window: tuple[float, float]) -> list[str]:
+    """Every /plan the planner's events say it published (`plan_poses`) and every /goal_pose the
+    scenario's say it sent (`goal_sent`) must be in the recording, at the event's stamp."""
+    t0, t1 = window[0] - MAX_GAP_S, window[1] + 1e-6
+    plans = Counter((round(s, 3), len(p)) for s, p in rec.plans)
+    goals = Counter(round(s, 3) for s, _ in rec.goals)
+    missing_plans = missing_goals = 0
+    for e in rec.events:
+        if not t0 <= e.stamp <= t1:
+            continue
+        if e.source == Source.PLANNER and isinstance(e.get(PLAN_POSES), int):
+            key = (round(e.stamp, 3), e[PLAN_POSES])
+            missing_plans += plans[key] == 0
+            plans[key] -= 1
+        elif e.kind is EventKind.GOAL_SENT:
+            missing_goals += goals[round(e.stamp, 3)] == 0
+            goals[round(e.stamp, 3)] -= 1
+    out = [f"/plan: {missing_plans} of the planner's plans not recorded"] if missing_plans else []
+    return out + ([f"/goal_pose: {missing_goals} of the scenario's goals not recorded"] if missing_goals else [])
+
+
 def check(rec: Recording, window: tuple[float, float] | None, declared: Declared | None = None) -> dict[str, Any]:
     """`declared`: what the run said of itself (session.json), to judge the publishers the recorder
     saw (record/outsiders.py); None: nothing to judge (batch mode, sessions from before)."""
@@ -58,6 +81,8 @@ def check(rec: Recording, window: tuple[float, float] | None, declared: Declared
     reasons += [f"{topic}: {n} message(s) lost before the recorder read them" for topic, n in sorted(lost.items())]
     if rec.first(EventKind.TRIAL_END) is None:
         reasons.append("no trial_end recorded")
+    if window is not None:
+        reasons += _sent_but_not_recorded(rec, window)
     seqs: dict[str, list[int]] = {}
     for e in rec.events:
         if isinstance(e.get("seq"), int):

@@ -15,12 +15,11 @@ from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 from haven_scenarios.record.metrics import compute
-from haven_scenarios.record.timeline import Recording
+from haven_scenarios.record.timeline import RECORDED, Recording
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.study.director import TrialDirector
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario
-from haven_sim.common import topics
 from haven_sim.nav.controller import ControllerComponent
 from haven_sim.nav.mux import MuxComponent
 from haven_sim.nav.planning import PlannerComponent, world_lanes
@@ -94,8 +93,7 @@ class Trial:
             self.director,
         ]
         self.recording = Recording()
-        recorded = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, topics.PLAN, topics.EVENTS)
-        self.loop = InProcessLoop(self.sim, components, [self.recording.add], recorded, delay)
+        self.loop = InProcessLoop(self.sim, components, [self.recording.add], RECORDED, delay)
 
     def run(self) -> TrialResult:
         step_s = self.sim.config.sim.step_s

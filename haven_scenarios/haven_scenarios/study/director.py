@@ -24,7 +24,7 @@ from haven_scenarios.study.perception import Percept, Sight, perceive
 from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules, TrialCommand, TrialState
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import topics
-from haven_sim.common.events import Event, EventKind, Source, event
+from haven_sim.common.events import GOAL_POSE, Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
@@ -288,6 +288,8 @@ class TrialDirector:
             if mission.current is not None and mission.phase is Phase.GOING and self.scenario.kind == "retrieval":
                 self.gems.robot_target = mission.current.id
             out.append(Message(topics.GOAL, Goal(m.goal), now))
+            # (the study log names every goal: the validity check finds each in a recording by it)
+            out.append(self._event(EventKind.GOAL_SENT, now, **{GOAL_POSE: [round(m.goal.x, 3), round(m.goal.y, 3)]}))
         return out
 
     def interrupt(self) -> list[Message]:

@@ -46,6 +46,7 @@ class EventKind(StrEnum):
     # scenario and mission executive
     TRIAL_START = "trial_start"
     TARGET_SELECTED = "target_selected"
+    GOAL_SENT = "goal_sent"  # goal: [x, y] published on /goal_pose at this stamp
     GEM_COLLECTED = "gem_collected"  # gem, by
     DWELL_STARTED = "dwell_started"
     DWELL_RESET = "dwell_reset"
@@ -96,6 +97,8 @@ REQUIRED: dict[EventKind, tuple[str, ...]] = {
     EventKind.QUESTIONNAIRE_ANSWERED: ("by", "questionnaire", "scores"),
 }
 _RESERVED = ("stamp", "source", "type")
+PLAN_POSES = "plan_poses"  # on the planner's event that goes with a /plan: how many poses it has
+GOAL_POSE = "goal"  # on `goal_sent`: [x, y] of the /goal_pose that goes with it
 _KINDS = frozenset(k.value for k in EventKind)
 
 

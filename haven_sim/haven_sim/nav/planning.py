@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from haven_sim.common import topics
-from haven_sim.common.events import EventKind, Source, event
+from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
@@ -166,7 +166,12 @@ class PlannerComponent:
 
     @staticmethod
     def _messages(out: NavOutput, now: float) -> list[Message]:
-        msgs = [Message(topics.EVENTS, e, now) for e in out.events]
+        """The events, the first of them tagged with the poses of the /plan that goes with it
+        (`plan_poses`: the validity check finds each plan in a recording by it)."""
+        events = list(out.events)
+        if out.path is not None and events:
+            events[0] = replace(events[0], data={**events[0].data, PLAN_POSES: len(out.path)})
+        msgs = [Message(topics.EVENTS, e, now) for e in events]
         if out.path is not None:
             msgs.append(Message(topics.PLAN, out.path, now))
         if out.waiting is not None:
