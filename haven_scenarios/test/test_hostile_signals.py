@@ -70,7 +70,7 @@ def test_a_child_dies_with_its_supervisor_even_when_the_supervisor_is_killed(tmp
         (["run", "--seed", "1" + "0" * 40], "argument --seed: expected an integer, got '1000000000"),
         (["run", "--seed", "10000000000"], "argument --seed: must be 0..2147483647, got 10000000000"),
         (["demo", "--laps", "99999999999999999999"], "argument --laps: must be at least 1, got 99999999999999999999"),
-        (["run", "--allow", "/cmd_vel_telop"], "argument --allow: /cmd_vel_telop: not a topic the suite or the metrics read (did you mean /cmd_vel_teleop?)"),
+        (["run", "--allow", "/cmd_vel_telop"], "--allow: /cmd_vel_telop: not a topic the suite or the metrics read (did you mean /cmd_vel_teleop?)"),
         (["goto", "1e999", "0"], "argument x: must be a finite number, got 1e999"),
         (["bridge", "--port", "70000"], "argument --port: must be 0..65535, got 70000"),
     ],

@@ -111,10 +111,10 @@ def test_a_recorded_trial_survives_every_hostile_message_and_is_scored(ros, tmp_
 
 
 def test_a_lockstep_trial_still_completes_when_another_node_sends_unreadable_messages_on_the_suites_topics(ros, tmp_path):
-    """The lockstep clock counts the suite's messages on one-writer topics (/goal_pose, /plan,
-    /odom): another writer's messages that no node can read must not be counted as the suite's (a
-    participant would then wait for ever for the suite's next goal). (Another node's valid goals
-    are another matter: they preempt the mission's, as a goal from RViz would.)"""
+    """The lockstep clock names the suite's messages on its topics (/goal_pose, /plan, /odom) by
+    digest: another writer's messages, readable or not, must never be taken for the suite's (a
+    participant would then wait for ever for the suite's next goal); they are ignored and counted
+    (test_ros_isolation.py floods valid goals)."""
     decoders = {"/goal_pose": conv.goal_from_msg, "/plan": conv.path_from_msg, "/odom": conv.odometry_from_msg}
 
     def unreadable(topic, msg):

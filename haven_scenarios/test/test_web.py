@@ -7,8 +7,10 @@ import http.client
 import json
 import shutil
 import socket
+import struct
 import subprocess
 import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -17,8 +19,8 @@ from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.web.access import CONSOLE, READY, role_token, roles, route, token_of, token_ok, urls
 from haven_scenarios.web.front_door import STATIC, FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config
-from haven_scenarios.web.wizard import StartGate, Wizard
-from haven_sim.common.events import EventKind
+from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS, StartGate, Wizard
+from haven_sim.common.events import MAX_EVENT_BYTES, EventKind
 from haven_sim.common.geometry import Twist2D
 
 WEB = Path(__file__).resolve().parents[1] / "web"
@@ -152,6 +154,72 @@ def test_a_socket_with_the_token_is_passed_through_byte_for_byte(door):
         assert s.recv(4096) == b"FRAME BYTES"
     assert backend.handshake.startswith(b"GET / HTTP/1.1\r\n")
     assert b"Sec-WebSocket-Protocol: foxglove.sdk.v1" in backend.handshake and b"haven_token" not in backend.handshake
+
+
+def test_clients_that_leave_mid_request_or_send_their_headers_slowly_cost_no_traceback(capfd):
+    backend = _Backend()
+    before = threading.active_count()
+    d = FrontDoor("127.0.0.1", 0, SECRET, {"h1": backend.port, CONSOLE: backend.port}, lambda role: {}, request_timeout_s=0.3)
+    d.start()
+    try:
+        for k in range(60):  # half a request, then gone (the reply meets a closed socket), or a reset
+            with socket.create_connection(("127.0.0.1", d.port), timeout=5) as s:
+                s.sendall(b"GET /console HTTP/1.1\r\nHost: x\r\n" + (b"\r\n" if k % 2 else b""))
+                if k % 3 == 0:
+                    s.setsockopt(socket.SOL_SOCKET, socket.SO_LINGER, struct.pack("ii", 1, 0))  # RST on close
+        slow = [socket.create_connection(("127.0.0.1", d.port), timeout=5) for _ in range(20)]
+        for s in slow:
+            s.sendall(b"GET /console HTTP/1.1\r\n")  # and never the rest
+        assert _get(d, "/favicon.ico")[0] == 204  # the door still answers everyone else
+        for s in slow:  # each is cut off once its headers are overdue
+            assert s.recv(100) == b""
+            s.close()
+        deadline = time.monotonic() + 30
+        while threading.active_count() > before + 2 and time.monotonic() < deadline:  # (every request's thread has ended)
+            time.sleep(0.01)
+    finally:
+        d.stop()
+    err = capfd.readouterr().err
+    assert "Traceback" not in err and "Error" not in err, err[:2000]
+
+
+def test_a_client_advertising_thousands_of_channels_is_cut_off_after_a_few_and_said_once():
+    """One advertise frame of 10,000 channels from a page with a valid token: the relay asks the
+    role about the first MAX_CHANNELS_PER_CLIENT, ignores the rest at once, tells the clients once;
+    another client of the same role is served as before."""
+    from types import SimpleNamespace
+
+    from haven_scenarios.tools.foxglove_relay import MAX_CHANNELS_PER_CLIENT, FoxgloveRelay, _Listener
+
+    asked, said, statuses = [], [], []
+
+    class Sink:
+        def advertised(self, topic, schema_name):
+            asked.append(topic)
+            return None if topic == "/humans/h1/cmd_vel" else f"may not publish on {topic}"
+
+        def refused_client(self, why):
+            said.append(why)
+
+        def message(self, topic, schema_name, data):
+            pass
+
+    listener = _Listener(FoxgloveRelay(), Sink())
+    listener.server = SimpleNamespace(publish_status=lambda message, level: statuses.append(message))
+    hostile, page = SimpleNamespace(id=1), SimpleNamespace(id=2)
+    for k in range(10_000):
+        listener.on_client_advertise(hostile, SimpleNamespace(id=k, topic=f"/t{k}", schema_name="std_msgs/msg/String"))
+    assert len(asked) == MAX_CHANNELS_PER_CLIENT and len(said) == 1 and len(statuses) == 1
+    listener.on_client_advertise(page, SimpleNamespace(id=0, topic="/humans/h1/cmd_vel", schema_name="geometry_msgs/msg/Twist"))
+    assert listener.accepted[(2, 0)] == ("/humans/h1/cmd_vel", "geometry_msgs/msg/Twist")
+
+
+def test_a_thought_longer_than_the_logs_limit_is_refused_with_the_limit():
+    w = Wizard()
+    with pytest.raises(ValueError, match=f"at most {MAX_THOUGHT_CHARS}"):
+        w.thought("x" * (MAX_THOUGHT_CHARS + 1), 1.0)
+    (e,) = w.thought("\U0001f600" * MAX_THOUGHT_CHARS, 1.0)  # the longest allowed, in the widest escapes, fits an event
+    assert len(e.to_json()) < MAX_EVENT_BYTES
 
 
 def test_the_researchers_driving_and_thought_text_are_events():

@@ -18,7 +18,9 @@ the trial 2.3 s of sim time before /odom reached the recorder)
 (DDS matches each topic on its own; on a busy machine at 10x the streams matched 7 s of sim time
 after the events once). Its publishers keep the last 100 events for it, so none are lost by waiting.
 Without a simulator (nobody publishes the streams) it subscribes after STREAMS_WAIT_S all the same;
-a simulator that is still starting up (a busy machine) is waited for.
+a simulator that is still starting up (a busy machine) is waited for. On the lockstep clock
+(`suite_lockstep`) nothing is held: the simulator takes its first step only once the recorder reads
+every topic the suite publishes without a history to catch up on, and every publisher has matched it.
 
 Log times are sim time (rosbag2's convention on /clock). To align a session with other recordings of
 the study (video, eye tracking, questionnaires), the recorder pairs sim time with the wall clock once
@@ -128,7 +130,7 @@ class Recorder(Node):
             keep_all=True,
             on_lost=self._on_lost,
             batched=True,
-            held=GATED,
+            held=() if lockstep else GATED,  # (on the lockstep clock the simulator waits for the recorder to read everything)
             params=self._declare_wire_params(),
             on_matched=self._watch_publishers,
             catch_up=True,

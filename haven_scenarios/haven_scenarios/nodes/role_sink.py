@@ -24,8 +24,11 @@ class RoleSink:
     def advertised(self, topic: str, schema_name: str) -> str | None:
         refused = self.role.may_publish(topic, schema_name)
         if refused:
-            self.node.get_logger().warning(f"{self.who}: {refused}")
+            self.node.get_logger().warning(f"{self.who}: {refused}", throttle_duration_sec=5.0)
         return refused
+
+    def refused_client(self, why: str) -> None:
+        self.node.get_logger().warning(f"{self.who}: {why}", throttle_duration_sec=5.0)
 
     def message(self, topic: str, schema_name: str, data: bytes) -> None:
         self.forward(topic, data)

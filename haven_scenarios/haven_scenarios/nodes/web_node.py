@@ -26,6 +26,7 @@ import time
 from datetime import datetime, timezone
 from pathlib import Path
 
+from foxglove.websocket import StatusLevel
 from rclpy.node import Node
 from rclpy.serialization import deserialize_message
 from std_msgs.msg import String
@@ -91,11 +92,11 @@ class WebNode(Node):
         self.cues = CueParameters(self)
         self.relay = FoxgloveRelay()
         self.relay.keep(absolute(topics.EVENTS), EVENTS_KEPT)  # a console opened mid-trial shows the whole log
-        ports = {}
+        self.servers = {}
         for name, role in self.roles.items():
             sink = RoleSink(self, role, functools.partial(self.forward, role), self.cues, f"page {name}")
-            server = self.relay.serve("127.0.0.1", 0, f"haven {name}", sink, parameters=role.parameters)
-            ports[name] = int(server.port)
+            self.servers[name] = self.relay.serve("127.0.0.1", 0, f"haven {name}", sink, parameters=role.parameters)
+        ports = {name: int(server.port) for name, server in self.servers.items()}
         self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
         self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__)
@@ -136,7 +137,12 @@ class WebNode(Node):
                 if topic == absolute(topics.CMD_VEL_TELEOP):
                     self._log(self.wizard.drive(conv.twist_from_msg(msg), self.now()))
                 elif topic == absolute(topics.THOUGHT):
-                    self._log(self.wizard.thought(str(msg.data), self.now()))
+                    try:
+                        self._log(self.wizard.thought(str(msg.data), self.now()))
+                    except ValueError as e:  # (said on the console too: the page shows the server's status)
+                        refused(self, topic, e)
+                        self.servers[role.name].publish_status(f"refused: {e}", StatusLevel.Warning)
+                        return
             pub.publish(data)
 
     def _after_trial(self, role: Role, topic: str, data: bytes) -> None:

@@ -15,7 +15,7 @@ capability) and, for the researcher console, set parameters, as a `ClientSink` a
 from __future__ import annotations
 
 import threading
-from collections import deque
+from collections import Counter, deque
 from typing import Any, Protocol
 
 import foxglove
@@ -31,11 +31,17 @@ def msgdef(msgtype: str) -> str:
     return str(text)
 
 
+MAX_CHANNELS_PER_CLIENT = 16  # a page advertises at most 4
+
+
 class ClientSink(Protocol):
     """What a server's clients may send, and where it goes."""
 
     def advertised(self, topic: str, schema_name: str) -> str | None:
         """None to accept a client's channel, else the reason it is refused."""
+
+    def refused_client(self, why: str) -> None:
+        """A client is ignored from now on (one line to say so)."""
 
     def message(self, topic: str, schema_name: str, data: bytes) -> None: ...
 
@@ -48,16 +54,26 @@ class _Listener(ServerListener):
     def __init__(self, relay: FoxgloveRelay, sink: ClientSink | None) -> None:
         self.relay, self.sink = relay, sink
         self.accepted: dict[tuple[int, int], tuple[str, str]] = {}  # (client, its channel) -> topic, type
+        self.advertised: Counter[int] = Counter()  # client -> channels it has advertised
         self.server: Any = None
 
     def on_subscribe(self, client: Client, channel: ChannelView) -> None:
         self.relay.resend_latched(channel.topic)
 
     def on_client_advertise(self, client: Client, channel: ClientChannel) -> None:
+        """A client's channel: accepted or refused as the sink says; beyond MAX_CHANNELS_PER_CLIENT a
+        client's advertisements are ignored at once (said once), so one client's flood of them
+        costs the others nothing; a refusal is said to the clients once per client."""
+        self.advertised[client.id] += 1
+        if self.advertised[client.id] > MAX_CHANNELS_PER_CLIENT:
+            if self.advertised[client.id] == MAX_CHANNELS_PER_CLIENT + 1 and self.sink is not None:
+                self.sink.refused_client(f"client {client.id} advertised more than {MAX_CHANNELS_PER_CLIENT} channels; ignoring the rest")
+            return
         refused = "this server takes no messages" if self.sink is None else self.sink.advertised(channel.topic, channel.schema_name)
         if refused is None:
             self.accepted[(client.id, channel.id)] = (channel.topic, channel.schema_name)
-        elif self.server is not None:
+        elif self.server is not None and (client.id, -1) not in self.accepted:
+            self.accepted[(client.id, -1)] = ("", "")  # (told once: the status goes to every client)
             self.server.publish_status(f"refused: {refused}", StatusLevel.Error)
 
     def on_client_unadvertise(self, client: Client, client_channel_id: int) -> None:

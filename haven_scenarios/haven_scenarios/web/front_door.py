@@ -13,7 +13,9 @@ import json
 import mimetypes
 import selectors
 import socket
+import sys
 import threading
+import time
 from collections.abc import Callable, Mapping
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from importlib import resources
@@ -66,8 +68,35 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
         sel.close()
 
 
+REQUEST_TIMEOUT_S = 10.0  # a request's headers must come within this (a client that sends them slowly is cut off)
+
+
+class _Server(ThreadingHTTPServer):
+    """A client that leaves mid-request (a closed tab, a slow or broken client) is its own business:
+    nothing is said; anything else that fails a request is one line, at most every 10 s."""
+
+    daemon_threads = True
+    said_at = 0.0
+
+    def handle_error(self, request: Any, client_address: Any) -> None:
+        e = sys.exc_info()[1]
+        if isinstance(e, (ConnectionError, TimeoutError)):
+            return
+        if time.monotonic() - self.said_at >= 10.0:
+            self.said_at = time.monotonic()
+            print(f"web: a request from {client_address[0]} failed: {type(e).__name__}: {str(e)[:120]}", file=sys.stderr, flush=True)
+
+
 class FrontDoor:
-    def __init__(self, host: str, port: int, secret: str, backends: Mapping[str, int], config: Callable[[str], Mapping[str, Any]]) -> None:
+    def __init__(
+        self,
+        host: str,
+        port: int,
+        secret: str,
+        backends: Mapping[str, int],
+        config: Callable[[str], Mapping[str, Any]],
+        request_timeout_s: float = REQUEST_TIMEOUT_S,
+    ) -> None:
         """`secret`: the session's (each role's token derives from it); `backends`: role -> its
         Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings."""
         self.tokens = {role: role_token(secret, role) for role in backends}
@@ -76,6 +105,7 @@ class FrontDoor:
 
         class Handler(BaseHTTPRequestHandler):
             server_version = "haven"
+            timeout = request_timeout_s
 
             def log_message(self, format: str, *args: Any) -> None:  # a study's terminal stays quiet
                 pass
@@ -84,10 +114,9 @@ class FrontDoor:
                 door.handle(self)
 
         try:
-            self.httpd = ThreadingHTTPServer((host, port), Handler)
+            self.httpd = _Server((host, port), Handler)
         except OSError as e:  # one line for the user, not a traceback
             raise ValueError(f"cannot serve the study pages on {host}:{port}: {e.strerror}") from None
-        self.httpd.daemon_threads = True
         self.thread = threading.Thread(target=self.httpd.serve_forever, name="front_door", daemon=True)
 
     @property
@@ -149,6 +178,7 @@ class FrontDoor:
         except OSError:
             return FrontDoor._reply(h, 502, b"the relay is not running")
         upstream.settimeout(None)
+        h.connection.settimeout(None)  # (the request timeout was for the headers: a socket may stay quiet)
         for s in (upstream, h.connection):  # small frames both ways: no Nagle delay (40 ms with delayed ACKs)
             s.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
         head = ["GET / HTTP/1.1", *(f"{k}: {v}" for k, v in h.headers.items() if k.lower() != "cookie")]

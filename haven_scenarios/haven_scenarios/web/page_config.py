@@ -15,6 +15,7 @@ from haven_scenarios.study.questionnaires import Questionnaire
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.foxglove_relay import msgdef
 from haven_scenarios.web.access import Role
+from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS
 from haven_sim.common.bodies import EYE_HEIGHT_M, HUMAN_BODY, ROBOT_BODY
 from haven_viz.world_markers import WALL_HEIGHT_M
 
@@ -66,4 +67,5 @@ def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[
         "controls": CONTROLS,
         "questionnaires": [q.to_dict() for q in settings.questionnaires],
         "teleoperated": list(settings.teleoperated),
+        "thought_max_chars": MAX_THOUGHT_CHARS,
     }

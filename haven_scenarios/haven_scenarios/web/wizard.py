@@ -15,6 +15,10 @@ from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Twist2D
 
 BY = "researcher"
+# Longest thought text the console may show: its `intervention` event must fit the study log's
+# MAX_EVENT_BYTES (64 KiB), and 1000 characters are at most 12 KB of JSON however they are written
+# (\\uXXXX escapes); a thought bubble shows a sentence.
+MAX_THOUGHT_CHARS = 1000
 
 
 class Wizard:
@@ -22,6 +26,9 @@ class Wizard:
         self.driving = False
 
     def thought(self, text: str, now: float) -> list[Event]:
+        """ValueError (naming the limit) for a text longer than MAX_THOUGHT_CHARS: it is not shown."""
+        if len(text) > MAX_THOUGHT_CHARS:
+            raise ValueError(f"thought text of {len(text)} characters refused: at most {MAX_THOUGHT_CHARS} (the study log's events hold 64 KiB)")
         return [event(EventKind.INTERVENTION, now, Source.WEB, action="thought", text=text, by=BY)]
 
     def skip_questionnaires(self, now: float) -> list[Event]:

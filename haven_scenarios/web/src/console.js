@@ -155,6 +155,7 @@ window.addEventListener("keydown", (e) => {
 window.addEventListener("keyup", (e) => {
   if (KEYS[e.code]) drive = [0, 0];
 });
+document.getElementById("thought-text").maxLength = cfg.thought_max_chars; // the study log's limit
 document.getElementById("thought-form").addEventListener("submit", (e) => {
   e.preventDefault();
   link.publish("/haven/thought", { data: document.getElementById("thought-text").value });

@@ -59,6 +59,8 @@ class EventKind(StrEnum):
     BATTERY_INSUFFICIENT = "battery_insufficient"
     TASK_DONE = "task_done"  # by
     TRIAL_END = "trial_end"  # reason
+    # any node
+    REQUEST_REFUSED = "request_refused"  # request (parameter | reset), name, reason: somebody asked what a running trial does not allow
     # any node on the lockstep clock (nodes/lockstep.py)
     OUTSIDE_INPUT = "outside_input"  # topic, ignored, taken, dropped: messages from outside the suite since the last one
     INPUT_LOST = "input_lost"  # topic, messages: announced by the suite, never arrived
@@ -92,6 +94,7 @@ REQUIRED: dict[EventKind, tuple[str, ...]] = {
     EventKind.TRIAL_END: ("reason",),
     EventKind.INTERVENTION: ("action",),
     EventKind.OUTSIDE_INPUT: ("topic",),
+    EventKind.REQUEST_REFUSED: ("request", "name"),
     EventKind.INPUT_LOST: ("topic", "messages"),
     EventKind.PARTICIPANT_READY: ("by",),
     EventKind.QUESTIONNAIRE_ANSWERED: ("by", "questionnaire", "scores"),

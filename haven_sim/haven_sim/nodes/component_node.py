@@ -24,7 +24,8 @@ from rclpy.qos import DurabilityPolicy
 from rclpy.serialization import serialize_message
 from rclpy.subscription import Subscription
 
-from haven_sim.common.events import Event, Sequencer
+from haven_sim.common import topics
+from haven_sim.common.events import Event, EventKind, Sequencer, event
 from haven_sim.common.params import build, defaults, docs
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import wire
@@ -33,11 +34,14 @@ from haven_sim.nodes.runner import handle, refused
 from haven_sim.nodes.wire import TopicSpec, type_name
 from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import LockstepParams
+from haven_sim.runtime.suite_messages import InputLimit
 
 C = TypeVar("C")
 CATCH_UP_S = 10.0  # wall time after start-up in which a latched reader picks up what latched publishers sent
 CATCH_UP_POLL_S = 0.2  # how often the graph is read for it
 CLOCK_LEAP_S = 60.0  # a jump of the clock this large either way is no simulator's step
+FLOOD_RATE_HZ, FLOOD_BURST = 200.0, 200  # per input topic, sim time: 4x the fastest the suite sends (/odom: 50 Hz)
+ROS_OWN = frozenset({"use_sim_time"})  # declared by rclpy itself: as fixed once the node runs as ours
 
 
 class ComponentNode(Node):
@@ -51,6 +55,11 @@ class ComponentNode(Node):
         self._subs: dict[str, Subscription] = {}
         self._specs: dict[str, TopicSpec] = {}
         self.lockstep: LockstepParticipant | None = None
+        self.deferred: list[Message] = []  # on the lockstep clock: made between ticks, sent with the next (`emit`)
+        self.lockstep_mode = False
+        # On the free-running clock nothing tells another node's messages from the suite's: a flood on
+        # any input (far above any rate the suite sends at) is cut to this, counted and said.
+        self.limit = InputLimit(FLOOD_RATE_HZ, FLOOD_BURST)
         self.sequencer = Sequencer()
         self.component: Component | None = None
         self.add_on_set_parameters_callback(self._check_parameters)
@@ -79,10 +88,28 @@ class ComponentNode(Node):
         return build(cls, values, where=f"{self.get_name()}: parameter ")
 
     def _check_parameters(self, params: list[Parameter]) -> SetParametersResult:
+        """Only `runtime_parameters` (the cue toggles: the study condition) change while a node runs;
+        any other change is refused, said in the log and in a `request_refused` event (the study log
+        shows that somebody tried)."""
         for p in params:
-            if p.name in self._declared and p.name not in self.runtime_parameters:
-                return SetParametersResult(successful=False, reason=f"{p.name} is read at start-up only; restart the node to change it")
+            if (p.name in self._declared or p.name in ROS_OWN) and p.name not in self.runtime_parameters:
+                reason = f"{p.name} is read at start-up only; restart the node to change it"
+                self.get_logger().warning(f"refused to set parameter {reason}", throttle_duration_sec=2.0)
+                self.emit([self.refused_request("parameter", p.name, reason)])
+                return SetParametersResult(successful=False, reason=reason)
         return SetParametersResult(successful=True)
+
+    def refused_request(self, what: str, name: str, reason: str) -> Message:
+        now = self.now()
+        return Message(topics.EVENTS, event(EventKind.REQUEST_REFUSED, now, self.get_name(), request=what, name=name, reason=reason), now)
+
+    def emit(self, messages: Sequence[Message]) -> None:
+        """What the node makes between its inputs (a toggled cue, a refused request): published now,
+        or on the lockstep clock with its next tick, so that it is announced like the rest."""
+        if self.lockstep_mode:
+            self.deferred += messages
+        else:
+            self.publish(messages)
 
     # -- wire ------------------------------------------------------------------------------------
     def wire(self, component: Component, specs: Mapping[str, TopicSpec], participant: bool = True) -> None:
@@ -99,12 +126,16 @@ class ComponentNode(Node):
         self.lockstep_mode = self.lockstep_params.lockstep
         if self.lockstep_mode:  # (the simulator, which runs the clock, reads its inputs itself)
             if participant:
-                self.lockstep = LockstepParticipant(self, component, self._specs, self.publish, self._pubs, self.lockstep_params)
+                self.lockstep = LockstepParticipant(self, component, self._specs, self.publish, self._pubs, self.lockstep_params, self.deferred)
             return
         for topic, handler in component.handlers().items():
             spec = self._specs[topic]
 
             def on_message(msg: Any, topic: str = topic, spec: TopicSpec = spec, handler: Any = handler) -> None:
+                if not self.limit.admit(topic, (msg,), self.now()):
+                    n, name = self.limit.dropped[topic], self.resolve_topic_name(topic)
+                    self.get_logger().warning(f"{name}: more than {FLOOD_RATE_HZ:g} messages a second: {n} dropped so far", throttle_duration_sec=5.0)
+                    return
                 try:
                     data = spec.decode(msg)
                 except ValueError as e:

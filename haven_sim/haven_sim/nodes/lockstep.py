@@ -209,8 +209,10 @@ class LockstepParticipant:
         publish: Callable[[list[Message], bool], list[tuple[str, bytes]]],
         outputs: Mapping[str, Publisher],
         params: LockstepParams,
+        deferred: list[Message],
     ) -> None:
-        self.node, self.component, self.publish, self.outputs = node, component, publish, outputs
+        """`deferred`: what the node made between ticks (sent with the next)."""
+        self.node, self.component, self.publish, self.outputs, self.deferred = node, component, publish, outputs, deferred
         self.info = ParticipantInfo.of(component)
         self.handlers = dict(component.handlers())
         self.rank = {t: i for i, t in enumerate(self.handlers)}
@@ -218,15 +220,16 @@ class LockstepParticipant:
         self.report = OutsideReport(component.name)
         self.ack_pub = node.create_publisher(String, ACK, CONTROL)
         self.hello_pub = node.create_publisher(String, HELLO, ANNOUNCE)
-        self._ready: bool | None = None
+        self._said: tuple[bool, dict[str, int]] | None = None
         self._ticked = False
         self._since = time.monotonic()
         node.create_subscription(String, tick_topic(component.name), self._on_tick, CONTROL)
         node.create_timer(0.1, self._announce, clock=STEADY)
 
     def _announce(self) -> None:
-        """Say hello, and whether every reader and writer of our topics that the graph shows has
-        matched ours (re-said when that changes, until the first tick)."""
+        """Say hello, whether every reader and writer of our topics that the graph shows has
+        matched ours, and how many readers each publisher has matched (re-said when that changes,
+        until the first tick)."""
         if self._ticked:
             return
         waiting = unmatched(self.node, self.inbox.subs, self.outputs)
@@ -234,9 +237,10 @@ class LockstepParticipant:
         if not ready and time.monotonic() - self._since > 5.0:
             self._since = time.monotonic()
             self.node.get_logger().info(f"lockstep: waiting for {', '.join(waiting)} to match")
-        if ready != self._ready:
-            self._ready = ready
-            hello = Hello(self.component.name, self.info.period_ns, sorted(self.info.inputs), sorted(self.outputs), ready)
+        matched = {t: pub.get_subscription_count() for t, pub in self.outputs.items()}
+        if (ready, matched) != self._said:
+            self._said = (ready, matched)
+            hello = Hello(self.component.name, self.info.period_ns, sorted(self.info.inputs), sorted(self.outputs), ready, matched)
             self.hello_pub.publish(String(data=hello.to_json()))
 
     def _on_tick(self, msg: String) -> None:
@@ -255,7 +259,8 @@ class LockstepParticipant:
             out += handle(self.node, m.topic, self.handlers[m.topic], m.data, now)
         if self.info.period_ns is not None and due(tick.step, tick.step_ns, self.info.period_ns):
             out += self.component.tick(now)
-        out += self.report.events(self.inbox, now)
+        out += self.report.events(self.inbox, now) + self.deferred
+        self.deferred.clear()
         sent = self.publish(out, True)
         self.ack_pub.publish(String(data=Ack(self.component.name, tick.step, digests(sent)).to_json()))
 
@@ -275,8 +280,10 @@ class LockstepCoordinator:
         specs: Mapping[str, TopicSpec],
         outputs: Mapping[str, Publisher],
         params: LockstepParams,
+        deferred: list[Message],
     ) -> None:
-        self.node, self.sim, self.specs, self.outputs = node, sim, specs, outputs
+        """`deferred`: what the node made between steps (sent before the next)."""
+        self.node, self.sim, self.specs, self.outputs, self.deferred = node, sim, specs, outputs, deferred
         self.sequencer = Sequencer()
         self.expected_names, self.observers, self.wait_for, self.rtf = set(participants), set(observers), list(wait_for), real_time_factor
         self.handlers = dict(sim.handlers())
@@ -288,6 +295,7 @@ class LockstepCoordinator:
         self.writes: dict[str, list[str]] = {"": list(outputs)}  # node -> its outputs (the simulator's under "")
         self.owned: frozenset[str] = frozenset()  # every topic the suite writes (known once stepping starts)
         self.ready: dict[str, bool] = {}
+        self.matched: dict[str, dict[str, int]] = {}  # participant -> its publishers' matched readers
         self.waiting: set[str] | None = None  # None until the first step
         self.step = -1
         self._stable, self._since = 0, time.monotonic()
@@ -304,13 +312,20 @@ class LockstepCoordinator:
             self.expected.reads(hello.node, hello.inputs)
             self.writes[hello.node] = list(hello.outputs)
             self.ready[hello.node] = hello.ready
+            self.matched[hello.node] = hello.matched
 
     def _check_ready(self) -> None:
         """Start once every participant is there and matched, the `wait_for` nodes (the recorder)
-        listen, and that has held for half a second of wall time."""
-        clock_readers = {i.node_name for i in self.node.get_subscriptions_info_by_topic("/clock")}
+        read every topic the suite publishes without a history a late reader could catch up on
+        (/odom, /humans, /goal_pose: their first messages are recorded) and each publisher has
+        matched every reader this node sees there, and that has held for half a second of wall time."""
         missing = sorted(self.expected_names - set(self.ready)) + sorted(n for n, r in self.ready.items() if not r)
-        missing += sorted(set(self.wait_for) - clock_readers)
+        writers: dict[str, dict[str, int]] = {"": {t: p.get_subscription_count() for t, p in self.outputs.items()}, **self.matched}
+        for node, matched in writers.items():
+            for topic in (t for t in matched if t in self.specs and self.specs[t].pub_qos.durability != DurabilityPolicy.TRANSIENT_LOCAL):
+                readers = [i.node_name for i in self.node.get_subscriptions_info_by_topic(self.node.resolve_topic_name(topic))]
+                missing += [f"{name} on {topic}" for name in self.wait_for if name not in readers]
+                missing += [f"{node} matching the readers of {topic}"] if matched[topic] < len(readers) else []
         missing += unmatched(self.node, self.inbox.subs, {**self.outputs, **{tick_topic(n): p for n, p in self.tick_pubs.items()}})
         self._stable = 0 if missing else self._stable + 1
         if missing and time.monotonic() - self._since > 5.0:
@@ -385,7 +400,8 @@ class LockstepCoordinator:
             for m in self.inbox.pop(topic, self.own.get(topic, ()), now):
                 handle(self.node, topic, self.handlers[topic], m.data, now)
         self.own = {}
-        self._publish(self.report.events(self.inbox, now))
+        self._publish(self.report.events(self.inbox, now) + self.deferred)
+        self.deferred.clear()
         ahead = self.sim.sim.time / self.rtf - (time.monotonic() - self._wall0)
         if ahead > 0:
             time.sleep(ahead)

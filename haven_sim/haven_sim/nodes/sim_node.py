@@ -50,6 +50,7 @@ class SimNode(ComponentNode):
                 self._specs,
                 self._pubs,
                 self.lockstep_params,
+                self.deferred,
             )
             cap = "as fast as they go" if config.real_time_factor >= UNCAPPED_RTF else f"at most {config.real_time_factor:g}x real time"
             pace = f"lockstep with {', '.join(config.lockstep_participants) or 'no participants'}, {cap}"
@@ -68,6 +69,12 @@ class SimNode(ComponentNode):
             self.publish(self.sim.sense())
 
     def _on_reset(self, request: Trigger.Request, response: Trigger.Response) -> Trigger.Response:
+        if not self.sim.config.reset_allowed:
+            response.success = False
+            response.message = "refused: this simulator runs a recorded trial (haven run); /haven/reset is for haven sim"
+            self.get_logger().warning(f"/haven/reset {response.message}", throttle_duration_sec=2.0)
+            self.emit([self.refused_request("reset", "/haven/reset", response.message)])
+            return response
         self.sim.reset()
         self.publish(self.sim.sense())
         response.success = True

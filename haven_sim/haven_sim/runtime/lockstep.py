@@ -107,13 +107,16 @@ class Tick:
 
 @dataclass(frozen=True)
 class Hello:
-    """Participant -> coordinator: who it is, its period, its topics, whether it has matched."""
+    """Participant -> coordinator: who it is, its period, its topics, whether it has matched, and
+    how many readers each of its publishers has matched (`matched`: the coordinator holds them to
+    the readers it sees, the recorder's among them)."""
 
     node: str
     period_ns: int | None
     inputs: list[str]
     outputs: list[str]
     ready: bool
+    matched: dict[str, int] = field(default_factory=dict)
 
     def to_json(self) -> str:
         return json.dumps(asdict(self))
@@ -124,9 +127,11 @@ class Hello:
         period = _int(d, "period_ns", "hello", optional=True)
         if not isinstance(d.get("ready"), bool):
             raise ValueError(f"lockstep hello: ready must be true or false, got {str(d.get('ready'))[:40]}")
-        return Hello(
-            _name(d, "hello"), None if period < 0 else max(1, period), _names(d, "inputs", "hello"), _names(d, "outputs", "hello"), d["ready"]
-        )
+        matched = d.get("matched", {})
+        if not isinstance(matched, dict) or not all(isinstance(t, str) and type(n) is int and 0 <= n < 1 << 20 for t, n in matched.items()):
+            raise ValueError(f"lockstep hello: matched must map topics to reader counts, got {str(matched)[:40]}")
+        name, inputs, outputs = _name(d, "hello"), _names(d, "inputs", "hello"), _names(d, "outputs", "hello")
+        return Hello(name, None if period < 0 else max(1, period), inputs, outputs, d["ready"], dict(matched))
 
 
 @dataclass(frozen=True)

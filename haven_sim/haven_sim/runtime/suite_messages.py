@@ -22,9 +22,11 @@ import hashlib
 from collections import Counter
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from typing import TypeVar
 
 from haven_sim.common import topics
 
+T = TypeVar("T")
 OUTSIDE_RATE_HZ = 100.0  # outside messages handled per topic per second of sim time (a joystick teleop sends 50)
 OUTSIDE_BURST = 100  # ... and at once after a pause
 
@@ -150,7 +152,7 @@ class InputLimit:
     last: dict[str, float] = field(default_factory=dict)
     dropped: Counter[str] = field(default_factory=Counter)
 
-    def admit(self, topic: str, messages: Sequence[bytes], now: float) -> list[bytes]:
+    def admit(self, topic: str, messages: Sequence[T], now: float) -> list[T]:
         if not messages:
             return []
         elapsed = max(0.0, now - self.last.get(topic, now))

@@ -42,6 +42,7 @@ class SimulatorConfig:
     lockstep_participants: tuple[str, ...] = param((), "with lockstep: the nodes that act on the clock's ticks")
     lockstep_observers: tuple[str, ...] = param((), "with lockstep: participants nobody reads during a tick, not waited for")
     lockstep_wait_for: tuple[str, ...] = param((), "with lockstep: nodes that must listen before the first step (the recorder)")
+    reset_allowed: bool = param(True, "/haven/reset resets the world (haven run turns it off: a recorded trial refuses it, as an event)")
 
     def __post_init__(self) -> None:
         for name in ("real_time_factor", "humans_rate_hz", "battery_rate_hz", "map_resolution_m"):

@@ -50,7 +50,7 @@ class VizNode(ComponentNode):
         if changes:
             for name, on in changes.items():
                 self.get_logger().info(f"{name} {'on' if on else 'off'}")
-            self.publish(self.viz.set_toggles(changes, self.now()))
+            self.emit(self.viz.set_toggles(changes, self.now()))
 
     def _count_viewers(self) -> None:
         """A viewer (or recorder) that joins late must get the markers that have not changed since."""

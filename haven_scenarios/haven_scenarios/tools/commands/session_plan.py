@@ -65,7 +65,7 @@ class SessionPlan:
         """Every node's parameters as run in a session folder (its own copies of the world and the
         scenario, named relative to it): the file's, then what the scenario and the run fix."""
         c = scenario_suite(replace(self.scenario, world_path=WORLD_FILE, source=SCENARIO_FILE), self.seed, self.toggles, self.base)
-        sim = replace(c.sim, real_time_factor=self.real_time_factor)
+        sim = replace(c.sim, real_time_factor=self.real_time_factor, reset_allowed=False)  # (a recorded trial is not reset from outside)
         if self.web is not None:  # a first-person camera moves with every physics step, not at 20 Hz
             sim = replace(sim, humans_rate_hz=max(sim.humans_rate_hz, 1.0 / sim.sim.step_s))
         if self.lockstep:
