@@ -24,7 +24,7 @@ from haven_scenarios.study.scenario import load_scenario
 
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
-NOT_METRICS = ("session", "participant")
+NOT_METRICS = ("session", "participant", "outside_publishers")  # (who else was on the graph: not the trial)
 CROSSING = """name: crossing
 world: small_test
 kind: retrieval

@@ -16,7 +16,7 @@ director starts the trial when the recorder listens to either (the topics it wat
 streams are recorded from the start (with /goal_pose subscribed early, a busy machine once started
 the trial 2.3 s of sim time before /odom reached the recorder)
 (DDS matches each topic on its own; on a busy machine at 10x the streams matched 7 s of sim time
-after the events once). Its publishers keep the last 100 events for it, so none are lost by waiting.
+after the events once). Its publishers keep the last 1000 events for it, so none are lost by waiting.
 Without a simulator (nobody publishes the streams) it subscribes after STREAMS_WAIT_S all the same;
 a simulator that is still starting up (a busy machine) is waited for. On the lockstep clock
 (`suite_lockstep`) nothing is held: the simulator takes its first step only once the recorder reads
@@ -115,6 +115,8 @@ class Recorder(Node):
         self.failed = False  # a write failed (disk full): nothing more is written
         self.mcap = self.bag.path / f"{self.bag.path.name}.mcap"  # (the file rosbags writes)
         self.lost: dict[str, int] = {}
+        self.lost_at: list[tuple[str, int, float]] = []  # (topic, messages, sim time DDS reported it)
+        self.start_stamp: float | None = None
         self.end_mark = folder / END_MARK
         self.end_stamp: float | None = None
         self.reached: set[str] = set()  # streams recorded up to the end
@@ -206,6 +208,7 @@ class Recorder(Node):
         """Counted for the bag's metadata; a warning unless the publisher sends best effort (a
         laser scan), where dropping what a reader cannot take is the contract."""
         self.lost[topic] = self.lost.get(topic, 0) + n
+        self.lost_at.append((topic, n, self.get_clock().now().nanoseconds * 1e-9))
         # (rclpy refuses one call site logging at two severities: two calls)
         text = f"{topic}: {n} message(s) lost before the recorder could read them"
         if best_effort:
@@ -262,6 +265,22 @@ class Recorder(Node):
             self._write_failed(Path(self.events.name), e)
         if event.kind is EventKind.TRIAL_END:
             self.end_stamp = event.stamp
+        elif event.kind is EventKind.TRIAL_START:
+            self.start_stamp = event.stamp
+
+    def _lost_in_trial(self) -> dict[str, int]:
+        """The losses DDS reported once the trial had begun (a message lost during the trial cannot
+        be reported before it was sent; those before are the log's, not the trial's: said only)."""
+        if self.start_stamp is None:
+            return self.lost
+        out: dict[str, int] = {}
+        for topic, n, when in self.lost_at:
+            if when >= self.start_stamp - 1e-6:
+                out[topic] = out.get(topic, 0) + n
+        before = {t: n - out.get(t, 0) for t, n in self.lost.items() if n > out.get(t, 0)}
+        if before:
+            self.get_logger().info(f"lost before the trial began (not the trial's): {before}")
+        return out
 
     def destroy_node(self) -> None:
         """What the readers still hold into the bag, then the bag closed (its footer and
@@ -272,7 +291,7 @@ class Recorder(Node):
                 self.topics.drain()
                 self._pair_clocks()
                 self._watch_publishers()
-                self.bag.close(lost=self.lost, wall_clock=self.clock_pairs, publishers=self.publisher_log.to_json())
+                self.bag.close(lost=self._lost_in_trial(), wall_clock=self.clock_pairs, publishers=self.publisher_log.to_json())
             except SystemExit:
                 pass  # a write failed: said in one line, the bag left as written for the repair
             except OSError as e:

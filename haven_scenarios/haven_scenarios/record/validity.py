@@ -10,6 +10,7 @@ publisher from outside the suite may have been there while it ran (`record/outsi
 
 from __future__ import annotations
 
+import math
 from collections import Counter
 from typing import Any
 
@@ -40,6 +41,24 @@ def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list
     if gaps.max() > MAX_GAP_S + 1e-6:
         at = float(t[int(np.argmax(gaps))] - window[0])
         out.append(f"{name}: a gap of {gaps.max():.2f} s at {at:.1f} s")
+    return out
+
+
+def _missing_events(rec: Recording, window: tuple[float, float] | None) -> list[str]:
+    """Events missing by their per-source `seq`, those that can have been published while the trial
+    ran: a source numbers its events in time order, so the ones missing between two recorded ones
+    came between their stamps (a gap that closes before trial_start is not the trial's)."""
+    start = -math.inf if window is None else window[0] - MAX_GAP_S
+    by_source: dict[str, dict[int, float]] = {}
+    for e in rec.events:
+        if isinstance(e.get("seq"), int):
+            by_source.setdefault(e.source, {})[e["seq"]] = e.stamp
+    out = []
+    for source, stamps in sorted(by_source.items()):
+        seqs = sorted(stamps)
+        missing = sum(b - a - 1 for a, b in zip([0, *seqs], seqs) if b - a > 1 and stamps[b] >= start)
+        if missing:
+            out.append(f"events: {missing} of {source}'s missing")
     return out
 
 
@@ -83,12 +102,5 @@ def check(rec: Recording, window: tuple[float, float] | None, declared: Declared
         reasons.append("no trial_end recorded")
     if window is not None:
         reasons += _sent_but_not_recorded(rec, window)
-    seqs: dict[str, list[int]] = {}
-    for e in rec.events:
-        if isinstance(e.get("seq"), int):
-            seqs.setdefault(e.source, []).append(e["seq"])
-    for source, numbers in sorted(seqs.items()):
-        missing = max(numbers) - len(set(numbers))
-        if missing:
-            reasons.append(f"events: {missing} of {source}'s missing")
+    reasons += _missing_events(rec, window)
     return {"valid": not reasons, "invalid_reasons": reasons, "outside_publishers": "; ".join(noted)}

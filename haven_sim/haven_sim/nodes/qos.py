@@ -37,12 +37,13 @@ CLOCK = RELIABLE
 SENSOR = qos_profile_sensor_data
 # /tf: what tf2_ros broadcasters use (reliable, depth 100); /tf_static is LATCHED.
 TF = QoSProfile(depth=100, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
-# /haven/events: nothing may be dropped on the way to the recorder. Publishers keep their last 100
-# events for readers that match late (DDS discovery can take seconds); the recorder reads with
-# EVENTS_HISTORY and so gets them, other nodes read only what happens from now on (EVENTS).
+# /haven/events: nothing may be dropped on the way to the recorder. Publishers keep their last 1000
+# events for readers that match late (DDS discovery can take seconds; a goal storm before a trial
+# made a planner log more than 100); the recorder reads with EVENTS_HISTORY and so gets them, other
+# nodes read only what happens from now on (EVENTS).
 EVENTS = QoSProfile(depth=100, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 EVENTS_PUB = QoSProfile(
-    depth=100, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
+    depth=1000, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
 )
 EVENTS_HISTORY = EVENTS_PUB
 # Publishers of /plan and /haven/cue_state: latched like LATCHED, but the recorder needs every
