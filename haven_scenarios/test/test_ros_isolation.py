@@ -133,7 +133,7 @@ def test_a_goal_flood_a_reset_and_a_parameter_change_leave_a_lockstep_trial_its_
     ignored = sum(e.get("ignored", 0) for e in events if e["type"] == "outside_input" and e["topic"] == "/goal_pose")
     assert ignored > 100
     refused = {(e["source"], e["request"]) for e in events if e["type"] == "request_refused"}
-    assert ("sim_node", "reset") in refused and ("controller", "parameter") in refused
+    assert ("sim_node", "service") in refused and ("controller", "parameter") in refused
 
 
 def test_an_outside_publisher_on_a_free_running_trial_makes_it_not_valid_unless_allowed(ros, tmp_path):

@@ -60,7 +60,7 @@ class EventKind(StrEnum):
     TASK_DONE = "task_done"  # by
     TRIAL_END = "trial_end"  # reason
     # any node
-    REQUEST_REFUSED = "request_refused"  # request (parameter | reset), name, reason: somebody asked what a running trial does not allow
+    REQUEST_REFUSED = "request_refused"  # request (parameter | service), name, reason: somebody asked what a running trial does not allow
     # any node on the lockstep clock (nodes/lockstep.py)
     OUTSIDE_INPUT = "outside_input"  # topic, ignored, taken, dropped: messages from outside the suite since the last one
     INPUT_LOST = "input_lost"  # topic, messages: announced by the suite, never arrived

@@ -73,7 +73,7 @@ class SimNode(ComponentNode):
             response.success = False
             response.message = "refused: this simulator runs a recorded trial (haven run); /haven/reset is for haven sim"
             self.get_logger().warning(f"/haven/reset {response.message}", throttle_duration_sec=2.0)
-            self.emit([self.refused_request("reset", "/haven/reset", response.message)])
+            self.emit([self.refused_request("service", "/haven/reset", response.message)])
             return response
         self.sim.reset()
         self.publish(self.sim.sense())
