@@ -8,6 +8,7 @@ import json
 import os
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 from independent_scorer import score
@@ -20,29 +21,7 @@ from haven_scenarios.study.scenario import load_scenario
 pytestmark = [pytest.mark.ros, pytest.mark.slow]
 HAVEN = [sys.executable, "-m", "haven_scenarios"]
 
-# A node that sends goals at RATE_HZ for SECONDS once the suite's planner reads /goal_pose (a hostile
-# neighbour, or RViz's "2D Goal Pose" held down).
-FLOOD = """
-import sys, time, rclpy
-from rclpy.node import Node
-from geometry_msgs.msg import PoseStamped
-rate_hz, seconds = float(sys.argv[1]), float(sys.argv[2])
-rclpy.init()
-node = Node("goal_flood")
-pub = node.create_publisher(PoseStamped, "/goal_pose", 10)
-while not any(i.node_name == "planner" for i in node.get_subscriptions_info_by_topic("/goal_pose")):
-    rclpy.spin_once(node, timeout_sec=0.05)
-msg = PoseStamped()
-msg.header.frame_id = "map"
-msg.pose.orientation.w = 1.0
-start, k = time.monotonic(), 0
-while time.monotonic() - start < seconds:
-    msg.pose.position.x, msg.pose.position.y = 1.0 + (k % 7) * 0.3, 1.0 + (k % 5) * 0.3
-    pub.publish(msg)
-    k += 1
-    time.sleep(max(0.0, start + k / rate_hz - time.monotonic()))
-print(f"flood: {k} goals in {time.monotonic() - start:.1f} s", flush=True)
-"""
+FLOOD = str(Path(__file__).resolve().parent / "flood.py")  # goals at a rate, from another node
 
 
 def start(ros, argv, env=None):
@@ -109,7 +88,7 @@ def test_a_goal_flood_a_reset_and_a_parameter_change_leave_a_lockstep_trial_its_
     from std_srvs.srv import Trigger
 
     scenario = crossing(tmp_path)
-    flood = start(ros, [sys.executable, "-c", FLOOD, "1000", "10"])
+    flood = start(ros, [sys.executable, FLOOD, "1000", "10"])
     trial = start(ros, [*HAVEN, "run", str(scenario), "--domain-id", str(ros.domain_id), "--sessions", str(tmp_path / "s")])
     reset = ros.node.create_client(Trigger, "/haven/reset")
     assert reset.wait_for_service(timeout_sec=60)
@@ -144,7 +123,7 @@ def test_an_outside_publisher_on_a_free_running_trial_makes_it_not_valid_unless_
     scenario = tmp_path / "short.yaml"
     scenario.write_text(CROSSING.replace("timeout_s: 120", "timeout_s: 30"))
     for allow, sessions in (([], "s"), (["--allow", "/goal_pose"], "allowed")):
-        flood = start(ros, [sys.executable, "-c", FLOOD, "200", "2"])
+        flood = start(ros, [sys.executable, FLOOD, "200", "2"])
         trial = start(ros, [*HAVEN, "run", str(scenario), "--free-running", "--rtf", "8", "--domain-id", str(ros.domain_id), *allow,
                             "--sessions", str(tmp_path / sessions)])  # fmt: skip
         code, out, err = finish(trial)
