@@ -41,7 +41,7 @@ def trial(scenario: str, domain: int, flood: tuple[float, float] | None) -> dict
         m = json.loads((folder / "metrics.json").read_text())
         events = [json.loads(line) for line in (folder / "events.jsonl").read_text().splitlines()]
     ignored = sum(e.get("ignored", 0) for e in events if e["type"] == "outside_input")
-    return {"exit": r.returncode, "wall_s": wall, "valid": m["valid"], "ignored": ignored, "flood": sent, **{k: m.get(k) for k in SAME}}
+    return {"exit": r.returncode, "wall_s": wall, "valid": m["valid"], "ignored": ignored, "sent": sent, **{k: m.get(k) for k in SAME}}
 
 
 def main() -> None:

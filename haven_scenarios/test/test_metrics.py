@@ -2,17 +2,19 @@
 found (each failed with the index-paired, receive-stamped metrics of the first version)."""
 
 import math
+from dataclasses import replace
 
 import pytest
 
 from haven_scenarios.record.metric_table import METRICS, documented, markdown
 from haven_scenarios.record.metrics import compute, signal_lead_times
+from haven_scenarios.record.outsiders import Declared, PublisherLog, open_topics
 from haven_scenarios.record.timeline import Recording
 from haven_scenarios.record.validity import _stream
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
-from haven_sim.common.state import RobotState
+from haven_sim.common.state import Goal, RobotState
 from haven_sim.runtime.component import Message
 from haven_viz.cues import CueState, Toggles
 
@@ -218,6 +220,50 @@ def test_a_recording_with_lost_messages_is_flagged_not_valid():
     assert "events: 1 of planner's missing" in m["invalid_reasons"]
     assert "/battery_state: 2 message(s) lost before the recorder read them" in m["invalid_reasons"]
     assert not any("/clock" in r for r in m["invalid_reasons"])  # no metric reads /clock
+
+
+def test_a_plan_or_a_goal_the_log_names_but_the_recording_lacks_is_flagged_and_pre_trial_gaps_are_not():
+    rec = straight()
+    plan = [Pose2D(0.0, 0.0, 0.0), Pose2D(5.0, 0.0, 0.0)]
+    events(rec, event(EventKind.PLAN_MADE, 0.2, Source.PLANNER, plan_poses=2), event(EventKind.GOAL_SENT, 0.1, Source.SCENARIO, goal=[5.0, 0.0]))
+    rec.plans, rec.goals = [(0.2, plan)], [(0.1, Goal(Pose2D(5.0, 0.0, 0.0)))]
+    assert compute(rec)["valid"] is True
+    rec.plans, rec.goals = [], []
+    m = compute(rec)
+    assert "/plan: 1 of the planner's plans not recorded" in m["invalid_reasons"]
+    assert "/goal_pose: 1 of the scenario's goals not recorded" in m["invalid_reasons"]
+    # Events the scenario numbered before trial_start went missing (a storm outgrew the history a late
+    # recorder catches up on): not the trial's. One missing inside the trial is.
+    early = straight()
+    mine = sorted((e for e in early.events if e.source == Source.SCENARIO), key=lambda e: e.stamp)
+    early.events = [e for e in early.events if e.source != Source.SCENARIO] + [replace(e, data={**e.data, "seq": 30 + k}) for k, e in enumerate(mine)]
+    assert compute(early)["valid"] is True
+    early.events = [e for e in early.events if e.kind is not EventKind.GEM_COLLECTED or e["gem"] != "g2"]
+    assert any(r.startswith("events: ") and "scenario's missing" in r for r in compute(early)["invalid_reasons"])
+
+
+def test_a_message_the_lockstep_clock_never_got_and_an_outside_publisher_make_a_session_not_valid():
+    rec = straight()
+    events(rec, event(EventKind.INPUT_LOST, 2.0, "controller", topic="/plan", messages=1))
+    assert "/plan: 1 of the suite's message(s) never reached controller on the lockstep clock" in compute(rec)["invalid_reasons"]
+    rec = straight()
+    rec.publishers = PublisherLog()
+    suite = {"/odom": "sim_node", "/goal_pose": "scenario", "/plan": "planner"}
+    for topic, node in suite.items():
+        rec.publishers.observe(topic, [(node, f"gid-{node}")], 0.0)
+    rec.publishers.observe("/goal_pose", [("rviz", "gid-rviz")], 2.0)
+    rec.publishers.observe("/odom", [("sim_node", "gid-second-suite")], 6.0)  # after the trial: not the trial's
+    nodes = frozenset({"recorder", "sim_node", "velocity_mux", "planner", "controller", "viz", "scenario"})
+    free = compute(rec, declared=Declared(nodes))
+    assert free["valid"] is False and free["invalid_reasons"] == [
+        "/goal_pose: published by rviz from outside the suite; allow a topic with `haven run --allow TOPIC` when that input is part of the study"
+    ]
+    lockstep = compute(rec, declared=Declared(nodes, lockstep=True))  # ignored there: noted, still valid
+    assert lockstep["valid"] is True and lockstep["outside_publishers"].startswith("/goal_pose: published by rviz")
+    assert compute(rec, declared=Declared(nodes, open_topics(allow=["/goal_pose"])))["valid"] is True
+    rec.publishers.observe("/odom", [("sim_node", "gid-another-suite")], 3.0)  # a second suite's simulator during the trial
+    m = compute(rec, declared=Declared(nodes, lockstep=True))
+    assert m["valid"] is False and "another HAVEN suite on this ROS domain?" in m["invalid_reasons"][0]
 
 
 def test_a_trial_without_trial_end_is_scored_to_the_last_sample_and_flagged():

@@ -47,8 +47,8 @@ def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list
 def _missing_events(rec: Recording, window: tuple[float, float] | None) -> list[str]:
     """Events missing by their per-source `seq`, those that can have been published while the trial
     ran: a source numbers its events in time order, so the ones missing between two recorded ones
-    came between their stamps (a gap that closes before trial_start is not the trial's)."""
-    start = -math.inf if window is None else window[0] - MAX_GAP_S
+    came between their stamps (a gap that closes at or before trial_start is not the trial's)."""
+    start = -math.inf if window is None else window[0] + 1e-9
     by_source: dict[str, dict[int, float]] = {}
     for e in rec.events:
         if isinstance(e.get("seq"), int):
@@ -56,7 +56,7 @@ def _missing_events(rec: Recording, window: tuple[float, float] | None) -> list[
     out = []
     for source, stamps in sorted(by_source.items()):
         seqs = sorted(stamps)
-        missing = sum(b - a - 1 for a, b in zip([0, *seqs], seqs) if b - a > 1 and stamps[b] >= start)
+        missing = sum(b - a - 1 for a, b in zip([0, *seqs], seqs) if b - a > 1 and stamps[b] > start)
         if missing:
             out.append(f"events: {missing} of {source}'s missing")
     return out
@@ -103,4 +103,9 @@ def check(rec: Recording, window: tuple[float, float] | None, declared: Declared
     if window is not None:
         reasons += _sent_but_not_recorded(rec, window)
     reasons += _missing_events(rec, window)
+    reasons += [
+        f"{e['topic']}: {e['messages']} of the suite's message(s) never reached {e.source} on the lockstep clock"
+        for e in rec.events
+        if e.kind is EventKind.INPUT_LOST and (window is None or window[0] - MAX_GAP_S <= e.stamp <= window[1] + 1e-6)
+    ]
     return {"valid": not reasons, "invalid_reasons": reasons, "outside_publishers": "; ".join(noted)}

@@ -90,13 +90,16 @@ class Queue:
     settle: int = 1  # acts an unannounced message waits before it counts as outside (the coordinator: 0)
     entries: list[Queued] = field(default_factory=list)
     given_up: Counter[str] = field(default_factory=Counter)  # announced, waited for in vain: dropped if they come
+    have: Counter[str] = field(default_factory=Counter)  # the digests queued (kept with the entries: a flood makes many)
 
     def add(self, raw: Iterable[bytes]) -> None:
-        self.entries += [Queued(digest(r), r) for r in raw]
+        new = [Queued(digest(r), r) for r in raw]
+        self.entries += new
+        self.have.update(e.digest for e in new)
 
     def missing(self, expected: Sequence[str]) -> Counter[str]:
         """Announced digests not (yet) in the queue."""
-        return Counter(expected) - Counter(e.digest for e in self.entries)
+        return Counter(expected) - self.have
 
     def give_up(self, missing: Counter[str]) -> None:
         self.given_up += missing
@@ -119,7 +122,7 @@ class Queue:
             else:
                 e.waited += 1
                 kept.append(e)
-        self.entries = kept
+        self.entries, self.have = kept, Counter(e.digest for e in kept)
         return ours, outside
 
     def _split_state(self, newest: str | None) -> tuple[list[bytes], list[bytes]]:
@@ -130,7 +133,7 @@ class Queue:
             ours, outside = [], [e.raw for e in self.entries if not self._late(e)]
         else:
             ours, outside = [self.entries[at].raw], [e.raw for e in self.entries[at + 1 :]]
-        self.entries = []
+        self.entries, self.have = [], Counter()
         return ours, outside
 
     def _late(self, e: Queued) -> bool:
