@@ -23,6 +23,7 @@ bench: setup
 	.venv/bin/python bench/web_wire.py
 	.venv/bin/python bench/web_loop.py
 	.venv/bin/python bench/batch_throughput.py --trials 300 --repeat 1 --dask
+	.venv/bin/python bench/flood.py --runs 3
 
 lock:
 	./scripts/lock.sh

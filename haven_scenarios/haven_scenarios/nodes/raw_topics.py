@@ -29,7 +29,7 @@ from rclpy.subscription import Subscription
 
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import qos, wire
-from haven_sim.nodes.lockstep import take_all, take_all_with_info
+from haven_sim.nodes.lockstep_inbox import take_all, take_all_with_info
 from haven_sim.nodes.wire import type_name
 from haven_viz.nodes.conversions import viz_specs
 
