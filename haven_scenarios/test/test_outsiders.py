@@ -1,0 +1,66 @@
+"""The table of who in the suite writes what (record/outsiders.py) against the components' own
+outputs and the web pages' allow-lists, and the publisher log the recorder keeps."""
+
+from haven_scenarios.record.outsiders import (
+    ALWAYS_OPEN,
+    UNNAMED,
+    WEB,
+    WRITERS,
+    Declared,
+    PublisherLog,
+    open_topics,
+    outsiders,
+    watched,
+    writers,
+)
+from haven_scenarios.run.trial import Trial
+from haven_scenarios.study.scenario import load_scenario
+from haven_scenarios.web.access import ANSWERS, CONSOLE_ROLE, READY, SKIP_QUESTIONNAIRES, participant_role
+
+
+def absolute(topic: str) -> str:
+    return "/" + topic.lstrip("/")
+
+
+def test_every_topic_a_component_writes_names_it_as_a_writer_and_nothing_else_does():
+    trial = Trial(load_scenario("hallway"), 0)
+    components = [trial.sim, *trial.loop.components]
+    written: dict[str, set[str]] = {}
+    for c in components:
+        for topic in c.outputs():
+            if watched(absolute(topic)):
+                written.setdefault(absolute(topic), set()).add(c.name)
+    pages = {t for t in [*CONSOLE_ROLE.publish, *participant_role("h1").publish] if t not in (READY, ANSWERS, SKIP_QUESTIONNAIRES)}
+    for topic in pages:
+        written.setdefault(topic, set()).add(WEB)
+    written.setdefault("/haven/events", set()).add(WEB)  # (the web node logs the console's interventions)
+    for topic, nodes in written.items():
+        assert nodes <= writers(topic), topic
+    for pattern, nodes in WRITERS.items():  # no stale entry: each writer named writes a matching topic
+        concrete = pattern.replace("*", "h1")
+        assert nodes <= written.get(concrete, set()), pattern
+    assert not watched("/scan") and not watched("/tf") and watched("/humans/h7/cmd_vel")
+
+
+def test_the_log_names_a_publisher_once_its_node_is_known_and_reads_back():
+    log = PublisherLog()
+    assert log.observe("/goal_pose", [(UNNAMED, "g1")], 1.0) == []  # (its node's name comes later)
+    (seen,) = log.observe("/goal_pose", [("rviz", "g1")], 2.0)
+    assert (seen.node, seen.first_s, seen.last_s) == ("rviz", 1.0, 2.0)
+    assert log.observe("/goal_pose", [("rviz", "g1")], 9.0) == [] and seen.last_s == 9.0
+    again = PublisherLog.from_json(log.to_json())
+    assert again.seen == log.seen
+    assert PublisherLog.from_json("[{broken").seen == {} and PublisherLog.from_json('[{"topic": 1}]').seen == {}
+
+
+def test_outsiders_are_publishers_not_of_the_suite_and_second_ones_under_our_names():
+    log = PublisherLog()
+    log.observe("/odom", [("sim_node", "a")], 0.0)
+    log.observe("/odom", [("sim_node", "b")], 1.0)  # another suite's simulator
+    log.observe("/plan", [("planner_server", "c")], 0.5)  # Nav2's, with `--without planner`
+    log.observe("/haven/estop", [("teleop", "d")], 0.5)
+    nodes = frozenset({"sim_node", "planner", "scenario"})
+    found = outsiders(log, Declared(nodes, open_topics(without=["planner"])))
+    assert [(s.topic, s.gid) for s in found] == [("/odom", "b")]
+    assert "/plan" in open_topics(without=["planner"]) and set(ALWAYS_OPEN) <= set(open_topics())
+    assert "/humans/h1/cmd_vel" in open_topics(teleop=["h1"])
