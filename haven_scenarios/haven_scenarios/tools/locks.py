@@ -47,7 +47,7 @@ class FileLock:
     another process holds it. OSError when the file cannot be opened at all."""
 
     def __init__(self, path: Path, what: str = "") -> None:
-        self.path, self.what = Path(path), what or " ".join(Path(a).name if i == 0 else a for i, a in enumerate(sys.argv))
+        self.path, self.what = Path(path), what or command_line()
         self.fd: int | None = None
 
     def acquire(self) -> FileLock:
@@ -78,6 +78,13 @@ class FileLock:
 
     def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
         self.release()
+
+
+def command_line() -> str:
+    """This process's command as a user typed it (`python -m haven_scenarios ...` is `haven ...`)."""
+    program = Path(sys.argv[0]).name if sys.argv and sys.argv[0] else "python"
+    program = "haven" if program in ("__main__.py", "cli.py", "haven") else program
+    return " ".join([program, *sys.argv[1:]])
 
 
 def _open(path: Path) -> int:
