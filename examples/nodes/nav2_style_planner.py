@@ -21,6 +21,7 @@ import sys
 import rclpy
 from geometry_msgs.msg import PoseStamped
 from nav_msgs.msg import Odometry, Path
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
 
@@ -83,7 +84,7 @@ def main() -> None:
     node = Nav2StylePlanner()
     try:
         rclpy.spin(node)
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, ExternalShutdownException):  # Ctrl-C, or a stop signal rclpy turned into a shutdown
         pass
     finally:
         node.destroy_node()

@@ -47,6 +47,24 @@ def test_starts_only_when_allowed_and_sends_the_first_goal():
     assert len(by_topic(d.tick(0.2), topics.human_cmd_vel("h1"))) == 1
 
 
+def test_a_robot_sent_off_on_another_nodes_goal_is_sent_back_on_its_mission_once_it_stands_still():
+    """RViz (or a flood) on /goal_pose in a free-running trial: the planner plans for that goal; once
+    the robot stands there, the mission asks for its own target again, logged as a goal_sent."""
+    d = TrialDirector(load_scenario("hallway"))
+    d.start_allowed = True
+    ready(d)
+    (ours,) = by_topic(d.tick(0.1), topics.GOAL)
+    d.on_event(event(EventKind.PLAN_MADE, 0.2, Source.PLANNER, goal=[16.0, 2.0]), 0.2)  # the mission's own plan
+    d.on_event(event(EventKind.PLAN_MADE, 0.5, Source.PLANNER, goal=[3.0, 7.0]), 0.5)  # another node's goal won
+    assert d.diverted
+    d.on_odom(RobotState(Pose2D(3.0, 7.0, 0.0)), 3.0)  # there, standing still
+    assert by_topic(d.tick(3.0), topics.GOAL) == []
+    out = d.tick(4.1)  # still for longer than RESEND_AFTER_S
+    (again,) = by_topic(out, topics.GOAL)
+    assert (again.pose.x, again.pose.y) == (ours.pose.x, ours.pose.y) and not d.diverted
+    assert [e.kind for e in by_topic(out, topics.EVENTS)].count(EventKind.GOAL_SENT) == 1
+
+
 def test_an_obstruction_is_removed_through_its_control_topic_and_logged():
     d = TrialDirector(load_scenario("hallway_hard"))
     ready(d)

@@ -71,6 +71,8 @@ def test_a_child_dies_with_its_supervisor_even_when_the_supervisor_is_killed(tmp
         (["run", "--seed", "10000000000"], "argument --seed: must be 0..2147483647, got 10000000000"),
         (["demo", "--laps", "99999999999999999999"], "argument --laps: must be at least 1, got 99999999999999999999"),
         (["run", "--allow", "/cmd_vel_telop"], "--allow: /cmd_vel_telop: not a topic the suite or the metrics read (did you mean /cmd_vel_teleop?)"),
+        (["run", "--allow", "/odom"], "--allow: /odom: the simulator's and the metrics' topics take no outside publisher"),
+        (["run", "--allow", "plan"], "--allow: plan: the simulator's and the metrics' topics take no outside publisher (your own planner: --without"),
         (["goto", "1e999", "0"], "argument x: must be a finite number, got 1e999"),
         (["bridge", "--port", "70000"], "argument --port: must be 0..65535, got 70000"),
     ],

@@ -255,12 +255,11 @@ def test_a_message_the_lockstep_clock_never_got_and_an_outside_publisher_make_a_
     rec.publishers.observe("/odom", [("sim_node", "gid-second-suite")], 6.0)  # after the trial: not the trial's
     nodes = frozenset({"recorder", "sim_node", "velocity_mux", "planner", "controller", "viz", "scenario"})
     free = compute(rec, declared=Declared(nodes))
-    assert free["valid"] is False and free["invalid_reasons"] == [
-        "/goal_pose: published by rviz from outside the suite; allow a topic with `haven run --allow TOPIC` when that input is part of the study"
-    ]
+    assert free["valid"] is False and free["invalid_reasons"] == ["/goal_pose: published by rviz from outside the suite"]
     lockstep = compute(rec, declared=Declared(nodes, lockstep=True))  # ignored there: noted, still valid
     assert lockstep["valid"] is True and lockstep["outside_publishers"].startswith("/goal_pose: published by rviz")
-    assert compute(rec, declared=Declared(nodes, open_topics(allow=["/goal_pose"])))["valid"] is True
+    opened = compute(rec, declared=Declared(nodes, open_topics(allow=["/goal_pose"])))
+    assert opened["valid"] is True and opened["outside_publishers"].endswith("from outside the suite, on a topic the run opened to it")
     rec.publishers.observe("/odom", [("sim_node", "gid-another-suite")], 3.0)  # a second suite's simulator during the trial
     m = compute(rec, declared=Declared(nodes, lockstep=True))
     assert m["valid"] is False and "another HAVEN suite on this ROS domain?" in m["invalid_reasons"][0]
@@ -279,6 +278,12 @@ def test_turn_signal_lead_is_how_long_the_matching_side_was_lit_before_the_turn(
     signal = [0, 0, 1, 1, 1, 1, 1, 0, 0, 0]  # left lit from 0.2
     assert signal_lead_times(t, wz, signal) == [pytest.approx(0.3)]
     assert signal_lead_times(t, [-v for v in wz], signal) == [0.0]  # a right turn the signal did not announce
+
+
+def test_a_stream_flooded_by_a_second_publisher_with_one_stamp_is_flagged_not_a_crash():
+    """Another node's /odom at 1 kHz, every message stamped 0: the stamps repeat (no period to read)."""
+    stamps = [0.02 * i for i in range(250)] + [0.0] * 10_000
+    assert _stream("/odom", stamps, (0.0, 4.98)) == ["/odom: 10000 message(s) with the stamp of another (a second publisher?)"]
 
 
 def test_a_complete_20_hz_stream_on_50_hz_physics_is_complete_however_short():

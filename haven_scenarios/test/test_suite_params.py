@@ -61,7 +61,9 @@ def test_booleans_in_a_parameter_file_are_booleans_not_numbers(tmp_path):
     [
         ("sim_node:\n  ros__parameters:\n    physics_hz: fast\n", "sim_node: physics_hz: no such parameter (did you mean physics_rate_hz?)"),
         ("planer:\n  ros__parameters:\n    check_rate_hz: 5.0\n", "planer: no such node (did you mean planner?)"),
-        ('"/**":\n  ros__parameters:\n    use_sim_time: .nan\n', "/**: use_sim_time: must be a finite number, got nan"),
+        ('"/**":\n  ros__parameters:\n    use_sim_time: .nan\n', "/**: use_sim_time: must be true or false, got nan"),
+        ('"/**":\n  ros__parameters:\n    arc_max_angle_deg: .nan\n', "/**: arc_max_angle_deg: must be a finite number, got nan"),
+        ("scenario:\n  ros__parameters:\n    rate_hz: nan\n", "scenario: rate_hz: must be a finite number, got nan"),
         ('"/**":\n  ros__parameters:\n    use_sim_tim: true\n', "/**: use_sim_tim: no such parameter (did you mean use_sim_time?)"),
         ("controller:\n  ros__parameters:\n    use_sim_time: 1\n", "controller: use_sim_time: must be true or false, got 1"),
         ("controller:\n  ros__parameters:\n    linear_speed_mps: -.inf\n", "controller: linear_speed_mps: must be a finite number, got -inf"),
@@ -75,6 +77,27 @@ def test_a_typo_or_a_non_finite_value_in_a_parameter_file_is_refused_naming_file
     with pytest.raises(ParamsError) as e:
         load_suite_config(str(p))
     assert str(e.value).startswith(f"{p}: {problem}") and "\n" not in str(e.value)
+
+
+def test_what_a_trial_sets_itself_is_refused_in_its_parameter_file_unless_left_at_the_default(tmp_path):
+    from haven_scenarios.run.suite import TRIAL_SETS
+
+    p = tmp_path / "params.yaml"
+    p.write_text("scenario:\n  ros__parameters:\n    seed: 7\n")
+    with pytest.raises(ParamsError, match=f"^{p}: scenario: seed: set by --seed, not by a parameter file$"):
+        load_suite_config(str(p), TRIAL_SETS)
+    p.write_text('"/**":\n  ros__parameters:\n    lockstep: true\n')
+    with pytest.raises(ParamsError, match="lockstep: set by haven run"):
+        load_suite_config(str(p), TRIAL_SETS)
+    assert load_suite_config(str(p)).lockstep.lockstep is True  # (a session's own params.yaml, for haven rerun)
+    load_suite_config(str(packaged_params_file()), TRIAL_SETS)  # every default: an edited copy of haven.yaml is fine
+
+
+def test_a_double_written_as_ros_reads_it_is_a_number(tmp_path):
+    """rcl reads `1e-3` as a double, YAML 1.1 as a string: a parameter file means the double."""
+    p = tmp_path / "params.yaml"
+    p.write_text("controller:\n  ros__parameters:\n    rate_hz: 2e1\n")
+    assert load_suite_config(str(p)).controller.rate_hz == 20.0
 
 
 def test_namespaced_and_wildcard_node_keys_name_the_node(tmp_path):

@@ -64,7 +64,7 @@ from haven_sim.common.events import EventKind
 from haven_sim.common.params import build, defaults
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import conversions as conv
-from haven_sim.nodes.runner import run_node
+from haven_sim.nodes.runner import refuse_changes, run_node
 
 EVENTS = "/" + topics.EVENTS
 GATED = (EVENTS, "/" + topics.GOAL)  # what the scenario node's start waits for the recorder to read
@@ -141,6 +141,7 @@ class Recorder(Node):
         self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
         self.clock_pairs: list[tuple[int, int]] = []  # (sim ns, wall ns)
         self.create_timer(CLOCK_PAIR_PERIOD_S, self._pair_clocks, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        refuse_changes(self)  # (use_sim_time switched mid-trial would turn the bag's times into wall time)
         # (what is published before this line is recorded only if latched: say when recording starts)
         self.get_logger().info(f"recording every topic into {folder / 'bag'}")
 

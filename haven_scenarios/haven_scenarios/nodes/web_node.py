@@ -43,10 +43,10 @@ from haven_scenarios.web.front_door import FrontDoor, address_for_others
 from haven_scenarios.web.page_config import PageSettings, page_config
 from haven_scenarios.web.wizard import StartGate, Wizard
 from haven_sim.common import topics
-from haven_sim.common.events import Event, Sequencer
+from haven_sim.common.events import Event, EventKind, Sequencer, Source, event
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
-from haven_sim.nodes.runner import refused, run_node
+from haven_sim.nodes.runner import refuse_changes, refused, run_node
 
 EVENTS_KEPT = 2000  # a trial logs a few hundred
 RELAYED = tuple(
@@ -98,6 +98,7 @@ class WebNode(Node):
             self.servers[name] = self.relay.serve("127.0.0.1", 0, f"haven {name}", sink, parameters=role.parameters)
         ports = {name: int(server.port) for name, server in self.servers.items()}
         self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
+        refuse_changes(self, self._refused)
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
         self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__)
         self.door.start()
@@ -110,6 +111,10 @@ class WebNode(Node):
 
     def now(self) -> float:
         return self.get_clock().now().nanoseconds * 1e-9
+
+    def _refused(self, name: str, reason: str) -> None:
+        with self._lock:
+            self._log([event(EventKind.REQUEST_REFUSED, self.now(), Source.WEB, request="parameter", name=name, reason=reason)])
 
     def _log(self, events: list[Event]) -> None:
         for e in events:

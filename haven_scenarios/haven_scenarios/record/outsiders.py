@@ -81,6 +81,18 @@ def watched(topic: str) -> bool:
     return writers(topic) is not None
 
 
+def allowable(topic: str) -> str | None:
+    """None if a run may open `topic` to outside publishers (`--allow`), else why not: the
+    simulator's topics and those the metrics read from the bag would mix another node's messages
+    into the trial's own."""
+    if not watched(topic):
+        return "not a topic the suite or the metrics read"
+    if topic.lstrip("/") in METRIC_TOPICS or SIM in (writers(topic) or ()):
+        hint = " (your own planner: --without planner)" if topic == _t(topics.PLAN) else ""
+        return f"the simulator's and the metrics' topics take no outside publisher{hint}"
+    return None
+
+
 def open_topics(without: Iterable[str] = (), teleop: Iterable[str] = (), allow: Iterable[str] = ()) -> tuple[str, ...]:
     """The topics a run declares open to outside publishers: ALWAYS_OPEN, the outputs of our nodes
     it leaves out (node names), the teleoperated people's velocity, and `allow`."""
@@ -162,14 +174,15 @@ class Declared:
         return self.lockstep and w is not None and bool(w & self.nodes) and topic.lstrip("/") not in METRIC_TOPICS
 
 
-def outsiders(log: PublisherLog, declared: Declared) -> list[Seen]:
-    """The publishers on watched topics that are not the suite's (in the order first seen); the
-    first publisher under one of our names is ours, a later one under the same name another suite's."""
+def outsiders(log: PublisherLog, declared: Declared, with_open: bool = False) -> list[Seen]:
+    """The publishers on watched topics that are not the suite's (in the order first seen), but on
+    topics the run opened (unless `with_open`); the first publisher under one of our names is ours,
+    a later one under the same name another suite's."""
     out = []
     ours_taken: set[tuple[str, str]] = set()
     for s in sorted(log.seen.values(), key=lambda s: (s.first_s, s.topic, s.gid)):
         w = writers(s.topic)
-        if w is None or s.topic in declared.open:
+        if w is None or (s.topic in declared.open and not with_open):
             continue
         if s.node in w and s.node in declared.nodes and (s.topic, s.node) not in ours_taken:
             ours_taken.add((s.topic, s.node))
@@ -192,16 +205,17 @@ def during(s: Seen, window: tuple[float, float] | None) -> bool:
 
 def judge(log: PublisherLog, declared: Declared, window: tuple[float, float] | None) -> tuple[list[str], list[str]]:
     """(why the session is not valid; what is only noted): one line per outside publisher while the
-    trial ran."""
-    hint = "; allow a topic with `haven run --allow TOPIC` when that input is part of the study"
+    trial ran (noted: those the lockstep clock ignored, and those on topics the run opened)."""
     reasons, notes = [], []
-    for s in outsiders(log, declared):
+    for s in outsiders(log, declared, with_open=True):
         if not during(s, window):
             continue
-        if declared.ignores(s.topic):
+        if s.topic in declared.open:
+            notes.append(f"{describe(s, declared)}, on a topic the run opened to it")
+        elif declared.ignores(s.topic):
             notes.append(f"{describe(s, declared)}, ignored on the lockstep clock")
         else:
-            reasons.append(describe(s, declared) + (hint if s.node not in declared.nodes else ""))
+            reasons.append(describe(s, declared))
     return reasons, notes
 
 

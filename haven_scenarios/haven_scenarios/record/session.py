@@ -54,7 +54,7 @@ END_MARK = ".recorded_through_end"  # the recorder has the trial's end on every 
 
 
 NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}")  # participant ids and scenario names: part of a folder name
-NAME_RULE = "1 to 64 letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
+NAME_RULE = "1 to 64 ASCII letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
 
 
 def check_name(value: object, what: str) -> str:
@@ -176,8 +176,12 @@ def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
         rec, note = Recording(), f"bag unreadable: {str(e)[:120]}"
     end = rec.first(EventKind.TRIAL_END)
     name, reason = str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED
-    metrics = compute(rec, name, reason, world, declared_of(info))
     problems = [p for p in (note, problem) if p]
+    try:
+        metrics = compute(rec, name, reason, world, declared_of(info))
+    except Exception as e:  # noqa: BLE001 - whatever a recording no check foresaw makes of the metrics, the row says so
+        metrics = {"scenario": name, "end_reason": reason, "duration_s": None, "valid": False, "invalid_reasons": []}
+        problems.append(f"metrics could not be computed: {type(e).__name__}: {str(e)[:120]}")
     if problems:
         metrics["valid"] = False
         metrics["invalid_reasons"] = [*problems, *metrics.get("invalid_reasons", [])]

@@ -25,15 +25,16 @@ MAX_GAP_S = 0.1
 
 
 def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list[str]:
-    t = np.array(sorted(s for s in stamps if window[0] - MAX_GAP_S <= s <= window[1] + MAX_GAP_S))
+    inside = [s for s in stamps if window[0] - MAX_GAP_S <= s <= window[1] + MAX_GAP_S]
+    t = np.unique(np.array(inside, dtype=float))
+    out = [f"{name}: {len(inside) - len(t)} message(s) with the stamp of another (a second publisher?)"] if len(t) < len(inside) else []
     if len(t) < 2:
-        return [f"{name}: {len(t)} message(s) in the trial"]
+        return [*out, f"{name}: {len(t)} message(s) in the trial"]
     gaps = np.diff(t)
     # The stream's period: robust to a few losses, and to rates that alternate between two step
     # counts (20 Hz on 50 Hz physics gives gaps of 0.04 and 0.06 s).
     period = float(np.median((gaps[:-1] + gaps[1:]) / 2.0)) if len(gaps) > 1 else float(gaps[0])
     expected = round((t[-1] - t[0]) / period) + 1.0  # rounded: a stream may end on its short gap
-    out = []
     if t[0] > window[0] + MAX_GAP_S + 1e-6:  # (coverage counts from the first message: a late start is a gap of its own)
         out.append(f"{name}: recorded only from {t[0] - window[0]:.2f} s into the trial")
     if len(t) < MIN_COVERAGE * expected:

@@ -20,6 +20,7 @@ from haven_sim.nav.mux import MuxConfig
 from haven_sim.nav.planning import PlannerConfig
 from haven_sim.runtime.lockstep import LockstepParams
 from haven_sim.sim.simulator import SimulatorConfig
+from haven_viz.cues import CUES
 from haven_viz.viz import VizConfig
 
 # (node name, its config class): the order of haven.yaml; SuiteConfig's fields in the same order.
@@ -87,18 +88,49 @@ def known_parameters() -> dict[str, dict[str, Any]]:
     return {name: {**common, **defaults(cls)} for name, cls in NODES}
 
 
-def load_suite_config(path: str | Path | None) -> SuiteConfig:
+# What a trial (`haven run`, `haven batch`, `haven study run`) sets itself, from its options and the
+# scenario file: a parameter file's own value for one of these would be overwritten without a word.
+_CONDITION = "the condition (--condition, or the scenario's)"
+TRIAL_SETS: Mapping[tuple[str, str], str] = {
+    **{(node, "world"): "the scenario's world (--world)" for node in ("sim_node", "planner", "viz")},
+    **{("viz", cue): _CONDITION for cue in CUES},
+    ("sim_node", "seed"): "--seed",
+    ("scenario", "seed"): "--seed",
+    ("sim_node", "battery_capacity_m"): "the scenario file (robot: battery: capacity_m)",
+    ("sim_node", "real_time_factor"): "--rtf",
+    ("scenario", "scenario"): "the scenario haven runs",
+    ("scenario", "hold_start"): "--web (and --researcher-start)",
+    ("scenario", "wait_for"): "haven run (--without)",
+    ("sim_node", "reset_allowed"): "haven run",
+    **{("sim_node", f"lockstep_{k}"): "haven run" for k in ("participants", "observers", "wait_for")},
+    (WILDCARD, "lockstep"): "haven run (--free-running for the free-running clock)",
+    (WILDCARD, "lockstep_open"): "--allow",
+}
+SIM_SETS: Mapping[tuple[str, str], str] = {
+    **{(node, "world"): "--world" for node in ("sim_node", "planner", "viz")},
+    ("sim_node", "real_time_factor"): "--rtf",
+}
+
+
+def load_suite_config(path: str | Path | None, sets: Mapping[tuple[str, str], str] | None = None) -> SuiteConfig:
     """Every node's config from a parameter file (None: the defaults), as strict as a study file:
     the file is first read as any file a user hands us (`read_yaml`: a regular file of at most 1 MiB
-    of UTF-8, bounded nesting and aliases), then `checked_suite_config`."""
-    return suite_config(None) if path is None else checked_suite_config(load_params_file(path), file_label(path))
+    of UTF-8, bounded nesting and aliases), then `checked_suite_config`; `sets`: what the command
+    sets itself (a value other than the default there is refused, naming the option to use)."""
+    return suite_config(None) if path is None else checked_suite_config(load_params_file(path), file_label(path), sets)
 
 
-def checked_suite_config(params: Mapping[str, Mapping[str, Any]], label: str) -> SuiteConfig:
-    """A node or a parameter that no node has, a number that is not finite, and a value of the
-    wrong type are refused in one line naming file (`label`), node and key: the nodes themselves
-    would silently ignore a misspelt name and run on the default."""
-    check_names(params, known_parameters(), label)
+def checked_suite_config(params: Mapping[str, Mapping[str, Any]], label: str, sets: Mapping[tuple[str, str], str] | None = None) -> SuiteConfig:
+    """A node or a parameter that no node has, a number that is not finite, a value of the wrong
+    type, and one the command sets itself are refused in one line naming file (`label`), node and
+    key: the nodes themselves would silently ignore a misspelt name and run on the default."""
+    known = known_parameters()
+    check_names(params, known, label)
+    for (node, name), option in (sets or {}).items():
+        for section in dict.fromkeys((node, WILDCARD)):
+            value = params.get(section, {}).get(name)
+            if value is not None and value != known["sim_node" if node == WILDCARD else node][name]:
+                raise ParamsError(f"{label}: {section}: {name}: set by {option}, not by a parameter file")
     for node, values in params.items():  # (rclpy's own parameters are booleans; the configs check the rest)
         for name in ROS_BUILTIN.keys() & values.keys():
             if not isinstance(values[name], bool):

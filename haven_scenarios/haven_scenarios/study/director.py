@@ -36,7 +36,8 @@ from haven_viz.cues import ArCues, CueState
 
 STOPPED_MPS = 0.02  # the robot counts as standing still (the battery charges only then)
 STRANDED_S = 5.0  # a flat battery off the base for this long ends the trial
-RESEND_AFTER_S = 1.0  # standing still short of the base this long: ask for the base once more
+RESEND_AFTER_S = 1.0  # standing still short of the base (or off on another node's goal) this long: ask once more
+GOAL_MATCH_M = 0.01  # a plan's goal this close to the mission's (events round to 1 mm) is the mission's
 
 
 def any_reader(topic: str) -> str:
@@ -135,6 +136,8 @@ class TrialDirector:
         self.waiting = False
         self.empty_since: float | None = None  # when the battery ran out (the robot cannot drive)
         self.still_since: float | None = None  # when the robot last stopped moving
+        self.sent_goal: Pose2D | None = None  # the mission's last goal
+        self.diverted = False  # the planner's last plan was for another node's goal
         self.start_time: float | None = None
         self.last_tick: float | None = None
         self.ended: EndReason | None = None
@@ -207,9 +210,14 @@ class TrialDirector:
         return []
 
     def on_event(self, e: Event, now: float) -> list[Message]:
-        """The study log is read for one rule only: a robot-human contact can end a trial."""
+        """The study log is read for two things: a robot-human contact can end a trial, and a plan
+        for a goal the mission did not send (another node's: RViz, `haven goto`) means the robot is
+        away on someone else's errand (`diverted`: the mission asks again once it stands still)."""
         if e.kind is EventKind.CONTACT_BEGIN and str(e["other"]).startswith("human"):
             self.contact = True
+        goal = e.get("goal")
+        if e.kind in (EventKind.PLAN_MADE, EventKind.PLAN_REFUSED) and self.sent_goal is not None and isinstance(goal, list) and len(goal) == 2:
+            self.diverted = math.dist(goal, (self.sent_goal.x, self.sent_goal.y)) > GOAL_MATCH_M
         return []
 
     def on_control(self, text: str, now: float) -> list[Message]:
@@ -284,7 +292,7 @@ class TrialDirector:
         if m.goal is not None:
             mission = self.mission
             assert mission is not None
-            self.still_since = None
+            self.still_since, self.sent_goal, self.diverted = None, m.goal, False
             if mission.current is not None and mission.phase is Phase.GOING and self.scenario.kind == "retrieval":
                 self.gems.robot_target = mission.current.id
             out.append(Message(topics.GOAL, Goal(m.goal), now))
@@ -379,6 +387,8 @@ class TrialDirector:
         stuck = self.still_since is not None and now - self.still_since >= RESEND_AFTER_S and not self.waiting
         if base is not None and stuck and not at_base and mission.phase is Phase.TO_BASE:
             out += self._mission_messages(mission.resend(), now)  # stopped short of (or past) the base
+        elif stuck and self.diverted:
+            out += self._mission_messages(mission.resend(), now)  # back from someone else's errand
         return out + self._mission_messages(mission.tick(now, robot, level, at_base, self.waiting), now)
 
     def _human_finished(self, hid: str) -> bool:

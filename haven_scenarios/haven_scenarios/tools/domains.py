@@ -11,8 +11,11 @@ Two checks, before any node starts:
 
 With `--domain-id N` the suite runs on N or refuses to start, in one line naming what is there.
 Without it, the suite takes the inherited domain (ROS_DOMAIN_ID, else 0) when that is free, so
-the user's own nodes in that shell still reach it, and otherwise the first free one of 1..101
-(the domains whose ports stay clear of Linux's ephemeral range), saying which.
+the user's own nodes in that shell still reach it, and otherwise the first of 1..101 (the domains
+whose ports stay clear of Linux's ephemeral range) where no node runs at all, saying which. The
+graph look is the second line of defence (a busy machine can hide a node from it for longer than
+it looks): a suite that shares a domain all the same is caught by its recorder, which marks the
+session not valid (`record/outsiders.py`).
 """
 
 from __future__ import annotations
@@ -28,13 +31,14 @@ from pathlib import Path
 from haven_scenarios.tools.locks import FileLock, Locked
 
 FREE_DOMAINS = range(1, 102)
-PROBE_S = 1.5  # wall time a probe watches the graph (a running suite shows up after 0.4-0.9 s)
+MAX_DOMAIN_ID = 232  # DDS's port arithmetic ends here
+PROBE_S = 2.0  # wall time a probe watches the graph (a running suite shows up after 0.4-0.9 s, later on a busy machine)
 # Nodes that make a suite: a domain where one of them runs is taken.
 SUITE_NODES = ("sim_node", "planner", "recorder", "velocity_mux", "controller", "viz", "scenario")
 
 
 class DomainBusy(Exception):
-    """The domain asked for holds another suite; the message is one line for the user."""
+    """The domain asked for holds another suite (or names none); the message is one line for the user."""
 
 
 @dataclass
@@ -54,26 +58,30 @@ def lock_path(domain_id: int) -> Path:
 
 
 def inherited_domain(env: Mapping[str, str]) -> int:
-    """ROS_DOMAIN_ID as ROS reads it (unset, empty or not a number: 0)."""
+    """ROS_DOMAIN_ID from the environment (unset or empty: 0); DomainBusy for a value that is no
+    domain id (ROS would refuse it, or use another domain than the user meant)."""
     text = env.get("ROS_DOMAIN_ID", "").strip()
-    return int(text) if text.isdigit() and int(text) <= 232 else 0
+    if not text:
+        return 0
+    if not text.isdigit() or int(text) > MAX_DOMAIN_ID:
+        raise DomainBusy(f"ROS_DOMAIN_ID={text[:20]!r} in the environment is not a ROS domain id (0..{MAX_DOMAIN_ID}): unset it or pass --domain-id")
+    return int(text)
 
 
-def suite_nodes_on(domain_id: int, env: Mapping[str, str], ignore: Sequence[str] = ()) -> list[str]:
-    """A HAVEN suite's nodes that the graph of `domain_id` shows (but those in `ignore`: nodes the
-    user runs in place of ours)."""
-    wanted = [n for n in SUITE_NODES if n not in ignore]
+def nodes_on(domain_id: int, env: Mapping[str, str], wanted: Sequence[str]) -> list[str]:
+    """The nodes the graph of `domain_id` shows (looked at until one of `wanted` shows, or PROBE_S)."""
     probe_env = {**env, "ROS_DOMAIN_ID": str(domain_id)}
     argv = [sys.executable, "-m", "haven_scenarios.nodes.domain_probe", str(PROBE_S), *wanted]
     try:
         r = subprocess.run(argv, env=probe_env, capture_output=True, text=True, timeout=PROBE_S + 30)
     except (OSError, subprocess.TimeoutExpired):
         return []  # (the lock still holds; a probe that cannot run is no reason not to start)
-    return [line for line in r.stdout.split() if line in wanted]
+    return r.stdout.split()
 
 
-def _take(domain_id: int, env: Mapping[str, str], ignore: Sequence[str]) -> tuple[FileLock | None, str]:
-    """The domain's lock if the domain is free, else (None, what is there)."""
+def _take(domain_id: int, env: Mapping[str, str], ignore: Sequence[str], empty: bool = False) -> tuple[FileLock | None, str]:
+    """The domain's lock if the domain is free (of a HAVEN suite; with `empty`, of any node), else
+    (None, what is there); `ignore`: names of nodes the user runs in place of ours."""
     lock = FileLock(lock_path(domain_id))
     try:
         lock.acquire()
@@ -81,29 +89,41 @@ def _take(domain_id: int, env: Mapping[str, str], ignore: Sequence[str]) -> tupl
         return None, f"another HAVEN suite runs on it ({e.holder.describe()})"
     except OSError as e:
         return None, f"cannot lock {lock_path(domain_id)}: {e.strerror or e}"
-    found = suite_nodes_on(domain_id, env, ignore)
-    if found:
+    wanted = [n for n in SUITE_NODES if n not in ignore]
+    seen = nodes_on(domain_id, env, wanted)
+    suite = [n for n in seen if n in wanted]
+    if suite or (empty and seen):
         lock.release()
-        return None, f"HAVEN suite nodes already run on it ({', '.join(found)}; started without `haven`, or on another machine)"
+        if suite:
+            return None, f"HAVEN suite nodes already run on it ({', '.join(suite)}; started without `haven`, or on another machine)"
+        return None, f"other ROS nodes run on it ({', '.join(seen[:3])}{'...' if len(seen) > 3 else ''})"
     return lock, ""
+
+
+def take_domain(domain_id: int, env: Mapping[str, str], ignore: Sequence[str] = ()) -> Claim:
+    """This domain, held until the claim is released; DomainBusy ("ROS domain N: why") if taken."""
+    lock, why = _take(domain_id, env, ignore)
+    if lock is None:
+        raise DomainBusy(f"ROS domain {domain_id}: {why}")
+    return Claim(domain_id, lock)
 
 
 def claim_domain(explicit: int | None, env: Mapping[str, str], ignore: Sequence[str] = ()) -> Claim:
     """The domain this suite runs on: `explicit` or refuse (DomainBusy), else the inherited one
     if free, else the first free one; `ignore`: node names the user's own nodes may have."""
     if explicit is not None:
-        lock, why = _take(explicit, env, ignore)
-        if lock is None:
-            raise DomainBusy(f"ROS domain {explicit}: {why}; choose another --domain-id, or leave it out to get a free one")
-        return Claim(explicit, lock)
+        try:
+            return take_domain(explicit, env, ignore)
+        except DomainBusy as e:
+            raise DomainBusy(f"{e}; choose another --domain-id, or leave it out to get a free one") from None
     home = inherited_domain(env)
     lock, why = _take(home, env, ignore)
     if lock is not None:
         return Claim(home, lock)
-    for candidate in FREE_DOMAINS:
+    for candidate in FREE_DOMAINS:  # (a domain of its own: one where no other node runs either)
         if candidate == home:
             continue
-        other, _ = _take(candidate, env, ignore)
+        other, _ = _take(candidate, env, ignore, empty=True)
         if other is not None:
             return Claim(candidate, other, (home, why))
     raise DomainBusy(f"no free ROS domain: {home} and 1..{FREE_DOMAINS[-1]} all hold HAVEN suites")

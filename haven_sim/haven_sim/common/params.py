@@ -98,6 +98,8 @@ def _coerce(name: str, value: Any, default: Any, where: str) -> Any:
             raise fail("an integer")
         return value
     if isinstance(default, float):
+        if isinstance(value, str):  # ROS reads `1e-3` (YAML 1.1 has no such float) as a double: so does this
+            value = _ros_double(value)
         if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
             raise fail("a finite number")
         return float(value)
@@ -110,6 +112,15 @@ def _coerce(name: str, value: Any, default: Any, where: str) -> Any:
             raise fail("a list of strings")
         return tuple(v for v in value if v)
     raise fail(type(default).__name__)  # pragma: no cover - configs use the types above
+
+
+def _ros_double(text: str) -> float | str:
+    """A string as rcl's parameter-file parser reads an unquoted scalar it could not type otherwise:
+    a double when the whole of it is one (`1e-3`, `1E9`), else the string."""
+    try:
+        return float(text) if text.strip() == text and text else text
+    except ValueError:
+        return text
 
 
 def build(cls: type[T], values: Mapping[str, Any], where: str = "", prefix: str = "") -> T:
@@ -176,7 +187,7 @@ def check_names(params: Mapping[str, Mapping[str, Any]], known: Mapping[str, Map
         for name, value in values.items():
             if not isinstance(name, str) or name not in names:
                 raise ParamsError(f"{label}: {shown(node)}: {shown(name)}: no such parameter{_nearest(name, names)}")
-            bad = _not_finite(value)
+            bad = None if isinstance(names[name], bool) else _not_finite(value)  # (a boolean: build says "true or false")
             if bad is not None:
                 raise ParamsError(f"{label}: {shown(node)}: {name}: must be a finite number, got {bad}")
 

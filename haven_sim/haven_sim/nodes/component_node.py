@@ -30,7 +30,7 @@ from haven_sim.common.params import build, defaults, docs
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import wire
 from haven_sim.nodes.lockstep import LockstepParticipant
-from haven_sim.nodes.runner import handle, refused
+from haven_sim.nodes.runner import handle, refused, start_up_only
 from haven_sim.nodes.wire import TopicSpec, type_name
 from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import LockstepParams
@@ -41,7 +41,6 @@ CATCH_UP_S = 10.0  # wall time after start-up in which a latched reader picks up
 CATCH_UP_POLL_S = 0.2  # how often the graph is read for it
 CLOCK_LEAP_S = 60.0  # a jump of the clock this large either way is no simulator's step
 FLOOD_RATE_HZ, FLOOD_BURST = 200.0, 200  # per input topic, sim time: 4x the fastest the suite sends (/odom: 50 Hz)
-ROS_OWN = frozenset({"use_sim_time"})  # declared by rclpy itself: as fixed once the node runs as ours
 
 
 class ComponentNode(Node):
@@ -50,7 +49,6 @@ class ComponentNode(Node):
 
     def __init__(self, name: str) -> None:
         super().__init__(name)
-        self._declared: set[str] = set()
         self._pubs: dict[str, Publisher] = {}
         self._subs: dict[str, Subscription] = {}
         self._specs: dict[str, TopicSpec] = {}
@@ -84,19 +82,16 @@ class ComponentNode(Node):
             value = self.declare_parameter(name, default, descriptor).value
             # An empty list in a parameter file (`[]`) reaches the node as "not set".
             values[name] = [] if value is None and isinstance(default, list) else value
-            self._declared.add(name)
         return build(cls, values, where=f"{self.get_name()}: parameter ")
 
     def _check_parameters(self, params: list[Parameter]) -> SetParametersResult:
         """Only `runtime_parameters` (the cue toggles: the study condition) change while a node runs;
         any other change is refused, said in the log and in a `request_refused` event (the study log
         shows that somebody tried)."""
-        for p in params:
-            if (p.name in self._declared or p.name in ROS_OWN) and p.name not in self.runtime_parameters:
-                reason = f"{p.name} is read at start-up only; restart the node to change it"
-                self.get_logger().warning(f"refused to set parameter {reason}", throttle_duration_sec=2.0)
-                self.emit([self.refused_request("parameter", p.name, reason)])
-                return SetParametersResult(successful=False, reason=reason)
+        reason = start_up_only(self, params, self.runtime_parameters)
+        if reason is not None:
+            self.emit([self.refused_request("parameter", reason.split(":")[0], reason)])
+            return SetParametersResult(successful=False, reason=reason)
         return SetParametersResult(successful=True)
 
     def refused_request(self, what: str, name: str, reason: str) -> Message:
@@ -199,6 +194,10 @@ class ComponentNode(Node):
 
     # -- translate -------------------------------------------------------------------------------
     def now(self) -> float:
+        """Sim time: /clock's (use_sim_time), or on the lockstep clock the last tick's (its
+        participants run on wall time: the ticks carry the time)."""
+        if self.lockstep is not None:
+            return self.lockstep.time
         return self.get_clock().now().nanoseconds * 1e-9
 
     def publish(self, messages: Sequence[Message], serialized: bool = False) -> list[tuple[str, bytes]]:

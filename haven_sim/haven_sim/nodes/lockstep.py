@@ -103,6 +103,7 @@ class LockstepParticipant:
         self.hello_pub = node.create_publisher(String, HELLO, ANNOUNCE)
         self._said: tuple[bool, dict[str, int]] | None = None
         self._ticked = False
+        self.time = 0.0  # the last tick's (sim time)
         self._since = time.monotonic()
         node.create_subscription(String, tick_topic(component.name), self._on_tick, CONTROL)
         node.create_timer(0.1, self._announce, clock=STEADY)
@@ -131,7 +132,7 @@ class LockstepParticipant:
         self._ticked = True
         self.inbox.outside.owned = absolute(tick.owned)
         self.inbox.fill(tick.expect)
-        now = tick.t_ns / NS_PER_S
+        now = self.time = tick.t_ns / NS_PER_S
         received: list[Message] = []
         for topic in self.handlers:
             received += self.inbox.pop(topic, tick.expect.get(topic, ()), now)

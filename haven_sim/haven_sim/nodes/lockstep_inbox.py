@@ -25,7 +25,7 @@ from haven_sim.runtime.component import Message
 from haven_sim.runtime.suite_messages import OutsideInputs, Queue
 
 WAIT_S = 5.0  # longest wait for an announced message before going on without it
-OUTSIDE_REPORT_S = 10.0  # sim time between a node's `outside_input` events on one topic while they go on
+OUTSIDE_REPORT_S = 1.0  # sim time between a node's `outside_input` events on one topic while they go on
 
 
 def keep_all(profile: QoSProfile) -> QoSProfile:

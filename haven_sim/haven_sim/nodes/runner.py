@@ -17,8 +17,10 @@ from pathlib import Path
 from typing import Any
 
 import rclpy
+from rcl_interfaces.msg import SetParametersResult
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
+from rclpy.parameter import Parameter
 from rclpy.signals import SignalHandlerOptions
 
 from haven_sim.runtime.component import Message
@@ -65,6 +67,30 @@ def handle(node: Node, topic: str, handler: Callable[[Any, float], Sequence[Mess
     except Exception as e:  # noqa: BLE001 - see callback_failed
         callback_failed(node, e)
     return []
+
+
+def start_up_only(node: Node, params: Sequence[Parameter], allowed: frozenset[str] = frozenset()) -> str | None:
+    """Why a parameter change is refused, or None: once a node runs, only the `allowed` parameters
+    change; any other it has (its own, and rclpy's use_sim_time: time must not switch clocks
+    mid-trial) is read at start-up only. (A parameter being declared does not exist yet: allowed.)"""
+    for p in params:
+        if node.has_parameter(p.name) and p.name not in allowed:
+            reason = f"{p.name}: read at start-up only; restart the node to change it"
+            node.get_logger().warning(f"refused to set {reason}", throttle_duration_sec=2.0)
+            return reason
+    return None
+
+
+def refuse_changes(node: Node, on_refused: Callable[[str, str], None] | None = None) -> None:
+    """Refuse every parameter change once the node runs (`start_up_only`); `on_refused(name, reason)`."""
+
+    def check(params: list[Parameter]) -> SetParametersResult:
+        reason = start_up_only(node, params)
+        if reason is not None and on_refused is not None:
+            on_refused(params[0].name, reason)
+        return SetParametersResult(successful=reason is None, reason=reason or "")
+
+    node.add_on_set_parameters_callback(check)
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:

@@ -63,6 +63,10 @@ class SimNode(ComponentNode):
             f"world '{world.name}' from {world.source}: {len(world.humans)} human(s), {config.sim.physics_rate_hz:g} Hz physics, {pace}"
         )
 
+    def now(self) -> float:
+        """The simulator's own time (it is the clock)."""
+        return self.sim.sim.time
+
     def _tick(self) -> None:
         for _ in range(self.pacer.due_steps(time.monotonic())):
             self.sim.advance()

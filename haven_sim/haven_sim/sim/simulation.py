@@ -37,8 +37,10 @@ class SimConfig:
     seed: int = param(0, "seed of the scan and odometry noise")
 
     def __post_init__(self) -> None:
-        if not self.physics_rate_hz > 0 or NS_PER_S % round(NS_PER_S / self.physics_rate_hz):
-            raise ValueError(f"physics_rate_hz must divide a second into whole nanoseconds, got {self.physics_rate_hz}")
+        if not self.physics_rate_hz > 0:
+            raise ValueError(f"physics_rate_hz must be positive, got {self.physics_rate_hz}")
+        if NS_PER_S % round(NS_PER_S / self.physics_rate_hz):
+            raise ValueError(f"physics_rate_hz must divide a second into whole nanoseconds (25, 50, 100, 200...), got {self.physics_rate_hz}")
         if not self.cmd_timeout_s > 0:
             raise ValueError(f"cmd_timeout_s must be positive, got {self.cmd_timeout_s}")
         if not self.human_max_speed_mps > 0:

@@ -10,7 +10,7 @@ from pathlib import Path
 from haven_scenarios.record.report import report_csv, session_folders
 from haven_scenarios.run.batch import Progress, group_summaries, journal_path, run_batch
 from haven_scenarios.run.grid import TrialSpec, param_keys, parse_grid, parse_seeds, plan_sweep
-from haven_scenarios.run.suite import load_suite_config
+from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.sweep import LOCAL, cores
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
@@ -86,7 +86,7 @@ def _sweep(args: argparse.Namespace) -> list[TrialSpec]:
 def batch_cmd(args: argparse.Namespace) -> int:
     try:
         specs = _sweep(args)
-        suite = load_suite_config(args.params_file)
+        suite = load_suite_config(args.params_file, TRIAL_SETS)
     except (ScenarioError, ValueError) as e:
         return fail(str(e))
     names = "+".join(dict.fromkeys(s.scenario.name for s in specs))

@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 from haven_scenarios.tools.commands.common import PORT, add_ros_options, bounded_int, environment, fail, finite, port_free, positive, run_client
+from haven_scenarios.tools.domains import DomainBusy, inherited_domain, take_domain
 from haven_scenarios.tools.supervisor import node_argv
 from haven_sim.runtime.process import die_with_parent
 from haven_sim.sim.world import WorldError, resolve_world_path
@@ -88,7 +89,14 @@ def play_cmd(args: argparse.Namespace) -> int:
     bag = args.session / "bag" if (args.session / "bag").is_dir() else args.session
     if not (bag / "metadata.yaml").is_file():
         return fail(f"{args.session}: no bag here (a session folder or its bag/ with metadata.yaml; an unclosed bag: haven repair first)")
-    return run_client(args, "player", "haven_scenarios.nodes.player", {"bag": str(bag.resolve()), "rate": args.rate, "hold": args.hold})
+    env = environment(args)
+    try:  # (a recording played into a running trial would mix into it: the domain is taken as a suite takes it)
+        domain = take_domain(args.domain_id if args.domain_id is not None else inherited_domain(env), env)
+    except DomainBusy as e:
+        return fail(f"{e}; a recording played there would mix into it (play it on another --domain-id)")
+    with domain.lock:
+        args.domain_id = domain.domain_id
+        return run_client(args, "player", "haven_scenarios.nodes.player", {"bag": str(bag.resolve()), "rate": args.rate, "hold": args.hold})
 
 
 def graph_cmd(args: argparse.Namespace) -> int:

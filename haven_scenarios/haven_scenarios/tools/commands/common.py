@@ -10,9 +10,9 @@ import sys
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 
-from haven_scenarios.record.outsiders import WRITERS, watched
+from haven_scenarios.record.outsiders import WRITERS, allowable, watched
 from haven_scenarios.run.trial import SEED_MAX
-from haven_scenarios.tools.domains import Claim, claim_domain
+from haven_scenarios.tools.domains import MAX_DOMAIN_ID, Claim, claim_domain
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 
 SUITE = ("sim", "mux", "planner", "controller", "viz")
@@ -26,7 +26,6 @@ NODE_MODULES = {
 NODE_NAMES = {"sim": "sim_node", "mux": "velocity_mux", "planner": "planner", "controller": "controller", "viz": "viz"}  # ROS node names
 
 
-MAX_DOMAIN_ID = 232  # DDS's port arithmetic ends here (0..101 also keeps clear of Linux's ephemeral ports)
 
 
 def finite(text: str) -> float:
@@ -69,14 +68,16 @@ def bounded_int(low: int, high: int = INT64_MAX) -> Callable[[str], int]:
 
 
 def allowed_topic(text: str) -> str:
-    """An argparse type: a topic the trial rests on (record/outsiders.py), absolute."""
+    """An argparse type: a topic a run may open to outside publishers (record/outsiders.py), absolute."""
     topic = "/" + text.lstrip("/")
+    why = allowable(topic)
+    if why is None:
+        return topic
     if not watched(topic):
-        known = [t for t in WRITERS if "*" not in t]
+        known = [t for t in WRITERS if "*" not in t and allowable(t) is None]
         close = difflib.get_close_matches(topic, known, n=1)
-        hint = f" (did you mean {close[0]}?)" if close else f" (one of {', '.join(sorted(known))}, or /humans/<id>/cmd_vel)"
-        raise argparse.ArgumentTypeError(f"{text[:60]}: not a topic the suite or the metrics read{hint}")
-    return topic
+        why += f" (did you mean {close[0]}?)" if close else f" (one of {', '.join(sorted(known))}, or /humans/<id>/cmd_vel)"
+    raise argparse.ArgumentTypeError(f"{text[:60]}: {why}")
 
 
 def existing_file(text: str) -> str:

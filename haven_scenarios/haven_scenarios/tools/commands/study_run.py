@@ -20,7 +20,7 @@ from pathlib import Path
 from types import FrameType
 
 from haven_scenarios.run.session_batch import run_batch_session
-from haven_scenarios.run.suite import load_suite_config
+from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.study.progress import TrialProgress, attempts, bind, progress, questionnaire_specs, trial_dir
 from haven_scenarios.study.protocol import Study, StudyError, load_study
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
@@ -28,6 +28,7 @@ from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.commands.common import fail
 from haven_scenarios.tools.commands.study import study_dir
 from haven_scenarios.tools.locks import FileLock, Locked
+from haven_sim.common.params import ParamsError
 from haven_sim.runtime.process import STOP_SIGNALS, die_with_parent
 
 INTERRUPTED = 130
@@ -54,11 +55,13 @@ def haven_run_argv(args: argparse.Namespace, trial: PlannedTrial, sessions: Path
     return argv
 
 
-def run_child(argv: list[str]) -> bool:
+def run_child(argv: list[str], lock_fd: int | None = None) -> bool:
     """Run `haven run` to its end; True if a stop signal arrived meanwhile (passed on as SIGTERM,
-    the child's clean stop; a Ctrl-C at the terminal reaches it directly)."""
+    the child's clean stop; a Ctrl-C at the terminal reaches it directly). The child shares the
+    participant's lock (`lock_fd`): were this process killed, the participant stays held until the
+    child has finished its clean stop too."""
     stopped = False
-    proc = subprocess.Popen(argv, preexec_fn=die_with_parent())
+    proc = subprocess.Popen(argv, preexec_fn=die_with_parent(), pass_fds=() if lock_fd is None else (lock_fd,))
 
     def forward(signum: int, frame: FrameType | None) -> None:
         nonlocal stopped
@@ -93,7 +96,7 @@ def run_batch_trial(args: argparse.Namespace, trial: PlannedTrial, sessions: Pat
     }
     previous = {sig: signal.signal(sig, _raise_stopped) for sig in STOP_SIGNALS if sig != signal.SIGINT}
     try:
-        run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(args.params_file))
+        run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(args.params_file, TRIAL_SETS))
     except (KeyboardInterrupt, Stopped):
         return True
     finally:
@@ -132,13 +135,14 @@ def _check(args: argparse.Namespace, study: Study) -> str | None:
 def run_cmd(args: argparse.Namespace) -> int:
     try:
         study = load_study(args.study)
+        load_suite_config(args.params_file, TRIAL_SETS)  # (each trial reads it: refused now, not at the first)
         problem = _check(args, study)
         if problem:
             return fail(problem)
         root = study_dir(args, study)
         trials = [t for t in bind(study, root, args.replan) if t.participant == args.participant]
         questionnaires = questionnaire_specs(study, root) if args.web else []
-    except (StudyError, ScenarioError) as e:
+    except (StudyError, ScenarioError, ParamsError) as e:
         return fail(str(e))
     except OSError as e:
         return fail(f"cannot write the study's folder: {e.strerror or e}")
@@ -150,10 +154,12 @@ def run_cmd(args: argparse.Namespace) -> int:
     except OSError as e:
         return fail(f"cannot lock {root / args.participant}: {e.strerror or e}")
     with lock:
-        return _run_trials(args, study, root, trials, questionnaires)
+        return _run_trials(args, study, root, trials, questionnaires, lock.fd)
 
 
-def _run_trials(args: argparse.Namespace, study: Study, root: Path, trials: list[PlannedTrial], questionnaires: list[str]) -> int:
+def _run_trials(
+    args: argparse.Namespace, study: Study, root: Path, trials: list[PlannedTrial], questionnaires: list[str], lock_fd: int | None
+) -> int:
     todo = [t for t in progress(root, trials) if t.status != "done"]
     done = len(trials) - len(todo)
     print(
@@ -161,14 +167,16 @@ def _run_trials(args: argparse.Namespace, study: Study, root: Path, trials: list
     )
     person = args.web or args.teleop is not None
     for p in todo:
-        code = _one(args, study, p, len(trials), root, questionnaires, person)
+        code = _one(args, study, p, len(trials), root, questionnaires, person, lock_fd)
         if code:
             return code
     print(f"haven study: participant {args.participant}: all {len(trials)} trials done (`haven study report {args.study}` for the tables)")
     return 0
 
 
-def _one(args: argparse.Namespace, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool) -> int:
+def _one(
+    args: argparse.Namespace, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool, lock_fd: int | None
+) -> int:
     """Run one trial; 0 when it finished, else the study's exit code (and why, said)."""
     trial = p.trial
     again = f" (again: {len(p.attempts)} attempt(s) did not finish)" if p.attempts else ""
@@ -180,7 +188,10 @@ def _one(args: argparse.Namespace, study: Study, p: TrialProgress, total: int, r
         return INTERRUPTED
     sessions = trial_dir(root, trial)
     try:
-        stopped = run_batch_trial(args, trial, sessions, study) if args.batch else run_child(haven_run_argv(args, trial, sessions, questionnaires))
+        if args.batch:
+            stopped = run_batch_trial(args, trial, sessions, study)
+        else:
+            stopped = run_child(haven_run_argv(args, trial, sessions, questionnaires), lock_fd)
     except KeyboardInterrupt:
         stopped = True
     except (OSError, ValueError) as e:

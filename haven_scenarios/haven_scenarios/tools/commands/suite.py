@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, check_name, new_session_dir, provenance, write_json
-from haven_scenarios.run.suite import load_suite_config
+from haven_scenarios.run.suite import SIM_SETS, load_suite_config
 from haven_scenarios.tools.commands.common import (
     add_ros_options,
     add_suite_options,
@@ -71,7 +71,7 @@ def run_suite(args: argparse.Namespace) -> int:
     try:  # fail before starting anything
         world = str(resolve_world_path(args.world))
         load_world(world)
-        load_suite_config(args.params_file)
+        load_suite_config(args.params_file, SIM_SETS)
     except (WorldError, ParamsError) as e:
         return fail(str(e))
     try:
@@ -115,7 +115,7 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
     if until is not None and exited is None:
         print(f"haven: {until} did not finish; stopped everything", file=sys.stderr)
         return 1
-    bad = {n: c for n, c in codes.items() if c not in (0, -2)}
+    bad = {n: c for n, c in codes.items() if c not in (0, -2, -15)}  # (-15: stopped by our SIGTERM before it could say so)
     if bad and until is None:
         print(f"haven: unclean exit codes: {bad}", file=sys.stderr)
     return 0

@@ -29,7 +29,7 @@ from haven_scenarios.record.session import (
     write_inputs,
     write_json,
 )
-from haven_scenarios.run.suite import SuiteConfig, load_suite_config, render
+from haven_scenarios.run.suite import TRIAL_SETS, SuiteConfig, load_suite_config, render
 from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
@@ -125,7 +125,7 @@ def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
         if unknown:
             raise ValueError(f"--teleop: no human {unknown[0]!r} in scenario {scenario.name}")
         scenario = replace(scenario, humans=tuple(replace(h, model="teleop") if h.id in ids else h for h in scenario.humans))
-    return scenario, toggles, load_suite_config(args.params_file)
+    return scenario, toggles, load_suite_config(args.params_file, TRIAL_SETS)
 
 
 def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
@@ -263,6 +263,9 @@ def _said(folder: Path, ended: Ended, metrics: dict[str, Any], wall: float) -> i
     print(summary(metrics, wall))
     if not metrics["valid"]:
         print(f"haven: the recording is not complete: {'; '.join(metrics['invalid_reasons'])}", file=sys.stderr)
+        if any("from outside the suite" in r for r in metrics["invalid_reasons"]):
+            hint = "an outside input the study expects is declared with `haven run --allow TOPIC` (README: One trial, one world)"
+            print(f"haven: {hint}", file=sys.stderr)
     made = sorted(p.name + ("/" if p.is_dir() else "") for p in folder.iterdir())
     print(f"haven: session in {folder} ({', '.join(made)})")
     if ended.died is not None:
