@@ -88,7 +88,7 @@ def test_bad_arguments_are_one_line_before_anything_starts(argv, says, capsys):
 def test_an_empty_participant_id_is_refused_not_turned_into_sim(tmp_path, capsys):
     assert main(["run", "--participant", "", "--sessions", str(tmp_path)]) == 2
     err = capsys.readouterr().err
-    assert err.startswith("haven: error: --participant: must be 1 to 64 letters") and err.count("\n") == 1
+    assert err.startswith("haven: error: --participant: must be 1 to 64 ASCII letters") and err.count("\n") == 1
     assert list(tmp_path.iterdir()) == []
 
 

@@ -23,7 +23,7 @@ from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.cli import main
 
 SCENARIO = "name: {name}\nworld: small_test\nkind: retrieval\ntimeout_s: 20\nrobot: {{order: nearest}}\n"
-RULE = "must be 1 to 64 letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
+RULE = "must be 1 to 64 ASCII letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
 BAD = ["", ".", "..", "../x", "../../../x", "a/b", "/abs", "a..b", "-x", ".hidden", "x" * 65, "a b", "ü", "a\x00b", "a\\b", None, 7]
 
 
@@ -63,7 +63,7 @@ def test_haven_run_refuses_a_participant_id_that_is_a_path(tmp_path, capsys):
     code, out, err = run_haven(capsys, "run", "hallway", "--participant", "../../x", "--sessions", str(tmp_path / "a" / "s"))
     assert code == 2 and out == ""
     assert err == [
-        "haven: error: --participant: must be 1 to 64 letters, digits, '_', '.' or '-', starting with a letter or digit, without '..', got '../../x'"
+        "haven: error: --participant: must be 1 to 64 ASCII letters, digits, '_', '.' or '-', starting with a letter or digit, without '..', got '../../x'"
     ]
     assert every_path(tmp_path) == []  # nothing made, inside --sessions or out
 

@@ -120,7 +120,7 @@ def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) 
 @pytest.mark.parametrize(
     "changes, message",
     [
-        ({"name": "a/b"}, "name: must be 1 to 64 letters"),
+        ({"name": "a/b"}, "name: must be 1 to 64 ASCII letters"),
         ({"scenarios": ["nowhere"]}, "scenarios[0]: nowhere: no such scenario"),
         ({"scenarios": []}, "scenarios: must be a non-empty list"),
         ({"conditions": {"x": ["blink"]}}, "conditions.x: unknown cue 'blink'"),
