@@ -88,10 +88,10 @@ class ComponentNode(Node):
         """Only `runtime_parameters` (the cue toggles: the study condition) change while a node runs;
         any other change is refused, said in the log and in a `request_refused` event (the study log
         shows that somebody tried)."""
-        reason = start_up_only(self, params, self.runtime_parameters)
-        if reason is not None:
-            self.emit([self.refused_request("parameter", reason.split(":")[0], reason)])
-            return SetParametersResult(successful=False, reason=reason)
+        refused = start_up_only(self, params, self.runtime_parameters)
+        if refused is not None:
+            self.emit([self.refused_request("parameter", *refused)])
+            return SetParametersResult(successful=False, reason=refused[1])
         return SetParametersResult(successful=True)
 
     def refused_request(self, what: str, name: str, reason: str) -> Message:

@@ -69,15 +69,15 @@ def handle(node: Node, topic: str, handler: Callable[[Any, float], Sequence[Mess
     return []
 
 
-def start_up_only(node: Node, params: Sequence[Parameter], allowed: frozenset[str] = frozenset()) -> str | None:
-    """Why a parameter change is refused, or None: once a node runs, only the `allowed` parameters
-    change; any other it has (its own, and rclpy's use_sim_time: time must not switch clocks
-    mid-trial) is read at start-up only. (A parameter being declared does not exist yet: allowed.)"""
+def start_up_only(node: Node, params: Sequence[Parameter], allowed: frozenset[str] = frozenset()) -> tuple[str, str] | None:
+    """(the parameter, why) a change is refused, or None: once a node runs, only the `allowed`
+    parameters change; any other it has (its own, and rclpy's use_sim_time: time must not switch
+    clocks mid-trial) is read at start-up only. (A parameter being declared does not exist yet.)"""
     for p in params:
         if node.has_parameter(p.name) and p.name not in allowed:
             reason = f"{p.name}: read at start-up only; restart the node to change it"
             node.get_logger().warning(f"refused to set {reason}", throttle_duration_sec=2.0)
-            return reason
+            return p.name, reason
     return None
 
 
@@ -85,10 +85,12 @@ def refuse_changes(node: Node, on_refused: Callable[[str, str], None] | None = N
     """Refuse every parameter change once the node runs (`start_up_only`); `on_refused(name, reason)`."""
 
     def check(params: list[Parameter]) -> SetParametersResult:
-        reason = start_up_only(node, params)
-        if reason is not None and on_refused is not None:
-            on_refused(params[0].name, reason)
-        return SetParametersResult(successful=reason is None, reason=reason or "")
+        refused = start_up_only(node, params)
+        if refused is None:
+            return SetParametersResult(successful=True)
+        if on_refused is not None:
+            on_refused(*refused)
+        return SetParametersResult(successful=False, reason=refused[1])
 
     node.add_on_set_parameters_callback(check)
 
