@@ -8,14 +8,20 @@ from haven_scenarios.record.outsiders import (
     WRITERS,
     Declared,
     PublisherLog,
+    judge,
     open_topics,
     outsiders,
     watched,
     writers,
 )
+from haven_scenarios.record.timeline import Recording
+from haven_scenarios.record.validity import check
 from haven_scenarios.run.trial import Trial
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.web.access import ANSWERS, CONSOLE_ROLE, READY, SKIP_QUESTIONNAIRES, participant_role
+from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
+from haven_sim.common.geometry import Pose2D
+from haven_sim.common.state import RobotState
 
 
 def absolute(topic: str) -> str:
@@ -64,3 +70,28 @@ def test_outsiders_are_publishers_not_of_the_suite_and_second_ones_under_our_nam
     assert [(s.topic, s.gid) for s in found] == [("/odom", "b")]
     assert "/plan" in open_topics(without=["planner"]) and set(ALWAYS_OPEN) <= set(open_topics())
     assert "/humans/h1/cmd_vel" in open_topics(teleop=["h1"])
+
+
+def test_an_outsider_gone_before_the_start_and_its_early_plans_still_count():
+    """A goal flood over before trial_start can have moved the robot the trial starts from: its
+    publisher counts (the recorder saw it at 1-2 s, the trial ran 5-9 s), and so do the plans the
+    planner made before the start, even with no publisher seen at all (gone before the recorder
+    looked). With /goal_pose opened both are notes; after the end nothing counts."""
+    log = PublisherLog()
+    log.observe("/goal_pose", [("goal_flood", "f")], 1.0)
+    log.observe("/goal_pose", [("goal_flood", "f")], 2.0)
+    nodes = frozenset({"sim_node", "planner", "scenario"})
+    reasons, notes = judge(log, Declared(nodes), (5.0, 9.0))
+    assert reasons == ["/goal_pose: published by goal_flood from outside the suite"] and notes == []
+    assert judge(log, Declared(nodes), (0.0, 0.5)) == ([], [])  # (came after the end)
+    rec = Recording(odom=[(t / 10, RobotState(Pose2D(0.0, 0.0, 0.0))) for t in range(50, 91)])
+    rec.events = [
+        event(EventKind.PLAN_MADE, 2.0, Source.PLANNER, **{PLAN_POSES: 3}),
+        event(EventKind.TRIAL_START, 5.0, Source.SCENARIO, scenario="x"),
+        event(EventKind.TRIAL_END, 9.0, Source.SCENARIO, reason="timeout"),
+    ]
+    early = "/plan: 1 plan(s) made before the trial began, for goals from outside the suite"
+    closed = check(rec, rec.window(), Declared(nodes))
+    assert not closed["valid"] and closed["invalid_reasons"] == [early]
+    opened = check(rec, rec.window(), Declared(nodes, open_topics(allow=["/goal_pose"])))
+    assert opened["valid"] and opened["outside_publishers"] == early

@@ -6,7 +6,7 @@ endpoint GID, first and last seen in sim time) and keeps the log in the bag's me
 (custom_data `haven.publishers`). A publisher is the suite's when its node is one the run started
 (`Declared.nodes`) and that node writes the topic (`WRITERS`); a second publisher under one of our
 names is another suite's (two suites on one domain). Any other publisher on a topic the suite reads
-or the metrics read (`watched`) is from outside; while the trial runs, it makes the session not
+or the metrics read (`watched`) is from outside; seen before the trial ends, it makes the session not
 valid, unless the run declared the topic open to outside input, or the suite ignored it: on the
 lockstep clock a node of the suite takes no message from outside on a topic the suite writes
 (`runtime/suite_messages.py`; each says how many in `outside_input` events), so there only an
@@ -198,17 +198,18 @@ def describe(s: Seen, declared: Declared) -> str:
     return f"{s.topic}: published by {who} from outside the suite{twin}"
 
 
-def during(s: Seen, window: tuple[float, float] | None) -> bool:
-    """Whether a publisher was there while the trial ran (no trial: whenever it was there)."""
-    return window is None or (s.last_s >= window[0] - 1e-6 and s.first_s <= window[1] + 1e-6)
+def before_end(s: Seen, window: tuple[float, float] | None) -> bool:
+    """Whether a publisher was there before the trial ended (no trial: whenever it was there): one
+    that went before the start can still have moved the robot the trial then starts from."""
+    return window is None or s.first_s <= window[1] + 1e-6
 
 
 def judge(log: PublisherLog, declared: Declared, window: tuple[float, float] | None) -> tuple[list[str], list[str]]:
-    """(why the session is not valid; what is only noted): one line per outside publisher while the
-    trial ran (noted: those the lockstep clock ignored, and those on topics the run opened)."""
+    """(why the session is not valid; what is only noted): one line per outside publisher seen
+    before the trial ended (noted: those the lockstep clock ignored, and those on topics the run opened)."""
     reasons, notes = [], []
     for s in outsiders(log, declared, with_open=True):
-        if not during(s, window):
+        if not before_end(s, window):
             continue
         if s.topic in declared.open:
             notes.append(f"{describe(s, declared)}, on a topic the run opened to it")

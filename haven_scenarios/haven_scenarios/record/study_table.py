@@ -124,4 +124,3 @@ def long_rows(results: Sequence[TrialResults]) -> list[dict[str, Any]]:
 
 def wide_rows(results: Sequence[TrialResults]) -> list[dict[str, Any]]:
     return [{**r.design, **{m.column: m.value for m in r.measures}} for r in results]
-

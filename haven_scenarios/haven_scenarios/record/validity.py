@@ -5,7 +5,8 @@ their header stamps show every missing message and every gap, a late start inclu
 source (`seq`), so a missing one shows too, and the planner's and the scenario's name each /plan and
 /goal_pose they publish, so a missing plan or goal shows; the recorder notes every message DDS reports lost,
 and a loss on a topic the metrics read counts; a trial must have ended with `trial_end`; and no
-publisher from outside the suite may have been there while it ran (`record/outsiders.py`).
+publisher from outside the suite may have been there before it ended (`record/outsiders.py`), nor
+the planner have planned before it began (for an outside goal).
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ import numpy as np
 
 from haven_scenarios.record.outsiders import METRIC_TOPICS, Declared, judge
 from haven_scenarios.record.timeline import Recording
+from haven_sim.common import topics
 from haven_sim.common.events import PLAN_POSES, EventKind, Source
 
 MIN_COVERAGE = 0.99
@@ -84,6 +86,17 @@ def _sent_but_not_recorded(rec: Recording, window: tuple[float, float]) -> list[
     return out + ([f"/goal_pose: {missing_goals} of the scenario's goals not recorded"] if missing_goals else [])
 
 
+def _planned_before_start(rec: Recording, window: tuple[float, float], declared: Declared | None) -> tuple[list[str], list[str]]:
+    """(reasons, notes): the planner's plans from before trial_start. The scenario sends its first
+    goal at the start, so an earlier plan followed somebody else's goal, which can have moved the
+    robot the trial then starts from, even if its publisher was gone before the recorder looked."""
+    early = sum(1 for e in rec.events if e.source == Source.PLANNER and isinstance(e.get(PLAN_POSES), int) and e.stamp < window[0] - 1e-6)
+    if not early:
+        return [], []
+    line = f"/plan: {early} plan(s) made before the trial began, for goals from outside the suite"
+    return ([], [line]) if declared is not None and f"/{topics.GOAL}" in declared.open else ([line], [])
+
+
 def check(rec: Recording, window: tuple[float, float] | None, declared: Declared | None = None) -> dict[str, Any]:
     """`declared`: what the run said of itself (session.json), to judge the publishers the recorder
     saw (record/outsiders.py); None: nothing to judge (batch mode, sessions from before)."""
@@ -103,6 +116,8 @@ def check(rec: Recording, window: tuple[float, float] | None, declared: Declared
         reasons.append("no trial_end recorded")
     if window is not None:
         reasons += _sent_but_not_recorded(rec, window)
+        early, early_noted = _planned_before_start(rec, window, declared)
+        reasons, noted = reasons + early, noted + early_noted
     reasons += _missing_events(rec, window)
     reasons += [
         f"{e['topic']}: {e['messages']} of the suite's message(s) never reached {e.source} on the lockstep clock"
