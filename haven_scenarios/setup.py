@@ -16,7 +16,9 @@ setup(
         (f"share/{package_name}/scenarios", glob("haven_scenarios/scenarios/*.yaml")),
         (f"share/{package_name}/studies", glob("haven_scenarios/studies/*.yaml")),
     ],
-    install_requires=["setuptools", "haven_sim", "haven_viz", "PyYAML", "numpy", "rosbags", "foxglove-sdk"],
+    install_requires=["setuptools", "haven_sim", "haven_viz", "PyYAML", "numpy", "matplotlib", "rosbags", "mcap", "foxglove-sdk", "tqdm"],
+    # `haven batch --cluster`: sweeps on a Dask cluster (a LocalCluster or a lab's scheduler)
+    extras_require={"cluster": ["dask", "distributed"]},
     zip_safe=True,
     maintainer="HAVEN maintainers",
     maintainer_email="haven@example.org",

@@ -15,7 +15,7 @@ setup(
         (f"share/{package_name}/rviz", glob("haven_viz/rviz/*.rviz")),
         (f"share/{package_name}/foxglove", glob("haven_viz/foxglove/*.json")),
     ],
-    install_requires=["setuptools", "haven_sim", "matplotlib"],
+    install_requires=["setuptools", "haven_sim", "numpy", "matplotlib"],
     zip_safe=True,
     maintainer="HAVEN maintainers",
     maintainer_email="haven@example.org",

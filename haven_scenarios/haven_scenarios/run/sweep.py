@@ -93,7 +93,10 @@ def _on_dask(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Done], clus
     CPU-bound Python), or the scheduler at `cluster`'s address with the workers it has."""
     import logging
 
-    from distributed import Client, LocalCluster, as_completed
+    try:
+        from distributed import Client, LocalCluster, as_completed
+    except ImportError as e:
+        raise ValueError("--cluster needs dask and distributed: pip install 'haven_scenarios[cluster]'") from e
 
     local = None
     if cluster == LOCAL:
