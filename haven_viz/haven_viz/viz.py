@@ -15,7 +15,7 @@ import dataclasses
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import group, param
@@ -43,7 +43,7 @@ class VizConfig:
 
 
 class VizComponent:
-    name = "viz"
+    name = nodes.VIZ.name
     unread: frozenset[str] = frozenset()
 
     def __init__(self, config: VizConfig | None = None, world: World | None = None) -> None:

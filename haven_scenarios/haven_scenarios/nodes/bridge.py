@@ -22,7 +22,7 @@ from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.nodes.role_sink import RoleSink, TablePublishers
 from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_scenarios.web.access import Role, absolute
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.common.params import build, defaults
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import qos, wire
@@ -34,7 +34,7 @@ TIME_PERIOD_S = 0.05  # the server's time is broadcast at most this often (wall 
 
 class Bridge(Node):
     def __init__(self) -> None:
-        super().__init__("haven_bridge")
+        super().__init__(nodes.BRIDGE.name)
         host = self.declare_parameter("host", "127.0.0.1").value
         port = self.declare_parameter("port", 8765).value
         only = list(self.declare_parameter("topics", [""]).value)

@@ -16,9 +16,10 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.parameter_client import AsyncParameterClient
 
+from haven_sim.common import nodes
 from haven_viz.cues import CUES
 
-VIZ_NODE = "viz"
+VIZ_NODE = nodes.VIZ.name
 PARAMETER_TIMEOUT_S = 5.0
 
 

@@ -59,7 +59,7 @@ from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.record.bag import BagWriter
 from haven_scenarios.record.outsiders import Declared, PublisherLog, describe, outsiders, watched
 from haven_scenarios.record.session import END_MARK, EVENTS_FILE
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import build, defaults
 from haven_sim.common.topics import WireParams
@@ -103,7 +103,7 @@ def bag_qos(p: QoSProfile) -> Qos:
 
 class Recorder(Node):
     def __init__(self) -> None:
-        super().__init__("recorder")
+        super().__init__(nodes.RECORDER.name)
         folder = Path(self.declare_parameter("session_dir", "session").value)
         try:
             folder.mkdir(parents=True, exist_ok=True)
@@ -122,9 +122,9 @@ class Recorder(Node):
         self.reached: set[str] = set()  # streams recorded up to the end
         self.flowing: set[str] = set()  # streams that have reached the recorder
         self.publisher_log = PublisherLog()
-        nodes, opened = (self.declare_parameter(n, [], ParameterDescriptor(dynamic_typing=True)).value or [] for n in ("suite_nodes", "open_topics"))
+        names, opened = (self.declare_parameter(n, [], ParameterDescriptor(dynamic_typing=True)).value or [] for n in ("suite_nodes", "open_topics"))
         lockstep = bool(self.declare_parameter("suite_lockstep", False).value)
-        self.declared = Declared(frozenset(nodes), tuple(opened), lockstep) if nodes else None  # (`haven sim --record`: no trial to judge)
+        self.declared = Declared(frozenset(names), tuple(opened), lockstep) if names else None  # (`haven sim --record`: no trial to judge)
         self.topics = RawTopics(
             self,
             lambda topic, msgtype, latched: True,

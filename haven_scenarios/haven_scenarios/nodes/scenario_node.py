@@ -15,7 +15,7 @@ from rclpy.duration import Duration
 
 from haven_scenarios.study.director import ScenarioNodeConfig, TrialDirector, any_reader
 from haven_scenarios.study.scenario import load_scenario
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.runner import run_node
@@ -24,12 +24,9 @@ from haven_viz.nodes.conversions import viz_specs
 END_ACK_TIMEOUT_S = 10.0
 
 
-OBSERVERS = frozenset({"recorder", "viz", "web", "haven_bridge"})  # ours, which read every topic but act on none
-
-
 class ScenarioNode(ComponentNode):
     def __init__(self) -> None:
-        super().__init__("scenario")
+        super().__init__(nodes.SCENARIO.name)
         config = self.declare_config(ScenarioNodeConfig)
         c = config.director
         scenario = load_scenario(c.scenario)
@@ -72,7 +69,7 @@ class ScenarioNode(ComponentNode):
 
     def _everyone_listening(self) -> bool:
         """The nodes in `wait_for` subscribe (an entry like "/goal_pose": a node that is not one of
-        our OBSERVERS reads that topic: somebody's own planner), and our publishers have matched every subscription the graph knows
+        our observers (nodes.OBSERVERS) reads that topic: somebody's own planner), and our publishers have matched every subscription the graph knows
         of (seeing a reader in the graph comes before being able to deliver to it)."""
         listeners: set[str] = set()
         for topic in (topics.EVENTS, topics.GOAL):
@@ -80,7 +77,7 @@ class ScenarioNode(ComponentNode):
             if self._pubs[topic].get_subscription_count() < len(infos):
                 return False
             names = {i.node_name for i in infos}
-            listeners |= names | ({any_reader(topic)} if names - OBSERVERS else set())
+            listeners |= names | ({any_reader(topic)} if names - nodes.OBSERVERS else set())
         return all(name in listeners for name in self.wait_for)
 
 

@@ -42,7 +42,7 @@ from haven_scenarios.web.access import ANSWERS, CONSOLE, READY, SKIP_QUESTIONNAI
 from haven_scenarios.web.front_door import FrontDoor, address_for_others
 from haven_scenarios.web.page_config import PageSettings, page_config
 from haven_scenarios.web.wizard import StartGate, Wizard
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.common.events import Event, EventKind, Sequencer, Source, event
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
@@ -67,7 +67,7 @@ RELAYED = tuple(
 
 class WebNode(Node):
     def __init__(self) -> None:
-        super().__init__("web")
+        super().__init__(nodes.WEB.name)
         host = str(self.declare_parameter("host", "127.0.0.1").value)
         port = int(self.declare_parameter("port", 8088).value)
         humans = [h for h in self.declare_parameter("humans", [""]).value or () if h]  # `[]` on the command line reads as None

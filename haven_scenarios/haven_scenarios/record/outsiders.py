@@ -28,14 +28,16 @@ import json
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 
 # The topics the metrics read from a recording (record/timeline.py's Recording): an outsider's
 # messages there are in the bag, whatever the suite made of them.
 METRIC_TOPICS = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, topics.PLAN, topics.EVENTS)
 
-SIM, MUX, PLANNER, CONTROLLER, VIZ, SCENARIO = "sim_node", "velocity_mux", "planner", "controller", "viz", "scenario"
-WEB, RECORDER = "web", "recorder"
+# The ROS names of the suite's nodes (haven_sim/common/nodes.py).
+SIM, MUX, PLANNER, CONTROLLER, VIZ, SCENARIO, WEB, RECORDER = (
+    n.name for n in (nodes.SIM, nodes.MUX, nodes.PLANNER, nodes.CONTROLLER, nodes.VIZ, nodes.SCENARIO, nodes.WEB, nodes.RECORDER)
+)
 EVERY_NODE = frozenset({SIM, MUX, PLANNER, CONTROLLER, VIZ, SCENARIO, WEB})
 
 
@@ -229,5 +231,5 @@ def declared_of(info: Mapping[str, object]) -> Declared | None:
 
 
 def suite_nodes(without: Sequence[str], web: bool) -> list[str]:
-    """The node names a `haven run` starts."""
-    return [RECORDER, *(n for n in (SIM, MUX, PLANNER, CONTROLLER, VIZ, SCENARIO) if n not in without), *([WEB] if web else [])]
+    """The node names a `haven run` starts (`without`: the names of those left out)."""
+    return [*(n.name for n in nodes.TRIAL if n.name not in without), *([WEB] if web else [])]

@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.study.director import ScenarioNodeConfig
+from haven_sim.common import nodes
 from haven_sim.common.params import WILDCARD, ParamsError, build, check_names, defaults, flatten, load_params_file, node_values, render_params_file
 from haven_sim.common.topics import WireParams
 from haven_sim.common.yaml_file import file_label, short
@@ -25,12 +26,12 @@ from haven_viz.viz import VizConfig
 
 # (node name, its config class): the order of haven.yaml; SuiteConfig's fields in the same order.
 NODES: tuple[tuple[str, type[Any]], ...] = (
-    ("sim_node", SimulatorConfig),
-    ("velocity_mux", MuxConfig),
-    ("planner", PlannerConfig),
-    ("controller", ControllerConfig),
-    ("viz", VizConfig),
-    ("scenario", ScenarioNodeConfig),
+    (nodes.SIM.name, SimulatorConfig),
+    (nodes.MUX.name, MuxConfig),
+    (nodes.PLANNER.name, PlannerConfig),
+    (nodes.CONTROLLER.name, ControllerConfig),
+    (nodes.VIZ.name, VizConfig),
+    (nodes.SCENARIO.name, ScenarioNodeConfig),
 )
 SHARED = (MotionStyle, LockstepParams, WireParams)  # one section: HAVEN's turning rule, the lockstep switch, the velocity topics' type
 HEADER = """Parameters of every HAVEN node, with their defaults (pass with --params-file to `haven sim`,
@@ -73,7 +74,7 @@ def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None, label: s
     p = params or {}
     where = f"{label}: " if label else ""
     made = {f.name: build(cls, node_values(p, name), where=f"{where}{name}: ") for (name, cls), f in zip(NODES, fields(SuiteConfig))}
-    return SuiteConfig(**made, lockstep=build(LockstepParams, node_values(p, "sim_node"), where=f"{where}sim_node: "))
+    return SuiteConfig(**made, lockstep=build(LockstepParams, node_values(p, nodes.SIM.name), where=f"{where}sim_node: "))
 
 
 # Parameters every node has beside its config: rclpy's own (a node declares them itself) and what
@@ -92,23 +93,23 @@ def known_parameters() -> dict[str, dict[str, Any]]:
 # scenario file: a parameter file's own value for one of these would be overwritten without a word.
 _CONDITION = "the condition (--condition, or the scenario's)"
 TRIAL_SETS: Mapping[tuple[str, str], str] = {
-    **{(node, "world"): "the scenario's world (--world)" for node in ("sim_node", "planner", "viz")},
-    **{("viz", cue): _CONDITION for cue in CUES},
-    ("sim_node", "seed"): "--seed",
-    ("scenario", "seed"): "--seed",
-    ("sim_node", "battery_capacity_m"): "the scenario file (robot: battery: capacity_m)",
-    ("sim_node", "real_time_factor"): "--rtf",
-    ("scenario", "scenario"): "the scenario haven runs",
-    ("scenario", "hold_start"): "--web (and --researcher-start)",
-    ("scenario", "wait_for"): "haven run (--without)",
-    ("sim_node", "reset_allowed"): "haven run",
-    **{("sim_node", f"lockstep_{k}"): "haven run" for k in ("participants", "observers", "wait_for")},
+    **{(node.name, "world"): "the scenario's world (--world)" for node in (nodes.SIM, nodes.PLANNER, nodes.VIZ)},
+    **{(nodes.VIZ.name, cue): _CONDITION for cue in CUES},
+    (nodes.SIM.name, "seed"): "--seed",
+    (nodes.SCENARIO.name, "seed"): "--seed",
+    (nodes.SIM.name, "battery_capacity_m"): "the scenario file (robot: battery: capacity_m)",
+    (nodes.SIM.name, "real_time_factor"): "--rtf",
+    (nodes.SCENARIO.name, "scenario"): "the scenario haven runs",
+    (nodes.SCENARIO.name, "hold_start"): "--web (and --researcher-start)",
+    (nodes.SCENARIO.name, "wait_for"): "haven run (--without)",
+    (nodes.SIM.name, "reset_allowed"): "haven run",
+    **{(nodes.SIM.name, f"lockstep_{k}"): "haven run" for k in ("participants", "observers", "wait_for")},
     (WILDCARD, "lockstep"): "haven run (--free-running for the free-running clock)",
     (WILDCARD, "lockstep_open"): "--allow",
 }
 SIM_SETS: Mapping[tuple[str, str], str] = {
-    **{(node, "world"): "--world" for node in ("sim_node", "planner", "viz")},
-    ("sim_node", "real_time_factor"): "--rtf",
+    **{(node.name, "world"): "--world" for node in (nodes.SIM, nodes.PLANNER, nodes.VIZ)},
+    (nodes.SIM.name, "real_time_factor"): "--rtf",
 }
 
 
@@ -129,7 +130,7 @@ def checked_suite_config(params: Mapping[str, Mapping[str, Any]], label: str, se
     for (node, name), option in (sets or {}).items():
         for section in dict.fromkeys((node, WILDCARD)):
             value = params.get(section, {}).get(name)
-            if value is not None and value != known["sim_node" if node == WILDCARD else node][name]:
+            if value is not None and value != known[nodes.SIM.name if node == WILDCARD else node][name]:
                 raise ParamsError(f"{label}: {section}: {name}: set by {option}, not by a parameter file")
     for node, values in params.items():  # (rclpy's own parameters are booleans; the configs check the rest)
         for name in ROS_BUILTIN.keys() & values.keys():

@@ -29,12 +29,13 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from haven_scenarios.tools.locks import FileLock, Locked
+from haven_sim.common import nodes
 
 FREE_DOMAINS = range(1, 102)
 MAX_DOMAIN_ID = 232  # DDS's port arithmetic ends here
 PROBE_S = 2.0  # wall time a probe watches the graph (a running suite shows up after 0.4-0.9 s, later on a busy machine)
 # Nodes that make a suite: a domain where one of them runs is taken.
-SUITE_NODES = ("sim_node", "planner", "recorder", "velocity_mux", "controller", "viz", "scenario")
+SUITE_NODES = tuple(n.name for n in nodes.TRIAL)
 
 
 class DomainBusy(Exception):

@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.common.params import group, param
@@ -32,7 +32,7 @@ class ControllerConfig:
 
 
 class ControllerComponent:
-    name = "controller"
+    name = nodes.CONTROLLER.name
     unread: frozenset[str] = frozenset()
 
     def __init__(self, config: ControllerConfig | None = None) -> None:

@@ -20,7 +20,7 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
 from haven_sim.common.params import param
@@ -85,7 +85,7 @@ class VelocityMux:
 
 
 class MuxComponent:
-    name = "velocity_mux"
+    name = nodes.MUX.name
     unread: frozenset[str] = frozenset()
 
     def __init__(self, config: MuxConfig | None = None) -> None:

@@ -14,7 +14,7 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import group, param
@@ -66,7 +66,7 @@ def world_lanes(world: World) -> tuple[Lane, ...]:
 
 
 class PlannerComponent:
-    name = "planner"
+    name = nodes.PLANNER.name
     unread: frozenset[str] = frozenset()
 
     def __init__(self, config: PlannerConfig | None = None, lanes: Sequence[Lane] = ()) -> None:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import sys
 
+from haven_sim.common import nodes
 from haven_sim.nav.controller import ControllerComponent, ControllerConfig
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
@@ -16,7 +17,7 @@ from haven_sim.nodes.runner import run_node
 
 class ControllerNode(ComponentNode):
     def __init__(self) -> None:
-        super().__init__("controller")
+        super().__init__(nodes.CONTROLLER.name)
         self.wire(ControllerComponent(self.declare_config(ControllerConfig)), wire.specs())
 
 

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import sys
 
+from haven_sim.common import nodes
 from haven_sim.nav.mux import MuxComponent, MuxConfig
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
@@ -15,7 +16,7 @@ from haven_sim.nodes.runner import run_node
 
 class MuxNode(ComponentNode):
     def __init__(self) -> None:
-        super().__init__("velocity_mux")
+        super().__init__(nodes.MUX.name)
         self.wire(MuxComponent(self.declare_config(MuxConfig)), wire.specs())
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import sys
 
+from haven_sim.common import nodes
 from haven_sim.nav.planning import PlannerComponent, PlannerConfig, world_lanes
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
@@ -19,7 +20,7 @@ from haven_sim.sim.world_file import load_world
 
 class PlannerNode(ComponentNode):
     def __init__(self) -> None:
-        super().__init__("planner")
+        super().__init__(nodes.PLANNER.name)
         config = self.declare_config(PlannerConfig)
         lanes = world_lanes(load_world(resolve_world_path(config.world))) if config.world else ()
         component = PlannerComponent(config, lanes)

@@ -15,7 +15,7 @@ import time
 from rclpy.clock import Clock, ClockType
 from std_srvs.srv import Trigger
 
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.lockstep import LockstepCoordinator
@@ -29,7 +29,7 @@ from haven_sim.sim.world_file import load_world
 
 class SimNode(ComponentNode):
     def __init__(self) -> None:
-        super().__init__("sim_node")
+        super().__init__(nodes.SIM.name)
         config = self.declare_config(SimulatorConfig)
         world = load_world(resolve_world_path(config.world))
         self.sim = SimulatorComponent(world, config)

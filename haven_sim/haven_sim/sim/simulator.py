@@ -13,7 +13,7 @@ import functools
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import FloatArray, Twist2D
 from haven_sim.common.params import group, param
@@ -60,7 +60,7 @@ class ScanData:
 
 
 class SimulatorComponent:
-    name = "sim_node"
+    name = nodes.SIM.name
     unread: frozenset[str] = frozenset()
     period_s = None  # stepped by its owner (the pacer in ROS mode, the loop in batch mode)
 

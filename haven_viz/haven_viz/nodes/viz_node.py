@@ -14,7 +14,7 @@ import sys
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
 
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.runner import run_node
@@ -29,7 +29,7 @@ class VizNode(ComponentNode):
     runtime_parameters = frozenset(CUES)
 
     def __init__(self) -> None:
-        super().__init__("viz")
+        super().__init__(nodes.VIZ.name)
         config = self.declare_config(VizConfig)
         world = load_world(resolve_world_path(config.world)) if config.world else None
         self.viz = VizComponent(config, world)

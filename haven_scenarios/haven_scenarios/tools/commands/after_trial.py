@@ -22,9 +22,10 @@ from haven_scenarios.study.questionnaires import BUILTINS, likert, resolve
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.commands.recordings import exit_text
 from haven_scenarios.tools.supervisor import Supervisor
+from haven_sim.common import nodes
 from haven_sim.common.yaml_file import file_label, read_yaml
 
-KEPT = ("recorder", "web")  # what runs on while the participants answer
+KEPT = (nodes.RECORDER.key, nodes.WEB.key)  # what runs on while the participants answer
 Asked = tuple[list[str], list[str]]  # the teleoperated humans, the questionnaires' names
 
 

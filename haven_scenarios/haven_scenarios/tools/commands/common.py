@@ -14,18 +14,7 @@ from haven_scenarios.record.outsiders import WRITERS, allowable, watched
 from haven_scenarios.run.trial import SEED_MAX
 from haven_scenarios.tools.domains import MAX_DOMAIN_ID, Claim, claim_domain
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
-
-SUITE = ("sim", "mux", "planner", "controller", "viz")
-NODE_MODULES = {
-    "sim": "haven_sim.nodes.sim_node",
-    "mux": "haven_sim.nodes.mux_node",
-    "planner": "haven_sim.nodes.planner_node",
-    "controller": "haven_sim.nodes.controller_node",
-    "viz": "haven_viz.nodes.viz_node",
-}
-NODE_NAMES = {"sim": "sim_node", "mux": "velocity_mux", "planner": "planner", "controller": "controller", "viz": "viz"}  # ROS node names
-
-
+from haven_sim.common import nodes
 
 
 def finite(text: str) -> float:
@@ -117,7 +106,7 @@ def add_suite_options(p: argparse.ArgumentParser) -> None:
         "--without",
         nargs="+",
         default=[],
-        choices=SUITE[1:],
+        choices=nodes.REPLACEABLE,
         metavar="NODE",
         help="leave out our mux, planner, controller or viz (to run your own in their place)",
     )
@@ -138,7 +127,7 @@ def claim(args: argparse.Namespace, ignore: Sequence[str] = ()) -> Claim:
     nodes; DomainBusy (one line) when `--domain-id` names a domain another suite holds. Said when
     the inherited domain was taken and the suite moved. `ignore`: our nodes left out (`--without`),
     whose names the user's own nodes may have."""
-    got = claim_domain(args.domain_id, ros_environment(network=args.network), [NODE_NAMES.get(n, n) for n in ignore])
+    got = claim_domain(args.domain_id, ros_environment(network=args.network), [nodes.BY_KEY[n].name for n in ignore])
     args.domain_id = got.domain_id
     if got.moved_from is not None:
         home, why = got.moved_from
@@ -155,13 +144,13 @@ def suite_specs(params: Mapping[str, Mapping[str, object]], pfile: str | None, w
     """Our nodes (less `without`), each with the parameter file and its own -p overrides; every node
     but the simulator runs on sim time."""
     specs = []
-    for name, module in NODE_MODULES.items():
-        if name in without:
+    for node in nodes.COMPONENTS:
+        if node.key in without:
             continue
-        own = dict(params.get(name, {}))
-        if name != "sim":
+        own = dict(params.get(node.key, {}))
+        if node is not nodes.SIM:
             own = {"use_sim_time": True, **own}
-        specs.append(ProcessSpec(name, node_argv(module, own, params_file=pfile)))
+        specs.append(ProcessSpec(node.key, node_argv(node.module, own, params_file=pfile)))
     return specs
 
 

@@ -20,6 +20,7 @@ from haven_scenarios.record.report import session_folders
 from haven_scenarios.record.session import METRICS_FILE, SESSION_FILE, analyse, session_info, write_json
 from haven_scenarios.tools.commands.common import fail
 from haven_scenarios.tools.supervisor import Exited
+from haven_sim.common import nodes
 
 NO_OUTCOME = "unknown: haven run ended before it wrote the outcome"
 
@@ -47,7 +48,7 @@ class Ended:
     def died(self) -> Exited | None:
         """The node that ended the trial by exiting when it should not have."""
         e = self.exited
-        return e if e is not None and (e.name != "scenario" or e.code != 0) else None
+        return e if e is not None and (e.name != nodes.SCENARIO.key or e.code != 0) else None
 
 
 def outcome(ended: Ended | None, end_reason: str | None, repaired: Repaired | None, limit_s: float) -> str:
@@ -63,7 +64,7 @@ def outcome(ended: Ended | None, end_reason: str | None, repaired: Repaired | No
     else:
         text = end_reason or "unknown: the metrics were not computed"
     code = ended.recorder_code if ended is not None else None
-    if code not in (None, 0) and not (ended is not None and ended.died is not None and ended.died.name == "recorder"):
+    if code not in (None, 0) and not (ended is not None and ended.died is not None and ended.died.name == nodes.RECORDER.key):
         text += f"; {exit_text('recorder', code)} while stopping"
     if repaired is not None:
         text += f"; bag repaired ({repaired.messages} messages recovered)"

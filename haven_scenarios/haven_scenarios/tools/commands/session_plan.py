@@ -15,17 +15,16 @@ from haven_scenarios.run.trial import scenario_suite
 from haven_scenarios.study.director import any_reader
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.commands import after_trial
-from haven_scenarios.tools.commands.common import NODE_NAMES, suite_specs
+from haven_scenarios.tools.commands.common import suite_specs
 from haven_scenarios.tools.supervisor import ProcessSpec, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
-from haven_sim.common import topics
+from haven_sim.common import nodes, topics
 from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
 from haven_viz.cues import Toggles
 
 SESSION_PARAMS_HEADER = """Every node's parameters as run in this session: each node was started with this file, in this
 folder (file names are relative to it, so the folder can move). `haven rerun` on this folder runs
 the session again with them. Parameters are documented in haven_sim/config/haven.yaml."""
-PARTICIPANTS = ("velocity_mux", "planner", "controller", "viz", "scenario")  # the nodes' names
 
 
 @dataclass(frozen=True)
@@ -53,7 +52,7 @@ class SessionPlan:
     @property
     def declared(self) -> Declared:
         """The nodes this run starts and the topics it opens to outside publishers."""
-        without = [NODE_NAMES[n] for n in self.without]
+        without = [nodes.BY_KEY[n].name for n in self.without]
         teleop = [h.id for h in self.scenario.humans if h.model == "teleop"]
         return Declared(frozenset(suite_nodes(without, self.web is not None)), open_topics(without, teleop, self.allow), self.lockstep)
 
@@ -70,12 +69,13 @@ class SessionPlan:
             sim = replace(sim, humans_rate_hz=max(sim.humans_rate_hz, 1.0 / sim.sim.step_s))
         if self.lockstep:
             # The viz is waited for like any participant: the scenario reads what it shows (/haven/cue_state).
-            sim = replace(sim, lockstep_participants=PARTICIPANTS, lockstep_observers=(), lockstep_wait_for=("recorder",))
+            participants = tuple(n.name for n in nodes.LOCKSTEP_PARTICIPANTS)
+            sim = replace(sim, lockstep_participants=participants, lockstep_observers=(), lockstep_wait_for=(nodes.RECORDER.name,))
         else:
             sim = replace(sim, lockstep_participants=(), lockstep_observers=(), lockstep_wait_for=())
         # The trial starts once the planner listens (somebody's own: whichever node reads /goal_pose).
-        planner = "planner" if "planner" not in self.without else any_reader(topics.GOAL)
-        scenario = replace(c.scenario, wait_for=(planner, "recorder"), hold_start=self.web is not None)
+        planner = nodes.PLANNER.name if nodes.PLANNER.key not in self.without else any_reader(topics.GOAL)
+        scenario = replace(c.scenario, wait_for=(planner, nodes.RECORDER.name), hold_start=self.web is not None)
         return replace(c, sim=sim, scenario=scenario, lockstep=LockstepParams(self.lockstep, self.allow))
 
 
@@ -84,7 +84,7 @@ def specs_of(folder: Path, plan: SessionPlan) -> list[ProcessSpec]:
     over `-p`, so the file holds everything); on the command line only which clock they read."""
     # On the lockstep clock the ticks carry the time: the participants need no /clock.
     stepped: dict[str, object] = {"use_sim_time": False} if plan.lockstep else {}
-    suite = suite_specs({"mux": stepped, "planner": stepped, "controller": stepped, "viz": stepped}, PARAMS_FILE, plan.without)
+    suite = suite_specs({n.key: stepped for n in nodes.COMPONENTS if n is not nodes.SIM}, PARAMS_FILE, plan.without)
     declared = plan.declared
     recorder_params = {
         "use_sim_time": True,
@@ -93,9 +93,9 @@ def specs_of(folder: Path, plan: SessionPlan) -> list[ProcessSpec]:
         "open_topics": list(declared.open),
         "suite_lockstep": plan.lockstep,
     }
-    recorder = node_argv("haven_scenarios.nodes.recorder", recorder_params)
-    scenario_node = node_argv("haven_scenarios.nodes.scenario_node", {"use_sim_time": True, **stepped}, params_file=PARAMS_FILE)
-    specs = [ProcessSpec("recorder", recorder), *suite, ProcessSpec("scenario", scenario_node)]
+    recorder = node_argv(nodes.RECORDER.module, recorder_params)
+    scenario_node = node_argv(nodes.SCENARIO.module, {"use_sim_time": True, **stepped}, params_file=PARAMS_FILE)
+    specs = [ProcessSpec(nodes.RECORDER.key, recorder), *suite, ProcessSpec(nodes.SCENARIO.key, scenario_node)]
     return [replace(spec, cwd=str(folder.resolve())) for spec in specs]
 
 
@@ -122,4 +122,4 @@ def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
         "map_inset": web.map_inset,
         **({"questionnaires": after_trial.as_parameter(web.questionnaires)} if web.questionnaires else {}),
     }
-    return ProcessSpec("web", node_argv("haven_scenarios.nodes.web_node", params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))
+    return ProcessSpec(nodes.WEB.key, node_argv(nodes.WEB.module, params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))

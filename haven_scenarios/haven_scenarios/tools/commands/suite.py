@@ -22,7 +22,7 @@ from haven_scenarios.tools.commands.common import (
 from haven_scenarios.tools.commands.recordings import repair_bag
 from haven_scenarios.tools.domains import DomainBusy
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
-from haven_sim.common import atomic
+from haven_sim.common import atomic, nodes
 from haven_sim.common.params import ParamsError
 from haven_sim.sim.world import WorldError, resolve_world_path
 from haven_sim.sim.world_file import load_world
@@ -83,9 +83,8 @@ def run_suite(args: argparse.Namespace) -> int:
 
 
 def _run_claimed(args: argparse.Namespace, world: str) -> int:
-    specs = suite_specs(
-        {"sim": {"world": world, "real_time_factor": args.rtf}, "planner": {"world": world}, "viz": {"world": world}}, params_file(args), args.without
-    )
+    own = {nodes.SIM.key: {"world": world, "real_time_factor": args.rtf}, nodes.PLANNER.key: {"world": world}, nodes.VIZ.key: {"world": world}}
+    specs = suite_specs(own, params_file(args), args.without)
     until, timeout = None, getattr(args, "duration", None)
     folder = None
     if getattr(args, "record", False):
@@ -93,8 +92,8 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
             folder = _ad_hoc_session(Path(args.sessions), world, args)
         except (ValueError, OSError) as e:
             return fail(f"--sessions {args.sessions}: {getattr(e, 'strerror', None) or e}")
-        recorder = node_argv("haven_scenarios.nodes.recorder", {"use_sim_time": True, "session_dir": "."}, params_file=params_file(args))
-        specs.insert(0, ProcessSpec("recorder", recorder, cwd=str(folder.resolve())))
+        recorder = node_argv(nodes.RECORDER.module, {"use_sim_time": True, "session_dir": "."}, params_file=params_file(args))
+        specs.insert(0, ProcessSpec(nodes.RECORDER.key, recorder, cwd=str(folder.resolve())))
     if args.command == "demo":
         specs.append(ProcessSpec("demo_driver", node_argv("haven_scenarios.nodes.demo_driver", {"use_sim_time": True, "laps": args.laps})))
         until, timeout = "demo_driver", 300.0
@@ -105,7 +104,7 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
         started = ", ".join(f"{n} (pid {p})" for n, p in sup.pids().items())
         print(f"haven: started {started} on ROS domain {args.domain_id}; Ctrl-C stops all", flush=True)
         exited = sup.wait(timeout_s=timeout, until_exit_of=until)
-        codes = sup.stop(first=tuple(n for n in sup.pids() if n != "recorder"))  # the recorder last: it gets everything
+        codes = sup.stop(first=tuple(n for n in sup.pids() if n != nodes.RECORDER.key))  # the recorder last: it gets everything
     if folder is not None:
         repair_bag(folder / "bag", how="haven sim --record")  # (a recorder that died leaves a bag to mend)
         print(f"haven: recorded in {folder}")

@@ -52,6 +52,7 @@ from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_te
 from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
 from haven_scenarios.tools.domains import DomainBusy
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor
+from haven_sim.common import nodes
 from haven_sim.common.events import EventKind
 from haven_sim.runtime.lockstep import UNCAPPED_RTF
 from haven_viz.cues import CUES, Toggles
@@ -148,17 +149,17 @@ def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path,
         sup.install_signal_handlers()
         for spec in specs:
             sup.start(spec)
-        exited = sup.wait(timeout_s=timeout_s, until_exit_of="scenario")
+        exited = sup.wait(timeout_s=timeout_s, until_exit_of=nodes.SCENARIO.key)
         timed_out = exited is None and timeout_s is not None and time.monotonic() - started >= timeout_s
         questionnaires = None
-        if asked is not None and exited is not None and exited.name == "scenario" and exited.code == 0:
+        if asked is not None and exited is not None and exited.name == nodes.SCENARIO.key and exited.code == 0:
             _wait_for_recorded_end(folder, 10.0)  # (the trial's nodes still run: its end is recorded)
             questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
-        sup.stop_some(("scenario",))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
-        if questionnaires is None and (exited is None or exited.name != "recorder"):  # (a dead recorder marks no end)
+        sup.stop_some((nodes.SCENARIO.key,))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
+        if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder marks no end)
             _wait_for_recorded_end(folder, 10.0)
         codes = sup.stop()
-    return Ended(exited, timed_out, codes.get("recorder"), questionnaires)
+    return Ended(exited, timed_out, codes.get(nodes.RECORDER.key), questionnaires)
 
 
 def _session_info(plan: SessionPlan) -> dict[str, Any]:

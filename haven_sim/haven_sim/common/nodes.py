@@ -1,0 +1,34 @@
+"""The suite's nodes, named once: each node's short name (the one `--without planner` takes and the
+supervisor shows), its ROS node name, the module `python -m` runs, and what it is to the others.
+Every node, component, process list and graph check reads its names here."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class SuiteNode:
+    key: str  # short name: `--without KEY`, the supervisor's process name
+    name: str  # ROS node name
+    module: str  # `python -m MODULE` runs it
+    replaceable: bool = False  # may be left out for the user's own (`--without`)
+    observer: bool = False  # reads what the suite publishes, acts on none of it
+
+
+SIM = SuiteNode("sim", "sim_node", "haven_sim.nodes.sim_node")
+MUX = SuiteNode("mux", "velocity_mux", "haven_sim.nodes.mux_node", replaceable=True)
+PLANNER = SuiteNode("planner", "planner", "haven_sim.nodes.planner_node", replaceable=True)
+CONTROLLER = SuiteNode("controller", "controller", "haven_sim.nodes.controller_node", replaceable=True)
+VIZ = SuiteNode("viz", "viz", "haven_viz.nodes.viz_node", replaceable=True, observer=True)
+SCENARIO = SuiteNode("scenario", "scenario", "haven_scenarios.nodes.scenario_node")
+RECORDER = SuiteNode("recorder", "recorder", "haven_scenarios.nodes.recorder", observer=True)
+WEB = SuiteNode("web", "web", "haven_scenarios.nodes.web_node", observer=True)
+BRIDGE = SuiteNode("bridge", "haven_bridge", "haven_scenarios.nodes.bridge", observer=True)
+
+COMPONENTS = (SIM, MUX, PLANNER, CONTROLLER, VIZ)  # what `haven sim` starts, in this order
+TRIAL = (RECORDER, *COMPONENTS, SCENARIO)  # what `haven run` starts (and WEB with --web)
+LOCKSTEP_PARTICIPANTS = (MUX, PLANNER, CONTROLLER, VIZ, SCENARIO)  # on the lockstep clock, each takes every tick
+REPLACEABLE = tuple(n.key for n in COMPONENTS if n.replaceable)
+OBSERVERS = frozenset(n.name for n in (VIZ, RECORDER, WEB, BRIDGE))
+BY_KEY = {n.key: n for n in (*TRIAL, WEB, BRIDGE)}
