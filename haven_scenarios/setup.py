@@ -36,5 +36,11 @@ setup(
             "web_node = haven_scenarios.nodes.web_node:main",
             "player = haven_scenarios.nodes.player:main",
         ],
+        # HAVEN's own plugins, registered as a lab's package registers its own (haven_sim/common/plugins.py)
+        "haven.participants": [
+            "walker = haven_scenarios.study.participants:Walker",
+            "blocker = haven_scenarios.study.participants:Blocker",
+            "yielder = haven_scenarios.study.participants:Yielder",
+        ],
     },
 )

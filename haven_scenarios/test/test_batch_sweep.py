@@ -25,7 +25,7 @@ def test_grid_axes_and_seeds_parse_in_the_order_given():
     "grid, says",
     [
         (["mood=happy"], "--grid: unknown key 'mood' (valid: " + ", ".join((*TASK_KEYS, *param_keys())) + ")"),
-        (["model=teleop"], "--grid model: 'teleop' is not a simulated participant model (walker, blocker, yielder)"),
+        (["model=teleop"], "--grid model: 'teleop' is not a simulated participant model (blocker, walker, yielder)"),
         (["speed_mps=fast"], "--grid speed_mps: expected numbers, got 'fast'"),
         (["speed_mps=9"], "--grid speed_mps: must be within (0, 3] m/s, got 9"),
         (["condition=lasers"], "unknown cue 'lasers'"),

@@ -94,3 +94,17 @@ def test_a_stop_the_robot_stands_on_counts_as_reached_from_beside_it_no_deadlock
     person, poses = walk("walker", stops, 30.0)  # the robot starts at (5, 3) and never moves
     assert person.done
     assert min(math.hypot(p.x - 5.0, p.y - 3.0) for p in poses) > 0.4  # never on the robot
+
+
+def test_our_participant_models_are_plugins_listed_by_haven_plugins(capsys):
+    """Registered through entry points as a lab's own are (haven_sim/common/plugins.py)."""
+    from haven_scenarios.tools.cli import main
+    from haven_sim.common import plugins
+
+    reg = plugins.registry("participants")
+    walker = next(p for p in reg if p.name == "walker")
+    assert (walker.package, walker.target) == ("haven_scenarios", "haven_scenarios.study.participants:Walker")
+    assert main(["plugins"]) == 0
+    listed = capsys.readouterr().out.splitlines()
+    assert {"participants walker haven_scenarios", "participants blocker haven_scenarios", "participants yielder haven_scenarios"} <= set(listed)
+    assert all(len(line.split()) == 3 for line in listed)

@@ -127,7 +127,7 @@ def trial_record(participant: str, toggles: Toggles, seed: int, scenario: Scenar
         "seed": seed,
         "scenario": scenario.name,
         "humans": [h.id for h in scenario.world.humans],
-        "teleoperated": [h.id for h in scenario.humans if h.model == "teleop"],
+        "teleoperated": [h.id for h in scenario.humans if h.teleoperated],
         **provenance(),
     }
 

@@ -18,10 +18,10 @@ from typing import Any
 
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.person import PersonParams
-from haven_scenarios.study.scenario import MAX_WALKING_SPEED_MPS, MODELS, HumanTask, Scenario
+from haven_scenarios.study.scenario import MAX_WALKING_SPEED_MPS, HumanTask, Scenario
+from haven_sim.common import plugins
 from haven_viz.cues import Toggles
 
-SIMULATED_MODELS = tuple(m for m in MODELS if m != "teleop")
 TASK_KEYS = ("condition", "model", "speed_mps")  # grid keys that are not perception parameters
 MAX_TRIALS = 1_000_000  # a sweep larger than this is a typo, not a study
 Point = Mapping[str, Any]  # one combination of the grid: key -> value
@@ -49,8 +49,8 @@ def _value(key: str, text: str) -> Any:
         except ValueError as e:
             raise ValueError(f"--grid condition: {e}") from None
     if key == "model":
-        if text not in SIMULATED_MODELS:
-            raise ValueError(f"--grid model: {text!r} is not a simulated participant model ({', '.join(SIMULATED_MODELS)})")
+        if text not in plugins.registry("participants"):
+            raise ValueError(f"--grid model: {text!r} is not a simulated participant model ({', '.join(plugins.registry('participants').names())})")
         return text
     value = _number(key, text)
     if key == "speed_mps" and not 0 < value <= MAX_WALKING_SPEED_MPS:
@@ -107,14 +107,14 @@ class TrialSpec:
 
     def columns(self) -> dict[str, Any]:
         """The design columns: trial, scenario, condition, model, each grid parameter, seed."""
-        models = "+".join(dict.fromkeys(h.model for h in self.scenario.humans if h.model != "teleop"))
+        models = "+".join(dict.fromkeys(h.model for h in self.scenario.humans if not h.teleoperated))
         own = {k: v for k, v in self.design if k not in ("condition", "model")}
         condition = condition_name(self.toggles)
         return {"trial": self.index, "scenario": self.scenario.name, "condition": condition, "model": models, **own, "seed": self.seed}
 
 
 def _human(task: HumanTask, point: Point) -> HumanTask:
-    if task.model == "teleop":
+    if task.teleoperated:
         return task
     task = replace(task, **{k: v for k, v in point.items() if k in ("model", "speed_mps")})
     params = {k: v for k, v in point.items() if k not in TASK_KEYS}

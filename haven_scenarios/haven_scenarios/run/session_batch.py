@@ -23,7 +23,7 @@ def run_batch_session(
     scenario: Scenario, participant: str, cues: tuple[str, ...], seed: int, sessions: Path, extra: dict[str, Any], suite: SuiteConfig | None = None
 ) -> tuple[Path, dict[str, Any]]:
     """Run the trial into a new session folder under `sessions`; (the folder, its metrics)."""
-    if any(h.model == "teleop" for h in scenario.humans):
+    if any(h.teleoperated for h in scenario.humans):
         raise ValueError(f"scenario {scenario.name} has a teleoperated participant: a batch trial needs simulated ones")
     toggles = parse_condition(cues)
     folder = new_session_dir(sessions, scenario.name, participant)

@@ -86,7 +86,7 @@ def make_participants(scenario: Scenario, grid: OccupancyGridData, seed: int) ->
     starts = {h.id: h.start for h in w.humans}
     out: dict[str, Participant] = {}
     for k, task in enumerate(scenario.humans):
-        if task.model == "teleop":
+        if task.teleoperated:
             continue
         s = seed * 101 + k
         if scenario.kind == "hallway":
@@ -160,7 +160,7 @@ class TrialDirector:
         }
 
     def outputs(self) -> Sequence[str]:
-        simulated = [topics.human_cmd_vel(h.id) for h in self.scenario.humans if h.model != "teleop"]
+        simulated = [topics.human_cmd_vel(h.id) for h in self.scenario.humans if not h.teleoperated]
         return (topics.GOAL, topics.THOUGHT, topics.EVENTS, topics.REMOVE_OBSTRUCTION, topics.TRIAL_STATUS, *simulated)
 
     # -- inputs ----------------------------------------------------------------------------------

@@ -30,6 +30,7 @@ from haven_scenarios.study.anticipation import DelayLine, Seen, hesitant, intent
 from haven_scenarios.study.perception import Percept, ahead_of
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
+from haven_sim.common import plugins
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, Twist2D, wrap_angle
 from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
@@ -331,11 +332,11 @@ class Yielder(Walker):
         return (away[0] * step, away[1] * step)
 
 
-MODELS: dict[str, type[Walker]] = {"walker": Walker, "blocker": Blocker, "yielder": Yielder}
-
-
 def make_walker(
     model: str, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int, params: PersonParams | None = None
 ) -> Participant:
-    """A simulated participant of the named model (the names a scenario file uses)."""
-    return MODELS[model](human_id, stops, planner, speed_mps, seed, params)
+    """A simulated participant of the named model (the names a scenario file uses): a plugin of
+    kind `participants` (ours: walker, blocker and yielder, in setup.py), a class or factory that
+    takes these arguments and returns a `Participant`."""
+    made: Participant = plugins.registry("participants").get(model)(human_id, stops, planner, speed_mps, seed, params or PersonParams())
+    return made

@@ -35,6 +35,7 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.study.person import PersonParams
+from haven_sim.common import plugins
 from haven_sim.common.params import build
 from haven_sim.common.yaml_file import file_label, finite, one_line, read_yaml, short, shown_key
 from haven_sim.sim.world import World, WorldError
@@ -42,7 +43,7 @@ from haven_sim.sim.world_file import load_world
 from haven_viz.cues import CUES, CueParams
 
 KINDS = ("hallway", "retrieval")
-MODELS = ("walker", "blocker", "yielder", "teleop")
+TELEOP = "teleop"  # a person drives this avatar (the browser or `haven teleop`), no simulated model
 ORDERS = ("nearest", "random")
 BATTERY_MODES = ("off", "on_arrival", "continuous")
 MAX_WALKING_SPEED_MPS = 3.0
@@ -69,6 +70,10 @@ class HumanTask:
     route: tuple[str, ...] = ()  # hallway: room names; retrieval: ignored (the human gems)
     speed_mps: float = 1.0
     params: PersonParams = field(default_factory=PersonParams)  # a simulated person's perception and walk
+
+    @property
+    def teleoperated(self) -> bool:
+        return self.model == TELEOP
 
 
 @dataclass(frozen=True)
@@ -285,7 +290,7 @@ class _ScenarioParser:
             if speed > MAX_WALKING_SPEED_MPS:
                 raise self.fail(f"{key}.speed_mps", f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {speed:g}")
             route = self.names(m.get("route"), f"{key}.route", rooms, "room")
-            model = self.choice(m.get("model", "walker"), f"{key}.model", MODELS)
+            model = self.choice(m.get("model", "walker"), f"{key}.model", (*plugins.registry("participants").names(), TELEOP))
             out.append(HumanTask(m["id"], model, route, speed, self.person(m.get("params"), f"{key}.params")))
         return tuple(out)
 

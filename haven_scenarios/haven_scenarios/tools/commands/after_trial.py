@@ -38,7 +38,7 @@ def asked(scenario: Scenario, web: HasQuestionnaires | None) -> Asked | None:
     """Who answers which questionnaires after this run's trial (None: nobody is asked any)."""
     if web is None or not web.questionnaires:
         return None
-    return [h.id for h in scenario.humans if h.model == "teleop"], names(web.questionnaires)
+    return [h.id for h in scenario.humans if h.teleoperated], names(web.questionnaires)
 
 
 def add_option(group: argparse._ArgumentGroup) -> None:

@@ -71,7 +71,7 @@ def _sweep(args: argparse.Namespace) -> list[TrialSpec]:
     """The trials the arguments ask for; ValueError (one line) for anything wrong."""
     scenarios = [load_scenario(s) for s in dict.fromkeys(args.scenarios)]
     for scenario in scenarios:
-        if any(h.model == "teleop" for h in scenario.humans):
+        if any(h.teleoperated for h in scenario.humans):
             raise ValueError(f"scenario {scenario.name} has a teleoperated participant: run it with `haven run`")
     axes = parse_grid(args.grid)
     if args.condition is not None:

@@ -1,8 +1,10 @@
-"""`haven validate FILE...`: check world, scenario, study and parameter files without starting anything."""
+"""`haven validate FILE...`: check world, scenario, study and parameter files without starting
+anything; `haven plugins`: what is installed to name in them."""
 
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from haven_scenarios.record.session import check_name
@@ -10,6 +12,7 @@ from haven_scenarios.run.suite import checked_suite_config
 from haven_scenarios.study.protocol import StudyError, parse_study
 from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.tools.commands.common import fail
+from haven_sim.common import plugins
 from haven_sim.common.params import ParamsError, params_of
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
 from haven_sim.sim.world import WorldError
@@ -22,6 +25,20 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     )
     validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
     validate.set_defaults(func=validate_cmd)
+    listing = sub.add_parser("plugins", help="every registered plugin, one per line: KIND NAME PACKAGE (broken ones on stderr)")
+    listing.set_defaults(func=plugins_cmd)
+
+
+def plugins_cmd(args: argparse.Namespace) -> int:
+    """KIND NAME PACKAGE per item; one line on stderr per plugin left out (exit 1 if any)."""
+    problems = []
+    for reg in plugins.every():
+        for item in reg:
+            print(f"{reg.kind} {item.name} {item.package}")
+        problems += reg.problems
+    for line in problems:
+        print(f"haven: plugin left out: {line}", file=sys.stderr)
+    return 1 if problems else 0
 
 
 def validate_cmd(args: argparse.Namespace) -> int:

@@ -47,13 +47,13 @@ class SessionPlan:
     def lockstep(self) -> bool:
         """Simulated participants run on the lockstep clock; a person plays on the free-running
         one, and so does a suite with a node of the user's (it does not take the clock's ticks)."""
-        return not self.free_running and not self.without and not any(h.model == "teleop" for h in self.scenario.humans)
+        return not self.free_running and not self.without and not any(h.teleoperated for h in self.scenario.humans)
 
     @property
     def declared(self) -> Declared:
         """The nodes this run starts and the topics it opens to outside publishers."""
         without = [nodes.BY_KEY[n].name for n in self.without]
-        teleop = [h.id for h in self.scenario.humans if h.model == "teleop"]
+        teleop = [h.id for h in self.scenario.humans if h.teleoperated]
         return Declared(frozenset(suite_nodes(without, self.web is not None)), open_topics(without, teleop, self.allow), self.lockstep)
 
     @property
@@ -113,7 +113,7 @@ def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
     params = {
         "use_sim_time": True,
         "scenario": SCENARIO_FILE,
-        "humans": "[" + ",".join(h.id for h in plan.scenario.humans if h.model == "teleop") + "]",
+        "humans": "[" + ",".join(h.id for h in plan.scenario.humans if h.teleoperated) + "]",
         "host": web.host,
         "port": web.port,
         "participant": plan.participant,

@@ -127,7 +127,7 @@ def _check(args: argparse.Namespace, study: Study) -> str | None:
         return "--batch runs simulated participants in this process: not with --web or --teleop"
     if args.batch:
         for s in sorted({s.spec for s in study.scenarios} | {p.scenario.spec for p in study.practice}):
-            if any(h.model == "teleop" for h in load_scenario(s).humans):
+            if any(h.teleoperated for h in load_scenario(s).humans):
                 return f"--batch: scenario {s} has a teleoperated participant (run it without --batch)"
     return None
 

@@ -32,7 +32,7 @@ from haven_scenarios.record.session import (
 from haven_scenarios.run.suite import TRIAL_SETS, SuiteConfig, load_suite_config, render
 from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.rules import EndReason
-from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario, scenario_names
+from haven_scenarios.study.scenario import TELEOP, Scenario, ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands import after_trial
 from haven_scenarios.tools.commands.after_trial import Asked
 from haven_scenarios.tools.commands.batch_report import CONDITION_HELP
@@ -125,7 +125,7 @@ def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
         unknown = [i for i in ids if i not in {h.id for h in scenario.humans}]
         if unknown:
             raise ValueError(f"--teleop: no human {unknown[0]!r} in scenario {scenario.name}")
-        scenario = replace(scenario, humans=tuple(replace(h, model="teleop") if h.id in ids else h for h in scenario.humans))
+        scenario = replace(scenario, humans=tuple(replace(h, model=TELEOP) if h.id in ids else h for h in scenario.humans))
     return scenario, toggles, load_suite_config(args.params_file, TRIAL_SETS)
 
 
@@ -294,7 +294,7 @@ def run_cmd(args: argparse.Namespace) -> int:
         scenario, toggles, base = _prepare(args)
     except (ScenarioError, ValueError) as e:
         return fail(str(e))
-    web, teleop = None, [h.id for h in scenario.humans if h.model == "teleop"]
+    web, teleop = None, [h.id for h in scenario.humans if h.teleoperated]
     try:
         questionnaires = after_trial.specs(args, teleop)
     except ValueError as e:

@@ -1,0 +1,116 @@
+"""Plugins by name: registries of the things a lab adds (participant models so far; robots, cues,
+metrics, questionnaires, mission behaviours and planners follow), filled from Python entry points
+(groups `haven.<kind>`).
+
+HAVEN's own items register exactly as a lab's package does, in its setup.py:
+
+    entry_points={"haven.participants": ["hesitant = my_lab.people:Hesitant"]}
+
+A scenario file, a study file, a `--grid` axis or a command-line option names an item; batch mode
+and every node look it up here, so both run the same code. A broken plugin (it does not import, it
+is not what its kind needs, its name is taken) is left out with one line naming it
+(`Registry.problems`, shown by `haven plugins`); it never breaks the others.
+"""
+
+from __future__ import annotations
+
+import importlib.metadata
+import re
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass, field
+from functools import cache
+from typing import Any
+
+GROUP_PREFIX = "haven."
+NAME = re.compile(r"^[a-z][a-z0-9_]{0,39}$")  # what a scenario or study file can write unquoted
+
+
+class PluginError(ValueError):
+    """An unknown name (one line, with the known ones)."""
+
+
+@dataclass(frozen=True)
+class Plugin:
+    kind: str
+    name: str
+    package: str  # the distribution that registered it
+    target: str  # "module:attribute", as its entry point says
+    value: Any
+
+
+# Each kind and what an item of it must be, checked when it loads: (test, what it should have been).
+Check = Callable[[Any], bool]
+KINDS: dict[str, tuple[Check, str]] = {
+    # haven_scenarios/study/participants.py: make_walker and the `Participant` protocol
+    "participants": (callable, "a participant model: a class or function taking (human_id, stops, planner, speed_mps, seed, params)"),
+}
+
+
+@dataclass
+class Registry:
+    kind: str
+    items: dict[str, Plugin] = field(default_factory=dict)
+    problems: list[str] = field(default_factory=list)  # one line per plugin left out
+
+    def names(self) -> list[str]:
+        return sorted(self.items)
+
+    def __contains__(self, name: object) -> bool:
+        return name in self.items
+
+    def __iter__(self) -> Iterator[Plugin]:
+        return iter(sorted(self.items.values(), key=lambda p: p.name))
+
+    def get(self, name: str) -> Any:
+        """The item registered as `name`; PluginError naming the known ones otherwise."""
+        found = self.items.get(name)
+        if found is None:
+            raise PluginError(f"unknown {singular(self.kind)} {name!r} (known: {', '.join(self.names()) or 'none'})")
+        return found.value
+
+
+def singular(kind: str) -> str:
+    return {"participants": "participant model", "missions": "mission behaviour"}.get(kind, kind.rstrip("s"))
+
+
+def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registry:
+    """A registry of `kind` from entry points: HAVEN's own packages first (their names cannot be
+    taken over), then the others in name order; each problem is one line."""
+    if kind not in KINDS:
+        raise PluginError(f"unknown plugin kind {kind!r} (known: {', '.join(KINDS)})")
+    reg = Registry(kind)
+    check, wanted = KINDS[kind]
+    ordered = sorted(entries, key=lambda e: (not _package(e).startswith("haven"), _package(e), e.name))
+    for entry in ordered:
+        package, where = _package(entry), f"{GROUP_PREFIX}{kind} {entry.name} ({entry.value}, from {_package(entry)})"
+        if not NAME.match(entry.name):
+            reg.problems.append(f"{where}: a name must be lower-case letters, digits and _ (at most 40), starting with a letter")
+            continue
+        if entry.name in reg.items:
+            reg.problems.append(f"{where}: the name is taken by {reg.items[entry.name].package}")
+            continue
+        try:
+            value = entry.load()
+        except Exception as e:  # noqa: BLE001 - a plugin's import may fail in any way; the others go on
+            reg.problems.append(f"{where}: does not load: {type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}".rstrip(": "))
+            continue
+        if not check(value):
+            reg.problems.append(f"{where}: is not {wanted}")
+            continue
+        reg.items[entry.name] = Plugin(kind, entry.name, package, entry.value, value)
+    return reg
+
+
+def _package(entry: importlib.metadata.EntryPoint) -> str:
+    dist = entry.dist
+    return dist.metadata["Name"] if dist is not None else "?"
+
+
+@cache
+def registry(kind: str) -> Registry:
+    """The registry of `kind`, from the installed distributions' entry points (loaded once)."""
+    return load(kind, importlib.metadata.entry_points(group=GROUP_PREFIX + kind))
+
+
+def every() -> list[Registry]:
+    return [registry(kind) for kind in KINDS]

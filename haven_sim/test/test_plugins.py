@@ -1,0 +1,62 @@
+"""Plugins by name (common/plugins.py): ours come through entry points like anybody's; a broken
+plugin is one line and leaves the others working."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from types import SimpleNamespace
+from typing import Any
+
+import pytest
+
+from haven_sim.common import plugins
+
+
+@dataclass
+class Entry:
+    """An entry point as importlib.metadata gives it (name, value, dist, load)."""
+
+    name: str
+    value: str
+    package: str
+    loads: Any = None
+
+    @property
+    def dist(self) -> Any:
+        return SimpleNamespace(metadata={"Name": self.package})
+
+    def load(self) -> Any:
+        if isinstance(self.loads, Exception):
+            raise self.loads
+        return self.loads
+
+
+class Model:
+    def __init__(self, *args: Any) -> None:
+        self.args = args
+
+
+def test_a_broken_plugin_is_one_line_and_the_others_still_work():
+    reg = plugins.load(
+        "participants",
+        [
+            Entry("shy", "lab.people:Shy", "lab_people", Model),
+            Entry("walker", "lab.people:Walker", "lab_people", Model),  # taken by ours, whatever the order
+            Entry("walker", "haven_scenarios.study.participants:Walker", "haven_scenarios", Model),
+            Entry("broken", "lab.people:Broken", "lab_people", ImportError("No module named 'lab.missing'\nmore")),
+            Entry("number", "lab.people:NUMBER", "lab_people", 3),
+            Entry("Bad-Name", "lab.people:Bad", "lab_people", Model),
+        ],
+    )
+    assert reg.names() == ["shy", "walker"] and reg.items["walker"].package == "haven_scenarios"
+    assert len(reg.problems) == 4 and all("\n" not in p for p in reg.problems)
+    said = "\n".join(reg.problems)
+    assert "haven.participants walker (lab.people:Walker, from lab_people): the name is taken by haven_scenarios" in said
+    assert "haven.participants broken (lab.people:Broken, from lab_people): does not load: ImportError: No module named 'lab.missing'" in said
+    assert "haven.participants number (lab.people:NUMBER, from lab_people): is not a participant model" in said
+    assert "Bad-Name" in said and "lower-case letters" in said
+    assert isinstance(reg.get("shy")(1, 2), Model)
+    with pytest.raises(plugins.PluginError, match=r"^unknown participant model 'sly' \(known: shy, walker\)$"):
+        reg.get("sly")
+    with pytest.raises(plugins.PluginError, match="unknown plugin kind"):
+        plugins.load("gadgets", [])
