@@ -1,6 +1,6 @@
 # HAVEN for ROS 2. `make demo` sets everything up and runs the main job (one recorded hallway trial);
 # `make test` runs every test.
-.PHONY: setup demo test test-core bench lock clean
+.PHONY: setup demo test test-unit test-integration test-ros test-browser bench lock clean
 
 setup:
 	@./scripts/setup.sh
@@ -11,9 +11,18 @@ demo: setup
 test: setup
 	./scripts/test.sh
 
-# Core unit tests only (no ROS processes): seconds.
-test-core: setup
-	.venv/bin/pytest -q -m "not ros and not slow"
+# One tier at a time (conftest.py says what each holds); `make test` runs them all.
+test-unit: setup
+	.venv/bin/pytest -q -m unit
+
+test-integration: setup
+	.venv/bin/pytest -q -m integration
+
+test-ros: setup
+	.venv/bin/pytest -q -m "ros and not browser"
+
+test-browser: setup
+	.venv/bin/pytest -q -m browser
 
 bench: setup
 	.venv/bin/python bench/sim_speed.py
@@ -29,4 +38,4 @@ lock:
 	./scripts/lock.sh
 
 clean:
-	rm -rf .venv ros2_ws/build ros2_ws/install ros2_ws/log .pytest_cache .mypy_cache
+	rm -rf .venv .venv-noros ros2_ws/build ros2_ws/install ros2_ws/log .pytest_cache .mypy_cache

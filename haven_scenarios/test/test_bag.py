@@ -12,6 +12,8 @@ from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.common.state import RobotState
 from haven_sim.nodes import conversions as conv
 
+pytestmark = pytest.mark.integration
+
 
 def test_write_then_read_back(tmp_path):
     bag = tmp_path / "bag"

@@ -12,6 +12,8 @@ from haven_scenarios.run.grid import TASK_KEYS, param_keys, parse_grid, parse_se
 from haven_scenarios.study.scenario import HumanTask, load_scenario
 from haven_scenarios.tools.cli import main
 
+pytestmark = pytest.mark.integration
+
 
 def test_grid_axes_and_seeds_parse_in_the_order_given():
     axes = parse_grid(["model=yielder,walker", "condition=none,path_projection+turn_signals,all", "speed_mps=0.6,1.4"])

@@ -10,25 +10,13 @@ from importlib import resources
 
 import pytest
 from nav_msgs.msg import Odometry
+from processes import alive, children_of
 from ros_harness import tracebacks
 
 from haven_sim.nodes import qos
 
 pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
-
-
-def children_of(pid):
-    out = subprocess.run(["ps", "-o", "pid=", "--ppid", str(pid)], capture_output=True, text=True).stdout
-    return [int(p) for p in out.split()]
-
-
-def alive(pid):
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    return subprocess.run(["ps", "-o", "stat=", "-p", str(pid)], capture_output=True, text=True).stdout.strip()[:1] != "Z"
 
 
 def start_haven(ros, *args):
@@ -91,7 +79,6 @@ def test_bad_arguments_get_one_line(tmp_path):
     assert r.returncode == 2 and "must be positive" in r.stderr.splitlines()[-1]
 
 
-@pytest.mark.slow
 def test_demo_drives_a_square_and_reports(ros):
     proc = start_haven(ros, "demo", "--rtf", "4")
     out, err = proc.communicate(timeout=120)
@@ -105,7 +92,6 @@ def test_demo_drives_a_square_and_reports(ros):
     assert summary["odom_rate_hz_sim"] == pytest.approx(50.0, rel=0.01)  # one /odom per physics step
 
 
-@pytest.mark.slow
 def test_goto_sends_a_goal_to_a_running_suite_and_waits_for_arrival(ros):
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     start_haven(ros, "sim", "--rtf", "4")
@@ -119,7 +105,6 @@ def test_goto_sends_a_goal_to_a_running_suite_and_waits_for_arrival(ros):
     assert refused.returncode == 1 and "inside an obstacle" in refused.stdout
 
 
-@pytest.mark.slow
 def test_snapshot_saves_what_the_viewers_show(ros, tmp_path):
     alone = ros.run([*HAVEN, "snapshot", str(tmp_path / "none.png"), "--timeout", "2", "--domain-id", str(ros.domain_id)], timeout_s=60)
     assert alone.returncode == 1 and "no HAVEN suite here" in alone.stderr and alone.stderr.count("\n") == 1, alone.stderr

@@ -8,10 +8,11 @@ from pathlib import Path
 
 import pytest
 
+pytestmark = pytest.mark.integration
+
 ROOT = Path(__file__).resolve().parents[2]
 
 
-@pytest.mark.slow
 def test_colcon_build_of_ros2_ws_installs_runnable_nodes(tmp_path):
     colcon = Path(sys.executable).parent / "colcon"
     if not colcon.exists():

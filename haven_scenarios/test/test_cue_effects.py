@@ -11,8 +11,12 @@ per trial against none, 1.3 s sooner, 0.2 m more walked, 0.2 m closer).
 
 from statistics import mean
 
+import pytest
+
 from haven_scenarios.run.trial import parse_condition, run_trial
 from haven_scenarios.study.scenario import load_scenario
+
+pytestmark = pytest.mark.integration
 
 SEEDS = range(8)
 BEHAVIOUR = ("h1_path_length_m", "h1_detour_m", "h1_time_to_finish_s", "h1_min_distance_m", "h1_time_not_moving_s", "avg_closest_human_distance_m")

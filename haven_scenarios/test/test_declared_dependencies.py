@@ -14,6 +14,8 @@ from pathlib import Path
 import pytest
 import yaml
 
+pytestmark = pytest.mark.integration  # (reads the installed distributions: ROS's too)
+
 ROOT = Path(__file__).resolve().parents[2]
 PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios")
 

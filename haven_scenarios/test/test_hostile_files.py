@@ -20,6 +20,8 @@ from haven_sim.common.params import ParamsError
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import load_world
 
+pytestmark = pytest.mark.integration
+
 WORLDS = sorted(Path(str(resources.files("haven_scenarios") / "worlds")).glob("*.yaml")) + sorted(
     Path(str(resources.files("haven_sim") / "worlds")).glob("*.yaml")
 )

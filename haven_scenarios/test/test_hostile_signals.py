@@ -13,11 +13,13 @@ import time
 from pathlib import Path
 
 import pytest
+from processes import alive
 from rosbags.highlevel import AnyReader
-from test_cli import alive
 
 from haven_scenarios.tools.cli import main
 from haven_scenarios.tools.supervisor import ros_environment
+
+pytestmark = pytest.mark.integration
 
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 # A supervisor with one child, in a process of its own: the child's pid is written to argv[1].
@@ -113,7 +115,6 @@ def test_discovery_stays_local_whatever_the_shell_says_unless_network():
 
 
 @pytest.mark.ros
-@pytest.mark.slow
 @pytest.mark.parametrize("sig", [signal.SIGHUP, signal.SIGINT, signal.SIGKILL], ids=lambda s: signal.Signals(s).name)
 def test_however_haven_run_ends_no_node_outlives_it_and_the_bag_is_closed(ros, tmp_path, sig):
     """SIGHUP is what closing the terminal or the SSH session sends; SIGINT a terminal's Ctrl-C (to

@@ -31,6 +31,8 @@ from rosbags.typesys.msg import get_types_from_msg
 from haven_scenarios.record.bag import REPAIRED_KEY, TYPESTORE, BagWriter, custom_data, lost_messages, readable, recovered_records
 from haven_scenarios.record.repair import Repaired, RepairError, needs_repair, repair
 
+pytestmark = pytest.mark.integration
+
 FOREVER = QosTime(2**31 - 1, 0)
 LATCHED = Qos(
     QosHistory.KEEP_LAST, 1, QosReliability.RELIABLE, QosDurability.TRANSIENT_LOCAL, FOREVER, FOREVER, QosLiveliness.AUTOMATIC, FOREVER, False

@@ -12,7 +12,7 @@ from nav_msgs.msg import Odometry
 from haven_scenarios.record.bag import TYPESTORE
 from haven_sim.nodes import qos
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = pytest.mark.ros
 
 
 def free_port():

@@ -19,7 +19,7 @@ from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
 from haven_viz.cues import CUES
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 SUITE = {"sim_node", "velocity_mux", "planner", "controller", "viz"}
 CROSSING = """name: crossing

@@ -18,7 +18,7 @@ from test_ros_trial import CROSSING, assert_same_trial, metrics_of, only_session
 from haven_scenarios.run.trial import run_trial
 from haven_scenarios.study.scenario import load_scenario
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios"]
 
 FLOOD = str(Path(__file__).resolve().parent / "flood.py")  # goals at a rate, from another node

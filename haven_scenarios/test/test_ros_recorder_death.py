@@ -30,7 +30,7 @@ from rosgraph_msgs.msg import Clock
 
 from haven_scenarios.record.bag import TYPESTORE, recovered_records
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 
 

@@ -14,7 +14,7 @@ from visualization_msgs.msg import MarkerArray
 
 from haven_sim.nodes import qos
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 
 

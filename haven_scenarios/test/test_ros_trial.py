@@ -22,7 +22,7 @@ from rosgraph_msgs.msg import Clock
 from haven_scenarios.run.trial import parse_condition, run_trial
 from haven_scenarios.study.scenario import load_scenario
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 NOT_METRICS = ("session", "participant", "outside_publishers")  # (who else was on the graph: not the trial)
 CROSSING = """name: crossing

@@ -22,6 +22,8 @@ from haven_scenarios.record.session import check_name, new_session_dir, write_in
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.cli import main
 
+pytestmark = pytest.mark.integration
+
 SCENARIO = "name: {name}\nworld: small_test\nkind: retrieval\ntimeout_s: 20\nrobot: {{order: nearest}}\n"
 RULE = "must be 1 to 64 ASCII letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
 BAD = ["", ".", "..", "../x", "../../../x", "a/b", "/abs", "a..b", "-x", ".hidden", "x" * 65, "a b", "ü", "a\x00b", "a\\b", None, 7]

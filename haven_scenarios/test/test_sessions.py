@@ -20,6 +20,8 @@ from haven_sim.nodes import wire
 from haven_sim.nodes.wire import type_name
 from haven_viz.nodes.conversions import viz_specs
 
+pytestmark = pytest.mark.integration
+
 TABLE = {**wire.specs(), **viz_specs()}
 
 

@@ -18,6 +18,8 @@ import yaml
 from haven_scenarios.study.questionnaires import ANSWERS_FILE, BUILTINS, answers_record, likert
 from haven_scenarios.tools.cli import main
 
+pytestmark = pytest.mark.integration
+
 HAVEN = [sys.executable, "-m", "haven_scenarios"]
 LEGIBILITY = {
     "name": "legibility",

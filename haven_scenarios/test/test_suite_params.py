@@ -12,6 +12,8 @@ from haven_scenarios.run.trial import run_trial
 from haven_scenarios.study.scenario import load_scenario
 from haven_sim.common.params import ParamsError, defaults
 
+pytestmark = pytest.mark.integration
+
 
 def test_shipped_haven_yaml_is_generated_from_the_configs():
     assert packaged_params_file().read_text() == render(), "regenerate with: python -m haven_scenarios.run.suite"

@@ -2,7 +2,11 @@ import signal
 import sys
 import time
 
+import pytest
+
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
+
+pytestmark = pytest.mark.integration
 
 # Children that say they are ready (their signal handling is set up) by creating the file named
 # in argv[1], so the tests signal them only then: no race with the interpreter's start-up.

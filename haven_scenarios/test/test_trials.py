@@ -12,6 +12,8 @@ from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_sim.common.events import EventKind
 from haven_viz.cues import Toggles
 
+pytestmark = pytest.mark.integration
+
 
 @pytest.mark.parametrize("name", ["hallway", "hallway_hard", "shared_room"])
 def test_every_shipped_scenario_completes_without_contact(name):
@@ -135,7 +137,6 @@ def _on_centre_lines(r):
     return tl, [float(np.abs(xy[bc, 0] - 16).max()), float(np.abs(xy[cd, 1] - 16).max())]
 
 
-@pytest.mark.slow
 def test_control_stays_smooth_with_the_delays_of_a_loaded_machine():
     """Pose and command messages each held back 50-150 ms (sim time), as under CPU load: the robot
     still keeps the centre line, the turn signals do not flicker, the trial completes alike."""

@@ -23,6 +23,8 @@ from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS, StartGate, Wizard
 from haven_sim.common.events import MAX_EVENT_BYTES, EventKind
 from haven_sim.common.geometry import Twist2D
 
+pytestmark = pytest.mark.integration
+
 WEB = Path(__file__).resolve().parents[1] / "web"
 
 

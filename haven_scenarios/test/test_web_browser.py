@@ -24,7 +24,7 @@ from urllib.parse import urlsplit
 import pytest
 from ros_harness import tracebacks
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = [pytest.mark.ros, pytest.mark.browser]
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 PAGE_TIMEOUT_MS = 90_000  # software rendering on a loaded 2-core machine is slow to start
 CHROMIUM_ARGS = ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist"]

@@ -14,6 +14,8 @@ from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.world import packaged_world
 from haven_sim.sim.world_file import load_world
 
+pytestmark = pytest.mark.integration
+
 
 def close(a, b):
     return a.distance_to(b) < 1e-12 and abs(math.remainder(a.yaw - b.yaw, 2 * math.pi)) < 1e-12

@@ -19,7 +19,7 @@ from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.world import packaged_world
 from haven_sim.sim.world_file import load_world
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = pytest.mark.ros
 SIM, MUX, PLANNER, CONTROLLER = (f"haven_sim.nodes.{n}" for n in ("sim_node", "mux_node", "planner_node", "controller_node"))
 
 

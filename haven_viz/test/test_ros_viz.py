@@ -17,7 +17,7 @@ from haven_sim.nodes import qos
 from haven_viz.markers import MarkerSpec, Shape
 from haven_viz.nodes.conversions import marker_msg, spec_from_msg
 
-pytestmark = [pytest.mark.ros, pytest.mark.slow]
+pytestmark = pytest.mark.ros
 
 
 def test_marker_conversion_round_trips():

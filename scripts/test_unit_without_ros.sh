@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The unit tier in a venv without ROS 2 (.venv-noros: the locked versions of HAVEN's PyPI
+# dependencies, no ros-jazzy-* wheel, the three packages installed as in setup.sh): proves the core
+# and its unit tests need nothing from ROS. Run by scripts/test.sh; after the first time, seconds.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+VENV=.venv-noros
+BASE=$(.venv/bin/python -c 'import sys; print(sys._base_executable)')
+want=$(cat requirements.lock haven_sim/setup.py haven_viz/setup.py haven_scenarios/setup.py "$0" | cksum)
+stamp="$VENV/.haven-installed"
+if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
+  rm -rf "$VENV"
+  "$BASE" -m venv "$VENV"
+  grep -v '^ros-' requirements.lock | sed 's/\[[a-z]*\]==/==/' > "$VENV/constraints.txt"
+  export PIP_DISABLE_PIP_VERSION_CHECK=1
+  "$VENV/bin/python" -m pip install --quiet -c "$VENV/constraints.txt" \
+    setuptools numpy pymunk PyYAML matplotlib rosbags mcap foxglove-sdk tqdm pytest pytest-timeout
+  "$VENV/bin/python" -m pip install --quiet --no-deps --no-build-isolation --config-settings editable_mode=compat \
+    -e haven_sim -e haven_viz -e haven_scenarios
+  echo "$want" > "$stamp"
+fi
+if "$VENV/bin/python" -c "import rclpy" >/dev/null 2>&1; then
+  echo "test_unit_without_ros: rclpy is importable in $VENV; this is not a venv without ROS" >&2
+  exit 1
+fi
+exec "$VENV/bin/pytest" -q -p no:cacheprovider -m unit "$@"
