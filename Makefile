@@ -1,6 +1,6 @@
 # HAVEN for ROS 2. `make demo` sets everything up and runs the main job (one recorded hallway trial);
-# `make test` runs every test.
-.PHONY: setup demo test test-unit test-integration test-ros test-browser bench lock clean
+# `make test` runs every test; `make docs` builds the documentation site.
+.PHONY: setup demo docs test test-unit test-integration test-ros test-browser bench lock clean
 
 setup:
 	@./scripts/setup.sh
@@ -10,6 +10,10 @@ demo: setup
 
 test: setup
 	./scripts/test.sh
+
+# The documentation site: docs/_build/html/index.html (warnings are errors, as in make test).
+docs: setup
+	.venv/bin/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 
 # One tier at a time (conftest.py says what each holds); `make test` runs them all.
 test-unit: setup
@@ -38,4 +42,4 @@ lock:
 	./scripts/lock.sh
 
 clean:
-	rm -rf .venv .venv-noros ros2_ws/build ros2_ws/install ros2_ws/log .pytest_cache .mypy_cache
+	rm -rf .venv .venv-noros docs/_build docs/_generated ros2_ws/build ros2_ws/install ros2_ws/log .pytest_cache .mypy_cache

@@ -1,4 +1,4 @@
-"""The README's "Using your own planner" section, as a user would do it: `haven sim --without
+"""The docs' "Using your own planner or controller" page (docs/howto/own-planner.md), as a user would do it: `haven sim --without
 planner` and the example planner (examples/nodes/nav2_style_planner.py: Nav2's /plan QoS, NavFn-shaped
 paths) in its own process; a goal from RViz's QoS. The robot reaches the goal pose, the path
 projection shows cubes on the arc, and the plan's QoS is Nav2's. And a recorded study session with

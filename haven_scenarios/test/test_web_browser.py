@@ -113,7 +113,7 @@ def status_of(url):
 
 
 def screenshot(name, png):
-    """The README's pictures: written where HAVEN_SCREENSHOTS points (haven_scenarios/doc to update them)."""
+    """The pictures in the README and the docs: written where HAVEN_SCREENSHOTS points (haven_scenarios/doc to update them)."""
     folder = os.environ.get("HAVEN_SCREENSHOTS")
     if folder:
         with open(os.path.join(folder, name), "wb") as f:
