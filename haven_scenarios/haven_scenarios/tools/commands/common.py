@@ -122,17 +122,22 @@ def environment(args: argparse.Namespace) -> dict[str, str]:
     return ros_environment(network=args.network, domain_id=args.domain_id)
 
 
-def claim(args: argparse.Namespace, ignore: Sequence[str] = ()) -> Claim:
-    """The ROS domain this suite runs on (`tools/domains.py`), set as `args.domain_id` for its
-    nodes; DomainBusy (one line) when `--domain-id` names a domain another suite holds. Said when
-    the inherited domain was taken and the suite moved. `ignore`: our nodes left out (`--without`),
-    whose names the user's own nodes may have."""
-    got = claim_domain(args.domain_id, ros_environment(network=args.network), [nodes.BY_KEY[n].name for n in ignore])
-    args.domain_id = got.domain_id
+def claim_ros_domain(domain_id: int | None, network: bool, ignore: Sequence[str] = (), say: Callable[[str], None] = print) -> Claim:
+    """The ROS domain a suite runs on (`tools/domains.py`); DomainBusy (one line) when `domain_id`
+    names a domain another suite holds. Said when the inherited domain was taken and the suite
+    moved. `ignore`: our nodes left out (`--without`), whose names the user's own nodes may have."""
+    got = claim_domain(domain_id, ros_environment(network=network), [nodes.BY_KEY[n].name for n in ignore])
     if got.moved_from is not None:
         home, why = got.moved_from
         here = got.domain_id
-        print(f"haven: ROS domain {home}: {why}; this suite runs on ROS domain {here} (ROS_DOMAIN_ID={here} to join it)", flush=True)
+        say(f"haven: ROS domain {home}: {why}; this suite runs on ROS domain {here} (ROS_DOMAIN_ID={here} to join it)")
+    return got
+
+
+def claim(args: argparse.Namespace, ignore: Sequence[str] = ()) -> Claim:
+    """`claim_ros_domain` for a command's options, set as `args.domain_id` for its nodes."""
+    got = claim_ros_domain(args.domain_id, args.network, ignore, lambda line: print(line, flush=True))
+    args.domain_id = got.domain_id
     return got
 
 

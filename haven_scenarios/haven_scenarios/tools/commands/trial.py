@@ -3,38 +3,24 @@
 from __future__ import annotations
 
 import argparse
-import shutil
 import sys
-import time
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.session import (
-    END_MARK,
-    EVENTS_FILE,
-    METRICS_FILE,
     PARAMS_FILE,
     SCENARIO_FILE,
     SESSION_FILE,
-    WORLD_FILE,
-    analyse,
     check_name,
-    new_session_dir,
     session_info,
     session_scenario,
-    trajectory_picture,
-    trial_record,
-    trial_wall_clock,
-    write_inputs,
-    write_json,
 )
-from haven_scenarios.run.suite import TRIAL_SETS, SuiteConfig, load_suite_config, render
-from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
+from haven_scenarios.run.suite import TRIAL_SETS, SuiteConfig, load_suite_config
+from haven_scenarios.run.trial import SEED_MAX, parse_condition
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import TELEOP, Scenario, ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands import after_trial
-from haven_scenarios.tools.commands.after_trial import Asked
 from haven_scenarios.tools.commands.batch_report import CONDITION_HELP
 from haven_scenarios.tools.commands.common import (
     PORT,
@@ -42,19 +28,12 @@ from haven_scenarios.tools.commands.common import (
     add_ros_options,
     add_suite_options,
     allowed_topic,
-    claim,
-    environment,
     fail,
     port_free,
     positive,
 )
-from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
-from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
-from haven_scenarios.tools.domains import DomainBusy
-from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor
-from haven_sim.common import nodes
-from haven_sim.common.events import EventKind
-from haven_sim.runtime.lockstep import UNCAPPED_RTF
+from haven_scenarios.tools.commands.session_plan import SessionPlan, WebOptions
+from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, record_trial
 from haven_viz.cues import CUES, Toggles
 
 
@@ -129,151 +108,36 @@ def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
     return scenario, toggles, load_suite_config(args.params_file, TRIAL_SETS)
 
 
-def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
-    """Until the recorder has the `trial_end` event and the state streams up to it (it writes
-    END_MARK), or `timeout_s` (a stream that stopped: a node died), before everything stops."""
-    mark = folder / END_MARK
-    events = folder / EVENTS_FILE
-    if not (events.exists() and f'"{EventKind.TRIAL_START.value}"' in events.read_text(encoding="utf-8", errors="replace")):
-        return  # no trial started (stopped while held): no end to wait for
-    deadline = time.monotonic() + timeout_s
-    while time.monotonic() < deadline and not mark.exists():
-        time.sleep(0.05)
-    mark.unlink(missing_ok=True)
-
-
-def _supervise(args: argparse.Namespace, specs: list[ProcessSpec], folder: Path, timeout_s: float | None, asked: Asked | None = None) -> Ended:
-    """`asked`: the teleoperated humans and the questionnaires they answer after the trial."""
-    started = time.monotonic()
-    with Supervisor(environment(args)) as sup:
-        sup.install_signal_handlers()
-        for spec in specs:
-            sup.start(spec)
-        exited = sup.wait(timeout_s=timeout_s, until_exit_of=nodes.SCENARIO.key)
-        timed_out = exited is None and timeout_s is not None and time.monotonic() - started >= timeout_s
-        questionnaires = None
-        if asked is not None and exited is not None and exited.name == nodes.SCENARIO.key and exited.code == 0:
-            _wait_for_recorded_end(folder, 10.0)  # (the trial's nodes still run: its end is recorded)
-            questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
-        sup.stop_some((nodes.SCENARIO.key,))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
-        if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder marks no end)
-            _wait_for_recorded_end(folder, 10.0)
-        codes = sup.stop()
-    return Ended(exited, timed_out, codes.get(nodes.RECORDER.key), questionnaires)
-
-
-def _session_info(plan: SessionPlan) -> dict[str, Any]:
-    """session.json as the run starts (its outcome is written however the run ends)."""
-    scenario, rtf = plan.scenario, plan.real_time_factor
-    return {
-        **trial_record(plan.participant, plan.toggles, plan.seed, scenario),
-        "scenario_file": SCENARIO_FILE,
-        "world_file": WORLD_FILE,
-        "params_file": PARAMS_FILE,
-        "clock": "lockstep" if plan.lockstep else "free-running",
-        "real_time_factor": None if rtf >= UNCAPPED_RTF else rtf,
-        "without": list(plan.without),
-        "allow": list(plan.allow),
-        "suite_nodes": sorted(plan.declared.nodes),
-        "open_topics": list(plan.declared.open),
-        **plan.extra,
-        "outcome": NO_OUTCOME,
-    }
-
-
-def _new_session(plan: SessionPlan, sessions: Path) -> tuple[Path, dict[str, Any]]:
-    """The session folder with the run's inputs and session.json; ValueError (one line) if it
-    cannot be made: a name that is not safe, --sessions under a file, not writable, a full disk."""
-    try:
-        folder = new_session_dir(sessions, plan.scenario.name, plan.participant)
-    except OSError as e:
-        raise ValueError(f"--sessions {sessions}: cannot make a session folder there: {e.strerror or e}") from None
-    info = _session_info(plan)
-    try:
-        write_inputs(folder, plan.scenario, render(plan.config(folder), header=SESSION_PARAMS_HEADER))
-        write_json(folder / SESSION_FILE, info)
-    except OSError as e:
-        shutil.rmtree(folder, ignore_errors=True)  # (only the inputs just copied: nothing is lost)
-        raise ValueError(f"{folder}: cannot write the session's files: {e.strerror or e}") from None
-    return folder, info
-
-
-def _finish(folder: Path, scenario: Scenario, info: dict[str, Any], wall: float) -> dict[str, Any]:
-    """Metrics from the bag, the session record completed, the trajectory picture."""
-    metrics, world, rec = analyse(folder)
-    write_json(folder / METRICS_FILE, metrics)
-    info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
-    info["wall_clock"] = trial_wall_clock(folder)
-    write_json(folder / SESSION_FILE, info)
-    if world is not None:
-        trajectory_picture(folder, world, rec, f"{scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
-    return metrics
-
-
 def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> int:
-    """Run and record one trial into a new session folder under `sessions`; the exit code.
-    session.json gets the run's outcome however it ends."""
+    """Run and record one trial into a new session folder under `sessions` (tools/recorded_trial.py);
+    the exit code."""
     try:
-        domain = claim(args, plan.without)
-    except DomainBusy as e:
-        return fail(str(e))
-    with domain.lock:
-        return _run_claimed(args, replace(plan, extra={**plan.extra, "ros_domain_id": domain.domain_id}), sessions)
+        result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network))
+    except TrialError as e:
+        if e.code == 2:
+            return fail(str(e))
+        print(f"haven: error: {e}", file=sys.stderr)
+        return e.code
+    return _said(result)
 
 
-def _run_claimed(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> int:
-    scenario, lockstep, rtf = plan.scenario, plan.lockstep, plan.real_time_factor
-    try:
-        folder, info = _new_session(plan, sessions)
-    except ValueError as e:
-        return fail(str(e))
-    pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf < UNCAPPED_RTF else "") if lockstep else f"{rtf:g}x real time"
-    print(
-        f"haven: {scenario.name} trial, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
-        f"seed {plan.seed}, {pace}, ROS domain {args.domain_id} -> {folder}",
-        flush=True,
-    )
-    started = time.monotonic()
-    limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
-    specs = specs_of(folder, plan)
-    if plan.web is not None:
-        specs.append(web_spec(plan, plan.web, folder))
-    ended, metrics, repaired = None, None, None
-    try:
-        asked = after_trial.asked(plan.scenario, plan.web)
-        ended = _supervise(args, specs, folder, None if plan.web is not None else limit, asked)  # the researcher decides when it starts
-        if ended.died is not None:
-            print(f"haven: {exit_text(ended.died.name, ended.died.code)}; the trial was cut short", file=sys.stderr, flush=True)
-        repaired = repair_bag(folder / "bag", "haven run" + (f" ({exit_text(ended.died.name, ended.died.code)})" if ended.died else ""))
-        if repaired is not None:
-            info["bag_repaired"] = repair_record(repaired)
-        metrics = _finish(folder, scenario, info, time.monotonic() - started)
-    except OSError as e:  # a full disk while the session is completed: what was written stays
-        print(f"haven: error: {folder}: {e.strerror or e}", file=sys.stderr)
-        return 1
-    finally:
-        info["outcome"] = outcome(ended, metrics["end_reason"] if metrics else None, repaired, limit)
-        if (asked := after_trial.asked(plan.scenario, plan.web)) is not None:  # (also when interrupted)
-            info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
-        write_outcome(folder, info)
-    return _said(folder, ended, metrics, time.monotonic() - started)
-
-
-def _said(folder: Path, ended: Ended, metrics: dict[str, Any], wall: float) -> int:
+def _said(result: RecordedTrial) -> int:
     """The run's last lines, and its exit code."""
-    print(summary(metrics, wall))
-    if not metrics["valid"]:
-        print(f"haven: the recording is not complete: {'; '.join(metrics['invalid_reasons'])}", file=sys.stderr)
-        if any("from outside the suite" in r for r in metrics["invalid_reasons"]):
-            hint = "an outside input the study expects is declared with `haven run --allow TOPIC` (README: One trial, one world)"
+    if result.died is not None:
+        print(f"haven: {result.died}; the trial was cut short", file=sys.stderr, flush=True)
+    print(summary(result.metrics, result.wall_s))
+    if not result.valid:
+        print(f"haven: the recording is not complete: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
+        if any("from outside the suite" in r for r in result.invalid_reasons):
+            hint = "an outside input the study expects is declared with `haven run --allow TOPIC` (docs: Clocks and isolation)"
             print(f"haven: {hint}", file=sys.stderr)
-    made = sorted(p.name + ("/" if p.is_dir() else "") for p in folder.iterdir())
-    print(f"haven: session in {folder} ({', '.join(made)})")
-    if ended.died is not None:
+    made = sorted(p.name + ("/" if p.is_dir() else "") for p in result.folder.iterdir())
+    print(f"haven: session in {result.folder} ({', '.join(made)})")
+    if result.died is not None:
         return 1
-    if ended.timed_out:
+    if result.timed_out:
         print("haven: the trial did not end in time; everything was stopped", file=sys.stderr)
-    return 0 if metrics["end_reason"] != EndReason.INTERRUPTED else 1
+    return 0 if result.end_reason != EndReason.INTERRUPTED else 1
 
 
 def summary(metrics: dict[str, Any], wall_s: float) -> str:

@@ -1,0 +1,230 @@
+"""One recorded trial with the whole node suite, into a new session folder: what `haven run`,
+`haven rerun`, `haven study run` and the Python API (`haven_scenarios.api`) call.
+
+The suite takes its ROS domain (tools/domains.py), the nodes run as supervised processes, the
+trial ends when the scenario node exits (or a node dies, or the time limit passes), and the result
+comes back typed: the session folder, how the run ended, the metrics and whether the recording is
+valid. session.json gets the run's outcome however it ends.
+"""
+
+from __future__ import annotations
+
+import shutil
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any
+
+from haven_scenarios.record.session import (
+    END_MARK,
+    EVENTS_FILE,
+    METRICS_FILE,
+    PARAMS_FILE,
+    SCENARIO_FILE,
+    SESSION_FILE,
+    WORLD_FILE,
+    analyse,
+    new_session_dir,
+    trajectory_picture,
+    trial_record,
+    trial_wall_clock,
+    write_inputs,
+    write_json,
+)
+from haven_scenarios.run.suite import render
+from haven_scenarios.run.trial import condition_name
+from haven_scenarios.study.rules import EndReason
+from haven_scenarios.tools.commands import after_trial
+from haven_scenarios.tools.commands.after_trial import Asked
+from haven_scenarios.tools.commands.common import claim_ros_domain
+from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
+from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, specs_of, web_spec
+from haven_scenarios.tools.domains import DomainBusy
+from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_environment
+from haven_sim.common import nodes
+from haven_sim.common.events import EventKind
+from haven_sim.runtime.lockstep import UNCAPPED_RTF
+
+Say = Callable[[str], None]
+
+
+def say_now(line: str) -> None:
+    """A progress line, out at once (a pipe would hold it back until the trial ends)."""
+    print(line, flush=True)
+
+
+class TrialError(Exception):
+    """The trial could not run or be completed, in one line; `code`: `haven run`'s exit code for it
+    (2: nothing started, the input or the domain was refused; 1: the session could not be
+    completed, what was written stays)."""
+
+    def __init__(self, message: str, code: int = 2) -> None:
+        super().__init__(message)
+        self.code = code
+
+
+@dataclass(frozen=True)
+class RosOptions:
+    """Where the suite runs: `domain_id` None takes the inherited domain if free, else a free one;
+    `network` lets DDS discovery go beyond this machine."""
+
+    domain_id: int | None = None
+    network: bool = False
+
+
+@dataclass(frozen=True)
+class RecordedTrial:
+    """What a recorded trial left: its session folder and how it ended."""
+
+    folder: Path
+    outcome: str  # session.json's `outcome`, in words
+    metrics: dict[str, Any] = field(repr=False)  # metrics.json
+    domain_id: int
+    wall_s: float
+    died: str | None = None  # the node that ended the trial by dying ("planner exited with code 1")
+    timed_out: bool = False  # cut at the wall-clock limit
+
+    @property
+    def end_reason(self) -> str:
+        return str(self.metrics["end_reason"])
+
+    @property
+    def valid(self) -> bool:
+        return bool(self.metrics["valid"])
+
+    @property
+    def invalid_reasons(self) -> list[str]:
+        return list(self.metrics.get("invalid_reasons", []))
+
+    @property
+    def finished(self) -> bool:
+        """The trial ran to its end (completed, timeout, contact, battery, stopped by the researcher)."""
+        return self.died is None and not self.timed_out and self.end_reason != EndReason.INTERRUPTED
+
+
+def record_trial(plan: SessionPlan, sessions: Path, ros: RosOptions = RosOptions(), say: Say = say_now) -> RecordedTrial:
+    """Run and record one trial into a new session folder under `sessions`; blocks until it has
+    ended and its session is complete. TrialError (one line) when it cannot."""
+    try:
+        domain = claim_ros_domain(ros.domain_id, ros.network, plan.without, say)
+    except DomainBusy as e:
+        raise TrialError(str(e)) from None
+    with domain.lock:
+        plan = replace(plan, extra={**plan.extra, "ros_domain_id": domain.domain_id})
+        return _run_claimed(plan, sessions, RosOptions(domain.domain_id, ros.network), say)
+
+
+def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -> RecordedTrial:
+    scenario, lockstep, rtf = plan.scenario, plan.lockstep, plan.real_time_factor
+    folder, info = _new_session(plan, sessions)
+    pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf < UNCAPPED_RTF else "") if lockstep else f"{rtf:g}x real time"
+    say(
+        f"haven: {scenario.name} trial, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
+        f"seed {plan.seed}, {pace}, ROS domain {ros.domain_id} -> {folder}"
+    )
+    started = time.monotonic()
+    limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
+    specs = specs_of(folder, plan)
+    if plan.web is not None:
+        specs.append(web_spec(plan, plan.web, folder))
+    ended, metrics, repaired = None, None, None
+    asked = after_trial.asked(plan.scenario, plan.web)
+    try:
+        ended = _supervise(ros, specs, folder, None if plan.web is not None else limit, asked)  # the researcher decides when it starts
+        died = exit_text(ended.died.name, ended.died.code) if ended.died is not None else None
+        repaired = repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else ""))
+        if repaired is not None:
+            info["bag_repaired"] = repair_record(repaired)
+        metrics = _finish(folder, plan, info, time.monotonic() - started)
+    except OSError as e:  # a full disk while the session is completed: what was written stays
+        raise TrialError(f"{folder}: {e.strerror or e}", code=1) from None
+    finally:
+        info["outcome"] = outcome(ended, metrics["end_reason"] if metrics else None, repaired, limit)
+        if asked is not None:  # (also when interrupted)
+            info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
+        write_outcome(folder, info)
+    return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), time.monotonic() - started, died, ended.timed_out)
+
+
+def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
+    """Until the recorder has the `trial_end` event and the state streams up to it (it writes
+    END_MARK), or `timeout_s` (a stream that stopped: a node died), before everything stops."""
+    mark = folder / END_MARK
+    events = folder / EVENTS_FILE
+    if not (events.exists() and f'"{EventKind.TRIAL_START.value}"' in events.read_text(encoding="utf-8", errors="replace")):
+        return  # no trial started (stopped while held): no end to wait for
+    deadline = time.monotonic() + timeout_s
+    while time.monotonic() < deadline and not mark.exists():
+        time.sleep(0.05)
+    mark.unlink(missing_ok=True)
+
+
+def _supervise(ros: RosOptions, specs: list[ProcessSpec], folder: Path, timeout_s: float | None, asked: Asked | None = None) -> Ended:
+    """`asked`: the teleoperated humans and the questionnaires they answer after the trial."""
+    started = time.monotonic()
+    with Supervisor(ros_environment(network=ros.network, domain_id=ros.domain_id)) as sup:
+        sup.install_signal_handlers()
+        for spec in specs:
+            sup.start(spec)
+        exited = sup.wait(timeout_s=timeout_s, until_exit_of=nodes.SCENARIO.key)
+        timed_out = exited is None and timeout_s is not None and time.monotonic() - started >= timeout_s
+        questionnaires = None
+        if asked is not None and exited is not None and exited.name == nodes.SCENARIO.key and exited.code == 0:
+            _wait_for_recorded_end(folder, 10.0)  # (the trial's nodes still run: its end is recorded)
+            questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
+        sup.stop_some((nodes.SCENARIO.key,))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
+        if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder marks no end)
+            _wait_for_recorded_end(folder, 10.0)
+        codes = sup.stop()
+    return Ended(exited, timed_out, codes.get(nodes.RECORDER.key), questionnaires)
+
+
+def _session_info(plan: SessionPlan) -> dict[str, Any]:
+    """session.json as the run starts (its outcome is written however the run ends)."""
+    scenario, rtf = plan.scenario, plan.real_time_factor
+    return {
+        **trial_record(plan.participant, plan.toggles, plan.seed, scenario),
+        "scenario_file": SCENARIO_FILE,
+        "world_file": WORLD_FILE,
+        "params_file": PARAMS_FILE,
+        "clock": "lockstep" if plan.lockstep else "free-running",
+        "real_time_factor": None if rtf >= UNCAPPED_RTF else rtf,
+        "without": list(plan.without),
+        "allow": list(plan.allow),
+        "suite_nodes": sorted(plan.declared.nodes),
+        "open_topics": list(plan.declared.open),
+        **plan.extra,
+        "outcome": NO_OUTCOME,
+    }
+
+
+def _new_session(plan: SessionPlan, sessions: Path) -> tuple[Path, dict[str, Any]]:
+    """The session folder with the run's inputs and session.json; TrialError (one line) if it
+    cannot be made: a name that is not safe, --sessions under a file, not writable, a full disk."""
+    try:
+        folder = new_session_dir(sessions, plan.scenario.name, plan.participant)
+    except OSError as e:
+        raise TrialError(f"--sessions {sessions}: cannot make a session folder there: {e.strerror or e}") from None
+    except ValueError as e:
+        raise TrialError(str(e)) from None
+    info = _session_info(plan)
+    try:
+        write_inputs(folder, plan.scenario, render(plan.config(folder), header=SESSION_PARAMS_HEADER))
+        write_json(folder / SESSION_FILE, info)
+    except OSError as e:
+        shutil.rmtree(folder, ignore_errors=True)  # (only the inputs just copied: nothing is lost)
+        raise TrialError(f"{folder}: cannot write the session's files: {e.strerror or e}") from None
+    return folder, info
+
+
+def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float) -> dict[str, Any]:
+    """Metrics from the bag, the session record completed, the trajectory picture."""
+    metrics, world, rec = analyse(folder)
+    write_json(folder / METRICS_FILE, metrics)
+    info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
+    info["wall_clock"] = trial_wall_clock(folder)
+    write_json(folder / SESSION_FILE, info)
+    if world is not None:
+        trajectory_picture(folder, world, rec, f"{plan.scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
+    return metrics
