@@ -9,6 +9,7 @@ valid. session.json gets the run's outcome however it ends.
 
 from __future__ import annotations
 
+import math
 import shutil
 import time
 from collections.abc import Callable
@@ -16,6 +17,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.record.outsiders import allowable
 from haven_scenarios.record.session import (
     END_MARK,
     EVENTS_FILE,
@@ -25,6 +27,7 @@ from haven_scenarios.record.session import (
     SESSION_FILE,
     WORLD_FILE,
     analyse,
+    check_name,
     new_session_dir,
     trajectory_picture,
     trial_record,
@@ -32,18 +35,20 @@ from haven_scenarios.record.session import (
     write_inputs,
     write_json,
 )
-from haven_scenarios.run.suite import render
-from haven_scenarios.run.trial import condition_name
+from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
+from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.rules import EndReason
+from haven_scenarios.study.scenario import TELEOP, ScenarioError, load_scenario
 from haven_scenarios.tools.commands import after_trial
 from haven_scenarios.tools.commands.after_trial import Asked
-from haven_scenarios.tools.commands.common import claim_ros_domain
+from haven_scenarios.tools.commands.common import claim_ros_domain, port_free
 from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
-from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, specs_of, web_spec
+from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
 from haven_scenarios.tools.domains import DomainBusy
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_environment
 from haven_sim.common import nodes
 from haven_sim.common.events import EventKind
+from haven_sim.common.params import ParamsError
 from haven_sim.runtime.lockstep import UNCAPPED_RTF
 
 Say = Callable[[str], None]
@@ -101,6 +106,78 @@ class RecordedTrial:
     def finished(self) -> bool:
         """The trial ran to its end (completed, timeout, contact, battery, stopped by the researcher)."""
         return self.died is None and not self.timed_out and self.end_reason != EndReason.INTERRUPTED
+
+
+@dataclass(frozen=True)
+class WebRequest:
+    """The trial in the browser: where the pages are served and what they ask after it."""
+
+    host: str = "127.0.0.1"
+    port: int = 8088
+    researcher_start: bool = False  # the trial starts on the console's Start, not when the participants are ready
+    map_inset: bool = True
+
+
+@dataclass(frozen=True)
+class TrialRequest:
+    """One recorded trial as a user asks for it (`haven run`'s options, the API's arguments)."""
+
+    scenario: str = "hallway"  # a shipped scenario's name or a scenario YAML
+    participant: str | None = None  # default: sim, or the teleoperated humans' ids (h1-h2)
+    condition: tuple[str, ...] | None = None  # the cues shown (all, none, or names); None: the scenario's
+    seed: int = 0
+    world: str | None = None  # play the scenario in this world
+    params_file: str | None = None
+    teleop: tuple[str, ...] | None = None  # these humans are driven by a person (() for all of them)
+    rtf: float | None = None  # None: 1x with a person, as fast as the machine allows on the lockstep clock
+    free_running: bool = False
+    without: tuple[str, ...] = ()  # our nodes left out (short names: mux, planner, controller, viz)
+    allow: tuple[str, ...] = ()  # topics outside nodes may publish on (record/outsiders.py)
+    web: WebRequest | None = None
+    questionnaires: tuple[str, ...] = ()  # in the pages after the trial: built-in names or Likert YAML files
+    extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
+
+
+def plan_trial(request: TrialRequest) -> SessionPlan:
+    """The session plan for a request, every input checked before anything starts; TrialError in
+    one line naming what is wrong."""
+    r = request
+    try:
+        if isinstance(r.seed, bool) or not isinstance(r.seed, int) or not 0 <= r.seed <= SEED_MAX:
+            raise ValueError(f"--seed: must be an integer 0..{SEED_MAX}, got {str(r.seed)[:40]}")
+        if r.rtf is not None and not (isinstance(r.rtf, (int, float)) and math.isfinite(r.rtf) and r.rtf > 0):
+            raise ValueError(f"--rtf: must be a positive number, got {str(r.rtf)[:40]}")
+        unknown = [n for n in r.without if n not in nodes.REPLACEABLE]
+        if unknown:
+            raise ValueError(f"--without: {unknown[0]!r} is not one of our nodes that can be left out ({', '.join(nodes.REPLACEABLE)})")
+        for topic in r.allow:
+            why = allowable("/" + topic.lstrip("/"))
+            if why is not None:
+                raise ValueError(f"--allow {topic[:60]}: {why}")
+        scenario = load_scenario(r.scenario, r.world)
+        toggles = parse_condition(list(r.condition or scenario.condition))
+        if r.teleop is not None:
+            ids = list(r.teleop) or [h.id for h in scenario.humans]
+            missing = [i for i in ids if i not in {h.id for h in scenario.humans}]
+            if missing:
+                raise ValueError(f"--teleop: no human {missing[0]!r} in scenario {scenario.name}")
+            scenario = replace(scenario, humans=tuple(replace(h, model=TELEOP) if h.id in ids else h for h in scenario.humans))
+        base = load_suite_config(r.params_file, TRIAL_SETS)
+        teleop = [h.id for h in scenario.humans if h.teleoperated]
+        questionnaires = after_trial.specs(r.questionnaires, r.web is not None, teleop)
+        web = None
+        if r.web is not None:
+            web = WebOptions(r.web.host, r.web.port, r.web.researcher_start, r.web.map_inset, questionnaires=questionnaires)
+            busy = port_free(r.web.host, r.web.port)
+            if busy:
+                raise ValueError(busy)
+        participant = r.participant if r.participant is not None else "-".join(teleop) or "sim"  # ("" is refused below)
+        check_name(participant, "--participant")  # (before any path is built from them)
+        check_name(scenario.name, f"{scenario.source or r.scenario}: name")
+    except (ScenarioError, ParamsError, ValueError) as e:
+        raise TrialError(str(e)) from None
+    extra = {**r.extra, **({"questionnaires": after_trial.names(questionnaires)} if questionnaires else {})}
+    return SessionPlan(scenario, toggles, r.seed, participant, base, r.rtf, r.free_running, extra, web, tuple(r.without), tuple(r.allow))
 
 
 def record_trial(plan: SessionPlan, sessions: Path, ros: RosOptions = RosOptions(), say: Say = say_now) -> RecordedTrial:

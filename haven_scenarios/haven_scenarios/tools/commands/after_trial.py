@@ -66,14 +66,14 @@ def spec(text: str) -> str | dict[str, Any]:
     return data
 
 
-def specs(args: argparse.Namespace, teleoperated: Sequence[str]) -> tuple[str | dict[str, Any], ...]:
-    """The run's questionnaire specs (() without --questionnaire); ValueError (one line) if they
-    cannot be asked: no --web, nobody teleoperated, a bad name or file, a name twice."""
-    if args.questionnaire is None:
+def specs(texts: Sequence[str] | None, web: bool, teleoperated: Sequence[str]) -> tuple[str | dict[str, Any], ...]:
+    """The run's questionnaire specs (() for none); ValueError (one line) if they cannot be asked:
+    no web pages, nobody teleoperated, a bad name or file, a name twice."""
+    if not texts:
         return ()
-    if not args.web or not teleoperated:
+    if not web or not teleoperated:
         raise ValueError("--questionnaire: participants answer in their pages: needs --web and teleoperated humans (--teleop)")
-    out = tuple(spec(text) for text in args.questionnaire)
+    out = tuple(spec(text) for text in texts)
     resolve(list(out), "--questionnaire")
     return out
 

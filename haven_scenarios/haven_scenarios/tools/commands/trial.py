@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import argparse
 import sys
-from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -16,10 +15,10 @@ from haven_scenarios.record.session import (
     session_info,
     session_scenario,
 )
-from haven_scenarios.run.suite import TRIAL_SETS, SuiteConfig, load_suite_config
-from haven_scenarios.run.trial import SEED_MAX, parse_condition
+from haven_scenarios.run.suite import load_suite_config
+from haven_scenarios.run.trial import SEED_MAX
 from haven_scenarios.study.rules import EndReason
-from haven_scenarios.study.scenario import TELEOP, Scenario, ScenarioError, load_scenario, scenario_names
+from haven_scenarios.study.scenario import scenario_names
 from haven_scenarios.tools.commands import after_trial
 from haven_scenarios.tools.commands.batch_report import CONDITION_HELP
 from haven_scenarios.tools.commands.common import (
@@ -29,11 +28,10 @@ from haven_scenarios.tools.commands.common import (
     add_suite_options,
     allowed_topic,
     fail,
-    port_free,
     positive,
 )
-from haven_scenarios.tools.commands.session_plan import SessionPlan, WebOptions
-from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, record_trial
+from haven_scenarios.tools.commands.session_plan import SessionPlan
+from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
 from haven_viz.cues import CUES, Toggles
 
 
@@ -93,21 +91,6 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     rerun.set_defaults(func=rerun_cmd)
 
 
-def _prepare(args: argparse.Namespace) -> tuple[Scenario, Toggles, SuiteConfig]:
-    """The scenario as this run plays it (teleoperated humans marked), the condition and the
-    parameter file's configuration; raises ScenarioError or ValueError (including for a bad
-    parameter file) before anything starts."""
-    scenario = load_scenario(args.scenario, args.world)
-    toggles = parse_condition(args.condition or scenario.condition)
-    if args.teleop is not None:
-        ids = args.teleop or [h.id for h in scenario.humans]
-        unknown = [i for i in ids if i not in {h.id for h in scenario.humans}]
-        if unknown:
-            raise ValueError(f"--teleop: no human {unknown[0]!r} in scenario {scenario.name}")
-        scenario = replace(scenario, humans=tuple(replace(h, model=TELEOP) if h.id in ids else h for h in scenario.humans))
-    return scenario, toggles, load_suite_config(args.params_file, TRIAL_SETS)
-
-
 def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> int:
     """Run and record one trial into a new session folder under `sessions` (tools/recorded_trial.py);
     the exit code."""
@@ -153,31 +136,31 @@ def summary(metrics: dict[str, Any], wall_s: float) -> str:
     )
 
 
+def request_of(args: argparse.Namespace) -> TrialRequest:
+    """`haven run`'s options as a trial request."""
+    web = WebRequest(args.host, args.port, args.researcher_start, not args.no_map_inset) if args.web else None
+    return TrialRequest(
+        args.scenario,
+        args.participant,
+        tuple(args.condition) if args.condition else None,
+        args.seed,
+        args.world,
+        args.params_file,
+        tuple(args.teleop) if args.teleop is not None else None,
+        args.rtf,
+        args.free_running,
+        tuple(args.without),
+        tuple(args.allow),
+        web,
+        tuple(args.questionnaire or ()),
+    )
+
+
 def run_cmd(args: argparse.Namespace) -> int:
     try:
-        scenario, toggles, base = _prepare(args)
-    except (ScenarioError, ValueError) as e:
+        plan = plan_trial(request_of(args))
+    except TrialError as e:
         return fail(str(e))
-    web, teleop = None, [h.id for h in scenario.humans if h.teleoperated]
-    try:
-        questionnaires = after_trial.specs(args, teleop)
-    except ValueError as e:
-        return fail(str(e))
-    if args.web:
-        web = WebOptions(args.host, args.port, args.researcher_start, not args.no_map_inset, questionnaires=questionnaires)
-        busy = port_free(args.host, args.port)
-        if busy:
-            return fail(busy)
-    participant = args.participant if args.participant is not None else "-".join(teleop) or "sim"  # ("" is refused below)
-    try:  # before any path is built from them
-        check_name(participant, "--participant")
-        check_name(scenario.name, f"{scenario.source or args.scenario}: name")
-    except ValueError as e:
-        return fail(str(e))
-    extra = {"questionnaires": after_trial.names(questionnaires)} if questionnaires else {}
-    plan = SessionPlan(
-        scenario, toggles, args.seed, participant, base, args.rtf, args.free_running, extra, web, tuple(args.without), tuple(args.allow)
-    )
     return run_session(args, plan, Path(args.sessions))
 
 
