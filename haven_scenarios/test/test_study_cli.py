@@ -15,6 +15,7 @@ from pathlib import Path
 import pytest
 import yaml
 
+from haven_scenarios.run.trial import parse_condition
 from haven_scenarios.study.questionnaires import ANSWERS_FILE, BUILTINS, answers_record, likert
 from haven_scenarios.tools.cli import main
 
@@ -229,25 +230,30 @@ def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, 
 
 
 def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(tmp_path: Path) -> None:
+    """Each trial is asked for as `haven run` would be (no command line in between): in the browser,
+    every human teleoperated, the study's questionnaires (its own Likert one as a file)."""
     from haven_scenarios.study.progress import questionnaire_specs
     from haven_scenarios.study.protocol import load_study
     from haven_scenarios.study.schedule import participant_schedule
     from haven_scenarios.tools.cli import build_parser
-    from haven_scenarios.tools.commands.study_run import haven_run_argv
+    from haven_scenarios.tools.commands.study_run import trial_request
+    from haven_scenarios.tools.recorded_trial import plan_trial
 
     path = study_file(tmp_path)
-    args = build_parser().parse_args(["study", "run", str(path), "--participant", "p02", "--web", "--port", "9000", "--domain-id", "7"])
+    args = build_parser().parse_args(["study", "run", str(path), "--participant", "p02", "--web", "--port", "0", "--domain-id", "7"])
     study = load_study(path)
     specs = questionnaire_specs(study, tmp_path / "studies" / "pilot")
     trial = participant_schedule(study, "p02")[1]
-    argv = haven_run_argv(args, trial, tmp_path / "t", specs)
-    assert argv[1:5] == ["-m", "haven_scenarios", "run", "shared_room"]
-    tail = " ".join(argv[5:])
-    assert f"--participant p02 --condition {' '.join(trial.cues)} --seed 1 --sessions {tmp_path / 't'}" in tail
-    assert "--domain-id 7" in tail and "--web --host 127.0.0.1 --port 9000 --teleop --questionnaire nasa_tlx " in tail
-    written = Path(argv[-1])
+    request = trial_request(args, trial, specs)
+    assert (request.scenario, request.participant, request.condition, request.seed) == ("shared_room", "p02", tuple(trial.cues), 1)
+    assert request.web is not None and (request.web.host, request.web.port) == ("127.0.0.1", 0) and request.teleop == ()
+    assert request.questionnaires[0] == "nasa_tlx"
+    written = Path(request.questionnaires[-1])
     assert written.parent == (tmp_path / "studies" / "pilot" / "questionnaires").resolve()
     assert likert(yaml.safe_load(written.read_text()), "file") == likert(LEGIBILITY, "file")  # the study's own, as `haven run` reads it
+    plan = plan_trial(request)
+    assert plan.web is not None and [h.teleoperated for h in plan.scenario.humans] == [True] * len(plan.scenario.humans)
+    assert plan.extra["questionnaires"][0] == "nasa_tlx" and plan.toggles == parse_condition(list(trial.cues))
 
 
 def test_a_reader_that_stops_early_gets_no_traceback(tmp_path: Path) -> None:

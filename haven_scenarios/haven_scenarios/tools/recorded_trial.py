@@ -11,6 +11,8 @@ from __future__ import annotations
 
 import math
 import shutil
+import signal
+import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field, replace
@@ -50,6 +52,7 @@ from haven_sim.common import nodes
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import ParamsError
 from haven_sim.runtime.lockstep import UNCAPPED_RTF
+from haven_sim.runtime.process import STOP_SIGNALS
 
 Say = Callable[[str], None]
 
@@ -89,6 +92,7 @@ class RecordedTrial:
     wall_s: float
     died: str | None = None  # the node that ended the trial by dying ("planner exited with code 1")
     timed_out: bool = False  # cut at the wall-clock limit
+    stopped: bool = False  # a stop signal (Ctrl-C) ended it
 
     @property
     def end_reason(self) -> str:
@@ -182,7 +186,18 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
 
 def record_trial(plan: SessionPlan, sessions: Path, ros: RosOptions = RosOptions(), say: Say = say_now) -> RecordedTrial:
     """Run and record one trial into a new session folder under `sessions`; blocks until it has
-    ended and its session is complete. TrialError (one line) when it cannot."""
+    ended and its session is complete. TrialError (one line) when it cannot. Call it from the main
+    thread: while it runs, a stop signal (Ctrl-C) ends the trial cleanly; the handlers the caller
+    had are back when it returns."""
+    previous = {sig: signal.getsignal(sig) for sig in STOP_SIGNALS}
+    try:
+        return _record(plan, sessions, ros, say)
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+
+
+def _record(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -> RecordedTrial:
     try:
         domain = claim_ros_domain(ros.domain_id, ros.network, plan.without, say)
     except DomainBusy as e:
@@ -221,7 +236,8 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
         if asked is not None:  # (also when interrupted)
             info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
         write_outcome(folder, info)
-    return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), time.monotonic() - started, died, ended.timed_out)
+    stopped = ended.exited is None and not ended.timed_out
+    return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), time.monotonic() - started, died, ended.timed_out, stopped)
 
 
 def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
@@ -305,3 +321,33 @@ def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float) 
     if world is not None:
         trajectory_picture(folder, world, rec, f"{plan.scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
     return metrics
+
+
+def summary(metrics: dict[str, Any], wall_s: float) -> str:
+    """The one line `haven run` prints about a trial's outcome."""
+    if metrics["duration_s"] is None:
+        return f"haven: {metrics['end_reason']} before the trial started ({wall_s:.0f} s wall)"
+    finished = metrics.get("robot_time_to_finish_s")
+    robot = f"robot finished at {finished} s" if finished is not None else "robot did not finish"
+    return (
+        f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall_s:.0f} s wall): {robot}, "
+        f"closest approach {metrics.get('min_human_distance_m')} m, {metrics.get('waits')} wait(s), "
+        f"{metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)"
+    )
+
+
+def tell(result: RecordedTrial) -> None:
+    """A recorded trial's last lines, as `haven run` ends: how it went, what is wrong with the
+    recording if anything, the session folder and what it holds."""
+    if result.died is not None:
+        print(f"haven: {result.died}; the trial was cut short", file=sys.stderr, flush=True)
+    print(summary(result.metrics, result.wall_s))
+    if not result.valid:
+        print(f"haven: the recording is not complete: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
+        if any("from outside the suite" in r for r in result.invalid_reasons):
+            hint = "an outside input the study expects is declared with `haven run --allow TOPIC` (docs: Clocks and isolation)"
+            print(f"haven: {hint}", file=sys.stderr)
+    made = sorted(p.name + ("/" if p.is_dir() else "") for p in result.folder.iterdir())
+    print(f"haven: session in {result.folder} ({', '.join(made)})", flush=True)
+    if result.timed_out:
+        print("haven: the trial did not end in time; everything was stopped", file=sys.stderr)

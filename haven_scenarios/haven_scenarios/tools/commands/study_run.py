@@ -1,11 +1,11 @@
 """`haven study run`: one participant's trials in order, each into its own trial folder.
 
-Each trial is a `haven run` subprocess (this python; with `--web` the participant plays in the
-browser and answers the study's questionnaires after it), or with `--batch` a batch trial in this
-process. The child runs in this process group, so a terminal's Ctrl-C reaches it too and it ends
-its trial cleanly (its session folder says "interrupted"); a stop signal sent to this process
-alone is passed on; and the child dies with this process however it ends (die_with_parent).
-A trial that does not finish stops the study: the same command later runs it again.
+Each trial is a recorded trial as `haven run` makes it (tools/recorded_trial.py, called here: its
+nodes are this process's children; with `--web` the participant plays in the browser and answers
+the study's questionnaires after it), or with `--batch` a batch trial. A stop signal (Ctrl-C) ends
+the current trial cleanly (its session folder says "interrupted") and stops the study; the nodes
+die with this process however it ends. A trial that does not finish stops the study: the same
+command later runs it again.
 One runner works on a participant at a time (an OS lock on their folder, which a crash releases):
 a second `haven study run` for them says who holds it and exits.
 """
@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import argparse
 import signal
-import subprocess
 import sys
 from pathlib import Path
 from types import FrameType
@@ -28,8 +27,9 @@ from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.commands.common import fail
 from haven_scenarios.tools.commands.study import study_dir
 from haven_scenarios.tools.locks import FileLock, Locked
+from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_sim.common.params import ParamsError
-from haven_sim.runtime.process import STOP_SIGNALS, die_with_parent
+from haven_sim.runtime.process import STOP_SIGNALS
 
 INTERRUPTED = 130
 RUNNER_LOCK = ".runner.lock"  # in the participant's folder, held while a `haven study run` works on it
@@ -39,43 +39,32 @@ class Stopped(Exception):
     """A stop signal arrived: the study stops after the current trial has ended cleanly."""
 
 
-def haven_run_argv(args: argparse.Namespace, trial: PlannedTrial, sessions: Path, questionnaires: list[str]) -> list[str]:
-    """`haven run` for one trial of the schedule."""
-    argv = [sys.executable, "-m", "haven_scenarios", "run", trial.scenario_spec, "--participant", trial.participant]
-    argv += ["--condition", *trial.cues, "--seed", str(trial.seed), "--sessions", str(sessions)]
-    if args.params_file:
-        argv += ["--params-file", str(Path(args.params_file).resolve())]
-    argv += ["--domain-id", str(args.domain_id)] if args.domain_id is not None else []
-    argv += ["--network"] if args.network else []
-    if args.web:
-        argv += ["--web", "--host", args.host, "--port", str(args.port), "--teleop", *(args.teleop or [])]
-        argv += ["--questionnaire", *questionnaires] if questionnaires else []
-    elif args.teleop is not None:
-        argv += ["--teleop", *args.teleop]
-    return argv
+def trial_request(args: argparse.Namespace, trial: PlannedTrial, questionnaires: list[str]) -> TrialRequest:
+    """The recorded trial for one trial of the schedule."""
+    web = WebRequest(args.host, args.port) if args.web else None
+    teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
+    return TrialRequest(
+        trial.scenario_spec,
+        trial.participant,
+        tuple(trial.cues),
+        trial.seed,
+        params_file=str(Path(args.params_file).resolve()) if args.params_file else None,
+        teleop=teleop,
+        web=web,
+        questionnaires=tuple(questionnaires) if args.web else (),
+    )
 
 
-def run_child(argv: list[str], lock_fd: int | None = None) -> bool:
-    """Run `haven run` to its end; True if a stop signal arrived meanwhile (passed on as SIGTERM,
-    the child's clean stop; a Ctrl-C at the terminal reaches it directly). The child shares the
-    participant's lock (`lock_fd`): were this process killed, the participant stays held until the
-    child has finished its clean stop too."""
-    stopped = False
-    proc = subprocess.Popen(argv, preexec_fn=die_with_parent(), pass_fds=() if lock_fd is None else (lock_fd,))
-
-    def forward(signum: int, frame: FrameType | None) -> None:
-        nonlocal stopped
-        stopped = True
-        if proc.poll() is None:
-            proc.send_signal(signal.SIGTERM)
-
-    previous = {sig: signal.signal(sig, forward) for sig in STOP_SIGNALS}
+def run_recorded_trial(args: argparse.Namespace, trial: PlannedTrial, sessions: Path, questionnaires: list[str]) -> bool:
+    """The trial with the whole node suite; True if a stop signal (Ctrl-C) cut it short."""
     try:
-        proc.wait()
-    finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
-    return stopped
+        plan = plan_trial(trial_request(args, trial, questionnaires))
+        result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network))
+    except TrialError as e:
+        print(f"haven: error: {e}", file=sys.stderr)
+        return False
+    tell(result)
+    return result.stopped
 
 
 def _raise_stopped(signum: int, frame: FrameType | None) -> None:
@@ -154,12 +143,10 @@ def run_cmd(args: argparse.Namespace) -> int:
     except OSError as e:
         return fail(f"cannot lock {root / args.participant}: {e.strerror or e}")
     with lock:
-        return _run_trials(args, study, root, trials, questionnaires, lock.fd)
+        return _run_trials(args, study, root, trials, questionnaires)
 
 
-def _run_trials(
-    args: argparse.Namespace, study: Study, root: Path, trials: list[PlannedTrial], questionnaires: list[str], lock_fd: int | None
-) -> int:
+def _run_trials(args: argparse.Namespace, study: Study, root: Path, trials: list[PlannedTrial], questionnaires: list[str]) -> int:
     todo = [t for t in progress(root, trials) if t.status != "done"]
     done = len(trials) - len(todo)
     print(
@@ -167,16 +154,14 @@ def _run_trials(
     )
     person = args.web or args.teleop is not None
     for p in todo:
-        code = _one(args, study, p, len(trials), root, questionnaires, person, lock_fd)
+        code = _one(args, study, p, len(trials), root, questionnaires, person)
         if code:
             return code
     print(f"haven study: participant {args.participant}: all {len(trials)} trials done (`haven study report {args.study}` for the tables)")
     return 0
 
 
-def _one(
-    args: argparse.Namespace, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool, lock_fd: int | None
-) -> int:
+def _one(args: argparse.Namespace, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool) -> int:
     """Run one trial; 0 when it finished, else the study's exit code (and why, said)."""
     trial = p.trial
     again = f" (again: {len(p.attempts)} attempt(s) did not finish)" if p.attempts else ""
@@ -191,7 +176,7 @@ def _one(
         if args.batch:
             stopped = run_batch_trial(args, trial, sessions, study)
         else:
-            stopped = run_child(haven_run_argv(args, trial, sessions, questionnaires), lock_fd)
+            stopped = run_recorded_trial(args, trial, sessions, questionnaires)
     except KeyboardInterrupt:
         stopped = True
     except (OSError, ValueError) as e:

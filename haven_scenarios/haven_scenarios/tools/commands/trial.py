@@ -5,7 +5,6 @@ from __future__ import annotations
 import argparse
 import sys
 from pathlib import Path
-from typing import Any
 
 from haven_scenarios.record.session import (
     PARAMS_FILE,
@@ -31,7 +30,7 @@ from haven_scenarios.tools.commands.common import (
     positive,
 )
 from haven_scenarios.tools.commands.session_plan import SessionPlan
-from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
+from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_viz.cues import CUES, Toggles
 
 
@@ -106,34 +105,10 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
 
 def _said(result: RecordedTrial) -> int:
     """The run's last lines, and its exit code."""
-    if result.died is not None:
-        print(f"haven: {result.died}; the trial was cut short", file=sys.stderr, flush=True)
-    print(summary(result.metrics, result.wall_s))
-    if not result.valid:
-        print(f"haven: the recording is not complete: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
-        if any("from outside the suite" in r for r in result.invalid_reasons):
-            hint = "an outside input the study expects is declared with `haven run --allow TOPIC` (docs: Clocks and isolation)"
-            print(f"haven: {hint}", file=sys.stderr)
-    made = sorted(p.name + ("/" if p.is_dir() else "") for p in result.folder.iterdir())
-    print(f"haven: session in {result.folder} ({', '.join(made)})")
+    tell(result)
     if result.died is not None:
         return 1
-    if result.timed_out:
-        print("haven: the trial did not end in time; everything was stopped", file=sys.stderr)
     return 0 if result.end_reason != EndReason.INTERRUPTED else 1
-
-
-def summary(metrics: dict[str, Any], wall_s: float) -> str:
-    """The one line `haven run` prints about a trial's outcome."""
-    if metrics["duration_s"] is None:
-        return f"haven: {metrics['end_reason']} before the trial started ({wall_s:.0f} s wall)"
-    finished = metrics.get("robot_time_to_finish_s")
-    robot = f"robot finished at {finished} s" if finished is not None else "robot did not finish"
-    return (
-        f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall_s:.0f} s wall): {robot}, "
-        f"closest approach {metrics.get('min_human_distance_m')} m, {metrics.get('waits')} wait(s), "
-        f"{metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)"
-    )
 
 
 def request_of(args: argparse.Namespace) -> TrialRequest:
