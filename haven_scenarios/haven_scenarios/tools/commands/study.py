@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+from dataclasses import dataclass
 from pathlib import Path
 
 from haven_scenarios.record.report import write_table
@@ -54,8 +55,9 @@ def _run(args: argparse.Namespace) -> int:
     return run_cmd(args)
 
 
-def study_dir(args: argparse.Namespace, study: Study) -> Path:
-    return args.dir if args.dir is not None else Path("studies") / study.name
+def study_dir(folder: Path | None, study: Study) -> Path:
+    """The study's folder: `folder` if given, else studies/<name> here."""
+    return folder if folder is not None else Path("studies") / study.name
 
 
 def table(rows: list[list[str]]) -> str:
@@ -99,7 +101,7 @@ def _questionnaires(study: Study) -> str:
 def _load(args: argparse.Namespace) -> tuple[Study, Path, list[TrialProgress]]:
     """The study, its folder and every trial's progress (StudyError, one line, if unreadable)."""
     study = load_study(args.study)
-    root = study_dir(args, study)
+    root = study_dir(args.dir, study)
     return study, root, progress(root, schedule(study))
 
 
@@ -139,16 +141,27 @@ def _next(t: TrialProgress | None) -> str:
     return f"{tr.folder}: {tr.scenario}, {tr.condition}, seed {tr.seed}" + (", practice" if tr.practice else "")
 
 
-def report_cmd(args: argparse.Namespace) -> int:
-    try:
-        study, root, done = _load(args)
-        questionnaires = study.resolved_questionnaires()
-    except (StudyError, ValueError) as e:
-        return fail(str(e))
+@dataclass(frozen=True)
+class Report:
+    """What `haven study report` wrote."""
+
+    folder: Path  # study_long.csv, study_wide.csv, summary.csv and (with measures to draw) summary.png
+    trials_done: int
+    trials: int
+    counts: str  # participants, trials, practice trials, flagged not valid
+    picture: bool
+    study_changed: bool  # the study file changed since the first run
+
+
+def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
+    """The study's tables and summary picture from its finished trials; ValueError (one line) when
+    there are none or they cannot be written."""
+    questionnaires = study.resolved_questionnaires()
+    done = progress(root, schedule(study))
     results = [r for r in (trial_results(t) for t in done) if r is not None]
     if not results:
-        return fail(f"no finished trials of study {study.name} in {root} (see `haven study status`)")
-    out = args.out if args.out is not None else root / "report"
+        raise ValueError(f"no finished trials of study {study.name} in {root} (see `haven study status`)")
+    out = out if out is not None else root / "report"
     try:
         write_table(out / "study_long.csv", long_rows(results), LONG)
         write_table(out / "study_wide.csv", wide_rows(results), DESIGN)
@@ -156,11 +169,23 @@ def report_cmd(args: argparse.Namespace) -> int:
         write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
         picture = draw(results, conditions, questionnaires, out / "summary.png", f"{study.name}: {_counts(results)}")
     except OSError as e:
-        return fail(f"--out {out}: cannot write the report: {e.strerror or e}")
-    print(f"haven: study {study.name}: {len(results)}/{len(done)} trials done; {_counts(results)}")
-    print(f"haven: wrote {out / 'study_long.csv'}, study_wide.csv, summary.csv" + (", summary.png" if picture else " (no measures to draw)"))
+        raise ValueError(f"--out {out}: cannot write the report: {e.strerror or e}") from None
     old = stored(root)
-    if old is not None and differences(old["study"], study.describe()):
+    changed = old is not None and bool(differences(old["study"], study.describe()))
+    return Report(out, len(results), len(done), _counts(results), bool(picture), changed)
+
+
+def report_cmd(args: argparse.Namespace) -> int:
+    try:
+        study = load_study(args.study)
+        root = study_dir(args.dir, study)
+        report = write_report(study, root, args.out)
+    except (StudyError, ValueError) as e:
+        return fail(str(e))
+    out = report.folder
+    print(f"haven: study {study.name}: {report.trials_done}/{report.trials} trials done; {report.counts}")
+    print(f"haven: wrote {out / 'study_long.csv'}, study_wide.csv, summary.csv" + (", summary.png" if report.picture else " (no measures to draw)"))
+    if report.study_changed:
         print(f"haven: note: the study file changed since the first run in {root}")
     return 0
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import signal
 import sys
+from dataclasses import dataclass, fields
 from pathlib import Path
 from types import FrameType
 
@@ -35,11 +36,36 @@ INTERRUPTED = 130
 RUNNER_LOCK = ".runner.lock"  # in the participant's folder, held while a `haven study run` works on it
 
 
+@dataclass(frozen=True)
+class StudyRun:
+    """One participant's run of a study (`haven study run`'s options; the Python API's arguments)."""
+
+    study: str  # a study file or a shipped study's name
+    participant: str
+    dir: Path | None = None  # the study's folder (default: studies/<name>)
+    replan: bool = False  # accept a study file changed since the first run
+    batch: bool = False  # simulated participants in this process without ROS (no bag)
+    web: bool = False  # the participant plays in the browser, questionnaires after each trial
+    host: str = "127.0.0.1"
+    port: int = 8088
+    teleop: tuple[str, ...] | None = None  # these humans (() for all) are driven by the participant
+    no_pause: bool = True  # with a person: do not wait for Enter between trials
+    params_file: str | None = None
+    domain_id: int | None = None
+    network: bool = False
+
+    @staticmethod
+    def of(args: argparse.Namespace) -> StudyRun:
+        values = {f.name: getattr(args, f.name) for f in fields(StudyRun)}
+        values["teleop"] = tuple(args.teleop) if args.teleop is not None else None
+        return StudyRun(**values)
+
+
 class Stopped(Exception):
     """A stop signal arrived: the study stops after the current trial has ended cleanly."""
 
 
-def trial_request(args: argparse.Namespace, trial: PlannedTrial, questionnaires: list[str]) -> TrialRequest:
+def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]) -> TrialRequest:
     """The recorded trial for one trial of the schedule."""
     web = WebRequest(args.host, args.port) if args.web else None
     teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
@@ -55,7 +81,7 @@ def trial_request(args: argparse.Namespace, trial: PlannedTrial, questionnaires:
     )
 
 
-def run_recorded_trial(args: argparse.Namespace, trial: PlannedTrial, sessions: Path, questionnaires: list[str]) -> bool:
+def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str]) -> bool:
     """The trial with the whole node suite; True if a stop signal (Ctrl-C) cut it short."""
     try:
         plan = plan_trial(trial_request(args, trial, questionnaires))
@@ -71,7 +97,7 @@ def _raise_stopped(signum: int, frame: FrameType | None) -> None:
     raise Stopped()
 
 
-def run_batch_trial(args: argparse.Namespace, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
+def run_batch_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
     """The trial in this process; True if a stop signal (or Ctrl-C) cut it short."""
     scenario = load_scenario(trial.scenario_spec)
     extra = {
@@ -100,14 +126,14 @@ def describe(trial: PlannedTrial, total: int) -> str:
     return f"trial {trial.position}/{total} {trial.trial_id}{practice}: {trial.scenario}, condition {trial.condition} ({cues}), seed {trial.seed}"
 
 
-def wait_for_enter(args: argparse.Namespace, person: bool) -> None:
+def wait_for_enter(args: StudyRun, person: bool) -> None:
     """With a person, between trials: until the researcher presses Enter (not with --no-pause, or
     when nobody is at the terminal)."""
     if person and not args.no_pause and sys.stdin.isatty():
         input("haven study: press Enter to start it (Ctrl-C stops the study here; it resumes from this trial) ")
 
 
-def _check(args: argparse.Namespace, study: Study) -> str | None:
+def _check(args: StudyRun, study: Study) -> str | None:
     """What is wrong with the command line for this study, if anything."""
     if args.participant not in study.participants:
         shown = ", ".join(study.participants[:6]) + (" .." if len(study.participants) > 6 else "")
@@ -122,13 +148,19 @@ def _check(args: argparse.Namespace, study: Study) -> str | None:
 
 
 def run_cmd(args: argparse.Namespace) -> int:
+    return run_participant(StudyRun.of(args))
+
+
+def run_participant(args: StudyRun) -> int:
+    """Run the participant's trials that are not done yet, in order; the exit code (0: all done,
+    1: a trial did not finish, 2: refused, 130: stopped)."""
     try:
         study = load_study(args.study)
         load_suite_config(args.params_file, TRIAL_SETS)  # (each trial reads it: refused now, not at the first)
         problem = _check(args, study)
         if problem:
             return fail(problem)
-        root = study_dir(args, study)
+        root = study_dir(args.dir, study)
         trials = [t for t in bind(study, root, args.replan) if t.participant == args.participant]
         questionnaires = questionnaire_specs(study, root) if args.web else []
     except (StudyError, ScenarioError, ParamsError) as e:
@@ -146,7 +178,7 @@ def run_cmd(args: argparse.Namespace) -> int:
         return _run_trials(args, study, root, trials, questionnaires)
 
 
-def _run_trials(args: argparse.Namespace, study: Study, root: Path, trials: list[PlannedTrial], questionnaires: list[str]) -> int:
+def _run_trials(args: StudyRun, study: Study, root: Path, trials: list[PlannedTrial], questionnaires: list[str]) -> int:
     todo = [t for t in progress(root, trials) if t.status != "done"]
     done = len(trials) - len(todo)
     print(
@@ -161,7 +193,7 @@ def _run_trials(args: argparse.Namespace, study: Study, root: Path, trials: list
     return 0
 
 
-def _one(args: argparse.Namespace, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool) -> int:
+def _one(args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool) -> int:
     """Run one trial; 0 when it finished, else the study's exit code (and why, said)."""
     trial = p.trial
     again = f" (again: {len(p.attempts)} attempt(s) did not finish)" if p.attempts else ""

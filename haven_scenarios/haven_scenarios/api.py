@@ -1,0 +1,132 @@
+"""HAVEN from a Python script or a notebook, in the spirit of nav2_simple_commander: the main jobs
+as calls that block until they are done and return typed results. The `haven` command is a thin
+layer over the same functions.
+
+    from haven_scenarios import api
+
+    r = api.batch_trial("hallway", seed=3, condition=["turn_signals"])     # no ROS, in this process
+    print(r.end_reason, r.metrics["min_human_distance_m"])
+
+    s = api.recorded_trial("hallway", participant="p01", seed=3)          # the whole node suite, recorded
+    print(s.folder, s.outcome, s.valid, s.metrics["human_contacts"])
+
+    rows = api.sweep(["hallway"], seeds=range(10), grid={"condition": ["all", "none"]})
+
+    trials = api.study_plan("haven_paper")                                 # a whole study
+    api.run_participant("haven_paper", "p01", batch=True)
+    api.study_status("haven_paper"); api.study_report("haven_paper")
+
+Bad input raises `TrialError` (or `ValueError`) with one line naming what is wrong. Recorded trials
+and studies start processes and take ROS domains as `haven run` does; call them from the main
+thread (a stop signal, Ctrl-C, ends the trial cleanly).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from pathlib import Path
+from typing import Any
+
+from haven_scenarios.run.grid import TrialSpec, parse_grid, plan_sweep
+from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
+from haven_scenarios.run.sweep import run_rows
+from haven_scenarios.run.trial import TrialResult, parse_condition, run_trial
+from haven_scenarios.study.progress import TrialProgress, progress
+from haven_scenarios.study.protocol import load_study
+from haven_scenarios.study.scenario import load_scenario
+from haven_scenarios.study.schedule import PlannedTrial, schedule
+from haven_scenarios.tools.commands.study import Report, study_dir, write_report
+from haven_scenarios.tools.commands.study_run import StudyRun
+from haven_scenarios.tools.commands.study_run import run_participant as _run_participant
+from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
+
+__all__ = [
+    "RecordedTrial",
+    "Report",
+    "StudyRun",
+    "TrialError",
+    "TrialRequest",
+    "TrialResult",
+    "WebRequest",
+    "batch_trial",
+    "recorded_trial",
+    "run_participant",
+    "study_plan",
+    "study_report",
+    "study_status",
+    "sweep",
+]
+
+
+def batch_trial(
+    scenario: str = "hallway", seed: int = 0, condition: Sequence[str] | None = None, world: str | None = None, params_file: str | None = None
+) -> TrialResult:
+    """One trial without ROS, in this process (the components the nodes run, at their rates):
+    `scenario` a shipped name or a YAML; `condition` the cues shown (None: the scenario's)."""
+    s = load_scenario(scenario, world)
+    return run_trial(s, seed, parse_condition(list(condition or s.condition)), load_suite_config(params_file, TRIAL_SETS))
+
+
+def recorded_trial(
+    scenario: str = "hallway",
+    *,
+    sessions: str | Path = "sessions",
+    domain_id: int | None = None,
+    network: bool = False,
+    quiet: bool = False,
+    **options: Any,
+) -> RecordedTrial:
+    """One recorded trial with the whole node suite, into a new session folder under `sessions`;
+    blocks until its session is complete. `options` are TrialRequest's fields (participant,
+    condition, seed, world, params_file, teleop, rtf, free_running, without, allow, web,
+    questionnaires). `quiet`: no progress lines."""
+    unknown = sorted(set(options) - set(TrialRequest.__dataclass_fields__))
+    if unknown:
+        raise TrialError(f"recorded_trial: unknown option {unknown[0]!r} (options: {', '.join(TrialRequest.__dataclass_fields__)})")
+    for key in ("condition", "teleop", "without", "allow", "questionnaires"):
+        if options.get(key) is not None and not isinstance(options[key], str):
+            options[key] = tuple(options[key])
+    plan = plan_trial(TrialRequest(scenario, **options))
+    return record_trial(plan, Path(sessions), RosOptions(domain_id, network), say=(lambda _: None) if quiet else print)
+
+
+def sweep(
+    scenarios: Sequence[str],
+    seeds: Iterable[int] = range(10),
+    grid: Mapping[str, Sequence[Any]] | None = None,
+    workers: int = 1,
+    cluster: str | None = None,
+    params_file: str | None = None,
+) -> list[dict[str, Any]]:
+    """Batch trials over scenarios x the grid's axes (condition, model, speed_mps, a participant
+    parameter) x seeds, as `haven batch` runs them; one row per trial, in trial order."""
+    axes = parse_grid([f"{k}={','.join(str(v) for v in values)}" for k, values in (grid or {}).items()])
+    specs: list[TrialSpec] = plan_sweep([load_scenario(s) for s in dict.fromkeys(scenarios)], axes, tuple(seeds))
+    rows = list(run_rows(specs, load_suite_config(params_file, TRIAL_SETS), workers, cluster))
+    return sorted(rows, key=lambda r: r["trial"])
+
+
+def study_plan(study: str, participant: str | None = None) -> list[PlannedTrial]:
+    """The study's schedule (one participant's trials, or everyone's), as `haven study plan` prints it."""
+    s = load_study(study)
+    trials = schedule(s)
+    return [t for t in trials if participant is None or t.participant == participant]
+
+
+def run_participant(study: str, participant: str, **options: Any) -> int:
+    """Run the participant's trials not done yet, in order (StudyRun's fields as options: batch,
+    web, teleop, dir, params_file, domain_id, ...); 0 when all are done (`haven study run`'s exit
+    codes otherwise)."""
+    return _run_participant(StudyRun(study, participant, **options))
+
+
+def study_status(study: str, dir: str | Path | None = None) -> list[TrialProgress]:
+    """Every trial of the study with its status (done, failed, to do) and its attempts."""
+    s = load_study(study)
+    return progress(study_dir(Path(dir) if dir is not None else None, s), schedule(s))
+
+
+def study_report(study: str, dir: str | Path | None = None, out: str | Path | None = None) -> Report:
+    """The study's tables and summary picture (`haven study report`): what was written where."""
+    s = load_study(study)
+    return write_report(s, study_dir(Path(dir) if dir is not None else None, s), Path(out) if out is not None else None)

@@ -1,0 +1,74 @@
+"""The Python API (haven_scenarios.api) does what the commands do, with typed results, and refuses
+bad input in one line before anything starts."""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import pytest
+import yaml
+
+from haven_scenarios import api
+from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_scenarios.study.scenario import load_scenario
+from haven_scenarios.tools.cli import main
+
+pytestmark = pytest.mark.integration
+
+
+def test_a_batch_trial_and_a_sweep_are_the_commands_trials(tmp_path):
+    r = api.batch_trial("hallway", seed=2, condition=["turn_signals"])
+    assert r.metrics == run_trial(load_scenario("hallway"), 2, parse_condition(["turn_signals"])).metrics
+    rows = api.sweep(["hallway"], seeds=[0, 1], grid={"condition": ["all", "none"]}, workers=2)
+    assert [(row["trial"], row["condition"], row["seed"]) for row in rows] == [(0, "all", 0), (1, "all", 1), (2, "none", 0), (3, "none", 1)]
+    out = tmp_path / "batch.csv"
+    assert main(["batch", "hallway", "--grid", "condition=all,none", "--seeds", "0-1", "--out", str(out), "--workers", "1"]) == 0
+    with out.open() as f:
+        from_cli = list(csv.DictReader(f))
+    assert [str(row["min_human_distance_m"]) for row in rows] == [row["min_human_distance_m"] for row in from_cli]
+
+
+def test_a_pilot_study_through_the_api(tmp_path):
+    study = tmp_path / "pilot.yaml"
+    study.write_text(
+        yaml.safe_dump(
+            {
+                "name": "pilot",
+                "scenarios": ["hallway"],
+                "conditions": {"none": ["none"], "signals": ["turn_signals"]},
+                "participants": ["p01", "p02", "p03"],
+                "counterbalancing": "latin",
+            }
+        )
+    )
+    assert len(api.study_plan(str(study))) == 6 and len(api.study_plan(str(study), "p02")) == 2
+    for p in ("p01", "p02", "p03"):
+        assert api.run_participant(str(study), p, batch=True, dir=tmp_path / "study") == 0
+    assert api.run_participant(str(study), "p01", batch=True, dir=tmp_path / "study") == 0  # (nothing left to run)
+    assert [t.status for t in api.study_status(str(study), dir=tmp_path / "study")] == ["done"] * 6
+    report = api.study_report(str(study), dir=tmp_path / "study")
+    assert report.trials_done == 6 and (report.folder / "study_long.csv").exists() and not report.study_changed
+    with pytest.raises(ValueError, match="^no finished trials of study pilot in "):
+        api.study_report(str(study), dir=tmp_path / "empty")
+
+
+@pytest.mark.parametrize(
+    ("options", "said"),
+    [
+        ({"seed": -1}, "--seed: must be an integer 0.."),
+        ({"rtf": 0}, "--rtf: must be a positive number, got 0"),
+        ({"condition": ["sparkles"]}, "unknown cue 'sparkles'"),
+        ({"allow": ["/odom"]}, "--allow /odom: the simulator's and the metrics' topics take no outside publisher"),
+        ({"without": ["sim"]}, "--without: 'sim' is not one of our nodes that can be left out (mux, planner, controller, viz)"),
+        ({"teleop": ["h9"]}, "--teleop: no human 'h9' in scenario hallway"),
+        ({"questionnaires": ["nasa_tlx"]}, "--questionnaire: participants answer in their pages: needs --web"),
+        ({"participant": "../x"}, "--participant"),
+        ({"colour": "red"}, "recorded_trial: unknown option 'colour'"),
+    ],
+)
+def test_bad_input_to_a_recorded_trial_is_one_line_and_starts_nothing(tmp_path, options, said):
+    with pytest.raises(api.TrialError) as e:
+        api.recorded_trial("hallway", sessions=tmp_path / "s", **options)
+    assert said in str(e.value) and "\n" not in str(e.value)
+    assert not (tmp_path / "s").exists()
