@@ -4,7 +4,6 @@ bad input in one line before anything starts."""
 from __future__ import annotations
 
 import csv
-from pathlib import Path
 
 import pytest
 import yaml
