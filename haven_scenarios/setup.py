@@ -42,5 +42,9 @@ setup(
             "blocker = haven_scenarios.study.participants:Blocker",
             "yielder = haven_scenarios.study.participants:Yielder",
         ],
+        "haven.questionnaires": [
+            "nasa_tlx = haven_scenarios.study.questionnaires:NASA_TLX",
+            "godspeed = haven_scenarios.study.questionnaires:GODSPEED",
+        ],
     },
 )

@@ -153,7 +153,7 @@ def test_questionnaire_usage_errors_are_one_line(tmp_path, capsys):
     assert run_errors(capsys, "--web", "--questionnaire", "nasa_tlx")[0].endswith("needs --web and teleoperated humans (--teleop)")
     web = ["--web", "--teleop", "h1", "--port", "0", "--sessions", str(tmp_path / "s")]
     assert run_errors(capsys, *web, "--questionnaire", "sus") == [
-        "haven: error: --questionnaire sus: neither a built-in questionnaire (nasa_tlx, godspeed) nor a file"
+        "haven: error: --questionnaire sus: neither a registered questionnaire (godspeed, nasa_tlx) nor a file"
     ]
     bad = tmp_path / "bad.yaml"
     bad.write_text("name: legibility\npoints: 12\nitems: [{id: a, text: A}]\n")

@@ -56,13 +56,13 @@ def test_answers_off_the_scale_are_refused_in_one_line(answers: object, message:
     "specs, message",
     [
         (["nasa"], r"q\[0\]: unknown questionnaire 'nasa'"),
-        ([{"name": "nasa_tlx", "items": [{"id": "a", "text": "x"}]}], "is a built-in"),
+        ([{"name": "nasa_tlx", "items": [{"id": "a", "text": "x"}]}], r"is a registered questionnaire \(haven plugins\)"),
         ([{"name": "x", "points": 1, "items": [{"id": "a", "text": "x"}]}], r"q\[0\]\.points: must be a whole number 2\.\.11"),
         ([{"name": "x", "items": []}], r"q\[0\]\.items: must be a list of 1\.\.100"),
         ([{"name": "x", "items": [{"id": "a", "text": "x"}, {"id": "a", "text": "y"}]}], "item ids must differ"),
         ([{"name": "x", "colour": 1, "items": [{"id": "a", "text": "x"}]}], "unknown key 'colour'"),
         (["godspeed", "godspeed"], "named twice"),
-        ([3], "must be a built-in name or a mapping"),
+        ([3], "must be a registered questionnaire.s name or a mapping"),
         # YAML reads `anchors: [No, Yes]` as booleans
         ([{"name": "x", "anchors": [False, True], "items": [{"id": "a", "text": "x"}]}], r"anchors.*must be text, got False \(put the words"),
     ],
@@ -77,3 +77,26 @@ def test_resolve_keeps_order_and_serialises_for_the_page() -> None:
     assert [q.name for q in qs] == ["godspeed", "nasa_tlx"]
     d = qs[1].to_dict()
     assert d["scales"]["raw"] == ["mental", "physical", "temporal", "performance", "effort", "frustration"] and d["step"] == 5
+
+
+def test_a_plugin_questionnaire_is_a_likert_mapping_or_a_questionnaire_under_its_registered_name() -> None:
+    from fake_plugins import Entry
+
+    from haven_sim.common import plugins
+
+    trust = {"title": "Trust", "points": 5, "items": [{"id": "rely", "text": "I could rely on the robot."}]}
+    reg = plugins.load(
+        "questionnaires",
+        [
+            Entry("trust", "lab.q:TRUST", "lab_q", trust),
+            Entry("tlx_again", "lab.q:TLX", "lab_q", TLX),
+            Entry("broken", "lab.q:BROKEN", "lab_q", {"items": []}),
+            Entry("number", "lab.q:N", "lab_q", 7),
+        ],
+    )
+    assert reg.names() == ["tlx_again", "trust"]
+    assert reg.get("trust").name == "trust" and reg.get("trust").maximum == 5 and reg.get("tlx_again").items == TLX.items
+    assert reg.problems == [
+        "haven.questionnaires broken (lab.q:BROKEN, from lab_q): questionnaire broken: items: must be a list of 1..100 items",
+        "haven.questionnaires number (lab.q:N, from lab_q): is neither a Questionnaire nor a mapping of Likert items (title, points, anchors, items)",
+    ]

@@ -3,32 +3,12 @@ plugin is one line and leaves the others working."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from types import SimpleNamespace
 from typing import Any
 
 import pytest
+from fake_plugins import Entry
 
 from haven_sim.common import plugins
-
-
-@dataclass
-class Entry:
-    """An entry point as importlib.metadata gives it (name, value, dist, load)."""
-
-    name: str
-    value: str
-    package: str
-    loads: Any = None
-
-    @property
-    def dist(self) -> Any:
-        return SimpleNamespace(metadata={"Name": self.package})
-
-    def load(self) -> Any:
-        if isinstance(self.loads, Exception):
-            raise self.loads
-        return self.loads
 
 
 class Model:

@@ -24,7 +24,7 @@ import math
 import random
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Protocol
+from typing import Any, Protocol
 
 from haven_scenarios.study.anticipation import DelayLine, Seen, hesitant, intent_ways, keep_clear, waits_for_me
 from haven_scenarios.study.perception import Percept, ahead_of
@@ -330,6 +330,13 @@ class Yielder(Walker):
         room = self.planner.free_run((me.x, me.y), away, 1.0) - HUMAN_BODY.radius_m - 0.05  # to the wall, body and margin off
         step = min(0.4, max(0.0, 2.0 * room))
         return (away[0] * step, away[1] * step)
+
+
+def accept_plugin(name: str, value: Any) -> Any:
+    """A `haven.participants` plugin (haven_sim/common/plugins.py): a class or factory."""
+    if not callable(value):
+        raise ValueError("is not a participant model: a class or function taking (human_id, stops, planner, speed_mps, seed, params)")
+    return value
 
 
 def make_walker(

@@ -23,6 +23,10 @@ items:
   - {id: surprise, text: "The robot surprised me.", reverse: true}
 ```
 
+A lab's package adds questionnaires any study can name as plugins (entry point group
+`haven.questionnaires`, docs: Your own plugins): a `Questionnaire`, or a Likert mapping as above;
+the two built-ins are registered the same way.
+
 Answers are integers keyed by item id; `score` gives one number per scale, named
 `<questionnaire>_<scale>` (`nasa_tlx_raw`, `nasa_tlx_mental`, ..., `godspeed_likeability`, or the
 custom questionnaire's own name). `ANSWERS_FILE` in a session folder holds, per person, each
@@ -33,9 +37,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Mapping, Sequence
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
 from typing import Any
 
+from haven_sim.common import plugins
 from haven_sim.common.yaml_file import short
 
 ANSWERS_FILE = "questionnaires.json"
@@ -112,7 +117,23 @@ def _godspeed() -> Questionnaire:
     return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales), differential=True)
 
 
-BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (_tlx(), _godspeed())}
+NASA_TLX, GODSPEED = _tlx(), _godspeed()
+BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (NASA_TLX, GODSPEED)}  # ours, registered as plugins in setup.py
+
+
+def accept_plugin(name: str, value: Any) -> Questionnaire:
+    """A `haven.questionnaires` plugin (haven_sim/common/plugins.py): a Questionnaire, or a mapping
+    of Likert items as a study file writes one; it takes the name it is registered under."""
+    if isinstance(value, Questionnaire):
+        return replace(value, name=name)
+    if isinstance(value, Mapping):
+        return likert({**value, "name": name}, f"questionnaire {name}:", registered=False)
+    raise ValueError("is neither a Questionnaire nor a mapping of Likert items (title, points, anchors, items)")
+
+
+def registered() -> dict[str, Questionnaire]:
+    """Every questionnaire a study can name: ours and the plugins' (kind `questionnaires`)."""
+    return {p.name: p.value for p in plugins.registry("questionnaires")}
 
 
 def _text(value: Any, where: str, limit: int = MAX_TEXT) -> str:
@@ -134,16 +155,17 @@ def _at(where: str, key: str) -> str:
     return f"{where} {key}" if where.endswith(":") else f"{where}.{key}"
 
 
-def likert(spec: Mapping[str, Any], where: str) -> Questionnaire:
+def likert(spec: Mapping[str, Any], where: str, registered: bool = True) -> Questionnaire:
     """A study's own Likert questionnaire from its mapping (see the module docstring); ValueError
-    with one line naming `where` (a key path, or a file's label ending in ':') and the key."""
+    with one line naming `where` (a key path, or a file's label ending in ':') and the key.
+    `registered`: its name may not be one a plugin has (a study's own must be told apart)."""
     allowed = {"name", "title", "instructions", "points", "anchors", "items"}
     extra = sorted(map(str, set(spec) - allowed))
     if extra:
         raise ValueError(f"{where.rstrip(':')}: unknown key {extra[0][:40]!r} (keys: {', '.join(sorted(allowed))})")
     name = _name(spec.get("name"), _at(where, "name"))
-    if name in BUILTINS:
-        raise ValueError(f"{_at(where, 'name')}: {name!r} is a built-in questionnaire; name yours otherwise")
+    if registered and name in plugins.registry("questionnaires"):
+        raise ValueError(f"{_at(where, 'name')}: {name!r} is a registered questionnaire (haven plugins); name yours otherwise")
     points = spec.get("points", 7)
     if isinstance(points, bool) or not isinstance(points, int) or not 2 <= points <= 11:
         raise ValueError(f"{_at(where, 'points')}: must be a whole number 2..11, got {repr(points)[:50]}")
@@ -180,13 +202,14 @@ def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
     for k, spec in enumerate(specs):
         at = f"{where}[{k}]"
         if isinstance(spec, str):
-            if spec not in BUILTINS:
-                raise ValueError(f"{at}: unknown questionnaire {spec[:50]!r} (built-ins: {', '.join(BUILTINS)}, or a mapping of Likert items)")
-            out.append(BUILTINS[spec])
+            known = registered()
+            if spec not in known:
+                raise ValueError(f"{at}: unknown questionnaire {spec[:50]!r} (registered: {', '.join(known)}, or a mapping of Likert items)")
+            out.append(known[spec])
         elif isinstance(spec, dict):
             out.append(likert(spec, at))
         else:
-            raise ValueError(f"{at}: must be a built-in name or a mapping of Likert items")
+            raise ValueError(f"{at}: must be a registered questionnaire's name or a mapping of Likert items")
     names = [q.name for q in out]
     if len(set(names)) != len(names):
         raise ValueError(f"{where}: a questionnaire is named twice")

@@ -14,6 +14,7 @@ is not what its kind needs, its name is taken) is left out with one line naming 
 
 from __future__ import annotations
 
+import importlib
 import importlib.metadata
 import re
 from collections.abc import Callable, Iterable, Iterator
@@ -38,11 +39,12 @@ class Plugin:
     value: Any
 
 
-# Each kind and what an item of it must be, checked when it loads: (test, what it should have been).
-Check = Callable[[Any], bool]
-KINDS: dict[str, tuple[Check, str]] = {
-    # haven_scenarios/study/participants.py: make_walker and the `Participant` protocol
-    "participants": (callable, "a participant model: a class or function taking (human_id, stops, planner, speed_mps, seed, params)"),
+# Each kind and the module that says what an item of it must be: its `accept_plugin(name, value)`
+# returns the item to use, or raises ValueError saying in one line why it cannot be one. (Named, not
+# imported: the kinds' modules live in the packages above this one.)
+KINDS: dict[str, str] = {
+    "participants": "haven_scenarios.study.participants",
+    "questionnaires": "haven_scenarios.study.questionnaires",
 }
 
 
@@ -79,7 +81,7 @@ def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registr
     if kind not in KINDS:
         raise PluginError(f"unknown plugin kind {kind!r} (known: {', '.join(KINDS)})")
     reg = Registry(kind)
-    check, wanted = KINDS[kind]
+    accept: Callable[[str, Any], Any] = importlib.import_module(KINDS[kind]).accept_plugin
     ordered = sorted(entries, key=lambda e: (not _package(e).startswith("haven"), _package(e), e.name))
     for entry in ordered:
         package, where = _package(entry), f"{GROUP_PREFIX}{kind} {entry.name} ({entry.value}, from {_package(entry)})"
@@ -94,8 +96,10 @@ def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registr
         except Exception as e:  # noqa: BLE001 - a plugin's import may fail in any way; the others go on
             reg.problems.append(f"{where}: does not load: {type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}".rstrip(": "))
             continue
-        if not check(value):
-            reg.problems.append(f"{where}: is not {wanted}")
+        try:
+            value = accept(entry.name, value)
+        except ValueError as e:
+            reg.problems.append(f"{where}: {str(e).splitlines()[0] if str(e) else 'refused'}")
             continue
         reg.items[entry.name] = Plugin(kind, entry.name, package, entry.value, value)
     return reg

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any, Protocol
 
 from haven_scenarios.record.answers import answered, over, wanted
-from haven_scenarios.study.questionnaires import BUILTINS, likert, resolve
+from haven_scenarios.study.questionnaires import likert, registered, resolve
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.commands.recordings import exit_text
 from haven_scenarios.tools.supervisor import Supervisor
@@ -47,18 +47,18 @@ def add_option(group: argparse._ArgumentGroup) -> None:
         nargs="+",
         default=None,
         metavar="SPEC",
-        help=f"after the trial, each teleoperated participant's page asks these questionnaires in order: built-ins ({', '.join(BUILTINS)}) "
+        help=f"after the trial, each teleoperated participant's page asks these questionnaires in order: registered ones ({', '.join(registered())}) "
         "or YAML files of Likert items; haven run waits for the answers (or the console's Skip questionnaires, or Ctrl-C)",
     )
 
 
 def spec(text: str) -> str | dict[str, Any]:
     """A built-in's name, or the Likert mapping in a YAML file (checked); ValueError in one line naming the file."""
-    if text in BUILTINS:
+    if text in registered():
         return text
     path = Path(text)
     if not path.exists():
-        raise ValueError(f"--questionnaire {text[:80]}: neither a built-in questionnaire ({', '.join(BUILTINS)}) nor a file")
+        raise ValueError(f"--questionnaire {text[:80]}: neither a registered questionnaire ({', '.join(registered())}) nor a file")
     data = read_yaml(path, "questionnaire file")
     if not isinstance(data, dict):
         raise ValueError(f"{file_label(path)}: must be a mapping of one Likert questionnaire (name, points, anchors, items)")
