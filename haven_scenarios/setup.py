@@ -42,6 +42,10 @@ setup(
             "blocker = haven_scenarios.study.participants:Blocker",
             "yielder = haven_scenarios.study.participants:Yielder",
         ],
+        "haven.metrics": [
+            f"{name} = haven_scenarios.record.metrics:{name}"
+            for name in ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people")
+        ],
         "haven.questionnaires": [
             "nasa_tlx = haven_scenarios.study.questionnaires:NASA_TLX",
             "godspeed = haven_scenarios.study.questionnaires:GODSPEED",

@@ -4,6 +4,7 @@ found (each failed with the index-paired, receive-stamped metrics of the first v
 import math
 from dataclasses import replace
 
+import numpy as np
 import pytest
 
 from haven_scenarios.record.metric_table import METRICS, documented, markdown
@@ -300,3 +301,42 @@ def test_a_stream_recorded_only_from_after_trial_start_is_not_complete():
     stamps = [0.02 * i for i in range(115, 950)]  # 2.3 s to 19 s, no gap
     assert _stream("/odom", stamps, (0.0, 19.0)) == ["/odom: recorded only from 2.30 s into the trial"]
     assert _stream("/odom", [0.02 * i for i in range(2, 950)], (0.0, 19.0)) == []  # (0.04 s late: within a step or two)
+
+
+def test_a_metric_plugin_adds_its_columns_and_a_failing_one_says_why_in_its_own(monkeypatch):
+    """Ours are plugins of kind `metrics` like a lab's (record/metrics.py); a lab's columns follow ours."""
+    from fake_plugins import Entry
+
+    from haven_sim.common import plugins
+
+    def seconds_near(d):
+        near = np.zeros(len(d.tl.t), dtype=bool)
+        for xy in d.tl.humans.values():
+            near |= np.hypot(*(xy - d.tl.robot_xy).T) < 2.0
+        return {"seconds_within_2m": round(float(d.tl.dt[near].sum()), 2)}
+
+    seconds_near.columns = [("seconds_within_2m", "s", "time a person was within 2 m of the robot", "a lab")]
+
+    def broken(d):
+        raise RuntimeError("no data\nmore")
+
+    ours = plugins.registry("metrics")
+    lab = plugins.load(
+        "metrics",
+        [
+            *(Entry(p.name, p.target, p.package, p.value) for p in ours),
+            Entry("near", "lab.m:near", "lab_m", seconds_near),
+            Entry("broken", "lab.m:broken", "lab_m", broken),
+            Entry("thief", "lab.m:thief", "lab_m", lambda d: {"duration_s": 0}),
+            Entry("badcols", "lab.m:bad", "lab_m", type("M", (), {"columns": [("x",)], "__call__": lambda self, d: {}})()),
+        ],
+    )
+    assert lab.problems == ["haven.metrics badcols (lab.m:bad, from lab_m): columns: must be (name, unit, definition, source) rows of text"]
+    monkeypatch.setattr(plugins, "registry", lambda kind: lab)
+    before = compute(straight(), "synthetic", "completed")
+    monkeypatch.undo()
+    alone = compute(straight(), "synthetic", "completed")
+    keys = list(before)
+    assert keys[: len(alone) - 3] == list(alone)[: len(alone) - 3]  # ours first, in our order (validity last)
+    assert before["broken_error"] == "RuntimeError: no data" and before["thief_error"] == "would overwrite duration_s"
+    assert before["seconds_within_2m"] >= 0 and before["duration_s"] == alone["duration_s"]

@@ -80,9 +80,17 @@ METRICS: tuple[tuple[str, str, str, str], ...] = (
 )
 
 
+def plugin_rows() -> list[tuple[str, str, str, str]]:
+    """The codebook rows of the installed metric plugins that document their columns (`columns`)."""
+    from haven_sim.common import plugins  # (the registry loads the metrics module, which imports this one)
+
+    return [tuple(c) for p in plugins.registry("metrics") for c in getattr(p.value, "columns", ())]
+
+
 def markdown() -> str:
+    """The codebook: ours, then the installed plugins' documented columns."""
     lines = ["| metric | unit | definition | source |", "|---|---|---|---|"]
-    lines += [f"| `{name}` | {unit} | {definition} | {source} |" for name, unit, definition, source in METRICS]
+    lines += [f"| `{name}` | {unit} | {definition} | {source} |" for name, unit, definition, source in (*METRICS, *plugin_rows())]
     return "\n".join(lines)
 
 

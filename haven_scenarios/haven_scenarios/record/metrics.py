@@ -1,6 +1,7 @@
 """Trial metrics from a `Recording`: the same code for a bag read back and for a batch trial.
 
-Every metric is defined in `metric_table` (name, unit, definition, source). Everything is computed
+Every metric is defined in `metric_table` (name, unit, definition, source). Each group of them is a
+plugin of kind `metrics`, as a lab's own metric is (`TrialData` in, columns out). Everything is computed
 on the trial's own timeline (`timeline.Timeline`): header stamps, one grid, exactly
 [trial_start, trial_end].
 """
@@ -8,8 +9,8 @@ on the trial's own timeline (`timeline.Timeline`): header stamps, one grid, exac
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
-from dataclasses import replace
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -21,6 +22,7 @@ from haven_scenarios.record.outsiders import Declared
 from haven_scenarios.record.timeline import Recording, Timeline
 from haven_scenarios.record.validity import check
 from haven_scenarios.study.participants import HUMAN_PLANNER
+from haven_sim.common import plugins
 from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import FloatArray, wrap_angle
@@ -41,6 +43,36 @@ def _length(xy: FloatArray) -> float:
     return float(np.sum(np.hypot(*np.diff(xy, axis=0).T))) if len(xy) > 1 else 0.0
 
 
+@dataclass(frozen=True)
+class TrialData:
+    """What a metric reads: the trial on one time grid (`tl`, seconds since trial_start), its
+    events (stamps from trial_start too), the recording itself (header stamps), and the world."""
+
+    tl: Timeline
+    events: Sequence[Event]
+    rec: Recording
+    t0: float  # trial_start and trial_end, in the recording's stamps
+    t1: float
+    world: World | None
+
+
+# Ours, in metrics.json's order; each registered as a plugin of kind `metrics` (setup.py), as a
+# lab's own metric is: a function of TrialData giving its columns. Theirs follow in name order.
+OURS = ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people")
+
+
+def accept_plugin(name: str, value: Any) -> Any:
+    """A `haven.metrics` plugin (haven_sim/common/plugins.py): a function of TrialData returning a
+    mapping of column -> value; its `columns` attribute, if any, documents them in the codebook as
+    (name, unit, definition, source) rows."""
+    if not callable(value):
+        raise ValueError("is not a metric: a function taking TrialData and returning {column: value}")
+    columns = getattr(value, "columns", ())
+    if not all(isinstance(c, tuple) and len(c) == 4 and all(isinstance(x, str) for x in c) for c in columns):
+        raise ValueError("columns: must be (name, unit, definition, source) rows of text")
+    return value
+
+
 def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: World | None = None, declared: Declared | None = None) -> dict[str, Any]:
     """`declared`: what a recorded run said of itself, for its validity (record/validity.py)."""
     window = rec.window()
@@ -51,17 +83,61 @@ def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: Wor
     tl = Timeline.of(rec, t0, t1)
     events = sorted((replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp)
     m["duration_s"] = _r(t1 - t0, 2)
-    m.update(_robot(tl, events))
-    m.update(_navigation(tl, events, rec, t0, t1))
-    m.update(_proximity(tl))
-    m.update(_contacts(tl, rec.events, t0, t1))
-    m.update(_mission(tl, events))
-    m.update(_cues(tl))
-    m.update(_passes(tl, events))
-    for hid in tl.humans:
-        m.update(_person(hid, tl, events, world, rec))
+    data = TrialData(tl, events, rec, t0, t1, world)
+    registered = plugins.registry("metrics")
+    for name in (*OURS, *(n for n in registered.names() if n not in OURS)):
+        m.update(_one(name, registered.get(name), data, m))
     m.update(check(rec, window, declared))
     return m
+
+
+def _one(name: str, metric: Any, data: TrialData, have: Mapping[str, Any]) -> dict[str, Any]:
+    """One metric plugin's columns; a plugin that fails, or would overwrite a column, gets a
+    `<name>_error` column saying why (one line) instead: the other metrics stand."""
+    try:
+        got = dict(metric(data))
+    except Exception as e:  # noqa: BLE001 - a lab's metric may fail in any way; the trial's metrics stand
+        return {f"{name}_error": f"{type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}"[:200]}
+    taken = sorted(k for k in got if k in have)
+    if taken:
+        return {f"{name}_error": f"would overwrite {', '.join(taken[:3])}"}
+    return got
+
+
+def robot(d: TrialData) -> dict[str, Any]:
+    return _robot(d.tl, d.events)
+
+
+def navigation(d: TrialData) -> dict[str, Any]:
+    return _navigation(d.tl, d.events, d.rec, d.t0, d.t1)
+
+
+def proximity(d: TrialData) -> dict[str, Any]:
+    return _proximity(d.tl)
+
+
+def contacts(d: TrialData) -> dict[str, Any]:
+    return _contacts(d.tl, d.rec.events, d.t0, d.t1)
+
+
+def mission(d: TrialData) -> dict[str, Any]:
+    return _mission(d.tl, d.events)
+
+
+def cues(d: TrialData) -> dict[str, Any]:
+    return _cues(d.tl)
+
+
+def passes(d: TrialData) -> dict[str, Any]:
+    return _passes(d.tl, d.events)
+
+
+def people(d: TrialData) -> dict[str, Any]:
+    """Every person's own columns (`<h>_...`)."""
+    out: dict[str, Any] = {}
+    for hid in d.tl.humans:
+        out.update(_person(hid, d.tl, d.events, d.world, d.rec))
+    return out
 
 
 def _first(events: Sequence[Event], kind: EventKind, **match: Any) -> float | None:

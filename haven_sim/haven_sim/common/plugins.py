@@ -45,6 +45,7 @@ class Plugin:
 KINDS: dict[str, str] = {
     "participants": "haven_scenarios.study.participants",
     "questionnaires": "haven_scenarios.study.questionnaires",
+    "metrics": "haven_scenarios.record.metrics",
 }
 
 
