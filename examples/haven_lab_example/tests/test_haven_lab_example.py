@@ -1,0 +1,40 @@
+"""The example plugins on their own: each is what its kind needs, and each does what it says."""
+
+from types import SimpleNamespace
+
+from haven_lab_example.near import seconds_near
+from haven_lab_example.people import HURRY, Hurried
+from haven_lab_example.trust import TRUST
+
+from haven_scenarios.record.metrics import accept_plugin as accept_metric
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.participants import Walker
+from haven_scenarios.study.participants import accept_plugin as accept_participant
+from haven_scenarios.study.questionnaires import accept_plugin as accept_questionnaire
+from haven_scenarios.study.scenario import load_scenario
+
+
+def test_each_item_is_what_its_plugin_kind_needs():
+    assert accept_participant("hurried", Hurried) is Hurried
+    assert accept_metric("near", seconds_near) is seconds_near
+    q = accept_questionnaire("trust", TRUST)
+    assert (q.name, q.maximum, [i.reverse for i in q.items]) == ("trust", 7, [False, False, True])
+
+
+def test_a_hurried_person_is_faster_than_a_walker():
+    planner = SimpleNamespace(free_run=lambda *args: 1.0)  # (no walls to mind here)
+    assert Hurried("h1", [], planner, 1.0, 0).speed == HURRY * Walker("h1", [], planner, 1.0, 0).speed
+
+
+def test_the_metric_counts_time_near_the_robot_in_a_real_trial():
+    r = run_trial(load_scenario("hallway"), 0)
+    near = seconds_near_of(r)
+    assert 0.0 < near["seconds_within_2m"] < r.metrics["duration_s"]
+
+
+def seconds_near_of(result):
+    from haven_scenarios.record.metrics import TrialData
+    from haven_scenarios.record.timeline import Timeline
+
+    t0, t1 = result.recording.window()
+    return seconds_near(TrialData(Timeline.of(result.recording, t0, t1), [], result.recording, t0, t1, None))
