@@ -5,7 +5,21 @@ from dataclasses import dataclass
 
 import pytest
 
-from haven_sim.common.params import ParamsError, build, defaults, docs, flatten, group, load_params_file, node_values, param, render_params_file
+from haven_sim.common.params import (
+    FRACTION,
+    POSITIVE,
+    Bounds,
+    ParamsError,
+    build,
+    defaults,
+    docs,
+    flatten,
+    group,
+    load_params_file,
+    node_values,
+    param,
+    render_params_file,
+)
 from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.planning import PlannerConfig
 from haven_sim.sim.simulator import SimulatorConfig
@@ -80,3 +94,12 @@ def test_rendered_file_has_every_parameter_once_and_reads_back(tmp_path):
     f = tmp_path / "p.yaml"
     f.write_text(text)
     assert build(Outer, node_values(load_params_file(f), "outer")) == Outer()
+
+
+def test_bounds_are_declared_with_the_parameter_and_say_what_is_allowed():
+    assert POSITIVE.problem(0.0) == "must be positive" and POSITIVE.problem(1e-9) is None
+    assert FRACTION.problem(1.5) == "must be within 0..1" and FRACTION.problem(1.0) is None
+    assert Bounds(0.0, 360.0, low_open=True).problem(0.0) == "must be within (0, 360]"
+    assert Bounds(high=5.0).problem(6) == "must be at most 5" and POSITIVE.problem(math.nan) == "must be a finite number"
+    with pytest.raises(ParamsError, match=r"^sim: battery_initial_level must be within 0\.\.1, got 2\.0$"):
+        build(SimulatorConfig, {"battery_initial_level": 2.0}, where="sim: ")

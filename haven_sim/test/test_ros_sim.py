@@ -304,6 +304,24 @@ def test_invalid_world_fails_fast_with_one_line(ros, tmp_path):
     assert err == f"error: {bad}: walls: needs at least one wall"
 
 
+def test_declared_bounds_are_the_parameters_ros_ranges_and_out_of_range_is_one_line(ros):
+    """A parameter's bounds are declared once, with it (common/params.py): ROS tools see them as the
+    descriptor's range, and a value outside them is refused in one line before the node runs."""
+    from rclpy.parameter_client import AsyncParameterClient
+
+    proc = ros.start(SIM, {"battery_initial_level": 1.5}, capture=True)
+    assert proc.wait(timeout=30) == 2
+    assert proc.stderr.read().strip() == "error: sim_node: parameter battery_initial_level must be within 0..1"
+    ros.start(SIM)
+    client = AsyncParameterClient(ros.node, "sim_node")
+    assert client.wait_for_services(timeout_sec=30)
+    described = client.describe_parameters(["battery_initial_level", "battery_capacity_m"])
+    assert ros.spin_until(described.done, 30)
+    level, capacity = described.result().descriptors
+    assert [(r.from_value, r.to_value) for r in level.floating_point_range] == [(0.0, 1.0)]
+    assert list(capacity.floating_point_range) == []  # (only positive: no closed range to show)
+
+
 def test_sigint_shuts_the_node_down_cleanly(ros):
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     proc = ros.start(SIM, capture=True)

@@ -14,6 +14,7 @@ import dataclasses
 import difflib
 import math
 from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, TypeVar
 
@@ -30,9 +31,72 @@ class ParamsError(ValueError):
     """A parameter value or a parameter file is invalid; the message is one line for the user."""
 
 
-def param(default: Any, doc: str) -> Any:
-    """A parameter field with its one-line documentation (written into haven.yaml)."""
-    return dataclasses.field(default=default, metadata={"doc": doc})
+@dataclass(frozen=True)
+class Bounds:
+    """A number parameter's allowed values, declared with it (`param(..., bounds=...)`): checked when
+    a config is made (`check_bounds`) and given to ROS as the parameter's range where both ends
+    are set (`ros_range`)."""
+
+    low: float | None = None
+    high: float | None = None
+    low_open: bool = False  # low itself is not allowed
+    high_open: bool = False
+
+    def problem(self, value: float) -> str | None:
+        """None if `value` is allowed, else what it must be ("must be positive", "must be within 0..1")."""
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+            return "must be a finite number"
+        low_ok = self.low is None or (value > self.low if self.low_open else value >= self.low)
+        high_ok = self.high is None or (value < self.high if self.high_open else value <= self.high)
+        return None if low_ok and high_ok else self.rule()
+
+    def rule(self) -> str:
+        """What an allowed value is, in words."""
+        if self.high is None and self.low == 0:
+            return "must be positive" if self.low_open else "must not be negative"
+        if self.high is None:
+            return f"must be {'more than' if self.low_open else 'at least'} {self.low:g}"
+        if self.low is None:
+            return f"must be {'less than' if self.high_open else 'at most'} {self.high:g}"
+        if not self.low_open and not self.high_open:
+            return f"must be within {self.low:g}..{self.high:g}"
+        return f"must be within {'(' if self.low_open else '['}{self.low:g}, {self.high:g}{')' if self.high_open else ']'}"
+
+
+POSITIVE = Bounds(0.0, low_open=True)
+NOT_NEGATIVE = Bounds(0.0)
+FRACTION = Bounds(0.0, 1.0)
+
+
+def param(default: Any, doc: str, bounds: Bounds | None = None) -> Any:
+    """A parameter field with its one-line documentation (written into haven.yaml) and, for a
+    number, the values it may take."""
+    return dataclasses.field(default=default, metadata={"doc": doc, **({"bounds": bounds} if bounds is not None else {})})
+
+
+def check_bounds(config: Any) -> None:
+    """ValueError (one line, naming the field) for a field outside its declared bounds: called by
+    each config's __post_init__, so a config made in code is checked like one from a parameter file."""
+    for f in dataclasses.fields(config):
+        bounds = f.metadata.get("bounds")
+        if bounds is not None:
+            value = getattr(config, f.name)
+            problem = bounds.problem(value)
+            if problem is not None:
+                raise ValueError(f"{f.name} {problem}, got {value!r}")
+
+
+def ros_range(bounds: Bounds | None) -> tuple[float, float] | None:
+    """The (from, to) of the ROS parameter descriptor's range: only where both ends are declared
+    (ROS ranges are closed; an open end is checked by `Bounds.problem`, the range only shows it)."""
+    if bounds is None or bounds.low is None or bounds.high is None:
+        return None
+    return bounds.low, bounds.high
+
+
+def bounds_of(cls: type[Any]) -> dict[str, Bounds]:
+    """Parameter name -> its declared bounds, for the parameters that have some."""
+    return {name: f.metadata["bounds"] for name, f in _leaves(cls) if "bounds" in f.metadata}
 
 
 def group(cls: type[T], prefix: str = "") -> Any:
@@ -133,6 +197,10 @@ def build(cls: type[T], values: Mapping[str, Any], where: str = "", prefix: str 
             kwargs[f.name] = build(f.default_factory, values, where, prefix + f.metadata.get("prefix", ""))  # type: ignore[arg-type]
         elif name in values and _is_param(f):
             kwargs[f.name] = _coerce(name, values[name], f.default, where)
+            bounds = f.metadata.get("bounds")
+            problem = bounds.problem(kwargs[f.name]) if bounds is not None else None
+            if problem is not None:
+                raise ParamsError(f"{where}{name} {problem}, got {kwargs[f.name]!r}")
     try:
         return cls(**kwargs)
     except ParamsError:

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
-from haven_sim.common.params import group, param
+from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import RobotState
 from haven_sim.nav.follower import FollowerParams, PathFollower, Status
 from haven_sim.nav.motion_style import MotionStyle
@@ -24,11 +24,10 @@ from haven_sim.runtime.component import Handler, Message
 class ControllerConfig:
     follower: FollowerParams = group(FollowerParams)
     style: MotionStyle = group(MotionStyle)
-    rate_hz: float = param(20.0, "control rate (sim time)")
+    rate_hz: float = param(20.0, "control rate (sim time)", POSITIVE)
 
     def __post_init__(self) -> None:
-        if not self.rate_hz > 0:
-            raise ValueError(f"rate_hz must be positive, got {self.rate_hz}")
+        check_bounds(self)
 
 
 class ControllerComponent:

@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
-from haven_sim.common.params import param
+from haven_sim.common.params import POSITIVE, check_bounds, param
 from haven_sim.runtime.component import Handler, Message
 
 NAV, TELEOP, ESTOP, IDLE = "nav", "teleop", "estop", "idle"
@@ -31,15 +31,13 @@ NAV, TELEOP, ESTOP, IDLE = "nav", "teleop", "estop", "idle"
 
 @dataclass(frozen=True)
 class MuxConfig:
-    teleop_timeout_s: float = param(0.5, "teleop hands control back this long after its last command")
-    nav_timeout_s: float = param(0.5, "navigation commands older than this are stale")
-    rate_hz: float = param(20.0, "/cmd_vel is re-sent at this rate while a source is active")
-    estop_hold_s: float = param(2.0, "a false on /haven/estop releases the stop only when no true has come for this long")
+    teleop_timeout_s: float = param(0.5, "teleop hands control back this long after its last command", POSITIVE)
+    nav_timeout_s: float = param(0.5, "navigation commands older than this are stale", POSITIVE)
+    rate_hz: float = param(20.0, "/cmd_vel is re-sent at this rate while a source is active", POSITIVE)
+    estop_hold_s: float = param(2.0, "a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE)
 
     def __post_init__(self) -> None:
-        for name, value in vars(self).items():
-            if not value > 0:
-                raise ValueError(f"{name} must be positive, got {value}")
+        check_bounds(self)
 
 
 @dataclass(frozen=True)

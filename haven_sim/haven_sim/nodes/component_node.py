@@ -14,9 +14,10 @@ from collections import deque
 from collections.abc import Callable, Mapping, Sequence
 from typing import Any, TypeVar
 
-from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor, SetParametersResult
 from rclpy.clock import Clock, ClockType, JumpThreshold, TimeJump
 from rclpy.duration import Duration
+from rclpy.exceptions import InvalidParameterValueException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
@@ -26,7 +27,7 @@ from rclpy.subscription import Subscription
 
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventKind, Sequencer, event
-from haven_sim.common.params import build, defaults, docs
+from haven_sim.common.params import ParamsError, bounds_of, build, defaults, docs, ros_range
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import wire
 from haven_sim.nodes.lockstep import LockstepParticipant
@@ -76,10 +77,18 @@ class ComponentNode(Node):
     def declare_config(self, cls: type[C]) -> C:
         """Declare every parameter of a config dataclass and build the config from their values."""
         values: dict[str, Any] = {}
-        described = docs(cls)
+        described, bounded = docs(cls), bounds_of(cls)
         for name, default in defaults(cls).items():
             descriptor = ParameterDescriptor(description=described.get(name, ""), dynamic_typing=True)
-            value = self.declare_parameter(name, default, descriptor).value
+            span = ros_range(bounded.get(name))
+            if span is not None and isinstance(default, float):
+                descriptor.floating_point_range = [FloatingPointRange(from_value=float(span[0]), to_value=float(span[1]), step=0.0)]
+            elif span is not None and isinstance(default, int) and not isinstance(default, bool):
+                descriptor.integer_range = [IntegerRange(from_value=int(span[0]), to_value=int(span[1]), step=0)]
+            try:
+                value = self.declare_parameter(name, default, descriptor).value
+            except InvalidParameterValueException:  # (out of its range: said as build() says it)
+                raise ParamsError(f"{self.get_name()}: parameter {name} {bounded[name].rule()}") from None
             # An empty list in a parameter file (`[]`) reaches the node as "not set".
             values[name] = [] if value is None and isinstance(default, list) else value
         return build(cls, values, where=f"{self.get_name()}: parameter ")

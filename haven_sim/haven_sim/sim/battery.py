@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from enum import Enum
 
-from haven_sim.common.params import param
+from haven_sim.common.params import FRACTION, NOT_NEGATIVE, POSITIVE, check_bounds, param
 
 # Kobuki 4S Li-ion pack: 2.2 Ah, 16.8 V full, 13.2 V empty (kobuki_node's thresholds).
 DESIGN_CAPACITY_AH = 2.2
@@ -21,22 +21,16 @@ VOLTAGE_EMPTY_V = 13.2
 
 @dataclass(frozen=True)
 class BatteryParams:
-    capacity_m: float = param(100.0, "metres of travel on a full charge")
-    drain_per_rad: float = param(0.0, "fraction of full per radian turned")
-    idle_drain_per_s: float = param(0.0, "fraction of full per second, always")
-    charge_rate_per_s: float = param(0.05, "fraction of full per second on the base (20 s from empty)")
-    charge_max_speed_mps: float = param(0.02, "the robot charges only while (nearly) stopped on the base")
-    initial_level: float = param(1.0, "level at start, 0..1")
+    capacity_m: float = param(100.0, "metres of travel on a full charge", POSITIVE)
+    drain_per_rad: float = param(0.0, "fraction of full per radian turned", NOT_NEGATIVE)
+    idle_drain_per_s: float = param(0.0, "fraction of full per second, always", NOT_NEGATIVE)
+    charge_rate_per_s: float = param(0.05, "fraction of full per second on the base (20 s from empty)", NOT_NEGATIVE)
+    charge_max_speed_mps: float = param(0.02, "the robot charges only while (nearly) stopped on the base", NOT_NEGATIVE)
+    initial_level: float = param(1.0, "level at start, 0..1", FRACTION)
     base_radius_m: float = field(default=0.5, metadata={"internal": True})  # from the world's charging base
 
     def __post_init__(self) -> None:
-        if not self.capacity_m > 0:
-            raise ValueError(f"battery_capacity_m must be positive, got {self.capacity_m}")
-        if not 0.0 <= self.initial_level <= 1.0:
-            raise ValueError(f"battery_initial_level must be within 0..1, got {self.initial_level}")
-        for name in ("drain_per_rad", "idle_drain_per_s", "charge_rate_per_s", "charge_max_speed_mps"):
-            if getattr(self, name) < 0:
-                raise ValueError(f"battery_{name} must not be negative, got {getattr(self, name)}")
+        check_bounds(self)
 
 
 class PowerStatus(Enum):
