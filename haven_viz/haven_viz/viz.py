@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
-from haven_sim.common.params import group, param
+from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import HumanPoses, RobotState
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
@@ -33,13 +33,12 @@ class VizConfig:
     toggles: Toggles = group(Toggles)
     cues: CueParams = group(CueParams)
     world: str = param("", "world file for the world markers (haven sim passes its world)")
-    rate_hz: float = param(10.0, "cue update rate (sim time)")
-    refresh_period_s: float = param(2.0, "everything is re-sent this often (late viewers, bag replay from the middle)")
+    rate_hz: float = param(10.0, "cue update rate (sim time)", POSITIVE)
+    refresh_period_s: float = param(2.0, "everything is re-sent this often (late viewers, bag replay from the middle)", POSITIVE)
     map_frame: str = param("map", "frame of the markers")
 
     def __post_init__(self) -> None:
-        if not (self.rate_hz > 0 and self.refresh_period_s > 0):
-            raise ValueError(f"rate_hz and refresh_period_s must be positive, got {self.rate_hz} and {self.refresh_period_s}")
+        check_bounds(self)
 
 
 class VizComponent:

@@ -17,7 +17,7 @@ from dataclasses import dataclass, replace
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
-from haven_sim.common.params import group, param
+from haven_sim.common.params import POSITIVE, Bounds, check_bounds, group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.nav.lanes import Lane
 from haven_sim.nav.motion_style import MotionStyle
@@ -46,18 +46,17 @@ class PlannerConfig:
     shape: ShapeParams = group(ShapeParams)
     style: MotionStyle = group(MotionStyle)
     navigator: NavigatorParams = group(NavigatorParams)
-    check_rate_hz: float = param(5.0, "how often the path is checked for people (sim time)")
+    check_rate_hz: float = param(5.0, "how often the path is checked for people (sim time)", POSITIVE)
     goal_interval_s: float = param(
-        0.1, "goals closer together than this (sim time) are coalesced: the newest is planned once it has passed (a goal storm: one plan each)"
+        0.1,
+        "goals closer together than this (sim time) are coalesced: the newest is planned once it has passed (a goal storm: one plan each)",
+        Bounds(0.0, 10.0),
     )
     map_frame: str = param("map", "frame of /plan and of accepted goals")
     world: str = param("", "world file whose hallway centre lines the robot keeps to ('': plan on /map alone; haven run passes its world)")
 
     def __post_init__(self) -> None:
-        if not self.check_rate_hz > 0:
-            raise ValueError(f"check_rate_hz must be positive, got {self.check_rate_hz}")
-        if not 0 <= self.goal_interval_s <= 10:
-            raise ValueError(f"goal_interval_s must be 0..10 s, got {self.goal_interval_s}")
+        check_bounds(self)
 
 
 def world_lanes(world: World) -> tuple[Lane, ...]:

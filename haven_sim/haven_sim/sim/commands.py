@@ -10,23 +10,23 @@ from dataclasses import dataclass, field
 from enum import Enum
 
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
-from haven_sim.common.params import param
+from haven_sim.common.params import POSITIVE, check_bounds, param
 
 
 @dataclass(frozen=True)
 class VelocityLimits:
     """Speed and acceleration limits; defaults are a TurtleBot2 (Kobuki)."""
 
-    max_linear_speed_mps: float = param(0.7, "TurtleBot2 (Kobuki) top speed")
-    max_angular_speed_rps: float = param(math.pi, "TurtleBot2 top turn rate")
-    max_linear_accel_mps2: float = param(0.5, "TurtleBot2 acceleration limit")
-    max_angular_accel_rps2: float = param(3.5, "TurtleBot2 angular acceleration limit")
+    max_linear_speed_mps: float = param(0.7, "TurtleBot2 (Kobuki) top speed", POSITIVE)
+    max_angular_speed_rps: float = param(math.pi, "TurtleBot2 top turn rate", POSITIVE)
+    max_linear_accel_mps2: float = param(0.5, "TurtleBot2 acceleration limit", POSITIVE)
+    max_angular_accel_rps2: float = param(3.5, "TurtleBot2 angular acceleration limit", POSITIVE)
     max_lateral_speed_mps: float = field(default=0.0, metadata={"internal": True})  # differential drive
 
     def __post_init__(self) -> None:
-        for name, value in vars(self).items():
-            if value < 0 or (value == 0 and name != "max_lateral_speed_mps"):
-                raise ValueError(f"{name} must be positive, got {value}")
+        check_bounds(self)
+        if self.max_lateral_speed_mps < 0:
+            raise ValueError(f"max_lateral_speed_mps must not be negative, got {self.max_lateral_speed_mps}")
 
     @staticmethod
     def human(max_speed_mps: float = 1.5) -> VelocityLimits:

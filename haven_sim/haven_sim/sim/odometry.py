@@ -13,17 +13,16 @@ from dataclasses import dataclass
 import numpy as np
 
 from haven_sim.common.geometry import Pose2D, wrap_angle
-from haven_sim.common.params import param
+from haven_sim.common.params import NOT_NEGATIVE, check_bounds, param
 
 
 @dataclass(frozen=True)
 class OdometryNoise:
-    linear: float = param(0.0, "relative std of each step's distance (wheel slip)")
-    angular: float = param(0.0, "relative std of each step's rotation")
+    linear: float = param(0.0, "relative std of each step's distance (wheel slip)", NOT_NEGATIVE)
+    angular: float = param(0.0, "relative std of each step's rotation", NOT_NEGATIVE)
 
     def __post_init__(self) -> None:
-        if self.linear < 0 or self.angular < 0:
-            raise ValueError("odom_noise_linear and odom_noise_angular must not be negative")
+        check_bounds(self)
 
 
 class Odometry:

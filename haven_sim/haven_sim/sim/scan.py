@@ -14,22 +14,21 @@ import numpy as np
 import numpy.typing as npt
 
 from haven_sim.common.geometry import FloatArray, Pose2D
-from haven_sim.common.params import param
+from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, check_bounds, param
 
 
 @dataclass(frozen=True)
 class ScanParams:
-    beams: int = param(360, "beams over 360 degrees")
-    range_min_m: float = param(0.12, "nearer returns read -inf (REP-117)")
-    range_max_m: float = param(3.5, "no return within this reads +inf")
-    rate_hz: float = param(10.0, "/scan rate (sim time)")
-    noise_std_m: float = param(0.0, "Gaussian range noise")
+    beams: int = param(360, "beams over 360 degrees", Bounds(1))
+    range_min_m: float = param(0.12, "nearer returns read -inf (REP-117)", NOT_NEGATIVE)
+    range_max_m: float = param(3.5, "no return within this reads +inf", POSITIVE)
+    rate_hz: float = param(10.0, "/scan rate (sim time)", POSITIVE)
+    noise_std_m: float = param(0.0, "Gaussian range noise", NOT_NEGATIVE)
 
     def __post_init__(self) -> None:
-        if self.beams < 1 or not 0 <= self.range_min_m < self.range_max_m:
-            raise ValueError("scan needs scan_beams >= 1 and 0 <= scan_range_min_m < scan_range_max_m")
-        if not self.rate_hz > 0 or self.noise_std_m < 0:
-            raise ValueError("scan_rate_hz must be positive and scan_noise_std_m not negative")
+        check_bounds(self)
+        if not self.range_min_m < self.range_max_m:
+            raise ValueError(f"scan_range_min_m must be less than scan_range_max_m, got {self.range_min_m} and {self.range_max_m}")
 
     @property
     def angle_min(self) -> float:
