@@ -30,7 +30,7 @@ from typing import Any
 from haven_scenarios.run.grid import TrialSpec, parse_grid, plan_sweep
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.sweep import run_rows
-from haven_scenarios.run.trial import TrialResult, parse_condition, run_trial
+from haven_scenarios.run.trial import TrialResult, check_seed, parse_condition, run_trial
 from haven_scenarios.study.progress import TrialProgress, progress
 from haven_scenarios.study.protocol import load_study
 from haven_scenarios.study.scenario import load_scenario
@@ -59,12 +59,18 @@ __all__ = [
 
 
 def batch_trial(
-    scenario: str = "hallway", seed: int = 0, condition: Sequence[str] | None = None, world: str | None = None, params_file: str | None = None
+    scenario: str = "hallway", seed: int = 0, condition: str | Sequence[str] | None = None, world: str | None = None, params_file: str | None = None
 ) -> TrialResult:
     """One trial without ROS, in this process (the components the nodes run, at their rates):
     `scenario` a shipped name or a YAML; `condition` the cues shown (None: the scenario's)."""
+    checked = check_seed(seed)
     s = load_scenario(scenario, world)
-    return run_trial(s, seed, parse_condition(list(condition or s.condition)), load_suite_config(params_file, TRIAL_SETS))
+    return run_trial(s, checked, parse_condition(list(_names(condition) or s.condition)), load_suite_config(params_file, TRIAL_SETS))
+
+
+def _names(value: str | Iterable[str] | None) -> tuple[str, ...] | None:
+    """One name or several: "turn_signals" is one cue, not twelve letters."""
+    return None if value is None else (value,) if isinstance(value, str) else tuple(value)
 
 
 def recorded_trial(
@@ -80,28 +86,30 @@ def recorded_trial(
     blocks until its session is complete. `options` are TrialRequest's fields (participant,
     condition, seed, world, params_file, teleop, rtf, free_running, without, allow, web,
     questionnaires). `quiet`: no progress lines."""
-    unknown = sorted(set(options) - set(TrialRequest.__dataclass_fields__))
+    known = [f for f in TrialRequest.__dataclass_fields__ if f not in ("scenario", "extra")]
+    unknown = sorted(set(options) - set(known))
     if unknown:
-        raise TrialError(f"recorded_trial: unknown option {unknown[0]!r} (options: {', '.join(TrialRequest.__dataclass_fields__)})")
+        raise TrialError(f"recorded_trial: unknown option {unknown[0]!r} (options: {', '.join(known)})")
     for key in ("condition", "teleop", "without", "allow", "questionnaires"):
-        if options.get(key) is not None and not isinstance(options[key], str):
-            options[key] = tuple(options[key])
+        if key in options:
+            options[key] = _names(options[key])
     plan = plan_trial(TrialRequest(scenario, **options))
     return record_trial(plan, Path(sessions), RosOptions(domain_id, network), say=(lambda _: None) if quiet else print)
 
 
 def sweep(
-    scenarios: Sequence[str],
+    scenarios: str | Sequence[str],
     seeds: Iterable[int] = range(10),
-    grid: Mapping[str, Sequence[Any]] | None = None,
+    grid: Mapping[str, Any] | None = None,
     workers: int = 1,
     cluster: str | None = None,
     params_file: str | None = None,
 ) -> list[dict[str, Any]]:
     """Batch trials over scenarios x the grid's axes (condition, model, speed_mps, a participant
     parameter) x seeds, as `haven batch` runs them; one row per trial, in trial order."""
-    axes = parse_grid([f"{k}={','.join(str(v) for v in values)}" for k, values in (grid or {}).items()])
-    specs: list[TrialSpec] = plan_sweep([load_scenario(s) for s in dict.fromkeys(scenarios)], axes, tuple(seeds))
+    axes = parse_grid([f"{k}={','.join(str(v) for v in _names(values) or ())}" for k, values in (grid or {}).items()])
+    checked = tuple(check_seed(s, "seeds") for s in seeds)
+    specs: list[TrialSpec] = plan_sweep([load_scenario(s) for s in dict.fromkeys(_names(scenarios) or ())], axes, checked)
     rows = list(run_rows(specs, load_suite_config(params_file, TRIAL_SETS), workers, cluster))
     return sorted(rows, key=lambda r: r["trial"])
 

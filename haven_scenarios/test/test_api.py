@@ -55,8 +55,9 @@ def test_a_pilot_study_through_the_api(tmp_path):
 @pytest.mark.parametrize(
     ("options", "said"),
     [
-        ({"seed": -1}, "--seed: must be an integer 0.."),
-        ({"rtf": 0}, "--rtf: must be a positive number, got 0"),
+        ({"seed": -1}, "seed: must be an integer 0.."),
+        ({"seed": "3"}, "seed: must be an integer 0..2147483647, got '3'"),
+        ({"rtf": 0}, "rtf: must be a positive number, got 0"),
         ({"condition": ["sparkles"]}, "unknown cue 'sparkles'"),
         ({"allow": ["/odom"]}, "--allow /odom: the simulator's and the metrics' topics take no outside publisher"),
         ({"without": ["sim"]}, "--without: 'sim' is not one of our nodes that can be left out (mux, planner, controller, viz)"),
@@ -71,3 +72,17 @@ def test_bad_input_to_a_recorded_trial_is_one_line_and_starts_nothing(tmp_path, 
         api.recorded_trial("hallway", sessions=tmp_path / "s", **options)
     assert said in str(e.value) and "\n" not in str(e.value)
     assert not (tmp_path / "s").exists()
+
+
+def test_seeds_and_conditions_as_a_script_writes_them():
+    """numpy integers are seeds; a single cue may be a string; anything else is one line."""
+    import numpy as np
+
+    assert api.batch_trial("hallway", seed=np.int64(1), condition="turn_signals").condition == "turn_signals"
+    rows = api.sweep("hallway", seeds=np.arange(2), grid={"condition": "none"})
+    assert [(r["seed"], r["condition"]) for r in rows] == [(0, "none"), (1, "none")]
+    for bad in (True, 1.5, "x", -1):
+        with pytest.raises(ValueError, match=r"^seed: must be an integer 0\.\.2147483647, got "):
+            api.batch_trial("hallway", seed=bad)
+    with pytest.raises(ValueError, match=r"^seeds: must be an integer"):
+        api.sweep(["hallway"], seeds=[0, -2])

@@ -11,6 +11,7 @@ from haven_scenarios.run.batch import journal_path, run_batch
 from haven_scenarios.run.grid import TASK_KEYS, param_keys, parse_grid, parse_seeds, plan_sweep
 from haven_scenarios.study.scenario import HumanTask, load_scenario
 from haven_scenarios.tools.cli import main
+from haven_sim.common import plugins
 
 pytestmark = pytest.mark.integration
 
@@ -27,7 +28,7 @@ def test_grid_axes_and_seeds_parse_in_the_order_given():
     "grid, says",
     [
         (["mood=happy"], "--grid: unknown key 'mood' (valid: " + ", ".join((*TASK_KEYS, *param_keys())) + ")"),
-        (["model=teleop"], "--grid model: 'teleop' is not a simulated participant model (blocker, walker, yielder)"),
+        (["model=teleop"], f"--grid model: 'teleop' is not a simulated participant model ({', '.join(plugins.registry('participants').names())})"),
         (["speed_mps=fast"], "--grid speed_mps: expected numbers, got 'fast'"),
         (["speed_mps=9"], "--grid speed_mps: must be within (0, 3] m/s, got 9"),
         (["condition=lasers"], "unknown cue 'lasers'"),

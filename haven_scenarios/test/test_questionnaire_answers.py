@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from haven_scenarios.record.answers import AnswerBook, answered, from_parameter, over, wanted
-from haven_scenarios.study.questionnaires import ANSWERS_FILE, BUILTINS, likert, score
+from haven_scenarios.study.questionnaires import ANSWERS_FILE, BUILTINS, likert, registered, score
 from haven_scenarios.tools.cli import main
 from haven_scenarios.tools.commands.after_trial import as_parameter
 from haven_scenarios.web.access import ANSWERS, CONSOLE, SKIP_QUESTIONNAIRES, roles
@@ -153,7 +153,7 @@ def test_questionnaire_usage_errors_are_one_line(tmp_path, capsys):
     assert run_errors(capsys, "--web", "--questionnaire", "nasa_tlx")[0].endswith("needs --web and teleoperated humans (--teleop)")
     web = ["--web", "--teleop", "h1", "--port", "0", "--sessions", str(tmp_path / "s")]
     assert run_errors(capsys, *web, "--questionnaire", "sus") == [
-        "haven: error: --questionnaire sus: neither a registered questionnaire (godspeed, nasa_tlx) nor a file"
+        f"haven: error: --questionnaire sus: neither a registered questionnaire ({', '.join(registered())}) nor a file"
     ]
     bad = tmp_path / "bad.yaml"
     bad.write_text("name: legibility\npoints: 12\nitems: [{id: a, text: A}]\n")

@@ -121,13 +121,19 @@ def screenshot(name, png):
 
 
 def bubble_pixels(png, centre, half=40):
-    """Near-white (the bubble's label) and near-black (its text) pixels around a screen point."""
+    """Near-white pixels (the bubble's label) around a screen point, and dark ones (its text) within
+    the label's extent: the label is white at 0.9 over the scene (the sky is ~229), its text dark,
+    and a small or distant label's text is anti-aliased to greys, so dark is below half-grey."""
     from PIL import Image
 
     img = Image.open(BytesIO(png)).convert("L")
     x, y = int(centre["x"]), int(centre["y"])
-    hist = img.crop((max(0, x - half), max(0, y - half), x + half, y + half)).histogram()
-    return sum(hist[243:]), sum(hist[:50])  # the label: white at 0.9 over the scene; the sky is ~229
+    crop = img.crop((max(0, x - half), max(0, y - half), x + half, y + half))
+    white = crop.point(lambda v: 255 if v >= 243 else 0)
+    box = white.getbbox()
+    if box is None:
+        return 0, 0
+    return sum(crop.histogram()[243:]), sum(crop.crop(box).histogram()[:128])
 
 
 def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(ros, browser, tmp_path):

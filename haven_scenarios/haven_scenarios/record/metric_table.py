@@ -96,7 +96,7 @@ def markdown() -> str:
 
 def documented(key: str, humans: list[str]) -> bool:
     """Whether a metrics.json key is in the table (per-person keys by their pattern)."""
-    names = {m[0] for m in METRICS}
+    names = {m[0] for m in (*METRICS, *plugin_rows())}
     if key in names:
         return True
     for h in humans:

@@ -10,6 +10,7 @@ their stamps), so the metrics come out of the same code for both modes.
 from __future__ import annotations
 
 import math
+import operator
 from collections.abc import Sequence
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
@@ -31,6 +32,17 @@ from haven_viz.viz import VizComponent
 
 SEED_MAX = 2**31 - 1  # a trial's seed: 0..this (a ROS integer parameter of the nodes, numpy's seed)
 GRACE_S = 60.0  # the loop stops this long after the scenario's timeout even if nothing ended it
+
+
+def check_seed(value: Any, where: str = "seed") -> int:
+    """A trial's seed as an int (a numpy integer too); ValueError in one line for anything else."""
+    try:
+        seed = operator.index(value) if not isinstance(value, bool) else None
+    except TypeError:
+        seed = None
+    if seed is None or not 0 <= seed <= SEED_MAX:
+        raise ValueError(f"{where}: must be an integer 0..{SEED_MAX}, got {repr(value)[:40]}")
+    return seed
 
 
 def parse_condition(names: Sequence[str]) -> Toggles:

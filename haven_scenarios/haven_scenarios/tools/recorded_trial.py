@@ -38,7 +38,7 @@ from haven_scenarios.record.session import (
     write_json,
 )
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
-from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
+from haven_scenarios.run.trial import check_seed, condition_name, parse_condition
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import TELEOP, ScenarioError, load_scenario
 from haven_scenarios.tools.commands import after_trial
@@ -147,10 +147,9 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
     one line naming what is wrong."""
     r = request
     try:
-        if isinstance(r.seed, bool) or not isinstance(r.seed, int) or not 0 <= r.seed <= SEED_MAX:
-            raise ValueError(f"--seed: must be an integer 0..{SEED_MAX}, got {str(r.seed)[:40]}")
+        seed = check_seed(r.seed)
         if r.rtf is not None and not (isinstance(r.rtf, (int, float)) and math.isfinite(r.rtf) and r.rtf > 0):
-            raise ValueError(f"--rtf: must be a positive number, got {str(r.rtf)[:40]}")
+            raise ValueError(f"rtf: must be a positive number, got {repr(r.rtf)[:40]}")
         unknown = [n for n in r.without if n not in nodes.REPLACEABLE]
         if unknown:
             raise ValueError(f"--without: {unknown[0]!r} is not one of our nodes that can be left out ({', '.join(nodes.REPLACEABLE)})")
@@ -181,7 +180,7 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
     except (ScenarioError, ParamsError, ValueError) as e:
         raise TrialError(str(e)) from None
     extra = {**r.extra, **({"questionnaires": after_trial.names(questionnaires)} if questionnaires else {})}
-    return SessionPlan(scenario, toggles, r.seed, participant, base, r.rtf, r.free_running, extra, web, tuple(r.without), tuple(r.allow))
+    return SessionPlan(scenario, toggles, seed, participant, base, r.rtf, r.free_running, extra, web, tuple(r.without), tuple(r.allow))
 
 
 def record_trial(plan: SessionPlan, sessions: Path, ros: RosOptions = RosOptions(), say: Say = say_now) -> RecordedTrial:

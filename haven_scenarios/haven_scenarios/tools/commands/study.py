@@ -160,7 +160,7 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
     done = progress(root, schedule(study))
     results = [r for r in (trial_results(t) for t in done) if r is not None]
     if not results:
-        raise ValueError(f"no finished trials of study {study.name} in {root} (see `haven study status`)")
+        raise ValueError(f"no finished trials of study {study.name} in {root} (see `haven study status {study.name} --dir {root}`)")
     out = out if out is not None else root / "report"
     try:
         write_table(out / "study_long.csv", long_rows(results), LONG)

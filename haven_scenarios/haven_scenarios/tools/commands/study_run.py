@@ -189,7 +189,8 @@ def _run_trials(args: StudyRun, study: Study, root: Path, trials: list[PlannedTr
         code = _one(args, study, p, len(trials), root, questionnaires, person)
         if code:
             return code
-    print(f"haven study: participant {args.participant}: all {len(trials)} trials done (`haven study report {args.study}` for the tables)")
+    where = f" --dir {args.dir}" if args.dir is not None else ""
+    print(f"haven study: participant {args.participant}: all {len(trials)} trials done (`haven study report {args.study}{where}` for the tables)")
     return 0
 
 
