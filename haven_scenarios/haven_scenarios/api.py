@@ -123,8 +123,16 @@ def study_plan(study: str, participant: str | None = None) -> list[PlannedTrial]
 
 def run_participant(study: str, participant: str, **options: Any) -> int:
     """Run the participant's trials not done yet, in order (StudyRun's fields as options: batch,
-    web, teleop, dir, params_file, domain_id, ...); 0 when all are done (`haven study run`'s exit
-    codes otherwise)."""
+    web, teleop, dir, params_file, domain_id, ...); 0 when all are done, 1 when a trial did not
+    finish (the same call runs it again), 130 when stopped. TrialError (one line) when refused."""
+    known = [f for f in StudyRun.__dataclass_fields__ if f not in ("study", "participant")]
+    unknown = sorted(set(options) - set(known))
+    if unknown:
+        raise TrialError(f"run_participant: unknown option {unknown[0]!r} (options: {', '.join(known)})")
+    if "teleop" in options:
+        options["teleop"] = _names(options["teleop"])
+    if options.get("dir") is not None:
+        options["dir"] = Path(options["dir"])
     return _run_participant(StudyRun(study, participant, **options))
 
 

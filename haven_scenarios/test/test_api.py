@@ -50,6 +50,13 @@ def test_a_pilot_study_through_the_api(tmp_path):
     assert report.trials_done == 6 and (report.folder / "study_long.csv").exists() and not report.study_changed
     with pytest.raises(ValueError, match="^no finished trials of study pilot in "):
         api.study_report(str(study), dir=tmp_path / "empty")
+    for options, said in (
+        ({"participant": "p99"}, "--participant: 'p99' is not a participant of study pilot"),
+        ({"participant": "p01", "batch": True, "web": True}, "--batch runs simulated participants in this process: not with --web"),
+        ({"participant": "p01", "bach": True}, "run_participant: unknown option 'bach'"),
+    ):
+        with pytest.raises(api.TrialError, match=said):
+            api.run_participant(str(study), dir=tmp_path / "study", **options)
 
 
 @pytest.mark.parametrize(

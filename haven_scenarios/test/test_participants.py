@@ -1,6 +1,10 @@
 """Simulated participants on the simulator core: each model does what its docstring says."""
 
 import math
+from pathlib import Path
+
+import pytest
+import yaml
 
 from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, make_walker, shuffled_nearest
 from haven_scenarios.study.perception import Sight, perceive
@@ -108,3 +112,31 @@ def test_our_participant_models_are_plugins_listed_by_haven_plugins(capsys):
     listed = capsys.readouterr().out.splitlines()
     assert {"participants walker haven_scenarios", "participants blocker haven_scenarios", "participants yielder haven_scenarios"} <= set(listed)
     assert all(len(line.split()) == 3 for line in listed)
+
+
+def test_a_model_whose_plugin_is_broken_is_named_as_such_not_as_unknown(monkeypatch):
+    """A lab installed `shy` but it does not import: the scenario's error says so, and why."""
+    from fake_plugins import Entry
+
+    from haven_scenarios.run.grid import parse_grid
+    from haven_scenarios.study.scenario import ScenarioError
+    from haven_sim.common import plugins
+
+    ours = [Entry(p.name, p.target, p.package, p.value) for p in plugins.registry("participants") if p.package == "haven_scenarios"]
+    reg = plugins.load("participants", [*ours, Entry("shy", "lab.people:Shy", "lab_people", ImportError("No module named 'lab'"))])
+    real = plugins.registry
+    monkeypatch.setattr(plugins, "registry", lambda kind: reg if kind == "participants" else real(kind))
+    said = "participant model 'shy' is installed but left out: does not load: ImportError: No module named 'lab'"
+    with pytest.raises(ValueError, match=f"--grid model: {said}"):
+        parse_grid(["model=shy"])
+    from importlib import resources
+
+    from haven_scenarios.study.scenario import parse_scenario
+
+    data = yaml.safe_load((Path(str(resources.files("haven_scenarios") / "scenarios" / "hallway.yaml"))).read_text())
+    data["humans"][0]["model"] = "shy"
+    with pytest.raises(ScenarioError, match=said):
+        parse_scenario(data, "lab.yaml")
+    data["humans"][0]["model"] = ["shy"]
+    with pytest.raises(ScenarioError, match="model: must be one of"):
+        parse_scenario(data, "lab.yaml")

@@ -49,8 +49,11 @@ def _value(key: str, text: str) -> Any:
         except ValueError as e:
             raise ValueError(f"--grid condition: {e}") from None
     if key == "model":
-        if text not in plugins.registry("participants"):
-            raise ValueError(f"--grid model: {text!r} is not a simulated participant model ({', '.join(plugins.registry('participants').names())})")
+        models = plugins.registry("participants")
+        if text in models.left_out:
+            raise ValueError(f"--grid model: {models.unknown(text)}")
+        if text not in models:
+            raise ValueError(f"--grid model: {text!r} is not a simulated participant model ({', '.join(models.names())})")
         return text
     value = _number(key, text)
     if key == "speed_mps" and not 0 < value <= MAX_WALKING_SPEED_MPS:

@@ -203,6 +203,8 @@ def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
         at = f"{where}[{k}]"
         if isinstance(spec, str):
             known = registered()
+            if spec in plugins.registry("questionnaires").left_out:
+                raise ValueError(f"{at}: {plugins.registry('questionnaires').unknown(spec)}")
             if spec not in known:
                 raise ValueError(f"{at}: unknown questionnaire {spec[:50]!r} (registered: {', '.join(known)}, or a mapping of Likert items)")
             out.append(known[spec])

@@ -290,7 +290,10 @@ class _ScenarioParser:
             if speed > MAX_WALKING_SPEED_MPS:
                 raise self.fail(f"{key}.speed_mps", f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {speed:g}")
             route = self.names(m.get("route"), f"{key}.route", rooms, "room")
-            model = self.choice(m.get("model", "walker"), f"{key}.model", (*plugins.registry("participants").names(), TELEOP))
+            models = plugins.registry("participants")
+            if isinstance(m.get("model"), str) and m["model"] in models.left_out:
+                raise self.fail(f"{key}.model", models.unknown(m["model"]))
+            model = self.choice(m.get("model", "walker"), f"{key}.model", (*models.names(), TELEOP))
             out.append(HumanTask(m["id"], model, route, speed, self.person(m.get("params"), f"{key}.params")))
         return tuple(out)
 

@@ -54,6 +54,7 @@ class Registry:
     kind: str
     items: dict[str, Plugin] = field(default_factory=dict)
     problems: list[str] = field(default_factory=list)  # one line per plugin left out
+    left_out: dict[str, str] = field(default_factory=dict)  # a left-out plugin's name -> its problem
 
     def names(self) -> list[str]:
         return sorted(self.items)
@@ -68,12 +69,21 @@ class Registry:
         """The item registered as `name`; PluginError naming the known ones otherwise."""
         found = self.items.get(name)
         if found is None:
-            raise PluginError(f"unknown {singular(self.kind)} {name!r} (known: {', '.join(self.names()) or 'none'})")
+            raise PluginError(self.unknown(name))
         return found.value
+
+    def unknown(self, name: str) -> str:
+        """Why `name` is not an item: a plugin of that name left out (and why), or the known names."""
+        if name in self.left_out:
+            return f"{singular(self.kind)} {name!r} is installed but left out: {self.left_out[name]}"
+        return f"unknown {singular(self.kind)} {name!r} (known: {', '.join(self.names()) or 'none'})"
 
 
 def singular(kind: str) -> str:
     return {"participants": "participant model", "missions": "mission behaviour"}.get(kind, kind.rstrip("s"))
+
+
+OURS = frozenset({"haven-sim", "haven-viz", "haven-scenarios"})  # HAVEN's packages (normalised names): their items come first
 
 
 def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registry:
@@ -83,27 +93,40 @@ def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registr
         raise PluginError(f"unknown plugin kind {kind!r} (known: {', '.join(KINDS)})")
     reg = Registry(kind)
     accept: Callable[[str, Any], Any] = importlib.import_module(KINDS[kind]).accept_plugin
-    ordered = sorted(entries, key=lambda e: (not _package(e).startswith("haven"), _package(e), e.name))
+    ordered = sorted(entries, key=lambda e: (_normal(_package(e)) not in OURS, _package(e), e.name))
     for entry in ordered:
-        package, where = _package(entry), f"{GROUP_PREFIX}{kind} {entry.name} ({entry.value}, from {_package(entry)})"
-        if not NAME.match(entry.name):
-            reg.problems.append(f"{where}: a name must be lower-case letters, digits and _ (at most 40), starting with a letter")
-            continue
-        if entry.name in reg.items:
-            reg.problems.append(f"{where}: the name is taken by {reg.items[entry.name].package}")
-            continue
-        try:
-            value = entry.load()
-        except Exception as e:  # noqa: BLE001 - a plugin's import may fail in any way; the others go on
-            reg.problems.append(f"{where}: does not load: {type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}".rstrip(": "))
-            continue
-        try:
-            value = accept(entry.name, value)
-        except ValueError as e:
-            reg.problems.append(f"{where}: {str(e).splitlines()[0] if str(e) else 'refused'}")
-            continue
-        reg.items[entry.name] = Plugin(kind, entry.name, package, entry.value, value)
+        taken = _take(entry, reg, accept)
+        if isinstance(taken, Plugin):
+            reg.items[entry.name] = taken
+        else:
+            reg.problems.append(f"{GROUP_PREFIX}{kind} {entry.name} ({entry.value}, from {_package(entry)}): {taken}")
+            reg.left_out.setdefault(entry.name, taken)
     return reg
+
+
+def _take(entry: importlib.metadata.EntryPoint, reg: Registry, accept: Callable[[str, Any], Any]) -> Plugin | str:
+    """The entry as a registry item, or why not (one line)."""
+    if not NAME.match(entry.name):
+        return "a name must be lower-case letters, digits and _ (at most 40), starting with a letter"
+    if entry.name in reg.items:
+        return f"the name is taken by {reg.items[entry.name].package}"
+    try:
+        value = entry.load()
+    except Exception as e:  # noqa: BLE001 - a plugin's import may fail in any way; the others go on
+        return f"does not load: {type(e).__name__}: {_line(e)}".rstrip(": ")
+    try:
+        value = accept(entry.name, value)
+    except ValueError as e:
+        return _line(e) or "refused"
+    return Plugin(reg.kind, entry.name, _package(entry), entry.value, value)
+
+
+def _line(e: BaseException) -> str:
+    return str(e).splitlines()[0] if str(e) else ""
+
+
+def _normal(name: str) -> str:
+    return re.sub(r"[-_.]+", "-", name).lower()
 
 
 def _package(entry: importlib.metadata.EntryPoint) -> str:

@@ -25,7 +25,9 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     )
     validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
     validate.set_defaults(func=validate_cmd)
-    listing = sub.add_parser("plugins", help="every registered plugin, one per line: KIND NAME PACKAGE (broken ones on stderr)")
+    listing = sub.add_parser(
+        "plugins", help="every registered plugin, one per line: KIND NAME PACKAGE; each one left out on stderr, and then exit code 1"
+    )
     listing.set_defaults(func=plugins_cmd)
 
 

@@ -148,32 +148,38 @@ def _check(args: StudyRun, study: Study) -> str | None:
 
 
 def run_cmd(args: argparse.Namespace) -> int:
-    return run_participant(StudyRun.of(args))
+    try:
+        return run_participant(StudyRun.of(args))
+    except TrialError as e:
+        return fail(str(e))
 
 
 def run_participant(args: StudyRun) -> int:
     """Run the participant's trials that are not done yet, in order; the exit code (0: all done,
-    1: a trial did not finish, 2: refused, 130: stopped)."""
+    1: a trial did not finish, 130: stopped). TrialError (one line) when the run is refused: the
+    study, the participant, the options, or another runner on the participant."""
     try:
         study = load_study(args.study)
         load_suite_config(args.params_file, TRIAL_SETS)  # (each trial reads it: refused now, not at the first)
         problem = _check(args, study)
         if problem:
-            return fail(problem)
+            raise TrialError(problem)
         root = study_dir(args.dir, study)
         trials = [t for t in bind(study, root, args.replan) if t.participant == args.participant]
         questionnaires = questionnaire_specs(study, root) if args.web else []
     except (StudyError, ScenarioError, ParamsError) as e:
-        return fail(str(e))
+        raise TrialError(str(e)) from None
     except OSError as e:
-        return fail(f"cannot write the study's folder: {e.strerror or e}")
+        raise TrialError(f"cannot write the study's folder: {e.strerror or e}") from None
     try:  # one runner per participant: a second one would run the same trials again
         lock = FileLock(root / args.participant / RUNNER_LOCK).acquire()
     except Locked as e:
         who = e.holder.describe()
-        return fail(f"participant {args.participant} of study {study.name} is already being run ({who}); wait for it to end or stop it")
+        raise TrialError(
+            f"participant {args.participant} of study {study.name} is already being run ({who}); wait for it to end or stop it"
+        ) from None
     except OSError as e:
-        return fail(f"cannot lock {root / args.participant}: {e.strerror or e}")
+        raise TrialError(f"cannot lock {root / args.participant}: {e.strerror or e}") from None
     with lock:
         return _run_trials(args, study, root, trials, questionnaires)
 
