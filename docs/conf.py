@@ -25,17 +25,24 @@ html_theme = "furo"
 html_title = "HAVEN for ROS 2"
 autodoc_member_order = "bysource"
 autodoc_typehints = "description"
-autodoc_default_options = {"members": True, "undoc-members": False, "show-inheritance": True}
+autodoc_default_options = {"undoc-members": False, "show-inheritance": True}
 nitpicky = False
 
 
 def _generated(_app: object) -> None:
-    """Pages made from the code (one source): the metric codebook."""
+    """Pages made from the code (one source): the metric codebook and the list of commands."""
+    import argparse
+
     from haven_scenarios.record.metric_table import markdown
+    from haven_scenarios.tools.cli import build_parser
 
     out = Path(__file__).parent / "_generated"
     out.mkdir(exist_ok=True)
     (out / "metric_table.part.md").write_text(markdown() + "\n")
+    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    helps = {c.dest: c.help for c in sub._choices_actions}
+    rows = ["| command | what it does |", "|---|---|"] + [f"| `haven {name}` | {helps.get(name, '')} |" for name in sub.choices]
+    (out / "commands.part.md").write_text("\n".join(rows) + "\n\nEvery command's options: `haven COMMAND --help`.\n")
 
 
 def setup(app: object) -> None:

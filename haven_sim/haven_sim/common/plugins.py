@@ -1,6 +1,6 @@
-"""Plugins by name: registries of the things a lab adds (participant models so far; robots, cues,
-metrics, questionnaires, mission behaviours and planners follow), filled from Python entry points
-(groups `haven.<kind>`).
+"""Plugins by name: registries of the things a lab adds (participant models, questionnaires and
+metrics so far; robots, cues, mission behaviours and planners follow), filled from Python entry
+points (groups `haven.<kind>`).
 
 HAVEN's own items register exactly as a lab's package does, in its setup.py:
 
