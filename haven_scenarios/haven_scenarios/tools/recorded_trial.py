@@ -236,7 +236,8 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
             info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
         write_outcome(folder, info)
     stopped = ended.exited is None and not ended.timed_out
-    return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), time.monotonic() - started, died, ended.timed_out, stopped)
+    wall = float(info["wall_time_s"])  # (as session.json has it: the trial to its metrics)
+    return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), wall, died, ended.timed_out, stopped)
 
 
 def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
