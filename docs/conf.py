@@ -27,6 +27,7 @@ autodoc_member_order = "bysource"
 autodoc_typehints = "description"
 autodoc_default_options = {"undoc-members": False, "show-inheritance": True}
 nitpicky = False
+default_role = "literal"  # `name` in a docstring is code, as in the Markdown pages
 
 
 def _generated(_app: object) -> None:

@@ -1,6 +1,6 @@
 """HAVEN from a Python script or a notebook, in the spirit of nav2_simple_commander: the main jobs
 as calls that block until they are done and return typed results. The `haven` command is a thin
-layer over the same functions.
+layer over the same functions. For example::
 
     from haven_scenarios import api
 

@@ -2,7 +2,7 @@
 metrics so far; robots, cues, mission behaviours and planners follow), filled from Python entry
 points (groups `haven.<kind>`).
 
-HAVEN's own items register exactly as a lab's package does, in its setup.py:
+HAVEN's own items register exactly as a lab's package does, in its setup.py::
 
     entry_points={"haven.participants": ["hesitant = my_lab.people:Hesitant"]}
 
