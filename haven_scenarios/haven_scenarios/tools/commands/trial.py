@@ -15,7 +15,7 @@ from haven_scenarios.record.session import (
     session_scenario,
 )
 from haven_scenarios.run.suite import load_suite_config
-from haven_scenarios.run.trial import SEED_MAX
+from haven_scenarios.run.trial import check_seed
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import scenario_names
 from haven_scenarios.tools.commands import after_trial
@@ -150,9 +150,7 @@ def rerun_cmd(args: argparse.Namespace) -> int:
     try:
         base = load_suite_config(folder / PARAMS_FILE if (folder / PARAMS_FILE).exists() else None)
         toggles = Toggles(**{c: bool(v) for c, v in dict(info.get("cues", {})).items() if c in CUES})
-        seed = info.get("seed", 0)
-        if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed <= SEED_MAX:
-            raise ValueError(f"seed: must be an integer 0..{SEED_MAX}, got {str(seed)[:40]}")
+        seed = check_seed(info.get("seed", 0))
         rtf = args.rtf if args.rtf is not None else (float(info.get("real_time_factor") or 1.0) if free else None)
     except (TypeError, ValueError) as e:
         return fail(f"{folder / SESSION_FILE}: {e}")
