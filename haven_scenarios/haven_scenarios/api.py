@@ -34,7 +34,7 @@ from haven_scenarios.run.trial import TrialResult, check_seed, parse_condition, 
 from haven_scenarios.study.progress import TrialProgress, progress
 from haven_scenarios.study.protocol import load_study
 from haven_scenarios.study.scenario import load_scenario
-from haven_scenarios.study.schedule import PlannedTrial, schedule
+from haven_scenarios.study.schedule import PlannedTrial, participant_schedule, schedule
 from haven_scenarios.tools.commands.study import Report, study_dir, write_report
 from haven_scenarios.tools.commands.study_run import StudyRun
 from haven_scenarios.tools.commands.study_run import run_participant as _run_participant
@@ -117,8 +117,11 @@ def sweep(
 def study_plan(study: str, participant: str | None = None) -> list[PlannedTrial]:
     """The study's schedule (one participant's trials, or everyone's), as `haven study plan` prints it."""
     s = load_study(study)
-    trials = schedule(s)
-    return [t for t in trials if participant is None or t.participant == participant]
+    if participant is None:
+        return schedule(s)
+    if participant not in s.participants:
+        raise ValueError(f"study_plan: {participant!r} is not a participant of study {s.name}")
+    return participant_schedule(s, participant)
 
 
 def run_participant(study: str, participant: str, **options: Any) -> int:

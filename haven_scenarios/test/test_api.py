@@ -42,6 +42,8 @@ def test_a_pilot_study_through_the_api(tmp_path):
         )
     )
     assert len(api.study_plan(str(study))) == 6 and len(api.study_plan(str(study), "p02")) == 2
+    with pytest.raises(ValueError, match="^study_plan: 'p99' is not a participant of study pilot$"):
+        api.study_plan(str(study), "p99")
     for p in ("p01", "p02", "p03"):
         assert api.run_participant(str(study), p, batch=True, dir=tmp_path / "study") == 0
     assert api.run_participant(str(study), "p01", batch=True, dir=tmp_path / "study") == 0  # (nothing left to run)

@@ -4,7 +4,6 @@ model, the session's metrics have the lab's metric, and the recording is valid."
 from __future__ import annotations
 
 import json
-import os
 import subprocess
 
 import pytest
@@ -15,8 +14,7 @@ pytestmark = pytest.mark.ros
 
 
 def test_a_recorded_trial_runs_the_labs_participant_model_and_metric(ros, tmp_path):
-    env = {**installed(tmp_path), **{k: v for k, v in ros.env.items() if k.startswith("ROS_")}}
-    env["PYTHONPATH"] = os.pathsep.join(p for p in (env["PYTHONPATH"], ros.env.get("PYTHONPATH", "")) if p)
+    env = {**ros.env, "PYTHONPATH": installed(tmp_path)["PYTHONPATH"]}  # (the harness's domain, the example on the path)
     (tmp_path / "hurried.yaml").write_text(SCENARIO)
     argv = [*HAVEN, "run", str(tmp_path / "hurried.yaml"), "--domain-id", str(ros.domain_id), "--sessions", str(tmp_path / "s")]
     r = subprocess.run(argv, env=env, capture_output=True, text=True, timeout=600)
