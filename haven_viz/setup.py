@@ -27,5 +27,12 @@ setup(
             "haven-viz = haven_viz.nodes.viz_node:main",
             "snapshot = haven_viz.nodes.snapshot:main",
         ],
+        # HAVEN's cues register as a lab's do (haven_viz/cue_kind.py).
+        "haven.cues": [
+            "path_projection = haven_viz.builtin_cues:PathProjection",
+            "turn_signals = haven_viz.builtin_cues:TurnSignals",
+            "thought_bubble = haven_viz.builtin_cues:ThoughtBubble",
+            "battery_indicator = haven_viz.builtin_cues:BatteryIndicator",
+        ],
     },
 )

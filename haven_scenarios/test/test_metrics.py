@@ -43,7 +43,7 @@ def events(rec, *evs):
 
 
 def cue(rec, t, thought="", signal=0, toggles=ALL):
-    rec.add(Message(topics.CUE_STATE, CueState(toggles, path_markers=3, turn_signal=signal, thought=thought, battery_level=1.0), t))
+    rec.add(Message(topics.CUE_STATE, CueState(toggles, {"path_markers": 3, "turn_signal": signal, "thought": thought, "battery_level": 1.0}), t))
 
 
 def straight():

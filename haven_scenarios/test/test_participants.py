@@ -31,7 +31,7 @@ def walk(model, stops, seconds, robot_path=(), robot_at=None):
     grid = rasterise(world)
     planner, sight = GridPlanner(grid, HUMAN_PLANNER), Sight(grid)
     person = make_walker(model, "h1", stops, planner, 1.0, seed=3)
-    cues = CueState(Toggles(), path_markers=len(robot_path))
+    cues = CueState(Toggles(), {"path_markers": len(robot_path)})
     poses = []
     for k in range(int(seconds * 50)):
         if k % 5 == 0:

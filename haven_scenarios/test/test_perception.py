@@ -30,7 +30,7 @@ ROOM = {
 SIGHT = Sight(rasterise(parse_world(ROOM)))
 P = PersonParams()
 ME = Pose2D(1.0, 2.0, 0.0)  # facing +x
-ALL = CueState(Toggles(), path_markers=3, turn_signal=1, thought="Going to gem rg1", battery_level=0.7)
+ALL = CueState(Toggles(), {"path_markers": 3, "turn_signal": 1, "thought": "Going to gem rg1", "battery_level": 0.7})
 MARKERS = [(3.4, 2.0), (3.8, 2.0), (4.2, 2.0), (4.6, 2.0)]
 
 

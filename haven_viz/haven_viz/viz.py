@@ -11,7 +11,6 @@ The four cue toggles are the study condition; every change is a `cue_toggled` ev
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
@@ -23,14 +22,14 @@ from haven_sim.common.state import HumanPoses, RobotState
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.world import World
-from haven_viz.cues import ArCues, CueParams, CueState, Toggles
+from haven_viz.cues import ArCues, CueParams, CueState, CueToggles, Toggles
 from haven_viz.markers import MarkerDiff
 from haven_viz.world_markers import body_markers, world_markers
 
 
 @dataclass(frozen=True)
 class VizConfig:
-    toggles: Toggles = group(Toggles)
+    toggles: CueToggles = group(Toggles)
     cues: CueParams = group(CueParams)
     world: str = param("", "world file for the world markers (haven sim passes its world)")
     rate_hz: float = param(10.0, "cue update rate (sim time)", POSITIVE)
@@ -117,11 +116,11 @@ class VizComponent:
     def set_toggles(self, changes: Mapping[str, bool], now: float) -> list[Message]:
         """Switch cues on or off (the study condition); each change is an event, shown at once."""
         before = self.toggles
-        self.toggles = dataclasses.replace(before, **changes)
+        self.toggles = before.replaced(changes)
         out = [
             Message(topics.EVENTS, event(EventKind.CUE_TOGGLED, now, Source.VIZ, cue=name, on=on), now)
             for name, on in changes.items()
-            if getattr(before, name) != on
+            if before.on(name) != on
         ]
         return out + self.tick(now)
 

@@ -81,10 +81,14 @@ METRICS: tuple[tuple[str, str, str, str], ...] = (
 
 
 def plugin_rows() -> list[tuple[str, str, str, str]]:
-    """The codebook rows of the installed metric plugins that document their columns (`columns`)."""
+    """The codebook rows of the installed metric plugins that document their columns (`columns`),
+    and of the installed cues' exposure."""
     from haven_sim.common import plugins  # (the registry loads the metrics module, which imports this one)
 
-    return [tuple(c) for p in plugins.registry("metrics") for c in getattr(p.value, "columns", ())]
+    rows = [tuple(c) for p in plugins.registry("metrics") for c in getattr(p.value, "columns", ())]
+    ours = {m[0] for m in METRICS}
+    cues = [p for p in plugins.registry("cues") if p.value.exposure not in ours]  # (a lab's cue's exposure column)
+    return rows + [(p.value.exposure, "s", f"time the {p.name} cue was on show", p.package) for p in cues]
 
 
 def markdown() -> str:

@@ -29,6 +29,7 @@ from haven_sim.common.geometry import FloatArray, wrap_angle
 from haven_sim.nav.planner import GridPlanner, PlanningError
 from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.world import World
+from haven_viz.cues import CUE_CLASSES, CUES
 
 TURN_RATE_RPS = 0.3  # |angular velocity| above this is a turn
 STILL_MPS, STILL_RPS = 0.01, 0.01  # the robot is not moving (HuNavSim uses 0.001 m/s and 0.01 rad/s)
@@ -261,12 +262,7 @@ def _mission(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
 
 def _exposure(tl: Timeline, sel: Any = slice(None)) -> dict[str, float]:
     dt, cues = tl.dt[sel], tl.cues[sel] if isinstance(sel, slice) else [c for c, keep in zip(tl.cues, sel) if keep]
-    shown = {
-        "path_projection_shown_s": [c.path_markers > 0 for c in cues],
-        "turn_signal_shown_s": [c.turn_signal != 0 for c in cues],
-        "thought_bubble_shown_s": [bool(c.thought) for c in cues],
-        "battery_indicator_shown_s": [c.battery_level is not None for c in cues],
-    }
+    shown = {CUE_CLASSES[name].exposure: [c.shown(name) for c in cues] for name in CUES}  # every registered cue's
     return {k: round(float(np.sum(dt[np.asarray(v, dtype=bool)])), 2) for k, v in shown.items()}
 
 
@@ -327,7 +323,7 @@ def _cues(tl: Timeline) -> dict[str, Any]:
     segments, start = [], 0
     for i in range(1, len(tl.t) + 1):
         if i == len(tl.t) or tl.cues[i].toggles != tl.cues[start].toggles:
-            on = [k for k, v in vars(tl.cues[start].toggles).items() if v]
+            on = tl.cues[start].toggles.names_on()
             sel = np.zeros(len(tl.t), dtype=bool)
             sel[start:i] = True
             segments.append({"start_s": round(float(tl.t[start]), 2), "end_s": round(float(tl.t[i - 1]), 2), "cues_on": on, **_exposure(tl, sel)})

@@ -44,7 +44,7 @@ from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenari
 from haven_sim.common import atomic
 from haven_sim.common.events import EventKind
 from haven_sim.sim.world import World, WorldError
-from haven_viz.cues import CUES, Toggles
+from haven_viz.cues import CUES, CueToggles
 from haven_viz.world_markers import world_markers
 
 PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags", "mcap")
@@ -117,13 +117,13 @@ def write_json(path: Path, data: Mapping[str, Any]) -> None:
     atomic.write_text(path, json.dumps(data, indent=2, sort_keys=True, default=str) + "\n")
 
 
-def trial_record(participant: str, toggles: Toggles, seed: int, scenario: Scenario) -> dict[str, Any]:
+def trial_record(participant: str, toggles: CueToggles, seed: int, scenario: Scenario) -> dict[str, Any]:
     """What every session.json says of its trial (`haven run` and a study's batch trials add
     how it ran): who, the condition and its cues, the seed, the scenario, its people, provenance."""
     return {
         "participant": participant,
         "condition": condition_name(toggles),
-        "cues": {c: getattr(toggles, c) for c in CUES},
+        "cues": {c: toggles.on(c) for c in CUES},
         "seed": seed,
         "scenario": scenario.name,
         "humans": [h.id for h in scenario.world.humans],

@@ -126,7 +126,7 @@ class Timeline:
 def _steps(grid: FloatArray, cues: list[tuple[float, CueState]]) -> list[CueState]:
     """The cue state in force at each grid time (nothing shown before the first one)."""
     if not cues:
-        return [CueState(Toggles(False, False, False, False))] * len(grid)
+        return [CueState(Toggles.none())] * len(grid)
     stamps = np.array([s for s, _ in cues])
     index = np.searchsorted(stamps, grid + 1e-9, side="right") - 1
     blank = CueState(cues[0][1].toggles)

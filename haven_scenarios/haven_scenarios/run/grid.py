@@ -20,7 +20,7 @@ from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.scenario import MAX_WALKING_SPEED_MPS, HumanTask, Scenario
 from haven_sim.common import plugins
-from haven_viz.cues import Toggles
+from haven_viz.cues import CueToggles
 
 TASK_KEYS = ("condition", "model", "speed_mps")  # grid keys that are not perception parameters
 MAX_TRIALS = 1_000_000  # a sweep larger than this is a typo, not a study
@@ -104,7 +104,7 @@ class TrialSpec:
 
     index: int  # the row's place in the CSV
     scenario: Scenario  # with the grid's participant settings applied
-    toggles: Toggles
+    toggles: CueToggles
     design: tuple[tuple[str, Any], ...]  # the grid point, for the row's design columns
     seed: int
 
@@ -127,7 +127,7 @@ def _human(task: HumanTask, point: Point) -> HumanTask:
         raise ValueError(f"--grid: {e}") from None
 
 
-def apply(scenario: Scenario, point: Point) -> tuple[Scenario, Toggles]:
+def apply(scenario: Scenario, point: Point) -> tuple[Scenario, CueToggles]:
     """The scenario with the grid point's participant settings, and the condition to show."""
     toggles = parse_condition(point["condition"].split("+") if "condition" in point else scenario.condition)
     return replace(scenario, humans=tuple(_human(h, point) for h in scenario.humans)), toggles

@@ -27,7 +27,7 @@ from haven_sim.nav.planning import PlannerComponent, world_lanes
 from haven_sim.runtime.component import Component
 from haven_sim.runtime.loop import DelayFn, InProcessLoop
 from haven_sim.sim.simulator import SimulatorComponent
-from haven_viz.cues import CUES, CueParams, Toggles
+from haven_viz.cues import CUES, CueParams, CueToggles, Toggles
 from haven_viz.viz import VizComponent
 
 SEED_MAX = 2**31 - 1  # a trial's seed: 0..this (a ROS integer parameter of the nodes, numpy's seed)
@@ -45,24 +45,24 @@ def check_seed(value: Any, where: str = "seed") -> int:
     return seed
 
 
-def parse_condition(names: Sequence[str]) -> Toggles:
+def parse_condition(names: Sequence[str]) -> CueToggles:
     """`all`, `none`, or the cues to show (the others are off)."""
     if not names or list(names) == ["all"]:
         return Toggles()
     if list(names) == ["none"]:
-        return Toggles(False, False, False, False)
+        return Toggles.none()
     unknown = [n for n in names if n not in CUES]
     if unknown:
         raise ValueError(f"unknown cue {unknown[0]!r} in the condition (cues: {', '.join(CUES)}, or all / none)")
     return Toggles(**{c: c in names for c in CUES})
 
 
-def condition_name(t: Toggles) -> str:
-    on = [c for c in CUES if getattr(t, c)]
+def condition_name(t: CueToggles) -> str:
+    on = t.names_on()
     return "all" if len(on) == len(CUES) else ("none" if not on else "+".join(on))
 
 
-def scenario_suite(scenario: Scenario, seed: int, toggles: Toggles, suite: SuiteConfig | None = None) -> SuiteConfig:
+def scenario_suite(scenario: Scenario, seed: int, toggles: CueToggles, suite: SuiteConfig | None = None) -> SuiteConfig:
     """The suite configured for one trial: what the scenario and the run fix on top of the
     parameter file (world, battery size, seeds, condition) — what `haven run` passes as -p."""
     s = suite or SuiteConfig()
@@ -88,7 +88,7 @@ class TrialResult:
 
 class Trial:
     def __init__(
-        self, scenario: Scenario, seed: int = 0, toggles: Toggles | None = None, suite: SuiteConfig | None = None, delay: DelayFn | None = None
+        self, scenario: Scenario, seed: int = 0, toggles: CueToggles | None = None, suite: SuiteConfig | None = None, delay: DelayFn | None = None
     ) -> None:
         self.scenario = scenario
         self.seed = seed
@@ -117,5 +117,5 @@ class Trial:
         return TrialResult(self.scenario.name, self.seed, condition_name(self.toggles), reason, metrics, self.recording)
 
 
-def run_trial(scenario: Scenario, seed: int = 0, toggles: Toggles | None = None, suite: SuiteConfig | None = None) -> TrialResult:
+def run_trial(scenario: Scenario, seed: int = 0, toggles: CueToggles | None = None, suite: SuiteConfig | None = None) -> TrialResult:
     return Trial(scenario, seed, toggles, suite).run()

@@ -80,8 +80,8 @@ class DelayLine:
 
 def intent_ways(p: Percept) -> list[list[Point]]:
     """Where the cues say the robot goes, each way nearest the robot first: a lit signal's curve
-    off the robot, and the seen projected path; none without a cue."""
-    ways = [list(p.path)] if p.path else []
+    off the robot, the seen projected path and the ways other cues show; none without a cue."""
+    ways = ([list(p.path)] if p.path else []) + [list(w) for w in p.ways]
     if p.signal != 0 and p.robot is not None:
         r = p.robot
         yaw = r.yaw + p.signal * SIGNAL_TURN_RAD

@@ -15,12 +15,12 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from typing import Any
 
 from haven_scenarios.study.mission import Mission, MissionOutput, Phase, Target
 from haven_scenarios.study.participants import HUMAN_PLANNER, Participant, Stop, make_walker, shuffled_nearest
-from haven_scenarios.study.perception import Percept, Sight, perceive
+from haven_scenarios.study.perception import BY_FIELD, Percept, Sight, cue_ways, perceive
 from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules, TrialCommand, TrialState
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import topics
@@ -32,7 +32,7 @@ from haven_sim.nav.planner import GridPlanner, PlanningError
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.occupancy import OccupancyGridData
-from haven_viz.cues import ArCues, CueState
+from haven_viz.cues import CUES, PATH_NS, ArCues, CueState
 
 STOPPED_MPS = 0.02  # the robot counts as standing still (the battery charges only then)
 STRANDED_S = 5.0  # a flat battery off the base for this long ends the trial
@@ -130,7 +130,8 @@ class TrialDirector:
         self.level: float | None = None
         self.path: list[Pose2D] = []
         self.cue_state: CueState | None = None  # what the AR cues show (None until the viz says)
-        self.projection = ArCues(replace(scenario.cues, steps_ahead=0))  # the projected path's markers, as the viz lays them out
+        # The projected path's markers, and what the other cues show, as the viz lays them out.
+        self.projection = ArCues(scenario.cues, names=[c for c in CUES if c not in BY_FIELD])
         self.sight: Sight | None = None
         self.percepts: dict[str, Percept] = {}  # what each simulated participant perceived at the last tick
         self.waiting = False
@@ -344,13 +345,15 @@ class TrialDirector:
         out: list[Message] = []
         cues, sight = self.cue_state, self.sight
         assert sight is not None
-        shows_path = cues is not None and cues.toggles.path_projection and cues.path_markers > 0
+        shows_path = cues is not None and cues.toggles.on(PATH_NS) and cues.path_markers > 0
         markers = self.projection.shown_points(robot) if shows_path else []
+        thought = self.mission.thought if self.mission is not None else ""
+        ways = cue_ways(self.projection, cues, robot, [(h.x, h.y) for h in self.humans.values()], self.level, thought, now)
         for hid, walker in self.participants.items():
             if hid in self.humans:
                 me = self.humans[hid]
                 others = [pose for other, pose in self.humans.items() if other != hid]
-                self.percepts[hid] = seen = perceive(walker.params, sight, now, me, robot, cues, markers)
+                self.percepts[hid] = seen = perceive(walker.params, sight, now, me, robot, cues, markers, ways)
                 out.append(Message(topics.human_cmd_vel(hid), walker.command(now, me, robot, seen, others), now))
         fired = self.gems.update(now, robot, self.humans) + self.routes.update(now, {"robot": robot, **self.humans})
         fired += self.obstructions.update(now, self.humans)

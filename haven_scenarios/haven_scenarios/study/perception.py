@@ -6,24 +6,30 @@ person's field of view and viewing distance (`person.PersonParams`) with no wall
 sight on the occupancy grid). The robot itself is seen by the same rule; the turn signal, thought
 bubble and battery gauge are drawn on the robot, so they are seen only with it. Of the projected path,
 the person sees the markers the projection shows (the first `path_markers` ahead of the robot) that
-pass the same test, never the whole plan.
+pass the same test, never the whole plan. A lab's cue (`haven_viz.cue_kind`) is perceived by the same
+rule: where it shows the robot's way (`Shown.way`), drawn on the robot (seen with it) or on the floor
+(the points seen); its value and the way seen are in the percept (`shown`, `ways`), and the simulated
+participants read that way as they read the projected path.
 """
 
 from __future__ import annotations
 
 import functools
 import math
-from collections.abc import Sequence
-from dataclasses import dataclass
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
 from haven_scenarios.study.person import PersonParams
 from haven_sim.common.geometry import Point, Pose2D, wrap_angle
 from haven_sim.sim.occupancy import OccupancyGridData
-from haven_viz.cues import CueState
+from haven_viz.cues import BATTERY_NS, PATH_NS, SIGNAL_NS, THOUGHT_NS, ArCues, CueState
 
 OCCUPIED = 50  # an occupancy value this high is a wall (nav_msgs/OccupancyGrid)
+BY_FIELD = frozenset({PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS})  # HAVEN's cues: a field of the percept each
+Ways = Mapping[str, tuple[tuple[Point, ...], bool]]  # cue -> (the way it shows, drawn on the robot)
 
 
 @dataclass(frozen=True)
@@ -36,11 +42,13 @@ class Percept:
     signal: int = 0  # +1 the robot's left, -1 its right, 0 dark or not seen
     thought: str = ""
     battery: float | None = None
+    ways: tuple[tuple[Point, ...], ...] = ()  # the robot's way as other cues show it, the parts seen
+    shown: Mapping[str, Any] = field(default_factory=dict)  # other cues seen: cue -> its value
 
     @property
     def intent_shown(self) -> bool:
-        """The robot's way ahead is shown to this person (its projected path or a lit turn signal)."""
-        return bool(self.path) or self.signal != 0
+        """The robot's way ahead is shown to this person (its projected path, a lit turn signal or another cue's way)."""
+        return bool(self.path) or self.signal != 0 or bool(self.ways)
 
 
 @functools.lru_cache(maxsize=256)
@@ -110,30 +118,58 @@ def sees(params: PersonParams, sight: Sight, me: Pose2D, point: Point) -> bool:
 
 
 def perceive(
-    params: PersonParams, sight: Sight, now: float, me: Pose2D, robot: Pose2D, cues: CueState | None, markers: Sequence[Point] = ()
+    params: PersonParams,
+    sight: Sight,
+    now: float,
+    me: Pose2D,
+    robot: Pose2D,
+    cues: CueState | None,
+    markers: Sequence[Point] = (),
+    ways: Ways | None = None,
 ) -> Percept:
     """What the person at `me` perceives. `markers`: the projected path's markers ahead of the
-    robot, nearest first (the director lays them out as the viz does); `cues`: what the viz shows
-    now (None before its first message: nothing)."""
+    robot, nearest first, and `ways`: the other cues' ways (the director lays them out as the viz
+    does); `cues`: what the viz shows now (None before its first message: nothing)."""
     robot_seen = sees(params, sight, me, (robot.x, robot.y))
     if cues is None:
         return Percept(now, robot if robot_seen else None)
     path: tuple[Point, ...] = ()
-    shown = list(markers[: cues.path_markers]) if cues.toggles.path_projection else []
+    shown = list(markers[: cues.path_markers]) if cues.toggles.on(PATH_NS) else []
     if shown:
         visible = seen(params, sight, me, np.array(shown))
         path = tuple(p for p, v in zip(shown, visible) if v)
+    seen_ways, values = [], {}
+    for cue, (way, on_robot) in (ways or {}).items():
+        if not (cues.toggles.on(cue) and cues.shown(cue)):
+            continue
+        if on_robot:
+            part = way if robot_seen else ()
+        else:
+            part = tuple(p for p, v in zip(way, seen(params, sight, me, np.array(way)), strict=True) if v)
+        if part:
+            seen_ways.append(part)
+            values[cue] = cues.value(cue)
     if not robot_seen:
-        return Percept(now, None, path)
+        return Percept(now, None, path, ways=tuple(seen_ways), shown=values)
     t = cues.toggles
     return Percept(
         now,
         robot,
         path,
-        cues.turn_signal if t.turn_signals else 0,
-        cues.thought if t.thought_bubble else "",
-        cues.battery_level if t.battery_indicator else None,
+        cues.turn_signal if t.on(SIGNAL_NS) else 0,
+        cues.thought if t.on(THOUGHT_NS) else "",
+        cues.battery_level if t.on(BATTERY_NS) else None,
+        tuple(seen_ways),
+        values,
     )
+
+
+def cue_ways(cues: ArCues, state: CueState | None, robot: Pose2D, humans: Sequence[Point], level: float | None, thought: str, now: float) -> Ways:
+    """Where the cues in `cues` (laid out as the viz does) that show something now say the robot
+    goes (only while one of them is on show)."""
+    if state is None or not any(state.shown(c) for c in cues.cues):
+        return {}
+    return cues.frame(robot, humans, level, thought, state.toggles, now, markers=False).ways
 
 
 def ahead_of(me: Pose2D, point: Point, half_angle_rad: float) -> bool:

@@ -1,12 +1,11 @@
 // The researcher console: the live top-down scene with everyone's tracks, the trial's status and
-// controls, the condition's four cue toggles (the viz node's parameters), the event stream,
+// controls, the condition's cue toggles (the viz node's parameters, one per installed cue), the event stream,
 // Wizard-of-Oz control of the robot (teleop velocity, thought text), and after the trial each
 // participant's questionnaire progress with Skip questionnaires. Every intervention is an event.
 import { Link, config as readConfig, twist, yawOf } from "./link.js";
 import { fit, footprint, disc, rgba } from "./topdown.js";
 
 const cfg = readConfig();
-const CUES = ["path_projection", "turn_signals", "thought_bubble", "battery_indicator"];
 const state = (window.havenState = { frames: 0, trial: null, toggles: null, events: [], tracks: { robot: [] }, cue: null });
 const world = new Map(); // "ns/id" -> marker
 const seen = new Set(); // events shown, by source and seq
@@ -115,18 +114,23 @@ function showThought() {
 showStatus();
 showThought();
 
-// -- the condition: four toggles, set as the viz node's parameters -----------------------------------
+// -- the condition: one toggle per cue /haven/cue_state names (any installed cue), set as the viz node's parameters --
 const togglesEl = document.getElementById("toggles");
-for (const cue of CUES) {
-  const label = document.createElement("label");
-  label.innerHTML = `<input type="checkbox" id="cue-${cue}"> ${cue.replace("_", " ")}`;
-  togglesEl.append(label);
-  label.querySelector("input").addEventListener("change", (e) => {
-    link.setParameters([{ name: `/viz.${cue}`, value: e.target.checked, type: undefined }]);
-  });
-}
 function showToggles() {
-  for (const cue of CUES) document.getElementById(`cue-${cue}`).checked = !!(state.toggles && state.toggles[cue]);
+  for (const [cue, on] of Object.entries(state.toggles || {})) {
+    let input = document.getElementById(`cue-${cue}`);
+    if (!input) {
+      const label = document.createElement("label");
+      label.innerHTML = `<input type="checkbox" id="cue-${cue}"> ${cue.replaceAll("_", " ")}`;
+      togglesEl.append(label);
+      input = label.querySelector("input");
+      input.disabled = !state.trial || state.trial.state === "ended";
+      input.addEventListener("change", (e) => {
+        link.setParameters([{ name: `/viz.${cue}`, value: e.target.checked, type: undefined }]);
+      });
+    }
+    input.checked = !!on;
+  }
 }
 
 // -- trial control ----------------------------------------------------------------------------------

@@ -20,7 +20,7 @@ from haven_scenarios.tools.supervisor import ProcessSpec, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
 from haven_sim.common import nodes, topics
 from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
-from haven_viz.cues import Toggles
+from haven_viz.cues import CueToggles
 
 SESSION_PARAMS_HEADER = """Every node's parameters as run in this session: each node was started with this file, in this
 folder (file names are relative to it, so the folder can move). `haven rerun` on this folder runs
@@ -32,7 +32,7 @@ class SessionPlan:
     """One recorded trial to run: what `haven run` and `haven rerun` both start."""
 
     scenario: Scenario
-    toggles: Toggles
+    toggles: CueToggles
     seed: int
     participant: str
     base: SuiteConfig  # the parameter file's configuration (defaults where it is silent)
