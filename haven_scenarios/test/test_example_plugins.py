@@ -1,6 +1,7 @@
 """The worked plugin package (examples/haven_lab_example), as a lab would use it: installed beside
 HAVEN, its items are listed by `haven plugins`, named in a scenario, a study and a `--grid` axis,
-and show in batch rows; its own tests pass. (Installed into a folder of this test's, on PYTHONPATH,
+and show in batch rows (the cue in its exposure column and in the simulated participants'
+behaviour); its own tests pass. (Installed into a folder of this test's, on PYTHONPATH,
 so the shared venv stays as setup made it; `pip install -e` into the venv works the same.)"""
 
 from __future__ import annotations
@@ -24,7 +25,7 @@ name: hurried_hallway
 world: hallway
 kind: hallway
 timeout_s: 240
-condition: [turn_signals]
+condition: [turn_signals, floor_arrows]
 robot:
   route: [B, C, D, A]
 humans:
@@ -33,7 +34,7 @@ humans:
 STUDY = """\
 name: lab_pilot
 scenarios: [hallway]
-conditions: {none: [none], signals: [turn_signals]}
+conditions: {none: [none], arrows: [floor_arrows]}
 participants: [p01, p02]
 questionnaires: [nasa_tlx, trust]
 """
@@ -55,8 +56,8 @@ def haven(env: dict[str, str], *args: str, cwd: Path | None = None) -> subproces
 def test_the_example_plugins_install_list_and_run_in_batch_trials_scenarios_and_studies(tmp_path):
     env = installed(tmp_path)
     listed = haven(env, "plugins").stdout.splitlines()
-    for line in ("participants hurried haven-lab-example", "metrics near haven-lab-example", "questionnaires trust haven-lab-example"):
-        assert line in listed
+    for kind, name in (("participants", "hurried"), ("metrics", "near"), ("questionnaires", "trust"), ("cues", "floor_arrows")):
+        assert f"{kind} {name} haven-lab-example" in listed
     tests = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(EXAMPLE / "tests")]
     own = subprocess.run(tests, env=env, capture_output=True, text=True)
     assert own.returncode == 0, own.stdout[-2000:]
@@ -70,6 +71,17 @@ def test_the_example_plugins_install_list_and_run_in_batch_trials_scenarios_and_
     assert all(float(row["seconds_within_2m"]) >= 0 for row in rows) and not any("near_error" in row for row in rows)
     hurried, walker = (float(rows[k]["h1_time_to_finish_s"]) for k in (2, 0))
     assert hurried < walker  # a third faster than asked
+    # The cue as a --grid condition: on show, in its exposure column, and read by the simulated
+    # participants as the robot's way (as the projected path is: no hesitation where, without
+    # a cue, each of them hesitates).
+    r = haven(env, "batch", "hallway", "--grid", "condition=none,floor_arrows", "--seeds", "0-1", "--workers", "1", "--out", str(out))
+    assert r.returncode == 0, r.stderr[-2000:]
+    with out.open() as f:
+        rows = {(row["condition"], row["seed"]): row for row in csv.DictReader(f)}
+    for seed in "01":
+        none, arrows = rows[("none", seed)], rows[("floor_arrows", seed)]
+        assert float(none["floor_arrows_shown_s"]) == 0.0 < float(arrows["floor_arrows_shown_s"])
+        assert int(arrows["h1_hesitations"]) < int(none["h1_hesitations"])
     # Named in a scenario file and in a study file.
     (tmp_path / "hurried.yaml").write_text(SCENARIO)
     (tmp_path / "study.yaml").write_text(STUDY)
@@ -82,4 +94,4 @@ def test_the_example_plugins_install_list_and_run_in_batch_trials_scenarios_and_
     r = haven(bare, "validate", str(tmp_path / "hurried.yaml"))
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "hurried" in r.stderr and "walker" in r.stderr, r.stderr
     r = haven(bare, "validate", str(tmp_path / "study.yaml"))
-    assert r.returncode == 2 and "unknown questionnaire 'trust'" in r.stderr, r.stderr
+    assert r.returncode == 2 and "unknown cue 'floor_arrows'" in r.stderr, r.stderr

@@ -41,10 +41,9 @@ RESERVED_KEYS = frozenset({"stamp", "toggles"})
 CASTS: dict[str, Any] = {"path_markers": int, "turn_signal": int, "thought": str, "battery_level": float}
 
 
-def _cue_classes() -> dict[str, type[Any]]:
-    """name -> class of every registered cue, by rank (HAVEN's four: 0 to 3); a cue whose state key another cue
-    already has is left out, with one line in the registry's problems."""
-    reg = plugins.registry("cues")
+def cue_classes(reg: plugins.Registry) -> dict[str, type[Any]]:
+    """name -> class of every cue in the registry, by rank (HAVEN's four: 0 to 3); a cue whose state
+    key another cue already has is left out, with one line in the registry's problems."""
     out: dict[str, type[Any]] = {}
     keys: dict[str, str] = {}
     for name, item in sorted(reg.items.items(), key=lambda kv: kv[1].value.rank):  # (stable: ours first, then by name)
@@ -60,7 +59,7 @@ def _cue_classes() -> dict[str, type[Any]]:
     return out
 
 
-CUE_CLASSES = _cue_classes()
+CUE_CLASSES = cue_classes(plugins.registry("cues"))
 CUES: tuple[str, ...] = tuple(CUE_CLASSES)
 
 

@@ -2,6 +2,7 @@
 
 from types import SimpleNamespace
 
+from haven_lab_example.floor_arrows import AHEAD_M, FloorArrows
 from haven_lab_example.near import seconds_near
 from haven_lab_example.people import HURRY, Hurried
 from haven_lab_example.trust import TRUST
@@ -12,6 +13,10 @@ from haven_scenarios.study.participants import Walker
 from haven_scenarios.study.participants import accept_plugin as accept_participant
 from haven_scenarios.study.questionnaires import accept_plugin as accept_questionnaire
 from haven_scenarios.study.scenario import load_scenario
+from haven_sim.common.geometry import Pose2D
+from haven_viz.cue_kind import CueContext, TrackedPath
+from haven_viz.cue_kind import accept_plugin as accept_cue
+from haven_viz.cues import CueParams
 
 
 def test_each_item_is_what_its_plugin_kind_needs():
@@ -19,6 +24,17 @@ def test_each_item_is_what_its_plugin_kind_needs():
     assert accept_metric("near", seconds_near) is seconds_near
     q = accept_questionnaire("trust", TRUST)
     assert (q.name, q.maximum, [i.reverse for i in q.items]) == ("trust", 7, [False, False, True])
+    assert accept_cue("floor_arrows", FloorArrows) is FloorArrows
+
+
+def test_the_floor_arrows_lie_ahead_on_the_path_pointing_along_it():
+    path = TrackedPath([Pose2D(0.0, 0.0, 0.0), Pose2D(1.0, 0.0, 0.0), Pose2D(1.0, 3.0, 0.0)], 0.4)
+    shown = FloorArrows(CueParams()).show(CueContext(Pose2D(0.0, 0.0, 0.0), path), markers=True)
+    assert shown.value == len(AHEAD_M) and not shown.on_robot
+    assert [(round(x, 2), round(y, 2)) for x, y in shown.way] == [(0.6, 0.0), (1.0, 0.2), (1.0, 0.8)]
+    assert [round(m.yaw, 2) for m in shown.markers] == [0.0, 1.57, 1.57] and all(m.position[2] < 0.05 for m in shown.markers)
+    end = TrackedPath([Pose2D(0.0, 0.0, 0.0), Pose2D(0.5, 0.0, 0.0)], 0.4)
+    assert FloorArrows(CueParams()).show(CueContext(Pose2D(0.5, 0.0, 0.0), end), markers=True) is None  # (nothing ahead)
 
 
 def test_a_hurried_person_is_faster_than_a_walker():
