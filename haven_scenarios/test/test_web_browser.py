@@ -2,8 +2,9 @@
 
 A participant page and the researcher console against a running suite: the scene loads (waited on
 by page state, never by time), W walks the avatar (seen on /humans), walking up to the robot shows
-its thought bubble in the rendered pixels, a cue toggled in the console leaves the participant's
-view and is recorded, the researcher's Stop ends the trial, and nothing is served without the token.
+its thought bubble in the rendered pixels, a lab's installed cue is drawn and is a console toggle,
+a cue toggled in the console leaves the participant's view and is recorded, the researcher's Stop
+ends the trial, and nothing is served without the token.
 Two participants (one through the machine's network address) see each other, and Enter VR works
 with an emulated headset. Skipped, with one line, where no Chromium can be had.
 """
@@ -23,6 +24,7 @@ from urllib.parse import urlsplit
 
 import pytest
 from ros_harness import tracebacks
+from test_example_plugins import installed
 
 pytestmark = [pytest.mark.ros, pytest.mark.browser]
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
@@ -77,10 +79,10 @@ def head_on_scenario(tmp_path):
 class WebTrial:
     """`haven run ... --web` in the background; its output collected, its URLs parsed."""
 
-    def __init__(self, ros, argv):
+    def __init__(self, ros, argv, env=None):
         self.proc = subprocess.Popen(
             [*HAVEN, *argv, "--domain-id", str(ros.domain_id)],
-            env=ros.env,
+            env=env or ros.env,
             stdout=subprocess.PIPE,
             stderr=subprocess.STDOUT,
             text=True,
@@ -141,7 +143,10 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     from rclpy.qos import QoSProfile
 
     scenario = head_on_scenario(tmp_path)
-    trial = WebTrial(ros, ["run", str(scenario), "--teleop", "h1", "--web", "--port", "0", "--condition", "all", "--sessions", str(tmp_path / "s")])
+    lab = {**ros.env, "PYTHONPATH": installed(tmp_path)["PYTHONPATH"]}  # with a lab's cue installed: `all` has it too
+    trial = WebTrial(
+        ros, ["run", str(scenario), "--teleop", "h1", "--web", "--port", "0", "--condition", "all", "--sessions", str(tmp_path / "s")], lab
+    )
     urls = trial.urls()
     participant_url, console_url = urls["participant h1"], urls["researcher console"]
 
@@ -162,6 +167,9 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
 
     page.click("#start")  # read the instructions, ready: the trial starts
     page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    # The lab's cue (the example's floor arrows) is drawn with no page code of its own, and is a console toggle.
+    page.wait_for_function("(havenState.markers.floor_arrows || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("(t => t && t.checked)(document.getElementById('cue-floor_arrows'))", timeout=PAGE_TIMEOUT_MS)
 
     # Before: 6 m apart, no bubble where it would be drawn.
     robot = page.evaluate("havenState.robot")
