@@ -34,5 +34,7 @@ setup(
             "haven-planner = haven_sim.nodes.planner_node:main",
             "haven-controller = haven_sim.nodes.controller_node:main",
         ],
+        # HAVEN's path planner registers as a lab's does (haven_sim/nav/planner_kind.py).
+        "haven.planners": ["visibility = haven_sim.nav.planner:GridPlanner"],
     },
 )

@@ -1,5 +1,5 @@
 """Plugins by name: registries of the things a lab adds (participant models, questionnaires,
-metrics and cues so far; robots, mission behaviours and planners follow), filled from Python entry
+metrics, cues and path planners so far; robots and mission behaviours follow), filled from Python entry
 points (groups `haven.<kind>`).
 
 HAVEN's own items register exactly as a lab's package does, in its setup.py::
@@ -47,6 +47,7 @@ KINDS: dict[str, str] = {
     "questionnaires": "haven_scenarios.study.questionnaires",
     "metrics": "haven_scenarios.record.metrics",
     "cues": "haven_viz.cue_kind",
+    "planners": "haven_sim.nav.planner_kind",
 }
 
 

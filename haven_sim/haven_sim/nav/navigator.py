@@ -20,7 +20,7 @@ behave the same.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any
@@ -38,6 +38,7 @@ from haven_sim.nav.passing import beside, normal_at, offset_from, room_beside
 from haven_sim.nav.path_style import ShapeParams, shape_path
 from haven_sim.nav.people_map import with_people
 from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError
+from haven_sim.nav.planner_kind import PathSearch
 from haven_sim.sim.occupancy import OccupancyGridData
 
 REPLAN_RETRY_S = 2.0
@@ -91,8 +92,12 @@ class Navigator:
         params: NavigatorParams | None = None,
         style: MotionStyle | None = None,
         lanes: Sequence[Lane] = (),
+        search: Callable[[OccupancyGridData, PlannerParams], PathSearch] | None = None,
     ) -> None:
         self.planner_params = planner or PlannerParams()
+        # The path search (a `haven.planners` plugin; ours by default); the map's geometry (free
+        # runs, line of sight) is always asked of our GridPlanner.
+        self.search_class = search if search is not None and search is not GridPlanner else None
         self.shape = shape or ShapeParams()
         self.params = params or NavigatorParams()
         self.style = style or MotionStyle()
@@ -114,6 +119,10 @@ class Navigator:
     def set_map(self, grid: OccupancyGridData) -> None:
         self.grid = grid
         self.planner = GridPlanner(grid, self.planner_params)
+        self.search = self._searcher(grid, self.planner)
+
+    def _searcher(self, grid: OccupancyGridData, ours: GridPlanner) -> PathSearch:
+        return self.search_class(grid, self.planner_params) if self.search_class is not None else ours
 
     @property
     def block_distance_m(self) -> float:
@@ -137,7 +146,7 @@ class Navigator:
     def set_goal(self, robot: Pose2D, goal: Pose2D, now: float) -> NavOutput:
         out = NavOutput()
         try:
-            plan = self.planner.plan((robot.x, robot.y), (goal.x, goal.y))
+            plan = self.search.plan((robot.x, robot.y), (goal.x, goal.y))
         except PlanningError as e:
             self.state, self.goal, self.original, self.active = NavState.IDLE, None, [], []
             out.path, out.waiting = [], False
@@ -368,7 +377,7 @@ class Navigator:
         )
         planner = GridPlanner(grid, self.planner_params)
         try:
-            plan = planner.plan((robot.x, robot.y), (self.goal.x, self.goal.y))
+            plan = self._searcher(grid, planner).plan((robot.x, robot.y), (self.goal.x, self.goal.y))
         except PlanningError:
             return None
         line = Polyline(plan.points)

@@ -14,7 +14,7 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
-from haven_sim.common import nodes, topics
+from haven_sim.common import nodes, plugins, topics
 from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import POSITIVE, Bounds, check_bounds, group, param
@@ -25,6 +25,7 @@ from haven_sim.nav.navigator import Navigator, NavOutput
 from haven_sim.nav.navigator_params import NavigatorParams
 from haven_sim.nav.path_style import ShapeParams
 from haven_sim.nav.planner import PlannerParams
+from haven_sim.nav.planner_kind import planner_class
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import World
@@ -46,6 +47,9 @@ class PlannerConfig:
     shape: ShapeParams = group(ShapeParams)
     style: MotionStyle = group(MotionStyle)
     navigator: NavigatorParams = group(NavigatorParams)
+    algorithm: str = param(
+        "visibility", "the path planner: a registered planner (haven plugins), whose points are shaped into arcs, straights and rotations"
+    )
     check_rate_hz: float = param(5.0, "how often the path is checked for people (sim time)", POSITIVE)
     goal_interval_s: float = param(
         0.1,
@@ -57,6 +61,9 @@ class PlannerConfig:
 
     def __post_init__(self) -> None:
         check_bounds(self)
+        registered = plugins.registry("planners")
+        if self.algorithm not in registered:
+            raise ValueError(f"algorithm: {registered.unknown(self.algorithm)}")
 
 
 def world_lanes(world: World) -> tuple[Lane, ...]:
@@ -95,7 +102,7 @@ class PlannerComponent:
     def on_map(self, grid: OccupancyGridData, now: float) -> list[Message]:
         c = self.config
         if self.nav is None:
-            self.nav = Navigator(grid, c.planner, c.shape, c.navigator, c.style, self.lanes)
+            self.nav = Navigator(grid, c.planner, c.shape, c.navigator, c.style, self.lanes, planner_class(c.algorithm))
         else:
             self.nav.set_map(grid)
         self.notes.append(f"map {grid.width} x {grid.height} at {grid.resolution_m:g} m: {len(self.nav.planner.nodes)} corner nodes")

@@ -1,0 +1,38 @@
+"""What a path planner is: the plugin kind `haven.planners` (common/plugins.py).
+
+A planner is a class (or factory) taking `(grid: OccupancyGridData, params: PlannerParams)` — the
+map (ours from the world file, or any /map) and the inflation settings — whose objects answer
+`plan(start, goal) -> Plan` (`nav/planner.py`: the points from start to goal, and the length) or
+raise `PlanningError` with a one-line reason. The planner node and batch mode make one per map (and
+one per detour, on the map with the people in it), name it with the planner's `algorithm`
+parameter, and shape whatever points it returns into HAVEN's arc / straight / rotate path, so the
+cues, the controller and the metrics work the same with any planner. HAVEN's `visibility`
+(`planner.GridPlanner`: any-angle shortest paths on a visibility graph) registers as a lab's does.
+"""
+
+from __future__ import annotations
+
+import inspect
+from typing import Any, Protocol
+
+from haven_sim.common import plugins
+from haven_sim.common.geometry import Point
+from haven_sim.nav.planner import Plan
+
+DEFAULT = "visibility"
+
+
+class PathSearch(Protocol):
+    def plan(self, start: Point, goal: Point) -> Plan: ...
+
+
+def accept_plugin(name: str, value: Any) -> Any:
+    """A `haven.planners` plugin: a class or factory taking (grid, params) whose objects plan(start, goal)."""
+    if not callable(value) or (inspect.isclass(value) and not callable(getattr(value, "plan", None))):
+        raise ValueError("is not a planner: a class taking (grid, params) with a plan(start, goal) method")
+    return value
+
+
+def planner_class(name: str) -> Any:
+    """The planner registered as `name` (PluginError naming the known ones otherwise)."""
+    return plugins.registry("planners").get(name)
