@@ -42,6 +42,11 @@ setup(
             "blocker = haven_scenarios.study.participants:Blocker",
             "yielder = haven_scenarios.study.participants:Yielder",
         ],
+        "haven.missions": [
+            "fixed = haven_scenarios.study.mission_orders:Fixed",
+            "nearest = haven_scenarios.study.mission_orders:Nearest",
+            "random = haven_scenarios.study.mission_orders:Random",
+        ],
         "haven.metrics": [
             f"{name} = haven_scenarios.record.metrics:{name}"
             for name in ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people")

@@ -52,7 +52,7 @@ SCENARIO_CASES = [
     ("humans: [{id: h1}, {id: h1}]\n", "humans[1].id", "duplicate id"),
     ("condition: [[1]]\n", "condition[0]", "is no cue"),
     ("dwell_time_s: true\n", "dwell_time_s", "must be a positive number, got True"),
-    ("robot: {order: [nearest]}\n", "robot.order", "must be one of"),
+    ("robot: {order: [nearest]}\n", "robot.order", "must be the name of a mission behaviour (fixed, nearest, random)"),
     ("cues: {steps_ahead: .inf}\n", "cues", "steps_ahead"),
     ("cues: {marker_size_m: 1" + "0" * 400 + "}\n", "cues.marker_size_m", "must be a finite number"),
     ("? [1, 2]\n: x\n", "YAML syntax error at line 4", "unhashable"),

@@ -1,8 +1,8 @@
 """The mission executive: which target next, when to go and charge, what the robot is thinking.
 
 It sends goals (a room centre, a gem, the charging base), says what the robot is doing (the
-thought bubble's text), picks the next robot gem (`nearest` by planned path length, or a seeded
-`random` order, uniform, unlike HAVEN's biased shuffle), and runs HAVEN's two battery modes with
+thought bubble's text), picks the next robot gem by its mission behaviour (a plugin: `nearest` by planned path length, a
+seeded `random` order, `fixed`, or a lab's; study/mission_orders.py), and runs HAVEN's two battery modes with
 planned path lengths instead of straight lines:
 
   * `on_arrival`: before leaving for a target, if path(robot -> target) + path(target -> base),
@@ -21,17 +21,16 @@ forth for ever. (The original wiped its target list on a detour and never charge
 from __future__ import annotations
 
 import math
-import random
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from enum import Enum
 from typing import Any
 
+from haven_scenarios.study.mission_orders import MissionBehaviour, PathLength
 from haven_scenarios.study.scenario import BatteryPlan
+from haven_sim.common import plugins
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
-
-PathLength = Callable[[Point, Point], float]  # planned length, math.inf when unreachable
 
 WAITING_THOUGHT = "Waiting for you to pass"  # the thought while the robot waits for a person (participants read it)
 
@@ -72,7 +71,7 @@ class Mission:
         self,
         targets: Sequence[Target],
         path_length: PathLength,
-        order: str = "fixed",  # fixed (the given order) | nearest | random
+        order: str = "fixed",  # a mission behaviour (study/mission_orders.py): fixed (the given order) | nearest | random | a lab's
         battery: BatteryPlan | None = None,
         base: Point | None = None,
         seed: int = 0,
@@ -82,10 +81,9 @@ class Mission:
             raise ValueError("a battery mode other than 'off' needs a charging base")
         self.path_length = path_length
         self.order = order
+        self.behaviour: MissionBehaviour = plugins.registry("missions").get(order)()
         self.base = base
-        self.pending = list(targets)
-        if order == "random":
-            random.Random(seed).shuffle(self.pending)
+        self.pending = self.behaviour.arrange(targets, seed)
         self.phase = Phase.IDLE
         self.current: Target | None = None
         self.done_ids: list[str] = []
@@ -108,9 +106,8 @@ class Mission:
         candidates = [t for t in self.pending if t.id not in self.last_only] or self.pending
         if not candidates:
             return None
-        if self.order == "nearest":
-            return min(candidates, key=lambda t: self.path_length((robot.x, robot.y), t.xy))
-        return candidates[0]
+        picked: Target = self.behaviour.pick(candidates, robot, self.path_length)
+        return picked
 
     def _say(self, out: MissionOutput, text: str) -> None:
         if text != self.thought:

@@ -44,7 +44,6 @@ from haven_viz.cues import CUES, CueParams
 
 KINDS = ("hallway", "retrieval")
 TELEOP = "teleop"  # a person drives this avatar (the browser or `haven teleop`), no simulated model
-ORDERS = ("nearest", "random")
 BATTERY_MODES = ("off", "on_arrival", "continuous")
 MAX_WALKING_SPEED_MPS = 3.0
 MAX_TIMEOUT_S = 24 * 3600.0  # also the longest dwell
@@ -151,6 +150,15 @@ class _ScenarioParser:
     def fail(self, key: str, msg: str) -> ScenarioError:
         return ScenarioError(f"{file_label(self.source)}: {key}: {msg}")
 
+    def registered(self, value: Any, key: str, kind: str) -> str:
+        """The name of a registered plugin of `kind`."""
+        reg = plugins.registry(kind)
+        if not isinstance(value, str):
+            raise self.fail(key, f"must be the name of a {plugins.singular(kind)} ({', '.join(reg.names())}), got {short(value)}")
+        if value not in reg:
+            raise self.fail(key, reg.unknown(value))
+        return value
+
     def choice(self, value: Any, key: str, options: tuple[str, ...]) -> str:
         if not isinstance(value, str) or value not in options:
             raise self.fail(key, f"must be one of {', '.join(options)}, got {short(value)}")
@@ -224,7 +232,7 @@ class _ScenarioParser:
             world_path=str(world_path),
             timeout_s=self.positive(d.get("timeout_s", 300.0), "timeout_s", MAX_TIMEOUT_S),
             robot_route=route,
-            robot_order=self.choice(robot.get("order", "nearest"), "robot.order", ORDERS),
+            robot_order=self.registered(robot.get("order", "nearest"), "robot.order", "missions"),
             battery=battery,
             humans=self.humans(d.get("humans"), world),
             dwell_time_s=self.positive(d.get("dwell_time_s", 3.0), "dwell_time_s", MAX_TIMEOUT_S),

@@ -1,5 +1,5 @@
 """Plugins by name: registries of the things a lab adds (participant models, questionnaires,
-metrics, cues and path planners so far; robots and mission behaviours follow), filled from Python entry
+metrics, cues, path planners and mission behaviours so far; robots follow), filled from Python entry
 points (groups `haven.<kind>`).
 
 HAVEN's own items register exactly as a lab's package does, in its setup.py::
@@ -48,6 +48,7 @@ KINDS: dict[str, str] = {
     "metrics": "haven_scenarios.record.metrics",
     "cues": "haven_viz.cue_kind",
     "planners": "haven_sim.nav.planner_kind",
+    "missions": "haven_scenarios.study.mission_orders",
 }
 
 
