@@ -6,7 +6,7 @@ import pytest
 from geometry_msgs.msg import PoseStamped
 from rcl_interfaces.msg import Parameter as ParameterMsg
 from rcl_interfaces.msg import ParameterType, ParameterValue
-from rcl_interfaces.srv import SetParameters
+from rcl_interfaces.srv import DescribeParameters, SetParameters
 from std_msgs.msg import String
 from visualization_msgs.msg import Marker, MarkerArray
 
@@ -86,7 +86,18 @@ def test_cues_in_the_running_suite(ros):
     bad = SetParameters.Request(parameters=[ParameterMsg(name="marker_size_m", value=half)])
     future = client.call_async(bad)
     ros.spin_until(future.done, 10)
-    assert not future.result().results[0].successful and "start-up" in future.result().results[0].reason
+    assert not future.result().results[0].successful and "read-only" in future.result().results[0].reason
+    # A start-up parameter says so in its descriptor (as `ros2 param describe` shows); a toggle does not.
+    describe = ros.node.create_client(DescribeParameters, "/viz/describe_parameters")
+    assert describe.wait_for_service(timeout_sec=10)
+    future = describe.call_async(DescribeParameters.Request(names=["marker_size_m", "path_projection"]))
+    ros.spin_until(future.done, 10)
+    assert [d.read_only for d in future.result().descriptors] == [True, False]
+
+    def refusals():
+        return [e for e in map(conv.event_from_msg, events) if e.kind is EventKind.REQUEST_REFUSED]
+
+    assert ros.spin_until(refusals, 10) and refusals()[0]["name"] == "marker_size_m"  # (said in the study log)
 
 
 def test_world_markers_reach_a_late_viewer(ros):

@@ -62,6 +62,7 @@ class ComponentNode(Node):
         self.sequencer = Sequencer()
         self.component: Component | None = None
         self.add_on_set_parameters_callback(self._check_parameters)
+        self.add_pre_set_parameters_callback(self._note_read_only)
         # A /clock message from another node can make time leap far ahead and back: a timer whose
         # next call was computed from the leap would then not fire again for years. Each leap
         # (either way) restarts the timers from the time it landed on.
@@ -75,11 +76,14 @@ class ComponentNode(Node):
 
     # -- declare and configure -------------------------------------------------------------------
     def declare_config(self, cls: type[C]) -> C:
-        """Declare every parameter of a config dataclass and build the config from their values."""
+        """Declare every parameter of a config dataclass and build the config from their values. Its
+        descriptor has the declaration's range and doc, and is read-only unless the parameter is one
+        of `runtime_parameters` (`ros2 param describe` shows both)."""
         values: dict[str, Any] = {}
         described, bounded = docs(cls), bounds_of(cls)
         for name, default in defaults(cls).items():
-            descriptor = ParameterDescriptor(description=described.get(name, ""), dynamic_typing=True)
+            read_only = name not in self.runtime_parameters
+            descriptor = ParameterDescriptor(description=described.get(name, ""), dynamic_typing=True, read_only=read_only)
             span = ros_range(bounded.get(name))
             if span is not None and isinstance(default, float):
                 descriptor.floating_point_range = [FloatingPointRange(from_value=float(span[0]), to_value=float(span[1]), step=0.0)]
@@ -92,6 +96,16 @@ class ComponentNode(Node):
             # An empty list in a parameter file (`[]`) reaches the node as "not set".
             values[name] = [] if value is None and isinstance(default, list) else value
         return build(cls, values, where=f"{self.get_name()}: parameter ")
+
+    def _note_read_only(self, params: list[Parameter]) -> list[Parameter]:
+        """An attempt to set a read-only parameter (which rclpy then refuses, "Trying to set a
+        read-only parameter") is said in the log and in a `request_refused` event, like any refused change."""
+        for p in params:
+            if self.has_parameter(p.name) and self.describe_parameter(p.name).read_only:
+                reason = f"{p.name}: read at start-up only (read-only); restart the node to change it"
+                self.get_logger().warning(f"refused to set {reason}", throttle_duration_sec=2.0)
+                self.emit([self.refused_request("parameter", p.name, reason)])
+        return params
 
     def _check_parameters(self, params: list[Parameter]) -> SetParametersResult:
         """Only `runtime_parameters` (the cue toggles: the study condition) change while a node runs;
