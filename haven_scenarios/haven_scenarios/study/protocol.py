@@ -31,20 +31,18 @@ from __future__ import annotations
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Annotated, Any, Literal
 
 from haven_scenarios.record.session import check_name
 from haven_scenarios.run.trial import SEED_MAX, parse_condition
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
+from haven_sim.common.schema import FileModel, Whole, check, checked, listing, mapping
 from haven_sim.common.yaml_file import file_label, read_yaml, short, shown_key
 
-DESIGNS = ("williams", "latin", "full", "none")
-SEED_POLICIES = ("fixed", "per_participant", "per_trial")
 MAX_PARTICIPANTS = 999
 MAX_REPETITIONS = 100
 MAX_CONDITIONS = 12  # `full` on more would be 12! orders
-TOP = ("name", "scenarios", "conditions", "participants", "repetitions", "counterbalancing", "practice", "seeds", "questionnaires")
 
 
 class StudyError(ValueError):
@@ -127,11 +125,45 @@ def load_study(spec: str | Path) -> Study:
 
 def parse_study(data: Any, source: str) -> Study:
     """A study from its YAML tree; `source` names the file in errors."""
-    return _StudyParser(source).study(data)
+    return _StudyParser(source).study(check(StudyFile, data, source, StudyError, "study file"))
+
+
+class Seeds(FileModel):
+    policy: Literal["fixed", "per_participant", "per_trial"] = "per_participant"
+    base: Whole(0, SEED_MAX) = 0  # type: ignore[valid-type]
+
+
+class PracticeTrial(FileModel):
+    scenario: str
+    condition: str
+
+
+def _participants(v: Any) -> Any:
+    if isinstance(v, int) and not isinstance(v, bool):
+        if not 1 <= v <= MAX_PARTICIPANTS:
+            raise ValueError(f"must be a whole number 1..{MAX_PARTICIPANTS}, got {v}")
+        return v
+    if not isinstance(v, list) or not v or len(v) > MAX_PARTICIPANTS:
+        raise ValueError(f"must be a count (1..{MAX_PARTICIPANTS}) or a list of participant ids, got {short(v)}")
+    return v
+
+
+class StudyFile(FileModel):
+    """A study file's shape (the module docstring shows one)."""
+
+    name: str
+    scenarios: Annotated[list[Any], listing("a non-empty list of scenarios")]
+    conditions: Annotated[dict[Any, Any], mapping("a mapping of condition name to its cue list, e.g. {none: [none], all: [all]}")]
+    participants: Annotated[int | list[Any], checked(_participants)]
+    repetitions: Whole(1, MAX_REPETITIONS) = 1  # type: ignore[valid-type]
+    counterbalancing: Literal["williams", "latin", "full", "none"] = "williams"
+    practice: Annotated[list[PracticeTrial], listing("a list of {scenario: S, condition: C}", non_empty=False)] = []
+    seeds: Seeds | None = None
+    questionnaires: Annotated[list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)] = []
 
 
 class _StudyParser:
-    """Reads the raw YAML tree; every error names the file and the key in one line."""
+    """What a study file says beyond its shape: every error names the file and the key in one line."""
 
     def __init__(self, source: str) -> None:
         self.source = source
@@ -139,44 +171,28 @@ class _StudyParser:
     def fail(self, key: str, msg: str) -> StudyError:
         return StudyError(f"{file_label(self.source)}: {key}: {msg}")
 
-    def whole(self, value: Any, key: str, low: int, high: int) -> int:
-        if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
-            raise self.fail(key, f"must be a whole number {low}..{high}, got {short(value)}")
-        return value
-
     def name(self, value: Any, key: str) -> str:
         try:
             return check_name(value, key)
         except ValueError as e:
             raise self.fail(key, str(e).removeprefix(f"{key}: ")) from None
 
-    def study(self, data: Any) -> Study:
-        if not isinstance(data, dict):
-            raise self.fail("name", "the study file must be a mapping")
-        unknown = sorted(shown_key(k) for k in data if k not in TOP)
-        if unknown:
-            raise self.fail(unknown[0], f"unknown key (allowed: {', '.join(TOP)})")
-        for key in ("name", "scenarios", "conditions", "participants"):
-            if key not in data:
-                raise self.fail(key, "is required")
-        scenarios, conditions = self.scenarios(data["scenarios"]), self.conditions(data["conditions"])
-        design = data.get("counterbalancing", "williams")
-        if design not in DESIGNS:
-            raise self.fail("counterbalancing", f"must be one of {', '.join(DESIGNS)}, got {short(design)}")
-        if design == "full" and len(conditions) > 8:
+    def study(self, f: StudyFile) -> Study:
+        scenarios, conditions = self.scenarios(f.scenarios), self.conditions(f.conditions)
+        if f.counterbalancing == "full" and len(conditions) > 8:
             raise self.fail("counterbalancing", f"full: {len(conditions)} conditions have too many orders; use williams")
-        policy, base = self.seeds(data.get("seeds"))
+        seeds = f.seeds or Seeds()
         return Study(
-            name=self.name(data["name"], "name"),
+            name=self.name(f.name, "name"),
             scenarios=scenarios,
             conditions=conditions,
-            participants=self.participants(data["participants"]),
-            repetitions=self.whole(data.get("repetitions", 1), "repetitions", 1, MAX_REPETITIONS),
-            counterbalancing=design,
-            practice=self.practice(data.get("practice"), scenarios, conditions),
-            seed_policy=policy,
-            seed_base=base,
-            questionnaires=self.questionnaires(data.get("questionnaires")),
+            participants=self.participants(f.participants),
+            repetitions=f.repetitions,
+            counterbalancing=f.counterbalancing,
+            practice=self.practice(f.practice, scenarios, conditions),
+            seed_policy=seeds.policy,
+            seed_base=seeds.base,
+            questionnaires=self.questionnaires(f.questionnaires),
             source=self.source,
         )
 
@@ -193,9 +209,7 @@ class _StudyParser:
             raise self.fail(key, str(e)) from None
         return StudyScenario(spec, self.name(scenario.name, f"{key} (its name)"))
 
-    def scenarios(self, value: Any) -> tuple[StudyScenario, ...]:
-        if not isinstance(value, list) or not value:
-            raise self.fail("scenarios", f"must be a non-empty list of scenarios, got {short(value)}")
+    def scenarios(self, value: list[Any]) -> tuple[StudyScenario, ...]:
         out = tuple(self.scenario(v, f"scenarios[{i}]") for i, v in enumerate(value))
         names = [s.name for s in out]
         for i, n in enumerate(names):
@@ -203,9 +217,7 @@ class _StudyParser:
                 raise self.fail(f"scenarios[{i}]", f"scenario {n!r} is listed twice")
         return out
 
-    def conditions(self, value: Any) -> tuple[Condition, ...]:
-        if not isinstance(value, dict) or not value:
-            raise self.fail("conditions", "must be a mapping of condition name to its cue list, e.g. {none: [none], all: [all]}")
+    def conditions(self, value: dict[Any, Any]) -> tuple[Condition, ...]:
         if len(value) > MAX_CONDITIONS:
             raise self.fail("conditions", f"at most {MAX_CONDITIONS} conditions, got {len(value)}")
         out: list[Condition] = []
@@ -227,52 +239,29 @@ class _StudyParser:
             out.append(Condition(name, tuple(cues)))
         return tuple(out)
 
-    def participants(self, value: Any) -> tuple[str, ...]:
-        if isinstance(value, int) and not isinstance(value, bool):
-            n = self.whole(value, "participants", 1, MAX_PARTICIPANTS)
-            width = max(2, len(str(n)))
-            return tuple(f"p{k:0{width}d}" for k in range(1, n + 1))
-        if not isinstance(value, list) or not value or len(value) > MAX_PARTICIPANTS:
-            raise self.fail("participants", f"must be a count (1..{MAX_PARTICIPANTS}) or a list of participant ids, got {short(value)}")
+    def participants(self, value: int | list[Any]) -> tuple[str, ...]:
+        if isinstance(value, int):
+            width = max(2, len(str(value)))
+            return tuple(f"p{k:0{width}d}" for k in range(1, value + 1))
         ids = tuple(self.name(v, f"participants[{i}]") for i, v in enumerate(value))
         for i, p in enumerate(ids):
             if p in ids[:i]:
                 raise self.fail(f"participants[{i}]", f"participant {p!r} is listed twice")
         return ids
 
-    def practice(self, value: Any, scenarios: tuple[StudyScenario, ...], conditions: tuple[Condition, ...]) -> tuple[Practice, ...]:
-        if value is None:
-            return ()
-        if not isinstance(value, list):
-            raise self.fail("practice", f"must be a list of {{scenario: S, condition: C}}, got {short(value)}")
+    def practice(self, value: list[PracticeTrial], scenarios: tuple[StudyScenario, ...], conditions: tuple[Condition, ...]) -> tuple[Practice, ...]:
         by_name = {c.name: c for c in conditions}
+        listed = {s.name: s for s in scenarios}
         out = []
         for i, p in enumerate(value):
             key = f"practice[{i}]"
-            if not isinstance(p, dict) or set(p) != {"scenario", "condition"}:
-                raise self.fail(key, f"must be a mapping {{scenario: S, condition: C}}, got {short(p)}")
-            if p["condition"] not in by_name:
-                raise self.fail(f"{key}.condition", f"names no condition of the study ({', '.join(by_name)}), got {short(p['condition'])}")
-            listed = {s.name: s for s in scenarios}
-            scenario = listed.get(p["scenario"]) or self.scenario(p["scenario"], f"{key}.scenario")
-            out.append(Practice(scenario, by_name[p["condition"]]))
+            if p.condition not in by_name:
+                raise self.fail(f"{key}.condition", f"names no condition of the study ({', '.join(by_name)}), got {short(p.condition)}")
+            scenario = listed.get(p.scenario) or self.scenario(p.scenario, f"{key}.scenario")
+            out.append(Practice(scenario, by_name[p.condition]))
         return tuple(out)
 
-    def seeds(self, value: Any) -> tuple[str, int]:
-        if value is None:
-            return "per_participant", 0
-        if not isinstance(value, dict) or set(value) - {"policy", "base"}:
-            raise self.fail("seeds", f"must be a mapping {{policy: P, base: N}}, got {short(value)}")
-        policy = value.get("policy", "per_participant")
-        if policy not in SEED_POLICIES:
-            raise self.fail("seeds.policy", f"must be one of {', '.join(SEED_POLICIES)}, got {short(policy)}")
-        return policy, self.whole(value.get("base", 0), "seeds.base", 0, SEED_MAX)
-
-    def questionnaires(self, value: Any) -> tuple[Any, ...]:
-        if value is None:
-            return ()
-        if not isinstance(value, list):
-            raise self.fail("questionnaires", "must be a list of built-in names (nasa_tlx, godspeed) and Likert mappings")
+    def questionnaires(self, value: list[Any]) -> tuple[Any, ...]:
         try:
             resolve(value, "questionnaires")
         except ValueError as e:
