@@ -60,7 +60,10 @@ def test_answers_off_the_scale_are_refused_in_one_line(answers: object, message:
         ([{"name": "x", "points": 1, "items": [{"id": "a", "text": "x"}]}], r"q\[0\]\.points: must be a whole number 2\.\.11"),
         ([{"name": "x", "items": []}], r"q\[0\]\.items: must be a list of 1\.\.100"),
         ([{"name": "x", "items": [{"id": "a", "text": "x"}, {"id": "a", "text": "y"}]}], "item ids must differ"),
-        ([{"name": "x", "colour": 1, "items": [{"id": "a", "text": "x"}]}], "unknown key 'colour'"),
+        (
+            [{"name": "x", "colour": 1, "items": [{"id": "a", "text": "x"}]}],
+            r"q\[0\]\.colour: unknown key \(allowed: name, title, instructions, points, anchors, items\)",
+        ),
         (["godspeed", "godspeed"], "named twice"),
         ([3], "must be a registered questionnaire.s name or a mapping"),
         # YAML reads `anchors: [No, Yes]` as booleans
@@ -97,6 +100,6 @@ def test_a_plugin_questionnaire_is_a_likert_mapping_or_a_questionnaire_under_its
     assert reg.names() == ["tlx_again", "trust"]
     assert reg.get("trust").name == "trust" and reg.get("trust").maximum == 5 and reg.get("tlx_again").items == TLX.items
     assert reg.problems == [
-        "haven.questionnaires broken (lab.q:BROKEN, from lab_q): questionnaire broken: items: must be a list of 1..100 items",
+        "haven.questionnaires broken (lab.q:BROKEN, from lab_q): questionnaire broken: items: must be a list of 1..100 items, got []",
         "haven.questionnaires number (lab.q:N, from lab_q): is neither a Questionnaire nor a mapping of Likert items (title, points, anchors, items)",
     ]

@@ -38,9 +38,12 @@ from __future__ import annotations
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
-from typing import Any
+from typing import Annotated, Any
+
+from pydantic import Field, ValidationError
 
 from haven_sim.common import plugins
+from haven_sim.common.schema import FileModel, Whole, checked, listing, problem
 from haven_sim.common.yaml_file import short
 
 ANSWERS_FILE = "questionnaires.json"
@@ -136,18 +139,49 @@ def registered() -> dict[str, Questionnaire]:
     return {p.name: p.value for p in plugins.registry("questionnaires")}
 
 
-def _text(value: Any, where: str, limit: int = MAX_TEXT) -> str:
-    if isinstance(value, (bool, int, float)):  # YAML reads Yes, No, On, Off as booleans, 5 as a number
-        raise ValueError(f'{where}: must be text, got {short(value)} (put the words in quotes: "Yes")')
-    if not isinstance(value, str) or not value.strip() or len(value) > limit or "\n" in value.strip():
-        raise ValueError(f"{where}: must be one line of text (at most {limit} characters)")
-    return value.strip()
+def _text(limit: int) -> Any:
+    """One line of text of at most `limit` characters, stripped (a YAML Yes, No or 5 is refused)."""
+
+    def check(value: Any) -> str:
+        if isinstance(value, (bool, int, float)):  # YAML reads Yes, No, On, Off as booleans, 5 as a number
+            raise ValueError(f'must be text, got {short(value)} (put the words in quotes: "Yes")')
+        if not isinstance(value, str) or not value.strip() or len(value) > limit or "\n" in value.strip():
+            raise ValueError(f"must be one line of text (at most {limit} characters)")
+        return value.strip()
+
+    return Annotated[str, checked(check)]
 
 
-def _name(value: Any, where: str) -> str:
+def _name(value: Any) -> Any:
     if not isinstance(value, str) or not NAME.fullmatch(value):
-        raise ValueError(f"{where}: must be a name of letters, digits and _ (at most 40), got {str(value)[:50]!r}")
+        raise ValueError(f"must be a name of letters, digits and _ (at most 40), got {str(value)[:50]!r}")
     return value
+
+
+def _anchors(value: Any) -> Any:
+    if not isinstance(value, list) or len(value) != 2:
+        raise ValueError("must be a list of two labels [low, high]")
+    return value
+
+
+Name = Annotated[str, checked(_name)]
+
+
+class LikertItem(FileModel):
+    id: Name
+    text: _text(MAX_TEXT)  # type: ignore[valid-type]
+    reverse: bool = False
+
+
+class LikertFile(FileModel):
+    """A study's own Likert questionnaire (the module docstring shows one)."""
+
+    name: Name
+    title: _text(80) | None = None  # type: ignore[valid-type]
+    instructions: _text(MAX_TEXT) = "How much do you agree with each statement?"  # type: ignore[valid-type]
+    points: Whole(2, 11) = 7  # type: ignore[valid-type]
+    anchors: Annotated[list[_text(60)], checked(_anchors)] = ["Strongly disagree", "Strongly agree"]  # type: ignore[valid-type]
+    items: Annotated[list[LikertItem], listing(f"a list of 1..{MAX_ITEMS} items"), Field(max_length=MAX_ITEMS)]
 
 
 def _at(where: str, key: str) -> str:
@@ -159,41 +193,18 @@ def likert(spec: Mapping[str, Any], where: str, registered: bool = True) -> Ques
     """A study's own Likert questionnaire from its mapping (see the module docstring); ValueError
     with one line naming `where` (a key path, or a file's label ending in ':') and the key.
     `registered`: its name may not be one a plugin has (a study's own must be told apart)."""
-    allowed = {"name", "title", "instructions", "points", "anchors", "items"}
-    extra = sorted(map(str, set(spec) - allowed))
-    if extra:
-        raise ValueError(f"{where.rstrip(':')}: unknown key {extra[0][:40]!r} (keys: {', '.join(sorted(allowed))})")
-    name = _name(spec.get("name"), _at(where, "name"))
-    if registered and name in plugins.registry("questionnaires"):
-        raise ValueError(f"{_at(where, 'name')}: {name!r} is a registered questionnaire (haven plugins); name yours otherwise")
-    points = spec.get("points", 7)
-    if isinstance(points, bool) or not isinstance(points, int) or not 2 <= points <= 11:
-        raise ValueError(f"{_at(where, 'points')}: must be a whole number 2..11, got {repr(points)[:50]}")
-    anchors = spec.get("anchors", ["Strongly disagree", "Strongly agree"])
-    if not isinstance(anchors, list) or len(anchors) != 2:
-        raise ValueError(f"{_at(where, 'anchors')}: must be a list of two labels [low, high]")
-    low, high = (_text(a, _at(where, "anchors"), 60) for a in anchors)
-    raw = spec.get("items")
-    if not isinstance(raw, list) or not 1 <= len(raw) <= MAX_ITEMS:
-        raise ValueError(f"{_at(where, 'items')}: must be a list of 1..{MAX_ITEMS} items")
-    items: list[Item] = []
-    for k, it in enumerate(raw):
-        at = _at(where, f"items[{k}]")
-        if not isinstance(it, dict):
-            raise ValueError(f"{at}: must be a mapping with id, text and optionally reverse")
-        unknown = sorted(map(str, set(it) - {"id", "text", "reverse"}))
-        if unknown:
-            raise ValueError(f"{at}: unknown key {unknown[0][:40]!r} (keys: id, text, reverse)")
-        reverse = it.get("reverse", False)
-        if not isinstance(reverse, bool):
-            raise ValueError(f"{at}.reverse: must be true or false")
-        items.append(Item(_name(it.get("id"), f"{at}.id"), _text(it.get("text"), f"{at}.text"), low, high, reverse))
+    try:
+        f = LikertFile.model_validate(spec)
+    except ValidationError as e:
+        raise ValueError(_at(where, problem(LikertFile, e))) from None
+    if registered and f.name in plugins.registry("questionnaires"):
+        raise ValueError(f"{_at(where, 'name')}: {f.name!r} is a registered questionnaire (haven plugins); name yours otherwise")
+    low, high = f.anchors
+    items = tuple(Item(i.id, i.text, low, high, i.reverse) for i in f.items)
     ids = [i.id for i in items]
     if len(set(ids)) != len(ids):
         raise ValueError(f"{_at(where, 'items')}: item ids must differ")
-    title = _text(spec.get("title", name), _at(where, "title"), 80)
-    instructions = _text(spec.get("instructions", "How much do you agree with each statement?"), _at(where, "instructions"))
-    return Questionnaire(name, title, instructions, 1, points, 1, tuple(items), ((name, tuple(ids)),))
+    return Questionnaire(f.name, f.title or f.name, f.instructions, 1, f.points, 1, items, ((f.name, tuple(ids)),))
 
 
 def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
