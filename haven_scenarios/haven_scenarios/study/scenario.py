@@ -32,19 +32,18 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields
 from importlib import resources
 from pathlib import Path
-from typing import Any
+from typing import Annotated, Any, Literal
 
 from haven_scenarios.study.person import PersonParams
 from haven_sim.common import plugins
 from haven_sim.common.params import build
+from haven_sim.common.schema import FileModel, Line, Positive, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, one_line, read_yaml, short, shown_key
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_file import load_world
 from haven_viz.cues import CUES, CueParams
 
-KINDS = ("hallway", "retrieval")
 TELEOP = "teleop"  # a person drives this avatar (the browser or `haven teleop`), no simulated model
-BATTERY_MODES = ("off", "on_arrival", "continuous")
 MAX_WALKING_SPEED_MPS = 3.0
 MAX_TIMEOUT_S = 24 * 3600.0  # also the longest dwell
 MAX_NAME_CHARS = 64
@@ -136,13 +135,49 @@ def load_scenario(spec: str | Path, world: str | None = None) -> Scenario:
 
 def parse_scenario(data: Any, source: str) -> Scenario:
     """A scenario from its YAML tree (`source`: the file, for messages and to find a relative world)."""
-    return _ScenarioParser(source).scenario(data)
+    return _ScenarioParser(source).scenario(check(ScenarioFile, data, source, ScenarioError, "scenario file"))
+
+
+class BatteryFile(FileModel):
+    mode: Annotated[Literal["off", "on_arrival", "continuous"], checked(lambda v: "off" if v is False else v)] = "off"  # (YAML reads `off` as false)
+    capacity_m: Positive() = 100.0  # type: ignore[valid-type]
+    charge_until: Positive() = 1.0  # type: ignore[valid-type]
+    safety_factor: Positive() = 1.2  # type: ignore[valid-type]
+
+
+class RobotFile(FileModel):
+    route: Any = None  # room names of the world
+    order: Any = "nearest"  # a mission behaviour
+    battery: BatteryFile | None = None
+
+
+class HumanFile(FileModel):
+    id: Any  # a human of the world
+    model: Any = "walker"  # a participant model, or teleop
+    route: Any = None  # room names of the world
+    speed_mps: Positive() = 1.0  # type: ignore[valid-type]
+    params: dict[Any, Any] | None = None  # PersonParams fields
+
+
+class ScenarioFile(FileModel):
+    """A scenario file's shape (the module docstring shows one); what it names is checked against
+    its world and the registries as it is read."""
+
+    name: Line(MAX_NAME_CHARS)  # type: ignore[valid-type]
+    world: Line(4096)  # type: ignore[valid-type]
+    kind: Literal["hallway", "retrieval"]
+    timeout_s: Positive(MAX_TIMEOUT_S) = 300.0  # type: ignore[valid-type]
+    end_on_contact: bool = False
+    condition: Annotated[list[Any], listing("a list of cue names (or [all] / [none])")] = ["all"]
+    cues: dict[Any, Any] | None = None  # CueParams fields
+    robot: RobotFile | None = None
+    humans: Annotated[list[HumanFile], listing("a list", non_empty=False)] | None = None
+    dwell_time_s: Positive(MAX_TIMEOUT_S) = 3.0  # type: ignore[valid-type]
 
 
 class _ScenarioParser:
-    """Reads the raw YAML tree; every error names the file and the key in one line."""
-
-    TOP = ("name", "world", "kind", "timeout_s", "end_on_contact", "condition", "cues", "robot", "humans", "dwell_time_s")
+    """What a scenario file names, checked against its world and the registries; every error
+    names the file and the key in one line."""
 
     def __init__(self, source: str) -> None:
         self.source = source
@@ -159,37 +194,11 @@ class _ScenarioParser:
             raise self.fail(key, reg.unknown(value))
         return value
 
-    def choice(self, value: Any, key: str, options: tuple[str, ...]) -> str:
-        if not isinstance(value, str) or value not in options:
-            raise self.fail(key, f"must be one of {', '.join(options)}, got {short(value)}")
-        return value
-
-    def line(self, d: dict[str, Any], key: str, limit: int) -> str:
-        """A required one-line string of at most `limit` characters."""
-        if key not in d:
-            raise self.fail(key, "is required")
-        value = d[key]
-        if not isinstance(value, str) or not value or not value.isprintable() or len(value) > limit:
-            raise self.fail(key, f"must be a non-empty line of at most {limit} characters, got {short(value)}")
-        return value
-
-    def positive(self, value: Any, key: str, limit: float = float("inf")) -> float:
-        f = finite(value)
-        if f is None or not f > 0:
-            raise self.fail(key, f"must be a positive number, got {short(value)}")
-        if f > limit:
-            raise self.fail(key, f"must be at most {limit:g}, got {f:g}")
-        return f
-
-    def mapping(self, value: Any, key: str, allowed: tuple[str, ...]) -> dict[str, Any]:
-        if value is None:
-            return {}
-        if not isinstance(value, dict):
-            raise self.fail(key, f"must be a mapping, got {type(value).__name__}")
-        unknown = sorted(shown_key(k) for k in value if k not in allowed)
+    def mapping(self, value: dict[Any, Any] | None, key: str, allowed: tuple[str, ...]) -> dict[str, Any]:
+        unknown = sorted(shown_key(k) for k in value or {} if k not in allowed)
         if unknown:
-            raise self.fail(f"{key}.{unknown[0]}" if key else unknown[0], f"unknown key (allowed: {', '.join(sorted(allowed))})")
-        return value
+            raise self.fail(f"{key}.{unknown[0]}", f"unknown key (allowed: {', '.join(sorted(allowed))})")
+        return dict(value or {})
 
     def names(self, value: Any, key: str, known: set[str], what: str) -> tuple[str, ...]:
         """A list of names from `known` (rooms of the world)."""
@@ -202,56 +211,43 @@ class _ScenarioParser:
                 raise self.fail(f"{key}[{i}]", f"names no {what} of the world (known: {_listing(known)}), got {short(name)}")
         return tuple(value)
 
-    def scenario(self, data: Any) -> Scenario:
-        d = self.mapping(data, "", self.TOP) if isinstance(data, dict) else None
-        if d is None:
-            raise self.fail("name", "the scenario file must be a mapping")
-        name, spec = self.line(d, "name", MAX_NAME_CHARS), self.line(d, "world", 4096)
-        if "kind" not in d:
-            raise self.fail("kind", "is required")
-        kind = self.choice(d["kind"], "kind", KINDS)
-        world_path = resolve_world(spec, Path(self.source).parent)
+    def scenario(self, f: ScenarioFile) -> Scenario:
+        world_path = resolve_world(f.world, Path(self.source).parent)
         try:
             world = load_world(world_path)
         except WorldError as e:
             raise self.fail("world", str(e)) from None
-        robot = self.mapping(d.get("robot"), "robot", ("route", "order", "battery"))
-        route = self.names(robot.get("route"), "robot.route", {r.name for r in world.rooms}, "room")
-        if kind == "hallway" and not route:
+        robot = f.robot or RobotFile()
+        route = self.names(robot.route, "robot.route", {r.name for r in world.rooms}, "room")
+        if f.kind == "hallway" and not route:
             raise self.fail("robot.route", "a hallway scenario needs the robot's room route")
-        if kind == "retrieval" and not [g for g in world.gems if g.owner == "robot"]:
+        if f.kind == "retrieval" and not [g for g in world.gems if g.owner == "robot"]:
             raise self.fail("world", f"world '{world.name}' has no robot gems to retrieve")
-        end_on_contact = d.get("end_on_contact", False)
-        if not isinstance(end_on_contact, bool):
-            raise self.fail("end_on_contact", f"must be true or false, got {short(end_on_contact)}")
-        battery = self.battery(robot.get("battery"), world)
         return Scenario(
-            name=name,
-            kind=kind,
+            name=f.name,
+            kind=f.kind,
             world=world,
             world_path=str(world_path),
-            timeout_s=self.positive(d.get("timeout_s", 300.0), "timeout_s", MAX_TIMEOUT_S),
+            timeout_s=f.timeout_s,
             robot_route=route,
-            robot_order=self.registered(robot.get("order", "nearest"), "robot.order", "missions"),
-            battery=battery,
-            humans=self.humans(d.get("humans"), world),
-            dwell_time_s=self.positive(d.get("dwell_time_s", 3.0), "dwell_time_s", MAX_TIMEOUT_S),
-            end_on_contact=end_on_contact,
-            condition=self.condition(d.get("condition", ["all"])),
-            cues=self.cues(d.get("cues")),
+            robot_order=self.registered(robot.order, "robot.order", "missions"),
+            battery=self.battery(robot.battery or BatteryFile(), world),
+            humans=self.humans(f.humans, world),
+            dwell_time_s=f.dwell_time_s,
+            end_on_contact=f.end_on_contact,
+            condition=self.condition(f.condition),
+            cues=self.cues(f.cues),
             source=self.source,
         )
 
-    def condition(self, value: Any) -> tuple[str, ...]:
+    def condition(self, value: list[Any]) -> tuple[str, ...]:
         known = (*CUES, "all", "none")
-        if not isinstance(value, list) or not value:
-            raise self.fail("condition", f"must be a list of cue names (or [all] / [none]), got {short(value)}")
         for i, name in enumerate(value):
             if name not in known:
                 raise self.fail(f"condition[{i}]", f"is no cue (known: {', '.join(known)}), got {short(name)}")
         return tuple(value)
 
-    def cues(self, value: Any) -> CueParams:
+    def cues(self, value: dict[Any, Any] | None) -> CueParams:
         known = tuple(f.name for f in fields(CueParams))
         values = self.mapping(value, "cues", known)
         for name, v in values.items():  # an integer beyond a float's range (build would overflow converting it)
@@ -262,50 +258,35 @@ class _ScenarioParser:
         except ValueError as e:
             raise self.fail("cues", str(e).removeprefix("cues.")) from None
 
-    def battery(self, value: Any, world: World) -> BatteryPlan:
-        b = self.mapping(value, "robot.battery", ("mode", "capacity_m", "charge_until", "safety_factor"))
-        mode = b.get("mode", "off")
-        plan = BatteryPlan(
-            mode=self.choice("off" if mode is False else mode, "robot.battery.mode", BATTERY_MODES),  # YAML reads `off` as false
-            capacity_m=self.positive(b.get("capacity_m", 100.0), "robot.battery.capacity_m"),
-            charge_until=self.positive(b.get("charge_until", 1.0), "robot.battery.charge_until"),
-            safety_factor=self.positive(b.get("safety_factor", 1.2), "robot.battery.safety_factor"),
-        )
-        if plan.charge_until > 1.0:
-            raise self.fail("robot.battery.charge_until", f"must be at most 1 (a full battery), got {plan.charge_until:g}")
-        if plan.mode != "off" and world.charging_base is None:
+    def battery(self, b: BatteryFile, world: World) -> BatteryPlan:
+        if b.charge_until > 1.0:
+            raise self.fail("robot.battery.charge_until", f"must be at most 1 (a full battery), got {b.charge_until:g}")
+        if b.mode != "off" and world.charging_base is None:
             raise self.fail("robot.battery.mode", f"needs a charging_base in world '{world.name}'")
-        return plan
+        return BatteryPlan(b.mode, b.capacity_m, b.charge_until, b.safety_factor)
 
-    def humans(self, value: Any, world: World) -> tuple[HumanTask, ...]:
-        if value is None:
-            return ()
-        if not isinstance(value, list):
-            raise self.fail("humans", f"must be a list, got {type(value).__name__}")
+    def humans(self, value: list[HumanFile] | None, world: World) -> tuple[HumanTask, ...]:
         known = {h.id for h in world.humans}
         rooms = {r.name for r in world.rooms}
         out: list[HumanTask] = []
-        for i, h in enumerate(value):
+        for i, m in enumerate(value or ()):
             key = f"humans[{i}]"
-            m = self.mapping(h, key, ("id", "model", "route", "speed_mps", "params"))
-            if "id" not in m:
-                raise self.fail(f"{key}.id", "is required")
-            if not isinstance(m["id"], str) or m["id"] not in known:
-                raise self.fail(f"{key}.id", f"names no human of world '{world.name}' (humans: {_listing(known)}), got {short(m['id'])}")
-            if m["id"] in {t.id for t in out}:
-                raise self.fail(f"{key}.id", f"duplicate id {short(m['id'])}")
-            speed = self.positive(m.get("speed_mps", 1.0), f"{key}.speed_mps")
-            if speed > MAX_WALKING_SPEED_MPS:
-                raise self.fail(f"{key}.speed_mps", f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {speed:g}")
-            route = self.names(m.get("route"), f"{key}.route", rooms, "room")
+            if not isinstance(m.id, str) or m.id not in known:
+                raise self.fail(f"{key}.id", f"names no human of world '{world.name}' (humans: {_listing(known)}), got {short(m.id)}")
+            if m.id in {t.id for t in out}:
+                raise self.fail(f"{key}.id", f"duplicate id {short(m.id)}")
+            if m.speed_mps > MAX_WALKING_SPEED_MPS:
+                raise self.fail(f"{key}.speed_mps", f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {m.speed_mps:g}")
+            route = self.names(m.route, f"{key}.route", rooms, "room")
             models = plugins.registry("participants")
-            if isinstance(m.get("model"), str) and m["model"] in models.left_out:
-                raise self.fail(f"{key}.model", models.unknown(m["model"]))
-            model = self.choice(m.get("model", "walker"), f"{key}.model", (*models.names(), TELEOP))
-            out.append(HumanTask(m["id"], model, route, speed, self.person(m.get("params"), f"{key}.params")))
+            if isinstance(m.model, str) and m.model in models.left_out:
+                raise self.fail(f"{key}.model", models.unknown(m.model))
+            if m.model not in (*models.names(), TELEOP):
+                raise self.fail(f"{key}.model", f"must be one of {', '.join((*models.names(), TELEOP))}, got {short(m.model)}")
+            out.append(HumanTask(m.id, m.model, route, m.speed_mps, self.person(m.params, f"{key}.params")))
         return tuple(out)
 
-    def person(self, value: Any, key: str) -> PersonParams:
+    def person(self, value: dict[Any, Any] | None, key: str) -> PersonParams:
         """A person's `params`: numbers for `PersonParams` fields, checked in range."""
         values = self.mapping(value, key, tuple(f.name for f in fields(PersonParams)))
         for name, v in values.items():

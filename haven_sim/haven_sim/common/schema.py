@@ -4,7 +4,7 @@ its guards: size, nesting, aliases, keys given twice) and turns the first proble
 users know, `file: key: problem`. A model also gives the file's JSON Schema (`haven schema`), which
 YAML editors use for completion and checking as the file is written.
 
-Types with our own wording (`Whole`, `Name`, `listing`) check in one step so the message says
+Types with our own wording (`Whole`, `Positive`, `Line`, `listing`, `mapping`) check in one step so the message says
 what is wanted ("must be a whole number 1..999, got 0"); a validator that raises ValueError has
 its message used as it is. Checks that need more than the file (a scenario file to load, a cue
 to look up) stay with the code that reads the model.
@@ -12,12 +12,13 @@ to look up) stay with the code that reads the model.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from typing import Annotated, Any, TypeVar, get_args, get_origin
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, ValidationError
 
-from haven_sim.common.yaml_file import file_label, short, shown_key
+from haven_sim.common.yaml_file import file_label, finite, short, shown_key
 
 M = TypeVar("M", bound=BaseModel)
 
@@ -37,6 +38,31 @@ def Whole(low: int, high: int) -> Any:  # noqa: N802 - (a type)
         return v
 
     return Annotated[int, Field(ge=low, le=high), BeforeValidator(check)]  # (this order: the JSON Schema has the range)
+
+
+def Positive(limit: float = math.inf) -> Any:  # noqa: N802 - (a type)
+    """A finite number above 0 and at most `limit` (an int is taken as a float; not a bool)."""
+
+    def check(v: Any) -> float:
+        f = finite(v)
+        if f is None or not f > 0:
+            raise ValueError(f"must be a positive number, got {short(v)}")
+        if f > limit:
+            raise ValueError(f"must be at most {limit:g}, got {f:g}")
+        return f
+
+    return Annotated[float, Field(gt=0, le=limit) if math.isfinite(limit) else Field(gt=0), BeforeValidator(check)]
+
+
+def Line(limit: int) -> Any:  # noqa: N802 - (a type)
+    """A non-empty line of printable text of at most `limit` characters."""
+
+    def check(v: Any) -> str:
+        if not isinstance(v, str) or not v or not v.isprintable() or len(v) > limit:
+            raise ValueError(f"must be a non-empty line of at most {limit} characters, got {short(v)}")
+        return v
+
+    return Annotated[str, Field(max_length=limit), BeforeValidator(check)]
 
 
 def listing(what: str, non_empty: bool = True) -> BeforeValidator:
