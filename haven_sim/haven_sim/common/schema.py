@@ -135,6 +135,8 @@ def problem(model: type[BaseModel], e: ValidationError) -> str:
 def _key(loc: tuple[Any, ...]) -> str:
     out = ""
     for part in loc:
+        if isinstance(part, str) and "[" in part:  # (a member of a union, as pydantic tags it)
+            continue
         if isinstance(part, int):
             out += f"[{part}]"
         else:

@@ -34,11 +34,12 @@ from __future__ import annotations
 import math
 import re
 from pathlib import Path
-from typing import Any
+from typing import Annotated, Any, Literal
 
 from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
 from haven_sim.common.geometry import Point, Pose2D, polygon_area, segment_to_polygon
-from haven_sim.common.yaml_file import file_label, finite, read_yaml, short, shown_key
+from haven_sim.common.schema import FileModel, Line, check, checked, listing
+from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
 from haven_sim.sim.world import (
     ChargingBase,
     Gem,
@@ -52,7 +53,6 @@ from haven_sim.sim.world import (
 )
 from haven_sim.sim.world_checks import MAX_COORDINATE_M, MAX_EXTENT_M, MAX_POLYGON_VERTICES, overlapping_shape, polygon_problem, span_problem
 
-GEM_OWNERS = ("robot", "human")
 _ID_RE = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
 MAX_NAME_CHARS = 64
 
@@ -67,11 +67,116 @@ def load_world(path: str | Path) -> World:
 
 
 def parse_world(data: Any, source: str = "<world>") -> World:
-    return _Parser(source).world(data)
+    if data is None:
+        raise WorldError(f"{file_label(source)}: name: the world file is empty")
+    return _Parser(source).world(check(WorldFile, data, source, WorldError, "world file"))
+
+
+def _number(limit: float = math.inf, positive: bool = False) -> Any:
+    """A finite number: a length (> 0, at most `limit` m) or a coordinate (within ±`limit` m)."""
+
+    def check(value: Any) -> float:
+        f = finite(value)
+        if f is None:
+            raise ValueError(f"must be a finite number, got {short(value)}")
+        if positive and f <= 0:
+            raise ValueError(f"must be positive, got {short(value)}")
+        if abs(f) > limit:
+            raise ValueError(f"must be {f'at most {limit:g} m' if positive else f'within ±{limit:g} m'}, got {f:g}")
+        return f
+
+    return Annotated[float, checked(check)]
+
+
+def _sized(what: str, sizes: tuple[int, ...]) -> Any:
+    def check(value: Any) -> Any:
+        if not isinstance(value, list) or len(value) not in sizes:
+            raise ValueError(f"must be {what}, got {short(value)}")
+        return value
+
+    return checked(check)
+
+
+def _ident(value: Any) -> Any:
+    if not isinstance(value, str) or not _ID_RE.fullmatch(value):
+        raise ValueError(f"must be a name of up to {MAX_NAME_CHARS} letters, digits and '_' starting with a letter, got {short(value)}")
+    return value
+
+
+Coordinate = _number(MAX_COORDINATE_M)
+Length = _number(MAX_EXTENT_M, positive=True)
+PointT = Annotated[list[Coordinate], _sized("a point [x, y]", (2,))]  # type: ignore[valid-type]
+PoseT = Annotated[list[_number()], _sized("a pose [x, y, yaw]", (2, 3))]  # type: ignore[valid-type, misc]  # (x, y bounded by `pose`)
+Ident = Annotated[str, checked(_ident)]
+
+
+class ShapeFile(FileModel):
+    """A wall, an obstacle: a centre line with a thickness, or a polygon."""
+
+    segment: Annotated[list[PointT], _sized("two points [[x0, y0], [x1, y1]]", (2,))] | None = None
+    polygon: Annotated[list[PointT], listing("a list of points [[x, y], ...]", non_empty=False)] | None = None
+    thickness: Length | None = None  # type: ignore[valid-type]
+
+
+class ObstructionFile(ShapeFile):
+    id: Ident
+    removed_when_human_reaches: Any = None  # a room of the world
+
+
+class RoomFile(FileModel):
+    name: Ident
+    centre: PointT
+
+
+class HallwayFile(FileModel):
+    name: Ident
+    centreline: Annotated[list[PointT], listing("a list of points", non_empty=False)]
+    width: Length  # type: ignore[valid-type]
+
+
+class ChargingBaseFile(FileModel):
+    position: PointT
+    radius: Length = 0.5  # type: ignore[valid-type]
+
+
+class RobotStartFile(FileModel):
+    start: PoseT  # type: ignore[valid-type]
+
+
+class HumanStartFile(FileModel):
+    id: Ident
+    start: PoseT  # type: ignore[valid-type]
+
+
+class GemFile(FileModel):
+    id: Ident
+    owner: Literal["robot", "human"]
+    position: PointT
+    radius: Length = 0.3  # type: ignore[valid-type]
+
+
+def _items(what: str) -> Any:
+    return listing(f"a list of {what}", non_empty=False)
+
+
+class WorldFile(FileModel):
+    """A world file's shape (the module docstring shows one)."""
+
+    name: Line(MAX_NAME_CHARS)  # type: ignore[valid-type]
+    walls: Annotated[list[ShapeFile], _items("walls")]
+    obstacles: Annotated[list[ShapeFile], _items("obstacles")] | None = None
+    rooms: Annotated[list[RoomFile], _items("rooms")] | None = None
+    hallways: Annotated[list[HallwayFile], _items("hallways")] | None = None
+    charging_base: ChargingBaseFile | None = None
+    robot: RobotStartFile
+    humans: Annotated[list[HumanStartFile], _items("humans")] | None = None
+    gems: Annotated[list[GemFile], _items("gems")] | None = None
+    obstructions: Annotated[list[ObstructionFile], _items("obstructions")] | None = None
 
 
 class _Parser:
-    """Reads the raw YAML tree, always knowing the key path for error messages."""
+    """What a world file says beyond its shape (polygons, names, extent, clear starts), always
+    knowing the key path for error messages."""
 
     def __init__(self, source: str) -> None:
         self.source = source
@@ -79,82 +184,31 @@ class _Parser:
     def fail(self, key: str, message: str) -> WorldError:
         return WorldError(f"{file_label(self.source)}: {key}: {message}")
 
-    # -- scalars ---------------------------------------------------------------------------
-    def number(self, value: Any, key: str, positive: bool = False, limit: float = math.inf) -> float:
-        """A finite number; `positive`: a length (> 0), at most `limit`; else within ±`limit`."""
-        f = finite(value)
-        if f is None:
-            raise self.fail(key, f"must be a finite number, got {short(value)}")
-        if positive and f <= 0:
-            raise self.fail(key, f"must be positive, got {short(value)}")
-        if abs(f) > limit:
-            bound = f"at most {limit:g} m" if positive else f"within ±{limit:g} m"
-            raise self.fail(key, f"must be {bound}, got {f:g}")
-        return f
-
-    def length(self, value: Any, key: str) -> float:
-        return self.number(value, key, positive=True, limit=MAX_EXTENT_M)
-
-    def point(self, value: Any, key: str) -> Point:
-        if not isinstance(value, (list, tuple)) or len(value) != 2:
-            raise self.fail(key, f"must be a point [x, y], got {short(value)}")
-        return (self.number(value[0], f"{key}[0]", limit=MAX_COORDINATE_M), self.number(value[1], f"{key}[1]", limit=MAX_COORDINATE_M))
-
-    def pose(self, value: Any, key: str) -> Pose2D:
-        if not isinstance(value, (list, tuple)) or len(value) not in (2, 3):
-            raise self.fail(key, f"must be a pose [x, y, yaw], got {short(value)}")
-        yaw = self.number(value[2], f"{key}[2]") if len(value) == 3 else 0.0
-        x, y = self.point(value[:2], key)
-        return Pose2D(x, y, yaw)
-
-    def ident(self, value: Any, key: str) -> str:
-        if not isinstance(value, str) or not _ID_RE.fullmatch(value):
-            raise self.fail(key, f"must be a name of up to {MAX_NAME_CHARS} letters, digits and '_' starting with a letter, got {short(value)}")
-        return value
-
-    def mapping(self, value: Any, key: str, allowed: set[str], required: set[str]) -> dict[str, Any]:
-        if not isinstance(value, dict):
-            raise self.fail(key, f"must be a mapping, got {type(value).__name__}")
-        unknown = sorted(shown_key(k) for k in value if k not in allowed)
-        if unknown:
-            raise self.fail(f"{key}.{unknown[0]}" if key else unknown[0], f"unknown key (allowed: {', '.join(sorted(allowed))})")
-        for r in sorted(required):
-            if r not in value:
-                raise self.fail(f"{key}.{r}" if key else r, "is required")
-        return value
-
-    def seq(self, value: Any, key: str) -> list[Any]:
-        if value is None:
-            return []
-        if not isinstance(value, list):
-            raise self.fail(key, f"must be a list, got {type(value).__name__}")
-        return value
+    def pose(self, value: list[float], key: str) -> Pose2D:
+        for i, v in enumerate(value[:2]):
+            if abs(v) > MAX_COORDINATE_M:
+                raise self.fail(f"{key}[{i}]", f"must be within ±{MAX_COORDINATE_M:g} m, got {v:g}")
+        return Pose2D(value[0], value[1], value[2] if len(value) == 3 else 0.0)
 
     # -- compound --------------------------------------------------------------------------
-    def shape(self, item: Any, key: str, kind: str, extra: frozenset[str] = frozenset(), id_: str = "") -> Shape:
-        m = self.mapping(item, key, {"segment", "polygon", "thickness"} | set(extra), set())
-        if ("segment" in m) == ("polygon" in m):
+    def shape(self, m: ShapeFile, key: str, kind: str, id_: str = "") -> Shape:
+        if (m.segment is None) == (m.polygon is None):
             raise self.fail(key, "needs exactly one of 'segment' or 'polygon'")
-        if "segment" in m:
-            seg = m["segment"]
-            if not isinstance(seg, list) or len(seg) != 2:
-                raise self.fail(f"{key}.segment", f"must be two points [[x0, y0], [x1, y1]], got {short(seg)}")
-            a = self.point(seg[0], f"{key}.segment[0]")
-            b = self.point(seg[1], f"{key}.segment[1]")
-            if "thickness" not in m:
+        if m.segment is not None:
+            a, b = (tuple(p) for p in m.segment)
+            if m.thickness is None:
                 raise self.fail(f"{key}.thickness", "is required with 'segment'")
-            thickness = self.length(m["thickness"], f"{key}.thickness")
             if math.hypot(b[0] - a[0], b[1] - a[1]) < 1e-9:
                 raise self.fail(f"{key}.segment", "has zero length")
-            return Shape(_ccw(segment_to_polygon(a, b, thickness)), kind, id_)
-        if "thickness" in m:
+            return Shape(_ccw(segment_to_polygon((a[0], a[1]), (b[0], b[1]), m.thickness)), kind, id_)
+        if m.thickness is not None:
             raise self.fail(f"{key}.thickness", "only applies to 'segment'")
-        raw = self.seq(m["polygon"], f"{key}.polygon")
+        raw = m.polygon or []
         if len(raw) < 3:
             raise self.fail(f"{key}.polygon", f"needs at least 3 points, got {len(raw)}")
         if len(raw) > MAX_POLYGON_VERTICES:
             raise self.fail(f"{key}.polygon", f"has {len(raw)} points; at most {MAX_POLYGON_VERTICES}")
-        pts = [self.point(v, f"{key}.polygon[{i}]") for i, v in enumerate(raw)]
+        pts: list[Point] = [(p[0], p[1]) for p in raw]
         if abs(polygon_area(pts)) < 1e-9:
             raise self.fail(f"{key}.polygon", "has zero area")
         problem = polygon_problem(pts)
@@ -162,98 +216,61 @@ class _Parser:
             raise self.fail(f"{key}.polygon", problem)
         return Shape(_ccw(pts), kind, id_)
 
-    def world(self, data: Any) -> World:
-        top = {"name", "walls", "obstacles", "rooms", "hallways", "charging_base", "robot", "humans", "gems", "obstructions"}
-        if data is None:
-            raise self.fail("name", "the world file is empty")
-        d = self.mapping(data, "", top, {"name", "walls", "robot"})
-        if not isinstance(d["name"], str) or not d["name"] or not d["name"].isprintable() or len(d["name"]) > MAX_NAME_CHARS:
-            raise self.fail("name", f"must be a non-empty line of at most {MAX_NAME_CHARS} characters, got {short(d['name'])}")
-        walls = self.shapes(d["walls"], "walls", "wall")
+    def world(self, d: WorldFile) -> World:
+        walls = self.shapes(d.walls, "walls", "wall")
         if not walls:
             raise self.fail("walls", "needs at least one wall")
-        rooms = self.rooms(d.get("rooms"))
-        robot = self.mapping(d["robot"], "robot", {"start"}, {"start"})
+        rooms = tuple(Room(r.name, (r.centre[0], r.centre[1])) for r in d.rooms or ())
+        self.unique([r.name for r in rooms], "rooms", "name")
+        base = d.charging_base
         world = World(
-            name=d["name"],
+            name=d.name,
             walls=walls,
-            obstacles=self.shapes(d.get("obstacles"), "obstacles", "obstacle"),
+            obstacles=self.shapes(d.obstacles, "obstacles", "obstacle"),
             rooms=rooms,
-            hallways=self.hallways(d.get("hallways")),
-            charging_base=self.charging_base(d.get("charging_base")),
-            robot_start=self.pose(robot["start"], "robot.start"),
-            humans=self.humans(d.get("humans")),
-            gems=self.gems(d.get("gems")),
-            obstructions=self.obstructions(d.get("obstructions"), {r.name for r in rooms}),
+            hallways=self.hallways(d.hallways or []),
+            charging_base=ChargingBase((base.position[0], base.position[1]), base.radius) if base else None,
+            robot_start=self.pose(d.robot.start, "robot.start"),
+            humans=self.humans(d.humans or []),
+            gems=self.gems(d.gems or []),
+            obstructions=self.obstructions(d.obstructions or [], {r.name for r in rooms}),
             source=self.source,
         )
         self.check_extent(world)
         self.check_free(world)
         return world
 
-    def shapes(self, value: Any, key: str, kind: str) -> tuple[Shape, ...]:
-        return tuple(self.shape(w, f"{key}[{i}]", kind) for i, w in enumerate(self.seq(value, key)))
+    def shapes(self, value: list[ShapeFile] | None, key: str, kind: str) -> tuple[Shape, ...]:
+        return tuple(self.shape(w, f"{key}[{i}]", kind) for i, w in enumerate(value or ()))
 
-    def rooms(self, value: Any) -> tuple[Room, ...]:
-        rooms = []
-        for i, r in enumerate(self.seq(value, "rooms")):
-            m = self.mapping(r, f"rooms[{i}]", {"name", "centre"}, {"name", "centre"})
-            rooms.append(Room(self.ident(m["name"], f"rooms[{i}].name"), self.point(m["centre"], f"rooms[{i}].centre")))
-        self.unique([r.name for r in rooms], "rooms", "name")
-        return tuple(rooms)
-
-    def hallways(self, value: Any) -> tuple[Hallway, ...]:
+    def hallways(self, value: list[HallwayFile]) -> tuple[Hallway, ...]:
         hallways = []
-        for i, h in enumerate(self.seq(value, "hallways")):
-            k = f"hallways[{i}]"
-            m = self.mapping(h, k, {"name", "centreline", "width"}, {"name", "centreline", "width"})
-            line = self.seq(m["centreline"], f"{k}.centreline")
-            if len(line) < 2:
-                raise self.fail(f"{k}.centreline", "needs at least 2 points")
-            points = tuple(self.point(p, f"{k}.centreline[{j}]") for j, p in enumerate(line))
-            hallways.append(Hallway(self.ident(m["name"], f"{k}.name"), points, self.length(m["width"], f"{k}.width")))
+        for i, h in enumerate(value):
+            if len(h.centreline) < 2:
+                raise self.fail(f"hallways[{i}].centreline", "needs at least 2 points")
+            hallways.append(Hallway(h.name, tuple((p[0], p[1]) for p in h.centreline), h.width))
         self.unique([h.name for h in hallways], "hallways", "name")
         return tuple(hallways)
 
-    def charging_base(self, value: Any) -> ChargingBase | None:
-        if value is None:
-            return None
-        m = self.mapping(value, "charging_base", {"position", "radius"}, {"position"})
-        radius = self.length(m.get("radius", 0.5), "charging_base.radius")
-        return ChargingBase(self.point(m["position"], "charging_base.position"), radius)
-
-    def humans(self, value: Any) -> tuple[HumanSpec, ...]:
-        humans = []
-        for i, h in enumerate(self.seq(value, "humans")):
-            m = self.mapping(h, f"humans[{i}]", {"id", "start"}, {"id", "start"})
-            humans.append(HumanSpec(self.ident(m["id"], f"humans[{i}].id"), self.pose(m["start"], f"humans[{i}].start")))
+    def humans(self, value: list[HumanStartFile]) -> tuple[HumanSpec, ...]:
+        humans = tuple(HumanSpec(h.id, self.pose(h.start, f"humans[{i}].start")) for i, h in enumerate(value))
         self.unique([h.id for h in humans], "humans", "id")
-        return tuple(humans)
+        return humans
 
-    def gems(self, value: Any) -> tuple[Gem, ...]:
-        gems = []
-        for i, g in enumerate(self.seq(value, "gems")):
-            k = f"gems[{i}]"
-            m = self.mapping(g, k, {"id", "owner", "position", "radius"}, {"id", "owner", "position"})
-            if m["owner"] not in GEM_OWNERS:
-                raise self.fail(f"{k}.owner", f"must be one of {', '.join(GEM_OWNERS)}, got {short(m['owner'])}")
-            radius = self.length(m.get("radius", 0.3), f"{k}.radius")
-            gems.append(Gem(self.ident(m["id"], f"{k}.id"), m["owner"], self.point(m["position"], f"{k}.position"), radius))
+    def gems(self, value: list[GemFile]) -> tuple[Gem, ...]:
+        gems = tuple(Gem(g.id, g.owner, (g.position[0], g.position[1]), g.radius) for g in value)
         self.unique([g.id for g in gems], "gems", "id")
-        return tuple(gems)
+        return gems
 
-    def obstructions(self, value: Any, room_names: set[str]) -> tuple[Obstruction, ...]:
+    def obstructions(self, value: list[ObstructionFile], room_names: set[str]) -> tuple[Obstruction, ...]:
         obstructions = []
-        for i, o in enumerate(self.seq(value, "obstructions")):
+        for i, o in enumerate(value):
             k = f"obstructions[{i}]"
-            if not isinstance(o, dict) or "id" not in o:
-                raise self.fail(f"{k}.id", "is required")
-            oid = self.ident(o["id"], f"{k}.id")
-            shape = self.shape(o, k, "obstruction", frozenset({"id", "removed_when_human_reaches"}), oid)
-            trigger = o.get("removed_when_human_reaches")
+            shape = self.shape(o, k, "obstruction", o.id)
+            trigger = o.removed_when_human_reaches
             if trigger is not None and (not isinstance(trigger, str) or trigger not in room_names):
                 raise self.fail(f"{k}.removed_when_human_reaches", f"names no room in 'rooms', got {short(trigger)}")
-            obstructions.append(Obstruction(oid, shape, trigger))
+            obstructions.append(Obstruction(o.id, shape, trigger))
         self.unique([o.id for o in obstructions], "obstructions", "id")
         return tuple(obstructions)
 
