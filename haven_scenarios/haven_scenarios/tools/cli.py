@@ -16,6 +16,7 @@
     haven study plan|run|status|report STUDY          a whole study: schedule, a participant's trials, progress, tables
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
     haven validate FILE...                            check world and scenario files without starting anything
+    haven schema world|scenario|study|questionnaire   a file kind's JSON Schema, for YAML editors
     haven plugins                                     the registered plugins: KIND NAME PACKAGE
 
 Discovery stays on this machine unless --network is given (study data stays local). Each group of

@@ -1,22 +1,29 @@
 """`haven validate FILE...`: check world, scenario, study and parameter files without starting
-anything; `haven plugins`: what is installed to name in them."""
+anything; `haven schema KIND`: a file kind's JSON Schema, for editors; `haven plugins`: what is
+installed to name in them."""
 
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from pathlib import Path
+from typing import Any
 
 from haven_scenarios.record.session import check_name
 from haven_scenarios.run.suite import checked_suite_config
-from haven_scenarios.study.protocol import StudyError, parse_study
-from haven_scenarios.study.scenario import ScenarioError, parse_scenario
+from haven_scenarios.study.protocol import StudyError, StudyFile, parse_study
+from haven_scenarios.study.questionnaires import LikertFile
+from haven_scenarios.study.scenario import ScenarioError, ScenarioFile, parse_scenario
 from haven_scenarios.tools.commands.common import fail
 from haven_sim.common import plugins
 from haven_sim.common.params import ParamsError, params_of
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
 from haven_sim.sim.world import WorldError
-from haven_sim.sim.world_file import parse_world
+from haven_sim.sim.world_file import WorldFile, parse_world
+
+# The file kinds whose shape is a model of the schema layer (haven_sim/common/schema.py).
+SCHEMAS: dict[str, Any] = {"world": WorldFile, "scenario": ScenarioFile, "study": StudyFile, "questionnaire": LikertFile}
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -29,6 +36,20 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         "plugins", help="every registered plugin, one per line: KIND NAME PACKAGE; each one left out on stderr, and then exit code 1"
     )
     listing.set_defaults(func=plugins_cmd)
+    schema = sub.add_parser(
+        "schema",
+        help="a file kind's JSON Schema (for YAML editors: `# yaml-language-server: $schema=scenario.schema.json` at a file's top)",
+    )
+    schema.add_argument("kind", choices=sorted(SCHEMAS))
+    schema.set_defaults(func=schema_cmd)
+
+
+def schema_cmd(args: argparse.Namespace) -> int:
+    """The JSON Schema of a world, scenario, study or questionnaire file."""
+    model = SCHEMAS[args.kind]
+    out = {"$schema": "https://json-schema.org/draft/2020-12/schema", **model.model_json_schema(), "title": f"HAVEN {args.kind} file"}
+    print(json.dumps(out, indent=2))
+    return 0
 
 
 def plugins_cmd(args: argparse.Namespace) -> int:
