@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from haven_sim.common.geometry import Pose2D, wrap_angle
-from haven_sim.common.params import param
+from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, check_bounds, param
 from haven_viz.cue_kind import CueContext, Shown, TrackedPath
 from haven_viz.markers import Color, MarkerSpec, Shape
 
@@ -48,34 +48,29 @@ BATTERY_LOW: Color = (0.9, 0.0, 0.0, 1.0)  # red
 
 @dataclass(frozen=True)
 class CueParams:
-    marker_spacing_m: float = param(0.4, "HAVEN: 1 m at its 2.6x robot scale")
-    steps_ahead: int = param(0, "projected markers shown ahead; 0 = the whole remaining path")
-    marker_size_m: float = param(0.2, "HAVEN's 0.2 m spheres and cubes")
-    consume_distance_m: float = param(0.2, "a marker this close ahead of the robot along the path is used up")
+    marker_spacing_m: float = param(0.4, "HAVEN: 1 m at its 2.6x robot scale", POSITIVE)
+    steps_ahead: int = param(0, "projected markers shown ahead; 0 = the whole remaining path", NOT_NEGATIVE)
+    marker_size_m: float = param(0.2, "HAVEN's 0.2 m spheres and cubes", POSITIVE)
+    consume_distance_m: float = param(0.2, "a marker this close ahead of the robot along the path is used up", NOT_NEGATIVE)
     scheme: str = param("yellow", "marker colour: yellow (HAVEN), white (the paper's figures), cyan")
-    turn_signal_threshold_deg: float = param(11.0, "HAVEN: a heading error this large lights the turn signal")
+    turn_signal_threshold_deg: float = param(
+        11.0, "HAVEN: a heading error this large lights the turn signal", Bounds(0.0, 180.0, low_open=True, high_open=True)
+    )
     turn_signal_release_deg: float = param(6.0, "a lit turn signal goes dark only when the turn ahead is within this (hysteresis)")
-    turn_signal_hold_s: float = param(0.5, "a lit turn signal stays lit at least this long (no flicker on S-curves)")
-    signal_lookahead_m: float = param(1.2, "the turn signals show a turn of the path this far ahead (3 s at 0.4 m/s; drivers signal about 3 s ahead)")
-    thought_radius_m: float = param(3.0, "a human this close shows the thought bubble ...")
-    thought_hysteresis_m: float = param(0.5, "... which hides again only beyond radius + this")
+    turn_signal_hold_s: float = param(0.5, "a lit turn signal stays lit at least this long (no flicker on S-curves)", NOT_NEGATIVE)
+    signal_lookahead_m: float = param(
+        1.2, "the turn signals show a turn of the path this far ahead (3 s at 0.4 m/s; drivers signal about 3 s ahead)", NOT_NEGATIVE
+    )
+    thought_radius_m: float = param(3.0, "a human this close shows the thought bubble ...", POSITIVE)
+    thought_hysteresis_m: float = param(0.5, "... which hides again only beyond radius + this", NOT_NEGATIVE)
     thought_backdrop: bool = param(True, "a white bubble behind the thought's text")
 
     def __post_init__(self) -> None:
-        if self.marker_spacing_m <= 0 or self.marker_size_m <= 0:
-            raise ValueError("marker_spacing_m and marker_size_m must be positive")
-        if self.steps_ahead < 0:
-            raise ValueError(f"steps_ahead must be 0 (all) or more, got {self.steps_ahead}")
+        check_bounds(self)
         if self.scheme not in SCHEMES:
             raise ValueError(f"scheme must be one of {', '.join(SCHEMES)}, got {self.scheme!r}")
-        if self.thought_radius_m <= 0 or self.thought_hysteresis_m < 0:
-            raise ValueError("thought_radius_m must be positive and thought_hysteresis_m not negative")
-        if not 0 < self.turn_signal_threshold_deg < 180:
-            raise ValueError(f"turn_signal_threshold_deg must be within (0, 180), got {self.turn_signal_threshold_deg}")
         if not 0 <= self.turn_signal_release_deg <= self.turn_signal_threshold_deg:
             raise ValueError(f"turn_signal_release_deg must be within [0, turn_signal_threshold_deg], got {self.turn_signal_release_deg}")
-        if self.signal_lookahead_m < 0 or self.turn_signal_hold_s < 0:
-            raise ValueError("signal_lookahead_m and turn_signal_hold_s must not be negative")
 
     @property
     def turn_signal_threshold_rad(self) -> float:

@@ -26,7 +26,7 @@ from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import topics
 from haven_sim.common.events import GOAL_POSE, Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
-from haven_sim.common.params import group, param
+from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.nav.planner import GridPlanner, PlanningError
 from haven_sim.runtime.component import Handler, Message
@@ -49,11 +49,10 @@ def any_reader(topic: str) -> str:
 class DirectorConfig:
     scenario: str = param("hallway", "a shipped scenario name or a scenario YAML")
     seed: int = param(0, "seed of the simulated participants and the random gem order")
-    rate_hz: float = param(10.0, "rules, participants and mission (sim time)")
+    rate_hz: float = param(10.0, "rules, participants and mission (sim time)", POSITIVE)
 
     def __post_init__(self) -> None:
-        if not self.rate_hz > 0:
-            raise ValueError(f"rate_hz must be positive, got {self.rate_hz}")
+        check_bounds(self)
 
 
 @dataclass(frozen=True)

@@ -13,25 +13,20 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from haven_sim.common.params import param
+from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, check_bounds, param
 
 
 @dataclass(frozen=True)
 class MotionStyle:
-    arc_max_angle_deg: float = param(60.0, "HAVEN: heading changes beyond this stop the robot and rotate it in place")
-    too_close_distance_m: float = param(0.5, "HAVEN: a leg shorter than this also starts with a rotation in place")
-    facing_tolerance_deg: float = param(5.0, "HAVEN: a rotation in place ends within this")
-    rotate_speed_deg_s: float = param(50.0, "HAVEN's rate of rotating in place")
+    arc_max_angle_deg: float = param(
+        60.0, "HAVEN: heading changes beyond this stop the robot and rotate it in place", Bounds(0.0, 180.0, low_open=True)
+    )
+    too_close_distance_m: float = param(0.5, "HAVEN: a leg shorter than this also starts with a rotation in place", NOT_NEGATIVE)
+    facing_tolerance_deg: float = param(5.0, "HAVEN: a rotation in place ends within this", Bounds(0.0, 90.0, low_open=True, high_open=True))
+    rotate_speed_deg_s: float = param(50.0, "HAVEN's rate of rotating in place", POSITIVE)
 
     def __post_init__(self) -> None:
-        if not 0 < self.arc_max_angle_deg <= 180:
-            raise ValueError(f"arc_max_angle_deg must be within (0, 180], got {self.arc_max_angle_deg}")
-        if self.too_close_distance_m < 0:
-            raise ValueError(f"too_close_distance_m must not be negative, got {self.too_close_distance_m}")
-        if not 0 < self.facing_tolerance_deg < 90:
-            raise ValueError(f"facing_tolerance_deg must be within (0, 90), got {self.facing_tolerance_deg}")
-        if not self.rotate_speed_deg_s > 0:
-            raise ValueError(f"rotate_speed_deg_s must be positive, got {self.rotate_speed_deg_s}")
+        check_bounds(self)
 
     @property
     def arc_max_angle_rad(self) -> float:

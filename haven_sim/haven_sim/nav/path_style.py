@@ -16,7 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from haven_sim.common.geometry import FloatArray, Point, Pose2D, wrap_angle
-from haven_sim.common.params import param
+from haven_sim.common.params import POSITIVE, Bounds, check_bounds, param
 from haven_sim.nav.motion_style import MotionStyle
 
 ClearFn = Callable[[FloatArray], bool]  # are all these (N, 2) points safe for the robot?
@@ -24,18 +24,14 @@ ClearFn = Callable[[FloatArray], bool]  # are all these (N, 2) points safe for t
 
 @dataclass(frozen=True)
 class ShapeParams:
-    marker_spacing_m: float = param(0.4, "pose spacing of /plan along straight parts and arcs")
-    rotate_step_deg: float = param(15.0, "pose spacing of /plan's rotations in place")
-    max_arc_radius_m: float = param(1.0, "corners become arcs of at most this radius")
-    min_arc_radius_m: float = param(0.15, "an arc that must be tighter than this to clear obstacles becomes a rotation")
-    straight_tolerance_deg: float = param(2.0, "heading changes smaller than this are not corners")
+    marker_spacing_m: float = param(0.4, "pose spacing of /plan along straight parts and arcs", POSITIVE)
+    rotate_step_deg: float = param(15.0, "pose spacing of /plan's rotations in place", POSITIVE)
+    max_arc_radius_m: float = param(1.0, "corners become arcs of at most this radius", POSITIVE)
+    min_arc_radius_m: float = param(0.15, "an arc that must be tighter than this to clear obstacles becomes a rotation", POSITIVE)
+    straight_tolerance_deg: float = param(2.0, "heading changes smaller than this are not corners", Bounds(0.0, 90.0, high_open=True))
 
     def __post_init__(self) -> None:
-        for name in ("marker_spacing_m", "rotate_step_deg", "max_arc_radius_m", "min_arc_radius_m"):
-            if not getattr(self, name) > 0:
-                raise ValueError(f"{name} must be positive, got {getattr(self, name)}")
-        if not 0 <= self.straight_tolerance_deg < 90:
-            raise ValueError(f"straight_tolerance_deg must be within [0, 90), got {self.straight_tolerance_deg}")
+        check_bounds(self)
 
     @property
     def rotate_step_rad(self) -> float:

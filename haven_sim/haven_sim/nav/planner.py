@@ -18,7 +18,7 @@ import numpy.typing as npt
 
 from haven_sim.common.bodies import ROBOT_BODY
 from haven_sim.common.geometry import FloatArray, Point
-from haven_sim.common.params import param
+from haven_sim.common.params import NOT_NEGATIVE, Bounds, check_bounds, param
 from haven_sim.sim.occupancy import OccupancyGridData
 
 BoolGrid = npt.NDArray[np.bool_]
@@ -26,18 +26,15 @@ BoolGrid = npt.NDArray[np.bool_]
 
 @dataclass(frozen=True)
 class PlannerParams:
-    safety_margin_m: float = param(0.05, "added to the body radius when inflating the map")
-    snap_radius_m: float = param(0.3, "a start or goal this close to free space is moved onto it")
-    occupied_threshold: int = param(50, "map cells at or above this are obstacles")
+    safety_margin_m: float = param(0.05, "added to the body radius when inflating the map", NOT_NEGATIVE)
+    snap_radius_m: float = param(0.3, "a start or goal this close to free space is moved onto it", NOT_NEGATIVE)
+    occupied_threshold: int = param(50, "map cells at or above this are obstacles", Bounds(1, 100))
     unknown_is_obstacle: bool = param(True, "map cells of -1 (unknown) are obstacles")
     # The body to plan for (not a parameter: the simulated robot, or a participant for their walks).
     body_radius_m: float = field(default=ROBOT_BODY.radius_m, metadata={"internal": True})
 
     def __post_init__(self) -> None:
-        if self.safety_margin_m < 0 or self.snap_radius_m < 0:
-            raise ValueError("safety_margin_m and snap_radius_m must not be negative")
-        if not 0 < self.occupied_threshold <= 100:
-            raise ValueError(f"occupied_threshold must be within 1..100, got {self.occupied_threshold}")
+        check_bounds(self)
 
     @property
     def inflation_m(self) -> float:

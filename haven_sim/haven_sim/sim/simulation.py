@@ -14,7 +14,7 @@ from typing import Any
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, wrap_angle
-from haven_sim.common.params import group, param
+from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.runtime.component import NS_PER_S
 from haven_sim.sim.battery import Battery, BatteryParams, BatteryReading
 from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits
@@ -27,24 +27,19 @@ from haven_sim.sim.world import World
 
 @dataclass(frozen=True)
 class SimConfig:
-    physics_rate_hz: float = param(50.0, "physics steps per second of sim time (/odom is published every step)")
+    physics_rate_hz: float = param(50.0, "physics steps per second of sim time (/odom is published every step)", POSITIVE)
     robot_limits: VelocityLimits = group(VelocityLimits)
-    human_max_speed_mps: float = param(1.5, "a person's top walking speed")
-    cmd_timeout_s: float = param(0.5, "no command for this long (sim time) stops a body")
+    human_max_speed_mps: float = param(1.5, "a person's top walking speed", POSITIVE)
+    cmd_timeout_s: float = param(0.5, "no command for this long (sim time) stops a body", POSITIVE)
     scan: ScanParams = group(ScanParams, prefix="scan_")
     battery: BatteryParams = group(BatteryParams, prefix="battery_")
     odom_noise: OdometryNoise = group(OdometryNoise, prefix="odom_noise_")
     seed: int = param(0, "seed of the scan and odometry noise")
 
     def __post_init__(self) -> None:
-        if not self.physics_rate_hz > 0:
-            raise ValueError(f"physics_rate_hz must be positive, got {self.physics_rate_hz}")
+        check_bounds(self)
         if NS_PER_S % round(NS_PER_S / self.physics_rate_hz):
             raise ValueError(f"physics_rate_hz must divide a second into whole nanoseconds (25, 50, 100, 200...), got {self.physics_rate_hz}")
-        if not self.cmd_timeout_s > 0:
-            raise ValueError(f"cmd_timeout_s must be positive, got {self.cmd_timeout_s}")
-        if not self.human_max_speed_mps > 0:
-            raise ValueError(f"human_max_speed_mps must be positive, got {self.human_max_speed_mps}")
 
     @property
     def step_ns(self) -> int:

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import FloatArray, Twist2D
-from haven_sim.common.params import group, param
+from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import RobotState
 from haven_sim.runtime.component import Handler, Message, due, period_ns
 from haven_sim.sim.commands import CommandStatus
@@ -30,10 +30,10 @@ from haven_sim.sim.world import World
 class SimulatorConfig:
     sim: SimConfig = group(SimConfig)
     world: str = param("small_test", "a packaged world name or a path to a world YAML")
-    real_time_factor: float = param(1.0, "1.0 live; higher runs faster than real time")
-    humans_rate_hz: float = param(20.0, "/humans and the humans' TF frames (sim time)")
-    battery_rate_hz: float = param(5.0, "/battery_state (sim time)")
-    map_resolution_m: float = param(0.05, "cell size of /map")
+    real_time_factor: float = param(1.0, "1.0 live; higher runs faster than real time", POSITIVE)
+    humans_rate_hz: float = param(20.0, "/humans and the humans' TF frames (sim time)", POSITIVE)
+    battery_rate_hz: float = param(5.0, "/battery_state (sim time)", POSITIVE)
+    map_resolution_m: float = param(0.05, "cell size of /map", POSITIVE)
     map_frame: str = param("map", "fixed frame")
     odom_frame: str = param("odom", "odometry frame")
     publish_map_to_odom: bool = param(True, "the identity map -> odom on /tf_static; false leaves it to a localization node (AMCL, slam_toolbox)")
@@ -45,9 +45,7 @@ class SimulatorConfig:
     reset_allowed: bool = param(True, "/haven/reset resets the world (haven run turns it off: a recorded trial refuses it, as an event)")
 
     def __post_init__(self) -> None:
-        for name in ("real_time_factor", "humans_rate_hz", "battery_rate_hz", "map_resolution_m"):
-            if not getattr(self, name) > 0:
-                raise ValueError(f"{name} must be positive, got {getattr(self, name)}")
+        check_bounds(self)
 
 
 @dataclass(frozen=True)
