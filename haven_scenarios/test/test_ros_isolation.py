@@ -122,7 +122,7 @@ def test_an_outside_publisher_on_a_free_running_trial_makes_it_not_valid_unless_
     away from its task: the trial ends on its timeout, honestly.)"""
     scenario = tmp_path / "short.yaml"
     scenario.write_text(CROSSING.replace("timeout_s: 120", "timeout_s: 30"))
-    for allow, sessions in (([], "s"), (["--allow", "/goal_pose"], "allowed")):
+    for allow, sessions in ((["--allow", "/goal_pose"], "allowed"), ([], "s")):
         flood = start(ros, [sys.executable, FLOOD, "200", "2"])
         trial = start(ros, [*HAVEN, "run", str(scenario), "--free-running", "--rtf", "8", "--domain-id", str(ros.domain_id), *allow,
                             "--sessions", str(tmp_path / sessions)])  # fmt: skip
