@@ -50,7 +50,7 @@ SCENARIO_CASES = [
     ('end_on_contact: "no"\n', "end_on_contact", "must be true or false, got 'no'"),
     ("end_on_contact: 1\n", "end_on_contact", "must be true or false"),
     ("humans: [{id: h1}, {id: h1}]\n", "humans[1].id", "duplicate id"),
-    ("condition: [[1]]\n", "condition[0]", "is no cue"),
+    ("condition: [[1]]\n", "condition[0]", "unknown cue '[1]'"),
     ("dwell_time_s: true\n", "dwell_time_s", "must be a positive number, got True"),
     ("robot: {order: [nearest]}\n", "robot.order", "must be the name of a mission behaviour (fixed, nearest, random)"),
     ("cues: {steps_ahead: .inf}\n", "cues", "steps_ahead"),

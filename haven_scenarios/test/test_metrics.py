@@ -97,7 +97,7 @@ def test_every_metric_is_in_the_table_and_the_table_in_the_readme():
     # The docs' codebook is this table, written by docs/conf.py at every build (one source).
     docs = Path(__file__).resolve().parents[2] / "docs"
     assert "_generated/metric_table.part.md" in (docs / "reference" / "sessions.md").read_text()
-    assert "markdown()" in (docs / "conf.py").read_text() and markdown().startswith("| metric | unit | definition | source |")
+    assert "markdown(plugins=False)" in (docs / "conf.py").read_text() and markdown().startswith("| metric | unit | definition | source |")
 
 
 def test_people_are_paired_with_the_robot_by_time_not_by_index():
@@ -243,6 +243,14 @@ def test_a_plan_or_a_goal_the_log_names_but_the_recording_lacks_is_flagged_and_p
     assert compute(early)["valid"] is True
     early.events = [e for e in early.events if e.kind is not EventKind.GEM_COLLECTED or e["gem"] != "g2"]
     assert any(r.startswith("events: ") and "scenario's missing" in r for r in compute(early)["invalid_reasons"])
+
+
+def test_a_cue_that_failed_makes_a_session_not_valid():
+    rec = straight()
+    assert compute(rec)["valid"]
+    events(rec, event(EventKind.CUE_FAILED, 2.0, "viz", cue="floor_arrows", error="ValueError: broke"))
+    reasons = compute(rec)["invalid_reasons"]
+    assert reasons == ["cue floor_arrows failed (ValueError: broke): the condition was not shown as designed"]
 
 
 def test_a_message_the_lockstep_clock_never_got_and_an_outside_publisher_make_a_session_not_valid():

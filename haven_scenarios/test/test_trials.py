@@ -84,7 +84,7 @@ def test_bad_scenario_files_get_one_line(tmp_path):
     with pytest.raises(ScenarioError, match="no such scenario"):
         load_scenario("atlantis")
     p.write_text("name: x\nworld: hallway\nkind: hallway\nrobot: {route: [B]}\ncondition: [sparkles]\n")
-    with pytest.raises(ScenarioError, match=r"s.yaml: condition\[0\]: is no cue"):
+    with pytest.raises(ScenarioError, match=r"s.yaml: condition\[0\]: unknown cue"):
         load_scenario(p)
 
 

@@ -8,6 +8,7 @@ from fake_plugins import Entry
 from helpers import box_world
 
 from haven_sim.common import plugins, topics
+from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import ParamsError, build
 from haven_sim.common.state import Goal, RobotState
@@ -27,6 +28,13 @@ class Corner:
         return Plan(points, abs(goal[0] - start[0]) + abs(goal[1] - start[1]))
 
 
+class Crashing(Corner):
+    """A lab's planner with a bug."""
+
+    def plan(self, start: Point, goal: Point) -> Plan:
+        raise RuntimeError("index out of range\nmore")
+
+
 @pytest.fixture
 def with_corner(monkeypatch):
     reg = plugins.load(
@@ -34,6 +42,7 @@ def with_corner(monkeypatch):
         [
             Entry("visibility", "haven_sim.nav.planner:GridPlanner", "haven_sim", plugins.registry("planners").get("visibility")),
             Entry("corner", "lab.planners:Corner", "lab_planners", Corner),
+            Entry("crashing", "lab.planners:Crashing", "lab_planners", Crashing),
             Entry("number", "lab.planners:N", "lab_planners", 3),
         ],
     )
@@ -67,5 +76,14 @@ def test_the_algorithm_parameter_picks_a_labs_planner_whose_points_are_shaped(wi
 
 
 def test_an_unknown_algorithm_is_one_line_naming_the_known_ones(with_corner):
-    with pytest.raises(ParamsError, match=r"^planner: parameter algorithm: unknown planner 'astar' \(known: corner, visibility\)$"):
+    with pytest.raises(ParamsError, match=r"^planner: parameter algorithm: unknown planner 'astar' \(known: corner, crashing, visibility\)$"):
         build(PlannerConfig, {"algorithm": "astar"}, where="planner: parameter ")
+
+
+def test_a_labs_planner_that_raises_refuses_the_goal_in_one_line_and_the_trial_goes_on(with_corner):
+    planner = PlannerComponent(build(PlannerConfig, {"algorithm": "crashing"}))
+    planner.on_map(rasterise(box_world(10.0)), 0.0)
+    planner.on_odom(RobotState(Pose2D(2.0, 2.0, 0.0)), 0.0)
+    (refused,) = [m.data for m in planner.on_goal(Goal(Pose2D(8.0, 8.0, 0.0)), 0.1) if m.topic == topics.EVENTS]
+    assert refused.kind is EventKind.PLAN_REFUSED and refused["reason"] == "the planner failed: RuntimeError: index out of range"
+    assert planner.warnings == ["refused goal (8.00, 8.00): the planner failed: RuntimeError: index out of range"]

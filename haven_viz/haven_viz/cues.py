@@ -63,6 +63,14 @@ CUE_CLASSES = cue_classes(plugins.registry("cues"))
 CUES: tuple[str, ...] = tuple(CUE_CLASSES)
 
 
+def unknown_cue(name: object) -> str:
+    """Why `name` names no cue here: a cue installed but left out (and why), or the cues there are."""
+    left_out = plugins.registry("cues").left_out
+    if isinstance(name, str) and name in left_out:
+        return f"cue {name!r} is installed but left out: {left_out[name]}"
+    return f"unknown cue {str(name)[:50]!r} (cues: {', '.join(CUES)}, or all / none)"
+
+
 class CueToggles:
     """The study condition: which cues the participant sees. A frozen dataclass with one bool per
     registered cue (`Toggles`), so they are the viz node's parameters like any config."""
@@ -158,12 +166,26 @@ class CueFrame:
     ways: dict[str, tuple[tuple[Point, ...], bool]] = field(default_factory=dict)  # cue -> (the way it shows, drawn on the robot)
 
 
+def _error(e: BaseException) -> str:
+    """An exception in one line: `ValueError: what it said`."""
+    text = str(e).splitlines()[0] if str(e) else ""
+    return f"{type(e).__name__}: {text[:200]}".rstrip(": ")
+
+
 class ArCues:
-    """The cues of one robot: the path it follows and one object per cue (`names`: all registered)."""
+    """The cues of one robot: the path it follows and one object per cue (`names`: all registered).
+    A cue whose code raises (a lab's, being written) is in `failed` and shows nothing from then
+    on; the others and the trial go on, and the viz says so (a `cue_failed` event)."""
 
     def __init__(self, params: CueParams | None = None, names: Sequence[str] | None = None) -> None:
         self.params = params or CueParams()
-        self.cues: dict[str, Cue] = {n: CUE_CLASSES[n](self.params) for n in (CUES if names is None else names)}
+        self.failed: dict[str, str] = {}  # cue -> its error, for a cue whose code raised (it shows nothing from then on)
+        self.cues: dict[str, Cue] = {}
+        for n in CUES if names is None else names:
+            try:
+                self.cues[n] = CUE_CLASSES[n](self.params)
+            except Exception as e:  # noqa: BLE001 - a lab's cue may fail in any way; the trial and the other cues go on
+                self.failed[n] = _error(e)
         self.set_path([])
 
     def set_path(self, poses: Sequence[Pose2D]) -> None:
@@ -189,7 +211,13 @@ class ArCues:
         values: dict[str, Any] = {}
         ways: dict[str, tuple[tuple[Point, ...], bool]] = {}
         for name, cue in self.cues.items():
-            shown = cue.show(ctx, markers) if toggles.on(name) else None
+            if name in self.failed or not toggles.on(name):
+                continue
+            try:
+                shown = cue.show(ctx, markers)
+            except Exception as e:  # noqa: BLE001 - as above
+                self.failed[name] = _error(e)
+                continue
             if shown is None:
                 continue
             values[cue.key] = shown.value

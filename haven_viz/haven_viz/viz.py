@@ -61,6 +61,8 @@ class VizComponent:
         self._last_refresh: float | None = None
         self._refresh_now = False
         self._world_due = world is not None
+        self.told: set[str] = set()  # cues whose failure was said
+        self.warnings: list[str] = []  # for the node's log
 
     @property
     def period_s(self) -> float:
@@ -124,6 +126,16 @@ class VizComponent:
         ]
         return out + self.tick(now)
 
+    def _failures(self, now: float) -> list[Message]:
+        """A `cue_failed` event (and a warning) for each cue whose code raised since the last tick."""
+        out = []
+        for cue, error in self.cues.failed.items():
+            if cue not in self.told:
+                self.told.add(cue)
+                self.warnings.append(f"cue {cue} failed and is not shown from now on: {error}")
+                out.append(Message(topics.EVENTS, event(EventKind.CUE_FAILED, now, Source.VIZ, cue=cue, error=error), now))
+        return out
+
     def viewer_joined(self) -> None:
         """A new subscriber: send everything at the next tick."""
         self._refresh_now = True
@@ -144,6 +156,7 @@ class VizComponent:
         humans_xy = [(h.x, h.y) for h in self.humans.values()]
         shown = topics.AR_MARKERS not in self.unread
         frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles, now, markers=shown)
+        out += self._failures(now)
         refresh = self._refresh_now or self._last_refresh is None or now - self._last_refresh >= self.config.refresh_period_s
         if refresh:
             self._last_refresh, self._refresh_now = now, False

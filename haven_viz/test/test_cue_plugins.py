@@ -69,3 +69,37 @@ def test_a_labs_cue_is_drawn_said_and_read_back_like_havens(monkeypatch):
     assert stamp == 1.5 and back.values["beacon"] is True and back.values["path_markers"] == frame.state.path_markers
     off = arcues.frame(Pose2D(2.0, 0.0, 0.0), toggles=both())  # (at the end: nothing ahead)
     assert not off.state.shown("beacon") and "beacon" not in {m.ns for m in off.markers}
+
+
+class Flaky(Beacon):
+    """A lab's cue with a bug: it raises once the robot has moved."""
+
+    def show(self, ctx: CueContext, markers: bool) -> Shown | None:
+        if ctx.robot.x > 0.5:
+            raise ValueError("flaky cue broke\nsecond line")
+        return super().show(ctx, markers)
+
+
+def test_a_cue_that_raises_shows_nothing_from_then_on_and_is_said_once(monkeypatch):
+    import haven_viz.cues as cues
+    from haven_sim.common import topics
+    from haven_sim.common.events import EventKind
+    from haven_sim.common.state import RobotState
+    from haven_viz.viz import VizComponent
+
+    monkeypatch.setitem(cues.CUE_CLASSES, "flaky", accept_plugin("flaky", Flaky))
+    monkeypatch.setattr(cues, "CUES", (*cues.CUES, "flaky"))
+    both = dataclasses.make_dataclass("Both", [("path_projection", bool, True), ("flaky", bool, True)], bases=(CueToggles,), frozen=True)
+    viz = VizComponent()
+    viz.toggles = both()
+    viz.on_plan([Pose2D(0.0, 0.0, 0.0), Pose2D(3.0, 0.0, 0.0)], 0.0)
+    failed = []
+    for k, x in enumerate((0.0, 1.0, 1.5, 2.0)):
+        viz.on_odom(RobotState(Pose2D(x, 0.0, 0.0)), 0.1 * k)
+        out = viz.tick(0.1 * k)
+        failed += [m.data for m in out if m.topic == topics.EVENTS and m.data.kind is EventKind.CUE_FAILED]
+        state = [m.data for m in out if m.topic == topics.CUE_STATE]
+        if x > 0.5 and state:
+            assert not state[-1].shown("flaky") and state[-1].path_markers > 0  # (the others go on)
+    assert [(e["cue"], e["error"]) for e in failed] == [("flaky", "ValueError: flaky cue broke")]
+    assert viz.warnings == ["cue flaky failed and is not shown from now on: ValueError: flaky cue broke"]

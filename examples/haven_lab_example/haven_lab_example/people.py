@@ -1,4 +1,4 @@
-"""A participant in a hurry: walks a third faster than asked and waits for nobody. Built on HAVEN's
+"""A participant in a hurry: walks a third faster than asked, and otherwise as HAVEN's
 `Walker`, which walks its task round walls and people by the social-force model."""
 
 from __future__ import annotations

@@ -91,10 +91,11 @@ def plugin_rows() -> list[tuple[str, str, str, str]]:
     return rows + [(p.value.exposure, "s", f"time the {p.name} cue was on show", p.package) for p in cues]
 
 
-def markdown() -> str:
-    """The codebook: ours, then the installed plugins' documented columns."""
+def markdown(plugins: bool = True) -> str:
+    """The codebook: ours, then (`plugins`) the installed plugins' documented columns."""
     lines = ["| metric | unit | definition | source |", "|---|---|---|---|"]
-    lines += [f"| `{name}` | {unit} | {definition} | {source} |" for name, unit, definition, source in (*METRICS, *plugin_rows())]
+    rows = (*METRICS, *plugin_rows()) if plugins else METRICS
+    lines += [f"| `{name}` | {unit} | {definition} | {source} |" for name, unit, definition, source in rows]
     return "\n".join(lines)
 
 

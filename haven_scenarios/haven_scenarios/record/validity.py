@@ -6,7 +6,8 @@ source (`seq`), so a missing one shows too, and the planner's and the scenario's
 /goal_pose they publish, so a missing plan or goal shows; the recorder notes every message DDS reports lost,
 and a loss on a topic the metrics read counts; a trial must have ended with `trial_end`; and no
 publisher from outside the suite may have been there before it ended (`record/outsiders.py`), nor
-the planner have planned before it began (for an outside goal).
+the planner have planned before it began (for an outside goal); and no cue may have failed (its code
+raised: the condition was not shown as designed).
 """
 
 from __future__ import annotations
@@ -119,6 +120,11 @@ def check(rec: Recording, window: tuple[float, float] | None, declared: Declared
         early, early_noted = _planned_before_start(rec, window, declared)
         reasons, noted = reasons + early, noted + early_noted
     reasons += _missing_events(rec, window)
+    reasons += [
+        f"cue {e['cue']} failed ({e['error']}): the condition was not shown as designed"
+        for e in rec.events
+        if e.kind is EventKind.CUE_FAILED and (window is None or e.stamp <= window[1] + 1e-6)
+    ]
     reasons += [
         f"{e['topic']}: {e['messages']} of the suite's message(s) never reached {e.source} on the lockstep clock"
         for e in rec.events

@@ -99,13 +99,11 @@ def summary(rows: Sequence[dict[str, Any]]) -> str:
     n = len(rows)
     done = sum(1 for r in rows if r["end_reason"] == EndReason.COMPLETED)
     times = [r["robot_time_to_finish_s"] for r in rows if r["robot_time_to_finish_s"] is not None]
-    mean_t = sum(times) / len(times) if times else float("nan")
+    finish = f"robot finishes in {sum(times) / len(times):.1f} s on average" if times else "the robot finished in no trial"
     contacts = sum(r["human_contacts"] for r in rows)
-    dmin = min((r["min_human_distance_m"] for r in rows if r["min_human_distance_m"] is not None), default=float("nan"))
-    return (
-        f"{done}/{n} completed, robot finishes in {mean_t:.1f} s on average, {contacts} human contact(s), "
-        f"closest approach {dmin:.2f} m (the least of any trial)"
-    )
+    distances = [r["min_human_distance_m"] for r in rows if r["min_human_distance_m"] is not None]
+    closest = f"closest approach {min(distances):.2f} m (the least of any trial)" if distances else "no person in any trial"
+    return f"{done}/{n} completed, {finish}, {contacts} human contact(s), {closest}"
 
 
 def group_summaries(specs: Sequence[TrialSpec], rows: Sequence[Row]) -> list[str]:

@@ -27,7 +27,7 @@ from haven_sim.nav.planning import PlannerComponent, world_lanes
 from haven_sim.runtime.component import Component
 from haven_sim.runtime.loop import DelayFn, InProcessLoop
 from haven_sim.sim.simulator import SimulatorComponent
-from haven_viz.cues import CUES, CueParams, CueToggles, Toggles
+from haven_viz.cues import CUES, CueParams, CueToggles, Toggles, unknown_cue
 from haven_viz.viz import VizComponent
 
 SEED_MAX = 2**31 - 1  # a trial's seed: 0..this (a ROS integer parameter of the nodes, numpy's seed)
@@ -53,7 +53,7 @@ def parse_condition(names: Sequence[str]) -> CueToggles:
         return Toggles.none()
     unknown = [n for n in names if n not in CUES]
     if unknown:
-        raise ValueError(f"unknown cue {unknown[0]!r} in the condition (cues: {', '.join(CUES)}, or all / none)")
+        raise ValueError(unknown_cue(unknown[0]))
     return Toggles(**{c: c in names for c in CUES})
 
 

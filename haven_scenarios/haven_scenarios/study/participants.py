@@ -20,6 +20,7 @@ the robot (that rule uses where the robot really is: a robot at arm's length is 
 
 from __future__ import annotations
 
+import inspect
 import math
 import random
 from collections.abc import Sequence
@@ -334,8 +335,15 @@ class Yielder(Walker):
 
 def accept_plugin(name: str, value: Any) -> Any:
     """A `haven.participants` plugin (haven_sim/common/plugins.py): a class or factory."""
+    wanted = "a class or function taking (human_id, stops, planner, speed_mps, seed, params)"
     if not callable(value):
-        raise ValueError("is not a participant model: a class or function taking (human_id, stops, planner, speed_mps, seed, params)")
+        raise ValueError(f"is not a participant model: {wanted}")
+    try:
+        inspect.signature(value).bind("h1", [], None, 1.0, 0, None)
+    except TypeError as e:
+        raise ValueError(f"is not a participant model: {wanted} ({e})") from None
+    except ValueError:  # (no signature to read: a builtin; it is tried when a trial makes one)
+        pass
     return value
 
 
@@ -345,5 +353,9 @@ def make_walker(
     """A simulated participant of the named model (the names a scenario file uses): a plugin of
     kind `participants` (ours: walker, blocker and yielder, in setup.py), a class or factory that
     takes these arguments and returns a `Participant`."""
-    made: Participant = plugins.registry("participants").get(model)(human_id, stops, planner, speed_mps, seed, params or PersonParams())
+    factory = plugins.registry("participants").get(model)
+    try:
+        made: Participant = factory(human_id, stops, planner, speed_mps, seed, params or PersonParams())
+    except Exception as e:  # noqa: BLE001 - a lab's model may fail in any way: one line naming it
+        raise plugins.PluginError(f"participant model {model!r} could not be made for {human_id}: {type(e).__name__}: {e}".splitlines()[0]) from None
     return made

@@ -63,7 +63,7 @@ class Item:
 
 @dataclass(frozen=True)
 class Questionnaire:
-    """One questionnaire as the participant page shows it: answers are `minimum..maximum` in `step`s."""
+    """One questionnaire as the participant page shows it: answers run from `minimum` to `maximum` in steps of `step`."""
 
     name: str
     title: str

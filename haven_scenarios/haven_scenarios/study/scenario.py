@@ -41,7 +41,7 @@ from haven_sim.common.schema import FileModel, Line, Positive, check, checked, l
 from haven_sim.common.yaml_file import file_label, finite, one_line, read_yaml, short, shown_key
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_file import load_world
-from haven_viz.cues import CUES, CueParams
+from haven_viz.cues import CUES, CueParams, unknown_cue
 
 TELEOP = "teleop"  # a person drives this avatar (the browser or `haven teleop`), no simulated model
 MAX_WALKING_SPEED_MPS = 3.0
@@ -241,10 +241,9 @@ class _ScenarioParser:
         )
 
     def condition(self, value: list[Any]) -> tuple[str, ...]:
-        known = (*CUES, "all", "none")
         for i, name in enumerate(value):
-            if name not in known:
-                raise self.fail(f"condition[{i}]", f"is no cue (known: {', '.join(known)}), got {short(name)}")
+            if name not in (*CUES, "all", "none"):
+                raise self.fail(f"condition[{i}]", unknown_cue(name))
         return tuple(value)
 
     def cues(self, value: dict[Any, Any] | None) -> CueParams:

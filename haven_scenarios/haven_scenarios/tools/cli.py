@@ -49,9 +49,19 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+# Commands that run or check trials: a plugin left out is said first (one line each), so a lab
+# sees why its item is missing before a name is refused or a trial runs without it.
+TELLS_LEFT_OUT = frozenset({"sim", "demo", "run", "rerun", "batch", "study", "validate"})
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     try:  # Ctrl-C while the command modules still load (rclpy, numpy) is a plain stop, too
         args = build_parser().parse_args(argv)
+        if args.command in TELLS_LEFT_OUT:
+            from haven_sim.common import plugins
+
+            for line in (p for reg in plugins.every() for p in reg.problems):
+                print(f"haven: plugin left out: {line}", file=sys.stderr)
         code: int = args.func(args)
     except KeyboardInterrupt:
         print("haven: interrupted", file=sys.stderr)

@@ -43,6 +43,7 @@ class EventKind(StrEnum):
     GOAL_REACHED = "goal_reached"  # goal, pose
     # viz
     CUE_TOGGLED = "cue_toggled"  # cue, on
+    CUE_FAILED = "cue_failed"  # cue, error: a cue's code raised; it shows nothing from then on (the session is not valid)
     # scenario and mission executive
     TRIAL_START = "trial_start"
     TARGET_SELECTED = "target_selected"
@@ -87,6 +88,7 @@ REQUIRED: dict[EventKind, tuple[str, ...]] = {
     EventKind.CONTACT_END: ("other",),
     EventKind.OBSTRUCTION_REMOVED: ("id",),
     EventKind.CUE_TOGGLED: ("cue", "on"),
+    EventKind.CUE_FAILED: ("cue", "error"),
     EventKind.GEM_COLLECTED: ("gem", "by"),
     EventKind.ROOM_REACHED: ("room", "by"),
     EventKind.OBSTRUCTION_CLEARED: ("id",),

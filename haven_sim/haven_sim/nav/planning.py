@@ -105,7 +105,7 @@ class PlannerComponent:
             self.nav = Navigator(grid, c.planner, c.shape, c.navigator, c.style, self.lanes, planner_class(c.algorithm))
         else:
             self.nav.set_map(grid)
-        self.notes.append(f"map {grid.width} x {grid.height} at {grid.resolution_m:g} m: {len(self.nav.planner.nodes)} corner nodes")
+        self.notes.append(f"map {grid.width} x {grid.height} at {grid.resolution_m:g} m; path planner {self.config.algorithm}")
         return self._try_pending(now)
 
     def on_odom(self, state: RobotState, now: float) -> list[Message]:

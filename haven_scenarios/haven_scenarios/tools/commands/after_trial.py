@@ -22,7 +22,7 @@ from haven_scenarios.study.questionnaires import likert, registered, resolve
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.commands.recordings import exit_text
 from haven_scenarios.tools.supervisor import Supervisor
-from haven_sim.common import nodes
+from haven_sim.common import nodes, plugins
 from haven_sim.common.yaml_file import file_label, read_yaml
 
 KEPT = (nodes.RECORDER.key, nodes.WEB.key)  # what runs on while the participants answer
@@ -58,6 +58,9 @@ def spec(text: str) -> str | dict[str, Any]:
         return text
     path = Path(text)
     if not path.exists():
+        reg = plugins.registry("questionnaires")
+        if text in reg.left_out:
+            raise ValueError(f"--questionnaire {text[:80]}: {reg.unknown(text)}")
         raise ValueError(f"--questionnaire {text[:80]}: neither a registered questionnaire ({', '.join(registered())}) nor a file")
     data = read_yaml(path, "questionnaire file")
     if not isinstance(data, dict):
