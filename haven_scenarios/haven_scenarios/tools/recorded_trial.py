@@ -343,7 +343,7 @@ def tell(result: RecordedTrial) -> None:
         print(f"haven: {result.died}; the trial was cut short", file=sys.stderr, flush=True)
     print(summary(result.metrics, result.wall_s))
     if not result.valid:
-        print(f"haven: the recording is not complete: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
+        print(f"haven: the session is not valid: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
         if any("from outside the suite" in r for r in result.invalid_reasons):
             hint = "an outside input the study expects is declared with `haven run --allow TOPIC` (docs: Clocks and isolation)"
             print(f"haven: {hint}", file=sys.stderr)
