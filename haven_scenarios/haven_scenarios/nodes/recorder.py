@@ -34,13 +34,15 @@ into the bag's metadata (custom_data `haven.publishers`); one from outside the s
 /plan's history is caught up on where its publisher latches (`RawTopics`' catch-up readers).
 
 Once it has the `trial_end` event and, on every state stream, a message stamped at or after it,
-the recorder says so with a file (`END_MARK` in the session folder): `haven run` stops the nodes
-then, not after a guessed delay, so a busy machine cannot cut the last moments of a trial.
+the recorder says so on the pipe `haven run` gives it (`END_FD_ENV`): `haven run` stops the nodes
+then, not after a guessed delay, so a busy machine cannot cut the last moments of a trial (and a
+recorder that dies closes the pipe, which `haven run` sees at once).
 """
 
 from __future__ import annotations
 
 import contextlib
+import os
 import struct
 import sys
 import time
@@ -58,7 +60,7 @@ from std_msgs.msg import String
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.record.bag import BagWriter
 from haven_scenarios.record.outsiders import Declared, PublisherLog, describe, outsiders, watched
-from haven_scenarios.record.session import END_MARK, EVENTS_FILE
+from haven_scenarios.record.session import END_FD_ENV, EVENTS_FILE
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import build, defaults
@@ -117,7 +119,7 @@ class Recorder(Node):
         self.lost: dict[str, int] = {}
         self.lost_at: list[tuple[str, int, float]] = []  # (topic, messages, sim time DDS reported it)
         self.start_stamp: float | None = None
-        self.end_mark = folder / END_MARK
+        self.end_fd = int(os.environ[END_FD_ENV]) if os.environ.get(END_FD_ENV, "").isdigit() else None  # (haven run's pipe)
         self.end_stamp: float | None = None
         self.reached: set[str] = set()  # streams recorded up to the end
         self.flowing: set[str] = set()  # streams that have reached the recorder
@@ -240,18 +242,18 @@ class Recorder(Node):
         return True
 
     def _follow_streams(self, topic: str, data: bytes) -> None:
-        """/haven/events released once the streams flow; END_MARK once they reach the trial's end."""
+        """/haven/events released once the streams flow; the end said once they reach the trial's end."""
         if topic in STREAMS and self.topics.held:
             self.flowing.add(topic)
             if self.flowing >= set(STREAMS):
                 self.topics.release()
         if self.end_stamp is not None and topic in STREAMS and topic not in self.reached and header_stamp(data) >= self.end_stamp - 1e-6:
             self.reached.add(topic)
-            if self.reached >= set(STREAMS):
-                try:
-                    self.end_mark.write_text(f"{self.end_stamp}\n")
-                except OSError as e:
-                    self._write_failed(self.end_mark, e)
+            if self.reached >= set(STREAMS) and self.end_fd is not None:
+                with contextlib.suppress(OSError):  # (nobody reads any more: haven run is gone)
+                    os.write(self.end_fd, f"{self.end_stamp}\n".encode())
+                    os.close(self.end_fd)
+                self.end_fd = None
 
     def _event(self, data: bytes) -> None:
         try:

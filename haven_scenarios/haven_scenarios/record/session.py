@@ -50,7 +50,9 @@ from haven_viz.world_markers import world_markers
 PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags", "mcap")
 SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = "scenario.yaml", "world.yaml", "params.yaml", "session.json", "metrics.json"
 EVENTS_FILE = "events.jsonl"
-END_MARK = ".recorded_through_end"  # the recorder has the trial's end on every state stream (nodes/recorder.py)
+# The write end of a pipe on which the recorder says it has the trial's end on every state stream
+# (nodes/recorder.py); `haven run` reads the other end (tools/recorded_trial.py).
+END_FD_ENV = "HAVEN_TRIAL_END_FD"
 
 
 NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}")  # participant ids and scenario names: part of a folder name

@@ -9,7 +9,10 @@ valid. session.json gets the run's outcome however it ends.
 
 from __future__ import annotations
 
+import contextlib
 import math
+import os
+import select
 import shutil
 import signal
 import sys
@@ -21,7 +24,7 @@ from typing import Any
 
 from haven_scenarios.record.outsiders import allowable
 from haven_scenarios.record.session import (
-    END_MARK,
+    END_FD_ENV,
     EVENTS_FILE,
     METRICS_FILE,
     PARAMS_FILE,
@@ -221,8 +224,12 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
         specs.append(web_spec(plan, plan.web, folder))
     ended, metrics, repaired = None, None, None
     asked = after_trial.asked(plan.scenario, plan.web)
+    end_read, end_write = os.pipe()  # the recorder says on it when it has the trial's end
+    specs = [replace(s, env={**s.env, END_FD_ENV: str(end_write)}, pass_fds=(end_write,)) if s.name == nodes.RECORDER.key else s for s in specs]
     try:
-        ended = _supervise(ros, specs, folder, None if plan.web is not None else limit, asked)  # the researcher decides when it starts
+        ended = _supervise(
+            ros, specs, folder, None if plan.web is not None else limit, asked, (end_read, end_write)
+        )  # the researcher decides when it starts
         died = exit_text(ended.died.name, ended.died.code) if ended.died is not None else None
         repaired = repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else ""))
         if repaired is not None:
@@ -231,6 +238,7 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
     except OSError as e:  # a full disk while the session is completed: what was written stays
         raise TrialError(f"{folder}: {e.strerror or e}", code=1) from None
     finally:
+        os.close(end_read)
         info["outcome"] = outcome(ended, metrics["end_reason"] if metrics else None, repaired, limit)
         if asked is not None:  # (also when interrupted)
             info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
@@ -240,35 +248,38 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
     return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), wall, died, ended.timed_out, stopped)
 
 
-def _wait_for_recorded_end(folder: Path, timeout_s: float) -> None:
-    """Until the recorder has the `trial_end` event and the state streams up to it (it writes
-    END_MARK), or `timeout_s` (a stream that stopped: a node died), before everything stops."""
-    mark = folder / END_MARK
+def _wait_for_recorded_end(folder: Path, end_read: int, timeout_s: float) -> None:
+    """Until the recorder says on its pipe that it has the `trial_end` event and the state streams
+    up to it, or closes the pipe (it ended), or `timeout_s` (a stream that stopped: a node died),
+    before everything stops."""
     events = folder / EVENTS_FILE
     if not (events.exists() and f'"{EventKind.TRIAL_START.value}"' in events.read_text(encoding="utf-8", errors="replace")):
         return  # no trial started (stopped while held): no end to wait for
-    deadline = time.monotonic() + timeout_s
-    while time.monotonic() < deadline and not mark.exists():
-        time.sleep(0.05)
-    mark.unlink(missing_ok=True)
+    with contextlib.suppress(OSError):
+        if select.select([end_read], [], [], timeout_s)[0]:
+            os.read(end_read, 64)
 
 
-def _supervise(ros: RosOptions, specs: list[ProcessSpec], folder: Path, timeout_s: float | None, asked: Asked | None = None) -> Ended:
-    """`asked`: the teleoperated humans and the questionnaires they answer after the trial."""
+def _supervise(ros: RosOptions, specs: list[ProcessSpec], folder: Path, timeout_s: float | None, asked: Asked | None, end: tuple[int, int]) -> Ended:
+    """`asked`: the teleoperated humans and the questionnaires they answer after the trial; `end`:
+    the recorder's end-of-trial pipe (read, write: the write end is the recorder's alone once it runs)."""
     started = time.monotonic()
     with Supervisor(ros_environment(network=ros.network, domain_id=ros.domain_id)) as sup:
-        sup.install_signal_handlers()
-        for spec in specs:
-            sup.start(spec)
+        try:
+            sup.install_signal_handlers()
+            for spec in specs:
+                sup.start(spec)
+        finally:
+            os.close(end[1])  # (the recorder's alone now: a recorder that ends closes the pipe)
         exited = sup.wait(timeout_s=timeout_s, until_exit_of=nodes.SCENARIO.key)
         timed_out = exited is None and timeout_s is not None and time.monotonic() - started >= timeout_s
         questionnaires = None
         if asked is not None and exited is not None and exited.name == nodes.SCENARIO.key and exited.code == 0:
-            _wait_for_recorded_end(folder, 10.0)  # (the trial's nodes still run: its end is recorded)
+            _wait_for_recorded_end(folder, end[0], 10.0)  # (the trial's nodes still run: its end is recorded)
             questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
         sup.stop_some((nodes.SCENARIO.key,))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
-        if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder marks no end)
-            _wait_for_recorded_end(folder, 10.0)
+        if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder says no end)
+            _wait_for_recorded_end(folder, end[0], 10.0)
         codes = sup.stop()
     return Ended(exited, timed_out, codes.get(nodes.RECORDER.key), questionnaires)
 

@@ -31,6 +31,7 @@ class ProcessSpec:
     argv: Sequence[str]
     env: Mapping[str, str] = field(default_factory=dict)
     cwd: str | None = None  # where it runs (a session's nodes run in the session folder)
+    pass_fds: tuple[int, ...] = ()  # file descriptors it inherits (the recorder's end-of-trial pipe)
 
 
 def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args: Sequence[str] = (), params_file: str | None = None) -> list[str]:
@@ -114,7 +115,7 @@ class Supervisor:
 
     def start(self, spec: ProcessSpec) -> subprocess.Popen[bytes]:
         env = {**self.env, **spec.env}
-        proc = subprocess.Popen(list(spec.argv), env=env, cwd=spec.cwd, start_new_session=True, preexec_fn=self._preexec)
+        proc = subprocess.Popen(list(spec.argv), env=env, cwd=spec.cwd, start_new_session=True, preexec_fn=self._preexec, pass_fds=spec.pass_fds)
         self.procs[spec.name] = proc
         return proc
 
