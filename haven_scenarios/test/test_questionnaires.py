@@ -19,13 +19,20 @@ def test_raw_tlx_is_the_mean_of_six_subscales_on_0_to_100_in_fives() -> None:
     assert s["nasa_tlx_mental"] == 50 and s["nasa_tlx_performance"] == 20
 
 
-def test_godspeed_has_its_five_series_and_reverses_surprised() -> None:
+def test_godspeed_has_its_five_series_asked_and_scored_as_published() -> None:
     assert [name for name, _ in GODSPEED.scales] == ["anthropomorphism", "animacy", "likeability", "intelligence", "safety"]
     assert [len(ids) for _, ids in GODSPEED.scales] == [5, 6, 5, 5, 3]
     answers = {i.id: 5 for i in GODSPEED.items}
     s = score(GODSPEED, answers)
     assert s["godspeed_likeability"] == 5.0
-    assert s["godspeed_safety"] == pytest.approx((5 + 5 + 1) / 3, abs=1e-4)  # "Surprised" (5) is the unsafe end
+    assert s["godspeed_safety"] == 5.0  # (published: no item reversed)
+    s = score(GODSPEED, {**answers, "safety_1": 4, "safety_2": 5, "safety_3": 1})
+    assert s["godspeed_safety"] == pytest.approx(10 / 3, abs=1e-4)  # the 4/5/1: 3.33 as published (4.67 reversed)
+    prompts = {i.id.split("_")[0]: i.prompt for i in GODSPEED.items}
+    assert prompts["safety"] == "Please rate your emotional state on these scales."  # about the participant
+    assert {prompts[s] for s in ("anthropomorphism", "animacy", "likeability", "intelligence")} == {
+        "Please rate your impression of the robot on these scales."
+    }
 
 
 def test_a_studys_own_likert_items_score_as_one_mean_with_reversed_items() -> None:

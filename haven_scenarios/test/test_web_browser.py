@@ -407,7 +407,14 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     page.wait_for_function("havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
     godspeed = {item.id: 1 + k % 5 for k, item in enumerate(BUILTINS["godspeed"].items)}
     assert page.locator("#questionnaire fieldset.differential").count() == len(godspeed)
+    # Asked as published: the robot's impression, then perceived safety about the participant's own state.
+    assert page.locator("#questionnaire p.prompt").all_inner_texts() == [
+        "Please rate your impression of the robot on these scales.",
+        "Please rate your emotional state on these scales.",
+    ]
     answer_with_clicks(page, "godspeed", godspeed)
+    page.locator("#questionnaire p.prompt").last.scroll_into_view_if_needed()
+    screenshot("web_godspeed.png", page.screenshot())
     submit_and_wait(page, "godspeed", 2)
     page.wait_for_function("havenState.questionnaire === 'legibility'", timeout=PAGE_TIMEOUT_MS)
     assert page.locator("#questionnaire input[name='legibility.side']").count() == 7

@@ -7,8 +7,9 @@ Built-ins:
     "Perfect" (0) to "Failure" (100), so higher is more load on every subscale.
   * `godspeed`: the Godspeed series (Bartneck, Kulic, Croft & Zoghbi 2009): 5-point semantic
     differentials for anthropomorphism, animacy, likeability, perceived intelligence and perceived
-    safety; each series scores as the mean of its items. "Quiescent - Surprised" is reverse-scored
-    so that a higher perceived-safety score is always safer.
+    safety, asked as published (perceived safety about the participant's own emotional state, the
+    others about the robot) and scored as published: each series is the mean of its items, none
+    reversed, so scores compare with other papers' (International Journal of Social Robotics 1:71-81).
 
 A study adds its own Likert questionnaire as a mapping (in the study file, or a YAML file named on
 `haven run --questionnaire`):
@@ -59,6 +60,7 @@ class Item:
     low: str  # the anchor at the scale's low end
     high: str  # ... and at its high end
     reverse: bool = False  # scored as (min + max - answer)
+    prompt: str = ""  # the instruction the page shows above this item and those after it, until another ("": the questionnaire's)
 
 
 @dataclass(frozen=True)
@@ -106,7 +108,14 @@ GODSPEED_SERIES: dict[str, tuple[tuple[str, str], ...]] = {
                      ("Unintelligent", "Intelligent"), ("Foolish", "Sensible")),
     "safety": (("Anxious", "Relaxed"), ("Agitated", "Calm"), ("Quiescent", "Surprised")),
 }  # fmt: skip
-GODSPEED_REVERSED = {("safety", "Quiescent")}
+# The published instructions (Bartneck et al. 2009, the questionnaire's appendix): the first four
+# series rate the robot, perceived safety the participant's own emotional state. The published
+# scoring reverses no item: each series is the mean of its items as printed (so for perceived
+# safety "Quiescent - Surprised" runs as printed).
+GODSPEED_PROMPTS = {
+    "safety": "Please rate your emotional state on these scales.",
+}
+GODSPEED_IMPRESSION = "Please rate your impression of the robot on these scales."
 
 
 def _godspeed() -> Questionnaire:
@@ -114,9 +123,10 @@ def _godspeed() -> Questionnaire:
     scales: list[tuple[str, tuple[str, ...]]] = []
     for series, pairs in GODSPEED_SERIES.items():
         ids = tuple(f"{series}_{k + 1}" for k in range(len(pairs)))
-        items += [Item(i, f"{low} - {high}", low, high, (series, low) in GODSPEED_REVERSED) for i, (low, high) in zip(ids, pairs)]
+        prompt = GODSPEED_PROMPTS.get(series, GODSPEED_IMPRESSION)
+        items += [Item(i, f"{low} - {high}", low, high, prompt=prompt) for i, (low, high) in zip(ids, pairs)]
         scales.append((series, ids))
-    text = "Please rate your impression of the robot on these scales."
+    text = "Rate each pair on the scale between its two words."
     return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales), differential=True)
 
 

@@ -41,7 +41,12 @@ export class QuestionnaireForm {
     );
     const values = [];
     for (let v = q.minimum; v <= q.maximum; v += q.step) values.push(v);
-    for (const item of q.items) form.append(this.row(q, item, values));
+    let prompt = "";
+    for (const item of q.items) {
+      if (item.prompt && item.prompt !== prompt) form.append(el("p", { className: "instructions prompt", textContent: item.prompt }));
+      prompt = item.prompt || prompt;
+      form.append(this.row(q, item, values));
+    }
     this.message = el("p", { className: "missing" }, { role: "alert" });
     this.button = el("button", { type: "submit", textContent: position < count ? "Submit and go on" : "Submit" });
     form.append(this.message, this.button);
