@@ -166,12 +166,6 @@ class CueFrame:
     ways: dict[str, tuple[tuple[Point, ...], bool]] = field(default_factory=dict)  # cue -> (the way it shows, drawn on the robot)
 
 
-def _error(e: BaseException) -> str:
-    """An exception in one line: `ValueError: what it said`."""
-    text = str(e).splitlines()[0] if str(e) else ""
-    return f"{type(e).__name__}: {text[:200]}".rstrip(": ")
-
-
 class ArCues:
     """The cues of one robot: the path it follows and one object per cue (`names`: all registered).
     A cue whose code raises (a lab's, being written) is in `failed` and shows nothing from then
@@ -185,7 +179,7 @@ class ArCues:
             try:
                 self.cues[n] = CUE_CLASSES[n](self.params)
             except Exception as e:  # noqa: BLE001 - a lab's cue may fail in any way; the trial and the other cues go on
-                self.failed[n] = _error(e)
+                self.failed[n] = plugins.failure(e)
         self.set_path([])
 
     def set_path(self, poses: Sequence[Pose2D]) -> None:
@@ -216,7 +210,7 @@ class ArCues:
             try:
                 shown = cue.show(ctx, markers)
             except Exception as e:  # noqa: BLE001 - as above
-                self.failed[name] = _error(e)
+                self.failed[name] = plugins.failure(e)
                 continue
             if shown is None:
                 continue

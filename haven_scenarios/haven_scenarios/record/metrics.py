@@ -98,7 +98,7 @@ def _one(name: str, metric: Any, data: TrialData, have: Mapping[str, Any]) -> di
     try:
         got = dict(metric(data))
     except Exception as e:  # noqa: BLE001 - a lab's metric may fail in any way; the trial's metrics stand
-        return {f"{name}_error": f"{type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}"[:200]}
+        return {f"{name}_error": plugins.failure(e)}
     taken = sorted(k for k in got if k in have)
     if taken:
         return {f"{name}_error": f"would overwrite {', '.join(taken[:3])}"}

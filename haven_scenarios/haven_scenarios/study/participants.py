@@ -357,5 +357,5 @@ def make_walker(
     try:
         made: Participant = factory(human_id, stops, planner, speed_mps, seed, params or PersonParams())
     except Exception as e:  # noqa: BLE001 - a lab's model may fail in any way: one line naming it
-        raise plugins.PluginError(f"participant model {model!r} could not be made for {human_id}: {type(e).__name__}: {e}".splitlines()[0]) from None
+        raise plugins.PluginError(f"participant model {model!r} could not be made for {human_id}: {plugins.failure(e)}") from None
     return made

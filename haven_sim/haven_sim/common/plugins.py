@@ -116,12 +116,18 @@ def _take(entry: importlib.metadata.EntryPoint, reg: Registry, accept: Callable[
     try:
         value = entry.load()
     except Exception as e:  # noqa: BLE001 - a plugin's import may fail in any way; the others go on
-        return f"does not load: {type(e).__name__}: {_line(e)}".rstrip(": ")
+        return f"does not load: {failure(e)}"
     try:
         value = accept(entry.name, value)
     except ValueError as e:
         return _line(e) or "refused"
     return Plugin(reg.kind, entry.name, _package(entry), entry.value, value)
+
+
+def failure(e: BaseException) -> str:
+    """What a plugin's code raised, in one line (`ValueError: what it said`, at most 200 characters):
+    every place that contains a failing plugin says it so."""
+    return f"{type(e).__name__}: {_line(e)}"[:200].rstrip(": ")
 
 
 def _line(e: BaseException) -> str:

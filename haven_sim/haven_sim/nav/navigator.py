@@ -27,6 +27,7 @@ from typing import Any
 
 import numpy as np
 
+from haven_sim.common import plugins
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
@@ -134,7 +135,7 @@ class Navigator:
         except PlanningError:
             raise
         except Exception as e:  # noqa: BLE001 - a lab's planner may fail in any way
-            raise PlanningError(f"the planner failed: {type(e).__name__}: {str(e).splitlines()[0] if str(e) else ''}".rstrip(": ")) from None
+            raise PlanningError(f"the planner failed: {plugins.failure(e)}") from None
 
     @property
     def block_distance_m(self) -> float:
