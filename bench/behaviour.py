@@ -62,7 +62,7 @@ def one(job: tuple[str, dict[str, str], int]) -> dict[str, Any]:
         "pass_signal_lead_s_median",
         "turns",
         "turns_signalled",
-        "min_human_distance_m",
+        "min_human_centre_distance_m",
         "charge_trips",
         "duration_s",
     )
@@ -73,7 +73,7 @@ def summary(rows: list[dict[str, Any]]) -> str:
     n = len(rows)
     ends = Counter(r["end_reason"] for r in rows)
     leads = [r["pass_signal_lead_s_median"] for r in rows if r["pass_signal_lead_s_median"] is not None]
-    dmin = [r["min_human_distance_m"] for r in rows if r["min_human_distance_m"] is not None]
+    dmin = [r["min_human_centre_distance_m"] for r in rows if r["min_human_centre_distance_m"] is not None]
     return (
         f"completed {ends['completed']}/{n} ({', '.join(f'{k} {v}' for k, v in ends.items() if k != 'completed') or 'no other end'}); "
         f"re-plans {sum(r['replans'] for r in rows)}, waits {sum(r['waits'] for r in rows)}; "

@@ -49,7 +49,7 @@ def main() -> None:
     span = (tl.t > passed.stamp - t0 - 4.0) & (tl.t < passed.stamp - t0 + 14.0)
     trails = {"robot": (tl.robot_xy[span], "tab:blue"), "person (h1)": (tl.humans["h1"][span], "tab:red")}
     x = float(np.mean(tl.robot_xy[span, 0]))
-    lead, closest = m["pass_signal_lead_s_median"], m["min_human_distance_m"]
+    lead, closest = m["pass_signal_lead_s_median"], m["min_human_centre_distance_m"]
     title = (
         f"Figure 3: an oncoming person {passed['gap_m']:.1f} m ahead (who has seen the projected path and keeps to their side);\n"
         f"the robot lights its {side} signal, curves {side} {lead:.1f} s later, and passes {closest:.2f} m from them (centre to centre)"

@@ -23,7 +23,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from common import OUT, save  # noqa: E402
 
 FLOOD = Path(__file__).resolve().parents[1] / "haven_scenarios" / "test" / "flood.py"
-SAME = ("robot_time_to_finish_s", "min_human_distance_m", "robot_path_length_m", "replans", "waits", "duration_s")
+SAME = ("robot_time_to_finish_s", "min_human_centre_distance_m", "robot_path_length_m", "replans", "waits", "duration_s")
 
 
 def trial(scenario: str, domain: int, flood: tuple[float, float] | None) -> dict[str, Any]:

@@ -17,7 +17,7 @@ folder.mkdir(parents=True, exist_ok=True)
 
 # One recorded trial: blocks until the session folder is complete.
 trial = api.recorded_trial("hallway", participant="pilot", condition=["turn_signals"], seed=1, sessions=folder / "sessions")
-print(f"recorded: {trial.folder.name}: {trial.outcome}, valid {trial.valid}, closest approach {trial.metrics['min_human_distance_m']} m")
+print(f"recorded: {trial.folder.name}: {trial.outcome}, valid {trial.valid}, closest approach {trial.metrics['min_human_centre_distance_m']} m")
 
 # A pilot study: three participants, two conditions, counterbalanced.
 study = folder / "pilot_study.yaml"

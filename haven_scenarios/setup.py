@@ -63,7 +63,8 @@ setup(
         "haven.metrics": [
             f"{name} = haven_scenarios.record.metrics:{name}"
             for name in ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people")
-        ],
+        ]
+        + ["hunav = haven_scenarios.record.hunav:hunav"],
         "haven.questionnaires": [
             "nasa_tlx = haven_scenarios.study.questionnaires:NASA_TLX",
             "godspeed = haven_scenarios.study.questionnaires:GODSPEED",

@@ -5,7 +5,7 @@ layer over the same functions. For example::
     from haven_scenarios import api
 
     r = api.batch_trial("hallway", seed=3, condition=["turn_signals"])     # no ROS, in this process
-    print(r.end_reason, r.metrics["min_human_distance_m"])
+    print(r.end_reason, r.metrics["min_human_centre_distance_m"])
 
     s = api.recorded_trial("hallway", participant="p01", seed=3)          # the whole node suite, recorded
     print(s.folder, s.outcome, s.valid, s.metrics["human_contacts"])

@@ -26,7 +26,7 @@ class Score:
     duration_s: float
     robot_path_length_m: float
     human_path_length_m: dict[int, float]
-    min_human_distance_m: float
+    min_human_centre_distance_m: float
     odom_coverage: float  # recorded / expected (one per 0.02 s step) within the trial
     humans_coverage: float  # recorded / expected (20 Hz)
     odom_max_gap_s: float
@@ -72,7 +72,7 @@ def score(bag: Path) -> Score:
         duration_s=end - start,
         robot_path_length_m=length(robot),
         human_path_length_m={i: length(xy) for i, xy in people.items()},
-        min_human_distance_m=float(min(np.min(np.hypot(*(xy - robot).T)) for xy in people.values())),
+        min_human_centre_distance_m=float(min(np.min(np.hypot(*(xy - robot).T)) for xy in people.values())),
         odom_coverage=odom_cov,
         humans_coverage=humans_cov,
         odom_max_gap_s=odom_gap,

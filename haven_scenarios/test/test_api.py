@@ -25,7 +25,7 @@ def test_a_batch_trial_and_a_sweep_are_the_commands_trials(tmp_path):
     assert main(["batch", "hallway", "--grid", "condition=all,none", "--seeds", "0-1", "--out", str(out), "--workers", "1"]) == 0
     with out.open() as f:
         from_cli = list(csv.DictReader(f))
-    assert [str(row["min_human_distance_m"]) for row in rows] == [row["min_human_distance_m"] for row in from_cli]
+    assert [str(row["min_human_centre_distance_m"]) for row in rows] == [row["min_human_centre_distance_m"] for row in from_cli]
 
 
 def test_a_pilot_study_through_the_api(tmp_path):

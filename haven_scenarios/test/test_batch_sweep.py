@@ -92,7 +92,7 @@ def test_rows_are_byte_identical_in_this_process_in_fresh_worker_processes_and_o
     assert _sweep_csv(tmp_path, "dask", workers=2, cluster="local") == one
     read = list(csv.DictReader(one.decode().splitlines()))
     assert [(r["model"], r["seed"]) for r in read] == [("walker", "0"), ("walker", "1"), ("yielder", "0"), ("yielder", "1")]
-    assert len({r["min_human_distance_m"] for r in read}) > 1  # the model and the seed change the trial
+    assert len({r["min_human_centre_distance_m"] for r in read}) > 1  # the model and the seed change the trial
 
 
 def test_finished_rows_are_journaled_as_they_come(tmp_path, monkeypatch):

@@ -72,7 +72,7 @@ def test_known_answers_on_a_straight_drive_past_a_person():
     m = compute(straight(), "synthetic", "completed")
     assert m["duration_s"] == 5.0 and m["robot_time_to_finish_s"] == 4.0
     assert m["robot_path_length_m"] == pytest.approx(5.0)
-    assert m["min_human_distance_m"] == pytest.approx(1.0)  # passing abeam at x = 2.5
+    assert m["min_human_centre_distance_m"] == pytest.approx(1.0)  # passing abeam at x = 2.5
     assert m["min_human_surface_distance_m"] == pytest.approx(1.0 - 0.177 - 0.25)
     assert m["h1_personal_intrusions"] == 1  # inside 1.2 m once: |x - 2.5| < sqrt(1.2^2 - 1)
     assert m["h1_personal_intrusion_s"] == pytest.approx(2 * math.sqrt(1.2**2 - 1.0), abs=0.03)
@@ -108,8 +108,8 @@ def test_people_are_paired_with_the_robot_by_time_not_by_index():
     stand(rec, 0.18, 6.0, {"h1": (3.0, 0.6)})  # a person beside the track at x = 3
     events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO), event(EventKind.TRIAL_END, 6.0, Source.SCENARIO, reason="completed"))
     m = compute(rec)
-    assert m["min_human_distance_m"] == pytest.approx(0.6, abs=0.005)
-    assert m["h1_min_distance_m"] == pytest.approx(0.6, abs=0.005)
+    assert m["min_human_centre_distance_m"] == pytest.approx(0.6, abs=0.005)
+    assert m["h1_min_centre_distance_m"] == pytest.approx(0.6, abs=0.005)
 
 
 def test_people_moving_are_interpolated_between_their_samples():
@@ -123,7 +123,7 @@ def test_people_moving_are_interpolated_between_their_samples():
         rec.add(Message(topics.HUMANS, {"h1": Pose2D(5.0 - 0.5 * t, 0.0, math.pi)}, t))
     events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO), event(EventKind.TRIAL_END, 6.0, Source.SCENARIO, reason="completed"))
     m = compute(rec)
-    assert m["min_human_distance_m"] == pytest.approx(5.0 - 0.5 * 6.0, abs=0.01)
+    assert m["min_human_centre_distance_m"] == pytest.approx(5.0 - 0.5 * 6.0, abs=0.01)
 
 
 def test_nothing_after_trial_end_counts():

@@ -107,7 +107,7 @@ def test_a_goal_flood_a_reset_and_a_parameter_change_leave_a_lockstep_trial_its_
     assert "/goal_pose: published by goal_flood from outside the suite, ignored on the lockstep clock" in m["outside_publishers"]
     assert_same_trial(m, run_trial(load_scenario(str(scenario)), 0).metrics, rel=0.01)
     s = score(folder / "bag")
-    assert m["min_human_distance_m"] == pytest.approx(s.min_human_distance_m, abs=0.02)
+    assert m["min_human_centre_distance_m"] == pytest.approx(s.min_human_centre_distance_m, abs=0.02)
     events = [json.loads(line) for line in (folder / "events.jsonl").read_text().splitlines()]
     ignored = sum(e.get("ignored", 0) for e in events if e["type"] == "outside_input" and e["topic"] == "/goal_pose")
     assert ignored > 100

@@ -37,7 +37,7 @@ def test_a_tiny_study_runs_each_trial_as_a_recorded_haven_run(ros, tmp_path):
         assert (info["participant"], info["seed"], info["outcome"], info["clock"]) == ("p07", 3, "completed", "lockstep")
         metrics = json.loads((session / "metrics.json").read_text())
         batch = run_trial(load_scenario("shared_room"), 3, parse_condition(cues)).metrics  # the same trial without ROS
-        assert metrics["min_human_distance_m"] == pytest.approx(batch["min_human_distance_m"], rel=0.01)
+        assert metrics["min_human_centre_distance_m"] == pytest.approx(batch["min_human_centre_distance_m"], rel=0.01)
         assert metrics["robot_gem_order"] == batch["robot_gem_order"]
     rep = ros.run([*HAVEN, "study", "report", str(path), "--dir", str(tmp_path / "tiny")], timeout_s=120)
     assert rep.returncode == 0, rep.stderr

@@ -135,13 +135,13 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     assert {(r["participant"], r["trial_id"]) for r in rows} == {
         (f"p0{k}", t) for k in (1, 2, 3) for t in ("practice1-shared_room-all", "shared_room-none", "shared_room-all")
     }
-    closest = [r for r in rows if r["measure"] == "min_human_distance_m"]
+    closest = [r for r in rows if r["measure"] == "min_human_centre_distance_m"]
     assert len(closest) == 9 and all(r["human"] == "" for r in closest)
     standing = [r for r in rows if r["measure"] == "time_not_moving_s" and r["human"] == "h1"]
     assert len(standing) == 9
     with (root / "report" / "study_wide.csv").open() as f:
         wide = list(csv.DictReader(f))
-    assert len(wide) == 9 and "h1_time_not_moving_s" in wide[0] and "min_human_distance_m" in wide[0]
+    assert len(wide) == 9 and "h1_time_not_moving_s" in wide[0] and "min_human_centre_distance_m" in wide[0]
     png = root / "report" / "summary.png"
     assert png.stat().st_size > 20_000
 

@@ -12,16 +12,16 @@ from haven_scenarios.study.progress import finished
 
 
 def test_per_person_metrics_become_human_and_measure_and_strings_are_not_measures() -> None:
-    metrics = {"min_human_distance_m": 1.2, "h1_detour_m": 0.4, "h12_detour_m": 0.9, "h1_contacts": 0, "robot_gem_order": "rg1 rg2",
+    metrics = {"min_human_centre_distance_m": 1.2, "h1_detour_m": 0.4, "h12_detour_m": 0.9, "h1_contacts": 0, "robot_gem_order": "rg1 rg2",
                "valid": True, "seed": 4, "pass_signal_lead_s_median": None, "end_reason": "completed"}  # fmt: skip
     got = split_measures(metrics, ["h1", "h12"])
     assert got == [
-        Measure("", "min_human_distance_m", 1.2),
+        Measure("", "min_human_centre_distance_m", 1.2),
         Measure("h1", "detour_m", 0.4),
         Measure("h12", "detour_m", 0.9),
         Measure("h1", "contacts", 0.0),
     ]
-    assert [m.column for m in got] == ["min_human_distance_m", "h1_detour_m", "h12_detour_m", "h1_contacts"]
+    assert [m.column for m in got] == ["min_human_centre_distance_m", "h1_detour_m", "h12_detour_m", "h1_contacts"]
 
 
 @pytest.mark.parametrize(

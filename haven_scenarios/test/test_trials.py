@@ -119,7 +119,7 @@ def test_the_hallway_figure_3_pass_signals_first_and_keeps_the_centre_line():
     m = r.metrics
     assert m["passes"] >= 1 and m["passes_signalled"] == m["passes"]
     assert m["pass_signal_lead_s_median"] >= 1.0
-    assert m["min_human_distance_m"] > 0.55
+    assert m["min_human_centre_distance_m"] > 0.55
     _, xs = _on_centre_lines(r)
     assert max(xs) < 0.03
 

@@ -32,7 +32,9 @@ from haven_sim.sim.world import World
 from haven_viz.cues import CUE_CLASSES, CUES
 
 TURN_RATE_RPS = 0.3  # |angular velocity| above this is a turn
-STILL_MPS, STILL_RPS = 0.01, 0.01  # the robot is not moving (HuNavSim uses 0.001 m/s and 0.01 rad/s)
+# The robot is not moving: |v| and |w| below these (ours; HuNavSim's time_not_moving compares the
+# signed v < 0.01 m/s and w < 0.02 rad/s, see record/hunav.py).
+STILL_MPS, STILL_RPS = 0.01, 0.01
 PERSON_STILL_MPS = 0.05
 
 
@@ -59,7 +61,7 @@ class TrialData:
 
 # Ours, in metrics.json's order; each registered as a plugin of kind `metrics` (setup.py), as a
 # lab's own metric is: a function of TrialData giving its columns. Theirs follow in name order.
-OURS = ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people")
+OURS = ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people", "hunav")
 
 
 def accept_plugin(name: str, value: Any) -> Any:
@@ -164,8 +166,13 @@ def _robot(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
         "robot_accel_mean_mps2": _r(float(np.mean(np.abs(accel))) if len(accel) else None),
         "robot_accel_max_mps2": _r(float(np.max(np.abs(accel))) if len(accel) else None),
         "robot_jerk_mean_mps3": _r(float(np.mean(np.abs(jerk))) if len(jerk) else None, 2),
-        "cumulative_heading_change_rad": _r(float(np.sum(np.abs(np.diff(tl.robot_yaw)))) if len(tl.t) > 1 else 0.0),
+        "cumulative_heading_change_rad": _r(_heading_change(tl.robot_yaw)),
     }
+
+
+def _heading_change(yaw: FloatArray) -> float:
+    """Sum of |heading changes|, each wrapped to [-pi, pi) (a yaw read as +pi then -pi turned 0)."""
+    return float(np.sum(np.abs((np.diff(yaw) + math.pi) % (2.0 * math.pi) - math.pi))) if len(yaw) > 1 else 0.0
 
 
 def _turning(poses: Sequence[Any]) -> float:
@@ -192,7 +199,7 @@ def _navigation(tl: Timeline, events: Sequence[Event], rec: Recording, t0: float
         driven += _length(tl.robot_xy[sel])
     plans = {round(s - t0, 4): p for s, p in rec.plans if t0 - 1e-9 <= s <= t1 + 1e-9}
     plan_turning = sum(_turning(plans[round(s, 4)]) for s in made if round(s, 4) in plans)
-    turning = float(np.sum(np.abs(np.diff(tl.robot_yaw)))) if len(tl.t) > 1 else 0.0
+    turning = _heading_change(tl.robot_yaw)
     return {
         "waits": len(waits),
         "wait_time_s": _r(sum(b - a for a, b in waits), 2),
@@ -211,7 +218,7 @@ def _distances(tl: Timeline) -> dict[str, FloatArray]:
 def _proximity(tl: Timeline) -> dict[str, Any]:
     d = _distances(tl)
     if not d:
-        return {k: None for k in ("min_human_distance_m", "min_human_surface_distance_m", "avg_closest_human_distance_m")}
+        return {k: None for k in ("min_human_centre_distance_m", "min_human_surface_distance_m", "avg_closest_human_centre_distance_m")}
     closest = np.nanmin(np.vstack(list(d.values())), axis=0)
     total = float(np.sum(tl.dt)) or 1.0
     bands = {
@@ -221,12 +228,12 @@ def _proximity(tl: Timeline) -> dict[str, Any]:
         "public": (ZONES["social"], math.inf),
     }
     out: dict[str, Any] = {
-        "min_human_distance_m": _r(float(np.nanmin(closest))),
+        "min_human_centre_distance_m": _r(float(np.nanmin(closest))),
         "min_human_surface_distance_m": _r(float(np.nanmin(closest)) - ROBOT_BODY.radius_m - HUMAN_BODY.radius_m),
-        "avg_closest_human_distance_m": _r(float(np.nanmean(closest))),
+        "avg_closest_human_centre_distance_m": _r(float(np.nanmean(closest))),
     }
     for name, (lo, hi) in bands.items():
-        out[f"closest_{name}_pct"] = _r(100.0 * float(np.sum(tl.dt[(closest >= lo) & (closest < hi)])) / total, 1)
+        out[f"closest_{name}_centre_pct"] = _r(100.0 * float(np.sum(tl.dt[(closest >= lo) & (closest < hi)])) / total, 1)
     return out
 
 
@@ -338,13 +345,14 @@ def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None
     d = np.hypot(*(xy - tl.robot_xy).T)
     own = [e for e in events if e.get("by") == hid and e.kind in (EventKind.GEM_COLLECTED, EventKind.ROOM_REACHED)]
     done = _first(events, EventKind.TASK_DONE, by=hid)
+    working = tl.t[:-1] < (done if done is not None else math.inf)  # standing counts until their task is done
     out: dict[str, Any] = {
         f"{hid}_time_to_finish_s": _r(max([e.stamp for e in own], default=done) if done is not None else None, 2),
         f"{hid}_path_length_m": _r(_length(xy)),
-        f"{hid}_time_not_moving_s": _r(float(np.sum(dt[:-1][speed < PERSON_STILL_MPS])) if len(speed) else 0.0, 2),
+        f"{hid}_time_not_moving_s": _r(float(np.sum(dt[:-1][(speed < PERSON_STILL_MPS) & working])) if len(speed) else 0.0, 2),
         f"{hid}_detour_m": _r(_detour(tl.t, xy, own, world)),
         f"{hid}_gems": sum(1 for e in own if e.kind is EventKind.GEM_COLLECTED),
-        f"{hid}_min_distance_m": _r(float(np.min(d)) if len(d) else None),
+        f"{hid}_min_centre_distance_m": _r(float(np.min(d)) if len(d) else None),
     }
     at = [min(int(np.searchsorted(tl.t, e.stamp - 1e-9)), len(xy) - 1) for e in own]
     count, seconds = hesitations(tl.t, xy, xy[at] if at else np.zeros((0, 2)), done)

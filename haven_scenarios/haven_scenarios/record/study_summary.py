@@ -21,7 +21,7 @@ from haven_sim.common import atomic
 SUMMARY = ("scenario", "condition", "human", "measure", "n", "n_invalid", "mean", "sd", "median")
 # The main measures of the figure: (per person?, measure, axis label); questionnaire scores follow.
 MAIN = (
-    (False, "min_human_distance_m", "closest approach of the robot (m)"),
+    (False, "min_human_centre_distance_m", "closest approach of the robot (m)"),
     (False, "robot_time_to_finish_s", "robot's time to finish its task (s)"),
     (True, "time_to_finish_s", "person's time to finish their task (s)"),
     (True, "detour_m", "person's detour (m)"),

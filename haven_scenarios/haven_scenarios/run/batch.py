@@ -101,7 +101,7 @@ def summary(rows: Sequence[dict[str, Any]]) -> str:
     times = [r["robot_time_to_finish_s"] for r in rows if r["robot_time_to_finish_s"] is not None]
     finish = f"robot finishes in {sum(times) / len(times):.1f} s on average" if times else "the robot finished in no trial"
     contacts = sum(r["human_contacts"] for r in rows)
-    distances = [r["min_human_distance_m"] for r in rows if r["min_human_distance_m"] is not None]
+    distances = [r["min_human_centre_distance_m"] for r in rows if r["min_human_centre_distance_m"] is not None]
     closest = f"closest approach {min(distances):.2f} m (the least of any trial)" if distances else "no person in any trial"
     return f"{done}/{n} completed, {finish}, {contacts} human contact(s), {closest}"
 

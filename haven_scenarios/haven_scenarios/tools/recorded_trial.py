@@ -342,7 +342,7 @@ def summary(metrics: dict[str, Any], wall_s: float) -> str:
     robot = f"robot finished at {finished} s" if finished is not None else "robot did not finish"
     return (
         f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall_s:.0f} s wall): {robot}, "
-        f"closest approach {metrics.get('min_human_distance_m')} m, {metrics.get('waits')} wait(s), "
+        f"closest approach {metrics.get('min_human_centre_distance_m')} m, {metrics.get('waits')} wait(s), "
         f"{metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)"
     )
 
