@@ -12,17 +12,18 @@ Every trial with a finished session is in both, valid or not (`valid` says which
 from __future__ import annotations
 
 import json
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.record.codebook import Codebook
 from haven_scenarios.record.session import METRICS_FILE, analyse, session_info
 from haven_scenarios.study.progress import TrialProgress
 from haven_scenarios.study.questionnaires import ANSWERS_FILE
 
 DESIGN = ("participant", "trial_id", "order_position", "practice", "scenario", "condition", "seed", "valid", "end_reason", "session")
-LONG = (*DESIGN[:1], "human", *DESIGN[1:], "measure", "value")
+LONG = (*DESIGN[:1], "human", *DESIGN[1:], "measure", "unit", "value")  # unit: as in codebook.csv
 NOT_MEASURES = ("seed", "valid")  # numbers in metrics.json that are design columns
 
 
@@ -118,8 +119,12 @@ def trial_results(p: TrialProgress) -> TrialResults | None:
     return TrialResults(design, (*split_measures(metrics, humans), *answers))
 
 
-def long_rows(results: Sequence[TrialResults]) -> list[dict[str, Any]]:
-    return [{**r.design, "human": m.human, "measure": m.measure, "value": m.value} for r in results for m in r.measures]
+def long_rows(results: Sequence[TrialResults], unit: Callable[[str, str], str] | None = None) -> list[dict[str, Any]]:
+    """`unit(human, measure)`: the codebook's (default: metrics and registered questionnaires)."""
+    unit = unit or Codebook().unit
+    return [
+        {**r.design, "human": m.human, "measure": m.measure, "unit": unit(m.human, m.measure), "value": m.value} for r in results for m in r.measures
+    ]
 
 
 def wide_rows(results: Sequence[TrialResults]) -> list[dict[str, Any]]:

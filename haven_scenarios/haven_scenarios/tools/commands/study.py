@@ -6,6 +6,8 @@ import argparse
 from dataclasses import dataclass
 from pathlib import Path
 
+from haven_scenarios.record.codebook import Codebook
+from haven_scenarios.record.codebook import write as write_codebook
 from haven_scenarios.record.report import write_table
 from haven_scenarios.record.study_summary import SUMMARY, draw, summary_rows
 from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows
@@ -163,7 +165,10 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         raise ValueError(f"no finished trials of study {study.name} in {root} (see `haven study status {study.name} --dir {root}`)")
     out = out if out is not None else root / "report"
     try:
-        write_table(out / "study_long.csv", long_rows(results), LONG)
+        book = Codebook(questionnaires)
+        long = long_rows(results, book.unit)
+        write_table(out / "study_long.csv", long, LONG)
+        write_codebook(out, book.entries(long))
         write_table(out / "study_wide.csv", wide_rows(results), DESIGN)
         conditions = [c.name for c in study.conditions]
         write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
@@ -184,7 +189,10 @@ def report_cmd(args: argparse.Namespace) -> int:
         return fail(str(e))
     out = report.folder
     print(f"haven: study {study.name}: {report.trials_done}/{report.trials} trials done; {report.counts}")
-    print(f"haven: wrote {out / 'study_long.csv'}, study_wide.csv, summary.csv" + (", summary.png" if report.picture else " (no measures to draw)"))
+    print(
+        f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), study_wide.csv, summary.csv"
+        + (", summary.png" if report.picture else " (no measures to draw)")
+    )
     if report.study_changed:
         print(f"haven: note: the study file changed since the first run in {root}")
     return 0
