@@ -131,12 +131,15 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     assert report.returncode == 0, report.stderr
     with (root / "report" / "study_long.csv").open() as f:
         rows = list(csv.DictReader(f))
-    assert list(rows[0])[:3] == ["participant", "human", "trial_id"] and list(rows[0])[-2:] == ["measure", "value"]
+    assert list(rows[0])[:3] == ["participant", "human", "trial_id"] and list(rows[0])[-3:] == ["measure", "unit", "value"]
+    with (root / "report" / "codebook.csv").open() as f:  # every measure of the long table, documented
+        book = {(r["per_person"] == "True", r["measure"]): r for r in csv.DictReader(f)}
+    assert book.keys() == {(bool(r["human"]), r["measure"]) for r in rows} and all(r["source"] for r in book.values())
     assert {(r["participant"], r["trial_id"]) for r in rows} == {
         (f"p0{k}", t) for k in (1, 2, 3) for t in ("practice1-shared_room-all", "shared_room-none", "shared_room-all")
     }
     closest = [r for r in rows if r["measure"] == "min_human_centre_distance_m"]
-    assert len(closest) == 9 and all(r["human"] == "" for r in closest)
+    assert len(closest) == 9 and all(r["human"] == "" and r["unit"] == "m" for r in closest)
     standing = [r for r in rows if r["measure"] == "time_not_moving_s" and r["human"] == "h1"]
     assert len(standing) == 9
     with (root / "report" / "study_wide.csv").open() as f:

@@ -2,10 +2,11 @@
 
 The simulator reports every touch that begins and ends (`contact_begin` / `contact_end`); bodies
 that graze each other flicker between the two. An episode is a run of touches with the same body
-separated by less than `DEBOUNCE_S`. For a person, the episode is attributed as SEAN 2.0 and the
-HuNavSim evaluator separate robot-on-person from person-on-robot collisions: at its first touch,
-the robot's speed toward the person is compared with the person's speed toward the robot
-(velocities along the line between their centres); the faster closer ran into the other.
+separated by less than `DEBOUNCE_S`. For a person, the episode is attributed by our own rule (SEAN
+2.0 and the HuNavSim evaluator also separate robot-on-person from person-on-robot collisions, by
+other rules; HuNavSim's, per sample, is in record/hunav.py): at its first touch, the robot's speed
+toward the person is compared with the person's speed toward the robot (velocities along the line
+between their centres); the faster closer ran into the other.
 """
 
 from __future__ import annotations

@@ -1,9 +1,9 @@
 """Trial metrics from a `Recording`: the same code for a bag read back and for a batch trial.
 
 Every metric is defined in `metric_table` (name, unit, definition, source). Each group of them is a
-plugin of kind `metrics`, as a lab's own metric is (`TrialData` in, columns out). Everything is computed
-on the trial's own timeline (`timeline.Timeline`): header stamps, one grid, exactly
-[trial_start, trial_end].
+plugin of kind `metrics`, as a lab's own metric is (`TrialData` in, columns out). Ours are computed on the
+trial's own timeline (`timeline.Timeline`): header stamps, one grid, exactly [trial_start,
+trial_end]; HuNavSim's (`hunav`, record/hunav.py) on its own samples, as its evaluator takes them.
 """
 
 from __future__ import annotations
@@ -59,8 +59,9 @@ class TrialData:
     world: World | None
 
 
-# Ours, in metrics.json's order; each registered as a plugin of kind `metrics` (setup.py), as a
-# lab's own metric is: a function of TrialData giving its columns. Theirs follow in name order.
+# The groups HAVEN ships (`hunav`: HuNavSim's evaluator), in metrics.json's order; each registered
+# as a plugin of kind `metrics` (setup.py), as a lab's own metric is: a function of TrialData giving
+# its columns. A lab's follow in name order.
 OURS = ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people", "hunav")
 
 
