@@ -22,7 +22,7 @@ def results() -> list[TrialResults]:
         Measure("", "hunav_intimate_space_intrusions_pct", 0.4),
         Measure("", "min_human_centre_distance_m", 0.76),
         Measure("h1", "time_not_moving_s", 0.1),
-        Measure("h1", "intimate_intrusion_s", 0.0),
+        Measure("h1", "intimate_centre_intrusion_s", 0.0),
         Measure("h1", "contacts_robot_on_person", 0.0),
         Measure("h2", "time_not_moving_s", 3.0),
         Measure("h1", "godspeed_safety", 4.0),
@@ -45,7 +45,7 @@ def test_every_measure_of_the_long_table_has_one_row_with_its_unit_source_and_fo
     assert entries[(False, "min_human_centre_distance_m")].source == "HAVEN for ROS 2"
     standing = entries[(True, "time_not_moving_s")]
     assert standing.wide_column == "<h>_time_not_moving_s" and "task_done" in standing.definition
-    assert entries[(True, "intimate_intrusion_s")].wide_column == "<h>_<zone>_intrusion_s"
+    assert entries[(True, "intimate_centre_intrusion_s")].wide_column == "<h>_<zone>_centre_intrusion_s"
     assert entries[(True, "contacts_robot_on_person")].wide_column == "<h>_contacts"
     safety = entries[(True, "godspeed_safety")]
     assert safety.unit == "points 1-5" and safety.formula.endswith("questionnaires.py:score") and "safety_1" in safety.definition

@@ -74,11 +74,11 @@ def test_known_answers_on_a_straight_drive_past_a_person():
     assert m["robot_path_length_m"] == pytest.approx(5.0)
     assert m["min_human_centre_distance_m"] == pytest.approx(1.0)  # passing abeam at x = 2.5
     assert m["min_human_surface_distance_m"] == pytest.approx(1.0 - 0.177 - 0.25)
-    assert m["h1_personal_intrusions"] == 1  # inside 1.2 m once: |x - 2.5| < sqrt(1.2^2 - 1)
-    assert m["h1_personal_intrusion_s"] == pytest.approx(2 * math.sqrt(1.2**2 - 1.0), abs=0.03)
-    assert m["h1_intimate_intrusion_s"] == 0.0
-    assert m["h1_personal_band_s"] == m["h1_personal_intrusion_s"]  # nothing nearer than 0.45 m
-    assert m["h1_social_band_s"] == pytest.approx(m["h1_social_intrusion_s"] - m["h1_personal_intrusion_s"], abs=0.011)
+    assert m["h1_personal_centre_intrusions"] == 1  # inside 1.2 m once: |x - 2.5| < sqrt(1.2^2 - 1)
+    assert m["h1_personal_centre_intrusion_s"] == pytest.approx(2 * math.sqrt(1.2**2 - 1.0), abs=0.03)
+    assert m["h1_intimate_centre_intrusion_s"] == 0.0
+    assert m["h1_personal_centre_band_s"] == m["h1_personal_centre_intrusion_s"]  # nothing nearer than 0.45 m
+    assert m["h1_social_centre_band_s"] == pytest.approx(m["h1_social_centre_intrusion_s"] - m["h1_personal_centre_intrusion_s"], abs=0.011)
     assert (m["waits"], m["wait_time_s"]) == (1, 0.5)
     assert (m["gems_robot"], m["gems_human"], m["robot_gem_order"]) == (1, 1, "g1")
     assert (m["human_contacts"], m["wall_contacts"]) == (0, 1)

@@ -311,15 +311,15 @@ METRICS: tuple[Row, ...] = (
         f"{CODE}:_contacts",
     ),
     (
-        "<h>_<zone>_intrusion_s",
+        "<h>_<zone>_centre_intrusion_s",
         "s",
         "time the robot's centre was within the zone's radius of this person's centre (cumulative zones)",
         cf(HALL),
         f"{CODE}:_person",
     ),
-    ("<h>_<zone>_intrusions", "", "times the robot's centre entered the zone's radius of this person's centre", cf(HALL), f"{CODE}:_person"),
+    ("<h>_<zone>_centre_intrusions", "", "times the robot's centre entered the zone's radius of this person's centre", cf(HALL), f"{CODE}:_person"),
     (
-        "<h>_<zone>_band_s",
+        "<h>_<zone>_centre_band_s",
         "s",
         "time the robot was in the zone's band only, centre to centre (disjoint: intimate < 0.45 <= personal < 1.2 <= social < 3.6)",
         cf(HALL),

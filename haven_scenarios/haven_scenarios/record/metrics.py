@@ -361,9 +361,9 @@ def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None
     previous = 0.0
     for zone, r in ZONES.items():
         inside = d < r
-        out[f"{hid}_{zone}_intrusion_s"] = round(float(np.sum(dt[inside])), 2)
-        out[f"{hid}_{zone}_intrusions"] = int(np.sum(inside[1:] & ~inside[:-1]) + (1 if len(inside) and inside[0] else 0))
-        out[f"{hid}_{zone}_band_s"] = round(float(np.sum(dt[(d >= previous) & (d < r)])), 2)
+        out[f"{hid}_{zone}_centre_intrusion_s"] = round(float(np.sum(dt[inside])), 2)
+        out[f"{hid}_{zone}_centre_intrusions"] = int(np.sum(inside[1:] & ~inside[:-1]) + (1 if len(inside) and inside[0] else 0))
+        out[f"{hid}_{zone}_centre_band_s"] = round(float(np.sum(dt[(d >= previous) & (d < r)])), 2)
         previous = r
     return out
 
