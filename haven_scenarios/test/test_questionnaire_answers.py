@@ -45,7 +45,16 @@ def test_answers_are_checked_written_and_an_event(tmp_path):
     assert (e["by"], e["questionnaire"], e["scores"]) == ("h1", "nasa_tlx", score(TLX, TLX_ANSWERS))
     assert Event.from_json(e.to_json()) == e  # the recorder and the console read it back
     written = json.loads((tmp_path / ANSWERS_FILE).read_text())
-    assert written == {"h1": {"nasa_tlx": {"answers": TLX_ANSWERS, "scores": score(TLX, TLX_ANSWERS), "answered_at": "2026-11-24T10:00:00+00:00"}}}
+    assert written == {
+        "h1": {
+            "nasa_tlx": {
+                "answers": TLX_ANSWERS,
+                "scores": score(TLX, TLX_ANSWERS),
+                "answered_at": "2026-11-24T10:00:00+00:00",
+                "order": list(TLX_ANSWERS),
+            }
+        }
+    }
     assert [p.name for p in tmp_path.iterdir()] == [ANSWERS_FILE]  # (no temporary file left beside it)
 
 

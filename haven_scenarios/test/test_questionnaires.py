@@ -69,7 +69,7 @@ def test_answers_off_the_scale_are_refused_in_one_line(answers: object, message:
         ([{"name": "x", "items": [{"id": "a", "text": "x"}, {"id": "a", "text": "y"}]}], "item ids must differ"),
         (
             [{"name": "x", "colour": 1, "items": [{"id": "a", "text": "x"}]}],
-            r"q\[0\]\.colour: unknown key \(allowed: name, title, instructions, points, anchors, items\)",
+            r"q\[0\]\.colour: unknown key \(allowed: name, title, instructions, points, anchors, items, shuffle\)",
         ),
         (["godspeed", "godspeed"], "named twice"),
         ([3], "must be a registered questionnaire.s name or a mapping"),
