@@ -88,5 +88,26 @@ def run_instruments(book: InstrumentBook, qs: Sequence[Questionnaire], key: str,
     return not book.declined()
 
 
+DONE_BEFORE = "Thank you. Please wait: the researcher starts the first trial."
+DONE_AFTER = "Thank you for taking part: the study is over."
+
+
+def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, host: str, port: int, first: bool) -> bool:
+    """The participant answers what is pending of `qs` in their browser (web/instrument_server.py):
+    prints the address, returns once all is answered (False: consent declined). ValueError (one
+    line) if the address cannot be served; Ctrl-C ends the wait (KeyboardInterrupt)."""
+    from haven_scenarios.web.instrument_server import InstrumentServer  # (only with --web)
+
+    server = InstrumentServer(host, port, book, qs, key, DONE_BEFORE if first else DONE_AFTER)
+    server.start()
+    try:
+        when = "before the first trial" if first else "after the last trial"
+        print(f"web: participant {book.path.parent.name} ({when}: {', '.join(q.name for q in book.pending(qs))}): {server.url}", flush=True)
+        server.finished.wait()
+    finally:
+        server.stop()
+    return not book.declined()
+
+
 def say_declined(participant: str, folder: Path) -> None:
     print(f"haven study: participant {participant} did not agree to take part: no trial is run (their answer is in {folder})", file=sys.stderr)

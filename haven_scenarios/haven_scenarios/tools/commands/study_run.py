@@ -29,7 +29,7 @@ from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.commands.common import fail
 from haven_scenarios.tools.commands.study import study_dir
-from haven_scenarios.tools.commands.study_instruments import order_key, run_instruments, say_declined, terminal_asker
+from haven_scenarios.tools.commands.study_instruments import ask_in_browser, order_key, run_instruments, say_declined, terminal_asker
 from haven_scenarios.tools.locks import FileLock, Locked
 from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_sim.common.params import ParamsError
@@ -184,15 +184,15 @@ def run_participant(args: StudyRun) -> int:
     except OSError as e:
         raise TrialError(f"cannot lock {root / args.participant}: {e.strerror or e}") from None
     with lock:
-        code = _instruments(args, study, root, study.instruments().first)
+        code = _instruments(args, study, root, study.instruments().first, True)
         if code is None:
             code = _run_trials(args, study, root, trials, questionnaires)
         if code == 0:
-            code = _instruments(args, study, root, study.instruments().after) or 0
+            code = _instruments(args, study, root, study.instruments().after, False) or 0
         return code
 
 
-def _instruments(args: StudyRun, study: Study, root: Path, qs: tuple[Questionnaire, ...]) -> int | None:
+def _instruments(args: StudyRun, study: Study, root: Path, qs: tuple[Questionnaire, ...], first: bool) -> int | None:
     """The study-level instruments still pending for the participant (study_instruments.py): None to
     go on, else the exit code (0: they declined consent, so no trial; 130: stopped while asking)."""
     book = InstrumentBook(root, args.participant)
@@ -202,10 +202,14 @@ def _instruments(args: StudyRun, study: Study, root: Path, qs: tuple[Questionnai
     if not book.pending(qs):
         return None
     asker = None if args.batch else terminal_asker()
+    key = order_key(study.name, args.participant)
     try:
-        if not run_instruments(book, qs, order_key(study.name, args.participant), asker):
+        agreed = ask_in_browser(book, qs, key, args.host, args.port, first) if args.web else run_instruments(book, qs, key, asker)
+        if not agreed:
             say_declined(args.participant, book.path)
             return 0
+    except ValueError as e:
+        raise TrialError(str(e)) from None
     except (KeyboardInterrupt, EOFError):
         print(f"\nhaven study: stopped while asking {args.participant}; the same command asks what is missing", file=sys.stderr)
         return INTERRUPTED
