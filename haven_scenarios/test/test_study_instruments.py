@@ -167,7 +167,8 @@ def test_a_batch_pilot_records_not_asked_instead_of_answers(tmp_path: Path) -> N
     assert run_instruments(book, (*inst.first, *inst.after), "k", None)
     assert json.loads(book.path.read_text()) == {n: {"not_asked": BATCH_REASON} for n in ("consent", "demographics", "preference")}
     (row,) = participant_rows(tmp_path, ["p01"], inst)
-    assert row["consent"] == "not asked" and row["demographics_age"] == "not asked" and row["preference_all"] == "not asked"
+    assert row["consent"] == "not asked" and row["demographics_age"] == "" and row["preference_all"] == ""
+    assert row["not_asked"] == "consent demographics preference"
     assert consent("x").items[0].options[0].startswith("Yes")
 
 
@@ -227,4 +228,5 @@ def test_haven_study_run_asks_at_the_terminal_before_the_first_trial_and_after_t
         and rows["p02"]["demographics_games"].startswith("Every")
     )
     assert rows["p02"]["nars_s1_interaction"] == "12.0" and rows["p02"]["nars_s3_emotions"] == "12.0"  # 6 x 2; 3 x (6 - 2)
-    assert rows["p01"]["consent"] == "no" and rows["p03"]["consent"] == "not asked" and rows["p03"]["preference_all"] == "not asked"
+    assert rows["p01"]["consent"] == "no" and rows["p03"]["consent"] == "not asked" and rows["p03"]["preference_all"] == ""
+    assert rows["p03"]["not_asked"] == "consent demographics nars preference" and rows["p02"]["not_asked"] == ""

@@ -8,7 +8,8 @@ keeps what was answered and asks the rest next time.
 
 `participants.csv` (`haven study report`): one row per participant: `consent` (yes / no / not
 asked / empty while not yet asked) and when, each demographic answer as its option's words, the
-NARS subscale sums, each condition's preference rank, and any other instrument's scores. Its
+NARS subscale sums, each condition's preference rank, any other instrument's scores, and
+`not_asked` (the instruments a simulated participant was not asked; their cells are empty). Its
 columns' definitions are `codebook_rows` (name, unit, definition, source), as the metric codebook's.
 """
 
@@ -83,14 +84,14 @@ def _columns(q: Questionnaire) -> list[str]:
 
 
 def columns(instruments: StudyInstruments) -> list[str]:
-    return ["participant", *(c for q in (*instruments.first, *instruments.after) for c in _columns(q))]
+    return ["participant", *(c for q in (*instruments.first, *instruments.after) for c in _columns(q)), NOT_ASKED]
 
 
 def _values(q: Questionnaire, record: Any) -> dict[str, Any]:
     if not isinstance(record, dict):
         return {}
-    if NOT_ASKED in record:
-        return dict.fromkeys(_columns(q), NOT_ASKED.replace("_", " "))
+    if NOT_ASKED in record:  # (numbers stay empty, so the columns read as numbers)
+        return {"consent": "not asked"} if q.name == CONSENT else {}
     if q.name == CONSENT:
         return {"consent": "yes" if record.get("agreed") else "no", "consent_at": record.get("answered_at", "")}
     if not q.scales:
@@ -111,6 +112,8 @@ def participant_rows(root: Path, participants: Sequence[str], instruments: Study
         row: dict[str, Any] = dict.fromkeys(columns(instruments), "") | {"participant": p}
         for q in (*instruments.first, *instruments.after):
             row |= _values(q, data.get(q.name))
+        skipped = [q.name for q in (*instruments.first, *instruments.after) if isinstance(data.get(q.name), dict) and NOT_ASKED in data[q.name]]
+        row[NOT_ASKED] = " ".join(skipped)
         rows.append(row)
     return rows
 
@@ -145,7 +148,7 @@ def codebook_rows(instruments: StudyInstruments) -> list[tuple[str, str, str, st
                 reversed_ = [i.id for i in q.items if i.id in ids and i.reverse]
                 rev = f"; reverse-scored: {', '.join(reversed_)}" if reversed_ else ""
                 rows.append((name, f"{low}..{high}", f"{q.title}: {how}{rev}", q.source))
-    return rows
+    return [*rows, (NOT_ASKED, "", "the instruments not asked (a --batch pilot's simulated participant): their columns are empty", "")]
 
 
 def summary_line(rows: Sequence[dict[str, Any]], instruments: StudyInstruments) -> str:
@@ -156,6 +159,6 @@ def summary_line(rows: Sequence[dict[str, Any]], instruments: StudyInstruments) 
         parts.append(f"consent: {said.count('yes')} yes, {said.count('no')} no, {said.count('not asked')} not asked")
     for q in (*instruments.before, *instruments.after):
         first = _columns(q)[0]
-        answered = sum(1 for r in rows if r[first] not in ("", "not asked"))
+        answered = sum(1 for r in rows if r[first] != "" and q.name not in r[NOT_ASKED].split())
         parts.append(f"{q.name}: {answered}/{len(rows)} answered")
     return "; ".join(parts)

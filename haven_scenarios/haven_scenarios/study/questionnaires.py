@@ -1,4 +1,4 @@
-"""Post-trial questionnaires: the built-ins, a study's own Likert items, checking and scoring answers.
+"""Questionnaires: the built-ins, a study's own Likert items, checking and scoring answers.
 
 Built-ins:
   * `nasa_tlx`: the NASA Task Load Index, raw (unweighted) form: six subscales rated 0-100 in steps
@@ -10,6 +10,12 @@ Built-ins:
     safety, asked as published (perceived safety about the participant's own emotional state, the
     others about the robot) and scored as published: each series is the mean of its items, none
     reversed, so scores compare with other papers' (International Journal of Social Robotics 1:71-81).
+
+  * `nars` and `demographics` (study/instruments.py), asked before a study.
+
+Each carries its citation (`source`), which the page shows under its title. Items can be mixed
+(`shuffle`; `item_order`): a Likert mapping's `shuffle: true`, or `{name: godspeed, shuffle: true}`
+for a registered one; the order is seeded per participant and trial and stored with the answers.
 
 A study adds its own Likert questionnaire as a mapping (in the study file, or a YAML file named on
 `haven run --questionnaire`):

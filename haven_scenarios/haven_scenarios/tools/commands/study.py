@@ -86,6 +86,9 @@ def plan_cmd(args: argparse.Namespace) -> int:
     )
     print(f"order: {design_note(study)} Scenarios run as blocks in the file's order, each with the participant's condition order.")
     print(f"seeds: {study.seed_policy}, base {study.seed_base}; questionnaires after each trial: {_questionnaires(study)}")
+    if inst := study.instruments():
+        before, after = (", ".join(q.name for q in qs) or "none" for qs in (inst.first, inst.after))
+        print(f"before the first trial: {before}; after the last: {after} (once per participant)")
     print(table(plan_rows(trials)))
     return 0
 
