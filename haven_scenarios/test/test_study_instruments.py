@@ -230,3 +230,31 @@ def test_haven_study_run_asks_at_the_terminal_before_the_first_trial_and_after_t
     assert rows["p02"]["nars_s1_interaction"] == "12.0" and rows["p02"]["nars_s3_emotions"] == "12.0"  # 6 x 2; 3 x (6 - 2)
     assert rows["p01"]["consent"] == "no" and rows["p03"]["consent"] == "not asked" and rows["p03"]["preference_all"] == ""
     assert rows["p03"]["not_asked"] == "consent demographics nars preference" and rows["p02"]["not_asked"] == ""
+
+
+@pytest.mark.integration
+def test_the_instruments_wait_ends_cleanly_on_ctrl_c_and_on_a_closed_terminal(tmp_path: Path) -> None:
+    """`haven study run --web` waiting for the instruments page: Ctrl-C ends it (130) with one line;
+    at a terminal whose input is closed, it says so instead of waiting (130); nothing is stored."""
+    import signal
+    import subprocess
+    import sys
+
+    path = tmp_path / "study.yaml"
+    path.write_text(
+        yaml.safe_dump({"name": "s", "scenarios": ["hallway"], "conditions": {"a": ["none"]}, "participants": 1, "before_study": ["nars"]})
+    )
+    argv = [sys.executable, "-m", "haven_scenarios", "study", "run", str(path), "--participant", "p01", "--dir", str(tmp_path / "out")]
+    web = subprocess.Popen([*argv, "--web", "--port", "0"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    try:
+        assert "web: participant p01 (before the first trial: nars): http://" in web.stdout.readline()  # type: ignore[union-attr]
+        web.send_signal(signal.SIGINT)
+        assert web.wait(timeout=30) == 130
+        assert "stopped while asking p01; the same command asks what is missing" in web.stdout.read()  # type: ignore[union-attr]
+    finally:
+        if web.poll() is None:
+            web.kill()
+            web.wait()
+    closed = subprocess.run(argv, stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=60)
+    assert closed.returncode == 130 and "no answers for p01 at the terminal (its input is closed)" in closed.stderr
+    assert not (tmp_path / "out" / "p01" / "instruments.json").exists()

@@ -210,7 +210,13 @@ def _instruments(args: StudyRun, study: Study, root: Path, qs: tuple[Questionnai
             return 0
     except ValueError as e:
         raise TrialError(str(e)) from None
-    except (KeyboardInterrupt, EOFError):
+    except EOFError:
+        print(
+            f"\nhaven study: no answers for {args.participant} at the terminal (its input is closed): run it at a terminal, or with --web",
+            file=sys.stderr,
+        )
+        return INTERRUPTED
+    except KeyboardInterrupt:
         print(f"\nhaven study: stopped while asking {args.participant}; the same command asks what is missing", file=sys.stderr)
         return INTERRUPTED
     return None
