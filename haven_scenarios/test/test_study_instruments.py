@@ -131,7 +131,7 @@ def test_terminal_answers_are_stored_with_their_order_and_consent_no_stops_the_r
     assert run_instruments(book, inst.first, "s/p01/study", terminal_asker(read, said.append))
     assert any("please type one of 1..5" in s for s in said) and any("Nomura" in s for s in said)
     data = json.loads((tmp_path / "p01" / "instruments.json").read_text())
-    assert data["consent"]["agreed"] is True and data["consent"]["answers"] == {"agree": 1}
+    assert data["consent"]["agreed"] is True and data["consent"]["answers"] == {"agree": 1} and data["consent"]["text"] == "Walk past a robot."
     assert data["nars"]["scores"] == {"nars_s1_interaction": 6.0, "nars_s2_social_influence": 5.0, "nars_s3_emotions": 15.0}
     assert sorted(data["nars"]["order"]) == sorted(i.id for i in NARS.items) and data["nars"]["order"] != [i.id for i in NARS.items]
     assert f"1/14 {NARS.items[int(data['nars']['order'][0].split('_')[1]) - 1].text}" in shown[1]  # asked in the stored order

@@ -24,6 +24,7 @@ from typing import Any
 from haven_scenarios.record.session import write_json
 from haven_scenarios.study.instruments import CONSENT, StudyInstruments, agreed
 from haven_scenarios.study.questionnaires import CHOICE, Questionnaire, answers_record
+from haven_scenarios.study.questionnaires import codebook_rows as questionnaire_rows
 
 INSTRUMENTS_FILE = "instruments.json"
 PARTICIPANTS_CSV = "participants.csv"
@@ -46,8 +47,8 @@ class InstrumentBook:
         if q.name in self.data:
             raise ValueError(f"{q.name} is answered already")
         record = answers_record(q, answers, answered_at, order)
-        if q.name == CONSENT:
-            record["agreed"] = agreed(record["answers"])
+        if q.name == CONSENT:  # (with the text agreed to: a study file may change later)
+            record |= {"agreed": agreed(record["answers"]), "text": q.instructions}
         self._put(q.name, record)
         return record
 
@@ -141,13 +142,7 @@ def codebook_rows(instruments: StudyInstruments) -> list[tuple[str, str, str, st
                 kind = f"one of: {'; '.join(i.options)}" if i.kind == CHOICE else "free text (optional)"
                 rows.append((f"{q.name}_{i.id}", "", f"{i.text} ({kind})", q.source))
         else:
-            for scale, ids in q.scales:
-                name = q.name if scale == q.name else f"{q.name}_{scale}"
-                low, high = (q.minimum, q.maximum) if q.scoring == "mean" else (q.minimum * len(ids), q.maximum * len(ids))
-                how = "rank (1 = liked best)" if q.distinct else f"{q.scoring} of items {', '.join(ids)}"
-                reversed_ = [i.id for i in q.items if i.id in ids and i.reverse]
-                rev = f"; reverse-scored: {', '.join(reversed_)}" if reversed_ else ""
-                rows.append((name, f"{low}..{high}", f"{q.title}: {how}{rev}", q.source))
+            rows += questionnaire_rows(q)
     return [*rows, (NOT_ASKED, "", "the instruments not asked (a --batch pilot's simulated participant): their columns are empty", "")]
 
 

@@ -350,6 +350,18 @@ def score(q: Questionnaire, answers: Mapping[str, Any]) -> dict[str, float]:
     return out
 
 
+def codebook_rows(q: Questionnaire) -> list[tuple[str, str, str, str]]:
+    """The scores `score` gives, as codebook rows (name, range, definition, source), for the report's codebook."""
+    rows = []
+    for scale, ids in q.scales:
+        name = q.name if scale == q.name else f"{q.name}_{scale}"
+        low, high = (q.minimum, q.maximum) if q.scoring == "mean" else (q.minimum * len(ids), q.maximum * len(ids))
+        how = "rank (1 = liked best)" if q.distinct else f"{q.scoring} of items {', '.join(ids)}"
+        turned = [i.id for i in q.items if i.id in ids and i.reverse]
+        rows.append((name, f"{low}..{high}", f"{q.title}: {how}" + (f"; reverse-scored: {', '.join(turned)}" if turned else ""), q.source))
+    return rows
+
+
 def answers_record(q: Questionnaire, answers: Any, answered_at: str, order: Sequence[str] | None = None) -> dict[str, Any]:
     """What `ANSWERS_FILE` holds for one person's questionnaire: checked answers, scores, when, and
     the order the items were shown in (scores do not depend on it)."""
