@@ -47,6 +47,13 @@ def browser():  # type: ignore[no-untyped-def]
         b.close()
 
 
+def screenshot(name: str, png: bytes) -> None:
+    """The docs' pictures: written where HAVEN_SCREENSHOTS points (haven_scenarios/doc to update them)."""
+    folder = os.environ.get("HAVEN_SCREENSHOTS")
+    if folder:
+        Path(folder, name).write_bytes(png)
+
+
 def submit(page, name: str) -> None:  # type: ignore[no-untyped-def]
     page.click("#questionnaire button[type=submit]")
     page.wait_for_function(f"havenState.answered.includes('{name}')", timeout=PAGE_TIMEOUT_MS)
@@ -65,6 +72,10 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         page.wait_for_function("havenState.questionnaire === 'consent'", timeout=PAGE_TIMEOUT_MS)
         assert page.inner_text("#questionnaire .instructions") == CONSENT  # the study's text, paragraphs kept
         assert page.locator("#questionnaire input[name='consent.agree']").count() == 2
+        assert (
+            page.locator("fieldset[data-item='agree'] .options label").first.bounding_box()["width"] > 200
+        )  # under the question, not squeezed beside it
+        screenshot("web_consent.png", page.screenshot())
         page.click("#questionnaire button[type=submit]")  # nothing chosen: refused
         assert page.evaluate("havenForm.refused") == 1 and "Please answer every item" in page.inner_text("#questionnaire .missing")
         page.check("input[name='consent.agree'][value='1']")
@@ -75,6 +86,7 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         for item, value in {"age": 2, "gender": 4, "robots": 1, "vr": 3, "games": 5}.items():
             page.check(f"input[name='demographics.{item}'][value='{value}']")
         page.fill("input[name='demographics.gender_self']", "agender")
+        assert page.locator("input[name='demographics.gender_self']").bounding_box()["width"] > 150
         submit(page, "demographics")
 
         page.wait_for_function("havenState.questionnaire === 'nars'", timeout=PAGE_TIMEOUT_MS)
@@ -84,6 +96,8 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         answers = {i.id: 1 + k % 5 for k, i in enumerate(NARS.items)}
         for item, value in answers.items():
             page.check(f"input[name='nars.{item}'][value='{value}']")
+        page.evaluate("document.getElementById('questionnaire').scrollTop = 0")
+        screenshot("web_nars.png", page.screenshot())
         submit(page, "nars")
         page.wait_for_function("havenState.done", timeout=PAGE_TIMEOUT_MS)
         assert "Please wait" in page.inner_text("#prompt")
