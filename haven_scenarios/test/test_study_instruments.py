@@ -93,7 +93,9 @@ def test_a_study_file_names_consent_and_the_instruments_before_and_after(tmp_pat
     "extra, message",
     [
         ({"consent": {"text": "x", "file": "y"}}, "consent: give either text or file"),
-        ({"consent": {"file": "missing.md"}}, "consent.file: cannot read"),
+        ({"consent": {"file": "missing.md"}}, "consent.file: .*missing.md is not a readable regular file"),
+        ({"consent": {"file": "/dev/zero"}}, "consent.file: /dev/zero is not a readable regular file"),
+        ({"consent": {"text": "x" * 20_001}}, r"consent: the text must be 1\.\.20000 characters"),
         ({"consent": {"txt": "x"}}, "consent.txt: unknown key"),
         ({"before_study": ["nars", "nars"]}, "named twice"),
         ({"before_study": ["narz"]}, r"before_study\[0\]: unknown questionnaire 'narz'"),

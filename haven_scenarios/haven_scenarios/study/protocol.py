@@ -311,8 +311,14 @@ class _StudyParser:
         if value.file is not None:
             path = Path(value.file)
             path = path if path.is_absolute() else Path(self.source).parent / path
+            if not path.is_file():  # (not a FIFO or a device, which would block or never end)
+                raise self.fail("consent.file", f"{path} is not a readable regular file")
             try:
-                text = path.read_text(encoding="utf-8")[: MAX_CONSENT_CHARS + 1]
+                with path.open("rb") as f:
+                    raw = f.read(4 * MAX_CONSENT_CHARS + 1)  # (UTF-8: at most 4 bytes a character)
+                if len(raw) > 4 * MAX_CONSENT_CHARS:
+                    raise self.fail("consent", f"the text must be 1..{MAX_CONSENT_CHARS} characters")
+                text = raw.decode("utf-8")
             except (OSError, UnicodeDecodeError) as e:
                 raise self.fail("consent.file", f"cannot read {path}: {getattr(e, 'strerror', None) or e}") from None
         text = (text or "").strip()
