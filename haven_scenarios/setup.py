@@ -68,6 +68,8 @@ setup(
         "haven.questionnaires": [
             "nasa_tlx = haven_scenarios.study.questionnaires:NASA_TLX",
             "godspeed = haven_scenarios.study.questionnaires:GODSPEED",
+            "nars = haven_scenarios.study.instruments:NARS",
+            "demographics = haven_scenarios.study.instruments:DEMOGRAPHICS",
         ],
     },
 )

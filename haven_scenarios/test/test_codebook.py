@@ -61,3 +61,12 @@ def test_the_codebook_is_written_as_csv_and_json(tmp_path: Path):
         rows = list(csv.DictReader(f))
     assert tuple(rows[0]) == FIELDS and len(rows) == len(entries)
     assert json.loads((tmp_path / "codebook.json").read_text(encoding="utf-8"))[2]["measure"] == "time_not_moving_s"
+
+
+def test_participants_csv_columns_have_rows_of_their_own_table():
+    from haven_scenarios.study.instruments import NARS, StudyInstruments
+
+    entries = {e.measure: e for e in codebook.participants(StudyInstruments(before=(NARS,)))}
+    s3 = entries["nars_s3_emotions"]
+    assert s3.table == "participants.csv" and s3.unit == "points 3-15" and "reverse-scored" in s3.definition and "Nomura" in s3.source
+    assert {"participant", "not_asked"} <= set(entries)

@@ -45,7 +45,16 @@ def test_answers_are_checked_written_and_an_event(tmp_path):
     assert (e["by"], e["questionnaire"], e["scores"]) == ("h1", "nasa_tlx", score(TLX, TLX_ANSWERS))
     assert Event.from_json(e.to_json()) == e  # the recorder and the console read it back
     written = json.loads((tmp_path / ANSWERS_FILE).read_text())
-    assert written == {"h1": {"nasa_tlx": {"answers": TLX_ANSWERS, "scores": score(TLX, TLX_ANSWERS), "answered_at": "2026-11-24T10:00:00+00:00"}}}
+    assert written == {
+        "h1": {
+            "nasa_tlx": {
+                "answers": TLX_ANSWERS,
+                "scores": score(TLX, TLX_ANSWERS),
+                "answered_at": "2026-11-24T10:00:00+00:00",
+                "order": list(TLX_ANSWERS),
+            }
+        }
+    }
     assert [p.name for p in tmp_path.iterdir()] == [ANSWERS_FILE]  # (no temporary file left beside it)
 
 
@@ -167,3 +176,21 @@ def test_questionnaire_usage_errors_are_one_line(tmp_path, capsys):
     assert line.startswith(f"haven: error: {bad}:")
     assert run_errors(capsys, *web, "--questionnaire", "godspeed", "godspeed") == ["haven: error: --questionnaire: a questionnaire is named twice"]
     assert not (tmp_path / "s").exists()  # refused before anything started
+
+
+def test_mixed_items_reach_the_page_in_the_order_the_answers_record_per_person_and_trial(tmp_path):
+    """`{name: godspeed, shuffle: true}`: the page of h1 in session s1 shows the items in the order
+    item_order gives for s1/h1, h2 and another session in others; the answers store that order."""
+    from haven_scenarios.study.scenario import load_scenario
+
+    (mixed,) = from_parameter(json.dumps([{"name": "godspeed", "shuffle": True}]))
+    r = roles(["h1", "h2"])
+    settings = PageSettings(session="s1", questionnaires=(mixed,), teleoperated=("h1", "h2"))
+    shown = {h: [i["id"] for i in page_config(r[h], load_scenario("hallway"), settings)["questionnaires"][0]["items"]] for h in ("h1", "h2")}
+    other = page_config(r["h1"], load_scenario("hallway"), PageSettings(session="s2", questionnaires=(mixed,)))["questionnaires"][0]["items"]
+    assert shown["h1"] != shown["h2"] and shown["h1"] != [i["id"] for i in other] and sorted(shown["h1"]) == sorted(i.id for i in GODSPEED.items)
+    (tmp_path / "s1").mkdir()
+    answers = {i.id: 3 for i in GODSPEED.items}
+    AnswerBook(tmp_path / "s1", ["h1"], [mixed]).take("h1", message(answers, questionnaire="godspeed"), 1.0, "t")
+    stored = json.loads((tmp_path / "s1" / ANSWERS_FILE).read_text())["h1"]["godspeed"]
+    assert stored["order"] == shown["h1"] and stored["scores"] == score(GODSPEED, answers)

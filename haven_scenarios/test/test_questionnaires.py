@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from haven_scenarios.study.questionnaires import BUILTINS, answers_record, check_answers, likert, resolve, score
+from haven_scenarios.study.questionnaires import BUILTINS, answers_record, check_answers, codebook_rows, likert, resolve, score
 
 TLX = BUILTINS["nasa_tlx"]
 GODSPEED = BUILTINS["godspeed"]
@@ -69,7 +69,7 @@ def test_answers_off_the_scale_are_refused_in_one_line(answers: object, message:
         ([{"name": "x", "items": [{"id": "a", "text": "x"}, {"id": "a", "text": "y"}]}], "item ids must differ"),
         (
             [{"name": "x", "colour": 1, "items": [{"id": "a", "text": "x"}]}],
-            r"q\[0\]\.colour: unknown key \(allowed: name, title, instructions, points, anchors, items\)",
+            r"q\[0\]\.colour: unknown key \(allowed: name, title, instructions, points, anchors, items, shuffle\)",
         ),
         (["godspeed", "godspeed"], "named twice"),
         ([3], "must be a registered questionnaire.s name or a mapping"),
@@ -110,3 +110,11 @@ def test_a_plugin_questionnaire_is_a_likert_mapping_or_a_questionnaire_under_its
         "haven.questionnaires broken (lab.q:BROKEN, from lab_q): questionnaire broken: items: must be a list of 1..100 items, got []",
         "haven.questionnaires number (lab.q:N, from lab_q): is neither a Questionnaire nor a mapping of Likert items (title, points, anchors, items)",
     ]
+
+
+def test_codebook_rows_give_each_score_its_range_definition_and_source() -> None:
+    rows = {r[0]: r for r in codebook_rows(GODSPEED)}
+    assert set(rows) == {f"godspeed_{s}" for s, _ in GODSPEED.scales}
+    assert rows["godspeed_safety"][1] == "points 1-5" and "mean of items safety_1, safety_2, safety_3" in rows["godspeed_safety"][2]
+    assert "reverse" not in rows["godspeed_safety"][2] and "Bartneck" in rows["godspeed_safety"][3]
+    assert codebook_rows(TLX)[0][:2] == ("nasa_tlx_raw", "points 0-100")

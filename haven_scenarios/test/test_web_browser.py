@@ -348,7 +348,7 @@ participants: [p01]
 counterbalancing: none
 questionnaires:
   - nasa_tlx
-  - godspeed
+  - {name: godspeed, shuffle: true}
   - name: legibility
     title: About the robot
     points: 7
@@ -360,7 +360,7 @@ questionnaires:
 
 
 def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_report_has_them(ros, browser, tmp_path):
-    """A study with nasa_tlx, godspeed and its own Likert items, run for p01 in the browser
+    """A study with nasa_tlx, godspeed (items mixed) and its own Likert items, run for p01 in the browser
     (`haven study run --web`): the researcher stops the trial; the page asks each questionnaire in
     turn (TLX by keyboard alone, the others by clicks), refuses Submit while an item is unanswered;
     the answers and scores land in questionnaires.json, the events and session.json; the study run
@@ -412,6 +412,10 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
         "Please rate your impression of the robot on these scales.",
         "Please rate your emotional state on these scales.",
     ]
+    assert "Bartneck, Kulić, Croft & Zoghbi (2009)" in page.inner_text("#questionnaire .source")  # the citation with it
+    godspeed_shown = page.eval_on_selector_all("#questionnaire fieldset", "sets => sets.map(s => s.dataset.item)")
+    assert sorted(godspeed_shown) == sorted(godspeed) and godspeed_shown != list(godspeed)  # mixed ...
+    assert [i.split("_")[0] for i in godspeed_shown[-3:]] == ["safety"] * 3  # ... under each item's own prompt
     answer_with_clicks(page, "godspeed", godspeed)
     page.locator("#questionnaire p.prompt").last.scroll_into_view_if_needed()
     screenshot("web_godspeed.png", page.screenshot())
@@ -432,7 +436,8 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     assert data["h1"]["nasa_tlx"]["answers"] == tlx_answers
     assert abs(data["h1"]["nasa_tlx"]["scores"]["nasa_tlx_raw"] - (5 + 10 + 15 + 20 + 25 + 5) / 6) < 1e-3
     assert data["h1"]["godspeed"]["answers"] == godspeed
-    assert data["h1"]["godspeed"]["scores"] == score(BUILTINS["godspeed"], godspeed)
+    assert data["h1"]["godspeed"]["scores"] == score(BUILTINS["godspeed"], godspeed)  # (the order does not change them)
+    assert data["h1"]["godspeed"]["order"] == godspeed_shown and data["h1"]["nasa_tlx"]["order"] == tlx  # the order shown, stored
     assert data["h1"]["legibility"]["scores"] == {"legibility": 6.0}  # (6 + (8 - 2)) / 2: "surprised" reversed
     events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
     answered = [(e["by"], e["questionnaire"], e["scores"]) for e in events if e["type"] == "questionnaire_answered"]

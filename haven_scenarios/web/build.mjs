@@ -12,7 +12,7 @@ if (emulator) {
 }
 const out = process.argv.includes("--out") ? process.argv[process.argv.indexOf("--out") + 1] : "../haven_scenarios/web/static";
 await esbuild.build({
-  entryPoints: { participant: "src/participant.js", console: "src/console.js" },
+  entryPoints: { participant: "src/participant.js", console: "src/console.js", instruments: "src/instruments.js" },
   bundle: true,
   minify: true,
   format: "esm",

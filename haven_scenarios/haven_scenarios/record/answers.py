@@ -22,7 +22,7 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.session import EVENTS_FILE, write_json
-from haven_scenarios.study.questionnaires import ANSWERS_FILE, Questionnaire, answers_record, resolve
+from haven_scenarios.study.questionnaires import ANSWERS_FILE, Questionnaire, answers_record, item_order, resolve, trial_key
 from haven_scenarios.study.rules import EndReason
 from haven_sim.common.events import Event, EventKind, Source, event
 
@@ -86,7 +86,7 @@ class AnswerBook:
             raise ValueError(f"no questionnaire {name[:40]!r} for {human} in this session")
         if name in self.data.get(human, {}):
             raise ValueError(f"{human} has answered {name} already")
-        record = answers_record(q, answers, answered_at)
+        record = answers_record(q, answers, answered_at, item_order(q, trial_key(self.path.parent.name, human)))
         data = {**self.data, human: {**self.data.get(human, {}), name: record}}
         write_json(self.path, data)
         self.data = data

@@ -1,7 +1,9 @@
 """The study report's codebook (codebook.csv and codebook.json beside study_long.csv): one row per
-measure in the long table, with its unit, definition, source and where its formula is, so a reader
-of the data needs nothing else. Metrics come from `metric_table` (ours, HuNavSim's, the installed
-plugins' documented columns), questionnaire scores from the study's questionnaires."""
+measure in the long table, and per column of participants.csv, with its unit, definition, source
+and where its formula is, so a reader of the data needs nothing else. Metrics come from
+`metric_table` (ours, HuNavSim's, the installed plugins' documented columns), questionnaire scores
+from the questionnaires themselves (`questionnaires.codebook_rows`), participants.csv's columns from
+`record.participants`."""
 
 from __future__ import annotations
 
@@ -11,16 +13,21 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from haven_scenarios.record import metric_table
+from haven_scenarios.record.participants import PARTICIPANTS_CSV
+from haven_scenarios.record.participants import codebook_rows as participant_rows
 from haven_scenarios.record.report import write_table
-from haven_scenarios.study.questionnaires import Questionnaire, registered
+from haven_scenarios.study.instruments import StudyInstruments
+from haven_scenarios.study.questionnaires import Questionnaire, codebook_rows, registered
 from haven_sim.common import atomic
 
-FIELDS = ("measure", "per_person", "wide_column", "unit", "definition", "source", "formula")
+FIELDS = ("table", "measure", "per_person", "wide_column", "unit", "definition", "source", "formula")
+LONG_CSV = "study_long.csv"
 SCORING = "haven_scenarios/study/questionnaires.py:score"
 
 
 @dataclass(frozen=True)
 class Entry:
+    table: str  # the report's file the measure is in: study_long.csv (and study_wide.csv) or participants.csv
     measure: str  # as in study_long.csv's `measure`
     per_person: bool  # the long table's `human` is a person's id
     wide_column: str  # as in study_wide.csv (`<h>_` for each person)
@@ -32,16 +39,7 @@ class Entry:
 
 def _scores(q: Questionnaire) -> dict[str, tuple[str, str, str, str]]:
     """Each of a questionnaire's score names -> (unit, definition, source, formula), as `score` names them."""
-    reversed_ = {i.id for i in q.items if i.reverse}
-    source = str(getattr(q, "citation", "") or f"{q.title} (see haven_scenarios/study/questionnaires.py)")
-    out = {}
-    for scale, ids in q.scales:
-        key = q.name if scale == q.name else f"{q.name}_{scale}"
-        turned = [i for i in ids if i in reversed_]
-        how = f"; reverse-scored ({q.minimum}+{q.maximum}-answer): {', '.join(turned)}" if turned else ""
-        definition = f"{q.title}: mean of the {len(ids)} item(s) of '{scale}' ({', '.join(ids)}), answered {q.minimum}..{q.maximum}{how}"
-        out[key] = (f"points {q.minimum}-{q.maximum}", definition, source, SCORING)
-    return out
+    return {name: (unit, definition, source or q.title, SCORING) for name, unit, definition, source in codebook_rows(q)}
 
 
 class Codebook:
@@ -60,14 +58,14 @@ class Codebook:
             name = metric_table.pattern(f"{human}_{measure}", [human])
             if name in self.metrics:
                 _, unit, definition, source, formula = self.metrics[name]
-                return Entry(measure, True, name, unit, definition, source, formula)
+                return Entry(LONG_CSV, measure, True, name, unit, definition, source, formula)
             if measure in self.scores:
-                return Entry(measure, True, f"<h>_{measure}", *self.scores[measure])
-            return Entry(measure, True, f"<h>_{measure}", "", "undocumented (no codebook row)", "", "")
+                return Entry(LONG_CSV, measure, True, f"<h>_{measure}", *self.scores[measure])
+            return Entry(LONG_CSV, measure, True, f"<h>_{measure}", "", "undocumented (no codebook row)", "", "")
         if measure in self.metrics:
             _, unit, definition, source, formula = self.metrics[measure]
-            return Entry(measure, False, measure, unit, definition, source, formula)
-        return Entry(measure, False, measure, "", "undocumented (no codebook row)", "", "")
+            return Entry(LONG_CSV, measure, False, measure, unit, definition, source, formula)
+        return Entry(LONG_CSV, measure, False, measure, "", "undocumented (no codebook row)", "", "")
 
     def unit(self, human: str, measure: str) -> str:
         return self.entry(human, measure).unit
@@ -79,6 +77,13 @@ class Codebook:
         for per_person, measure, human in seen:
             out.setdefault((per_person, measure), self.entry(human, measure))
         return list(out.values())
+
+
+def participants(instruments: StudyInstruments) -> list[Entry]:
+    """participants.csv's columns (consent, demographics, the before- and after-study scores)."""
+    where = "haven_scenarios/record/participants.py"
+    rows = participant_rows(instruments)
+    return [Entry(PARTICIPANTS_CSV, name, False, name, unit, definition, source, where) for name, unit, definition, source in rows]
 
 
 def write(folder: Path, entries: Sequence[Entry]) -> None:

@@ -14,6 +14,9 @@ practice:                          # run first, flagged practice, left out of th
   - {scenario: shared_room, condition: all}
 seeds: {policy: per_participant, base: 0}   # fixed | per_participant | per_trial
 questionnaires: [nasa_tlx, godspeed]        # after each trial: built-ins or Likert mappings
+consent: {file: consent.md}        # before anything: {text: ...} or a text file (relative to this file)
+before_study: [demographics, nars]  # before the first trial, after consent (study/instruments.py)
+after_study: [preference]           # after the last trial: `preference` ranks the conditions
 ```
 
 Scenarios run as blocks in the file's order; each block shows the conditions in the participant's
@@ -35,6 +38,7 @@ from typing import Annotated, Any, Literal
 
 from haven_scenarios.record.session import check_name
 from haven_scenarios.run.trial import SEED_MAX, parse_condition
+from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_sim.common.schema import FileModel, Whole, check, checked, listing, mapping
@@ -42,6 +46,7 @@ from haven_sim.common.yaml_file import file_label, read_yaml, short, shown_key
 
 MAX_PARTICIPANTS = 999
 MAX_REPETITIONS = 100
+MAX_CONSENT_CHARS = 20_000  # a consent form of a few pages
 MAX_CONDITIONS = 12  # `full` on more would be 12! orders
 
 
@@ -80,9 +85,23 @@ class Study:
     seed_base: int = 0
     questionnaires: tuple[Any, ...] = ()  # as written: built-in names and Likert mappings
     source: str = ""
+    # Before and after the whole study (study/instruments.py); not part of the schedule.
+    consent_text: str = ""  # "": no consent asked
+    before_study: tuple[Any, ...] = ()  # as written, like questionnaires
+    after_study: tuple[Any, ...] = ()  # ... and `preference`
 
     def resolved_questionnaires(self) -> tuple[Questionnaire, ...]:
         return resolve(self.questionnaires, "questionnaires")
+
+    def instruments(self) -> StudyInstruments:
+        ranking = preference([(c.name, c.cues) for c in self.conditions])
+        after = [s for s in self.after_study if s != PREFERENCE]
+        by_name = {q.name: q for q in (*resolve(after, "after_study"), ranking)}
+        return StudyInstruments(
+            consent(self.consent_text) if self.consent_text else None,
+            resolve(self.before_study, "before_study"),
+            tuple(by_name[s if isinstance(s, str) else s["name"]] for s in self.after_study),
+        )
 
     def condition(self, name: str) -> Condition:
         return next(c for c in self.conditions if c.name == name)
@@ -133,6 +152,13 @@ class Seeds(FileModel):
     base: Whole(0, SEED_MAX) = 0  # type: ignore[valid-type]
 
 
+class Consent(FileModel):
+    """The consent text, written here or in a text file (relative to the study file)."""
+
+    text: str | None = None
+    file: str | None = None
+
+
 class PracticeTrial(FileModel):
     scenario: str
     condition: str
@@ -160,6 +186,10 @@ class StudyFile(FileModel):
     practice: Annotated[list[PracticeTrial], listing("a list of {scenario: S, condition: C}", non_empty=False)] = []
     seeds: Seeds | None = None
     questionnaires: Annotated[list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)] = []
+    # before and after the whole study (study/instruments.py)
+    consent: Consent | None = None
+    before_study: Annotated[list[Any], listing("a list of questionnaires (demographics, nars, ...)", non_empty=False)] = []
+    after_study: Annotated[list[Any], listing("a list of questionnaires (preference, ...)", non_empty=False)] = []
 
 
 class _StudyParser:
@@ -194,6 +224,9 @@ class _StudyParser:
             seed_base=seeds.base,
             questionnaires=self.questionnaires(f.questionnaires),
             source=self.source,
+            consent_text=self.consent(f.consent),
+            before_study=self.instruments(f.before_study, "before_study", ()),
+            after_study=self.instruments(f.after_study, "after_study", (PREFERENCE,)),
         )
 
     def scenario(self, value: Any, key: str) -> StudyScenario:
@@ -266,4 +299,38 @@ class _StudyParser:
             resolve(value, "questionnaires")
         except ValueError as e:
             raise StudyError(f"{file_label(self.source)}: {e}") from None
+        return tuple(value)
+
+    def consent(self, value: Consent | None) -> str:
+        """The consent text ("" for none); a file is read now, so a study runs with what it said."""
+        if value is None:
+            return ""
+        if (value.text is None) == (value.file is None):
+            raise self.fail("consent", "give either text or file")
+        text = value.text
+        if value.file is not None:
+            path = Path(value.file)
+            path = path if path.is_absolute() else Path(self.source).parent / path
+            if not path.is_file():  # (not a FIFO or a device, which would block or never end)
+                raise self.fail("consent.file", f"{path} is not a readable regular file")
+            try:
+                with path.open("rb") as f:
+                    raw = f.read(4 * MAX_CONSENT_CHARS + 1)  # (UTF-8: at most 4 bytes a character)
+                if len(raw) > 4 * MAX_CONSENT_CHARS:
+                    raise self.fail("consent", f"the text must be 1..{MAX_CONSENT_CHARS} characters")
+                text = raw.decode("utf-8")
+            except (OSError, UnicodeDecodeError) as e:
+                raise self.fail("consent.file", f"cannot read {path}: {getattr(e, 'strerror', None) or e}") from None
+        text = (text or "").strip()
+        if not text or len(text) > MAX_CONSENT_CHARS:
+            raise self.fail("consent", f"the text must be 1..{MAX_CONSENT_CHARS} characters")
+        return text
+
+    def instruments(self, value: list[Any], key: str, special: tuple[str, ...]) -> tuple[Any, ...]:
+        try:
+            resolve([v for v in value if v not in special], key)
+        except ValueError as e:
+            raise StudyError(f"{file_label(self.source)}: {e}") from None
+        if len({v if isinstance(v, str) else str(v.get("name")) for v in value}) != len(value):
+            raise self.fail(key, "a questionnaire is named twice")
         return tuple(value)

@@ -1,4 +1,4 @@
-"""Post-trial questionnaires: the built-ins, a study's own Likert items, checking and scoring answers.
+"""Questionnaires: the built-ins, a study's own Likert items, checking and scoring answers.
 
 Built-ins:
   * `nasa_tlx`: the NASA Task Load Index, raw (unweighted) form: six subscales rated 0-100 in steps
@@ -10,6 +10,12 @@ Built-ins:
     safety, asked as published (perceived safety about the participant's own emotional state, the
     others about the robot) and scored as published: each series is the mean of its items, none
     reversed, so scores compare with other papers' (International Journal of Social Robotics 1:71-81).
+
+  * `nars` and `demographics` (study/instruments.py), asked before a study.
+
+Each carries its citation (`source`), which the page shows under its title. Items can be mixed
+(`shuffle`; `item_order`): a Likert mapping's `shuffle: true`, or `{name: godspeed, shuffle: true}`
+for a registered one; the order is seeded per participant and trial and stored with the answers.
 
 A study adds its own Likert questionnaire as a mapping (in the study file, or a YAML file named on
 `haven run --questionnaire`):
@@ -36,6 +42,9 @@ questionnaire's answers and scores (`answers_record`).
 
 from __future__ import annotations
 
+import hashlib
+import itertools
+import random
 import re
 from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass, replace
@@ -53,6 +62,10 @@ MAX_ITEMS = 100
 MAX_TEXT = 300
 
 
+SCALE, CHOICE, TEXT = "scale", "choice", "text"  # an item's kind: a rating, one of its options (1..n), optional free text
+MAX_ANSWER_TEXT = 100  # a free-text answer (e.g. a self-described gender)
+
+
 @dataclass(frozen=True)
 class Item:
     id: str
@@ -61,6 +74,8 @@ class Item:
     high: str  # ... and at its high end
     reverse: bool = False  # scored as (min + max - answer)
     prompt: str = ""  # the instruction the page shows above this item and those after it, until another ("": the questionnaire's)
+    kind: str = SCALE
+    options: tuple[str, ...] = ()  # CHOICE: the answer k means options[k - 1]
 
 
 @dataclass(frozen=True)
@@ -76,6 +91,10 @@ class Questionnaire:
     items: tuple[Item, ...]
     scales: tuple[tuple[str, tuple[str, ...]], ...]  # (scale name, its item ids): scored as means
     differential: bool = False  # semantic differentials: each item is a row between its own two labels
+    source: str = ""  # the citation the page shows with it ("" for a study's own)
+    shuffle: bool = False  # items in a seeded order per participant and trial (`item_order`)
+    scoring: str = "mean"  # a scale's score: the "mean" or the "sum" of its items (as its authors publish)
+    distinct: bool = False  # every item answered differently (a ranking: each rank once)
 
     def to_dict(self) -> dict[str, Any]:
         """As the web node hands it to the page (JSON)."""
@@ -95,7 +114,8 @@ def _tlx() -> Questionnaire:
     )
     items = tuple(Item(i, text, low, high) for i, text, low, high in subscales)
     scales = (("raw", tuple(i.id for i in items)), *((i.id, (i.id,)) for i in items))
-    return Questionnaire("nasa_tlx", "NASA Task Load Index", "Rate the trial you just did on each scale.", 0, 100, 5, items, scales)
+    source = "Hart & Staveland (1988), NASA Task Load Index; raw (unweighted) TLX: Hart (2006)"
+    return Questionnaire("nasa_tlx", "NASA Task Load Index", "Rate the trial you just did on each scale.", 0, 100, 5, items, scales, source=source)
 
 
 GODSPEED_SERIES: dict[str, tuple[tuple[str, str], ...]] = {
@@ -116,6 +136,7 @@ GODSPEED_PROMPTS = {
     "safety": "Please rate your emotional state on these scales.",
 }
 GODSPEED_IMPRESSION = "Please rate your impression of the robot on these scales."
+GODSPEED_SOURCE = "Bartneck, Kulić, Croft & Zoghbi (2009), Int. J. Social Robotics 1:71-81"
 
 
 def _godspeed() -> Questionnaire:
@@ -127,7 +148,7 @@ def _godspeed() -> Questionnaire:
         items += [Item(i, f"{low} - {high}", low, high, prompt=prompt) for i, (low, high) in zip(ids, pairs)]
         scales.append((series, ids))
     text = "Rate each pair on the scale between its two words."
-    return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales), differential=True)
+    return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales), differential=True, source=GODSPEED_SOURCE)
 
 
 NASA_TLX, GODSPEED = _tlx(), _godspeed()
@@ -192,6 +213,14 @@ class LikertFile(FileModel):
     points: Whole(2, 11) = 7  # type: ignore[valid-type]
     anchors: Annotated[list[_text(60)], checked(_anchors)] = ["Strongly disagree", "Strongly agree"]  # type: ignore[valid-type]
     items: Annotated[list[LikertItem], listing(f"a list of 1..{MAX_ITEMS} items"), Field(max_length=MAX_ITEMS)]
+    shuffle: bool = False  # items in a seeded order per participant and trial
+
+
+class Mixed(FileModel):
+    """A registered questionnaire with its items mixed: `{name: godspeed, shuffle: true}`."""
+
+    name: Name
+    shuffle: bool
 
 
 def _at(where: str, key: str) -> str:
@@ -214,7 +243,7 @@ def likert(spec: Mapping[str, Any], where: str, registered: bool = True) -> Ques
     ids = [i.id for i in items]
     if len(set(ids)) != len(ids):
         raise ValueError(f"{_at(where, 'items')}: item ids must differ")
-    return Questionnaire(f.name, f.title or f.name, f.instructions, 1, f.points, 1, items, ((f.name, tuple(ids)),))
+    return Questionnaire(f.name, f.title or f.name, f.instructions, 1, f.points, 1, items, ((f.name, tuple(ids)),), shuffle=f.shuffle)
 
 
 def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
@@ -230,7 +259,7 @@ def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
                 raise ValueError(f"{at}: unknown questionnaire {spec[:50]!r} (registered: {', '.join(known)}, or a mapping of Likert items)")
             out.append(known[spec])
         elif isinstance(spec, dict):
-            out.append(likert(spec, at))
+            out.append(from_mapping(spec, at))
         else:
             raise ValueError(f"{at}: must be a registered questionnaire's name or a mapping of Likert items")
     names = [q.name for q in out]
@@ -239,34 +268,105 @@ def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
     return tuple(out)
 
 
-def check_answers(q: Questionnaire, answers: Any) -> dict[str, int]:
-    """Every item answered with a value on the scale; ValueError (one line) otherwise."""
+def from_mapping(spec: Mapping[str, Any], where: str) -> Questionnaire:
+    """A Likert mapping, or a registered questionnaire's name with `shuffle` (`{name: godspeed, shuffle: true}`)."""
+    if set(spec) == {"name", "shuffle"} and spec["name"] in registered():
+        return mixed(spec, where)
+    return likert(spec, where)
+
+
+def mixed(spec: Mapping[str, Any], where: str) -> Questionnaire:
+    """A registered questionnaire with `shuffle` set (`{name: godspeed, shuffle: true}`)."""
+    try:
+        f = Mixed.model_validate(spec)
+    except ValidationError as e:
+        raise ValueError(_at(where, problem(Mixed, e))) from None
+    return replace(registered()[f.name], shuffle=f.shuffle)
+
+
+def item_order(q: Questionnaire, key: str) -> tuple[str, ...]:
+    """The order the page shows the items in: as listed, or with `shuffle` a random order seeded by
+    `key` (participant and trial: the same key, the same order). Bartneck et al. (2009) suggest
+    mixing the Godspeed items; items are mixed within each run of one prompt, so every item keeps
+    its instruction (Godspeed's perceived safety stays after the robot's four series)."""
+    if not q.shuffle:
+        return tuple(i.id for i in q.items)
+    rng = random.Random(int.from_bytes(hashlib.sha256(f"{key}/{q.name}".encode()).digest()[:8], "big"))
+    out: list[str] = []
+    for _, group in itertools.groupby(q.items, key=lambda i: i.prompt):
+        ids = [i.id for i in group]
+        rng.shuffle(ids)
+        out += ids
+    return tuple(out)
+
+
+def trial_key(session: str, human: str) -> str:
+    """What seeds the item order of a per-trial questionnaire: the session (one trial) and the person."""
+    return f"{session}/{human}"
+
+
+def in_order(q: Questionnaire, order: Sequence[str]) -> Questionnaire:
+    """The questionnaire with its items in `order` (every item id once)."""
+    by_id = {i.id: i for i in q.items}
+    return replace(q, items=tuple(by_id[i] for i in order))
+
+
+def _answer(q: Questionnaire, item: Item, v: Any) -> int | str:
+    if item.kind == TEXT:
+        v = "" if v is None else v
+        if not isinstance(v, str) or len(v) > MAX_ANSWER_TEXT or "\n" in v:
+            raise ValueError(f"{q.name}.{item.id}: must be one line of text (at most {MAX_ANSWER_TEXT} characters), got {repr(v)[:30]}")
+        return v.strip()
+    low, high, step = (1, len(item.options), 1) if item.kind == CHOICE else (q.minimum, q.maximum, q.step)
+    if isinstance(v, bool) or not isinstance(v, int) or not low <= v <= high or (v - low) % step:
+        raise ValueError(f"{q.name}.{item.id}: must be one of {low}..{high} in steps of {step}, got {repr(v)[:30]}")
+    return v
+
+
+def check_answers(q: Questionnaire, answers: Any) -> dict[str, Any]:
+    """Every item answered with a value on its scale (a free-text item may be left empty; a
+    ranking's items each differently); ValueError (one line) otherwise."""
     if not isinstance(answers, dict):
         raise ValueError(f"{q.name}: answers must be a mapping of item id to value")
-    out: dict[str, int] = {}
-    for item in q.items:
-        v = answers.get(item.id)
-        if isinstance(v, bool) or not isinstance(v, int) or not q.minimum <= v <= q.maximum or (v - q.minimum) % q.step:
-            raise ValueError(f"{q.name}.{item.id}: must be one of {q.minimum}..{q.maximum} in steps of {q.step}, got {repr(v)[:30]}")
-        out[item.id] = v
+    out = {item.id: _answer(q, item, answers.get(item.id)) for item in q.items}
     extra = sorted(set(answers) - set(out))
     if extra:
         raise ValueError(f"{q.name}: no item {str(extra[0])[:40]!r}")
+    if q.distinct and len(set(out.values())) != len(out):
+        raise ValueError(f"{q.name}: every item needs a different answer (each of {q.minimum}..{q.maximum} once)")
     return out
 
 
-def score(q: Questionnaire, answers: Mapping[str, int]) -> dict[str, float]:
-    """One mean per scale (reverse-scored items turned round), named `<questionnaire>_<scale>`
-    (a custom questionnaire's single scale is named as the questionnaire)."""
-    value = {i.id: (q.minimum + q.maximum - answers[i.id]) if i.reverse else answers[i.id] for i in q.items}
+def score(q: Questionnaire, answers: Mapping[str, Any]) -> dict[str, float]:
+    """One score per scale, the mean (or with `scoring: sum` the sum) of its items, reverse-scored
+    items turned round; named `<questionnaire>_<scale>` (a custom questionnaire's single scale is
+    named as the questionnaire)."""
+    value = {i.id: (q.minimum + q.maximum - answers[i.id]) if i.reverse else answers[i.id] for i in q.items if i.kind == SCALE}
     out: dict[str, float] = {}
     for scale, ids in q.scales:
         key = q.name if scale == q.name else f"{q.name}_{scale}"
-        out[key] = round(sum(value[i] for i in ids) / len(ids), 4)
+        total = sum(value[i] for i in ids)
+        out[key] = round(float(total) if q.scoring == "sum" else total / len(ids), 4)
     return out
 
 
-def answers_record(q: Questionnaire, answers: Any, answered_at: str) -> dict[str, Any]:
-    """What `ANSWERS_FILE` holds for one person's questionnaire: checked answers, scores, when."""
+def codebook_rows(q: Questionnaire) -> list[tuple[str, str, str, str]]:
+    """The scores `score` gives, as codebook rows (name, unit with the range, definition, source), for the report's codebook."""
+    rows = []
+    for scale, ids in q.scales:
+        name = q.name if scale == q.name else f"{q.name}_{scale}"
+        low, high = (q.minimum, q.maximum) if q.scoring == "mean" else (q.minimum * len(ids), q.maximum * len(ids))
+        how = "rank (1 = liked best)" if q.distinct else f"{q.scoring} of items {', '.join(ids)}"
+        turned = [i.id for i in q.items if i.id in ids and i.reverse]
+        unit = f"rank {low}-{high}" if q.distinct else f"points {low}-{high}"
+        turn = f"; reverse-scored ({q.minimum}+{q.maximum}-answer): {', '.join(turned)}" if turned else ""
+        rows.append((name, unit, f"{q.title}: {how}{turn}", q.source))
+    return rows
+
+
+def answers_record(q: Questionnaire, answers: Any, answered_at: str, order: Sequence[str] | None = None) -> dict[str, Any]:
+    """What `ANSWERS_FILE` holds for one person's questionnaire: checked answers, scores, when, and
+    the order the items were shown in (scores do not depend on it)."""
     checked = check_answers(q, answers)
-    return {"answers": checked, "scores": score(q, checked), "answered_at": answered_at}
+    record = {"answers": checked, "scores": score(q, checked), "answered_at": answered_at}
+    return record | ({"order": list(order)} if order is not None else {})

@@ -11,7 +11,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
-from haven_scenarios.study.questionnaires import Questionnaire
+from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order, trial_key
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.foxglove_relay import msgdef
 from haven_scenarios.web.access import Role
@@ -65,7 +65,7 @@ def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[
         "map_inset": settings.map_inset,
         "instructions": INSTRUCTIONS.get(scenario.kind, ""),
         "controls": CONTROLS,
-        "questionnaires": [q.to_dict() for q in settings.questionnaires],
+        "questionnaires": [in_order(q, item_order(q, trial_key(settings.session, role.name))).to_dict() for q in settings.questionnaires],
         "teleoperated": list(settings.teleoperated),
         "thought_max_chars": MAX_THOUGHT_CHARS,
     }

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import Any, Protocol
 
 from haven_scenarios.record.answers import answered, over, wanted
-from haven_scenarios.study.questionnaires import likert, registered, resolve
+from haven_scenarios.study.questionnaires import from_mapping, registered, resolve
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.commands.recordings import exit_text
 from haven_scenarios.tools.supervisor import Supervisor
@@ -65,7 +65,7 @@ def spec(text: str) -> str | dict[str, Any]:
     data = read_yaml(path, "questionnaire file")
     if not isinstance(data, dict):
         raise ValueError(f"{file_label(path)}: must be a mapping of one Likert questionnaire (name, points, anchors, items)")
-    likert(data, file_label(path) + ":")
+    from_mapping(data, file_label(path) + ":")
     return data
 
 

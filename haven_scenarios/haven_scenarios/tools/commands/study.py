@@ -6,8 +6,8 @@ import argparse
 from dataclasses import dataclass
 from pathlib import Path
 
-from haven_scenarios.record.codebook import Codebook
-from haven_scenarios.record.codebook import write as write_codebook
+from haven_scenarios.record import codebook
+from haven_scenarios.record.participants import PARTICIPANTS_CSV, summary_line, write_participants
 from haven_scenarios.record.report import write_table
 from haven_scenarios.record.study_summary import SUMMARY, draw, summary_rows
 from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows
@@ -87,6 +87,9 @@ def plan_cmd(args: argparse.Namespace) -> int:
     )
     print(f"order: {design_note(study)} Scenarios run as blocks in the file's order, each with the participant's condition order.")
     print(f"seeds: {study.seed_policy}, base {study.seed_base}; questionnaires after each trial: {_questionnaires(study)}")
+    if inst := study.instruments():
+        before, after = (", ".join(q.name for q in qs) or "none" for qs in (inst.first, inst.after))
+        print(f"before the first trial: {before}; after the last: {after} (once per participant)")
     print(table(plan_rows(trials)))
     return 0
 
@@ -153,6 +156,7 @@ class Report:
     counts: str  # participants, trials, practice trials, flagged not valid
     picture: bool
     study_changed: bool  # the study file changed since the first run
+    participants: str = ""  # participants.csv's summary line ("" when the study asks no instruments)
 
 
 def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
@@ -165,19 +169,21 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         raise ValueError(f"no finished trials of study {study.name} in {root} (see `haven study status {study.name} --dir {root}`)")
     out = out if out is not None else root / "report"
     try:
-        book = Codebook(questionnaires)
+        book = codebook.Codebook(questionnaires)
         long = long_rows(results, book.unit)
         write_table(out / "study_long.csv", long, LONG)
-        write_codebook(out, book.entries(long))
+        instruments = study.instruments()
+        codebook.write(out, [*book.entries(long), *(codebook.participants(instruments) if instruments else ())])
         write_table(out / "study_wide.csv", wide_rows(results), DESIGN)
         conditions = [c.name for c in study.conditions]
         write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
         picture = draw(results, conditions, questionnaires, out / "summary.png", f"{study.name}: {_counts(results)}")
+        said = summary_line(write_participants(out, root, study.participants, instruments), instruments) if instruments else ""
     except OSError as e:
         raise ValueError(f"--out {out}: cannot write the report: {e.strerror or e}") from None
     old = stored(root)
     changed = old is not None and bool(differences(old["study"], study.describe()))
-    return Report(out, len(results), len(done), _counts(results), bool(picture), changed)
+    return Report(out, len(results), len(done), _counts(results), bool(picture), changed, said)
 
 
 def report_cmd(args: argparse.Namespace) -> int:
@@ -193,6 +199,8 @@ def report_cmd(args: argparse.Namespace) -> int:
         f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), study_wide.csv, summary.csv"
         + (", summary.png" if report.picture else " (no measures to draw)")
     )
+    if report.participants:
+        print(f"haven: wrote {out / PARTICIPANTS_CSV}: {report.participants}")
     if report.study_changed:
         print(f"haven: note: the study file changed since the first run in {root}")
     return 0

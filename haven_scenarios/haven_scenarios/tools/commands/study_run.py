@@ -19,14 +19,17 @@ from dataclasses import dataclass, fields
 from pathlib import Path
 from types import FrameType
 
+from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.run.session_batch import run_batch_session
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.study.progress import TrialProgress, attempts, bind, progress, questionnaire_specs, trial_dir
 from haven_scenarios.study.protocol import Study, StudyError, load_study
+from haven_scenarios.study.questionnaires import Questionnaire
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.commands.common import fail
 from haven_scenarios.tools.commands.study import study_dir
+from haven_scenarios.tools.commands.study_instruments import ask_in_browser, order_key, run_instruments, say_declined, terminal_asker
 from haven_scenarios.tools.locks import FileLock, Locked
 from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_sim.common.params import ParamsError
@@ -181,7 +184,42 @@ def run_participant(args: StudyRun) -> int:
     except OSError as e:
         raise TrialError(f"cannot lock {root / args.participant}: {e.strerror or e}") from None
     with lock:
-        return _run_trials(args, study, root, trials, questionnaires)
+        code = _instruments(args, study, root, study.instruments().first, True)
+        if code is None:
+            code = _run_trials(args, study, root, trials, questionnaires)
+        if code == 0:
+            code = _instruments(args, study, root, study.instruments().after, False) or 0
+        return code
+
+
+def _instruments(args: StudyRun, study: Study, root: Path, qs: tuple[Questionnaire, ...], first: bool) -> int | None:
+    """The study-level instruments still pending for the participant (study_instruments.py): None to
+    go on, else the exit code (0: they declined consent, so no trial; 130: stopped while asking)."""
+    book = InstrumentBook(root, args.participant)
+    if book.declined():
+        say_declined(args.participant, book.path)
+        return 0
+    if not book.pending(qs):
+        return None
+    asker = None if args.batch else terminal_asker()
+    key = order_key(study.name, args.participant)
+    try:
+        agreed = ask_in_browser(book, qs, key, args.host, args.port, first) if args.web else run_instruments(book, qs, key, asker)
+        if not agreed:
+            say_declined(args.participant, book.path)
+            return 0
+    except ValueError as e:
+        raise TrialError(str(e)) from None
+    except EOFError:
+        print(
+            f"\nhaven study: no answers for {args.participant} at the terminal (its input is closed): run it at a terminal, or with --web",
+            file=sys.stderr,
+        )
+        return INTERRUPTED
+    except KeyboardInterrupt:
+        print(f"\nhaven study: stopped while asking {args.participant}; the same command asks what is missing", file=sys.stderr)
+        return INTERRUPTED
+    return None
 
 
 def _run_trials(args: StudyRun, study: Study, root: Path, trials: list[PlannedTrial], questionnaires: list[str]) -> int:

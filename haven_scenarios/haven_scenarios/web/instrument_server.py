@@ -1,0 +1,154 @@
+"""The page a participant answers the study's instruments on, before the first trial and after the
+last (`haven study run --web`; study/instruments.py says which).
+
+No ROS and no trial: a small threaded HTTP server (the standard library's) on the study's web
+address serves `/instruments/<participant>` (instruments.html, its settings embedded) and its
+bundle, and takes each instrument's answers as a POST of `{"questionnaire": name, "answers":
+{...}}` to `/instruments/<participant>/answers`: checked and stored in the participant's
+instruments.json (record/participants.py), or refused with one line the page shows. Every request
+needs the participant's token (in the address `haven study run` prints, then the cookie the page
+sets), as the trial pages do (web/access.py). It is stopped before the first trial's web node
+takes the same port.
+"""
+
+from __future__ import annotations
+
+import json
+import threading
+from collections.abc import Sequence
+from datetime import datetime, timezone
+from http.server import BaseHTTPRequestHandler
+from typing import Any
+from urllib.parse import urlsplit
+
+from haven_scenarios.record.answers import MAX_MESSAGE_BYTES
+from haven_scenarios.record.participants import InstrumentBook
+from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order
+from haven_scenarios.web.access import TOKEN_PARAM, new_token, role_token, token_of, token_ok
+from haven_scenarios.web.front_door import STATIC, _Server, address_for_others
+
+PAGE, COOKIE = "instruments", "haven_instruments_"  # the page's path and its token cookie (+ participant)
+SERVED = ("instruments.js", "haven.css")
+
+
+class InstrumentServer:
+    """One participant's instruments page until they have answered `qs` (or declined consent)."""
+
+    def __init__(self, host: str, port: int, book: InstrumentBook, qs: Sequence[Questionnaire], key: str, done_text: str) -> None:
+        self.book, self.participant, self.done_text = book, book.path.parent.name, done_text
+        self.qs = {q.name: q for q in qs}
+        self.order = {q.name: item_order(q, key) for q in qs}
+        self.token = role_token(new_token(), self.participant)
+        self.finished = threading.Event()
+        self._lock = threading.Lock()
+        server = self
+
+        class Handler(BaseHTTPRequestHandler):
+            server_version = "haven"
+            timeout = 10.0
+
+            def log_message(self, format: str, *args: Any) -> None:  # the researcher's terminal stays quiet
+                pass
+
+            def do_GET(self) -> None:
+                server.get(self)
+
+            def do_POST(self) -> None:
+                server.post(self)
+
+        try:
+            self.httpd = _Server((host, port), Handler)
+        except OSError as e:
+            raise ValueError(f"cannot serve the instruments page on {host}:{port}: {e.strerror}") from None
+        self.host = host
+        self.thread = threading.Thread(target=self.httpd.serve_forever, name="instruments", daemon=True)
+        self._check_done()
+
+    @property
+    def url(self) -> str:
+        port = int(self.httpd.server_address[1])
+        return f"http://{address_for_others(self.host)}:{port}/{PAGE}/{self.participant}?{TOKEN_PARAM}={self.token}"
+
+    def start(self) -> None:
+        self.thread.start()
+
+    def stop(self) -> None:
+        self.httpd.shutdown()
+        self.httpd.server_close()
+
+    def config(self) -> dict[str, Any]:
+        return {
+            "participant": self.participant,
+            "questionnaires": [in_order(q, self.order[q.name]).to_dict() for q in self.qs.values()],
+            "answered": [n for n in self.qs if n in self.book.data],
+            "declined": self.book.declined(),
+            "answers_url": f"/{PAGE}/{self.participant}/answers",
+            "done_text": self.done_text,
+        }
+
+    def _check_done(self) -> None:
+        if self.book.declined() or not self.book.pending(list(self.qs.values())):
+            self.finished.set()
+
+    def get(self, h: BaseHTTPRequestHandler) -> None:
+        parts = [p for p in urlsplit(h.path).path.split("/") if p]
+        if parts == ["favicon.ico"]:
+            return _reply(h, 204, b"")
+        if not self._cookie_ok(h):
+            return _reply(h, 403, b"this page needs its token: open the address `haven study run` printed for it")
+        if parts == [PAGE, self.participant]:
+            with self._lock:
+                text = json.dumps(self.config()).replace("<", "\\u003c")
+            page = (STATIC / "instruments.html").read_text().replace("{{CONFIG}}", text).encode()
+            cookie = f"{COOKIE}{self.participant}={self.token}; Path=/; HttpOnly; SameSite=Strict"
+            return _reply(h, 200, page, "text/html; charset=utf-8", cookie)
+        if len(parts) == 2 and parts[0] == "static" and parts[1] in SERVED:
+            kind = "text/javascript" if parts[1].endswith(".js") else "text/css"
+            return _reply(h, 200, (STATIC / parts[1]).read_bytes(), kind)
+        return _reply(h, 404, b"no such page")
+
+    def _cookie_ok(self, h: BaseHTTPRequestHandler) -> bool:
+        given = token_of(h.path, None, "")
+        cookies = dict(p.strip().partition("=")[::2] for p in (h.headers.get("Cookie") or "").split(";") if "=" in p)
+        return token_ok(given or cookies.get(COOKIE + self.participant, ""), self.token)
+
+    def post(self, h: BaseHTTPRequestHandler) -> None:
+        if [p for p in urlsplit(h.path).path.split("/") if p] != [PAGE, self.participant, "answers"]:
+            return _reply(h, 404, b"no such page")
+        if not self._cookie_ok(h):
+            return _json(h, 403, {"error": "not this participant's page: open the address `haven study run` printed"})
+        try:
+            length = int(h.headers.get("Content-Length") or 0)
+        except ValueError:
+            length = -1
+        if not 0 < length <= MAX_MESSAGE_BYTES:
+            return _json(h, 400, {"error": f"answers of {length} bytes (at most {MAX_MESSAGE_BYTES})"})
+        try:
+            msg = json.loads(h.rfile.read(length))
+            if not isinstance(msg, dict) or set(msg) != {"questionnaire", "answers"} or msg["questionnaire"] not in self.qs:
+                raise ValueError(f"answers must name one of {', '.join(self.qs)}")
+            name = msg["questionnaire"]
+            with self._lock:
+                self.book.take(self.qs[name], msg["answers"], datetime.now(timezone.utc).isoformat(timespec="seconds"), self.order[name])
+                self._check_done()
+                reply = {"answered": [n for n in self.qs if n in self.book.data], "declined": self.book.declined()}
+        except (ValueError, RecursionError) as e:
+            return _json(h, 400, {"error": str(e) if not isinstance(e, json.JSONDecodeError) else "answers: not JSON"})
+        except OSError as e:  # (a full disk: the page can send them again)
+            return _json(h, 500, {"error": f"cannot write {e.filename}: {e.strerror or e}"})
+        _json(h, 200, reply)
+
+
+def _reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = "") -> None:
+    h.send_response(code)
+    h.send_header("Content-Type", kind)
+    h.send_header("Content-Length", str(len(body)))
+    h.send_header("Cache-Control", "no-store")
+    if cookie:
+        h.send_header("Set-Cookie", cookie)
+    h.end_headers()
+    h.wfile.write(body)
+
+
+def _json(h: BaseHTTPRequestHandler, code: int, data: dict[str, Any]) -> None:
+    _reply(h, code, json.dumps(data).encode(), "application/json")
