@@ -9,15 +9,21 @@ conditions:                        # name: the cues shown (a list `haven run --c
   all: [all]
 participants: 8                    # a count (p01..p08) or a list of ids [p01, anna, ...]
 repetitions: 1                     # each scenario x condition this often per participant
-counterbalancing: williams         # williams | latin | full | none (see study/schedule.py)
-practice:                          # run first, flagged practice, left out of the statistics
-  - {scenario: shared_room, condition: all}
+counterbalancing: williams         # conditions in each block: williams | latin | full | none (study/schedule.py)
+blocks: williams                   # the scenario blocks' order: williams | latin | full | none
+assignment: {policy: random, seed: 7}   # who takes which order: by_id (default) | random (seeded)
+practice: {scenario: practice, cues: [none]}   # run first, flagged practice, left out of the statistics
 seeds: {policy: per_participant, base: 0}   # fixed | per_participant | per_trial
 questionnaires: [nasa_tlx, godspeed]        # after each trial: built-ins or Likert mappings
 ```
 
-Scenarios run as blocks in the file's order; each block shows the conditions in the participant's
-counterbalanced order (repetitions repeat that order within the block). Seeds: `fixed` gives
+Scenarios run as blocks, in the participant's counterbalanced block order (`blocks`, default
+`williams`: with two scenarios half the participants start with each, so no scenario is confounded
+with time in session); each block shows the conditions in the participant's counterbalanced order
+(repetitions repeat that order within the block); `assignment` says who takes which order
+(study/schedule.py). `practice` is one trial or a list, each `{scenario, cues}` (default: the
+shipped `practice` room with no cue, so no cue is shown before a no-cue trial and no study scenario
+is rehearsed) or `{scenario, condition}` naming one of the study's conditions. Seeds: `fixed` gives
 every trial `base`; `per_participant` gives participant k (from 0, in the list's order) `base + k`
 for all their trials, so conditions differ in the cue alone for each person; `per_trial` gives
 every trial of the study its own seed, `base + k * trials per participant + position - 1`.
@@ -34,7 +40,7 @@ from pathlib import Path
 from typing import Annotated, Any, Literal
 
 from haven_scenarios.record.session import check_name
-from haven_scenarios.run.trial import SEED_MAX, parse_condition
+from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_sim.common.schema import FileModel, Whole, check, checked, listing, mapping
@@ -64,7 +70,8 @@ class Condition:
 @dataclass(frozen=True)
 class Practice:
     scenario: StudyScenario
-    condition: Condition
+    condition: Condition  # one of the study's, or the practice's own cues (named as `haven run` names them)
+    own: bool = False  # given as cues, not as a study condition's name
 
 
 @dataclass(frozen=True)
@@ -80,6 +87,10 @@ class Study:
     seed_base: int = 0
     questionnaires: tuple[Any, ...] = ()  # as written: built-in names and Likert mappings
     source: str = ""
+    # The protocol against order confounds (study/schedule.py).
+    blocks: str = "williams"
+    assignment: str = "by_id"  # by_id | random
+    assignment_seed: int = 0
 
     def resolved_questionnaires(self) -> tuple[Questionnaire, ...]:
         return resolve(self.questionnaires, "questionnaires")
@@ -97,9 +108,11 @@ class Study:
             "participants": list(self.participants),
             "repetitions": self.repetitions,
             "counterbalancing": self.counterbalancing,
-            "practice": [[p.scenario.spec, p.condition.name] for p in self.practice],
+            "practice": [[p.scenario.spec, p.condition.name, *([list(p.condition.cues)] if p.own else [])] for p in self.practice],
             "seeds": {"policy": self.seed_policy, "base": self.seed_base},
             "questionnaires": list(self.questionnaires),
+            "blocks": self.blocks,
+            "assignment": {"policy": self.assignment, "seed": self.assignment_seed} if self.assignment == "random" else {"policy": self.assignment},
         }
 
 
@@ -133,9 +146,22 @@ class Seeds(FileModel):
     base: Whole(0, SEED_MAX) = 0  # type: ignore[valid-type]
 
 
+PRACTICE_SCENARIO = "practice"  # the shipped practice room: neither study scenario
+
+
 class PracticeTrial(FileModel):
-    scenario: str
-    condition: str
+    scenario: str = PRACTICE_SCENARIO
+    condition: str | None = None  # one of the study's conditions, or:
+    cues: Annotated[list[str], listing("a list of cue names (or [all] / [none])")] | None = None  # default [none]
+
+
+class Assignment(FileModel):
+    policy: Literal["by_id", "random"] = "by_id"
+    seed: Whole(0, SEED_MAX) | None = None  # type: ignore[valid-type]  # (required with random)
+
+
+def _practice(v: Any) -> Any:
+    return [v] if isinstance(v, dict) else v
 
 
 def _participants(v: Any) -> Any:
@@ -157,9 +183,16 @@ class StudyFile(FileModel):
     participants: Annotated[int | list[Any], checked(_participants)]
     repetitions: Whole(1, MAX_REPETITIONS) = 1  # type: ignore[valid-type]
     counterbalancing: Literal["williams", "latin", "full", "none"] = "williams"
-    practice: Annotated[list[PracticeTrial], listing("a list of {scenario: S, condition: C}", non_empty=False)] = []
+    practice: Annotated[
+        list[PracticeTrial],
+        listing("{scenario: S, cues: [C, ...]} or a list of them (or of {scenario: S, condition: C})", non_empty=False),
+        checked(_practice),  # (runs first: before-validators run last to first)
+    ] = []
     seeds: Seeds | None = None
     questionnaires: Annotated[list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)] = []
+    # The protocol against order confounds (study/schedule.py).
+    blocks: Literal["williams", "latin", "full", "none"] = "williams"
+    assignment: Assignment | None = None
 
 
 class _StudyParser:
@@ -181,6 +214,11 @@ class _StudyParser:
         scenarios, conditions = self.scenarios(f.scenarios), self.conditions(f.conditions)
         if f.counterbalancing == "full" and len(conditions) > 8:
             raise self.fail("counterbalancing", f"full: {len(conditions)} conditions have too many orders; use williams")
+        if f.blocks == "full" and len(scenarios) > 6:
+            raise self.fail("blocks", f"full: {len(scenarios)} scenarios have too many orders; use williams")
+        assignment = f.assignment or Assignment()
+        if assignment.policy == "random" and assignment.seed is None:
+            raise self.fail("assignment.seed", "required with policy random: a whole number, fixed before the study (e.g. {policy: random, seed: 7})")
         seeds = f.seeds or Seeds()
         return Study(
             name=self.name(f.name, "name"),
@@ -194,6 +232,9 @@ class _StudyParser:
             seed_base=seeds.base,
             questionnaires=self.questionnaires(f.questionnaires),
             source=self.source,
+            blocks=f.blocks,
+            assignment=assignment.policy,
+            assignment_seed=assignment.seed or 0,
         )
 
     def scenario(self, value: Any, key: str) -> StudyScenario:
@@ -255,11 +296,22 @@ class _StudyParser:
         out = []
         for i, p in enumerate(value):
             key = f"practice[{i}]"
-            if p.condition not in by_name:
-                raise self.fail(f"{key}.condition", f"names no condition of the study ({', '.join(by_name)}), got {short(p.condition)}")
             scenario = listed.get(p.scenario) or self.scenario(p.scenario, f"{key}.scenario")
-            out.append(Practice(scenario, by_name[p.condition]))
+            if p.condition is None:
+                out.append(Practice(scenario, self.practice_cues(p.cues or ["none"], f"{key}.cues"), own=True))
+            elif p.cues is not None:
+                raise self.fail(key, "give cues or condition, not both")
+            elif p.condition not in by_name:
+                raise self.fail(f"{key}.condition", f"names no condition of the study ({', '.join(by_name)}), got {short(p.condition)}")
+            else:
+                out.append(Practice(scenario, by_name[p.condition]))
         return tuple(out)
+
+    def practice_cues(self, cues: list[str], key: str) -> Condition:
+        try:
+            return Condition(condition_name(parse_condition(cues)).replace("+", "_"), tuple(cues))
+        except ValueError as e:
+            raise self.fail(key, str(e)) from None
 
     def questionnaires(self, value: list[Any]) -> tuple[Any, ...]:
         try:
