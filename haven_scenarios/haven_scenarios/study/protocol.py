@@ -39,6 +39,8 @@ from importlib import resources
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+from pydantic import Field
+
 from haven_scenarios.record.session import check_name
 from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
@@ -164,6 +166,12 @@ def _practice(v: Any) -> Any:
     return [v] if isinstance(v, dict) else v
 
 
+def _one_or_list(schema: dict[str, Any]) -> None:
+    """The JSON Schema of `practice`: one trial or a list of them (the reader wraps one in a list)."""
+    array = {k: schema.pop(k) for k in ("type", "items") if k in schema}
+    schema["anyOf"] = [array["items"], array]
+
+
 def _participants(v: Any) -> Any:
     if isinstance(v, int) and not isinstance(v, bool):
         if not 1 <= v <= MAX_PARTICIPANTS:
@@ -187,6 +195,7 @@ class StudyFile(FileModel):
         list[PracticeTrial],
         listing("{scenario: S, cues: [C, ...]} or a list of them (or of {scenario: S, condition: C})", non_empty=False),
         checked(_practice),  # (runs first: before-validators run last to first)
+        Field(json_schema_extra=_one_or_list),
     ] = []
     seeds: Seeds | None = None
     questionnaires: Annotated[list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)] = []
