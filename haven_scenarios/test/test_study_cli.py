@@ -244,7 +244,9 @@ def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(t
     study = load_study(path)
     specs = questionnaire_specs(study, tmp_path / "studies" / "pilot")
     trial = participant_schedule(study, "p02")[1]
-    request = trial_request(args, trial, specs)
+    request = trial_request(args, trial, specs, study.name)
+    assert request.extra["study"] == {"name": "pilot", "trial_id": trial.trial_id, "position": 2, "condition": trial.condition, "practice": False,
+                                      "sequence": 2, "block": 1, "position_in_block": 1, "previous_condition": ""}  # fmt: skip
     assert (request.scenario, request.participant, request.condition, request.seed) == ("shared_room", "p02", tuple(trial.cues), 1)
     assert request.web is not None and (request.web.host, request.web.port) == ("127.0.0.1", 0) and request.teleop == ()
     assert request.questionnaires[0] == "nasa_tlx"
@@ -303,6 +305,8 @@ def test_a_counterbalanced_pilot_has_the_order_columns_and_the_order_table(tmp_p
     for row in long:  # the long table repeats the trial's design on every measure
         w = trials[(row["participant"], int(row["order_position"]))]
         assert all(row[c] == w[c] for c in order)
+    recorded = json.loads(next((tmp_path / "d" / "p02").glob("03_*/*/session.json")).read_text())["study"]
+    assert (recorded["block"], recorded["position_in_block"], recorded["previous_condition"]) == (1, 2, trials[("p02", 2)]["condition"])
     with (out / "order_effects.csv").open() as f:
         effects = list(csv.DictReader(f))
     blocks = {(r["scenario"], r["level"]) for r in effects if r["factor"] == "block" and r["measure"] == "min_human_distance_m"}
