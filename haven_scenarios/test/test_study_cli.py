@@ -277,6 +277,7 @@ def test_a_counterbalanced_pilot_has_the_order_columns_and_the_order_table(tmp_p
     assert plan.returncode == 0, plan.stderr
     assert "2 sequences" in plan.stdout and "2 participant(s) complete it" in plan.stdout and "Assignment: random (seed 1)" in plan.stdout
     assert "practice1-practice-none" in plan.stdout and "note:" not in plan.stdout
+    assert "sequence 1: blocks hallway, shared_room" in plan.stdout and "sequence 2: blocks shared_room, hallway" in plan.stdout
     for p in ("p01", "p02"):
         r = haven("study", "run", str(path), "--participant", p, "--batch", "--dir", str(tmp_path / "d"), cwd=tmp_path)
         assert r.returncode == 0, r.stderr

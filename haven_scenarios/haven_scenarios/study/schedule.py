@@ -117,6 +117,15 @@ def design_note(study: Study) -> str:
     return text + "."
 
 
+def sequence_orders(study: Study) -> list[tuple[list[str], list[str]]]:
+    """Each sequence's scenario order and condition order, by name (sequence s is item s - 1)."""
+    blocks, conditions = block_orders(study), condition_orders(study)
+    return [
+        ([study.scenarios[i].name for i in blocks[s % len(blocks)]], [study.conditions[i].name for i in conditions[s % len(conditions)]])
+        for s in range(sequence_count(study))
+    ]
+
+
 def practice_note(study: Study) -> str | None:
     """A carry-over the practice builds in, if any: cues shown in practice before a no-cue condition."""
     shown = sorted({c for p in study.practice if p.condition.cues != ("none",) for c in p.condition.cues})

@@ -12,8 +12,18 @@ from haven_scenarios.record.study_summary import SUMMARY, draw, summary_rows
 from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows
 from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
 from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
-from haven_scenarios.study.schedule import PlannedTrial, design_note, participant_schedule, practice_note, schedule, trials_per_participant
+from haven_scenarios.study.schedule import (
+    PlannedTrial,
+    design_note,
+    participant_schedule,
+    practice_note,
+    schedule,
+    sequence_orders,
+    trials_per_participant,
+)
 from haven_scenarios.tools.commands.common import PORT, add_ros_options, existing_file, fail
+
+SHOWN_SEQUENCES = 24  # `plan` lists the design's sequences up to this many
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -101,6 +111,11 @@ def plan_cmd(args: argparse.Namespace) -> int:
         f"x {study.repetitions} repetition(s)"
     )
     print(f"order: {design_note(study)} Each scenario is one block; every block shows the conditions in the participant's order.")
+    shown = sequence_orders(study)
+    for s, (scenarios, conditions) in enumerate(shown[:SHOWN_SEQUENCES], 1):
+        print(f"sequence {s}: blocks {', '.join(scenarios)}; conditions {', '.join(conditions)}")
+    if len(shown) > SHOWN_SEQUENCES:
+        print(f"... and {len(shown) - SHOWN_SEQUENCES} more sequences (the schedule below has each participant's)")
     carry = practice_note(study)
     if carry:
         print(f"note: {carry}")
