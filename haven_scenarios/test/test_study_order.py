@@ -16,7 +16,7 @@ from haven_scenarios.record.order_table import FIRST, order_rows
 from haven_scenarios.record.study_table import Measure, TrialResults
 from haven_scenarios.study.progress import STORED, bind, differences
 from haven_scenarios.study.protocol import StudyError, load_study
-from haven_scenarios.study.schedule import PlannedTrial, assignment, practice_note, schedule, sequence_count, sequences
+from haven_scenarios.study.schedule import PlannedTrial, assignment, design_note, practice_note, schedule, sequence_count, sequences
 
 FOUR = {"none": ["none"], "path": ["path_projection"], "signals": ["turn_signals"], "all": ["all"]}
 THREE = {"none": ["none"], "path": ["path_projection"], "all": ["all"]}
@@ -147,3 +147,15 @@ def test_order_table_means_by_position_and_previous_condition() -> None:
     assert order[:2] == [("block", "", "1"), ("order_position", "", "2")]
     assert order[-4:] == [("previous_condition", "none", FIRST), ("previous_condition", "none", "all"),
                           ("previous_condition", "all", FIRST), ("previous_condition", "all", "none")]  # fmt: skip
+
+
+def test_plan_states_the_combined_design_and_the_participants_it_needs(tmp_path: Path) -> None:
+    two = load_study(write(tmp_path, participants=6))
+    assert sequence_count(two) == 4 and "4 sequences (the least common multiple of 2 and 4)" in design_note(two)
+    assert "6 participant(s) do not complete it: use a multiple of 4" in design_note(two) and "Assignment: by id" in design_note(two)
+    three = load_study(write(tmp_path, scenarios=SCENARIOS, participants=12, assignment={"policy": "random", "seed": 2}))
+    note = design_note(three)
+    assert sequence_count(three) == 12 and "two Latin squares" in note and "12 participant(s) complete it" in note
+    assert "Assignment: random (seed 2)" in note
+    one = load_study(write(tmp_path, scenarios=["hallway"], blocks="none"))
+    assert design_note(one).startswith("Scenario blocks: one scenario.") and sequence_count(one) == 4
