@@ -107,6 +107,8 @@ def test_a_study_stored_before_blocks_and_assignment_compares_as_file_order_by_i
     old = {k: v for k, v in load_study(write(tmp_path, blocks="none")).describe().items() if k not in ("blocks", "assignment")}
     assert differences(old, load_study(write(tmp_path, blocks="none")).describe()) == []
     assert differences(old, load_study(write(tmp_path)).describe()) == ["blocks"]  # now counterbalanced: a change
+    one = {k: v for k, v in load_study(write(tmp_path, scenarios=["hallway"])).describe().items() if k not in ("blocks", "assignment")}
+    assert differences(one, load_study(write(tmp_path, scenarios=["hallway"])).describe()) == []  # one block: the same schedule
 
 
 def test_practice_defaults_to_no_cue_in_the_practice_room_and_need_not_be_a_study_condition(tmp_path: Path) -> None:

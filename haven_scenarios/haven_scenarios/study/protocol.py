@@ -113,7 +113,7 @@ class Study:
             "practice": [[p.scenario.spec, p.condition.name, *([list(p.condition.cues)] if p.own else [])] for p in self.practice],
             "seeds": {"policy": self.seed_policy, "base": self.seed_base},
             "questionnaires": list(self.questionnaires),
-            "blocks": self.blocks,
+            "blocks": self.blocks if len(self.scenarios) > 1 else "none",  # (one scenario: one block, nothing to order)
             "assignment": {"policy": self.assignment, "seed": self.assignment_seed} if self.assignment == "random" else {"policy": self.assignment},
         }
 
