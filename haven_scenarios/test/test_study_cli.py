@@ -247,7 +247,9 @@ def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(t
     study = load_study(path)
     specs = questionnaire_specs(study, tmp_path / "studies" / "pilot")
     trial = participant_schedule(study, "p02")[1]
-    request = trial_request(args, trial, specs)
+    request = trial_request(args, trial, specs, study.name)
+    assert request.extra["study"] == {"name": "pilot", "trial_id": trial.trial_id, "position": 2, "condition": trial.condition, "practice": False,
+                                      "sequence": 2, "block": 1, "position_in_block": 1, "previous_condition": ""}  # fmt: skip
     assert (request.scenario, request.participant, request.condition, request.seed) == ("shared_room", "p02", tuple(trial.cues), 1)
     assert request.web is not None and (request.web.host, request.web.port) == ("127.0.0.1", 0) and request.teleop == ()
     assert request.questionnaires[0] == "nasa_tlx"
@@ -266,3 +268,51 @@ def test_a_reader_that_stops_early_gets_no_traceback(tmp_path: Path) -> None:
     proc.stdout.close()
     err = proc.stderr.read().decode()
     assert proc.wait(timeout=60) == 141 and err == ""
+
+
+def test_a_counterbalanced_pilot_has_the_order_columns_and_the_order_table(tmp_path: Path) -> None:
+    """Two scenarios as counterbalanced blocks, random assignment, the neutral practice: `plan` states
+    the design, each participant's blocks come in their own order, and the report's tables carry
+    the order columns (long and wide alike) and order_effects.csv."""
+    path = study_file(tmp_path, scenarios=["hallway", "shared_room"], participants=2, practice={},
+                      assignment={"policy": "random", "seed": 1}, questionnaires=[])  # fmt: skip
+    plan = haven("study", "plan", str(path), cwd=tmp_path)
+    assert plan.returncode == 0, plan.stderr
+    assert "2 sequences" in plan.stdout and "2 participant(s) complete it" in plan.stdout and "Assignment: random (seed 1)" in plan.stdout
+    assert "practice1-practice-none" in plan.stdout and "note:" not in plan.stdout
+    assert "sequence 1: blocks hallway, shared_room" in plan.stdout and "sequence 2: blocks shared_room, hallway" in plan.stdout
+    for p in ("p01", "p02"):
+        r = haven("study", "run", str(path), "--participant", p, "--batch", "--dir", str(tmp_path / "d"), cwd=tmp_path)
+        assert r.returncode == 0, r.stderr
+    report = haven("study", "report", str(path), "--dir", str(tmp_path / "d"), cwd=tmp_path)
+    assert report.returncode == 0 and "order_effects.csv" in report.stdout, report.stderr
+    out = tmp_path / "d" / "report"
+    with (out / "study_wide.csv").open() as f:
+        wide = list(csv.DictReader(f))
+    with (out / "study_long.csv").open() as f:
+        long = list(csv.DictReader(f))
+    order = ["sequence", "order_position", "block", "position_in_block", "previous_condition"]
+    assert all(c in wide[0] and c in long[0] for c in order)
+    trials = {(w["participant"], int(w["order_position"])): w for w in wide}
+    assert len(trials) == 10
+    first_block = {p: trials[(p, 2)]["scenario"] for p in ("p01", "p02")}
+    assert sorted(first_block.values()) == ["hallway", "shared_room"]  # one each: the blocks are counterbalanced
+    assert {trials[(p, 1)]["scenario"] for p in ("p01", "p02")} == {"practice"}
+    for (p, position), w in trials.items():
+        if w["practice"] == "True":
+            assert (w["block"], w["condition"], w["previous_condition"]) == ("0", "none", "")
+            continue
+        assert w["block"] == ("1" if w["scenario"] == first_block[p] else "2")
+        assert int(w["position_in_block"]) == (position - 2) % 2 + 1
+        before = trials[(p, position - 1)]
+        assert w["previous_condition"] == (before["condition"] if w["position_in_block"] == "2" else "")
+    for row in long:  # the long table repeats the trial's design on every measure
+        w = trials[(row["participant"], int(row["order_position"]))]
+        assert all(row[c] == w[c] for c in order)
+    recorded = json.loads(next((tmp_path / "d" / "p02").glob("03_*/*/session.json")).read_text())["study"]
+    assert (recorded["block"], recorded["position_in_block"], recorded["previous_condition"]) == (1, 2, trials[("p02", 2)]["condition"])
+    with (out / "order_effects.csv").open() as f:
+        effects = list(csv.DictReader(f))
+    blocks = {(r["scenario"], r["level"]) for r in effects if r["factor"] == "block" and r["measure"] == "min_human_centre_distance_m"}
+    assert blocks == {("hallway", "1"), ("hallway", "2"), ("shared_room", "1"), ("shared_room", "2")}
+    assert {r["level"] for r in effects if r["factor"] == "previous_condition" and r["condition"] == "all"} <= {"(first)", "none"}

@@ -195,7 +195,7 @@ def test_haven_study_run_asks_at_the_terminal_before_the_first_trial_and_after_t
     study = load_study(path)
     ran: list[str] = []
 
-    def batch_instead(args, trial, sessions, questionnaires):  # type: ignore[no-untyped-def]
+    def batch_instead(args, trial, sessions, questionnaires, name):  # type: ignore[no-untyped-def]
         ran.append(f"{args.participant}/{trial.trial_id}")
         return study_run.run_batch_trial(args, trial, sessions, study)
 

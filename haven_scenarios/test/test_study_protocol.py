@@ -10,7 +10,7 @@ import pytest
 import yaml
 
 from haven_scenarios.study.protocol import StudyError, load_study
-from haven_scenarios.study.schedule import design_note, latin, orders, participant_schedule, schedule, williams
+from haven_scenarios.study.schedule import design_note, latin, orders, participant_schedule, practice_note, schedule, williams
 
 BASE = {
     "name": "pilot",
@@ -89,13 +89,18 @@ def test_seed_policies_and_repetitions(tmp_path: Path) -> None:
     assert {p: {t.seed for t in participant_schedule(per, p)} for p in per.participants} == {"p01": {3}, "p02": {4}, "p03": {5}, "p04": {6}}
 
 
-def test_schedule_is_deterministic_and_scenarios_are_blocks(tmp_path: Path) -> None:
+def test_schedule_is_deterministic_and_scenarios_are_counterbalanced_blocks(tmp_path: Path) -> None:
     path = write(tmp_path, scenarios=["hallway", "shared_room"], participants=["anna", "ben", "cleo"], counterbalancing="full")
     a, b = schedule(load_study(path)), schedule(load_study(path))
     assert a == b
-    ben = [t for t in a if t.participant == "ben"]
-    assert [t.scenario for t in ben] == ["hallway"] * 4 + ["shared_room"] * 4
+    anna, ben = ([t for t in a if t.participant == p] for p in ("anna", "ben"))
+    assert [t.scenario for t in anna] == ["hallway"] * 4 + ["shared_room"] * 4  # blocks: williams, AB / BA
+    assert [t.scenario for t in ben] == ["shared_room"] * 4 + ["hallway"] * 4
+    assert [t.block for t in ben] == [1] * 4 + [2] * 4 and [t.position_in_block for t in ben] == [1, 2, 3, 4] * 2
     assert [t.condition for t in ben[:4]] == [t.condition for t in ben[4:]]  # the same order in each block
+    assert [t.previous_condition for t in ben[4:]] == ["", *(t.condition for t in ben[4:7])]  # within the block only
+    in_file_order = load_study(write(tmp_path, scenarios=["hallway", "shared_room"], participants=3, blocks="none"))
+    assert {tuple(t.scenario for t in participant_schedule(in_file_order, p))[0] for p in in_file_order.participants} == {"hallway"}
 
 
 def test_plan_says_when_two_squares_are_needed_or_the_design_is_incomplete(tmp_path: Path) -> None:
@@ -107,7 +112,10 @@ def test_plan_says_when_two_squares_are_needed_or_the_design_is_incomplete(tmp_p
 
 def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) -> None:
     paper = load_study("haven_paper")
-    assert [s.name for s in paper.scenarios] == ["hallway", "shared_room"] and len(paper.conditions) == 4
+    assert [s.name for s in paper.scenarios][:2] == ["hallway", "shared_room"] and len(paper.conditions) == 4
+    assert (paper.blocks, paper.counterbalancing, paper.assignment) == ("williams", "williams", "random")
+    assert [(p.scenario.name, p.condition.cues, p.own) for p in paper.practice] == [("practice", ("none",), True)]
+    assert practice_note(paper) is None and "8 participant(s) complete it" in design_note(paper)
     assert [q.name for q in paper.resolved_questionnaires()] == ["nasa_tlx", "godspeed", "legibility"]
     shipped = Path(__file__).resolve().parents[1] / "haven_scenarios" / "scenarios" / "shared_room.yaml"
     (tmp_path / "mine.yaml").write_text(
@@ -134,6 +142,13 @@ def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) 
         ({"participants": ["../x"]}, "participants[0]: must be 1 to 64"),
         ({"counterbalancing": "random"}, "counterbalancing: must be one of williams, latin, full, none"),
         ({"practice": [{"scenario": "shared_room", "condition": "nope"}]}, "practice[0].condition: names no condition"),
+        ({"practice": {"condition": "all", "cues": ["all"]}}, "practice[0]: give cues or condition, not both"),
+        ({"practice": {"cues": ["blink"]}}, "practice[0].cues: unknown cue 'blink'"),
+        ({"practice": "practice"}, "practice: must be {scenario: S, cues: [C, ...]} or a list of them"),
+        ({"blocks": "random"}, "blocks: must be one of williams, latin, full, none"),
+        ({"assignment": {"policy": "random"}}, "assignment.seed: required with policy random"),
+        ({"assignment": {"policy": "shuffle", "seed": 1}}, "assignment.policy: must be one of by_id, random"),
+        ({"assignment": {"policy": "random", "seed": -1}}, "assignment.seed: must be a whole number 0.."),
         ({"seeds": {"policy": "random"}}, "seeds.policy: must be one of fixed, per_participant, per_trial"),
         ({"questionnaires": ["sus"]}, "questionnaires[0]: unknown questionnaire 'sus'"),
         ({"questionnaires": [{"name": "x", "items": []}]}, "questionnaires[0].items: must be a list"),

@@ -22,7 +22,12 @@ from haven_scenarios.record.session import METRICS_FILE, analyse, session_info
 from haven_scenarios.study.progress import TrialProgress
 from haven_scenarios.study.questionnaires import ANSWERS_FILE
 
-DESIGN = ("participant", "trial_id", "order_position", "practice", "scenario", "condition", "seed", "valid", "end_reason", "session")
+# The order columns: `order_position` the trial's place in the participant's session (practice
+# first), `block` the scenario block's place (0 for practice), `position_in_block`, and
+# `previous_condition` (the trial before in the same block; empty for a block's first); `sequence`
+# is the participant's sequence of the design (study/schedule.py): what a carry-over model needs.
+ORDER = ("sequence", "order_position", "block", "position_in_block", "previous_condition")
+DESIGN = ("participant", "trial_id", *ORDER, "practice", "scenario", "condition", "seed", "valid", "end_reason", "session")
 LONG = (*DESIGN[:1], "human", *DESIGN[1:], "measure", "unit", "value")  # unit: as in codebook.csv
 NOT_MEASURES = ("seed", "valid")  # numbers in metrics.json that are design columns
 
@@ -107,7 +112,11 @@ def trial_results(p: TrialProgress) -> TrialResults | None:
     design = {
         "participant": t.participant,
         "trial_id": t.trial_id,
+        "sequence": t.sequence,
         "order_position": t.position,
+        "block": t.block,
+        "position_in_block": t.position_in_block,
+        "previous_condition": t.previous_condition,
         "practice": t.practice,
         "scenario": t.scenario,
         "condition": t.condition,

@@ -32,7 +32,8 @@ class Progress:
 
     LOG_EVERY_S = 30.0
 
-    def __init__(self, total: int, out: TextIO = sys.stderr) -> None:
+    def __init__(self, total: int, out: TextIO | None = None) -> None:
+        out = out if out is not None else sys.stderr  # (the stream of the moment, not of import time)
         self.total, self.out, self.started, self.done = total, out, time.monotonic(), 0
         self.bar = tqdm(total=total, unit="trial", file=out, smoothing=0.05) if out.isatty() else None
         self.logged = self.started

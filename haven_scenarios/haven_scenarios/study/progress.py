@@ -1,8 +1,8 @@
 """A study's folder: its stored schedule, and how far each participant has got.
 
     studies/<name>/
-        study.json                      the study as first run and its whole schedule (a changed
-                                        study file is refused against it)
+        study.json                      the study as first run, who takes which sequence and the
+                                        whole schedule (a changed study file is refused against it)
         questionnaires/<name>.yaml      the study's own Likert questionnaires, as `haven run` takes them
         <participant>/<NN>_<trial id>/  one trial: each attempt a session folder inside
             <scenario>_<participant>_<time>/   session.json, metrics.json, events.jsonl, ...
@@ -29,7 +29,7 @@ from haven_scenarios.record.session import SESSION_FILE, session_info, write_jso
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.protocol import Study, StudyError
 from haven_scenarios.study.rules import EndReason
-from haven_scenarios.study.schedule import PlannedTrial, schedule
+from haven_scenarios.study.schedule import PlannedTrial, assignment, schedule
 from haven_sim.common import atomic
 
 STORED = "study.json"
@@ -112,7 +112,14 @@ def stored(root: Path) -> dict[str, Any] | None:
     return data
 
 
+# What a study recorded before a key existed did: scenario blocks in the file's order, participants
+# by id (a study folder from then compares as that, so a file now counterbalancing blocks is a change).
+BEFORE_KEYS = {"blocks": "none", "assignment": {"policy": "by_id"}}
+
+
 def differences(old: dict[str, Any], new: dict[str, Any]) -> list[str]:
+    """The keys of `describe()` that differ between a stored study and the file's."""
+    old = {**BEFORE_KEYS, **old}
     return [k for k in sorted(set(old) | set(new)) if old.get(k) != new.get(k)]
 
 
@@ -121,7 +128,12 @@ def bind(study: Study, root: Path, replan: bool = False) -> list[PlannedTrial]:
     refused (StudyError, one line) unless `replan` (then the new schedule is stored; trials done
     keep their folders, and one stays done if it ran as the new schedule says: see `attempts`)."""
     trials = schedule(study)
-    record: dict[str, Any] = {"study": study.describe(), "source": study.source, "schedule": [t.to_json() for t in trials]}
+    record: dict[str, Any] = {
+        "study": study.describe(),
+        "source": study.source,
+        "assignment": assignment(study),  # participant -> sequence (1..), as `assignment` in the file made it
+        "schedule": [t.to_json() for t in trials],
+    }
     old = stored(root)
     if old is not None and not replan:
         changed = differences(old["study"], record["study"])

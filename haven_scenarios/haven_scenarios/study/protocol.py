@@ -9,9 +9,10 @@ conditions:                        # name: the cues shown (a list `haven run --c
   all: [all]
 participants: 8                    # a count (p01..p08) or a list of ids [p01, anna, ...]
 repetitions: 1                     # each scenario x condition this often per participant
-counterbalancing: williams         # williams | latin | full | none (see study/schedule.py)
-practice:                          # run first, flagged practice, left out of the statistics
-  - {scenario: shared_room, condition: all}
+counterbalancing: williams         # conditions in each block: williams | latin | full | none (study/schedule.py)
+blocks: williams                   # the scenario blocks' order: williams | latin | full | none
+assignment: {policy: random, seed: 7}   # who takes which order: by_id (default) | random (seeded)
+practice: {scenario: practice, cues: [none]}   # run first, flagged practice, left out of the statistics
 seeds: {policy: per_participant, base: 0}   # fixed | per_participant | per_trial
 questionnaires: [nasa_tlx, godspeed]        # after each trial: built-ins or Likert mappings
 consent: {file: consent.md}        # before anything: {text: ...} or a text file (relative to this file)
@@ -19,8 +20,13 @@ before_study: [demographics, nars]  # before the first trial, after consent (stu
 after_study: [preference]           # after the last trial: `preference` ranks the conditions
 ```
 
-Scenarios run as blocks in the file's order; each block shows the conditions in the participant's
-counterbalanced order (repetitions repeat that order within the block). Seeds: `fixed` gives
+Scenarios run as blocks, in the participant's counterbalanced block order (`blocks`, default
+`williams`: with two scenarios half the participants start with each, so no scenario is confounded
+with time in session); each block shows the conditions in the participant's counterbalanced order
+(repetitions repeat that order within the block); `assignment` says who takes which order
+(study/schedule.py). `practice` is one trial or a list, each `{scenario, cues}` (default: the
+shipped `practice` room with no cue, so no cue is shown before a no-cue trial and no study scenario
+is rehearsed) or `{scenario, condition}` naming one of the study's conditions. Seeds: `fixed` gives
 every trial `base`; `per_participant` gives participant k (from 0, in the list's order) `base + k`
 for all their trials, so conditions differ in the cue alone for each person; `per_trial` gives
 every trial of the study its own seed, `base + k * trials per participant + position - 1`.
@@ -36,8 +42,10 @@ from importlib import resources
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+from pydantic import Field
+
 from haven_scenarios.record.session import check_name
-from haven_scenarios.run.trial import SEED_MAX, parse_condition
+from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
@@ -69,7 +77,8 @@ class Condition:
 @dataclass(frozen=True)
 class Practice:
     scenario: StudyScenario
-    condition: Condition
+    condition: Condition  # one of the study's, or the practice's own cues (named as `haven run` names them)
+    own: bool = False  # given as cues, not as a study condition's name
 
 
 @dataclass(frozen=True)
@@ -85,6 +94,10 @@ class Study:
     seed_base: int = 0
     questionnaires: tuple[Any, ...] = ()  # as written: built-in names and Likert mappings
     source: str = ""
+    # The protocol against order confounds (study/schedule.py).
+    blocks: str = "williams"
+    assignment: str = "by_id"  # by_id | random
+    assignment_seed: int = 0
     # Before and after the whole study (study/instruments.py); not part of the schedule.
     consent_text: str = ""  # "": no consent asked
     before_study: tuple[Any, ...] = ()  # as written, like questionnaires
@@ -116,9 +129,11 @@ class Study:
             "participants": list(self.participants),
             "repetitions": self.repetitions,
             "counterbalancing": self.counterbalancing,
-            "practice": [[p.scenario.spec, p.condition.name] for p in self.practice],
+            "practice": [[p.scenario.spec, p.condition.name, *([list(p.condition.cues)] if p.own else [])] for p in self.practice],
             "seeds": {"policy": self.seed_policy, "base": self.seed_base},
             "questionnaires": list(self.questionnaires),
+            "blocks": self.blocks if len(self.scenarios) > 1 else "none",  # (one scenario: one block, nothing to order)
+            "assignment": {"policy": self.assignment, "seed": self.assignment_seed} if self.assignment == "random" else {"policy": self.assignment},
         }
 
 
@@ -152,6 +167,9 @@ class Seeds(FileModel):
     base: Whole(0, SEED_MAX) = 0  # type: ignore[valid-type]
 
 
+PRACTICE_SCENARIO = "practice"  # the shipped practice room: neither study scenario
+
+
 class Consent(FileModel):
     """The consent text, written here or in a text file (relative to the study file)."""
 
@@ -160,8 +178,24 @@ class Consent(FileModel):
 
 
 class PracticeTrial(FileModel):
-    scenario: str
-    condition: str
+    scenario: str = PRACTICE_SCENARIO
+    condition: str | None = None  # one of the study's conditions, or:
+    cues: Annotated[list[str], listing("a list of cue names (or [all] / [none])")] | None = None  # default [none]
+
+
+class Assignment(FileModel):
+    policy: Literal["by_id", "random"] = "by_id"
+    seed: Whole(0, SEED_MAX) | None = None  # type: ignore[valid-type]  # (required with random)
+
+
+def _practice(v: Any) -> Any:
+    return [v] if isinstance(v, dict) else v
+
+
+def _one_or_list(schema: dict[str, Any]) -> None:
+    """The JSON Schema of `practice`: one trial or a list of them (the reader wraps one in a list)."""
+    array = {k: schema.pop(k) for k in ("type", "items") if k in schema}
+    schema["anyOf"] = [array["items"], array]
 
 
 def _participants(v: Any) -> Any:
@@ -183,9 +217,17 @@ class StudyFile(FileModel):
     participants: Annotated[int | list[Any], checked(_participants)]
     repetitions: Whole(1, MAX_REPETITIONS) = 1  # type: ignore[valid-type]
     counterbalancing: Literal["williams", "latin", "full", "none"] = "williams"
-    practice: Annotated[list[PracticeTrial], listing("a list of {scenario: S, condition: C}", non_empty=False)] = []
+    practice: Annotated[
+        list[PracticeTrial],
+        listing("{scenario: S, cues: [C, ...]} or a list of them (or of {scenario: S, condition: C})", non_empty=False),
+        checked(_practice),  # (runs first: before-validators run last to first)
+        Field(json_schema_extra=_one_or_list),
+    ] = []
     seeds: Seeds | None = None
     questionnaires: Annotated[list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)] = []
+    # The protocol against order confounds (study/schedule.py).
+    blocks: Literal["williams", "latin", "full", "none"] = "williams"
+    assignment: Assignment | None = None
     # before and after the whole study (study/instruments.py)
     consent: Consent | None = None
     before_study: Annotated[list[Any], listing("a list of questionnaires (demographics, nars, ...)", non_empty=False)] = []
@@ -211,6 +253,11 @@ class _StudyParser:
         scenarios, conditions = self.scenarios(f.scenarios), self.conditions(f.conditions)
         if f.counterbalancing == "full" and len(conditions) > 8:
             raise self.fail("counterbalancing", f"full: {len(conditions)} conditions have too many orders; use williams")
+        if f.blocks == "full" and len(scenarios) > 6:
+            raise self.fail("blocks", f"full: {len(scenarios)} scenarios have too many orders; use williams")
+        assignment = f.assignment or Assignment()
+        if assignment.policy == "random" and assignment.seed is None:
+            raise self.fail("assignment.seed", "required with policy random: a whole number, fixed before the study (e.g. {policy: random, seed: 7})")
         seeds = f.seeds or Seeds()
         return Study(
             name=self.name(f.name, "name"),
@@ -224,6 +271,9 @@ class _StudyParser:
             seed_base=seeds.base,
             questionnaires=self.questionnaires(f.questionnaires),
             source=self.source,
+            blocks=f.blocks,
+            assignment=assignment.policy,
+            assignment_seed=assignment.seed or 0,
             consent_text=self.consent(f.consent),
             before_study=self.instruments(f.before_study, "before_study", ()),
             after_study=self.instruments(f.after_study, "after_study", (PREFERENCE,)),
@@ -288,11 +338,22 @@ class _StudyParser:
         out = []
         for i, p in enumerate(value):
             key = f"practice[{i}]"
-            if p.condition not in by_name:
-                raise self.fail(f"{key}.condition", f"names no condition of the study ({', '.join(by_name)}), got {short(p.condition)}")
             scenario = listed.get(p.scenario) or self.scenario(p.scenario, f"{key}.scenario")
-            out.append(Practice(scenario, by_name[p.condition]))
+            if p.condition is None:
+                out.append(Practice(scenario, self.practice_cues(p.cues or ["none"], f"{key}.cues"), own=True))
+            elif p.cues is not None:
+                raise self.fail(key, "give cues or condition, not both")
+            elif p.condition not in by_name:
+                raise self.fail(f"{key}.condition", f"names no condition of the study ({', '.join(by_name)}), got {short(p.condition)}")
+            else:
+                out.append(Practice(scenario, by_name[p.condition]))
         return tuple(out)
+
+    def practice_cues(self, cues: list[str], key: str) -> Condition:
+        try:
+            return Condition(condition_name(parse_condition(cues)).replace("+", "_"), tuple(cues))
+        except ValueError as e:
+            raise self.fail(key, str(e)) from None
 
     def questionnaires(self, value: list[Any]) -> tuple[Any, ...]:
         try:

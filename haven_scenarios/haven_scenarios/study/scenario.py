@@ -106,7 +106,7 @@ def resolve_world(spec: str, base: Path | None = None) -> Path:
         return p
     for package in ("haven_scenarios", "haven_sim"):
         candidate = Path(str(resources.files(package) / "worlds" / f"{spec}.yaml"))
-        if candidate.exists():
+        if _exists(candidate):
             return candidate
     return p
 

@@ -1,19 +1,31 @@
 """Counterbalancing and the study's schedule: every participant's trials in order, with their seeds.
 
-Condition orders (rows; participant k takes row k mod the number of rows):
-  * `williams`: a Latin square balanced for first-order carry-over (Williams 1949): each condition
-    comes at each position once and immediately before every other condition exactly once. With an
-    odd number of conditions one square cannot do that; two can (each row and its reverse): 2n orders,
-    every condition then precedes every other exactly twice.
+Orders (rows) of n things, for the scenario blocks (`blocks`) and for the conditions inside each
+block (`counterbalancing`):
+  * `williams`: a Latin square balanced for first-order carry-over (Williams 1949): each comes at
+    each position once and immediately before every other exactly once. With an odd n one square
+    cannot do that; two can (each row and its reverse): 2n orders, every one then precedes every
+    other exactly twice. With 2 scenarios it is AB/BA.
   * `latin`: the cyclic Latin square (row r: r, r+1, ...): positions balanced, carry-over not.
-  * `full`: all n! permutations, in lexicographic order, cycled over the participants.
+  * `full`: all n! permutations, in lexicographic order.
   * `none`: the file's order for everyone.
-A design is balanced when the number of participants is a multiple of its rows (`plan` says so).
+
+Blocks and conditions combine into sequences: sequence s (0..L-1, L the least common multiple of
+the two row counts) runs block order s mod B with condition order s mod C in every block. Over
+any L consecutive sequences each block order is used L/B times and each condition order L/C
+times, so both stay balanced; a participant count that is a multiple of L completes the design.
+Which participant takes which sequence (`assignment`): `by_id`, participant k (from 0, in the
+list's order) takes sequence k mod L; `random`, each successive set of L participants takes the L
+sequences in a random order (permuted blocks, as clinical trials randomise: balanced after every
+complete set), from `random.Random(seed)`, whose integer seeding and `sample` give the same
+numbers on every CPython since 3.2.
 """
 
 from __future__ import annotations
 
 import itertools
+import math
+import random
 from dataclasses import asdict, dataclass
 from typing import Any
 
@@ -38,7 +50,7 @@ def latin(n: int) -> list[list[int]]:
 
 
 def orders(design: str, n: int) -> list[list[int]]:
-    """The design's condition orders (indices into the study's conditions)."""
+    """The design's orders of n things (indices into the study's conditions or scenarios)."""
     if design == "williams":
         return williams(n)
     if design == "latin":
@@ -48,21 +60,82 @@ def orders(design: str, n: int) -> list[list[int]]:
     return [list(range(n))]
 
 
-def design_note(study: Study) -> str:
-    """What the counterbalancing gives this study, in a sentence or two for `haven study plan`."""
-    n, p = len(study.conditions), len(study.participants)
-    rows = len(orders(study.counterbalancing, n))
+def block_orders(study: Study) -> list[list[int]]:
+    return orders(study.blocks, len(study.scenarios))
+
+
+def condition_orders(study: Study) -> list[list[int]]:
+    return orders(study.counterbalancing, len(study.conditions))
+
+
+def sequence_count(study: Study) -> int:
+    """L: the sequences of the combined design (participants complete it in multiples of L)."""
+    return math.lcm(len(block_orders(study)), len(condition_orders(study)))
+
+
+def sequences(study: Study) -> list[int]:
+    """Each participant's sequence (0..L-1), in the participant list's order (module docstring)."""
+    n, p = sequence_count(study), len(study.participants)
+    if study.assignment == "by_id":
+        return [k % n for k in range(p)]
+    rng, out = random.Random(study.assignment_seed), list[int]()
+    while len(out) < p:
+        out += rng.sample(range(n), n)
+    return out[:p]
+
+
+def _design(kind: str, rows: int, n: int, what: str) -> str:
+    if n == 1:
+        return f"one {what[:-1]}"
     text = {
-        "williams": f"Williams design (Williams 1949): {rows} condition orders, balanced for position and first-order carry-over",
-        "latin": f"cyclic Latin square: {rows} condition orders, balanced for position (not for carry-over)",
-        "full": f"all {rows} permutations of the conditions",
-        "none": "no counterbalancing: every participant sees the conditions in the file's order",
-    }[study.counterbalancing]
-    if study.counterbalancing == "williams" and n % 2 == 1 and n > 1:
-        text += f"; {n} conditions is odd, so two Latin squares are needed (each order and its reverse)"
-    if rows > 1:
-        text += f"; {p} participant(s) " + ("complete it" if p % rows == 0 else f"do not complete it: use a multiple of {rows}")
+        "williams": f"Williams design (Williams 1949): {rows} {what[:-1]} orders, balanced for position and first-order carry-over",
+        "latin": f"cyclic Latin square: {rows} {what[:-1]} orders, balanced for position (not for carry-over)",
+        "full": f"all {rows} permutations of the {what}",
+        "none": f"not counterbalanced: every participant takes the {what} in the file's order",
+    }[kind]
+    if kind == "williams" and n % 2 == 1:
+        text += f" ({n} {what} is odd, so two Latin squares: each order and its reverse)"
+    return text
+
+
+def design_note(study: Study) -> str:
+    """What the counterbalancing gives this study, in a few sentences for `haven study plan`."""
+    b, c, n, p = len(block_orders(study)), len(condition_orders(study)), sequence_count(study), len(study.participants)
+    text = (
+        f"Scenario blocks: {_design(study.blocks, b, len(study.scenarios), 'scenarios')}. "
+        f"Conditions in each block: {_design(study.counterbalancing, c, len(study.conditions), 'conditions')}"
+    )
+    if b > 1 and c > 1:
+        text += f". Combined: {n} sequences (the least common multiple of {b} and {c}): every {n} participants use each block order "
+        text += "and each condition order equally often"
+    if n > 1:
+        text += f"; {p} participant(s) " + ("complete it" if p % n == 0 else f"do not complete it: use a multiple of {n}")
+    if study.assignment == "random":
+        text += f". Assignment: random (seed {study.assignment_seed}), each set of {n} participants takes the {n} sequences in a shuffled order"
+    else:
+        text += f". Assignment: by id, participant k in the list takes sequence k mod {n}"
     return text + "."
+
+
+def sequence_orders(study: Study) -> list[tuple[list[str], list[str]]]:
+    """Each sequence's scenario order and condition order, by name (sequence s is item s - 1)."""
+    blocks, conditions = block_orders(study), condition_orders(study)
+    return [
+        ([study.scenarios[i].name for i in blocks[s % len(blocks)]], [study.conditions[i].name for i in conditions[s % len(conditions)]])
+        for s in range(sequence_count(study))
+    ]
+
+
+def practice_note(study: Study) -> str | None:
+    """A carry-over the practice builds in, if any: cues shown in practice before a no-cue condition."""
+    shown = sorted({c for p in study.practice if p.condition.cues != ("none",) for c in p.condition.cues})
+    plain = [c.name for c in study.conditions if c.cues == ("none",)]
+    if not shown or not plain:
+        return None
+    return (
+        f"the practice shows {', '.join(shown)} before every participant's {plain[0]} trials, a carry-over no order undoes; "
+        "`practice: {scenario: practice, cues: [none]}` practises without cues"
+    )
 
 
 @dataclass(frozen=True)
@@ -72,11 +145,15 @@ class PlannedTrial:
     trial_id: str  # `<scenario>-<condition>` (+ `-r<k>` with repetitions), `practice<k>-...` for practice
     scenario: str  # the scenario's name
     scenario_spec: str  # what `haven run` is given
-    condition: str  # the study's condition name
+    condition: str  # the study's condition name (practice: its own, or the cues' name)
     cues: tuple[str, ...]
     seed: int
     practice: bool
     repetition: int  # 1.. (0 for practice)
+    sequence: int = 1  # 1.. the participant's sequence of the design (schedule's docstring)
+    block: int = 0  # the scenario block's place in the participant's order, 1..; 0 for practice
+    position_in_block: int = 1  # 1.. within the block (practice: within the practice trials)
+    previous_condition: str = ""  # the condition of the trial before in the same block; "" for the first
 
     @property
     def folder(self) -> str:
@@ -101,27 +178,39 @@ def _seed(study: Study, k: int, position: int) -> int:
     return study.seed_base + k * trials_per_participant(study) + position - 1
 
 
-def participant_schedule(study: Study, participant: str) -> list[PlannedTrial]:
-    """One participant's trials in order: practice, then each scenario's block of conditions in the
-    participant's counterbalanced order (repeated `repetitions` times)."""
-    k = study.participants.index(participant)
-    rows = orders(study.counterbalancing, len(study.conditions))
-    order = [study.conditions[i] for i in rows[k % len(rows)]]
-    out: list[PlannedTrial] = []
-
-    def add(scenario_name: str, spec: str, condition_name: str, cues: tuple[str, ...], trial_id: str, practice: bool, rep: int) -> None:
-        position = len(out) + 1
-        out.append(PlannedTrial(participant, position, trial_id, scenario_name, spec, condition_name, cues, _seed(study, k, position), practice, rep))
-
+def _trials(study: Study, k: int, sequence: int) -> list[PlannedTrial]:
+    """Participant k's trials: practice, then each scenario's block (in the sequence's block
+    order) of conditions in the sequence's condition order, repeated `repetitions` times."""
+    blocks, conditions = block_orders(study), condition_orders(study)
+    order = [study.conditions[i] for i in conditions[sequence % len(conditions)]]
+    participant, out = study.participants[k], list[PlannedTrial]()
     for i, p in enumerate(study.practice, 1):
-        add(p.scenario.name, p.scenario.spec, p.condition.name, p.condition.cues, f"practice{i}-{p.scenario.name}-{p.condition.name}", True, 0)
-    for s in study.scenarios:
+        c = p.condition
+        tid = f"practice{i}-{p.scenario.name}-{c.name}"
+        out.append(PlannedTrial(participant, i, tid, p.scenario.name, p.scenario.spec, c.name, c.cues, _seed(study, k, i), True, 0,
+                                sequence + 1, 0, i, out[-1].condition if out else ""))  # fmt: skip
+    for b, s in enumerate((study.scenarios[i] for i in blocks[sequence % len(blocks)]), 1):
+        previous = ""
         for rep in range(1, study.repetitions + 1):
             for c in order:
-                suffix = f"-r{rep}" if study.repetitions > 1 else ""
-                add(s.name, s.spec, c.name, c.cues, f"{s.name}-{c.name}{suffix}", False, rep)
+                position, suffix = len(out) + 1, f"-r{rep}" if study.repetitions > 1 else ""
+                in_block = (rep - 1) * len(order) + order.index(c) + 1
+                out.append(PlannedTrial(participant, position, f"{s.name}-{c.name}{suffix}", s.name, s.spec, c.name, c.cues,
+                                        _seed(study, k, position), False, rep, sequence + 1, b, in_block, previous))  # fmt: skip
+                previous = c.name
     return out
 
 
+def participant_schedule(study: Study, participant: str) -> list[PlannedTrial]:
+    """One participant's trials in order (see `_trials`)."""
+    k = study.participants.index(participant)
+    return _trials(study, k, sequences(study)[k])
+
+
 def schedule(study: Study) -> list[PlannedTrial]:
-    return [t for p in study.participants for t in participant_schedule(study, p)]
+    return [t for k, s in enumerate(sequences(study)) for t in _trials(study, k, s)]
+
+
+def assignment(study: Study) -> dict[str, int]:
+    """Participant -> sequence (1..L): what the stored schedule records of the assignment."""
+    return {p: s + 1 for p, s in zip(study.participants, sequences(study))}

@@ -7,14 +7,25 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from haven_scenarios.record import codebook
+from haven_scenarios.record.order_table import ORDER_EFFECTS, order_rows
 from haven_scenarios.record.participants import PARTICIPANTS_CSV, summary_line, write_participants
 from haven_scenarios.record.report import write_table
 from haven_scenarios.record.study_summary import SUMMARY, draw, summary_rows
 from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows
 from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
 from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
-from haven_scenarios.study.schedule import PlannedTrial, design_note, participant_schedule, schedule, trials_per_participant
+from haven_scenarios.study.schedule import (
+    PlannedTrial,
+    design_note,
+    participant_schedule,
+    practice_note,
+    schedule,
+    sequence_orders,
+    trials_per_participant,
+)
 from haven_scenarios.tools.commands.common import PORT, add_ros_options, existing_file, fail
+
+SHOWN_SEQUENCES = 24  # `plan` lists the design's sequences up to this many
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -41,7 +52,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     add_ros_options(run, suite=True)
     status = steps.add_parser("status", help="per participant: trials done, failed, and what comes next")
     status.add_argument("study", help=spec)
-    report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv and summary.png")
+    report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv, order_effects.csv and summary.png")
     report.add_argument("study", help=spec)
     report.add_argument("--out", type=Path, default=None, help="folder for the report (default: <study dir>/report)")
     for p in (plan, run, status, report):
@@ -68,8 +79,24 @@ def table(rows: list[list[str]]) -> str:
 
 
 def plan_rows(trials: list[PlannedTrial]) -> list[list[str]]:
-    head = ["participant", "position", "trial id", "scenario", "condition", "seed", "practice"]
-    return [head] + [[t.participant, str(t.position), t.trial_id, t.scenario, t.condition, str(t.seed), "yes" if t.practice else ""] for t in trials]
+    head = ["participant", "sequence", "position", "block", "in block", "trial id", "scenario", "condition", "after", "seed", "practice"]
+    rows = [
+        [
+            t.participant,
+            str(t.sequence),
+            str(t.position),
+            str(t.block) if t.block else "-",
+            str(t.position_in_block),
+            t.trial_id,
+            t.scenario,
+            t.condition,
+            t.previous_condition or "-",
+            str(t.seed),
+            "yes" if t.practice else "",
+        ]  # fmt: skip
+        for t in trials
+    ]
+    return [head, *rows]
 
 
 def plan_cmd(args: argparse.Namespace) -> int:
@@ -85,7 +112,15 @@ def plan_cmd(args: argparse.Namespace) -> int:
         f"({len(study.practice)} practice); {len(study.scenarios)} scenario(s) x {len(study.conditions)} condition(s) "
         f"x {study.repetitions} repetition(s)"
     )
-    print(f"order: {design_note(study)} Scenarios run as blocks in the file's order, each with the participant's condition order.")
+    print(f"order: {design_note(study)} Each scenario is one block; every block shows the conditions in the participant's order.")
+    shown = sequence_orders(study)
+    for s, (scenarios, conditions) in enumerate(shown[:SHOWN_SEQUENCES], 1):
+        print(f"sequence {s}: blocks {', '.join(scenarios)}; conditions {', '.join(conditions)}")
+    if len(shown) > SHOWN_SEQUENCES:
+        print(f"... and {len(shown) - SHOWN_SEQUENCES} more sequences (the schedule below has each participant's)")
+    carry = practice_note(study)
+    if carry:
+        print(f"note: {carry}")
     print(f"seeds: {study.seed_policy}, base {study.seed_base}; questionnaires after each trial: {_questionnaires(study)}")
     if inst := study.instruments():
         before, after = (", ".join(q.name for q in qs) or "none" for qs in (inst.first, inst.after))
@@ -150,7 +185,7 @@ def _next(t: TrialProgress | None) -> str:
 class Report:
     """What `haven study report` wrote."""
 
-    folder: Path  # study_long.csv, study_wide.csv, summary.csv and (with measures to draw) summary.png
+    folder: Path  # study_long.csv, study_wide.csv, summary.csv, order_effects.csv and (with measures to draw) summary.png
     trials_done: int
     trials: int
     counts: str  # participants, trials, practice trials, flagged not valid
@@ -177,6 +212,7 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         write_table(out / "study_wide.csv", wide_rows(results), DESIGN)
         conditions = [c.name for c in study.conditions]
         write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
+        write_table(out / "order_effects.csv", order_rows(results, conditions), ORDER_EFFECTS)
         picture = draw(results, conditions, questionnaires, out / "summary.png", f"{study.name}: {_counts(results)}")
         said = summary_line(write_participants(out, root, study.participants, instruments), instruments) if instruments else ""
     except OSError as e:
@@ -195,10 +231,8 @@ def report_cmd(args: argparse.Namespace) -> int:
         return fail(str(e))
     out = report.folder
     print(f"haven: study {study.name}: {report.trials_done}/{report.trials} trials done; {report.counts}")
-    print(
-        f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), study_wide.csv, summary.csv"
-        + (", summary.png" if report.picture else " (no measures to draw)")
-    )
+    picture = ", summary.png" if report.picture else " (no measures to draw)"
+    print(f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), study_wide.csv, summary.csv, order_effects.csv{picture}")
     if report.participants:
         print(f"haven: wrote {out / PARTICIPANTS_CSV}: {report.participants}")
     if report.study_changed:

@@ -18,6 +18,7 @@ import sys
 from dataclasses import dataclass, fields
 from pathlib import Path
 from types import FrameType
+from typing import Any
 
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.run.session_batch import run_batch_session
@@ -68,8 +69,14 @@ class Stopped(Exception):
     """A stop signal arrived: the study stops after the current trial has ended cleanly."""
 
 
-def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]) -> TrialRequest:
-    """The recorded trial for one trial of the schedule."""
+def study_extra(study: str, trial: PlannedTrial) -> dict[str, Any]:
+    """What session.json records of the trial's place in the study: its design, order columns included."""
+    keys = ("trial_id", "position", "condition", "practice", "sequence", "block", "position_in_block", "previous_condition")
+    return {"study": {"name": study, **{k: getattr(trial, k) for k in keys}}}
+
+
+def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str], study: str = "") -> TrialRequest:
+    """The recorded trial for one trial of the schedule (`study`: the study's name, for session.json)."""
     web = WebRequest(args.host, args.port) if args.web else None
     teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
     return TrialRequest(
@@ -81,13 +88,14 @@ def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]
         teleop=teleop,
         web=web,
         questionnaires=tuple(questionnaires) if args.web else (),
+        extra=study_extra(study, trial) if study else {},
     )
 
 
-def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str]) -> bool:
+def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str], study: str) -> bool:
     """The trial with the whole node suite; True if a stop signal (Ctrl-C) cut it short."""
     try:
-        plan = plan_trial(trial_request(args, trial, questionnaires))
+        plan = plan_trial(trial_request(args, trial, questionnaires, study))
         result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network))
     except TrialError as e:
         print(f"haven: error: {e}", file=sys.stderr)
@@ -103,15 +111,7 @@ def _raise_stopped(signum: int, frame: FrameType | None) -> None:
 def run_batch_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
     """The trial in this process; True if a stop signal (or Ctrl-C) cut it short."""
     scenario = load_scenario(trial.scenario_spec)
-    extra = {
-        "study": {
-            "name": study.name,
-            "trial_id": trial.trial_id,
-            "position": trial.position,
-            "condition": trial.condition,
-            "practice": trial.practice,
-        }
-    }
+    extra = study_extra(study.name, trial)
     previous = {sig: signal.signal(sig, _raise_stopped) for sig in STOP_SIGNALS if sig != signal.SIGINT}
     try:
         run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(args.params_file, TRIAL_SETS))
@@ -253,7 +253,7 @@ def _one(args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path,
         if args.batch:
             stopped = run_batch_trial(args, trial, sessions, study)
         else:
-            stopped = run_recorded_trial(args, trial, sessions, questionnaires)
+            stopped = run_recorded_trial(args, trial, sessions, questionnaires, study.name)
     except KeyboardInterrupt:
         stopped = True
     except (OSError, ValueError) as e:
