@@ -6,8 +6,9 @@ import argparse
 from dataclasses import dataclass
 from pathlib import Path
 
+from haven_scenarios.record.mixed_model import MIXED, model_rows, singular_count
 from haven_scenarios.record.report import write_table
-from haven_scenarios.record.study_summary import SUMMARY, draw, summary_rows
+from haven_scenarios.record.study_summary import SUMMARY, draw, panels, summary_rows
 from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows
 from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
 from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
@@ -151,6 +152,7 @@ class Report:
     counts: str  # participants, trials, practice trials, flagged not valid
     picture: bool
     study_changed: bool  # the study file changed since the first run
+    models: tuple[int, int] = (0, 0)  # mixed models fitted as singular, of all fitted (mixed_models.csv)
 
 
 def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
@@ -168,11 +170,13 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         conditions = [c.name for c in study.conditions]
         write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
         picture = draw(results, conditions, questionnaires, out / "summary.png", f"{study.name}: {_counts(results)}")
+        models = model_rows(results, [(p.measure, p.per_person) for p in panels(results, questionnaires)], conditions)
+        write_table(out / "mixed_models.csv", models, MIXED)
     except OSError as e:
         raise ValueError(f"--out {out}: cannot write the report: {e.strerror or e}") from None
     old = stored(root)
     changed = old is not None and bool(differences(old["study"], study.describe()))
-    return Report(out, len(results), len(done), _counts(results), bool(picture), changed)
+    return Report(out, len(results), len(done), _counts(results), bool(picture), changed, singular_count(models))
 
 
 def report_cmd(args: argparse.Namespace) -> int:
@@ -185,6 +189,9 @@ def report_cmd(args: argparse.Namespace) -> int:
     out = report.folder
     print(f"haven: study {study.name}: {report.trials_done}/{report.trials} trials done; {report.counts}")
     print(f"haven: wrote {out / 'study_long.csv'}, study_wide.csv, summary.csv" + (", summary.png" if report.picture else " (no measures to draw)"))
+    singular, fitted = report.models
+    model = "value ~ condition (+ position) + (1 | participant)"
+    print(f"haven: mixed models ({model}) per scenario and measure in mixed_models.csv: {fitted} fitted, {singular} singular")
     if report.study_changed:
         print(f"haven: note: the study file changed since the first run in {root}")
     return 0
