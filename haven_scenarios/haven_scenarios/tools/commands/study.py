@@ -13,11 +13,12 @@ from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_
 from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
 from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
 from haven_scenarios.study.schedule import PlannedTrial, design_note, participant_schedule, schedule, trials_per_participant
+from haven_scenarios.tools.commands import power as power_step
 from haven_scenarios.tools.commands.common import PORT, add_ros_options, existing_file, fail
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    study = sub.add_parser("study", help="a whole study from a study file: plan, run a participant's trials, status, report")
+    study = sub.add_parser("study", help="a whole study from a study file: plan, run a participant's trials, status, report, power")
     steps = study.add_subparsers(dest="step", required=True)
     spec = f"a study file, or a shipped study ({', '.join(study_names())})"
     plan = steps.add_parser("plan", help="print the schedule: every participant's trials in order")
@@ -43,7 +44,8 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv and summary.png")
     report.add_argument("study", help=spec)
     report.add_argument("--out", type=Path, default=None, help="folder for the report (default: <study dir>/report)")
-    for p in (plan, run, status, report):
+    power = power_step.add(steps, spec)
+    for p in (plan, run, status, report, power):
         p.add_argument("--dir", type=Path, default=None, help="the study's folder (default: studies/<study name> here)")
     run.set_defaults(func=_run)
     status.set_defaults(func=status_cmd)
