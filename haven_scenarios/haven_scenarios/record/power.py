@@ -25,7 +25,6 @@ pairing.
 
 from __future__ import annotations
 
-import math
 import warnings
 from collections import defaultdict
 from collections.abc import Sequence
@@ -184,11 +183,11 @@ def draw(results: Sequence[Power], out: Path, title: str) -> Path:
         p = np.array([r.power for r in mine])
         low, high = np.array([r.interval() for r in mine]).T
         ax.errorbar(n, p, yerr=[p - low, high - p], marker="o", capsize=4, color=f"C{i}", label=scenario)
-    ax.axhline(TARGET, color="grey", linestyle="--", linewidth=1, label=f"{TARGET:g} (a common target)")
+    ax.axhline(TARGET, color="grey", linestyle="--", linewidth=1, label=f"{TARGET:g}: the usual target (Cohen 1988)")
     ax.set_ylim(-0.03, 1.03)
     ax.set_xticks(sorted({r.cell.participants for r in results}))
     ax.set_xlabel("participants")
-    ax.set_ylabel("power (share of simulated studies with p < alpha)")
+    ax.set_ylabel("power: share of studies with p < alpha")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8, loc="lower right")
     ax.set_title(title, fontsize=9)
@@ -199,9 +198,3 @@ def draw(results: Sequence[Power], out: Path, title: str) -> Path:
     finally:
         plt.close(fig)
     return out
-
-
-def finite(value: float, what: str) -> float:
-    if not math.isfinite(value):
-        raise ValueError(f"{what}: must be a finite number, got {value}")
-    return value

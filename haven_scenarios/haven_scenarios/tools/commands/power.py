@@ -10,6 +10,7 @@ studies of each participant count are drawn from it and fitted (record/power.py 
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -88,8 +89,10 @@ def _question(args: argparse.Namespace, study: Study) -> tuple[str, str]:
             raise ValueError(f"{option}: {value!r} is not a condition of study {study.name} ({', '.join(names)})")
     if condition == reference:
         raise ValueError(f"--condition and --reference are both {condition}: nothing to compare")
-    if not 0 < args.alpha < 1 or args.effect != args.effect or abs(args.effect) == float("inf"):
-        raise ValueError("--alpha must be within (0, 1) and --effect a finite number")
+    if not math.isfinite(args.effect):
+        raise ValueError(f"--effect: must be a finite number, got {args.effect}")
+    if not 0 < args.alpha < 1:
+        raise ValueError(f"--alpha: must be within (0, 1), got {args.alpha:g}")
     if args.cluster is not None and args.cluster != LOCAL and "://" not in args.cluster:
         raise ValueError(f"--cluster: expected local or a scheduler address like tcp://host:8786, got {args.cluster!r}")
     return condition, reference
@@ -187,7 +190,7 @@ def _say(study: Study, q: Question, estimated: list[Power], out: Path, size: int
     name = f"power_{q.metric}"
     write_table(out / f"{name}.csv", [r.row() for r in estimated], POWER)
     title = f"{study.name}: {q.metric}, {q.condition} - {q.reference} = {q.effect:g}, alpha {q.alpha:g}, {q.reps} simulated studies per count"
-    draw(estimated, out / f"{name}.png", title)
+    draw(estimated, out / f"{name}.png", title.replace(", alpha", "\nalpha") + f", a pool of {size}")
     shifts = ", ".join(f"{s} {c.pool_effect:+.4g}" for s, c in {r.cell.scenario: r.cell for r in estimated}.items())
     print(f"haven study power: {title}")
     print(f"pool: {size} simulated participant(s) ({ran} trial(s) simulated now) in {out / 'pool'}")
