@@ -23,7 +23,7 @@ from haven_scenarios.run.sweep import LOCAL, cores, farm
 from haven_scenarios.study.progress import attempts, bind, progress, trial_dir
 from haven_scenarios.study.protocol import Study, StudyError, load_study
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
-from haven_scenarios.study.schedule import participant_schedule
+from haven_scenarios.study.schedule import PlannedTrial, participant_schedule
 from haven_scenarios.tools.commands.common import bounded_int, existing_file, fail
 
 DEFAULT_COUNTS = "8,12,16,24"
@@ -40,6 +40,12 @@ class PoolJob:
     participant: str
     root: Path
     params_file: str | None
+    scenario: str | None = None  # only this scenario's trials (practice left out too); None: every trial
+
+
+def wanted(trial: PlannedTrial, scenario: str | None) -> bool:
+    """Whether the pool needs this trial: all of them, or with --scenario that scenario's study trials."""
+    return scenario is None or (trial.scenario == scenario and not trial.practice)
 
 
 def add(steps: argparse._SubParsersAction, spec: str) -> argparse.ArgumentParser:  # type: ignore[type-arg]
@@ -52,7 +58,7 @@ def add(steps: argparse._SubParsersAction, spec: str) -> argparse.ArgumentParser
     power.add_argument("--reps", type=bounded_int(1, MAX_REPS), default=200, help="simulated studies per count (default 200)")
     power.add_argument("--condition", default=None, help="the condition C (default: the study's last)")
     power.add_argument("--reference", default=None, help="the reference condition R (default: the study's first)")
-    power.add_argument("--scenario", default=None, help="only this scenario (default: each scenario with the metric)")
+    power.add_argument("--scenario", default=None, help="only this scenario: its trials alone are simulated (default: every scenario)")
     power.add_argument("--alpha", type=float, default=0.05, help="the test's level (default 0.05)")
     power.add_argument(
         "--pool", type=bounded_int(2, MAX_PARTICIPANTS), default=None, help="simulated participants to draw from (default: the largest count)"
@@ -105,7 +111,7 @@ def simulate_participant(job: PoolJob) -> tuple[str, int, str]:
     study = with_participants(load_study(job.study), job.size)
     ran = 0
     for p in progress(job.root, participant_schedule(study, job.participant)):
-        if p.status == "done":
+        if p.status == "done" or not wanted(p.trial, job.scenario):
             continue
         sessions = trial_dir(job.root, p.trial)
         batch_session(p.trial, sessions, study, job.params_file)
@@ -123,8 +129,11 @@ def simulate_pool(study: Study, size: int, root: Path, args: argparse.Namespace)
         if any(h.teleoperated for h in load_scenario(s).humans):
             raise ValueError(f"scenario {s} has a teleoperated participant: the pool needs simulated ones")
     trials = bind(pool, root, replan=True)
-    todo = sorted({p.trial.participant for p in progress(root, trials) if p.status != "done"})
-    jobs = [PoolJob(study.source, size, p, root, str(Path(args.params_file).resolve()) if args.params_file else None) for p in todo]
+    if args.scenario is not None and args.scenario not in [s.name for s in study.scenarios]:
+        raise ValueError(f"--scenario: {args.scenario!r} is not a scenario of study {study.name} ({', '.join(s.name for s in study.scenarios)})")
+    todo = sorted({p.trial.participant for p in progress(root, trials) if p.status != "done" and wanted(p.trial, args.scenario)})
+    params = str(Path(args.params_file).resolve()) if args.params_file else None
+    jobs = [PoolJob(study.source, size, p, root, params, args.scenario) for p in todo]
     workers = args.workers or cores()
     ran = 0
     if jobs:
