@@ -34,7 +34,9 @@ from haven_scenarios.record.study_table import TrialResults
 SINGULAR_FRACTION = 0.01
 EXACT_FRACTION = 1e-12  # variances this small against the values' own are round-off: no noise at all
 ALPHA = 0.05  # the confidence intervals' level: 95 %
-POSITION = "order_position"  # the design column of the trial's position in the participant's session
+# The design column of the trial's overall position in the participant's session: the first of
+# these the table has (the study table's name for it, and the schedule's).
+POSITIONS = ("order_position", "sequence", "position")
 MIXED = (
     "scenario", "measure", "human", "formula", "reference", "participants", "trials", "term", "coef", "ci_low", "ci_high", "p",
     "participant_var", "residual_var", "converged", "singular", "note",
@@ -84,7 +86,8 @@ def observations(results: Sequence[TrialResults], scenario: str, measure: str, p
             continue
         values = [m.value for m in r.measures if m.measure == measure and bool(m.human) == per_person]
         if values and all(math.isfinite(v) for v in values):
-            out.append(Observation(str(d["participant"]), str(d["condition"]), float(d.get(POSITION) or 0), sum(values) / len(values)))
+            position = next((float(d[k]) for k in POSITIONS if d.get(k) is not None), 0.0)
+            out.append(Observation(str(d["participant"]), str(d["condition"]), position, sum(values) / len(values)))
     return out
 
 
