@@ -41,7 +41,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     add_ros_options(run, suite=True)
     status = steps.add_parser("status", help="per participant: trials done, failed, and what comes next")
     status.add_argument("study", help=spec)
-    report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv and summary.png")
+    report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv, summary.png and mixed_models.csv")
     report.add_argument("study", help=spec)
     report.add_argument("--out", type=Path, default=None, help="folder for the report (default: <study dir>/report)")
     power = power_step.add(steps, spec)
@@ -158,7 +158,7 @@ class Report:
 
 
 def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
-    """The study's tables and summary picture from its finished trials; ValueError (one line) when
+    """The study's tables, summary picture and mixed models from its finished trials; ValueError (one line) when
     there are none or they cannot be written."""
     questionnaires = study.resolved_questionnaires()
     done = progress(root, schedule(study))
