@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import statistics
+from pathlib import Path
 
 import pytest
 
@@ -71,3 +72,39 @@ def test_summary_leaves_out_practice_counts_invalid_apart_and_keeps_the_conditio
     assert (none["n"], none["n_invalid"]) == (3, 1)
     assert none["mean"] == pytest.approx(statistics.fmean(values)) and none["sd"] == pytest.approx(statistics.stdev(values)) and none["median"] == 2.5
     assert rows[2]["n"] == 1 and rows[2]["sd"] is None  # one trial: no spread
+
+
+def test_summary_pairs_participants_against_the_reference_with_intervals_and_d_z() -> None:
+    none, cued = [1.0, 2.0, 3.0, 4.0], [1.5, 2.0, 4.0, 5.5]  # paired differences 0.5, 0, 1, 1.5
+    results = [result(f"p{k}", "none", v) for k, v in enumerate(none)] + [result(f"p{k}", "all", v) for k, v in enumerate(cued)]
+    results.append(result("p9", "all", 9.0))  # no reference trial: in the condition's mean, not in the pairs
+    rows = {(r["condition"], r["measure"]): r for r in summary_rows(results, ["none", "all"])}
+    ref, row = rows[("none", "x_m")], rows[("all", "x_m")]
+    assert ref["participants"] == 4 and "diff_mean" not in ref
+    assert ref["ci_low"] == pytest.approx(2.5 - 3.1824 * statistics.stdev(none) / 2, abs=1e-3)  # t(0.975, 3) = 3.1824
+    diffs = [0.5, 0.0, 1.0, 1.5]
+    assert row["reference"] == "none" and row["diff_n"] == 4 and row["diff_mean"] == pytest.approx(0.75)
+    assert row["d_z"] == pytest.approx(0.75 / statistics.stdev(diffs), abs=1e-4)
+    half = 3.1824 * statistics.stdev(diffs) / 2
+    assert (row["diff_ci_low"], row["diff_ci_high"]) == (pytest.approx(0.75 - half, abs=1e-3), pytest.approx(0.75 + half, abs=1e-3))
+    assert rows[("all", "x_m")]["participants"] == 5
+
+
+def test_summary_axes_keep_a_least_span_and_questionnaires_their_scale() -> None:
+    from haven_scenarios.record.study_summary import Panel, _limits
+
+    low, high = _limits(Panel("hesitations", True, "", None, 2.0), 0.0, 0.0, nonnegative=True)
+    assert high - low >= 2.0 and low <= 0.0 and low > -0.2  # equal values: not an axis of +-0.04, and no negative counts
+    low, high = _limits(Panel("detour_m", True, "", None, 0.5), 1.0, 1.01, nonnegative=True)
+    assert high - low == pytest.approx(0.55) and low < 1.0 < 1.01 < high
+    assert _limits(Panel("nasa_tlx_raw", True, "", (0.0, 100.0)), 40.0, 41.0, nonnegative=True) == (-5.0, 105.0)
+
+
+def test_summary_picture_is_drawn_with_lines_per_participant(tmp_path: Path) -> None:
+    from haven_scenarios.record.study_summary import draw
+
+    results = [result(f"p{k}", c, k + (0.5 if c == "all" else 0.0)) for k in range(4) for c in ("none", "all")]
+    assert draw(results, ["none", "all"], [], tmp_path / "s.png", "t") is None  # x_m is not a main measure: nothing to draw
+    results = [TrialResults(r.design, (Measure("h1", "detour_m", r.measures[0].value),)) for r in results]
+    out = draw(results, ["none", "all"], [], tmp_path / "s.png", "t")
+    assert out is not None and out.stat().st_size > 10_000

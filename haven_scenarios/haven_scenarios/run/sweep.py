@@ -19,7 +19,7 @@ import os
 import signal
 import threading
 from collections.abc import Callable, Iterator, Sequence
-from typing import Any
+from typing import Any, TypeVar
 
 from haven_scenarios.record.report import csv_row
 from haven_scenarios.run.grid import TrialSpec
@@ -29,6 +29,8 @@ from haven_scenarios.run.trial import run_trial
 Row = dict[str, Any]
 Done = tuple[int, Row]  # a trial's index and metrics
 LOCAL = "local"  # --cluster local: a Dask LocalCluster on this machine
+Item = TypeVar("Item")
+Result = TypeVar("Result")
 
 
 def cores() -> int:
@@ -50,15 +52,19 @@ def row_of(spec: TrialSpec, metrics: Row) -> Row:
 
 def run_rows(specs: Sequence[TrialSpec], suite: SuiteConfig | None = None, workers: int = 1, cluster: str | None = None) -> Iterator[Row]:
     """Every spec's row, in the order the trials finish."""
-    task = functools.partial(_indexed, suite=suite)
-    if cluster is not None:
-        done = _on_dask(specs, task, cluster, workers)
-    elif workers <= 1 or len(specs) <= 1:
-        done = map(task, specs)
-    else:
-        done = _on_processes(specs, task, workers)
+    done = farm(specs, functools.partial(_indexed, suite=suite), workers, cluster)
     by_index = {s.index: s for s in specs}
     return (row_of(by_index[i], metrics) for i, metrics in done)
+
+
+def farm(items: Sequence[Item], task: Callable[[Item], Result], workers: int = 1, cluster: str | None = None) -> Iterator[Result]:
+    """`task` of every item (a picklable, module-level function), in the order they finish: here,
+    on `workers` processes or on the Dask `cluster`. Trials use it; so does `haven study power`."""
+    if cluster is not None:
+        return _on_dask(items, task, cluster, workers)
+    if workers <= 1 or len(items) <= 1:
+        return map(task, items)
+    return _on_processes(items, task, workers)
 
 
 def _indexed(spec: TrialSpec, suite: SuiteConfig | None) -> tuple[int, Row]:
@@ -70,7 +76,7 @@ def _ignore_interrupts() -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
-def _on_processes(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Done], workers: int) -> Iterator[Done]:
+def _on_processes(specs: Sequence[Item], task: Callable[[Item], Result], workers: int) -> Iterator[Result]:
     """A pool of fresh worker processes. A failed trial or a Ctrl-C stops the sweep: the workers are
     terminated (the trials they were running are lost; the finished ones have been yielded)."""
     main = threading.current_thread() is threading.main_thread()  # (only the main thread may set handlers)
@@ -88,7 +94,7 @@ def _on_processes(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Done],
         pool.join()
 
 
-def _on_dask(specs: Sequence[TrialSpec], task: Callable[[TrialSpec], Done], cluster: str, workers: int) -> Iterator[Done]:
+def _on_dask(specs: Sequence[Item], task: Callable[[Item], Result], cluster: str, workers: int) -> Iterator[Result]:
     """On a Dask cluster: a LocalCluster of `workers` processes (one thread each: a trial is
     CPU-bound Python), or the scheduler at `cluster`'s address with the workers it has."""
     import logging

@@ -7,10 +7,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from haven_scenarios.record import codebook
+from haven_scenarios.record.mixed_model import MIXED, model_rows, singular_count
 from haven_scenarios.record.order_table import ORDER_EFFECTS, order_rows
 from haven_scenarios.record.participants import PARTICIPANTS_CSV, summary_line, write_participants
 from haven_scenarios.record.report import write_table
-from haven_scenarios.record.study_summary import SUMMARY, draw, summary_rows
+from haven_scenarios.record.study_summary import SUMMARY, draw, panels, summary_rows
 from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows
 from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
 from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
@@ -23,13 +24,14 @@ from haven_scenarios.study.schedule import (
     sequence_orders,
     trials_per_participant,
 )
+from haven_scenarios.tools.commands import power as power_step
 from haven_scenarios.tools.commands.common import PORT, add_ros_options, existing_file, fail
 
 SHOWN_SEQUENCES = 24  # `plan` lists the design's sequences up to this many
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    study = sub.add_parser("study", help="a whole study from a study file: plan, run a participant's trials, status, report")
+    study = sub.add_parser("study", help="a whole study from a study file: plan, run a participant's trials, status, report, power")
     steps = study.add_subparsers(dest="step", required=True)
     spec = f"a study file, or a shipped study ({', '.join(study_names())})"
     plan = steps.add_parser("plan", help="print the schedule: every participant's trials in order")
@@ -52,10 +54,11 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     add_ros_options(run, suite=True)
     status = steps.add_parser("status", help="per participant: trials done, failed, and what comes next")
     status.add_argument("study", help=spec)
-    report = steps.add_parser("report", help="tidy long CSV, wide CSV, per-condition summary.csv, order_effects.csv and summary.png")
+    report = steps.add_parser("report", help="tidy long CSV, wide CSV, codebook, summary.csv, summary.png, order_effects.csv and mixed_models.csv")
     report.add_argument("study", help=spec)
     report.add_argument("--out", type=Path, default=None, help="folder for the report (default: <study dir>/report)")
-    for p in (plan, run, status, report):
+    power = power_step.add(steps, spec)
+    for p in (plan, run, status, report, power):
         p.add_argument("--dir", type=Path, default=None, help="the study's folder (default: studies/<study name> here)")
     run.set_defaults(func=_run)
     status.set_defaults(func=status_cmd)
@@ -185,17 +188,18 @@ def _next(t: TrialProgress | None) -> str:
 class Report:
     """What `haven study report` wrote."""
 
-    folder: Path  # study_long.csv, study_wide.csv, summary.csv, order_effects.csv and (with measures to draw) summary.png
+    folder: Path  # study_long.csv, codebook, study_wide.csv, summary.csv, order_effects.csv, mixed_models.csv, summary.png
     trials_done: int
     trials: int
     counts: str  # participants, trials, practice trials, flagged not valid
     picture: bool
     study_changed: bool  # the study file changed since the first run
     participants: str = ""  # participants.csv's summary line ("" when the study asks no instruments)
+    models: tuple[int, int] = (0, 0)  # mixed models fitted as singular, of all fitted (mixed_models.csv)
 
 
 def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
-    """The study's tables and summary picture from its finished trials; ValueError (one line) when
+    """The study's tables, summary picture and mixed models from its finished trials; ValueError (one line) when
     there are none or they cannot be written."""
     questionnaires = study.resolved_questionnaires()
     done = progress(root, schedule(study))
@@ -215,11 +219,13 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         write_table(out / "order_effects.csv", order_rows(results, conditions), ORDER_EFFECTS)
         picture = draw(results, conditions, questionnaires, out / "summary.png", f"{study.name}: {_counts(results)}")
         said = summary_line(write_participants(out, root, study.participants, instruments), instruments) if instruments else ""
+        models = model_rows(results, [(p.measure, p.per_person) for p in panels(results, questionnaires)], conditions)
+        write_table(out / "mixed_models.csv", models, MIXED)
     except OSError as e:
         raise ValueError(f"--out {out}: cannot write the report: {e.strerror or e}") from None
     old = stored(root)
     changed = old is not None and bool(differences(old["study"], study.describe()))
-    return Report(out, len(results), len(done), _counts(results), bool(picture), changed, said)
+    return Report(out, len(results), len(done), _counts(results), bool(picture), changed, said, singular_count(models))
 
 
 def report_cmd(args: argparse.Namespace) -> int:
@@ -235,6 +241,9 @@ def report_cmd(args: argparse.Namespace) -> int:
     print(f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), study_wide.csv, summary.csv, order_effects.csv{picture}")
     if report.participants:
         print(f"haven: wrote {out / PARTICIPANTS_CSV}: {report.participants}")
+    singular, fitted = report.models
+    model = "value ~ condition (+ position) + (1 | participant)"
+    print(f"haven: mixed models ({model}) per scenario and measure in mixed_models.csv: {fitted} fitted, {singular} singular")
     if report.study_changed:
         print(f"haven: note: the study file changed since the first run in {root}")
     return 0

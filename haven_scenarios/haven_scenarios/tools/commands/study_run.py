@@ -110,17 +110,22 @@ def _raise_stopped(signum: int, frame: FrameType | None) -> None:
 
 def run_batch_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
     """The trial in this process; True if a stop signal (or Ctrl-C) cut it short."""
-    scenario = load_scenario(trial.scenario_spec)
-    extra = study_extra(study.name, trial)
     previous = {sig: signal.signal(sig, _raise_stopped) for sig in STOP_SIGNALS if sig != signal.SIGINT}
     try:
-        run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(args.params_file, TRIAL_SETS))
+        batch_session(trial, sessions, study, args.params_file)
     except (KeyboardInterrupt, Stopped):
         return True
     finally:
         for sig, handler in previous.items():
             signal.signal(sig, handler)
     return False
+
+
+def batch_session(trial: PlannedTrial, sessions: Path, study: Study, params_file: str | None) -> None:
+    """The trial as a batch session under `sessions` (`--batch`; `haven study power` runs its pool so)."""
+    scenario = load_scenario(trial.scenario_spec)
+    extra = study_extra(study.name, trial)
+    run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(params_file, TRIAL_SETS))
 
 
 def describe(trial: PlannedTrial, total: int) -> str:
