@@ -26,12 +26,13 @@ import inspect
 import math
 import random
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Protocol
 
 from haven_scenarios.study.anticipation import DelayLine, Seen, hesitant, intent_ways, keep_clear, waits_for_me
 from haven_scenarios.study.perception import Percept, ahead_of
 from haven_scenarios.study.person import PersonParams, individual
+from haven_scenarios.study.scenario import HumanTask, Scenario
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
 from haven_sim.common import plugins
 from haven_sim.common.bodies import HUMAN_BODY
@@ -380,3 +381,15 @@ def make_walker(
     except Exception as e:  # noqa: BLE001 - a lab's model may fail in any way: one line naming it
         raise plugins.PluginError(f"participant model {model!r} could not be made for {human_id}: {plugins.failure(e)}") from None
     return made
+
+
+def in_session(scenario: Scenario, person_seed: int, session_trial: int) -> Scenario:
+    """The scenario with its simulated people as one study participant at one place in their
+    session: the same `person_seed` on every trial of theirs (the same people), `session_trial`
+    their trial's position (they learn). Several simulated humans stay different people: each
+    one's draw also depends on their id (`person.individual`)."""
+
+    def one(h: HumanTask) -> HumanTask:
+        return h if h.teleoperated else replace(h, params=replace(h.params, person_seed=person_seed, session_trial=session_trial))
+
+    return replace(scenario, humans=tuple(one(h) for h in scenario.humans))

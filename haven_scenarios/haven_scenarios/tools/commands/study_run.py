@@ -21,6 +21,7 @@ from types import FrameType
 
 from haven_scenarios.run.session_batch import run_batch_session
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
+from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.progress import TrialProgress, attempts, bind, progress, questionnaire_specs, trial_dir
 from haven_scenarios.study.protocol import Study, StudyError, load_study
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
@@ -65,7 +66,13 @@ class Stopped(Exception):
     """A stop signal arrived: the study stops after the current trial has ended cleanly."""
 
 
-def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]) -> TrialRequest:
+def person_of(study: Study, trial: PlannedTrial) -> tuple[int, int]:
+    """(person seed, position) of the trial's simulated participant: the same people for all of a
+    participant's trials, whatever the seed policy, new ones with another seed base."""
+    return study.seed_base + study.participants.index(trial.participant), trial.position
+
+
+def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str], person: tuple[int, int] | None = None) -> TrialRequest:
     """The recorded trial for one trial of the schedule."""
     web = WebRequest(args.host, args.port) if args.web else None
     teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
@@ -78,13 +85,14 @@ def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]
         teleop=teleop,
         web=web,
         questionnaires=tuple(questionnaires) if args.web else (),
+        person=person,
     )
 
 
-def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str]) -> bool:
+def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str], study: Study) -> bool:
     """The trial with the whole node suite; True if a stop signal (Ctrl-C) cut it short."""
     try:
-        plan = plan_trial(trial_request(args, trial, questionnaires))
+        plan = plan_trial(trial_request(args, trial, questionnaires, person_of(study, trial)))
         result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network))
     except TrialError as e:
         print(f"haven: error: {e}", file=sys.stderr)
@@ -99,7 +107,7 @@ def _raise_stopped(signum: int, frame: FrameType | None) -> None:
 
 def run_batch_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
     """The trial in this process; True if a stop signal (or Ctrl-C) cut it short."""
-    scenario = load_scenario(trial.scenario_spec)
+    scenario = in_session(load_scenario(trial.scenario_spec), *person_of(study, trial))
     extra = {
         "study": {
             "name": study.name,
@@ -215,7 +223,7 @@ def _one(args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path,
         if args.batch:
             stopped = run_batch_trial(args, trial, sessions, study)
         else:
-            stopped = run_recorded_trial(args, trial, sessions, questionnaires)
+            stopped = run_recorded_trial(args, trial, sessions, questionnaires, study)
     except KeyboardInterrupt:
         stopped = True
     except (OSError, ValueError) as e:
