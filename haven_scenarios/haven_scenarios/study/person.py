@@ -50,6 +50,7 @@ Typical values and their sources (ASSUMPTION marks a value of ours, not a measur
   * `learning` 0.15: the power-law exponent applied to `reaction_s` and `cue_error` over the session's
     trials: by the ninth trial a reaction time of 1.0 s is down to about 0.72 s, Green's expected-
     hazard figure (ASSUMPTION: the exponent chosen so).
+
 The cue effects a simulated pilot shows follow from these assumptions: they are what the model
 assumes people do, not findings about people.
 """
