@@ -247,10 +247,11 @@ def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(t
     study = load_study(path)
     specs = questionnaire_specs(study, tmp_path / "studies" / "pilot")
     trial = participant_schedule(study, "p02")[1]
-    request = trial_request(args, trial, specs, study.name)
+    request = trial_request(args, trial, specs, study)
     assert request.extra["study"] == {"name": "pilot", "trial_id": trial.trial_id, "position": 2, "condition": trial.condition, "practice": False,
                                       "sequence": 2, "block": 1, "position_in_block": 1, "previous_condition": ""}  # fmt: skip
     assert (request.scenario, request.participant, request.condition, request.seed) == ("shared_room", "p02", tuple(trial.cues), 1)
+    assert request.person == (1, 2)  # the study's second participant (seed base 0), at the second place in their session
     assert request.web is not None and (request.web.host, request.web.port) == ("127.0.0.1", 0) and request.teleop == ()
     assert request.questionnaires[0] == "nasa_tlx"
     written = Path(request.questionnaires[-1])

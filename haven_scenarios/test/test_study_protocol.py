@@ -112,10 +112,10 @@ def test_plan_says_when_two_squares_are_needed_or_the_design_is_incomplete(tmp_p
 
 def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) -> None:
     paper = load_study("haven_paper")
-    assert [s.name for s in paper.scenarios][:2] == ["hallway", "shared_room"] and len(paper.conditions) == 4
+    assert [s.name for s in paper.scenarios] == ["hallway", "shared_room", "shared_room_crossing"] and len(paper.conditions) == 4
     assert (paper.blocks, paper.counterbalancing, paper.assignment) == ("williams", "williams", "random")
     assert [(p.scenario.name, p.condition.cues, p.own) for p in paper.practice] == [("practice", ("none",), True)]
-    assert practice_note(paper) is None and "8 participant(s) complete it" in design_note(paper)
+    assert practice_note(paper) is None and "12 participant(s) complete it" in design_note(paper)
     assert [q.name for q in paper.resolved_questionnaires()] == ["nasa_tlx", "godspeed", "legibility"]
     shipped = Path(__file__).resolve().parents[1] / "haven_scenarios" / "scenarios" / "shared_room.yaml"
     (tmp_path / "mine.yaml").write_text(

@@ -8,7 +8,14 @@ is done (or the trial ends), except within `STOP_NEAR_M` of a place where one of
 counted (a gem they stood on, a room centre they reached: slowing there is the task, not hesitation).
 A hesitation is a stretch of at least `MIN_S` of that walk below `SLOW_FRACTION` of their own speed,
 standing still included. (Speed drops as a sign of hesitation in front of a robot: Vassallo et al.
-2017; the half-speed threshold and the 0.5 s minimum are ours.)
+2017; the 0.5 s minimum is ours.)
+
+`SLOW_FRACTION` 0.7 is ours too, fixed without reference to any participant model: a drop of 30 % of
+one's own walking speed is well beyond ordinary pace variation (the spread of comfortable walking
+speed between adults is a coefficient of variation of about 0.11, Bohannon 1997, Age and Ageing
+26:15-19, so 30 % is more than twice that). It is deliberately not the simulated participants'
+slowdown (`study.person.PersonParams.hesitate_factor`, a random effect centred on 0.5): a metric
+whose threshold equals a model parameter measures the parameter, not the people (issue 23).
 """
 
 from __future__ import annotations
@@ -19,7 +26,7 @@ from haven_sim.common.geometry import FloatArray
 
 SMOOTH_S = 0.5
 CRUISE_PERCENTILE = 75.0
-SLOW_FRACTION = 0.5
+SLOW_FRACTION = 0.7
 MIN_S = 0.5
 STOP_NEAR_M = 0.5
 MOVING_MPS = 0.05

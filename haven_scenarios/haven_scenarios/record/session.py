@@ -26,6 +26,7 @@ import subprocess
 import sys
 import time
 from collections.abc import Mapping
+from dataclasses import fields
 from datetime import datetime, timezone
 from importlib import metadata
 from pathlib import Path
@@ -39,6 +40,7 @@ from haven_scenarios.record.metrics import compute
 from haven_scenarios.record.outsiders import declared_of
 from haven_scenarios.record.timeline import GRID_S, Recording, Timeline
 from haven_scenarios.run.trial import condition_name
+from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario
 from haven_sim.common import atomic
@@ -143,11 +145,19 @@ def session_info(folder: Path) -> dict[str, Any]:
     return data if isinstance(data, dict) else {}
 
 
+def _params(params: PersonParams) -> dict[str, Any]:
+    """A person's `params` as a scenario file sets them (those not at their default): the scenario
+    node reads them from the session's copy, so batch and ROS trials have the same people."""
+    default = PersonParams()
+    changed = {f.name: getattr(params, f.name) for f in fields(PersonParams) if getattr(params, f.name) != getattr(default, f.name)}
+    return {"params": changed} if changed else {}
+
+
 def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
     """The scenario (with world: world.yaml), a copy of its world, and every node's parameters."""
     data = yaml.safe_load(Path(scenario.source).read_text()) if scenario.source else {"name": scenario.name}
     data["world"] = WORLD_FILE
-    data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps} for h in scenario.humans]
+    data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps, **_params(h.params)} for h in scenario.humans]
     atomic.write_text(folder / WORLD_FILE, Path(scenario.world_path).read_text(encoding="utf-8"))
     atomic.write_text(folder / SCENARIO_FILE, yaml.safe_dump(data, sort_keys=False))
     atomic.write_text(folder / PARAMS_FILE, params_yaml)

@@ -10,7 +10,9 @@
 
 They act on what they perceive (`perception`: the robot and the cues within their field of view and
 viewing distance, not behind walls), one reaction time late (`anticipation.DelayLine`), with the
-parameters of `person.PersonParams` (cited there). One who sees the robot's way ahead (the projected
+parameters of `person.PersonParams` (cited there) as drawn for this person and this trial
+(`person.individual`: people differ, vary from trial to trial and learn over their session), and in
+an encounter with the cues they sometimes ignore them (`cue_error`). One who sees the robot's way ahead (the projected
 path, a lit turn signal) moves to its far side early or gives way early; one who does not reacts to
 the robot's motion only, and slows while a robot whose intent they cannot read closes in, in their
 way (`anticipation`). All of them move by the social-force model (`social_force`): their task gives
@@ -24,12 +26,13 @@ import inspect
 import math
 import random
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Protocol
 
 from haven_scenarios.study.anticipation import DelayLine, Seen, hesitant, intent_ways, keep_clear, waits_for_me
 from haven_scenarios.study.perception import Percept, ahead_of
-from haven_scenarios.study.person import PersonParams
+from haven_scenarios.study.person import PersonParams, individual
+from haven_scenarios.study.scenario import HumanTask, Scenario
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
 from haven_sim.common import plugins
 from haven_sim.common.bodies import HUMAN_BODY
@@ -40,6 +43,7 @@ from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
 CLOSE_ENOUGH_M = 0.3  # a stop the person cannot get nearer to than this (someone beside it) counts as reached
 ROBOT_ON_STOP_M = 0.6  # the robot this close to a stop stands on it
 SIDE_HOLD_S = 3.0  # a side chosen to pass the robot on is kept this long after the last step aside
+ENCOUNTER_GAP_S = 2.0  # no cue seen for this long ends an encounter with the robot's cues (ours: a glance away is not a new encounter)
 HUMAN_PLANNER = PlannerParams(safety_margin_m=0.05, snap_radius_m=0.5, body_radius_m=HUMAN_BODY.radius_m)
 
 
@@ -85,10 +89,13 @@ class Walker:
         self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float = 1.0, seed: int = 0, params: PersonParams | None = None
     ) -> None:
         self.id = human_id
-        self.params = p = params or PersonParams()
+        self.person = individual(params or PersonParams(), human_id, seed)  # who they are, as in this trial
+        self.params = p = self.person.params
         self.rng = random.Random(seed)
-        self.speed = speed_mps * self.rng.uniform(1.0 - p.speed_spread, 1.0 + p.speed_spread)
-        self.attention = DelayLine(p.reaction_s * self.rng.uniform(1.0 - p.reaction_spread, 1.0 + p.reaction_spread))
+        self.speed = speed_mps * self.person.speed_factor
+        self.attention = DelayLine(p.reaction_s)
+        self._encounter: tuple[bool, float] | None = None  # (the cues misread this encounter, when a cue was last seen)
+        self.encounters = self.misreads = 0
         self.half_fov = math.radians(p.fov_deg) / 2.0
         self.stops = list(stops)
         self.planner = planner
@@ -104,10 +111,25 @@ class Walker:
         self.done = not self.stops
 
     def command(self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()) -> Twist2D:
-        self.attention.push(percept)
+        self.attention.push(self._read_cues(now, percept))
         seen = self.attention.acted_on(now)
         self._others, self._robot = others, seen.percept.robot if seen is not None else None
         return self._move(now, me, robot, seen, others, self._desired(now, me, seen))
+
+    def _read_cues(self, now: float, percept: Percept) -> Percept:
+        """The percept as the person reads it: in an encounter with the robot's cues (from the first
+        cue seen until none has been seen for `ENCOUNTER_GAP_S`), with probability `cue_error` they
+        ignore every cue, as if none were shown, for the whole encounter."""
+        if not (percept.intent_shown or percept.thought):
+            return percept
+        if self._encounter is None or now - self._encounter[1] > ENCOUNTER_GAP_S:
+            misread = self.person.rng.random() < self.params.cue_error
+            self.encounters += 1
+            self.misreads += misread
+        else:
+            misread = self._encounter[0]
+        self._encounter = (misread, now)
+        return Percept(percept.stamp, percept.robot) if misread else percept
 
     def _desired(self, now: float, me: Pose2D, seen: Seen | None) -> Point:
         """The velocity the person wants (world frame), before the social forces."""
@@ -359,3 +381,15 @@ def make_walker(
     except Exception as e:  # noqa: BLE001 - a lab's model may fail in any way: one line naming it
         raise plugins.PluginError(f"participant model {model!r} could not be made for {human_id}: {plugins.failure(e)}") from None
     return made
+
+
+def in_session(scenario: Scenario, person_seed: int, session_trial: int) -> Scenario:
+    """The scenario with its simulated people as one study participant at one place in their
+    session: the same `person_seed` on every trial of theirs (the same people), `session_trial`
+    their trial's position (they learn). Several simulated humans stay different people: each
+    one's draw also depends on their id (`person.individual`)."""
+
+    def one(h: HumanTask) -> HumanTask:
+        return h if h.teleoperated else replace(h, params=replace(h.params, person_seed=person_seed, session_trial=session_trial))
+
+    return replace(scenario, humans=tuple(one(h) for h in scenario.humans))

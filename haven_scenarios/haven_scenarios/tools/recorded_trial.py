@@ -42,6 +42,7 @@ from haven_scenarios.record.session import (
 )
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
 from haven_scenarios.run.trial import check_seed, condition_name, parse_condition
+from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import TELEOP, ScenarioError, load_scenario
 from haven_scenarios.tools.commands import after_trial
@@ -143,6 +144,7 @@ class TrialRequest:
     web: WebRequest | None = None
     questionnaires: tuple[str, ...] = ()  # in the pages after the trial: built-in names or Likert YAML files
     extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
+    person: tuple[int, int] | None = None  # simulated people as a study participant: (person seed, position in the session)
 
 
 def plan_trial(request: TrialRequest) -> SessionPlan:
@@ -162,6 +164,8 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
                 raise ValueError(f"--allow {topic[:60]}: {why}")
         scenario = load_scenario(r.scenario, r.world)
         toggles = parse_condition(list(r.condition or scenario.condition))
+        if r.person is not None:
+            scenario = in_session(scenario, *r.person)
         if r.teleop is not None:
             ids = list(r.teleop) or [h.id for h in scenario.humans]
             missing = [i for i in ids if i not in {h.id for h in scenario.humans}]

@@ -23,6 +23,7 @@ from typing import Any
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.run.session_batch import run_batch_session
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
+from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.progress import TrialProgress, attempts, bind, progress, questionnaire_specs, trial_dir
 from haven_scenarios.study.protocol import Study, StudyError, load_study
 from haven_scenarios.study.questionnaires import Questionnaire
@@ -75,8 +76,15 @@ def study_extra(study: str, trial: PlannedTrial) -> dict[str, Any]:
     return {"study": {"name": study, **{k: getattr(trial, k) for k in keys}}}
 
 
-def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str], study: str = "") -> TrialRequest:
-    """The recorded trial for one trial of the schedule (`study`: the study's name, for session.json)."""
+def person_of(study: Study, trial: PlannedTrial) -> tuple[int, int]:
+    """(person seed, position) of the trial's simulated participant: the same people for all of a
+    participant's trials, whatever the seed policy, new ones with another seed base."""
+    return study.seed_base + study.participants.index(trial.participant), trial.position
+
+
+def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str], study: Study | None = None) -> TrialRequest:
+    """The recorded trial for one trial of the schedule (`study`: for session.json, and who the
+    simulated participant is)."""
     web = WebRequest(args.host, args.port) if args.web else None
     teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
     return TrialRequest(
@@ -88,11 +96,12 @@ def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]
         teleop=teleop,
         web=web,
         questionnaires=tuple(questionnaires) if args.web else (),
-        extra=study_extra(study, trial) if study else {},
+        extra=study_extra(study.name, trial) if study else {},
+        person=person_of(study, trial) if study else None,
     )
 
 
-def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str], study: str) -> bool:
+def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str], study: Study) -> bool:
     """The trial with the whole node suite; True if a stop signal (Ctrl-C) cut it short."""
     try:
         plan = plan_trial(trial_request(args, trial, questionnaires, study))
@@ -123,7 +132,7 @@ def run_batch_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, study: 
 
 def batch_session(trial: PlannedTrial, sessions: Path, study: Study, params_file: str | None) -> None:
     """The trial as a batch session under `sessions` (`--batch`; `haven study power` runs its pool so)."""
-    scenario = load_scenario(trial.scenario_spec)
+    scenario = in_session(load_scenario(trial.scenario_spec), *person_of(study, trial))
     extra = study_extra(study.name, trial)
     run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(params_file, TRIAL_SETS))
 
@@ -258,7 +267,7 @@ def _one(args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path,
         if args.batch:
             stopped = run_batch_trial(args, trial, sessions, study)
         else:
-            stopped = run_recorded_trial(args, trial, sessions, questionnaires, study.name)
+            stopped = run_recorded_trial(args, trial, sessions, questionnaires, study)
     except KeyboardInterrupt:
         stopped = True
     except (OSError, ValueError) as e:
