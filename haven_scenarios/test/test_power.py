@@ -95,13 +95,3 @@ def test_power_on_the_shipped_study_prints_four_participant_counts(tmp_path: Pat
     assert (tmp_path / "power_time_to_finish_s.png").stat().st_size > 10_000
     again = subprocess.run(cmd, capture_output=True, text=True, timeout=600)  # the pool is reused, the numbers repeat
     assert again.stdout.split("pool:")[1] == out.split("pool:")[1].replace("(16 trial(s) simulated now)", "(0 trial(s) simulated now)")
-
-    # The pool is a study folder: its report carries the mixed models (4 participants of the shipped 8).
-    pool = tmp_path / "pool"
-    report = subprocess.run([*cmd[:3], "study", "report", "haven_paper", "--dir", str(pool)], capture_output=True, text=True, timeout=300)
-    assert report.returncode == 0, report.stderr
-    assert "in mixed_models.csv:" in report.stdout and " singular" in report.stdout
-    models = list(csv.DictReader((pool / "report" / "mixed_models.csv").open()))
-    fitted = [r for r in models if r["scenario"] == "hallway" and r["measure"] == "time_to_finish_s"]
-    assert [r["term"] for r in fitted][:4] == ["intercept", "path_projection", "turn_signals", "all"]
-    assert all(r["participants"] == "4" and r["trials"] == "16" and r["singular"] in ("True", "False") for r in fitted)

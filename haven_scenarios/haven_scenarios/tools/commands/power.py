@@ -87,6 +87,12 @@ def with_participants(study: Study, n: int) -> Study:
     return replace(study, participants=tuple(f"p{k:02d}" for k in range(1, n + 1)))
 
 
+def pool_study(study: Study, n: int) -> Study:
+    """The study the pool runs: n participants taking the sequences in turn, whatever the study's
+    assignment, so every condition order is in a pool at least as large as their count."""
+    return replace(with_participants(study, n), assignment="by_id")
+
+
 def _question(args: argparse.Namespace, study: Study) -> tuple[str, str]:
     names = [c.name for c in study.conditions]
     condition, reference = args.condition or names[-1], args.reference or names[0]
@@ -108,7 +114,7 @@ def simulate_participant(job: PoolJob) -> tuple[str, int, str]:
     """Run the pool participant's trials not done yet; (participant, trials run, what went wrong)."""
     from haven_scenarios.tools.commands.study_run import batch_session  # (the runner's own batch trial)
 
-    study = with_participants(load_study(job.study), job.size)
+    study = pool_study(load_study(job.study), job.size)
     ran = 0
     for p in progress(job.root, participant_schedule(study, job.participant)):
         if p.status == "done" or not wanted(p.trial, job.scenario):
@@ -124,7 +130,7 @@ def simulate_participant(job: PoolJob) -> tuple[str, int, str]:
 
 def simulate_pool(study: Study, size: int, root: Path, args: argparse.Namespace) -> tuple[list[TrialResults], int]:
     """The pool's trial results (simulating what is not there yet) and how many trials ran now."""
-    pool = with_participants(study, size)
+    pool = pool_study(study, size)
     for s in sorted({s.spec for s in pool.scenarios} | {p.scenario.spec for p in pool.practice}):
         if any(h.teleoperated for h in load_scenario(s).humans):
             raise ValueError(f"scenario {s} has a teleoperated participant: the pool needs simulated ones")
