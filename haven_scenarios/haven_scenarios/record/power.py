@@ -35,7 +35,7 @@ from typing import Any
 import numpy as np
 
 from haven_scenarios.record.mixed_model import Observation, fit
-from haven_sim.common import atomic
+from haven_scenarios.record.report import save_png
 
 TARGET = 0.8  # the conventional power to plan for (Cohen 1988, Statistical Power Analysis, ch. 2.4)
 POWER = ("scenario", "metric", "condition", "reference", "effect", "participants", "reps", "detected", "power", "ci_low", "ci_high",
@@ -192,9 +192,4 @@ def draw(results: Sequence[Power], out: Path, title: str) -> Path:
     ax.legend(fontsize=8, loc="lower right")
     ax.set_title(title, fontsize=9)
     fig.tight_layout()
-    try:
-        with atomic.replacing(out) as tmp:
-            fig.savefig(tmp, dpi=100, format="png")
-    finally:
-        plt.close(fig)
-    return out
+    return save_png(fig, out)

@@ -53,3 +53,15 @@ def report_csv(paths: Sequence[Path], out: Path) -> list[dict[str, Any]]:
     rows = [csv_row(analyse(folder)[0]) for folder in session_folders(paths)]
     write_table(out, rows)
     return rows
+
+
+def save_png(fig: Any, out: Path) -> Path:
+    """A matplotlib figure as a PNG, written whole (a reader never sees half a picture); the figure is closed."""
+    import matplotlib.pyplot as plt
+
+    try:
+        with atomic.replacing(out) as tmp:
+            fig.savefig(tmp, dpi=100, format="png")
+    finally:
+        plt.close(fig)
+    return out

@@ -22,9 +22,9 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.paired_stats import Interval, mean_interval, paired_difference, participant_means
+from haven_scenarios.record.report import save_png
 from haven_scenarios.record.study_table import TrialResults
 from haven_scenarios.study.questionnaires import Questionnaire
-from haven_sim.common import atomic
 
 SUMMARY = ("scenario", "condition", "human", "measure", "n", "n_invalid", "mean", "sd", "median", "participants", "ci_low", "ci_high",
            "reference", "diff_n", "diff_mean", "diff_ci_low", "diff_ci_high", "d_z")  # fmt: skip
@@ -207,9 +207,4 @@ def draw(results: Sequence[TrialResults], conditions: Sequence[str], questionnai
         fontsize=9,
     )
     fig.tight_layout(rect=(0, 0, 1, 1 - 0.55 / (4.4 * rows)))  # (the title's three lines: about half an inch)
-    try:
-        with atomic.replacing(out) as tmp:
-            fig.savefig(tmp, dpi=100, format="png")
-    finally:
-        plt.close(fig)
-    return out
+    return save_png(fig, out)

@@ -87,6 +87,18 @@ class _Server(ThreadingHTTPServer):
             print(f"web: a request from {client_address[0]} failed: {type(e).__name__}: {str(e)[:120]}", file=sys.stderr, flush=True)
 
 
+def reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = "") -> None:
+    """One whole HTTP answer, never cached (the pages carry tokens)."""
+    h.send_response(code)
+    h.send_header("Content-Type", kind)
+    h.send_header("Content-Length", str(len(body)))
+    h.send_header("Cache-Control", "no-store")
+    if cookie:
+        h.send_header("Set-Cookie", cookie)
+    h.end_headers()
+    h.wfile.write(body)
+
+
 class FrontDoor:
     def __init__(
         self,
@@ -140,34 +152,23 @@ class FrontDoor:
     def handle(self, h: BaseHTTPRequestHandler) -> None:
         req = route(h.path)
         if req.kind == "favicon":
-            return self._reply(h, 204, b"")
+            return reply(h, 204, b"")
         if not req.kind or (req.role and req.role not in self.backends):
-            return self._reply(h, 404, b"no such page")
+            return reply(h, 404, b"no such page")
         if not self._allowed(h, req.role):
-            return self._reply(h, 403, b"this page needs its token: open the address `haven run` printed for it")
+            return reply(h, 403, b"this page needs its token: open the address `haven run` printed for it")
         if req.kind == "page":
             cookie = f"{TOKEN_COOKIE}{req.role}={self.tokens[req.role]}; Path=/; HttpOnly; SameSite=Strict"
-            return self._reply(h, 200, page_html(req.role, self.config(req.role)), "text/html; charset=utf-8", cookie)
+            return reply(h, 200, page_html(req.role, self.config(req.role)), "text/html; charset=utf-8", cookie)
         if req.kind == "static":
             asset = STATIC / req.rest
             if not asset.is_file() or req.rest.endswith(".html"):
-                return self._reply(h, 404, b"no such file")
+                return reply(h, 404, b"no such file")
             kind = mimetypes.guess_type(req.rest)[0] or "application/octet-stream"
-            return self._reply(h, 200, asset.read_bytes(), kind)
+            return reply(h, 200, asset.read_bytes(), kind)
         if h.headers.get("Upgrade", "").lower() != "websocket":
-            return self._reply(h, 400, b"a WebSocket address")
+            return reply(h, 400, b"a WebSocket address")
         self._proxy(h, self.backends[req.role])
-
-    @staticmethod
-    def _reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = "") -> None:
-        h.send_response(code)
-        h.send_header("Content-Type", kind)
-        h.send_header("Content-Length", str(len(body)))
-        h.send_header("Cache-Control", "no-store")
-        if cookie:
-            h.send_header("Set-Cookie", cookie)
-        h.end_headers()
-        h.wfile.write(body)
 
     @staticmethod
     def _proxy(h: BaseHTTPRequestHandler, port: int) -> None:
@@ -176,7 +177,7 @@ class FrontDoor:
         try:
             upstream = socket.create_connection(("127.0.0.1", port), timeout=5.0)
         except OSError:
-            return FrontDoor._reply(h, 502, b"the relay is not running")
+            return reply(h, 502, b"the relay is not running")
         upstream.settimeout(None)
         h.connection.settimeout(None)  # (the request timeout was for the headers: a socket may stay quiet)
         for s in (upstream, h.connection):  # small frames both ways: no Nagle delay (40 ms with delayed ACKs)

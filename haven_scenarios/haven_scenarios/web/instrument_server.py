@@ -25,7 +25,7 @@ from haven_scenarios.record.answers import MAX_MESSAGE_BYTES
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, role_token, token_of, token_ok
-from haven_scenarios.web.front_door import STATIC, _Server, address_for_others
+from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, reply
 
 PAGE, COOKIE = "instruments", "haven_instruments_"  # the page's path and its token cookie (+ participant)
 SERVED = ("instruments.js", "haven.css")
@@ -93,19 +93,19 @@ class InstrumentServer:
     def get(self, h: BaseHTTPRequestHandler) -> None:
         parts = [p for p in urlsplit(h.path).path.split("/") if p]
         if parts == ["favicon.ico"]:
-            return _reply(h, 204, b"")
+            return reply(h, 204, b"")
         if not self._cookie_ok(h):
-            return _reply(h, 403, b"this page needs its token: open the address `haven study run` printed for it")
+            return reply(h, 403, b"this page needs its token: open the address `haven study run` printed for it")
         if parts == [PAGE, self.participant]:
             with self._lock:
                 text = json.dumps(self.config()).replace("<", "\\u003c")
             page = (STATIC / "instruments.html").read_text().replace("{{CONFIG}}", text).encode()
             cookie = f"{COOKIE}{self.participant}={self.token}; Path=/; HttpOnly; SameSite=Strict"
-            return _reply(h, 200, page, "text/html; charset=utf-8", cookie)
+            return reply(h, 200, page, "text/html; charset=utf-8", cookie)
         if len(parts) == 2 and parts[0] == "static" and parts[1] in SERVED:
             kind = "text/javascript" if parts[1].endswith(".js") else "text/css"
-            return _reply(h, 200, (STATIC / parts[1]).read_bytes(), kind)
-        return _reply(h, 404, b"no such page")
+            return reply(h, 200, (STATIC / parts[1]).read_bytes(), kind)
+        return reply(h, 404, b"no such page")
 
     def _cookie_ok(self, h: BaseHTTPRequestHandler) -> bool:
         given = token_of(h.path, None, "")
@@ -114,7 +114,7 @@ class InstrumentServer:
 
     def post(self, h: BaseHTTPRequestHandler) -> None:
         if [p for p in urlsplit(h.path).path.split("/") if p] != [PAGE, self.participant, "answers"]:
-            return _reply(h, 404, b"no such page")
+            return reply(h, 404, b"no such page")
         if not self._cookie_ok(h):
             return _json(h, 403, {"error": "not this participant's page: open the address `haven study run` printed"})
         try:
@@ -131,24 +131,13 @@ class InstrumentServer:
             with self._lock:
                 self.book.take(self.qs[name], msg["answers"], datetime.now(timezone.utc).isoformat(timespec="seconds"), self.order[name])
                 self._check_done()
-                reply = {"answered": [n for n in self.qs if n in self.book.data], "declined": self.book.declined()}
+                answer = {"answered": [n for n in self.qs if n in self.book.data], "declined": self.book.declined()}
         except (ValueError, RecursionError) as e:
             return _json(h, 400, {"error": str(e) if not isinstance(e, json.JSONDecodeError) else "answers: not JSON"})
         except OSError as e:  # (a full disk: the page can send them again)
             return _json(h, 500, {"error": f"cannot write {e.filename}: {e.strerror or e}"})
-        _json(h, 200, reply)
-
-
-def _reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = "") -> None:
-    h.send_response(code)
-    h.send_header("Content-Type", kind)
-    h.send_header("Content-Length", str(len(body)))
-    h.send_header("Cache-Control", "no-store")
-    if cookie:
-        h.send_header("Set-Cookie", cookie)
-    h.end_headers()
-    h.wfile.write(body)
+        _json(h, 200, answer)
 
 
 def _json(h: BaseHTTPRequestHandler, code: int, data: dict[str, Any]) -> None:
-    _reply(h, code, json.dumps(data).encode(), "application/json")
+    reply(h, code, json.dumps(data).encode(), "application/json")
