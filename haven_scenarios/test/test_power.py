@@ -18,14 +18,17 @@ CONDITIONS = ("none", "path_projection", "turn_signals", "all")
 ORDERS = [tuple(CONDITIONS[i] for i in row) for row in williams(4)]
 
 
-def pool(people: int, effect: float, participant_sd: float = 1.0, residual_sd: float = 0.5, seed: int = 3) -> list[Observation]:
-    """A simulated pool: participant k ran Williams order k mod 4; `all` is `effect` above the rest."""
+def pool(
+    people: int, effect: float, participant_sd: float = 1.0, residual_sd: float = 0.5, seed: int = 3, effect_sd: float = 0.0
+) -> list[Observation]:
+    """A simulated pool: participant k ran Williams order k mod 4; `all` is `effect` above the rest
+    (`effect_sd`: how much that effect varies between participants)."""
     rng = np.random.default_rng(seed)
     out = []
     for k in range(people):
-        level = rng.normal(0.0, participant_sd)
+        level, own = rng.normal(0.0, participant_sd), effect + rng.normal(0.0, effect_sd)
         for position, c in enumerate(ORDERS[k % 4], 1):
-            out.append(Observation(f"p{k:02d}", c, position, 5.0 + level + (effect if c == "all" else 0.0) + rng.normal(0.0, residual_sd)))
+            out.append(Observation(f"p{k:02d}", c, position, 5.0 + level + (own if c == "all" else 0.0) + rng.normal(0.0, residual_sd)))
     return out
 
 
@@ -41,7 +44,7 @@ def test_the_pool_is_shifted_to_the_effect_asked_keeping_its_spread() -> None:
     raw = pool(40, effect=0.7)
     c = cell(question(2.0), "s", 8, slots(8), raw)
     assert c.pool_size == 40 and abs(c.pool_effect - pool_effect(raw, question(2.0))) < 1e-12
-    shifted = [o for trials in c.pool.values() for person in trials for o in person]
+    shifted = [o for trials in c.pool.values() for k, person in enumerate(trials) for o in c.shifted(person, k, 2.0)]
     assert abs(pool_effect(shifted, question(2.0)) - 2.0) < 1e-9
     for name in ("none", "turn_signals"):  # other conditions untouched, spread kept
         assert sorted(o.value for o in shifted if o.condition == name) == sorted(o.value for o in raw if o.condition == name)
@@ -54,6 +57,7 @@ def test_no_effect_is_detected_about_alpha_of_the_time_and_a_huge_one_always() -
     assert null.failed == 0 and null.singular < 10
     # alpha 0.05 (the Wald test of 12 participants runs a little over it); 100 replicates: 2 binomial SDs is 0.045
     assert 0.0 <= null.power <= 0.15
+    assert null.false_positives == null.detected and not null.anticonservative()  # (at E = 0 both fits are the same)
     huge = estimate(cell(question(5.0, reps=20), "s", 12, slots(12), raw))
     assert huge.power == 1.0 and huge.mean_estimate == pytest.approx(5.0, abs=0.3)
     small_n = estimate(cell(question(0.4, reps=40), "s", 4, slots(4), raw))
@@ -95,3 +99,11 @@ def test_power_on_the_shipped_study_prints_four_participant_counts(tmp_path: Pat
     assert (tmp_path / "power_time_to_finish_s.png").stat().st_size > 10_000
     again = subprocess.run(cmd, capture_output=True, text=True, timeout=600)  # the pool is reused, the numbers repeat
     assert again.stdout.split("pool:")[1] == out.split("pool:")[1].replace("(16 trial(s) simulated now)", "(0 trial(s) simulated now)")
+
+
+def test_a_test_that_finds_absent_effects_too_often_is_flagged() -> None:
+    # The effect of `all` varies between people (sd 3) far beyond the trial-to-trial spread (0.2): a
+    # random-intercept model's one residual understates the C - R contrast's spread.
+    varied = pool(48, effect=1.0, residual_sd=0.2, effect_sd=3.0)
+    r = estimate(cell(question(1.0, reps=100), "s", 12, slots(12), varied))
+    assert r.false_positive_rate > 0.1 and r.anticonservative(), r.false_positive_rate  # (14 of 100: its interval starts at 0.085)

@@ -15,7 +15,7 @@ one's own walking speed is well beyond ordinary pace variation (the spread of co
 speed between adults is a coefficient of variation of about 0.11, Bohannon 1997, Age and Ageing
 26:15-19, so 30 % is more than twice that). It is deliberately not the simulated participants'
 slowdown (`study.person.PersonParams.hesitate_factor`, a random effect centred on 0.5): a metric
-whose threshold equals a model parameter measures the parameter, not the people (issue 23).
+whose threshold equals a model parameter measures the parameter, not the people.
 """
 
 from __future__ import annotations

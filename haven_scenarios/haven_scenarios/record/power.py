@@ -14,7 +14,12 @@ participants is drawn from it:
   between trials is the simulation's own (nothing is added or removed);
 * each replicate is fitted with the study's mixed model (`record.mixed_model`, reference R); it
   detects the effect when C's coefficient has p < alpha. Power is the share of replicates that do,
-  with a Wilson 95 % interval (its uncertainty from the number of replicates only).
+  with a Wilson 95 % interval (its uncertainty from the number of replicates only);
+* the same replicate, shifted so the pool's C - R difference is 0, is fitted too: the share of
+  those that "detect" an effect is the test's false-positive rate on this pool. It should be about
+  alpha; when its interval lies above alpha the test is anticonservative here (e.g. the effect
+  varies between people more than the model's one residual assumes) and the power is overstated,
+  which the output says.
 
 Limits, said in the output: resampling cannot show more variety than the pool holds, so a pool
 much smaller than the largest n understates the spread between studies; a fit that fails counts
@@ -39,7 +44,8 @@ from haven_scenarios.record.report import save_png
 
 TARGET = 0.8  # the conventional power to plan for (Cohen 1988, Statistical Power Analysis, ch. 2.4)
 POWER = ("scenario", "metric", "condition", "reference", "effect", "participants", "reps", "detected", "power", "ci_low", "ci_high",
-         "singular", "failed", "mean_estimate", "pool", "pool_effect")  # fmt: skip
+         "singular", "failed", "mean_estimate", "pool", "pool_effect",
+         "false_positives", "false_positive_rate", "fp_ci_low", "fp_ci_high")  # fmt: skip
 Order = tuple[str, ...]  # a participant's conditions, in the order they ran them in one scenario
 
 
@@ -64,9 +70,14 @@ class Cell:
     scenario: str
     participants: int
     slots: tuple[Order, ...]  # the orders the study gives that many participants
-    pool: dict[Order, tuple[tuple[Observation, ...], ...]]  # per order, each pool participant's trials (shifted)
+    pool: dict[Order, tuple[tuple[Observation, ...], ...]]  # per order, each pool participant's trials (as they ran)
     pool_size: int
     pool_effect: float  # the pool's own C - R difference, before the shift
+
+    def shifted(self, trials: Sequence[Observation], slot: int, effect: float) -> list[Observation]:
+        """A drawn participant's trials as participant `s<slot>`, C shifted so the pool's C - R difference is `effect`."""
+        c, shift = self.question.condition, effect - self.pool_effect
+        return [Observation(f"s{slot}", o.condition, o.position, o.value + shift if o.condition == c else o.value) for o in trials]
 
 
 @dataclass(frozen=True)
@@ -76,6 +87,15 @@ class Power:
     singular: int
     failed: int
     mean_estimate: float | None
+    false_positives: int = 0  # the same replicates at E = 0 with p < alpha
+
+    @property
+    def false_positive_rate(self) -> float:
+        return self.false_positives / self.cell.question.reps
+
+    def anticonservative(self) -> bool:
+        """The false-positive rate's interval lies wholly above alpha."""
+        return wilson(self.false_positives, self.cell.question.reps)[0] > self.cell.question.alpha
 
     @property
     def power(self) -> float:
@@ -91,7 +111,9 @@ class Power:
             "participants": self.cell.participants, "reps": q.reps, "detected": self.detected, "power": round(self.power, 4),
             "ci_low": round(low_high[0], 4), "ci_high": round(low_high[1], 4), "singular": self.singular, "failed": self.failed,
             "mean_estimate": round(self.mean_estimate, 6) if self.mean_estimate is not None else None,
-            "pool": self.cell.pool_size, "pool_effect": round(self.cell.pool_effect, 6),
+            "pool": self.cell.pool_size, "pool_effect": round(self.cell.pool_effect, 6), "false_positives": self.false_positives,
+            "false_positive_rate": round(self.false_positive_rate, 4),
+            **dict(zip(("fp_ci_low", "fp_ci_high"), (round(x, 4) for x in wilson(self.false_positives, q.reps)))),
         }  # fmt: skip
 
 
@@ -115,14 +137,12 @@ def pool_effect(pool: Sequence[Observation], question: Question) -> float:
 
 
 def cell(question: Question, scenario: str, participants: int, slots: Sequence[Order], pool: Sequence[Observation]) -> Cell:
-    """The cell's pool, grouped by each pool participant's order and shifted to the effect E;
-    ValueError (one line) when an order the study needs has no pool participant."""
+    """The cell's pool, grouped by each pool participant's order; ValueError (one line) when an
+    order the study needs has no pool participant."""
     delta = pool_effect(pool, question)
-    shift = question.effect - delta
     trials: dict[str, list[Observation]] = defaultdict(list)
     for o in pool:
-        moved = o.value + shift if o.condition == question.condition else o.value
-        trials[o.participant].append(Observation(o.participant, o.condition, o.position, moved))
+        trials[o.participant].append(o)
     groups: dict[Order, list[tuple[Observation, ...]]] = defaultdict(list)
     for person in sorted(trials):
         ran = tuple(sorted(trials[person], key=lambda o: o.position))
@@ -137,17 +157,15 @@ def estimate(c: Cell) -> Power:
     """The cell's replicate studies, each drawn from the pool and fitted (a picklable task)."""
     q = c.question
     rng = np.random.default_rng([q.seed, c.participants, *c.scenario.encode()])
-    detected = singular = failed = 0
+    detected = singular = failed = false_positives = 0
     estimates = []
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")  # (the fits say what they need to in their results)
         for _ in range(q.reps):
-            obs = []
-            for slot, order in enumerate(c.slots):
-                group = c.pool[order]
-                drawn = group[int(rng.integers(len(group)))]
-                obs += [Observation(f"s{slot}", o.condition, o.position, o.value) for o in drawn]
-            f = fit(obs, q.conditions, q.reference)
+            drawn = [(slot, c.pool[order][int(rng.integers(len(c.pool[order])))]) for slot, order in enumerate(c.slots)]
+            null = fit([o for slot, trials in drawn for o in c.shifted(trials, slot, 0.0)], q.conditions, q.reference).term(q.condition)
+            false_positives += null is not None and null.p is not None and null.p < q.alpha
+            f = fit([o for slot, trials in drawn for o in c.shifted(trials, slot, q.effect)], q.conditions, q.reference)
             term = f.term(q.condition)
             if term is None or term.p is None:
                 failed += 1
@@ -155,16 +173,17 @@ def estimate(c: Cell) -> Power:
             singular += f.singular
             detected += term.p < q.alpha
             estimates.append(term.coef)
-    return Power(c, detected, singular, failed, float(np.mean(estimates)) if estimates else None)
+    return Power(c, detected, singular, failed, float(np.mean(estimates)) if estimates else None, false_positives)
 
 
 def table(results: Sequence[Power]) -> list[list[str]]:
     """The printed table: power with its interval per scenario and participant count."""
-    rows = [["scenario", "participants", "power", "95 % CI (Wilson)", "detected", "singular fits", "failed fits"]]
+    rows = [["scenario", "participants", "power", "95 % CI (Wilson)", "detected", "at E=0", "singular fits", "failed fits"]]
     for r in results:
         low, high = r.interval()
         reps = r.cell.question.reps
-        rows.append([r.cell.scenario, str(r.cell.participants), f"{r.power:.2f}", f"{low:.2f}-{high:.2f}", f"{r.detected}/{reps}",
+        null = f"{r.false_positive_rate:.2f}" + (" !" if r.anticonservative() else "")
+        rows.append([r.cell.scenario, str(r.cell.participants), f"{r.power:.2f}", f"{low:.2f}-{high:.2f}", f"{r.detected}/{reps}", null,
                      f"{r.singular}/{reps}", f"{r.failed}/{reps}"])  # fmt: skip
     return rows
 

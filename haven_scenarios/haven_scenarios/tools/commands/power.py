@@ -215,5 +215,12 @@ def _say(study: Study, q: Question, estimated: list[Power], out: Path, size: int
     singular = sum(r.singular for r in estimated)
     if singular:
         print(f"note: {singular} fit(s) singular (participant variance 0): their p values ignore the pairing")
+    print(f"at E=0: the same studies with the pool's difference set to 0, the share with p < {q.alpha:g} (a calibrated test: about {q.alpha:g})")
+    loose = sorted({r.cell.scenario for r in estimated if r.anticonservative()})
+    if loose:
+        print(
+            f"warning: {', '.join(loose)}: the test finds an effect that is not there more often than alpha (marked !), so its power is"
+            " overstated: do not plan on it (the effect may vary between people more than the model allows; docs/howto/power.md)"
+        )
     print(f"haven study power: wrote {out / (name + '.csv')} and {name}.png")
     return 0
