@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from haven_scenarios.record.mixed_model import Observation, fit, model_rows, singular_count
+from haven_scenarios.record.mixed_model import Observation, fit, fit_counts, model_rows
 from haven_scenarios.record.study_table import Measure, TrialResults
 
 CONDITIONS = ("none", "path_projection", "turn_signals", "all")
@@ -72,4 +72,4 @@ def test_report_rows_one_per_term_and_the_singular_count() -> None:
     assert all(r["human"] == "person" and r["participants"] == 10 and r["trials"] == 40 for r in detour)
     flat = [r for r in rows if r["measure"] == "flat_m"]
     assert len(flat) == 1 and flat[0]["term"] == "" and "nothing to fit" in flat[0]["note"]
-    assert singular_count(rows) == (0, 1)
+    assert fit_counts(rows) == (0, 0, 1)

@@ -94,9 +94,9 @@ def test_power_on_the_shipped_study_prints_four_participant_counts(tmp_path: Pat
     assert "pool: 4 simulated participant(s) (16 trial(s) simulated now)" in out  # (--scenario: its 4 trials each, no others)
     for n in (4, 8, 12, 16):
         assert any(line.split()[:2] == ["hallway", str(n)] for line in out.splitlines()), out
-    rows = list(csv.DictReader((tmp_path / "power_time_to_finish_s.csv").open()))
+    rows = list(csv.DictReader((tmp_path / "power_time_to_finish_s_all-none_E-2.csv").open()))
     assert {int(r["participants"]) for r in rows} == {4, 8, 12, 16} and all(0.0 <= float(r["power"]) <= 1.0 for r in rows)
-    assert (tmp_path / "power_time_to_finish_s.png").stat().st_size > 10_000
+    assert (tmp_path / "power_time_to_finish_s_all-none_E-2.png").stat().st_size > 10_000
     again = subprocess.run(cmd, capture_output=True, text=True, timeout=600)  # the pool is reused, the numbers repeat
     assert again.stdout.split("pool:")[1] == out.split("pool:")[1].replace("(16 trial(s) simulated now)", "(0 trial(s) simulated now)")
 
@@ -107,3 +107,23 @@ def test_a_test_that_finds_absent_effects_too_often_is_flagged() -> None:
     varied = pool(48, effect=1.0, residual_sd=0.2, effect_sd=3.0)
     r = estimate(cell(question(1.0, reps=100), "s", 12, slots(12), varied))
     assert r.false_positive_rate > 0.1 and r.anticonservative(), r.false_positive_rate  # (14 of 100: its interval starts at 0.085)
+
+
+def test_a_pool_too_thin_for_the_orders_a_study_needs_is_said() -> None:
+    raw = pool(4, effect=1.0)  # one pool participant per order
+    assert cell(question(1.0), "s", 4, slots(4), raw).thin() == []
+    thin = cell(question(1.0), "s", 8, slots(8), raw).thin()  # two slots per order, one person who ran it
+    assert [(n, have) for _, n, have in thin] == [(2, 1)] * 4
+
+
+def test_a_metric_is_checked_before_any_trial_is_simulated() -> None:
+    from haven_scenarios.study.protocol import load_study
+    from haven_scenarios.tools.commands.power import check_metric
+
+    paper = load_study("haven_paper")
+    for fine in ("time_to_finish_s", "hunav_avg_distance_to_closest_person_m", "intimate_centre_intrusion_s", "path_length_m"):
+        check_metric(fine, paper)
+    with pytest.raises(ValueError, match=r"^--metric: no measure 'time_to_finsh_s': did you mean time_to_finish_s\?$"):
+        check_metric("time_to_finsh_s", paper)
+    with pytest.raises(ValueError, match="^--metric: godspeed_safety is a questionnaire score: simulated participants answer no questionnaire$"):
+        check_metric("godspeed_safety", paper)

@@ -9,6 +9,8 @@ measure, "cf." it without claiming to follow it."""
 
 from __future__ import annotations
 
+from haven_scenarios.record.hesitation import MIN_S, SLOW_FRACTION
+
 # Hall (1966), The Hidden Dimension: intimate to 18 in, personal to 4 ft, social to 12 ft; the same
 # radii as hunav_metrics.indicator_function (which applies them to surface distances).
 ZONES = {"intimate": 0.45, "personal": 1.2, "social": 3.6}
@@ -174,7 +176,7 @@ METRICS: tuple[Row, ...] = (
     ),
     (
         "path_efficiency",
-        "",
+        "ratio",
         "planned length / driven length, summed over the goals the robot was given (1 = as planned)",
         cf(SEAN + " path efficiency (geodesic from the start)"),
         f"{CODE}:_navigation",
@@ -233,26 +235,32 @@ METRICS: tuple[Row, ...] = (
         "haven_scenarios/record/contacts.py:attribute",
     ),
     ("wall_contacts", "episodes", "robot-wall contact episodes", OURS, f"{CODE}:_contacts"),
-    ("waits", "", "times the robot waited for a person (waiting events)", OURS, f"{CODE}:_navigation"),
+    ("waits", "count", "times the robot waited for a person (waiting events)", OURS, f"{CODE}:_navigation"),
     ("wait_time_s", "s", "time spent waiting (waiting until resumed, a new plan or a detour)", OURS, f"{CODE}:_navigation"),
-    ("replans", "", "detours around a person (replanned events)", OURS, f"{CODE}:_navigation"),
-    ("reverts", "", "returns to the original path (reverted events)", OURS, f"{CODE}:_navigation"),
-    ("plans_refused", "", "goals the planner refused", OURS, f"{CODE}:_navigation"),
+    ("replans", "count", "detours around a person (replanned events)", OURS, f"{CODE}:_navigation"),
+    ("reverts", "count", "returns to the original path (reverted events)", OURS, f"{CODE}:_navigation"),
+    ("plans_refused", "count", "goals the planner refused", OURS, f"{CODE}:_navigation"),
     ("battery_used", "charge", "sum of the battery level's decreases (1 = a full charge)", OURS, f"{CODE}:_mission"),
     ("battery_final", "charge", "battery level at trial_end (1 = full)", OURS, f"{CODE}:_mission"),
-    ("charge_trips", "", "times the mission sent the robot to charge", OURS, f"{CODE}:_mission"),
-    ("gems_robot", "", "gems the robot collected", OURS, f"{CODE}:_mission"),
-    ("gems_human", "", "gems the people collected", OURS, f"{CODE}:_mission"),
+    ("charge_trips", "count", "times the mission sent the robot to charge", OURS, f"{CODE}:_mission"),
+    ("gems_robot", "count", "gems the robot collected", OURS, f"{CODE}:_mission"),
+    ("gems_human", "count", "gems the people collected", OURS, f"{CODE}:_mission"),
     ("robot_gem_order", "", "the robot's gems in the order collected", OURS, f"{CODE}:_mission"),
     ("path_projection_shown_s", "s", "time the projected path was on show", OURS, f"{CODE}:_exposure"),
     ("turn_signal_shown_s", "s", "time a turn signal was lit", OURS, f"{CODE}:_exposure"),
     ("thought_bubble_shown_s", "s", "time the thought bubble was on show", OURS, f"{CODE}:_exposure"),
     ("battery_indicator_shown_s", "s", "time the battery gauge was on show", OURS, f"{CODE}:_exposure"),
-    ("turns", "", "turns of the robot (|w| rising above 0.3 rad/s)", OURS, f"{CODE}:signal_lead_times"),
-    ("turns_signalled", "", "turns the signal on that side announced", OURS, f"{CODE}:signal_lead_times"),
+    ("turns", "count", "turns of the robot (|w| rising above 0.3 rad/s)", OURS, f"{CODE}:signal_lead_times"),
+    ("turns_signalled", "count", "turns the signal on that side announced", OURS, f"{CODE}:signal_lead_times"),
     ("turn_signal_lead_s_mean", "s", "mean time the matching signal had been lit when a turn began (0 if not)", OURS, f"{CODE}:signal_lead_times"),
-    ("passes", "", "re-plans around a person on the path (the paper's Figure 3)", OURS, f"{CODE}:_passes"),
-    ("passes_signalled", "", "passes whose side's turn signal was lit before the robot began to turn that way", OURS, f"{CODE}:pass_signal_leads"),
+    ("passes", "count", "re-plans around a person on the path (the paper's Figure 3)", OURS, f"{CODE}:_passes"),
+    (
+        "passes_signalled",
+        "count",
+        "passes whose side's turn signal was lit before the robot began to turn that way",
+        OURS,
+        f"{CODE}:pass_signal_leads",
+    ),
     ("pass_signal_lead_s_median", "s", "median time that signal had been lit when the curve began (0 if not)", OURS, f"{CODE}:pass_signal_leads"),
     ("condition_segments", "", "metrics.json only: per stretch of one condition, its start, end and cue exposure", OURS, f"{CODE}:_cues"),
     (
@@ -288,8 +296,8 @@ METRICS: tuple[Row, ...] = (
     ),
     (
         "<h>_hesitations",
-        "",
-        "times the person, walking their task, went slower than half their own walking speed for 0.5 s or more",
+        "count",
+        f"times the person, walking their task, went slower than {SLOW_FRACTION:g} of their own walking speed for {MIN_S:g} s or more",
         OURS,
         "haven_scenarios/record/hesitation.py:hesitations",
     ),
@@ -301,7 +309,7 @@ METRICS: tuple[Row, ...] = (
         OURS,
         f"{CODE}:_detour",
     ),
-    ("<h>_gems", "", "gems the person collected", OURS, f"{CODE}:_person"),
+    ("<h>_gems", "count", "gems the person collected", OURS, f"{CODE}:_person"),
     ("<h>_min_centre_distance_m", "m", "closest approach of the robot to this person, centre to centre", OURS, f"{CODE}:_person"),
     (
         "<h>_contacts",
@@ -317,7 +325,13 @@ METRICS: tuple[Row, ...] = (
         cf(HALL),
         f"{CODE}:_person",
     ),
-    ("<h>_<zone>_centre_intrusions", "", "times the robot's centre entered the zone's radius of this person's centre", cf(HALL), f"{CODE}:_person"),
+    (
+        "<h>_<zone>_centre_intrusions",
+        "count",
+        "times the robot's centre entered the zone's radius of this person's centre",
+        cf(HALL),
+        f"{CODE}:_person",
+    ),
     (
         "<h>_<zone>_centre_band_s",
         "s",

@@ -18,7 +18,6 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections import defaultdict
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from typing import Any
@@ -147,7 +146,9 @@ def fit(obs: Sequence[Observation], conditions: Sequence[str], reference: str) -
         notes.append("singular fit: no variance left, the fixed effects give every value exactly (deterministic data): p values mean nothing")
     elif singular:
         notes.append("singular fit: participant variance 0 (under 1 % of the residual: no spread between participants to model)")
-    notes += [f"statsmodels: {s}" for s in said if not (singular and "boundary" in s)]
+    # (statsmodels tries its optimizers in turn: a warning from one that failed may precede a converged fit)
+    said_by = "statsmodels, on the way to a converged fit" if result.converged else "statsmodels, not converged"
+    notes += [f"{said_by}: {s}" for s in said if not (singular and "boundary" in s)]
     return replace(
         base,
         terms=terms,
@@ -194,10 +195,10 @@ def _significant(v: float | None) -> float | None:
     return float(f"{v:.4g}") if v is not None and math.isfinite(v) else None
 
 
-def singular_count(rows: Sequence[dict[str, Any]]) -> tuple[int, int]:
-    """(singular fits, fits) among model_rows' models."""
-    fits: dict[tuple[str, str, str], bool] = defaultdict(bool)
+def fit_counts(rows: Sequence[dict[str, Any]]) -> tuple[int, int, int]:
+    """(singular fits, fits that did not converge, fits) among model_rows' models."""
+    fits: dict[tuple[str, str, str], tuple[bool, bool]] = {}
     for r in rows:
         if r["term"]:
-            fits[(r["scenario"], r["measure"], r["human"])] = bool(r["singular"])
-    return sum(fits.values()), len(fits)
+            fits[(r["scenario"], r["measure"], r["human"])] = (bool(r["singular"]), not r["converged"])
+    return sum(s for s, _ in fits.values()), sum(u for _, u in fits.values()), len(fits)

@@ -74,6 +74,12 @@ class Cell:
     pool_size: int
     pool_effect: float  # the pool's own C - R difference, before the shift
 
+    def thin(self) -> list[tuple[Order, int, int]]:
+        """The orders more slots need than the pool has distinct participants for: (order, slots,
+        pool participants). Their replicates repeat people, so they vary less than real studies."""
+        needed = {o: self.slots.count(o) for o in set(self.slots)}
+        return [(o, n, len(self.pool[o])) for o, n in sorted(needed.items()) if len(self.pool[o]) < n]
+
     def shifted(self, trials: Sequence[Observation], slot: int, effect: float) -> list[Observation]:
         """A drawn participant's trials as participant `s<slot>`, C shifted so the pool's C - R difference is `effect`."""
         c, shift = self.question.condition, effect - self.pool_effect

@@ -16,6 +16,7 @@ from typing import Any, TextIO
 
 from tqdm import tqdm
 
+from haven_scenarios.record.metric_table import rows as metric_rows
 from haven_scenarios.record.report import write_table
 from haven_scenarios.run.grid import TrialSpec
 from haven_scenarios.run.suite import SuiteConfig
@@ -104,7 +105,18 @@ def summary(rows: Sequence[dict[str, Any]]) -> str:
     contacts = sum(r["human_contacts"] for r in rows)
     distances = [r["min_human_centre_distance_m"] for r in rows if r["min_human_centre_distance_m"] is not None]
     closest = f"closest approach {min(distances):.2f} m (the least of any trial)" if distances else "no person in any trial"
-    return f"{done}/{n} completed, {finish}, {contacts} human contact(s), {closest}"
+    return f"{done}/{n} completed, {finish}, {contacts} human contact(s), {closest}{_people(rows)}"
+
+
+def _people(rows: Sequence[dict[str, Any]]) -> str:
+    """The people's own walk, averaged over the trials and their people: time to finish, path length, hesitations."""
+    trial_level = {m[0] for m in metric_rows()}  # (robot_path_length_m, hunav_path_length_m, ...: not a person's)
+    said = []
+    for suffix, label, unit in (("_time_to_finish_s", "finish in", " s"), ("_path_length_m", "walk", " m"), ("_hesitations", "hesitate", "x")):
+        values = [v for r in rows for k, v in r.items() if k.endswith(suffix) and k not in trial_level and isinstance(v, (int, float))]
+        if values:
+            said.append(f"{label} {sum(values) / len(values):.1f}{unit}")
+    return f"; people {', '.join(said)} on average" if said else ""
 
 
 def group_summaries(specs: Sequence[TrialSpec], rows: Sequence[Row]) -> list[str]:

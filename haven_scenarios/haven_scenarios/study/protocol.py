@@ -388,10 +388,13 @@ class _StudyParser:
         return text
 
     def instruments(self, value: list[Any], key: str, special: tuple[str, ...]) -> tuple[Any, ...]:
+        if key != "after_study" and PREFERENCE in value:
+            raise self.fail(f"{key}[{value.index(PREFERENCE)}]", f"{PREFERENCE} ranks the conditions after the last trial: list it in after_study")
         try:
             resolve([v for v in value if v not in special], key)
         except ValueError as e:
-            raise StudyError(f"{file_label(self.source)}: {e}") from None
+            also = f" (and here {', '.join(special)})" if special else ""
+            raise StudyError(f"{file_label(self.source)}: {e}{also}") from None
         if len({v if isinstance(v, str) else str(v.get("name")) for v in value}) != len(value):
             raise self.fail(key, "a questionnaire is named twice")
         return tuple(value)

@@ -108,6 +108,8 @@ def design_note(study: Study) -> str:
     if b > 1 and c > 1:
         text += f". Combined: {n} sequences (the least common multiple of {b} and {c}): every {n} participants use each block order "
         text += "and each condition order equally often"
+        if n < b * c:
+            text += f" (the two are paired, not crossed: every block order meets every condition order only in a multiple of {b * c})"
     if n > 1:
         text += f"; {p} participant(s) " + ("complete it" if p % n == 0 else f"do not complete it: use a multiple of {n}")
     if study.assignment == "random":

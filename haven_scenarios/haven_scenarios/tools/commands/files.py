@@ -15,6 +15,7 @@ from haven_scenarios.run.suite import checked_suite_config
 from haven_scenarios.study.protocol import StudyError, StudyFile, parse_study
 from haven_scenarios.study.questionnaires import LikertFile
 from haven_scenarios.study.scenario import ScenarioError, ScenarioFile, parse_scenario
+from haven_scenarios.study.schedule import practice_note
 from haven_scenarios.tools.commands.common import fail
 from haven_sim.common import plugins
 from haven_sim.common.params import ParamsError, params_of
@@ -81,7 +82,11 @@ def describe(path: Path) -> str:
     parameter file `ros__parameters` under each node."""
     data = read_yaml(path, "file")
     if isinstance(data, dict) and ("scenarios" in data or "conditions" in data):
-        return f"study {parse_study(data, str(path)).name}"
+        study = parse_study(data, str(path))
+        carry = practice_note(study)
+        if carry:
+            print(f"haven: warning: {file_label(path)}: {carry}", file=sys.stderr)
+        return f"study {study.name}"
     if isinstance(data, dict) and ("kind" in data or "world" in data):
         name = parse_scenario(data, str(path)).name
         try:  # (the rule `haven run` applies before it makes a session folder of the name)

@@ -10,11 +10,13 @@ studies of each participant count are drawn from it and fitted (record/power.py 
 from __future__ import annotations
 
 import argparse
+import difflib
 import math
 import sys
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from haven_scenarios.record import metric_table
 from haven_scenarios.record.mixed_model import observations
 from haven_scenarios.record.power import POWER, Cell, Order, Power, Question, cell, draw, estimate, table
 from haven_scenarios.record.report import write_table
@@ -22,8 +24,9 @@ from haven_scenarios.record.study_table import TrialResults, trial_results
 from haven_scenarios.run.sweep import LOCAL, cores, farm
 from haven_scenarios.study.progress import attempts, bind, progress, trial_dir
 from haven_scenarios.study.protocol import Study, StudyError, load_study
+from haven_scenarios.study.questionnaires import codebook_rows
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
-from haven_scenarios.study.schedule import PlannedTrial, participant_schedule
+from haven_scenarios.study.schedule import PlannedTrial, participant_schedule, sequence_count
 from haven_scenarios.tools.commands.common import bounded_int, existing_file, fail
 
 DEFAULT_COUNTS = "8,12,16,24"
@@ -169,12 +172,27 @@ def _per_person(results: list[TrialResults], metric: str) -> bool:
     return False not in kinds  # (a trial-level measure wins over a per-person one of the same name)
 
 
+def check_metric(metric: str, study: Study) -> None:
+    """ValueError (one line) for a --metric no simulated trial has, before any trial is simulated."""
+    names = {r[0] for r in metric_table.rows()}
+    if metric in names or metric_table.pattern(f"h_{metric}", ["h"]) in names:
+        return
+    scores = {r[0] for q in study.resolved_questionnaires() for r in codebook_rows(q)}
+    if metric in scores:
+        raise ValueError(f"--metric: {metric} is a questionnaire score: simulated participants answer no questionnaire")
+    known = sorted({n.removeprefix("<h>_") for n in names if "<" not in n.removeprefix("<h>_")})
+    close = difflib.get_close_matches(metric, known, n=1)
+    hint = f"did you mean {close[0]}?" if close else "the measures are the long table's (docs/reference/sessions.md)"
+    raise ValueError(f"--metric: no measure {metric!r}: {hint}")
+
+
 def power_cmd(args: argparse.Namespace) -> int:
     from haven_scenarios.tools.commands.study import study_dir
 
     try:
         study = load_study(args.study)
         condition, reference = _question(args, study)
+        check_metric(args.metric, study)
         ns = counts(args.participants)
         size = args.pool or max(ns)
         out = args.out if args.out is not None else study_dir(args.dir, study) / "power"
@@ -199,10 +217,15 @@ def power_cmd(args: argparse.Namespace) -> int:
     return _say(study, q, estimated, out, size, ran)
 
 
+def file_stem(q: Question) -> str:
+    """The output's name: the metric, the contrast and the effect (another question, another file)."""
+    return f"power_{q.metric}_{q.condition}-{q.reference}_E{q.effect:g}"
+
+
 def _say(study: Study, q: Question, estimated: list[Power], out: Path, size: int, ran: int) -> int:
     from haven_scenarios.tools.commands.study import table as text
 
-    name = f"power_{q.metric}"
+    name = file_stem(q)
     write_table(out / f"{name}.csv", [r.row() for r in estimated], POWER)
     title = f"{study.name}: {q.metric}, {q.condition} - {q.reference} = {q.effect:g}, alpha {q.alpha:g}, {q.reps} simulated studies per count"
     draw(estimated, out / f"{name}.png", title.replace(", alpha", "\nalpha") + f", a pool of {size}")
@@ -210,12 +233,24 @@ def _say(study: Study, q: Question, estimated: list[Power], out: Path, size: int
     print(f"haven study power: {title}")
     print(f"pool: {size} simulated participant(s) ({ran} trial(s) simulated now) in {out / 'pool'}")
     print(f"the pool's own {q.condition} - {q.reference} difference: {shifts}")
-    print(f"each study: participants drawn from the pool with replacement; {q.condition} trials shifted so the pool's difference is {q.effect:g}")
+    print(
+        f"each study: participants drawn from the pool with replacement; the trials in condition {q.condition} shifted"
+        f" so the pool's {q.condition} - {q.reference} difference is {q.effect:g}"
+    )
     print(text(table(estimated)))
     singular = sum(r.singular for r in estimated)
     if singular:
         print(f"note: {singular} fit(s) singular (participant variance 0): their p values ignore the pairing")
     print(f"at E=0: the same studies with the pool's difference set to 0, the share with p < {q.alpha:g} (a calibrated test: about {q.alpha:g})")
+    rows = sequence_count(study)
+    partial = sorted({r.cell.participants for r in estimated if r.cell.participants % rows})
+    if partial:
+        listed = ", ".join(map(str, partial))
+        print(f"note: {listed} participant(s) do not complete the study's {rows} sequences: those studies are unbalanced, as real ones would be")
+    thin = sorted({(r.cell.scenario, r.cell.participants) for r in estimated if r.cell.thin()})
+    if thin:
+        cells = ", ".join(f"{s} at {n}" for s, n in thin)
+        print(f"warning: {cells}: an order needs more participants than the pool has who ran it, so studies repeat people: use a larger --pool")
     loose = sorted({r.cell.scenario for r in estimated if r.anticonservative()})
     if loose:
         print(

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from haven_scenarios.record import codebook
-from haven_scenarios.record.mixed_model import MIXED, model_rows, singular_count
+from haven_scenarios.record.mixed_model import MIXED, fit_counts, model_rows
 from haven_scenarios.record.order_table import ORDER_EFFECTS, order_rows
 from haven_scenarios.record.participants import PARTICIPANTS_CSV, summary_line, write_participants
 from haven_scenarios.record.report import write_table
@@ -123,7 +123,7 @@ def plan_cmd(args: argparse.Namespace) -> int:
         print(f"... and {len(shown) - SHOWN_SEQUENCES} more sequences (the schedule below has each participant's)")
     carry = practice_note(study)
     if carry:
-        print(f"note: {carry}")
+        print(f"warning: {carry}")
     print(f"seeds: {study.seed_policy}, base {study.seed_base}; questionnaires after each trial: {_questionnaires(study)}")
     if inst := study.instruments():
         before, after = (", ".join(q.name for q in qs) or "none" for qs in (inst.first, inst.after))
@@ -195,7 +195,7 @@ class Report:
     picture: bool
     study_changed: bool  # the study file changed since the first run
     participants: str = ""  # participants.csv's summary line ("" when the study asks no instruments)
-    models: tuple[int, int] = (0, 0)  # mixed models fitted as singular, of all fitted (mixed_models.csv)
+    models: tuple[int, int, int] = (0, 0, 0)  # mixed models singular, not converged, fitted (mixed_models.csv)
 
 
 def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
@@ -225,7 +225,7 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         raise ValueError(f"--out {out}: cannot write the report: {e.strerror or e}") from None
     old = stored(root)
     changed = old is not None and bool(differences(old["study"], study.describe()))
-    return Report(out, len(results), len(done), _counts(results), bool(picture), changed, said, singular_count(models))
+    return Report(out, len(results), len(done), _counts(results), bool(picture), changed, said, fit_counts(models))
 
 
 def report_cmd(args: argparse.Namespace) -> int:
@@ -241,9 +241,10 @@ def report_cmd(args: argparse.Namespace) -> int:
     print(f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), study_wide.csv, summary.csv, order_effects.csv{picture}")
     if report.participants:
         print(f"haven: wrote {out / PARTICIPANTS_CSV}: {report.participants}")
-    singular, fitted = report.models
+    singular, unconverged, fitted = report.models
     model = "value ~ condition (+ position) + (1 | participant)"
-    print(f"haven: mixed models ({model}) per scenario and measure in mixed_models.csv: {fitted} fitted, {singular} singular")
+    counted = f"{fitted} fitted, {singular} singular, {unconverged} not converged"
+    print(f"haven: mixed models ({model}) per scenario and measure in mixed_models.csv: {counted}")
     if report.study_changed:
         print(f"haven: note: the study file changed since the first run in {root}")
     return 0

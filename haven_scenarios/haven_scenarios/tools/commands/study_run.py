@@ -243,6 +243,9 @@ def _run_trials(args: StudyRun, study: Study, root: Path, trials: list[PlannedTr
         f"haven study: {study.name}, participant {args.participant}: {done}/{len(trials)} trials done; folder {root / args.participant}", flush=True
     )
     person = args.web or args.teleop is not None
+    asked = [q.name for q in (*study.resolved_questionnaires(), *study.instruments().first, *study.instruments().after)]
+    if args.batch and todo and asked:
+        print(f"haven study: --batch: simulated participants answer nothing ({', '.join(asked)} not asked; nothing is invented)", flush=True)
     for p in todo:
         code = _one(args, study, p, len(trials), root, questionnaires, person)
         if code:
