@@ -28,6 +28,7 @@ setup(
         "foxglove-sdk",
         "tqdm",
         "pydantic>=2",
+        "scipy",
         "statsmodels",
     ],
     # `haven batch --cluster`: sweeps on a Dask cluster (a LocalCluster or a lab's scheduler)

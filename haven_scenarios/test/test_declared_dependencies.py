@@ -28,6 +28,7 @@ UPSTREAM_KEYS = {
     "python3-tqdm": "tqdm",
     "python3-pydantic": "pydantic",
     "python3-rosbags-pip": "rosbags",
+    "python3-scipy": "scipy",
 }
 
 
