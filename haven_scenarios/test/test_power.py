@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from haven_scenarios.record.mixed_model import Observation
-from haven_scenarios.record.power import Question, cell, estimate, pool_effect, wilson
+from haven_scenarios.record.power import Question, cell, draw, estimate, pool_effect, wilson
 from haven_scenarios.study.schedule import williams
 
 CONDITIONS = ("none", "path_projection", "turn_signals", "all")
@@ -127,3 +127,10 @@ def test_a_metric_is_checked_before_any_trial_is_simulated() -> None:
         check_metric("time_to_finsh_s", paper)
     with pytest.raises(ValueError, match="^--metric: godspeed_safety is a questionnaire score: simulated participants answer no questionnaire$"):
         check_metric("godspeed_safety", paper)
+
+
+def test_a_power_of_one_is_drawn(tmp_path: Path) -> None:
+    # (60 replicates all detecting: the Wilson interval's top is 1 less a rounding error, below the power)
+    sure = estimate(cell(question(5.0, reps=60), "s", 8, slots(8), pool(16, effect=0.0)))
+    assert sure.power == 1.0
+    assert draw([sure], tmp_path / "p.png", "t").stat().st_size > 5_000
