@@ -8,7 +8,7 @@ setup(
     name=package_name,
     version="0.1.0",
     packages=find_packages(exclude=["test"]),
-    package_data={package_name: ["worlds/*.yaml", "config/*.yaml", "config/*.xml", "py.typed"]},
+    package_data={package_name: ["worlds/*.yaml", "config/*.yaml", "config/*.xml", "robots/catalogue/*.yaml", "robots/catalogue/*.glb", "py.typed"]},
     data_files=[
         ("share/ament_index/resource_index/packages", [f"resource/{package_name}"]),
         (f"share/{package_name}", ["package.xml"]),
@@ -36,5 +36,7 @@ setup(
         ],
         # HAVEN's path planner registers as a lab's does (haven_sim/nav/planner_kind.py).
         "haven.planners": ["visibility = haven_sim.nav.planner:GridPlanner"],
+        # HAVEN's robot catalogue registers as a lab's robot does (haven_sim/robots/robot_kind.py): each a robot file.
+        "haven.robots": [f"{name} = haven_sim.robots.catalogue:{name}" for name in ("turtlebot2",)],
     },
 )

@@ -8,8 +8,9 @@ import numpy as np
 from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, make_walker
 from haven_scenarios.study.perception import Sight, perceive
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
-from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.nav.planner import GridPlanner
+from haven_sim.robots.fields import DEFAULT as ROBOT_BODY
 from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.simulation import Simulation
 from haven_sim.sim.world_file import parse_world
@@ -45,7 +46,7 @@ def test_free_walker_reaches_its_desired_speed():
 
 def test_keeps_right_of_an_oncoming_robot_and_never_closes_in_on_it():
     def robot(t):
-        return [robot_body(6.0 - 0.4 * t, 0.0, -0.4, 0.0)]
+        return [robot_body(6.0 - 0.4 * t, 0.0, -0.4, 0.0, ROBOT_BODY.radius_m)]
 
     track = glide(SocialForce(open_space), (0.0, 0.0), (1.0, 0.0), robot, 8.0)
     robot_x = [6.0 - 0.4 * (k + 1) * 0.1 for k in range(len(track))]
@@ -57,7 +58,7 @@ def test_keeps_right_of_an_oncoming_robot_and_never_closes_in_on_it():
 
 def test_walking_straight_at_a_standing_robot_stops_short_of_it():
     force = SocialForce(open_space)
-    track = glide(force, (0.0, 0.0), (1.0, 0.0), lambda t: [robot_body(3.0, 0.0, 0.0, 0.0)], 10.0)
+    track = glide(force, (0.0, 0.0), (1.0, 0.0), lambda t: [robot_body(3.0, 0.0, 0.0, 0.0, ROBOT_BODY.radius_m)], 10.0)
     gap = min(math.hypot(x - 3.0, y) for x, y in track) - ROBOT_BODY.radius_m - HUMAN_BODY.radius_m
     assert gap >= force.p.personal_m - 0.05
 

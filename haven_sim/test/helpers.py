@@ -61,3 +61,12 @@ def drive_closed_loop(sim: Any, follower: Any, seconds: float, navigator: Any = 
         if follower.status is Status.ARRIVED:
             break
     return events
+
+
+def robot_with(**limits: float):
+    """The default robot (TurtleBot2) with other velocity limits."""
+    from dataclasses import replace
+
+    from haven_sim.robots.fields import DEFAULT
+
+    return replace(DEFAULT, limits=replace(DEFAULT.limits, **limits))

@@ -1,12 +1,11 @@
 import math
 
 import pytest
-from helpers import box_world
+from helpers import box_world, robot_with
 
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Twist2D
 from haven_sim.sim.battery import Battery, BatteryParams, PowerStatus
-from haven_sim.sim.commands import VelocityLimits
 from haven_sim.sim.simulation import SimConfig, Simulation
 
 
@@ -54,8 +53,8 @@ def test_invalid_params_are_refused(bad, said):
 
 
 def test_empty_battery_stops_the_robot_in_the_simulation():
-    fast = VelocityLimits(max_linear_accel_mps2=1e6, max_angular_accel_rps2=1e6)
-    sim = Simulation(box_world(20.0), SimConfig(robot_limits=fast, battery=BatteryParams(capacity_m=2.0)))
+    fast = robot_with(max_linear_accel_mps2=1e6, max_angular_accel_rps2=1e6)
+    sim = Simulation(box_world(20.0), SimConfig(robot=fast, battery=BatteryParams(capacity_m=2.0)))
     for _ in range(300):
         sim.command_robot(Twist2D(0.5, 0, 0))
         sim.step()

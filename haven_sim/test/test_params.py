@@ -64,8 +64,10 @@ def test_wrong_types_are_refused_in_one_line(name, value, expected):
 def test_validation_of_the_core_configs_names_the_parameter():
     with pytest.raises(ParamsError, match="rate_hz must be positive"):
         build(ControllerConfig, {"rate_hz": 0.0})
-    with pytest.raises(ParamsError, match="battery_capacity_m must be positive"):
-        build(SimulatorConfig, {"battery_capacity_m": -1.0})
+    with pytest.raises(ParamsError, match="battery_pack_m must not be negative"):
+        build(SimulatorConfig, {"battery_pack_m": -1.0})
+    with pytest.raises(ParamsError, match="unknown robot 'no_such_bot'"):
+        build(SimulatorConfig, {"robot": "no_such_bot"})
 
 
 def test_shared_motion_style_has_the_same_names_in_planner_and_controller():

@@ -3,15 +3,14 @@
 import math
 
 import pytest
-from helpers import box_world
+from helpers import box_world, robot_with
 
-from haven_sim.common.bodies import ROBOT_BODY
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D, Twist2D
-from haven_sim.sim.commands import VelocityLimits
+from haven_sim.robots.fields import DEFAULT as ROBOT_BODY
 from haven_sim.sim.simulation import SimConfig, Simulation
 
-INSTANT = VelocityLimits(max_linear_accel_mps2=1e6, max_angular_accel_rps2=1e6)
+INSTANT = robot_with(max_linear_accel_mps2=1e6, max_angular_accel_rps2=1e6)
 
 
 def drive(sim, cmd, seconds, human=None, human_cmd=None):
@@ -26,7 +25,7 @@ def drive(sim, cmd, seconds, human=None, human_cmd=None):
 def test_motion_matches_unicycle_model(v, w):
     """Once the motors have spun up (bounded force and torque take a few steps), the body follows
     the unicycle x' = v cos(th), y' = v sin(th), th' = w from wherever it is."""
-    sim = Simulation(box_world(20.0), SimConfig(robot_limits=INSTANT))
+    sim = Simulation(box_world(20.0), SimConfig(robot=INSTANT))
     drive(sim, Twist2D(v, 0, w), 0.5)
     x0, y0, th0 = sim.robot_pose()
     t = 3.0
@@ -51,7 +50,7 @@ def test_acceleration_is_limited():
 
 
 def test_wall_stops_robot_without_tunnelling_and_reports_contact():
-    sim = Simulation(box_world(4.0, thickness=0.1), SimConfig(robot_limits=INSTANT))
+    sim = Simulation(box_world(4.0, thickness=0.1), SimConfig(robot=INSTANT))
     drive(sim, Twist2D(0.7, 0, 0), 8.0)
     x = sim.robot_pose().x
     limit = 4.0 - 0.05 - ROBOT_BODY.radius_m
@@ -64,7 +63,7 @@ def test_wall_stops_robot_without_tunnelling_and_reports_contact():
 
 
 def test_watchdog_stops_robot_half_a_second_after_last_command():
-    sim = Simulation(box_world(20.0), SimConfig(robot_limits=INSTANT))
+    sim = Simulation(box_world(20.0), SimConfig(robot=INSTANT))
     drive(sim, Twist2D(0.5, 0, 0), 1.0)
     x_last_cmd = sim.robot_pose().x
     sim.run(0.48)
@@ -117,7 +116,7 @@ def test_unknown_human_is_refused():
 def test_removed_obstruction_lets_robot_pass():
     wall = {"id": "gate", "segment": [[7.0, 0.0], [7.0, 10.0]], "thickness": 0.1}
     world = box_world(10.0, obstructions=[wall])
-    sim = Simulation(world, SimConfig(robot_limits=INSTANT))
+    sim = Simulation(world, SimConfig(robot=INSTANT))
     drive(sim, Twist2D(0.7, 0, 0), 5.0)
     assert sim.robot_pose().x < 7.0
     assert sim.scan()[180] == pytest.approx(7.0 - 0.05 - sim.robot_pose().x, abs=1e-6)

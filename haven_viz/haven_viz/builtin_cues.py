@@ -173,9 +173,10 @@ class TurnSignals:
         robot = ctx.robot
         # An arrow beside the robot pointing outward, like HAVEN's arrows on the robot's sides.
         out_yaw = robot.yaw + side * math.pi / 2.0
-        x, y = robot.x + 0.25 * math.cos(out_yaw), robot.y + 0.25 * math.sin(out_yaw)
+        m = ctx.mounts
+        x, y = robot.x + m.signal_offset_m * math.cos(out_yaw), robot.y + m.signal_offset_m * math.sin(out_yaw)
         color = SCHEMES[self.params.scheme]
-        arrow = MarkerSpec(SIGNAL_NS, 0 if side > 0 else 1, Shape.ARROW, (x, y, ctx.robot_height_m + 0.05), out_yaw, (0.3, 0.08, 0.08), color)
+        arrow = MarkerSpec(SIGNAL_NS, 0 if side > 0 else 1, Shape.ARROW, (x, y, ctx.robot_z_m + m.signal_height_m), out_yaw, (0.3, 0.08, 0.08), color)
         return Shown(side, [arrow] if markers else [])
 
 
@@ -197,7 +198,7 @@ class ThoughtBubble:
             return None
         if not markers:
             return Shown(ctx.thought)
-        z = ctx.robot_height_m + 0.6
+        z = ctx.robot_z_m + ctx.mounts.bubble_height_m
         text = ctx.thought
         out = [MarkerSpec(THOUGHT_NS, 0, Shape.TEXT_VIEW_FACING, (robot.x, robot.y, z), 0.0, (0.0, 0.0, 0.15), (0.05, 0.05, 0.05, 1.0), text)]
         if p.thought_backdrop:
@@ -220,7 +221,7 @@ class BatteryIndicator:
         level = min(1.0, max(0.0, ctx.battery_level))
         if not markers:
             return Shown(level)
-        robot, z = ctx.robot, ctx.robot_height_m + 0.25
+        robot, z = ctx.robot, ctx.robot_z_m + ctx.mounts.gauge_height_m
         full, thick = 0.4, 0.08
         color = battery_color(level)
         # A bar along the map's x axis (a cube cannot face the viewer the way HAVEN's sprite did),

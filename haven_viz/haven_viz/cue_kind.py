@@ -16,7 +16,8 @@ and only while the study condition has it on, what it shows now::
             ...                     # None: nothing to show now
 
 `CueContext` holds what every cue may draw on: the robot's pose, its path and how far along it is
-(`TrackedPath`), the people, the battery level, the thought text and the time. `Shown` says what
+(`TrackedPath`), the people, the battery level, the thought text, the time, and where on this
+robot its own cues sit (`mounts`, from its robot file, above `robot_z_m`). `Shown` says what
 the cue shows: its value (JSON, recorded on /haven/cue_state), its markers (in frame `map`, drawn by
 every viewer and the participant page without page code), and for the simulated participants where
 it shows the robot's way ahead (`way`, nearest the robot first) and whether it is drawn on the robot
@@ -34,6 +35,8 @@ from haven_sim.common.geometry import FloatArray, Point, Pose2D
 from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.common.polyline import Polyline
 from haven_sim.nav.motion_style import MotionStyle
+from haven_sim.robots.description import CueMounts
+from haven_sim.robots.fields import DEFAULT
 from haven_viz.markers import MarkerSpec
 
 STYLE = MotionStyle()  # how a path reads: HAVEN's turning rule (the viz node takes no motion-style parameters)
@@ -112,7 +115,9 @@ class CueContext:
     battery_level: float | None = None
     thought: str = ""
     now: float | None = None  # sim time (None: a single picture, no timing)
-    robot_height_m: float = 0.0
+    robot_height_m: float = 0.0  # the robot's body, from its robot file
+    mounts: CueMounts = DEFAULT.cues  # where its own cues sit (robot file: cues), above ...
+    robot_z_m: float = 0.0  # ... its base frame, this high above the floor (an aerial robot's altitude)
 
 
 @dataclass(frozen=True)

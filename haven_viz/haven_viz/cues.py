@@ -18,9 +18,10 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from haven_sim.common import plugins
-from haven_sim.common.bodies import ROBOT_BODY
 from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import param
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.fields import DEFAULT
 from haven_viz.builtin_cues import (
     BATTERY_NS,
     PATH_NS,
@@ -171,8 +172,9 @@ class ArCues:
     A cue whose code raises (a lab's, being written) is in `failed` and shows nothing from then
     on; the others and the trial go on, and the viz says so (a `cue_failed` event)."""
 
-    def __init__(self, params: CueParams | None = None, names: Sequence[str] | None = None) -> None:
+    def __init__(self, params: CueParams | None = None, names: Sequence[str] | None = None, robot: RobotDescription = DEFAULT) -> None:
         self.params = params or CueParams()
+        self.robot = robot
         self.failed: dict[str, str] = {}  # cue -> its error, for a cue whose code raised (it shows nothing from then on)
         self.cues: dict[str, Cue] = {}
         for n in CUES if names is None else names:
@@ -200,7 +202,7 @@ class ArCues:
         what they show only, no markers (no one reads them in batch mode)."""
         toggles = Toggles() if toggles is None else toggles
         self.path.advance(robot)
-        ctx = CueContext(robot, self.path, humans, battery_level, thought, now, ROBOT_BODY.height_m)
+        ctx = CueContext(robot, self.path, humans, battery_level, thought, now, self.robot.height_m, self.robot.cues)
         out: list[MarkerSpec] = []
         values: dict[str, Any] = {}
         ways: dict[str, tuple[tuple[Point, ...], bool]] = {}

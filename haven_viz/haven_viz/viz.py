@@ -19,6 +19,8 @@ from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import HumanPoses, RobotState
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.fields import RobotChoice, from_robot
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.world import World
@@ -29,6 +31,8 @@ from haven_viz.world_markers import body_markers, world_markers
 
 @dataclass(frozen=True)
 class VizConfig:
+    robot: RobotChoice = group(RobotChoice)
+    description: RobotDescription = from_robot()  # where the cues sit on it, how the world markers draw it
     toggles: CueToggles = group(Toggles)
     cues: CueParams = group(CueParams)
     world: str = param("", "world file for the world markers (haven sim passes its world)")
@@ -48,7 +52,7 @@ class VizComponent:
         self.config = config or VizConfig()
         self.world = world
         self.toggles = self.config.toggles
-        self.cues = ArCues(self.config.cues)
+        self.cues = ArCues(self.config.cues, robot=self.config.description)
         self.ar_diff = MarkerDiff()
         self.world_diff = MarkerDiff()
         self.robot: Pose2D | None = None
@@ -161,7 +165,7 @@ class VizComponent:
         if refresh:
             self._last_refresh, self._refresh_now = now, False
         if shown:
-            update = self.ar_diff.update(frame.markers + body_markers(self.robot, self.humans), resend_all=refresh)
+            update = self.ar_diff.update(frame.markers + body_markers(self.robot, self.humans, self.config.description), resend_all=refresh)
             if update:
                 out.append(Message(topics.AR_MARKERS, update, now))
         if frame.state != self.state:  # on change only (latched: a late reader gets the last one)

@@ -6,8 +6,10 @@ from __future__ import annotations
 import math
 from collections.abc import Collection, Mapping, Sequence
 
-from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, polygon_area
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.fields import DEFAULT
 from haven_sim.sim.world import World
 from haven_viz.markers import Color, MarkerSpec, Point3, Shape
 
@@ -93,12 +95,13 @@ def world_markers(world: World, collected: Collection[str] = (), removed: Collec
     return out
 
 
-def body_markers(robot: Pose2D, humans: Mapping[str, Pose2D]) -> list[MarkerSpec]:
-    """The robot (a Kobuki-sized cylinder with a heading arrow) and each human (a tall cylinder)."""
-    r, rh = ROBOT_BODY.radius_m, ROBOT_BODY.height_m
+def body_markers(robot: Pose2D, humans: Mapping[str, Pose2D], description: RobotDescription = DEFAULT, z: float = 0.0) -> list[MarkerSpec]:
+    """The robot (a cylinder of its footprint's size, with a heading arrow; `z` above the floor)
+    and each human (a tall cylinder)."""
+    r, rh = description.radius_m, description.height_m
     out = [
-        MarkerSpec("robot", 0, Shape.CYLINDER, (robot.x, robot.y, rh / 2), robot.yaw, (2 * r, 2 * r, rh), COLORS["robot"]),
-        MarkerSpec("robot", 1, Shape.ARROW, (robot.x, robot.y, rh + 0.02), robot.yaw, (0.25, 0.05, 0.05), (1.0, 1.0, 1.0, 1.0)),
+        MarkerSpec("robot", 0, Shape.CYLINDER, (robot.x, robot.y, z + rh / 2), robot.yaw, (2 * r, 2 * r, rh), COLORS["robot"]),
+        MarkerSpec("robot", 1, Shape.ARROW, (robot.x, robot.y, z + rh + 0.02), robot.yaw, (0.25, 0.05, 0.05), (1.0, 1.0, 1.0, 1.0)),
     ]
     h, hh = HUMAN_BODY.radius_m, HUMAN_BODY.height_m
     for i, (hid, p) in enumerate(humans.items()):

@@ -131,7 +131,7 @@ def _message(topic: str, msg: Any, human_ids: Sequence[str]) -> Message:
     (the header's, or the event's or cue state's)."""
     if topic == topics.ODOM:
         t = msg.twist.twist
-        return Message(topic, RobotState(_pose(msg.pose.pose), Twist2D(t.linear.x, t.linear.y, t.angular.z)), _stamp(msg))
+        return Message(topic, RobotState(_pose(msg.pose.pose), Twist2D(t.linear.x, t.linear.y, t.angular.z), msg.pose.pose.position.z), _stamp(msg))
     if topic == topics.HUMANS:
         return Message(topic, name_humans([_pose(p) for p in msg.poses], human_ids), _stamp(msg))
     if topic == topics.BATTERY:

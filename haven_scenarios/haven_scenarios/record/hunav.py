@@ -29,15 +29,16 @@ publishes it) is the held message's distance from the previous /humans message o
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from haven_scenarios.record.metric_table import HUNAV_METRICS, ZONES
 from haven_scenarios.record.timeline import Recording
-from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import FloatArray
+from haven_sim.robots.fields import DEFAULT
 
 if TYPE_CHECKING:
     from haven_scenarios.record.metrics import TrialData
@@ -59,7 +60,7 @@ class Samples:
     t: FloatArray  # (N,) sample stamps, s since trial_start
     robot: FloatArray  # (N, 5): x, y, yaw, linear_vel, angular_vel (the held /odom)
     people: dict[str, FloatArray]  # id -> (N, 4): x, y, yaw, linear_vel; NaN where the person is absent
-    robot_radius_m: float = ROBOT_BODY.radius_m
+    robot_radius_m: float = DEFAULT.radius_m
     person_radius_m: float = HUMAN_BODY.radius_m
 
 
@@ -246,4 +247,4 @@ def columns(s: Samples) -> dict[str, Any]:
 
 def hunav(d: TrialData) -> dict[str, Any]:
     """The `hunav` metrics plugin: HuNavSim's evaluator on the trial's samples."""
-    return columns(sample(d.rec, d.t0, d.t1))
+    return columns(replace(sample(d.rec, d.t0, d.t1), robot_radius_m=d.robot.radius_m))

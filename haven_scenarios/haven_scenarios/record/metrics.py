@@ -23,10 +23,12 @@ from haven_scenarios.record.timeline import Recording, Timeline
 from haven_scenarios.record.validity import check
 from haven_scenarios.study.participants import HUMAN_PLANNER
 from haven_sim.common import plugins
-from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import FloatArray, wrap_angle
 from haven_sim.nav.planner import GridPlanner, PlanningError
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.fields import DEFAULT
 from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.world import World
 from haven_viz.cues import CUE_CLASSES, CUES
@@ -57,6 +59,7 @@ class TrialData:
     t0: float  # trial_start and trial_end, in the recording's stamps
     t1: float
     world: World | None
+    robot: RobotDescription = DEFAULT  # the robot of the trial (its footprint for distances and contacts)
 
 
 # The groups HAVEN ships (`hunav`: HuNavSim's evaluator), in metrics.json's order; each registered
@@ -77,7 +80,14 @@ def accept_plugin(name: str, value: Any) -> Any:
     return value
 
 
-def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: World | None = None, declared: Declared | None = None) -> dict[str, Any]:
+def compute(
+    rec: Recording,
+    scenario: str = "",
+    end_reason: str = "",
+    world: World | None = None,
+    declared: Declared | None = None,
+    robot: RobotDescription = DEFAULT,
+) -> dict[str, Any]:
     """`declared`: what a recorded run said of itself, for its validity (record/validity.py)."""
     window = rec.window()
     m: dict[str, Any] = {"scenario": scenario, "end_reason": end_reason}
@@ -87,7 +97,7 @@ def compute(rec: Recording, scenario: str = "", end_reason: str = "", world: Wor
     tl = Timeline.of(rec, t0, t1)
     events = sorted((replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp)
     m["duration_s"] = _r(t1 - t0, 2)
-    data = TrialData(tl, events, rec, t0, t1, world)
+    data = TrialData(tl, events, rec, t0, t1, world, robot)
     registered = plugins.registry("metrics")
     for name in (*OURS, *(n for n in registered.names() if n not in OURS)):
         m.update(_one(name, registered.get(name), data, m))
@@ -117,7 +127,7 @@ def navigation(d: TrialData) -> dict[str, Any]:
 
 
 def proximity(d: TrialData) -> dict[str, Any]:
-    return _proximity(d.tl)
+    return _proximity(d.tl, d.robot.radius_m)
 
 
 def contacts(d: TrialData) -> dict[str, Any]:
@@ -216,7 +226,7 @@ def _distances(tl: Timeline) -> dict[str, FloatArray]:
     return {hid: np.hypot(*(xy - tl.robot_xy).T) for hid, xy in tl.humans.items()}
 
 
-def _proximity(tl: Timeline) -> dict[str, Any]:
+def _proximity(tl: Timeline, robot_radius_m: float) -> dict[str, Any]:
     d = _distances(tl)
     if not d:
         return {k: None for k in ("min_human_centre_distance_m", "min_human_surface_distance_m", "avg_closest_human_centre_distance_m")}
@@ -230,7 +240,7 @@ def _proximity(tl: Timeline) -> dict[str, Any]:
     }
     out: dict[str, Any] = {
         "min_human_centre_distance_m": _r(float(np.nanmin(closest))),
-        "min_human_surface_distance_m": _r(float(np.nanmin(closest)) - ROBOT_BODY.radius_m - HUMAN_BODY.radius_m),
+        "min_human_surface_distance_m": _r(float(np.nanmin(closest)) - robot_radius_m - HUMAN_BODY.radius_m),
         "avg_closest_human_centre_distance_m": _r(float(np.nanmean(closest))),
     }
     for name, (lo, hi) in bands.items():

@@ -19,6 +19,7 @@ from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.mux import MuxConfig
 from haven_sim.nav.planning import PlannerConfig
+from haven_sim.robots.fields import RobotChoice
 from haven_sim.runtime.lockstep import LockstepParams
 from haven_sim.sim.simulator import SimulatorConfig
 from haven_viz.cues import CUES
@@ -33,7 +34,12 @@ NODES: tuple[tuple[str, type[Any]], ...] = (
     (nodes.VIZ.name, VizConfig),
     (nodes.SCENARIO.name, ScenarioNodeConfig),
 )
-SHARED = (MotionStyle, LockstepParams, WireParams)  # one section: HAVEN's turning rule, the lockstep switch, the velocity topics' type
+SHARED = (
+    RobotChoice,
+    MotionStyle,
+    LockstepParams,
+    WireParams,
+)  # one section: the robot, HAVEN's turning rule, the lockstep switch, the velocity topics' type
 HEADER = """Parameters of every HAVEN node, with their defaults (pass with --params-file to `haven sim`,
 `haven run` or `haven batch`, or to any node). Generated from the config dataclasses by
 `python -m haven_scenarios.run.suite`: edit those, not this file. The "/**" section applies to
@@ -64,7 +70,7 @@ def render(config: SuiteConfig | None = None, header: str = HEADER) -> str:
     if config is None:
         return render_params_file(NODES, SHARED, header)
     values: dict[str, Any] = {name: flatten(c) for name, c in config.by_node().items()}
-    values[WILDCARD] = flatten(config.planner.style) | flatten(config.lockstep)
+    values[WILDCARD] = flatten(config.sim.robot) | flatten(config.planner.style) | flatten(config.lockstep)
     return render_params_file(NODES, SHARED, header, values)
 
 
@@ -97,7 +103,8 @@ TRIAL_SETS: Mapping[tuple[str, str], str] = {
     **{(nodes.VIZ.name, cue): _CONDITION for cue in CUES},
     (nodes.SIM.name, "seed"): "--seed",
     (nodes.SCENARIO.name, "seed"): "--seed",
-    (nodes.SIM.name, "battery_capacity_m"): "the scenario file (robot: battery: capacity_m)",
+    (WILDCARD, "robot"): "--robot (or the scenario's robot: model)",
+    (nodes.SIM.name, "battery_pack_m"): "the scenario file (robot: battery: capacity_m)",
     (nodes.SIM.name, "real_time_factor"): "--rtf",
     (nodes.SCENARIO.name, "scenario"): "the scenario haven runs",
     (nodes.SCENARIO.name, "hold_start"): "--web (and --researcher-start)",

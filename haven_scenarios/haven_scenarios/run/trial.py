@@ -24,6 +24,7 @@ from haven_scenarios.study.scenario import Scenario
 from haven_sim.nav.controller import ControllerComponent
 from haven_sim.nav.mux import MuxComponent
 from haven_sim.nav.planning import PlannerComponent, world_lanes
+from haven_sim.robots.fields import with_robot
 from haven_sim.runtime.component import Component
 from haven_sim.runtime.loop import DelayFn, InProcessLoop
 from haven_sim.sim.simulator import SimulatorComponent
@@ -64,9 +65,9 @@ def condition_name(t: CueToggles) -> str:
 
 def scenario_suite(scenario: Scenario, seed: int, toggles: CueToggles, suite: SuiteConfig | None = None) -> SuiteConfig:
     """The suite configured for one trial: what the scenario and the run fix on top of the
-    parameter file (world, battery size, seeds, condition) — what `haven run` passes as -p."""
-    s = suite or SuiteConfig()
-    battery = replace(s.sim.sim.battery, capacity_m=scenario.battery.capacity_m)
+    parameter file (robot, world, battery size, seeds, condition) — what `haven run` passes as -p."""
+    s = with_robot(suite or SuiteConfig(), scenario.robot, scenario.robot_model)
+    battery = replace(s.sim.sim.battery, pack_m=scenario.battery.capacity_m)
     sim = replace(s.sim, world=scenario.world_path, sim=replace(s.sim.sim, battery=battery, seed=seed))
     director = replace(s.scenario.director, scenario=scenario.source or scenario.name, seed=seed)
     # The scenario's cue parameters, except where the run's parameter file set one.
@@ -112,7 +113,7 @@ class Trial:
         limit = math.ceil((self.scenario.timeout_s + GRACE_S) / step_s)
         self.loop.run_until(lambda: self.director.ended is not None, limit)
         reason = self.director.ended or EndReason.INTERRUPTED
-        metrics = compute(self.recording, self.scenario.name, reason, self.scenario.world)
+        metrics = compute(self.recording, self.scenario.name, reason, self.scenario.world, robot=self.scenario.robot)
         metrics.update(seed=self.seed, condition=condition_name(self.toggles))
         return TrialResult(self.scenario.name, self.seed, condition_name(self.toggles), reason, metrics, self.recording)
 

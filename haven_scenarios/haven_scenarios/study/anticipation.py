@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from haven_scenarios.study.mission import WAITING_THOUGHT
 from haven_scenarios.study.perception import Percept, ahead_of
 from haven_scenarios.study.person import PersonParams
-from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D
 
 RayFn = Callable[[Point, Point], float]  # free distance from a point along a unit direction (walls)
@@ -38,9 +38,9 @@ STRIDE_M = 1.0
 SIDESTEP_GAIN = 1.2  # 1/s: how briskly a person takes up the lateral offset they want
 
 
-def clearance_m(params: PersonParams) -> float:
-    """Centre-to-centre lateral distance a person keeps from the robot's way."""
-    return params.pass_gap_m + HUMAN_BODY.radius_m + ROBOT_BODY.radius_m
+def clearance_m(params: PersonParams, robot_radius_m: float) -> float:
+    """Centre-to-centre lateral distance a person keeps from the way of a robot of this size."""
+    return params.pass_gap_m + HUMAN_BODY.radius_m + robot_radius_m
 
 
 @dataclass(frozen=True)
@@ -94,7 +94,9 @@ def _unit(v: Point) -> tuple[float, float, float]:
     return (v[0] / n, v[1] / n, n) if n > 1e-9 else (0.0, 0.0, 0.0)
 
 
-def _read(me: Pose2D, way: tuple[float, float], points: Sequence[Point], params: PersonParams) -> tuple[list[float], tuple[float, int] | None]:
+def _read(
+    me: Pose2D, way: tuple[float, float], points: Sequence[Point], params: PersonParams, c: float
+) -> tuple[list[float], tuple[float, int] | None]:
     """Of one shown way: the lateral offsets of its points ahead of me that run along my way (or
     against it), and (how far ahead, index) of the first point that crosses my way."""
     hx, hy = way
@@ -108,7 +110,7 @@ def _read(me: Pose2D, way: tuple[float, float], points: Sequence[Point], params:
         tx, ty, n = _unit((b[0] - a[0], b[1] - a[1]))
         if n == 0.0 or abs(tx * hx + ty * hy) >= ALONG_COS:
             along.append(lateral)
-        elif abs(lateral) < clearance_m(params):
+        elif abs(lateral) < c:
             return along, (ahead, i)
     return along, None
 
@@ -122,10 +124,10 @@ def keep_clear(
     hx, hy, speed = _unit(task)
     if speed == 0.0:
         return None
-    c = clearance_m(params)
+    c = clearance_m(params, seen.percept.robot_radius_m)
     along: list[float] = []
     for points in ways:
-        lateral, crossing = _read(me, (hx, hy), points, params)
+        lateral, crossing = _read(me, (hx, hy), points, params, c)
         along += lateral
         if crossing is not None and not (along and min(abs(a) for a in along) < c):
             slowed = _give_way(task, crossing, points, seen, params)
@@ -180,7 +182,7 @@ def hesitant(me: Pose2D, task: Point, seen: Seen, params: PersonParams, half_fov
     closing = (seen.robot_v[0] * dx + seen.robot_v[1] * dy) / d
     hx, hy, _ = _unit(task)
     lateral = abs(dx * hy - dy * hx)  # the robot's offset from my way
-    return closing > CLOSING_MPS and lateral < clearance_m(params)
+    return closing > CLOSING_MPS and lateral < clearance_m(params, seen.percept.robot_radius_m)
 
 
 def waits_for_me(p: Percept) -> bool:

@@ -1,14 +1,13 @@
 """The trial director: runs one trial of a scenario, shared by batch mode and the scenario node.
 
 `TrialDirector` holds the mission executive, the study rules and the simulated participants. It reads
-what any node can read (the map, /odom, /humans, /battery_state, /plan, /haven/wait, what the AR cues
-show on /haven/cue_state, and contacts on the study log) and publishes what the scenario node publishes: goals, the thought text, the simulated
-participants' velocities, obstruction removals (a control topic, not the event log) and the study's
-events. Each simulated participant gets what they perceive (`perception.perceive`: the robot and the
-cues they can see, the projected path's markers laid out from /plan as the viz lays them out), never
-the plan itself. It starts the trial once it has the state it needs and `start_allowed` is set (the node
-waits for every listener first), and ends it by the scenario's rules with a `trial_end` event.
-"""
+what any node can read (the map, /odom, /humans, /battery_state, /plan, /haven/wait, /haven/cue_state,
+contacts on the study log) and publishes what the scenario node publishes: goals, the thought, the simulated
+participants' velocities, obstruction removals (a control topic, not the event log), the study's events.
+Each simulated participant gets what they perceive (`perception.perceive`: the robot and the cues they
+can see, the projected path's markers laid out from /plan as the viz does), never the plan itself. It
+starts the trial once it has what it needs and `start_allowed` is set (the node waits for every
+listener first), and ends it by the scenario's rules with a `trial_end` event."""
 
 from __future__ import annotations
 
@@ -29,6 +28,7 @@ from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.nav.planner import GridPlanner, PlanningError
+from haven_sim.robots.fields import RobotChoice
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.occupancy import OccupancyGridData
@@ -57,6 +57,7 @@ class DirectorConfig:
 
 @dataclass(frozen=True)
 class ScenarioNodeConfig:
+    robot: RobotChoice = group(RobotChoice)
     director: DirectorConfig = group(DirectorConfig)
     wait_for: tuple[str, ...] = param(("planner",), "nodes that must be listening before the trial starts (/topic: any reader of it)")
     hold_start: bool = param(False, "the trial starts only on a `start` on /haven/trial_control (the researcher console's Start)")
@@ -352,7 +353,7 @@ class TrialDirector:
             if hid in self.humans:
                 me = self.humans[hid]
                 others = [pose for other, pose in self.humans.items() if other != hid]
-                self.percepts[hid] = seen = perceive(walker.params, sight, now, me, robot, cues, markers, ways)
+                self.percepts[hid] = seen = perceive(walker.params, sight, now, me, robot, cues, markers, ways, self.scenario.robot.radius_m)
                 out.append(Message(topics.human_cmd_vel(hid), walker.command(now, me, robot, seen, others), now))
         fired = self.gems.update(now, robot, self.humans) + self.routes.update(now, {"robot": robot, **self.humans})
         fired += self.obstructions.update(now, self.humans)

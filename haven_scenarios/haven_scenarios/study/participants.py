@@ -38,6 +38,7 @@ from haven_sim.common import plugins
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, Twist2D, wrap_angle
 from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
+from haven_sim.robots.fields import DEFAULT
 
 # How a simulated participant plans their own walks: their body, a little margin, generous snapping.
 CLOSE_ENOUGH_M = 0.3  # a stop the person cannot get nearer to than this (someone beside it) counts as reached
@@ -105,12 +106,14 @@ class Walker:
         self._progress_mark: tuple[float, float] | None = None  # (when, distance to the waypoint) at the last progress
         self._last_tick: float | None = None
         self._dt = 0.1
+        self._robot_radius = DEFAULT.radius_m  # the robot's size, as last seen
         self._others: Sequence[Pose2D] = ()  # the other people, as of this tick
         self._robot: Pose2D | None = None  # the robot as the person acts on it (None: not seen)
         self._side = (0.0, -math.inf)  # the side they pass the robot's shown way on, until when
         self.done = not self.stops
 
     def command(self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()) -> Twist2D:
+        self._robot_radius = percept.robot_radius_m
         self.attention.push(self._read_cues(now, percept))
         seen = self.attention.acted_on(now)
         self._others, self._robot = others, seen.percept.robot if seen is not None else None
@@ -164,8 +167,8 @@ class Walker:
         bodies = [Body(o.x, o.y, 0.0, 0.0, HUMAN_BODY.radius_m) for o in others]
         if seen is not None and seen.percept.robot is not None:
             r = seen.percept.robot
-            bodies.insert(0, robot_body(r.x, r.y, *seen.robot_v))
-        vx, vy = self.crowd.step((me.x, me.y), desired, bodies, self._dt, guard=(robot_body(robot.x, robot.y, 0.0, 0.0),))
+            bodies.insert(0, robot_body(r.x, r.y, *seen.robot_v, seen.percept.robot_radius_m))
+        vx, vy = self.crowd.step((me.x, me.y), desired, bodies, self._dt, guard=(robot_body(robot.x, robot.y, 0.0, 0.0, self._robot_radius),))
         return self._twist(me, (vx, vy), desired)
 
     def _twist(self, me: Pose2D, v: Point, desired: Point) -> Twist2D:

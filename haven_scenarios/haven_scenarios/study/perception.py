@@ -24,6 +24,7 @@ import numpy as np
 
 from haven_scenarios.study.person import PersonParams
 from haven_sim.common.geometry import Point, Pose2D, wrap_angle
+from haven_sim.robots.fields import DEFAULT
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_viz.cues import BATTERY_NS, PATH_NS, SIGNAL_NS, THOUGHT_NS, ArCues, CueState
 
@@ -44,6 +45,7 @@ class Percept:
     battery: float | None = None
     ways: tuple[tuple[Point, ...], ...] = ()  # the robot's way as other cues show it, the parts seen
     shown: Mapping[str, Any] = field(default_factory=dict)  # other cues seen: cue -> its value
+    robot_radius_m: float = DEFAULT.radius_m  # the robot's size (its footprint's enclosing circle), as anyone can see it
 
     @property
     def intent_shown(self) -> bool:
@@ -126,13 +128,14 @@ def perceive(
     cues: CueState | None,
     markers: Sequence[Point] = (),
     ways: Ways | None = None,
+    robot_radius_m: float = DEFAULT.radius_m,
 ) -> Percept:
     """What the person at `me` perceives. `markers`: the projected path's markers ahead of the
     robot, nearest first, and `ways`: the other cues' ways (the director lays them out as the viz
     does); `cues`: what the viz shows now (None before its first message: nothing)."""
     robot_seen = sees(params, sight, me, (robot.x, robot.y))
     if cues is None:
-        return Percept(now, robot if robot_seen else None)
+        return Percept(now, robot if robot_seen else None, robot_radius_m=robot_radius_m)
     path: tuple[Point, ...] = ()
     shown = list(markers[: cues.path_markers]) if cues.toggles.on(PATH_NS) else []
     if shown:
@@ -150,7 +153,7 @@ def perceive(
             seen_ways.append(part)
             values[cue] = cues.value(cue)
     if not robot_seen:
-        return Percept(now, None, path, ways=tuple(seen_ways), shown=values)
+        return Percept(now, None, path, ways=tuple(seen_ways), shown=values, robot_radius_m=robot_radius_m)
     t = cues.toggles
     return Percept(
         now,
@@ -161,6 +164,7 @@ def perceive(
         cues.battery_level if t.on(BATTERY_NS) else None,
         tuple(seen_ways),
         values,
+        robot_radius_m,
     )
 
 

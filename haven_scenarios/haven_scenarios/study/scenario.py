@@ -9,9 +9,10 @@ end_on_contact: false
 condition: [turn_signals]      # the cues shown unless the run says (--condition): all | none | cue names
 cues: {steps_ahead: 5}         # cue parameters (the viz node's; a run's --params-file value wins)
 robot:
+  model: turtlebot2            # a robot (haven robots) or a robot file beside this one (a run's --robot wins)
   route: [B, C, D, A]          # hallway: room centres in order
   order: nearest               # retrieval: nearest | random (seeded) gem order
-  battery: {mode: off, capacity_m: 100.0, charge_until: 1.0, safety_factor: 1.2}
+  battery: {mode: off, capacity_m: 100.0, charge_until: 1.0, safety_factor: 1.2}   # capacity_m: the pack (default: the robot's own)
 humans:
   - {id: h1, model: walker, route: [B, A, D, C], speed_mps: 1.0}   # walker | blocker | yielder | teleop
   - {id: h2, model: yielder, params: {reaction_s: 1.0, fov_deg: 110}}  # perception parameters
@@ -29,7 +30,7 @@ every key is type-checked (booleans are true or false, numbers finite, lists lis
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field, fields, replace
 from importlib import resources
 from pathlib import Path
 from typing import Annotated, Any, Literal
@@ -39,6 +40,10 @@ from haven_sim.common import plugins
 from haven_sim.common.params import build
 from haven_sim.common.schema import FileModel, Line, Positive, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, one_line, read_yaml, short, shown_key
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.fields import DEFAULT
+from haven_sim.robots.robot_file import RobotError
+from haven_sim.robots.robot_kind import DEFAULT_ROBOT, is_file_spec, resolve_robot
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_file import load_world
 from haven_viz.cues import CUES, CueParams, unknown_cue
@@ -90,6 +95,15 @@ class Scenario:
     condition: tuple[str, ...] = ("all",)  # the cues shown unless a run picks a condition
     cues: CueParams = field(default_factory=CueParams)  # as the scenario file sets them
     source: str = ""
+    robot: RobotDescription = DEFAULT  # robot: model (a run's --robot replaces it: `for_robot`)
+    robot_model: str = DEFAULT_ROBOT  # ... as named: a robot's name or a robot file
+    pack_m: float | None = None  # robot.battery.capacity_m as the file gives it (None: the robot's own pack)
+
+    def for_robot(self, robot: RobotDescription, model: str | None = None) -> Scenario:
+        """This scenario with `robot` (named `model`: a name or a file; default its name); its battery
+        pack is the file's, else the robot's own."""
+        battery = replace(self.battery, capacity_m=self.pack_m if self.pack_m is not None else robot.battery.capacity_m)
+        return replace(self, robot=robot, robot_model=model or robot.name, battery=battery)
 
 
 def scenario_names() -> list[str]:
@@ -140,12 +154,13 @@ def parse_scenario(data: Any, source: str) -> Scenario:
 
 class BatteryFile(FileModel):
     mode: Annotated[Literal["off", "on_arrival", "continuous"], checked(lambda v: "off" if v is False else v)] = "off"  # (YAML reads `off` as false)
-    capacity_m: Positive() = 100.0  # type: ignore[valid-type]
+    capacity_m: Positive() | None = None  # type: ignore[valid-type]  # the pack in metres of travel (default: the robot's own)
     charge_until: Positive() = 1.0  # type: ignore[valid-type]
     safety_factor: Positive() = 1.2  # type: ignore[valid-type]
 
 
 class RobotFile(FileModel):
+    model: Line(4096) | None = None  # type: ignore[valid-type]  # a robot (haven robots) or a robot file beside the scenario
     route: Any = None  # room names of the world
     order: Any = "nearest"  # a mission behaviour
     battery: BatteryFile | None = None
@@ -223,7 +238,8 @@ class _ScenarioParser:
             raise self.fail("robot.route", "a hallway scenario needs the robot's room route")
         if f.kind == "retrieval" and not [g for g in world.gems if g.owner == "robot"]:
             raise self.fail("world", f"world '{world.name}' has no robot gems to retrieve")
-        return Scenario(
+        battery = robot.battery or BatteryFile()
+        scenario = Scenario(
             name=f.name,
             kind=f.kind,
             world=world,
@@ -231,14 +247,26 @@ class _ScenarioParser:
             timeout_s=f.timeout_s,
             robot_route=route,
             robot_order=self.registered(robot.order, "robot.order", "missions"),
-            battery=self.battery(robot.battery or BatteryFile(), world),
+            battery=self.battery(battery, world),
             humans=self.humans(f.humans, world),
             dwell_time_s=f.dwell_time_s,
             end_on_contact=f.end_on_contact,
             condition=self.condition(f.condition),
             cues=self.cues(f.cues),
             source=self.source,
+            pack_m=battery.capacity_m,
         )
+        return scenario.for_robot(*self.robot(robot.model))
+
+    def robot(self, model: str | None) -> tuple[RobotDescription, str]:
+        """The robot `robot.model` names (a name, or a file beside the scenario file), as named."""
+        if model is None:
+            return DEFAULT, DEFAULT_ROBOT
+        spec = str(Path(self.source).parent / model) if is_file_spec(model) and not Path(model).is_absolute() else model
+        try:
+            return resolve_robot(spec), spec
+        except RobotError as e:
+            raise self.fail("robot.model", str(e)) from None
 
     def condition(self, value: list[Any]) -> tuple[str, ...]:
         for i, name in enumerate(value):
@@ -262,7 +290,7 @@ class _ScenarioParser:
             raise self.fail("robot.battery.charge_until", f"must be at most 1 (a full battery), got {b.charge_until:g}")
         if b.mode != "off" and world.charging_base is None:
             raise self.fail("robot.battery.mode", f"needs a charging_base in world '{world.name}'")
-        return BatteryPlan(b.mode, b.capacity_m, b.charge_until, b.safety_factor)
+        return BatteryPlan(b.mode, b.capacity_m or DEFAULT.battery.capacity_m, b.charge_until, b.safety_factor)
 
     def humans(self, value: list[HumanFile] | None, world: World) -> tuple[HumanTask, ...]:
         known = {h.id for h in world.humans}

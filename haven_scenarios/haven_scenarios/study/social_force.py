@@ -23,7 +23,7 @@ from typing import Protocol, overload
 
 import numpy as np
 
-from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import FloatArray, Point
 
 
@@ -175,5 +175,5 @@ class SocialForce:
         return vx, vy
 
 
-def robot_body(x: float, y: float, vx: float, vy: float) -> Body:
-    return Body(x, y, vx, vy, ROBOT_BODY.radius_m, robot=True)
+def robot_body(x: float, y: float, vx: float, vy: float, radius_m: float) -> Body:
+    return Body(x, y, vx, vy, radius_m, robot=True)

@@ -16,7 +16,7 @@ from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.foxglove_relay import msgdef
 from haven_scenarios.web.access import Role
 from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS
-from haven_sim.common.bodies import EYE_HEIGHT_M, HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.bodies import EYE_HEIGHT_M, HUMAN_BODY
 from haven_viz.world_markers import WALL_HEIGHT_M
 
 VIEW_WALL_HEIGHT_M = 2.4  # walls are drawn this tall in first person (the markers' 0.5 m suits a top-down view)
@@ -58,7 +58,7 @@ def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[
         "kind": scenario.kind,
         "bounds": list(world.bounds()),
         "eye_height_m": EYE_HEIGHT_M,
-        "robot_body": {"radius_m": ROBOT_BODY.radius_m, "height_m": ROBOT_BODY.height_m},
+        "robot_body": {"radius_m": scenario.robot.radius_m, "height_m": scenario.robot.height_m},
         "human_body": {"radius_m": HUMAN_BODY.radius_m, "height_m": HUMAN_BODY.height_m},
         "view_wall_height_m": VIEW_WALL_HEIGHT_M,
         "marker_wall_height_m": WALL_HEIGHT_M,

@@ -1,5 +1,5 @@
 """Plugins by name: registries of the things a lab adds (participant models, questionnaires,
-metrics, cues, path planners and mission behaviours so far; robots follow), filled from Python entry
+metrics, cues, path planners, mission behaviours and robots), filled from Python entry
 points (groups `haven.<kind>`).
 
 HAVEN's own items register exactly as a lab's package does, in its setup.py::
@@ -49,6 +49,7 @@ KINDS: dict[str, str] = {
     "cues": "haven_viz.cue_kind",
     "planners": "haven_sim.nav.planner_kind",
     "missions": "haven_scenarios.study.mission_orders",
+    "robots": "haven_sim.robots.robot_kind",
 }
 
 

@@ -14,6 +14,7 @@ class RobotState:
 
     pose: Pose2D
     twist: Twist2D = Twist2D()
+    altitude_m: float = 0.0  # base frame above the floor (pose.position.z): an aerial robot's height
 
 
 @dataclass(frozen=True)

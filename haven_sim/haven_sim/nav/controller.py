@@ -17,11 +17,13 @@ from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import RobotState
 from haven_sim.nav.follower import FollowerParams, PathFollower, Status
 from haven_sim.nav.motion_style import MotionStyle
+from haven_sim.robots.fields import RobotChoice
 from haven_sim.runtime.component import Handler, Message
 
 
 @dataclass(frozen=True)
 class ControllerConfig:
+    robot: RobotChoice = group(RobotChoice)
     follower: FollowerParams = group(FollowerParams)
     style: MotionStyle = group(MotionStyle)
     rate_hz: float = param(20.0, "control rate (sim time)", POSITIVE)

@@ -21,17 +21,18 @@ from haven_sim.common.params import POSITIVE, check_bounds, param
 from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.common.polyline import Polyline
 from haven_sim.nav.motion_style import MotionStyle
+from haven_sim.robots.fields import from_robot
 
 
 @dataclass(frozen=True)
 class FollowerParams:
-    linear_speed_mps: float = param(0.4, "cruising speed along arcs and straights", POSITIVE)
+    linear_speed_mps: float = from_robot("motion.cruise_speed_mps")  # along arcs and straights
     min_linear_speed_mps: float = param(0.05, "slowest speed while still driving toward a stop", POSITIVE)
     goal_tolerance_m: float = param(0.1, "the goal counts as reached this close", POSITIVE)
     lookahead_m: float = param(0.35, "pure-pursuit lookahead along the path", POSITIVE)
     decel_mps2: float = param(0.4, "planned deceleration to each stop (the robot can do 0.5 m/s^2)", POSITIVE)
     angular_decel_rps2: float = param(3.0, "planned angular deceleration at the end of a rotation", POSITIVE)
-    max_angular_speed_rps: float = param(1.5, "turn-rate limit while driving", POSITIVE)
+    max_angular_speed_rps: float = from_robot("motion.max_turn_rate_rps")  # while driving
 
     def __post_init__(self) -> None:
         check_bounds(self)

@@ -14,6 +14,7 @@ import math
 from dataclasses import dataclass
 
 from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, check_bounds, param
+from haven_sim.robots.fields import from_robot
 
 
 @dataclass(frozen=True)
@@ -24,6 +25,7 @@ class MotionStyle:
     too_close_distance_m: float = param(0.5, "HAVEN: a leg shorter than this also starts with a rotation in place", NOT_NEGATIVE)
     facing_tolerance_deg: float = param(5.0, "HAVEN: a rotation in place ends within this", Bounds(0.0, 90.0, low_open=True, high_open=True))
     rotate_speed_deg_s: float = param(50.0, "HAVEN's rate of rotating in place", POSITIVE)
+    rotate_in_place: bool = from_robot("motion.rotate_in_place")  # a holonomic robot turns while it moves instead
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -43,7 +45,7 @@ class MotionStyle:
     def rotates_in_place(self, turn_rad: float, leg_m: float = math.inf) -> bool:
         """HAVEN's rule: rotate on the spot (True) or drive an arc (False) for this heading change
         before a leg of length `leg_m`."""
-        return abs(turn_rad) > self.arc_max_angle_rad or leg_m < self.too_close_distance_m
+        return self.rotate_in_place and (abs(turn_rad) > self.arc_max_angle_rad or leg_m < self.too_close_distance_m)
 
     def facing(self, error_rad: float) -> bool:
         """A rotation in place is done."""

@@ -10,15 +10,15 @@ so a query only tests what the start and the goal can see and picks the best pai
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Protocol, overload
 
 import numpy as np
 import numpy.typing as npt
 
-from haven_sim.common.bodies import ROBOT_BODY
 from haven_sim.common.geometry import FloatArray, Point
 from haven_sim.common.params import NOT_NEGATIVE, Bounds, check_bounds, param
+from haven_sim.robots.fields import from_robot
 from haven_sim.sim.occupancy import OccupancyGridData
 
 BoolGrid = npt.NDArray[np.bool_]
@@ -30,8 +30,8 @@ class PlannerParams:
     snap_radius_m: float = param(0.3, "a start or goal this close to free space is moved onto it", NOT_NEGATIVE)
     occupied_threshold: int = param(50, "map cells at or above this are obstacles", Bounds(1, 100))
     unknown_is_obstacle: bool = param(True, "map cells of -1 (unknown) are obstacles")
-    # The body to plan for (not a parameter: the simulated robot, or a participant for their walks).
-    body_radius_m: float = field(default=ROBOT_BODY.radius_m, metadata={"internal": True})
+    # The body to plan for (not a parameter: the robot's footprint, or a participant for their walks).
+    body_radius_m: float = from_robot("radius_m")
 
     def __post_init__(self) -> None:
         check_bounds(self)

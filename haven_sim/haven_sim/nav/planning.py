@@ -26,6 +26,7 @@ from haven_sim.nav.navigator_params import NavigatorParams
 from haven_sim.nav.path_style import ShapeParams
 from haven_sim.nav.planner import PlannerParams
 from haven_sim.nav.planner_kind import planner_class
+from haven_sim.robots.fields import RobotChoice
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import World
@@ -43,6 +44,7 @@ class GoalStorm:
 
 @dataclass(frozen=True)
 class PlannerConfig:
+    robot: RobotChoice = group(RobotChoice)
     planner: PlannerParams = group(PlannerParams)
     shape: ShapeParams = group(ShapeParams)
     style: MotionStyle = group(MotionStyle)

@@ -96,6 +96,7 @@ def odometry_msg(stamp: float, state: RobotState, frame_id: str = "odom", child_
     msg.header.frame_id = frame_id
     msg.child_frame_id = child_frame_id
     msg.pose.pose = pose_msg(state.pose)
+    msg.pose.pose.position.z = float(state.altitude_m)
     msg.twist.twist = twist_msg(state.twist)
     # Small fixed covariances (x, y, yaw) so consumers that require them (e.g. robot_localization) accept the message.
     cov = [0.0] * 36
@@ -109,7 +110,7 @@ def odometry_msg(stamp: float, state: RobotState, frame_id: str = "odom", child_
 
 
 def odometry_from_msg(msg: Odometry) -> RobotState:
-    return RobotState(pose_from_msg(msg.pose.pose), twist_from_msg(msg.twist.twist))
+    return RobotState(pose_from_msg(msg.pose.pose), twist_from_msg(msg.twist.twist), msg.pose.pose.position.z)
 
 
 def scan_msg(stamp: float, scan: ScanData, frame_id: str = "base_scan") -> LaserScan:

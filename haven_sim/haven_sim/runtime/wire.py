@@ -42,7 +42,7 @@ def _battery(r: BatteryReading) -> BatteryReading:
 
 
 WIRE: dict[str, Callable[[Any], Any]] = {
-    topics.ODOM: lambda s: RobotState(wire_pose(s.pose), s.twist),
+    topics.ODOM: lambda s: RobotState(wire_pose(s.pose), s.twist, s.altitude_m),
     topics.HUMANS: lambda h: {hid: wire_pose(p) for hid, p in h.items()},
     topics.PLAN: lambda poses: [wire_pose(p) for p in poses],
     topics.GOAL: lambda g: Goal(wire_pose(g.pose), g.frame),

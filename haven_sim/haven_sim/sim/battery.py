@@ -12,6 +12,7 @@ from dataclasses import dataclass, field
 from enum import Enum
 
 from haven_sim.common.params import FRACTION, NOT_NEGATIVE, POSITIVE, check_bounds, param
+from haven_sim.robots.fields import from_robot
 
 # Kobuki 4S Li-ion pack: 2.2 Ah, 16.8 V full, 13.2 V empty (kobuki_node's thresholds).
 DESIGN_CAPACITY_AH = 2.2
@@ -21,16 +22,25 @@ VOLTAGE_EMPTY_V = 13.2
 
 @dataclass(frozen=True)
 class BatteryParams:
-    capacity_m: float = param(100.0, "metres of travel on a full charge", POSITIVE)
-    drain_per_rad: float = param(0.0, "fraction of full per radian turned", NOT_NEGATIVE)
-    idle_drain_per_s: float = param(0.0, "fraction of full per second, always", NOT_NEGATIVE)
-    charge_rate_per_s: float = param(0.05, "fraction of full per second on the base (20 s from empty)", NOT_NEGATIVE)
+    # The robot's battery (robot file: battery; a scenario's robot.battery.capacity_m sets the pack):
+    # metres of travel on a full charge, fractions of full per radian turned, per second switched on
+    # (in the air, for an aerial robot) and per second on the base.
+    capacity_m: float = from_robot("battery.capacity_m", POSITIVE)
+    drain_per_rad: float = from_robot("battery.drain_per_rad", NOT_NEGATIVE)
+    idle_drain_per_s: float = from_robot("battery.idle_drain_per_s", NOT_NEGATIVE)
+    charge_rate_per_s: float = from_robot("battery.charge_rate_per_s", NOT_NEGATIVE)
+    pack_m: float = param(0.0, "the pack as metres of travel (0: the robot's own; haven run sets the scenario's)", NOT_NEGATIVE)
     charge_max_speed_mps: float = param(0.02, "the robot charges only while (nearly) stopped on the base", NOT_NEGATIVE)
     initial_level: float = param(1.0, "level at start, 0..1", FRACTION)
     base_radius_m: float = field(default=0.5, metadata={"internal": True})  # from the world's charging base
 
     def __post_init__(self) -> None:
         check_bounds(self)
+
+    @property
+    def full_range_m(self) -> float:
+        """Metres of travel on a full charge: the pack, else the robot's capacity."""
+        return self.pack_m or self.capacity_m
 
 
 class PowerStatus(Enum):
@@ -65,13 +75,13 @@ class Battery:
 
     @property
     def range_m(self) -> float:
-        return self.level * self.params.capacity_m
+        return self.level * self.params.full_range_m
 
     def update(self, dt: float, distance_m: float, rotation_rad: float, speed_mps: float, distance_to_base_m: float) -> None:
         """Account for one step: what the robot did during dt and where it is now."""
         p = self.params
         on_base = distance_to_base_m <= p.base_radius_m and speed_mps <= p.charge_max_speed_mps
-        drain = distance_m / p.capacity_m + abs(rotation_rad) * p.drain_per_rad + dt * p.idle_drain_per_s
+        drain = distance_m / p.full_range_m + abs(rotation_rad) * p.drain_per_rad + dt * p.idle_drain_per_s
         self.charging = on_base and self.level < 1.0
         gain = p.charge_rate_per_s * dt if on_base else 0.0
         self.level = min(1.0, max(0.0, self.level - drain + gain))

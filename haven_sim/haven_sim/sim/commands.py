@@ -11,22 +11,34 @@ from enum import Enum
 
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
 from haven_sim.common.params import POSITIVE, check_bounds, param
+from haven_sim.robots.description import Limits
 
 
 @dataclass(frozen=True)
 class VelocityLimits:
-    """Speed and acceleration limits; defaults are a TurtleBot2 (Kobuki)."""
+    """Speed and acceleration limits (a robot's from its robot file: `VelocityLimits.of(robot)`)."""
 
-    max_linear_speed_mps: float = param(0.7, "TurtleBot2 (Kobuki) top speed", POSITIVE)
-    max_angular_speed_rps: float = param(math.pi, "TurtleBot2 top turn rate", POSITIVE)
-    max_linear_accel_mps2: float = param(0.5, "TurtleBot2 acceleration limit", POSITIVE)
-    max_angular_accel_rps2: float = param(3.5, "TurtleBot2 angular acceleration limit", POSITIVE)
-    max_lateral_speed_mps: float = field(default=0.0, metadata={"internal": True})  # differential drive
+    max_linear_speed_mps: float = param(0.7, "top speed", POSITIVE)
+    max_angular_speed_rps: float = param(math.pi, "top turn rate", POSITIVE)
+    max_linear_accel_mps2: float = param(0.5, "acceleration limit", POSITIVE)
+    max_angular_accel_rps2: float = param(3.5, "angular acceleration limit", POSITIVE)
+    max_lateral_speed_mps: float = field(default=0.0, metadata={"internal": True})  # 0: differential drive
 
     def __post_init__(self) -> None:
         check_bounds(self)
         if self.max_lateral_speed_mps < 0:
             raise ValueError(f"max_lateral_speed_mps must not be negative, got {self.max_lateral_speed_mps}")
+
+    @staticmethod
+    def of(limits: Limits) -> VelocityLimits:
+        """A robot's limits, from its description."""
+        return VelocityLimits(
+            limits.max_linear_speed_mps,
+            limits.max_angular_speed_rps,
+            limits.max_linear_accel_mps2,
+            limits.max_angular_accel_rps2,
+            limits.max_lateral_speed_mps,
+        )
 
     @staticmethod
     def human(max_speed_mps: float = 1.5) -> VelocityLimits:

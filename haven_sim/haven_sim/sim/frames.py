@@ -7,6 +7,7 @@ from collections.abc import Mapping
 from typing import NamedTuple
 
 from haven_sim.common.geometry import Pose2D
+from haven_sim.robots.description import RobotDescription
 
 
 class Frame(NamedTuple):
@@ -18,17 +19,15 @@ class Frame(NamedTuple):
     yaw: float
 
 
-# TurtleBot2: base_link sits 1 cm above the floor; the laser (a stand-in for its depth camera's
-# scan) about 0.35 m up, centred. map -> odom is the identity: odometry has no drift by default.
-BASE_LINK_Z_M = 0.0102
-SCAN_Z_M = 0.35
-
-
-def static_frames(
-    map_frame: str = "map", odom_frame: str = "odom", base_frame: str = "base_footprint", scan_frame: str = "base_scan", map_to_odom: bool = True
-) -> list[Frame]:
-    """The fixed frames; `map_to_odom` False leaves map -> odom to a localization node (AMCL, slam_toolbox)."""
-    body = [Frame(base_frame, "base_link", 0.0, 0.0, BASE_LINK_Z_M, 0.0), Frame("base_link", scan_frame, 0.0, 0.0, SCAN_Z_M - BASE_LINK_Z_M, 0.0)]
+def static_frames(robot: RobotDescription, map_frame: str = "map", odom_frame: str = "odom", map_to_odom: bool = True) -> list[Frame]:
+    """The fixed frames: the robot's base_link and laser where its robot file puts them (centred);
+    map -> odom is the identity (odometry has no drift by default), unless `map_to_odom` is False,
+    which leaves it to a localization node (AMCL, slam_toolbox)."""
+    f, lidar = robot.frames, robot.lidar
+    body = [
+        Frame(f.base, f.base_link, 0.0, 0.0, f.base_link_height_m, 0.0),
+        Frame(f.base_link, lidar.frame, 0.0, 0.0, lidar.height_m - f.base_link_height_m, 0.0),
+    ]
     return ([Frame(map_frame, odom_frame, 0.0, 0.0, 0.0, 0.0)] if map_to_odom else []) + body
 
 

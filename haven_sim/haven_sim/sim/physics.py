@@ -1,4 +1,4 @@
-"""pymunk world: a differential-drive TurtleBot2, circular humans and static walls.
+"""pymunk world: the robot (its footprint from its robot file), circular humans and static walls.
 
 Bodies are driven through joints (pymunk's "tank" pattern): a kinematic control body carries the
 commanded velocity and a pivot joint plus a gear joint with bounded force and torque drag the real
@@ -15,7 +15,7 @@ from typing import Any
 
 import pymunk
 
-from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY, BodySpec
+from haven_sim.common.bodies import HUMAN_BODY, BodySpec
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D
 
@@ -37,9 +37,12 @@ class ContactEvent:
 class _DrivenBody:
     def __init__(self, space: pymunk.Space, spec: BodySpec, pose: Pose2D, collision_type: int) -> None:
         self.spec = spec
-        moment = pymunk.moment_for_circle(spec.mass_kg, 0.0, spec.radius_m)
-        self.body = pymunk.Body(spec.mass_kg, moment)
-        self.shape = pymunk.Circle(self.body, spec.radius_m)
+        if spec.polygon:
+            self.body = pymunk.Body(spec.mass_kg, pymunk.moment_for_poly(spec.mass_kg, spec.polygon))
+            self.shape: pymunk.Shape = pymunk.Poly(self.body, spec.polygon)
+        else:
+            self.body = pymunk.Body(spec.mass_kg, pymunk.moment_for_circle(spec.mass_kg, 0.0, spec.radius_m))
+            self.shape = pymunk.Circle(self.body, spec.radius_m)
         self.shape.collision_type = collision_type
         self.shape.friction = 0.3
         self.control = pymunk.Body(body_type=pymunk.Body.KINEMATIC)
@@ -90,13 +93,13 @@ class _DrivenBody:
 
 
 class Physics:
-    def __init__(self, edges: FloatArray, robot_start: Pose2D, human_starts: dict[str, Pose2D]) -> None:
+    def __init__(self, edges: FloatArray, robot_start: Pose2D, human_starts: dict[str, Pose2D], robot: BodySpec) -> None:
         self.space = pymunk.Space()
         self.space.gravity = (0.0, 0.0)
         self.space.iterations = 10
         self._obstruction_shapes: dict[str, list[pymunk.Shape]] = {}
         self._add_edges(edges)
-        self.robot = _DrivenBody(self.space, ROBOT_BODY, robot_start, ROBOT)
+        self.robot = _DrivenBody(self.space, robot, robot_start, ROBOT)
         self.humans = {hid: _DrivenBody(self.space, HUMAN_BODY, p, HUMAN) for hid, p in human_starts.items()}
         self._human_of_shape = {id(h.shape): hid for hid, h in self.humans.items()}
         self._touching: dict[str, int] = {}

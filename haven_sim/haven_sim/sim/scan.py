@@ -14,15 +14,18 @@ import numpy as np
 import numpy.typing as npt
 
 from haven_sim.common.geometry import FloatArray, Pose2D
-from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, check_bounds, param
+from haven_sim.common.params import NOT_NEGATIVE, check_bounds, param
+from haven_sim.robots.fields import from_robot
 
 
 @dataclass(frozen=True)
 class ScanParams:
-    beams: int = param(360, "beams over 360 degrees", Bounds(1))
-    range_min_m: float = param(0.12, "nearer returns read -inf (REP-117)", NOT_NEGATIVE)
-    range_max_m: float = param(3.5, "no return within this reads +inf", POSITIVE)
-    rate_hz: float = param(10.0, "/scan rate (sim time)", POSITIVE)
+    # The robot's lidar (robot file: lidar): beams over 360 degrees, nearer than range_min reads -inf
+    # and nothing within range_max +inf (REP-117), at rate_hz of sim time.
+    beams: int = from_robot("lidar.beams")
+    range_min_m: float = from_robot("lidar.range_min_m")
+    range_max_m: float = from_robot("lidar.range_max_m")
+    rate_hz: float = from_robot("lidar.rate_hz")
     noise_std_m: float = param(0.0, "Gaussian range noise", NOT_NEGATIVE)
 
     def __post_init__(self) -> None:

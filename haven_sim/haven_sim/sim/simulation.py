@@ -15,6 +15,8 @@ from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, wrap_angle
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.fields import from_robot
 from haven_sim.runtime.component import NS_PER_S
 from haven_sim.sim.battery import Battery, BatteryParams, BatteryReading
 from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits
@@ -28,7 +30,7 @@ from haven_sim.sim.world import World
 @dataclass(frozen=True)
 class SimConfig:
     physics_rate_hz: float = param(50.0, "physics steps per second of sim time (/odom is published every step)", POSITIVE)
-    robot_limits: VelocityLimits = group(VelocityLimits)
+    robot: RobotDescription = from_robot()  # the robot's body, limits and flight (its `robot` parameter names it)
     human_max_speed_mps: float = param(1.5, "a person's top walking speed", POSITIVE)
     cmd_timeout_s: float = param(0.5, "no command for this long (sim time) stops a body", POSITIVE)
     scan: ScanParams = group(ScanParams, prefix="scan_")
@@ -48,6 +50,10 @@ class SimConfig:
     @property
     def step_s(self) -> float:
         return self.step_ns / NS_PER_S
+
+    @property
+    def robot_limits(self) -> VelocityLimits:
+        return VelocityLimits.of(self.robot.limits)
 
     @property
     def human_limits(self) -> VelocityLimits:
@@ -77,7 +83,7 @@ class Simulation:
 
     def _build(self) -> None:
         w = self.world
-        self.physics = Physics(w.edges(obstructions=False), w.robot_start, {h.id: h.start for h in w.humans})
+        self.physics = Physics(w.edges(obstructions=False), w.robot_start, {h.id: h.start for h in w.humans}, self.config.robot.body())
         for o in w.obstructions:  # kept apart so that each can be removed
             self.physics.add_obstruction(o.id, o.shape.edges())
         self.scanner = LaserScanner(self.config.scan, w.edges(), seed=self.config.seed)

@@ -18,6 +18,7 @@ from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import FloatArray, Twist2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import RobotState
+from haven_sim.robots.fields import RobotChoice, from_robot
 from haven_sim.runtime.component import Handler, Message, due, period_ns
 from haven_sim.sim.commands import CommandStatus
 from haven_sim.sim.frames import human_frames, robot_frame, static_frames
@@ -28,6 +29,7 @@ from haven_sim.sim.world import World
 
 @dataclass(frozen=True)
 class SimulatorConfig:
+    robot: RobotChoice = group(RobotChoice)
     sim: SimConfig = group(SimConfig)
     world: str = param("small_test", "a packaged world name or a path to a world YAML")
     real_time_factor: float = param(1.0, "1.0 live; higher runs faster than real time", POSITIVE)
@@ -37,8 +39,8 @@ class SimulatorConfig:
     map_frame: str = param("map", "fixed frame")
     odom_frame: str = param("odom", "odometry frame")
     publish_map_to_odom: bool = param(True, "the identity map -> odom on /tf_static; false leaves it to a localization node (AMCL, slam_toolbox)")
-    base_frame: str = param("base_footprint", "robot frame")
-    scan_frame: str = param("base_scan", "laser frame")
+    base_frame: str = from_robot("frames.base")  # the robot's frames, from its robot file
+    scan_frame: str = from_robot("lidar.frame")
     lockstep_participants: tuple[str, ...] = param((), "with lockstep: the nodes that act on the clock's ticks")
     lockstep_observers: tuple[str, ...] = param((), "with lockstep: participants nobody reads during a tick, not waited for")
     lockstep_wait_for: tuple[str, ...] = param((), "with lockstep: nodes that must listen before the first step (the recorder)")
@@ -124,7 +126,7 @@ class SimulatorComponent:
         events = sim.pop_events()
         if self._static_due:
             self._static_due = False
-            out.append(Message(topics.TF_STATIC, static_frames(c.map_frame, c.odom_frame, c.base_frame, c.scan_frame, c.publish_map_to_odom), now))
+            out.append(Message(topics.TF_STATIC, static_frames(c.sim.robot, c.map_frame, c.odom_frame, c.publish_map_to_odom), now))
         if self._map_due or (events and any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in events)):
             self._map_due = False
             out.append(Message(topics.MAP, sim.occupancy(c.map_resolution_m), now))

@@ -36,10 +36,11 @@ import re
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-from haven_sim.common.bodies import HUMAN_BODY, ROBOT_BODY
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, polygon_area, segment_to_polygon
 from haven_sim.common.schema import FileModel, Line, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
+from haven_sim.robots.fields import DEFAULT
 from haven_sim.sim.world import (
     ChargingBase,
     Gem,
@@ -296,9 +297,10 @@ class _Parser:
             raise self.fail(*problem)
 
     def check_free(self, world: World) -> None:
-        """The robot's and each person's whole body (a disc of its radius) clear of solid geometry at start."""
+        """The default robot's and each person's whole body (a disc of its radius) clear of solid
+        geometry at start (another robot is checked when a trial chooses it: `robot_fits`)."""
         shapes = world.solid_shapes()
-        checks = [("robot.start", world.robot_start, "the robot", ROBOT_BODY.radius_m)]
+        checks = [("robot.start", world.robot_start, "the robot", DEFAULT.radius_m)]
         checks += [(f"humans[{i}].start", h.start, "the person", HUMAN_BODY.radius_m) for i, h in enumerate(world.humans)]
         for key, pose, who, radius in checks:
             hit = overlapping_shape(shapes, pose.x, pose.y, radius)

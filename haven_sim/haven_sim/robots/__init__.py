@@ -1,0 +1,2 @@
+"""Robots: the description every part of the suite reads, robot files, the `haven.robots` plugin
+kind and HAVEN's catalogue."""
