@@ -315,11 +315,11 @@ def test_declared_bounds_are_the_parameters_ros_ranges_and_out_of_range_is_one_l
     ros.start(SIM)
     client = AsyncParameterClient(ros.node, "sim_node")
     assert client.wait_for_services(timeout_sec=30)
-    described = client.describe_parameters(["battery_initial_level", "battery_capacity_m"])
+    described = client.describe_parameters(["battery_initial_level", "battery_pack_m"])
     assert ros.spin_until(described.done, 30)
     level, capacity = described.result().descriptors
     assert [(r.from_value, r.to_value) for r in level.floating_point_range] == [(0.0, 1.0)]
-    assert list(capacity.floating_point_range) == []  # (only positive: no closed range to show)
+    assert list(capacity.floating_point_range) == []  # (only not negative: no closed range to show)
 
 
 def test_sigint_shuts_the_node_down_cleanly(ros):
@@ -352,3 +352,10 @@ def test_tf_tree_follows_rep105(ros):
     assert last.transform.rotation.z == pytest.approx(match.pose.pose.orientation.z)
     humans = {t.child_frame_id for m in tf for t in m.transforms if t.header.frame_id == "map"}
     assert humans == {"human_h1"}
+
+
+def test_an_unknown_robot_fails_fast_with_one_line(ros):
+    proc = ros.start(SIM, {"robot": "no_such_bot"}, capture=True)
+    assert proc.wait(timeout=30) == 2
+    err = proc.stderr.read().strip()
+    assert err.startswith("error: sim_node: ") and "unknown robot 'no_such_bot'" in err and "\n" not in err
