@@ -31,7 +31,7 @@ def test_every_default_appears_once_in_haven_yaml():
 
 def test_an_edited_params_file_changes_batch_mode(tmp_path):
     f = tmp_path / "slow.yaml"
-    f.write_text("controller:\n  ros__parameters:\n    linear_speed_mps: 0.25\n")
+    f.write_text("\"/**\":\n  ros__parameters:\n    rotate_speed_deg_s: 10.0\n")
     scenario = load_scenario("shared_room")
     fast = run_trial(scenario, 1).metrics
     slow = run_trial(scenario, 1, suite=load_suite_config(f)).metrics
@@ -68,8 +68,8 @@ def test_booleans_in_a_parameter_file_are_booleans_not_numbers(tmp_path):
         ("scenario:\n  ros__parameters:\n    rate_hz: nan\n", "scenario: rate_hz: must be a finite number, got nan"),
         ('"/**":\n  ros__parameters:\n    use_sim_tim: true\n', "/**: use_sim_tim: no such parameter (did you mean use_sim_time?)"),
         ("controller:\n  ros__parameters:\n    use_sim_time: 1\n", "controller: use_sim_time: must be true or false, got 1"),
-        ("controller:\n  ros__parameters:\n    linear_speed_mps: -.inf\n", "controller: linear_speed_mps: must be a finite number, got -inf"),
-        ("controller:\n  ros__parameters:\n    linear_speed_mps: 1" + "0" * 400 + "\n", "controller: linear_speed_mps: must be a finite number"),
+        ("controller:\n  ros__parameters:\n    lookahead_m: -.inf\n", "controller: lookahead_m: must be a finite number, got -inf"),
+        ("controller:\n  ros__parameters:\n    lookahead_m: 1" + "0" * 400 + "\n", "controller: lookahead_m: must be a finite number"),
         ("viz:\n  ros__parameters:\n    turn_signal: true\n", "viz: turn_signal: no such parameter (did you mean turn_signals?)"),
     ],
 )
@@ -104,6 +104,6 @@ def test_a_double_written_as_ros_reads_it_is_a_number(tmp_path):
 
 def test_namespaced_and_wildcard_node_keys_name_the_node(tmp_path):
     p = tmp_path / "params.yaml"
-    p.write_text("/robot1/controller:\n  ros__parameters:\n    linear_speed_mps: 0.3\n/**/planner:\n  ros__parameters:\n    check_rate_hz: 4.0\n")
+    p.write_text("/robot1/controller:\n  ros__parameters:\n    lookahead_m: 0.3\n/**/planner:\n  ros__parameters:\n    check_rate_hz: 4.0\n")
     config = load_suite_config(str(p))
-    assert config.controller.follower.linear_speed_mps == 0.3 and config.planner.check_rate_hz == 4.0
+    assert config.controller.follower.lookahead_m == 0.3 and config.planner.check_rate_hz == 4.0
