@@ -13,4 +13,4 @@ echo "== docs (Sphinx, warnings as errors)"
 echo "== unit tier in a venv without ROS 2"
 ./scripts/test_unit_without_ros.sh --timeout 60
 echo "== pytest (every tier: unit, integration, ros, browser)"
-exec .venv/bin/pytest -q --timeout 300 "$@"
+exec .venv/bin/pytest -q --timeout 300 --durations=25 "$@"
