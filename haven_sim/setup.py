@@ -37,6 +37,9 @@ setup(
         # HAVEN's path planner registers as a lab's does (haven_sim/nav/planner_kind.py).
         "haven.planners": ["visibility = haven_sim.nav.planner:GridPlanner"],
         # HAVEN's robot catalogue registers as a lab's robot does (haven_sim/robots/robot_kind.py): each a robot file.
-        "haven.robots": [f"{name} = haven_sim.robots.catalogue:{name}" for name in ("turtlebot2",)],
+        "haven.robots": [
+            f"{name} = haven_sim.robots.catalogue:{name}"
+            for name in ("turtlebot2", "turtlebot3_burger", "turtlebot3_waffle_pi", "turtlebot4", "tiago", "youbot", "quadrotor")
+        ],
     },
 )

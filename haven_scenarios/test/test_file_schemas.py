@@ -25,6 +25,7 @@ FILES = {
     "world": shipped("haven_scenarios", "worlds") + shipped("haven_sim", "worlds"),
     "scenario": shipped("haven_scenarios", "scenarios"),
     "study": shipped("haven_scenarios", "studies"),
+    "robot": shipped("haven_sim", "robots/catalogue"),
 }
 
 
@@ -65,3 +66,10 @@ def test_the_schema_and_our_reader_refuse_the_same_shape_errors(kind, change, ke
     bad.write_text(yaml.safe_dump(data))
     assert main(["validate", str(bad)]) == 2
     assert f"{bad}: {key}: " in capsys.readouterr().err
+
+
+def test_a_robot_file_that_extends_another_need_not_repeat_what_it_inherits(capsys):
+    validator = validator_of("robot", capsys)
+    assert not list(validator.iter_errors({"extends": "turtlebot2", "name": "my_bot", "height_m": 0.6}))
+    assert list(validator.iter_errors({"name": "my_bot", "height_m": 0.6}))  # (no extends: the whole robot)
+    assert list(validator.iter_errors({"extends": "turtlebot2", "wheels": 2}))

@@ -16,8 +16,9 @@
     haven study plan|run|status|report STUDY          a whole study: schedule, a participant's trials, progress, tables
     haven demo [--world W] [--rtf X]                  the same plus a node that drives a square
     haven validate FILE...                            check world and scenario files without starting anything
-    haven schema world|scenario|study|questionnaire   a file kind's JSON Schema, for YAML editors
+    haven schema world|scenario|study|questionnaire|robot   a file kind's JSON Schema, for YAML editors
     haven plugins                                     the registered plugins: KIND NAME PACKAGE
+    haven robots [NAME|FILE]                          the robots to choose from; one robot's figures and sources
 
 Discovery stays on this machine unless --network is given (study data stays local). Each group of
 subcommands lives in `haven_scenarios.tools.commands`.
@@ -40,11 +41,11 @@ class Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from haven_scenarios.tools.commands import batch_report, clients, files, recordings, study, suite, trial
+    from haven_scenarios.tools.commands import batch_report, clients, files, recordings, robots, study, suite, trial
 
     parser = Parser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    for group in (suite, clients, trial, batch_report, study, recordings, files):
+    for group in (suite, clients, trial, batch_report, study, recordings, files, robots):
         group.add(sub)
     return parser
 

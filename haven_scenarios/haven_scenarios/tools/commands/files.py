@@ -20,11 +20,12 @@ from haven_scenarios.tools.commands.common import fail
 from haven_sim.common import plugins
 from haven_sim.common.params import ParamsError, params_of
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
+from haven_sim.robots.robot_file import RobotFileModel
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import WorldFile, parse_world
 
 # The file kinds whose shape is a model of the schema layer (haven_sim/common/schema.py).
-SCHEMAS: dict[str, Any] = {"world": WorldFile, "scenario": ScenarioFile, "study": StudyFile, "questionnaire": LikertFile}
+SCHEMAS: dict[str, Any] = {"world": WorldFile, "scenario": ScenarioFile, "study": StudyFile, "questionnaire": LikertFile, "robot": RobotFileModel}
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -45,9 +46,13 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
 
 
 def schema_cmd(args: argparse.Namespace) -> int:
-    """The JSON Schema of a world, scenario, study or questionnaire file."""
+    """The JSON Schema of a world, scenario, study, questionnaire or robot file."""
+    from haven_scenarios.tools.commands.robots import file_schema
+
     model = SCHEMAS[args.kind]
-    out = {"$schema": "https://json-schema.org/draft/2020-12/schema", **model.model_json_schema(), "title": f"HAVEN {args.kind} file"}
+    schema = model.model_json_schema()
+    schema = file_schema(schema) if args.kind == "robot" else schema
+    out = {"$schema": "https://json-schema.org/draft/2020-12/schema", **schema, "title": f"HAVEN {args.kind} file"}
     print(json.dumps(out, indent=2))
     return 0
 
