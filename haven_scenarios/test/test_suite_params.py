@@ -31,7 +31,7 @@ def test_every_default_appears_once_in_haven_yaml():
 
 def test_an_edited_params_file_changes_batch_mode(tmp_path):
     f = tmp_path / "slow.yaml"
-    f.write_text("\"/**\":\n  ros__parameters:\n    rotate_speed_deg_s: 10.0\n")
+    f.write_text('"/**":\n  ros__parameters:\n    rotate_speed_deg_s: 10.0\n')
     scenario = load_scenario("shared_room")
     fast = run_trial(scenario, 1).metrics
     slow = run_trial(scenario, 1, suite=load_suite_config(f)).metrics

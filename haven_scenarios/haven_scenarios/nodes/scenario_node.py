@@ -19,6 +19,7 @@ from haven_sim.common import nodes, topics
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.runner import run_node
+from haven_sim.robots.robot_kind import resolve_robot
 from haven_viz.nodes.conversions import viz_specs
 
 END_ACK_TIMEOUT_S = 10.0
@@ -29,7 +30,8 @@ class ScenarioNode(ComponentNode):
         super().__init__(nodes.SCENARIO.name)
         config = self.declare_config(ScenarioNodeConfig)
         c = config.director
-        scenario = load_scenario(c.scenario)
+        # The robot of the `robot` parameter (params.yaml's "/**": what the whole suite runs).
+        scenario = load_scenario(c.scenario).for_robot(resolve_robot(config.robot.robot), config.robot.robot)
         self.director = TrialDirector(scenario, c.seed, c.rate_hz)
         self.wait_for = config.wait_for
         # /haven/cue_state (what the participants can perceive) is haven_viz's topic.

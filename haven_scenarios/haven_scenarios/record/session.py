@@ -6,6 +6,7 @@
         events.jsonl      /haven/events, one JSON object a line, written as they happen
         scenario.yaml     the scenario as run (teleoperated humans marked); its world is world.yaml
         world.yaml        a copy of the world
+        robot.yaml        the robot as run: its robot file, what it `extends` merged in (scenario.yaml names it)
         params.yaml       every node's parameters as run (a ROS parameter file)
         session.json      participant, condition, seed, versions, git commit, RMW, clock, outcome
         metrics.json      computed from the bag (so `haven report` gives the same numbers later)
@@ -45,12 +46,17 @@ from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario
 from haven_sim.common import atomic
 from haven_sim.common.events import EventKind
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.fields import DEFAULT
+from haven_sim.robots.robot_file import RobotError, merged
+from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.sim.world import World, WorldError
 from haven_viz.cues import CUES, CueToggles
 from haven_viz.world_markers import world_markers
 
 PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags", "mcap")
 SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = "scenario.yaml", "world.yaml", "params.yaml", "session.json", "metrics.json"
+ROBOT_FILE = "robot.yaml"
 EVENTS_FILE = "events.jsonl"
 # The write end of a pipe on which the recorder says it has the trial's end on every state stream
 # (nodes/recorder.py); `haven run` reads the other end (tools/recorded_trial.py).
@@ -130,6 +136,8 @@ def trial_record(participant: str, toggles: CueToggles, seed: int, scenario: Sce
         "cues": {c: toggles.on(c) for c in CUES},
         "seed": seed,
         "scenario": scenario.name,
+        "robot": scenario.robot_model,  # as given: a name or a robot file (robot.yaml: the copy)
+        "robot_name": scenario.robot.name,
         "humans": [h.id for h in scenario.world.humans],
         "teleoperated": [h.id for h in scenario.humans if h.teleoperated],
         **provenance(),
@@ -154,13 +162,38 @@ def _params(params: PersonParams) -> dict[str, Any]:
 
 
 def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
-    """The scenario (with world: world.yaml), a copy of its world, and every node's parameters."""
+    """The scenario (with world: world.yaml, robot: robot.yaml), copies of its world and its robot,
+    and every node's parameters."""
     data = yaml.safe_load(Path(scenario.source).read_text()) if scenario.source else {"name": scenario.name}
     data["world"] = WORLD_FILE
+    robot = robot_file_text(scenario.robot)
+    if robot is not None:  # (a robot made in code has no file: its name stays)
+        data["robot"] = {**(data.get("robot") or {}), "model": ROBOT_FILE}
+        atomic.write_text(folder / ROBOT_FILE, robot)
     data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps, **_params(h.params)} for h in scenario.humans]
     atomic.write_text(folder / WORLD_FILE, Path(scenario.world_path).read_text(encoding="utf-8"))
     atomic.write_text(folder / SCENARIO_FILE, yaml.safe_dump(data, sort_keys=False))
     atomic.write_text(folder / PARAMS_FILE, params_yaml)
+
+
+def robot_file_text(robot: RobotDescription) -> str | None:
+    """The robot's file as one self-contained robot file (what it extends merged in, its glTF
+    model by absolute path); None for a robot made in code."""
+    if not robot.source_file:
+        return None
+    data = merged(Path(robot.source_file), _extended, 0)
+    if robot.look.model:
+        data["look"] = {**data.get("look", {}), "model": robot.look.model}
+    header = f"# The robot as run in this session: {robot.source_file}, with what it extends merged in.\n"
+    return header + yaml.safe_dump(data, sort_keys=False)
+
+
+def _extended(name: str, where: str) -> dict[str, Any]:
+    """A registered robot's file data (what `extends: NAME` starts from)."""
+    source = resolve_robot(name).source_file
+    if not source:
+        raise RobotError(f"{where}: robot {name!r} was made in code, not from a file")
+    return merged(Path(source), _extended, 1)
 
 
 def session_scenario(folder: Path) -> tuple[Scenario | None, str]:
@@ -190,7 +223,7 @@ def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
     name, reason = str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED
     problems = [p for p in (note, problem) if p]
     try:
-        metrics = compute(rec, name, reason, world, declared_of(info))
+        metrics = compute(rec, name, reason, world, declared_of(info), scenario.robot if scenario is not None else DEFAULT)
     except Exception as e:  # noqa: BLE001 - whatever a recording no check foresaw makes of the metrics, the row says so
         metrics = {"scenario": name, "end_reason": reason, "duration_s": None, "valid": False, "invalid_reasons": []}
         problems.append(f"metrics could not be computed: {type(e).__name__}: {str(e)[:120]}")
@@ -200,6 +233,8 @@ def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
     for key in ("participant", "condition", "seed"):
         if key in info:
             metrics[key] = info[key]
+    if scenario is not None or "robot_name" in info:  # (its name: the design column)
+        metrics["robot"] = scenario.robot.name if scenario is not None else info["robot_name"]
     metrics["session"] = folder.name
     return metrics, world, rec
 

@@ -120,10 +120,12 @@ def _people(rows: Sequence[dict[str, Any]]) -> str:
 
 
 def group_summaries(specs: Sequence[TrialSpec], rows: Sequence[Row]) -> list[str]:
-    """One summary line per design group (scenario, condition, model, grid parameters; all seeds)."""
+    """One summary line per design group (scenario, condition, model, robot where it varies, grid
+    parameters; all seeds)."""
     groups: dict[str, list[Row]] = {}
+    skip = (*NOT_DESIGN, *(("robot",) if len({s.scenario.robot.name for s in specs}) <= 1 else ()))
     for spec, row in zip(specs, rows, strict=True):
-        label = ", ".join(f"{v}" if k == "scenario" else f"{k} {v}" for k, v in spec.columns().items() if k not in NOT_DESIGN)
+        label = ", ".join(f"{v}" if k == "scenario" else f"{k} {v}" for k, v in spec.columns().items() if k not in skip)
         groups.setdefault(label, []).append(row)
     lines = [f"{label}: {summary(g)}" for label, g in groups.items()]
     if len(lines) > MAX_SUMMARY_LINES:

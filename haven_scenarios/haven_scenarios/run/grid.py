@@ -4,7 +4,8 @@
 every combination, in a fixed order (scenario, then the axes as given, then the seed), each one a
 `TrialSpec` with its own seed, so a trial's row depends on nothing but its spec. `condition` takes
 the names `haven batch --condition` takes (cues joined by `+`), `model` the simulated models,
-`speed_mps` walking speeds; any other key is a field of the simulated participants' perception
+`speed_mps` walking speeds, `robot` robots (names or robot files: `--grid robot=turtlebot2,my_bot.yaml`,
+which replace the scenario's own); any other key is a field of the simulated participants' perception
 parameters (`HumanTask.params`), applied to every simulated (not teleoperated) human.
 """
 
@@ -14,15 +15,18 @@ import itertools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, fields, replace
+from pathlib import Path
 from typing import Any
 
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.scenario import MAX_WALKING_SPEED_MPS, HumanTask, Scenario
 from haven_sim.common import plugins
+from haven_sim.robots.robot_file import RobotError
+from haven_sim.robots.robot_kind import is_file_spec, resolve_robot
 from haven_viz.cues import CueToggles
 
-TASK_KEYS = ("condition", "model", "speed_mps")  # grid keys that are not perception parameters
+TASK_KEYS = ("condition", "model", "speed_mps", "robot")  # grid keys that are not perception parameters
 MAX_TRIALS = 1_000_000  # a sweep larger than this is a typo, not a study
 Point = Mapping[str, Any]  # one combination of the grid: key -> value
 
@@ -30,6 +34,16 @@ Point = Mapping[str, Any]  # one combination of the grid: key -> value
 def param_keys() -> tuple[str, ...]:
     """The fields of a participant's parameters (`HumanTask.params`: `PersonParams`, floats)."""
     return tuple(f.name for f in fields(PersonParams))
+
+
+def robot_spec(spec: str, option: str = "--robot") -> str:
+    """`spec` checked: a registered robot's name, or a robot file (made absolute: ROS nodes run in
+    their session folder); ValueError naming `option`, in one line, otherwise."""
+    try:
+        resolve_robot(spec)
+    except RobotError as e:
+        raise ValueError(f"{option}: {e}") from None
+    return str(Path(spec).expanduser().resolve()) if is_file_spec(spec) else spec
 
 
 def _number(key: str, text: str) -> float:
@@ -48,6 +62,8 @@ def _value(key: str, text: str) -> Any:
             return condition_name(parse_condition(text.split("+")))
         except ValueError as e:
             raise ValueError(f"--grid condition: {e}") from None
+    if key == "robot":
+        return robot_spec(text, "--grid robot")
     if key == "model":
         models = plugins.registry("participants")
         if text in models.left_out:
@@ -109,11 +125,20 @@ class TrialSpec:
     seed: int
 
     def columns(self) -> dict[str, Any]:
-        """The design columns: trial, scenario, condition, model, each grid parameter, seed."""
+        """The design columns: trial, scenario, condition, model, robot (its name), each grid
+        parameter, seed."""
         models = "+".join(dict.fromkeys(h.model for h in self.scenario.humans if not h.teleoperated))
-        own = {k: v for k, v in self.design if k not in ("condition", "model")}
-        condition = condition_name(self.toggles)
-        return {"trial": self.index, "scenario": self.scenario.name, "condition": condition, "model": models, **own, "seed": self.seed}
+        own = {k: v for k, v in self.design if k not in ("condition", "model", "robot")}
+        condition, robot = condition_name(self.toggles), self.scenario.robot.name
+        return {
+            "trial": self.index,
+            "scenario": self.scenario.name,
+            "condition": condition,
+            "model": models,
+            "robot": robot,
+            **own,
+            "seed": self.seed,
+        }
 
 
 def _human(task: HumanTask, point: Point) -> HumanTask:
@@ -130,6 +155,8 @@ def _human(task: HumanTask, point: Point) -> HumanTask:
 def apply(scenario: Scenario, point: Point) -> tuple[Scenario, CueToggles]:
     """The scenario with the grid point's participant settings, and the condition to show."""
     toggles = parse_condition(point["condition"].split("+") if "condition" in point else scenario.condition)
+    if "robot" in point:
+        scenario = scenario.for_robot(resolve_robot(point["robot"]), point["robot"])
     return replace(scenario, humans=tuple(_human(h, point) for h in scenario.humans)), toggles
 
 

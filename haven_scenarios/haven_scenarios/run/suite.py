@@ -117,6 +117,7 @@ TRIAL_SETS: Mapping[tuple[str, str], str] = {
 SIM_SETS: Mapping[tuple[str, str], str] = {
     **{(node.name, "world"): "--world" for node in (nodes.SIM, nodes.PLANNER, nodes.VIZ)},
     (nodes.SIM.name, "real_time_factor"): "--rtf",
+    (WILDCARD, "robot"): "--robot",
 }
 
 

@@ -40,6 +40,7 @@ from haven_scenarios.record.session import (
     write_inputs,
     write_json,
 )
+from haven_scenarios.run.grid import robot_spec
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
 from haven_scenarios.run.trial import check_seed, condition_name, parse_condition
 from haven_scenarios.study.participants import in_session
@@ -55,6 +56,7 @@ from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_enviro
 from haven_sim.common import nodes
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import ParamsError
+from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.runtime.lockstep import UNCAPPED_RTF
 from haven_sim.runtime.process import STOP_SIGNALS
 
@@ -145,6 +147,7 @@ class TrialRequest:
     questionnaires: tuple[str, ...] = ()  # in the pages after the trial: built-in names or Likert YAML files
     extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
     person: tuple[int, int] | None = None  # simulated people as a study participant: (person seed, position in the session)
+    robot: str | None = None  # a robot's name or a robot file (None: the scenario's robot: model, else turtlebot2)
 
 
 def plan_trial(request: TrialRequest) -> SessionPlan:
@@ -163,6 +166,9 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
             if why is not None:
                 raise ValueError(f"--allow {topic[:60]}: {why}")
         scenario = load_scenario(r.scenario, r.world)
+        if r.robot is not None:
+            spec = robot_spec(r.robot)
+            scenario = scenario.for_robot(resolve_robot(spec), spec)
         toggles = parse_condition(list(r.condition or scenario.condition))
         if r.person is not None:
             scenario = in_session(scenario, *r.person)

@@ -9,16 +9,17 @@ from pathlib import Path
 
 from haven_scenarios.record.report import report_csv, session_folders
 from haven_scenarios.run.batch import Progress, group_summaries, journal_path, run_batch
-from haven_scenarios.run.grid import TrialSpec, param_keys, parse_grid, parse_seeds, plan_sweep
+from haven_scenarios.run.grid import TrialSpec, param_keys, parse_grid, parse_seeds, plan_sweep, robot_spec
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.sweep import LOCAL, cores
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
-from haven_scenarios.tools.commands.common import SEED, bounded_int, existing_file, fail
+from haven_scenarios.tools.commands.common import SEED, add_robot_option, bounded_int, existing_file, fail
 
 MAX_WORKERS = 1024
 GRID_HELP = (
     "an axis of the sweep (repeat for more): condition=all,none,path_projection (cues joined by +), model=walker,yielder,blocker, "
+    "robot=turtlebot2,my_bot.yaml (names or robot files), "
     f"speed_mps=0.8,1.2 or a participant parameter{' (' + ', '.join(param_keys()) + ')' if param_keys() else ''}"
 )
 CLUSTER_HELP = "run on Dask: local (a LocalCluster of --workers processes) or a running scheduler's address (tcp://host:8786)"
@@ -37,6 +38,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     batch.add_argument("--seeds", default=None, help="the seeds, e.g. 0-9 or 1,4,7 (instead of --trials/--seed)")
     batch.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
     batch.add_argument("--grid", action="append", default=[], metavar="KEY=V1,V2", help=GRID_HELP)
+    add_robot_option(batch)
     batch.add_argument("--workers", type=bounded_int(1, MAX_WORKERS), default=None, help=f"worker processes (default: every core, {cores()} here)")
     batch.add_argument("--cluster", default=None, metavar="local|ADDRESS", help=CLUSTER_HELP)
     batch.add_argument("--out", default=None, help="CSV path (default: sessions/batch_<scenario>_<time>.csv)")
@@ -78,6 +80,10 @@ def _sweep(args: argparse.Namespace) -> list[TrialSpec]:
         if "condition" in axes:
             raise ValueError("give either --condition or --grid condition=..., not both")
         axes = {"condition": (condition_name(parse_condition(args.condition)),), **axes}
+    if args.robot is not None:
+        if "robot" in axes:
+            raise ValueError("give either --robot or --grid robot=..., not both")
+        axes = {**axes, "robot": (robot_spec(args.robot),)}
     if args.cluster is not None and args.cluster != LOCAL and "://" not in args.cluster:
         raise ValueError(f"--cluster: expected local or a scheduler address like tcp://host:8786, got {args.cluster!r}")
     return plan_sweep(scenarios, axes, _seeds(args))

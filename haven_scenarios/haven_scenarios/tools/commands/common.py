@@ -112,6 +112,13 @@ def add_suite_options(p: argparse.ArgumentParser) -> None:
     )
 
 
+ROBOT_HELP = "the robot: a name from `haven robots` or a robot YAML file (default: the scenario's robot: model, else turtlebot2)"
+
+
+def add_robot_option(p: argparse.ArgumentParser) -> None:
+    p.add_argument("--robot", default=None, metavar="NAME|FILE", help=ROBOT_HELP)
+
+
 def fail(message: str) -> int:
     """A usage or input error: one line, exit code 2."""
     print(f"haven: error: {message}", file=sys.stderr)

@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.outsiders import Declared, open_topics, suite_nodes
-from haven_scenarios.record.session import PARAMS_FILE, SCENARIO_FILE, WORLD_FILE
+from haven_scenarios.record.session import PARAMS_FILE, ROBOT_FILE, SCENARIO_FILE, WORLD_FILE
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.trial import scenario_suite
 from haven_scenarios.study.director import any_reader
@@ -61,9 +61,11 @@ class SessionPlan:
         return self.rtf if self.rtf is not None else (UNCAPPED_RTF if self.lockstep else 1.0)
 
     def config(self, folder: Path) -> SuiteConfig:
-        """Every node's parameters as run in a session folder (its own copies of the world and the
-        scenario, named relative to it): the file's, then what the scenario and the run fix."""
-        c = scenario_suite(replace(self.scenario, world_path=WORLD_FILE, source=SCENARIO_FILE), self.seed, self.toggles, self.base)
+        """Every node's parameters as run in a session folder (its own copies of the world, the
+        scenario and the robot, named relative to it): the file's, then what the scenario and the run fix."""
+        model = ROBOT_FILE if self.scenario.robot.source_file else self.scenario.robot_model  # (robot.yaml: the session's copy)
+        own = replace(self.scenario, world_path=WORLD_FILE, source=SCENARIO_FILE, robot_model=model)
+        c = scenario_suite(own, self.seed, self.toggles, self.base)
         sim = replace(c.sim, real_time_factor=self.real_time_factor, reset_allowed=False)  # (a recorded trial is not reset from outside)
         if self.web is not None:  # a first-person camera moves with every physics step, not at 20 Hz
             sim = replace(sim, humans_rate_hz=max(sim.humans_rate_hz, 1.0 / sim.sim.step_s))

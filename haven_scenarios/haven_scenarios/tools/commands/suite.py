@@ -7,8 +7,10 @@ import sys
 from pathlib import Path
 
 from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, check_name, new_session_dir, provenance, write_json
+from haven_scenarios.run.grid import robot_spec
 from haven_scenarios.run.suite import SIM_SETS, load_suite_config
 from haven_scenarios.tools.commands.common import (
+    add_robot_option,
     add_ros_options,
     add_suite_options,
     bounded_int,
@@ -45,6 +47,7 @@ def _suite_arguments(p: argparse.ArgumentParser, rtf: float) -> None:
     p.add_argument("--world", default="small_test", help="packaged world name or world YAML path (default: small_test)")
     p.add_argument("--rtf", type=positive, default=rtf, help=f"real-time factor of the simulation (default: {rtf:g})")
     add_suite_options(p)
+    add_robot_option(p)
     add_ros_options(p, suite=True)
 
 
@@ -59,6 +62,7 @@ def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
         "world": name,
         "world_file": WORLD_FILE,
         "real_time_factor": args.rtf,
+        "robot": args.robot,
         "without": list(args.without),
         "ros_domain_id": args.domain_id,
         **provenance(),
@@ -72,7 +76,8 @@ def run_suite(args: argparse.Namespace) -> int:
         world = str(resolve_world_path(args.world))
         load_world(world)
         load_suite_config(args.params_file, SIM_SETS)
-    except (WorldError, ParamsError) as e:
+        args.robot = robot_spec(args.robot) if args.robot is not None else None
+    except (WorldError, ParamsError, ValueError) as e:
         return fail(str(e))
     try:
         domain = claim(args, args.without)
@@ -83,7 +88,13 @@ def run_suite(args: argparse.Namespace) -> int:
 
 
 def _run_claimed(args: argparse.Namespace, world: str) -> int:
-    own = {nodes.SIM.key: {"world": world, "real_time_factor": args.rtf}, nodes.PLANNER.key: {"world": world}, nodes.VIZ.key: {"world": world}}
+    own: dict[str, dict[str, object]] = {
+        nodes.SIM.key: {"world": world, "real_time_factor": args.rtf},
+        nodes.PLANNER.key: {"world": world},
+        nodes.VIZ.key: {"world": world},
+    }
+    if args.robot is not None:  # (every node that has the `robot` parameter; the others ignore it)
+        own = {n.key: {**own.get(n.key, {}), "robot": args.robot} for n in nodes.COMPONENTS}
     specs = suite_specs(own, params_file(args), args.without)
     until, timeout = None, getattr(args, "duration", None)
     folder = None

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+from dataclasses import replace
 from pathlib import Path
 
 from haven_scenarios.record.session import (
@@ -23,6 +24,7 @@ from haven_scenarios.tools.commands.batch_report import CONDITION_HELP
 from haven_scenarios.tools.commands.common import (
     PORT,
     SEED,
+    add_robot_option,
     add_ros_options,
     add_suite_options,
     allowed_topic,
@@ -62,6 +64,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         "--world", default=None, help="play the scenario in this world (a packaged world name or a YAML with the rooms, gems and humans it names)"
     )
     add_suite_options(run)
+    add_robot_option(run)
     web = run.add_argument_group("in the browser")
     web.add_argument(
         "--web", action="store_true", help="serve the participants' first-person pages and the researcher console (the URLs are printed)"
@@ -128,6 +131,7 @@ def request_of(args: argparse.Namespace) -> TrialRequest:
         tuple(args.allow),
         web,
         tuple(args.questionnaire or ()),
+        robot=args.robot,
     )
 
 
@@ -161,5 +165,6 @@ def rerun_cmd(args: argparse.Namespace) -> int:
         check_name(scenario.name, f"{folder / SCENARIO_FILE}: name")
     except ValueError as e:
         return fail(str(e))
+    scenario = replace(scenario, robot_model=str(info.get("robot") or scenario.robot_model))  # (robot.yaml is the robot: the name as first given)
     plan = SessionPlan(scenario, toggles, seed, participant, base, rtf, free, {"rerun_of": folder.name}, without=without, allow=allow)
     return run_session(args, plan, Path(args.sessions) if args.sessions else folder.parent)
