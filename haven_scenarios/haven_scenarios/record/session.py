@@ -164,11 +164,13 @@ def _params(params: PersonParams) -> dict[str, Any]:
 def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
     """The scenario (with world: world.yaml, robot: robot.yaml), copies of its world and its robot,
     and every node's parameters."""
-    data = yaml.safe_load(Path(scenario.source).read_text()) if scenario.source else {"name": scenario.name}
+    data: dict[str, Any] = yaml.safe_load(Path(scenario.source).read_text()) if scenario.source else {"name": scenario.name}
     data["world"] = WORLD_FILE
     robot = robot_file_text(scenario.robot)
-    if robot is not None:  # (a robot made in code has no file: its name stays)
-        data["robot"] = {**(data.get("robot") or {}), "model": ROBOT_FILE}
+    section: dict[str, Any] = dict(data.get("robot") or {})
+    section["model"] = ROBOT_FILE if robot is not None else scenario.robot_model  # (a robot made in code has no file: its name)
+    data["robot"] = section
+    if robot is not None:
         atomic.write_text(folder / ROBOT_FILE, robot)
     data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps, **_params(h.params)} for h in scenario.humans]
     atomic.write_text(folder / WORLD_FILE, Path(scenario.world_path).read_text(encoding="utf-8"))
