@@ -21,13 +21,15 @@ from haven_scenarios.record.codebook import Codebook
 from haven_scenarios.record.session import METRICS_FILE, analyse, session_info
 from haven_scenarios.study.progress import TrialProgress
 from haven_scenarios.study.questionnaires import ANSWERS_FILE
+from haven_sim.robots.robot_kind import DEFAULT_ROBOT
 
 # The order columns: `order_position` the trial's place in the participant's session (practice
 # first), `block` the scenario block's place (0 for practice), `position_in_block`, and
 # `previous_condition` (the trial before in the same block; empty for a block's first); `sequence`
 # is the participant's sequence of the design (study/schedule.py): what a carry-over model needs.
+# `robot` is the robot's name: the study's robot factor (study/study_robots.py), else the scenario's.
 ORDER = ("sequence", "order_position", "block", "position_in_block", "previous_condition")
-DESIGN = ("participant", "trial_id", *ORDER, "practice", "scenario", "condition", "seed", "valid", "end_reason", "session")
+DESIGN = ("participant", "trial_id", *ORDER, "practice", "scenario", "condition", "robot", "seed", "valid", "end_reason", "session")
 LONG = (*DESIGN[:1], "human", *DESIGN[1:], "measure", "unit", "value")  # unit: as in codebook.csv
 NOT_MEASURES = ("seed", "valid")  # numbers in metrics.json that are design columns
 
@@ -120,6 +122,7 @@ def trial_results(p: TrialProgress) -> TrialResults | None:
         "practice": t.practice,
         "scenario": t.scenario,
         "condition": t.condition,
+        "robot": t.robot_name or str(info.get("robot_name", DEFAULT_ROBOT)),  # (a session from before robots: TurtleBot2)
         "seed": t.seed,
         "valid": valid,
         "end_reason": metrics.get("end_reason", info.get("end_reason", "")),

@@ -18,21 +18,13 @@ questionnaires: [nasa_tlx, godspeed]        # after each trial: built-ins or Lik
 consent: {file: consent.md}        # before anything: {text: ...} or a text file (relative to this file)
 before_study: [demographics, nars]  # before the first trial, after consent (study/instruments.py)
 after_study: [preference]           # after the last trial: `preference` ranks the conditions
+robots: [turtlebot2, turtlebot4]    # a design factor (default: the scenario's robot); robot_design: between | within
 ```
 
-Scenarios run as blocks, in the participant's counterbalanced block order (`blocks`, default
-`williams`: with two scenarios half the participants start with each, so no scenario is confounded
-with time in session); each block shows the conditions in the participant's counterbalanced order
-(repetitions repeat that order within the block); `assignment` says who takes which order
-(study/schedule.py). `practice` is one trial or a list, each `{scenario, cues}` (default: the
-shipped `practice` room with no cue, so no cue is shown before a no-cue trial and no study scenario
-is rehearsed) or `{scenario, condition}` naming one of the study's conditions. Seeds: `fixed` gives
-every trial `base`; `per_participant` gives participant k (from 0, in the list's order) `base + k`
-for all their trials, so conditions differ in the cue alone for each person; `per_trial` gives
-every trial of the study its own seed, `base + k * trials per participant + position - 1`.
-
-Errors name the file and the key in one line (`StudyError`), as scenario files do; the file is read
-with `haven_sim.common.yaml_file` (size, nesting and alias limits).
+Scenarios run as blocks, in the participant's counterbalanced block order (`blocks`), each showing
+the conditions in the participant's counterbalanced order; `assignment` says who takes which order
+(study/schedule.py); `robots`, the robot as a design factor (study/study_robots.py). Every key:
+docs/reference/files.md. Errors name the file and the key in one line (`StudyError`).
 """
 
 from __future__ import annotations
@@ -49,6 +41,7 @@ from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
+from haven_scenarios.study.study_robots import StudyRobot, parse_robots
 from haven_sim.common.schema import FileModel, Whole, check, checked, listing, mapping
 from haven_sim.common.yaml_file import file_label, read_yaml, short, shown_key
 
@@ -102,6 +95,8 @@ class Study:
     consent_text: str = ""  # "": no consent asked
     before_study: tuple[Any, ...] = ()  # as written, like questionnaires
     after_study: tuple[Any, ...] = ()  # ... and `preference`
+    robots: tuple[StudyRobot, ...] = ()  # the robot as a design factor (); none: the scenario's own
+    robot_design: str = "between"  # between | within (study/study_robots.py)
 
     def resolved_questionnaires(self) -> tuple[Questionnaire, ...]:
         return resolve(self.questionnaires, "questionnaires")
@@ -134,6 +129,7 @@ class Study:
             "questionnaires": list(self.questionnaires),
             "blocks": self.blocks if len(self.scenarios) > 1 else "none",  # (one scenario: one block, nothing to order)
             "assignment": {"policy": self.assignment, "seed": self.assignment_seed} if self.assignment == "random" else {"policy": self.assignment},
+            **({"robots": [[r.spec, r.name] for r in self.robots], "robot_design": self.robot_design} if self.robots else {}),
         }
 
 
@@ -232,6 +228,8 @@ class StudyFile(FileModel):
     consent: Consent | None = None
     before_study: Annotated[list[Any], listing("a list of questionnaires (demographics, nars, ...)", non_empty=False)] = []
     after_study: Annotated[list[Any], listing("a list of questionnaires (preference, ...)", non_empty=False)] = []
+    robots: Annotated[list[Any], listing("a list of robots: names (haven robots) or robot files", non_empty=False)] = []
+    robot_design: Literal["between", "within"] = "between"
 
 
 class _StudyParser:
@@ -277,6 +275,8 @@ class _StudyParser:
             consent_text=self.consent(f.consent),
             before_study=self.instruments(f.before_study, "before_study", ()),
             after_study=self.instruments(f.after_study, "after_study", (PREFERENCE,)),
+            robots=parse_robots(f.robots, self.source, StudyError),
+            robot_design=f.robot_design,
         )
 
     def scenario(self, value: Any, key: str) -> StudyScenario:

@@ -19,6 +19,10 @@ list's order) takes sequence k mod L; `random`, each successive set of L partici
 sequences in a random order (permuted blocks, as clinical trials randomise: balanced after every
 complete set), from `random.Random(seed)`, whose integer seeding and `sample` give the same
 numbers on every CPython since 3.2.
+
+Robots (study/study_robots.py): `within`, the robots' orders (by `counterbalancing`) join the
+combination: L is then the least common multiple of the three row counts, sequence s running robot
+order s mod R; `between`, participant k meets robot (k // L) mod R.
 """
 
 from __future__ import annotations
@@ -30,6 +34,7 @@ from dataclasses import asdict, dataclass
 from typing import Any
 
 from haven_scenarios.study.protocol import Study
+from haven_scenarios.study.study_robots import StudyRobot
 
 
 def williams(n: int) -> list[list[int]]:
@@ -68,9 +73,24 @@ def condition_orders(study: Study) -> list[list[int]]:
     return orders(study.counterbalancing, len(study.conditions))
 
 
+def robot_orders(study: Study) -> list[list[int]]:
+    """The orders of the robots each participant meets (`within`); one robot each otherwise."""
+    return orders(study.counterbalancing, len(study.robots)) if study.robot_design == "within" and study.robots else [[0]]
+
+
 def sequence_count(study: Study) -> int:
     """L: the sequences of the combined design (participants complete it in multiples of L)."""
-    return math.lcm(len(block_orders(study)), len(condition_orders(study)))
+    return math.lcm(len(block_orders(study)), len(condition_orders(study)), len(robot_orders(study)))
+
+
+def participant_robots(study: Study, k: int, sequence: int) -> list[StudyRobot | None]:
+    """The robots participant k meets, in order (None: the scenario's own robot)."""
+    if not study.robots:
+        return [None]
+    if study.robot_design == "within":
+        rows = robot_orders(study)
+        return [study.robots[i] for i in rows[sequence % len(rows)]]
+    return [study.robots[(k // sequence_count(study)) % len(study.robots)]]
 
 
 def sequences(study: Study) -> list[int]:
@@ -110,13 +130,25 @@ def design_note(study: Study) -> str:
         text += "and each condition order equally often"
         if n < b * c:
             text += f" (the two are paired, not crossed: every block order meets every condition order only in a multiple of {b * c})"
-    if n > 1:
-        text += f"; {p} participant(s) " + ("complete it" if p % n == 0 else f"do not complete it: use a multiple of {n}")
+    text += _robots_note(study, n)
+    full = n * (len(study.robots) if study.robots and study.robot_design == "between" else 1)
+    if full > 1:
+        text += f"; {p} participant(s) " + ("complete it" if p % full == 0 else f"do not complete it: use a multiple of {full}")
     if study.assignment == "random":
         text += f". Assignment: random (seed {study.assignment_seed}), each set of {n} participants takes the {n} sequences in a shuffled order"
     else:
         text += f". Assignment: by id, participant k in the list takes sequence k mod {n}"
     return text + "."
+
+
+def _robots_note(study: Study, n: int) -> str:
+    if not study.robots:
+        return ""
+    names = ", ".join(r.name for r in study.robots)
+    if study.robot_design == "within":
+        rows = len(robot_orders(study))
+        return f". Robots (within): every participant meets {names}, one block of trials each, in one of {rows} robot orders"
+    return f". Robots (between): each set of {n} participants meets one robot, in turn {names}"
 
 
 def sequence_orders(study: Study) -> list[tuple[list[str], list[str]]]:
@@ -156,6 +188,8 @@ class PlannedTrial:
     block: int = 0  # the scenario block's place in the participant's order, 1..; 0 for practice
     position_in_block: int = 1  # 1.. within the block (practice: within the practice trials)
     previous_condition: str = ""  # the condition of the trial before in the same block; "" for the first
+    robot: str = ""  # `haven run --robot`: the study's robot (a name or a file); "": the scenario's own
+    robot_name: str = ""  # its name ("": the scenario's own)
 
     @property
     def folder(self) -> str:
@@ -169,7 +203,8 @@ class PlannedTrial:
 
 
 def trials_per_participant(study: Study) -> int:
-    return len(study.practice) + len(study.scenarios) * len(study.conditions) * study.repetitions
+    robots = len(study.robots) if study.robot_design == "within" and study.robots else 1
+    return len(study.practice) + len(study.scenarios) * len(study.conditions) * study.repetitions * robots
 
 
 def _seed(study: Study, k: int, position: int) -> int:
@@ -181,26 +216,38 @@ def _seed(study: Study, k: int, position: int) -> int:
 
 
 def _trials(study: Study, k: int, sequence: int) -> list[PlannedTrial]:
-    """Participant k's trials: practice, then each scenario's block (in the sequence's block
-    order) of conditions in the sequence's condition order, repeated `repetitions` times."""
-    blocks, conditions = block_orders(study), condition_orders(study)
-    order = [study.conditions[i] for i in conditions[sequence % len(conditions)]]
+    """Participant k's trials: practice (with their first robot), then for each of their robots
+    each scenario's block (in the sequence's block order) of conditions in the sequence's
+    condition order, repeated `repetitions` times."""
+    robots = participant_robots(study, k, sequence)
+    spec, name = (robots[0].spec, robots[0].name) if robots[0] else ("", "")
     participant, out = study.participants[k], list[PlannedTrial]()
     for i, p in enumerate(study.practice, 1):
         c = p.condition
         tid = f"practice{i}-{p.scenario.name}-{c.name}"
         out.append(PlannedTrial(participant, i, tid, p.scenario.name, p.scenario.spec, c.name, c.cues, _seed(study, k, i), True, 0,
-                                sequence + 1, 0, i, out[-1].condition if out else ""))  # fmt: skip
-    for b, s in enumerate((study.scenarios[i] for i in blocks[sequence % len(blocks)]), 1):
+                                sequence + 1, 0, i, out[-1].condition if out else "", spec, name))  # fmt: skip
+    for robot in robots:
+        _blocks(study, k, sequence, robot, out)
+    return out
+
+
+def _blocks(study: Study, k: int, sequence: int, robot: StudyRobot | None, out: list[PlannedTrial]) -> None:
+    """The scenario blocks with one robot, appended to `out` (block numbers go on across robots)."""
+    blocks, conditions = block_orders(study), condition_orders(study)
+    order = [study.conditions[i] for i in conditions[sequence % len(conditions)]]
+    spec, name = (robot.spec, robot.name) if robot else ("", "")
+    tag = f"-{robot.name}" if robot and study.robot_design == "within" else ""
+    first_block = max((t.block for t in out), default=0)
+    for b, s in enumerate((study.scenarios[i] for i in blocks[sequence % len(blocks)]), first_block + 1):
         previous = ""
         for rep in range(1, study.repetitions + 1):
             for c in order:
                 position, suffix = len(out) + 1, f"-r{rep}" if study.repetitions > 1 else ""
                 in_block = (rep - 1) * len(order) + order.index(c) + 1
-                out.append(PlannedTrial(participant, position, f"{s.name}-{c.name}{suffix}", s.name, s.spec, c.name, c.cues,
-                                        _seed(study, k, position), False, rep, sequence + 1, b, in_block, previous))  # fmt: skip
+                out.append(PlannedTrial(study.participants[k], position, f"{s.name}-{c.name}{suffix}{tag}", s.name, s.spec, c.name, c.cues,
+                                        _seed(study, k, position), False, rep, sequence + 1, b, in_block, previous, spec, name))  # fmt: skip
                 previous = c.name
-    return out
 
 
 def participant_schedule(study: Study, participant: str) -> list[PlannedTrial]:

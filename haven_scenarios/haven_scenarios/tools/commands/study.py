@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -15,6 +16,7 @@ from haven_scenarios.record.study_summary import SUMMARY, draw, panels, summary_
 from haven_scenarios.record.study_table import DESIGN, LONG, TrialResults, long_rows, trial_results, wide_rows
 from haven_scenarios.study.progress import TrialProgress, differences, progress, stored
 from haven_scenarios.study.protocol import Study, StudyError, load_study, study_names
+from haven_scenarios.study.questionnaires import Questionnaire
 from haven_scenarios.study.schedule import (
     PlannedTrial,
     design_note,
@@ -99,6 +101,10 @@ def plan_rows(trials: list[PlannedTrial]) -> list[list[str]]:
         ]  # fmt: skip
         for t in trials
     ]
+    if any(t.robot_name for t in trials):  # (the robot as a design factor: after the condition)
+        head.insert(8, "robot")
+        for row, t in zip(rows, trials, strict=True):
+            row.insert(8, t.robot_name or "-")
     return [head, *rows]
 
 
@@ -215,9 +221,8 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         codebook.write(out, [*book.entries(long), *(codebook.participants(instruments) if instruments else ())])
         write_table(out / "study_wide.csv", wide_rows(results), DESIGN)
         conditions = [c.name for c in study.conditions]
-        write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
+        picture = _summaries(results, conditions, questionnaires, out, study.name)
         write_table(out / "order_effects.csv", order_rows(results, conditions), ORDER_EFFECTS)
-        picture = draw(results, conditions, questionnaires, out / "summary.png", f"{study.name}: {_counts(results)}")
         said = summary_line(write_participants(out, root, study.participants, instruments), instruments) if instruments else ""
         models = model_rows(results, [(p.measure, p.per_person) for p in panels(results, questionnaires)], conditions)
         write_table(out / "mixed_models.csv", models, MIXED)
@@ -226,6 +231,22 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
     old = stored(root)
     changed = old is not None and bool(differences(old["study"], study.describe()))
     return Report(out, len(results), len(done), _counts(results), bool(picture), changed, said, fit_counts(models))
+
+
+def _summaries(results: list[TrialResults], conditions: list[str], questionnaires: Sequence[Questionnaire], out: Path, name: str) -> bool:
+    """summary.csv and summary.png; when the robot varies, per robot: summary.csv with a `robot`
+    column first, and summary_<robot>.png each. Whether a picture was drawn."""
+    robots = list(dict.fromkeys(str(r.design["robot"]) for r in results))
+    if len(robots) == 1:
+        write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
+        return draw(results, conditions, questionnaires, out / "summary.png", f"{name}: {_counts(results)}") is not None
+    rows, drawn = [], False
+    for robot in robots:
+        mine = [r for r in results if r.design["robot"] == robot]
+        rows += [{"robot": robot, **row} for row in summary_rows(mine, conditions)]
+        drawn |= draw(mine, conditions, questionnaires, out / f"summary_{robot}.png", f"{name}, robot {robot}: {_counts(mine)}") is not None
+    write_table(out / "summary.csv", rows, ("robot", *SUMMARY))
+    return drawn
 
 
 def report_cmd(args: argparse.Namespace) -> int:

@@ -35,6 +35,7 @@ from haven_scenarios.tools.commands.study_instruments import ask_in_browser, ord
 from haven_scenarios.tools.locks import FileLock, Locked
 from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_sim.common.params import ParamsError
+from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.runtime.process import STOP_SIGNALS
 
 INTERRUPTED = 130
@@ -98,6 +99,7 @@ def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]
         questionnaires=tuple(questionnaires) if args.web else (),
         extra=study_extra(study.name, trial) if study else {},
         person=person_of(study, trial) if study else None,
+        robot=trial.robot or None,
     )
 
 
@@ -132,7 +134,10 @@ def run_batch_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, study: 
 
 def batch_session(trial: PlannedTrial, sessions: Path, study: Study, params_file: str | None) -> None:
     """The trial as a batch session under `sessions` (`--batch`; `haven study power` runs its pool so)."""
-    scenario = in_session(load_scenario(trial.scenario_spec), *person_of(study, trial))
+    scenario = load_scenario(trial.scenario_spec)
+    if trial.robot:  # (the study's robot factor; otherwise the scenario's own)
+        scenario = scenario.for_robot(resolve_robot(trial.robot), trial.robot)
+    scenario = in_session(scenario, *person_of(study, trial))
     extra = study_extra(study.name, trial)
     run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(params_file, TRIAL_SETS))
 
