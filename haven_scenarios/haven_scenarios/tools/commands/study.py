@@ -198,7 +198,7 @@ class Report:
     trials_done: int
     trials: int
     counts: str  # participants, trials, practice trials, flagged not valid
-    picture: bool
+    picture: str  # the summary picture(s) drawn ("": none)
     study_changed: bool  # the study file changed since the first run
     participants: str = ""  # participants.csv's summary line ("" when the study asks no instruments)
     models: tuple[int, int, int] = (0, 0, 0)  # mixed models singular, not converged, fitted (mixed_models.csv)
@@ -230,23 +230,24 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         raise ValueError(f"--out {out}: cannot write the report: {e.strerror or e}") from None
     old = stored(root)
     changed = old is not None and bool(differences(old["study"], study.describe()))
-    return Report(out, len(results), len(done), _counts(results), bool(picture), changed, said, fit_counts(models))
+    return Report(out, len(results), len(done), _counts(results), picture, changed, said, fit_counts(models))
 
 
-def _summaries(results: list[TrialResults], conditions: list[str], questionnaires: Sequence[Questionnaire], out: Path, name: str) -> bool:
+def _summaries(results: list[TrialResults], conditions: list[str], questionnaires: Sequence[Questionnaire], out: Path, name: str) -> str:
     """summary.csv and summary.png; when the robot varies, per robot: summary.csv with a `robot`
-    column first, and summary_<robot>.png each. Whether a picture was drawn."""
+    column first, and summary_<robot>.png each. The pictures drawn ("": none)."""
     robots = list(dict.fromkeys(str(r.design["robot"]) for r in results))
     if len(robots) == 1:
         write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
-        return draw(results, conditions, questionnaires, out / "summary.png", f"{name}: {_counts(results)}") is not None
-    rows, drawn = [], False
+        return "summary.png" if draw(results, conditions, questionnaires, out / "summary.png", f"{name}: {_counts(results)}") else ""
+    rows, drawn = [], []
     for robot in robots:
         mine = [r for r in results if r.design["robot"] == robot]
         rows += [{"robot": robot, **row} for row in summary_rows(mine, conditions)]
-        drawn |= draw(mine, conditions, questionnaires, out / f"summary_{robot}.png", f"{name}, robot {robot}: {_counts(mine)}") is not None
+        if draw(mine, conditions, questionnaires, out / f"summary_{robot}.png", f"{name}, robot {robot}: {_counts(mine)}") is not None:
+            drawn.append(f"summary_{robot}.png")
     write_table(out / "summary.csv", rows, ("robot", *SUMMARY))
-    return drawn
+    return ", ".join(drawn)
 
 
 def report_cmd(args: argparse.Namespace) -> int:
@@ -258,7 +259,7 @@ def report_cmd(args: argparse.Namespace) -> int:
         return fail(str(e))
     out = report.folder
     print(f"haven: study {study.name}: {report.trials_done}/{report.trials} trials done; {report.counts}")
-    picture = ", summary.png" if report.picture else " (no measures to draw)"
+    picture = f", {report.picture}" if report.picture else " (no measures to draw)"
     print(f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), study_wide.csv, summary.csv, order_effects.csv{picture}")
     if report.participants:
         print(f"haven: wrote {out / PARTICIPANTS_CSV}: {report.participants}")
