@@ -13,6 +13,7 @@ import time
 from datetime import datetime
 
 import pytest
+import yaml
 from hunav_reference import metrics as hunav_reference
 from independent_scorer import score
 from mcap.reader import make_reader
@@ -22,6 +23,7 @@ from rosgraph_msgs.msg import Clock
 
 from haven_scenarios.run.trial import parse_condition, run_trial
 from haven_scenarios.study.scenario import load_scenario
+from haven_sim.robots.robot_kind import resolve_robot
 
 pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
@@ -34,6 +36,8 @@ robot: {order: nearest, battery: {mode: on_arrival, capacity_m: 100.0}}
 humans: [{id: h1, model: walker, speed_mps: 0.8}]
 dwell_time_s: 3.0
 """
+
+SLOW_BOT = "name: slow_bot\ntitle: a slower TurtleBot2\nextends: turtlebot2\nmotion: {cruise_speed_mps: 0.25}\n"
 
 
 def mcap_counts(bag_dir):
@@ -94,7 +98,11 @@ def assert_same_trial(a, b, rel=0.0):
 
 def test_lockstep_trial_is_lossless_reproducible_rerunnable_and_equal_to_batch(ros, tmp_path):
     condition = ["turn_signals", "path_projection"]
-    r = haven_run(ros, "run", "shared_room", "--seed", "0", "--participant", "p07", "--condition", *condition, "--sessions", str(tmp_path / "a"))
+    # A user's robot file outside the package, given relative to where haven runs (the nodes run in the session folder).
+    (tmp_path / "slow.yaml").write_text(SLOW_BOT)
+    robot = os.path.relpath(tmp_path / "slow.yaml")
+    args = ["shared_room", "--seed", "0", "--participant", "p07", "--condition", *condition, "--robot", robot]
+    r = haven_run(ros, "run", *args, "--sessions", str(tmp_path / "a"))
     assert "haven: completed" in r.stdout and "lockstep clock" in r.stdout
     folder = only_session(tmp_path / "a")
     names = {p.name for p in folder.iterdir()}
@@ -103,6 +111,10 @@ def test_lockstep_trial_is_lossless_reproducible_rerunnable_and_equal_to_batch(r
     assert (session["participant"], session["condition"], session["seed"], session["clock"]) == ("p07", "path_projection+turn_signals", 0, "lockstep")
     assert session["versions"]["haven_scenarios"] and session["end_reason"] == "completed" and session["valid"] is True
     assert session["rmw"] and "git_commit" in session and session["params_file"] == "params.yaml"
+    assert (session["robot"], session["robot_name"]) == (str(tmp_path / "slow.yaml"), "slow_bot")
+    kept = yaml.safe_load((folder / "robot.yaml").read_text())  # (the file as run, what it extends merged in)
+    assert kept["name"] == "slow_bot" and "extends" not in kept and kept["motion"]["cruise_speed_mps"] == 0.25
+    assert "robot: robot.yaml" in (folder / "params.yaml").read_text() and "model: robot.yaml" in (folder / "scenario.yaml").read_text()
     metadata = (folder / "bag" / "metadata.yaml").read_text()
     assert "version: 9" in metadata and "storage_identifier: mcap" in metadata
     counts = mcap_counts(folder / "bag")
@@ -117,8 +129,10 @@ def test_lockstep_trial_is_lossless_reproducible_rerunnable_and_equal_to_batch(r
     assert first["thought_bubble_shown_s"] == 0  # the bubble was off in this condition
     assert_independent_score_agrees(folder)
 
-    # Batch mode, same scenario, seed and condition: the same trial.
-    batch = run_trial(load_scenario("shared_room"), 0, parse_condition(condition)).metrics
+    assert first["robot"] == "slow_bot"
+    # Batch mode, same scenario, robot, seed and condition: the same trial.
+    scenario = load_scenario("shared_room").for_robot(resolve_robot(str(tmp_path / "slow.yaml")))
+    batch = run_trial(scenario, 0, parse_condition(condition)).metrics
     assert_same_trial(first, batch, rel=0.01)
 
     # The session again, from its folder alone, moved elsewhere: the same trial once more.
@@ -135,6 +149,7 @@ def test_lockstep_trial_is_lossless_reproducible_rerunnable_and_equal_to_batch(r
     assert rep.returncode == 0, rep.stderr
     row = next(csv.DictReader(out.open()))
     assert float(row["min_human_centre_distance_m"]) == first["min_human_centre_distance_m"] and row["robot_gem_order"] == first["robot_gem_order"]
+    assert row["robot"] == "slow_bot"
 
 
 @pytest.mark.parametrize("rtf", ["1", "5", "10"])

@@ -114,7 +114,7 @@ class Trial:
         self.loop.run_until(lambda: self.director.ended is not None, limit)
         reason = self.director.ended or EndReason.INTERRUPTED
         metrics = compute(self.recording, self.scenario.name, reason, self.scenario.world, robot=self.scenario.robot)
-        metrics.update(seed=self.seed, condition=condition_name(self.toggles))
+        metrics.update(seed=self.seed, condition=condition_name(self.toggles), robot=self.scenario.robot.name)
         return TrialResult(self.scenario.name, self.seed, condition_name(self.toggles), reason, metrics, self.recording)
 
 
