@@ -15,7 +15,7 @@ from haven_scenarios.record.session import (
     session_info,
     session_scenario,
 )
-from haven_scenarios.run.suite import load_suite_config
+from haven_scenarios.run.suite import SuiteConfig, checked_suite_config, load_suite_config
 from haven_scenarios.run.trial import check_seed
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import scenario_names
@@ -33,6 +33,9 @@ from haven_scenarios.tools.commands.common import (
 )
 from haven_scenarios.tools.commands.session_plan import SessionPlan
 from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
+from haven_sim.common.params import load_params_file
+from haven_sim.common.yaml_file import file_label
+from haven_sim.robots.robot_kind import is_file_spec
 from haven_viz.cues import CUES, Toggles
 
 
@@ -143,6 +146,20 @@ def run_cmd(args: argparse.Namespace) -> int:
     return run_session(args, plan, Path(args.sessions))
 
 
+def session_params(folder: Path) -> SuiteConfig:
+    """The session's params.yaml as a configuration, read from anywhere: its robot file (robot.yaml)
+    is named relative to the folder, where the nodes ran."""
+    path = folder / PARAMS_FILE
+    if not path.exists():
+        return load_suite_config(None)
+    params = load_params_file(path)
+    for section, values in params.items():
+        robot = values.get("robot")
+        if isinstance(robot, str) and is_file_spec(str(folder / robot)) and not Path(robot).is_absolute():
+            params[section] = {**values, "robot": str(folder.resolve() / robot)}
+    return checked_suite_config(params, file_label(path))
+
+
 def rerun_cmd(args: argparse.Namespace) -> int:
     """The session again, from its own files: scenario, world, parameters, seed, condition."""
     folder: Path = args.session
@@ -152,7 +169,7 @@ def rerun_cmd(args: argparse.Namespace) -> int:
         return fail(f"{folder}: cannot run it again: {problem or 'no readable session.json'}")
     free = info.get("clock") == "free-running"
     try:
-        base = load_suite_config(folder / PARAMS_FILE if (folder / PARAMS_FILE).exists() else None)
+        base = session_params(folder)
         toggles = Toggles(**{c: bool(v) for c, v in dict(info.get("cues", {})).items() if c in CUES})
         seed = check_seed(info.get("seed", 0))
         rtf = args.rtf if args.rtf is not None else (float(info.get("real_time_factor") or 1.0) if free else None)
