@@ -61,7 +61,15 @@ def test_the_sweep_is_every_combination_and_sets_only_the_simulated_participants
         ("shared_room", "none", 4),
         ("shared_room", "none", 5),
     ]
-    assert specs[0].columns() == {"trial": 0, "scenario": "shared_room", "condition": "all", "model": "yielder", "speed_mps": 0.7, "seed": 4}
+    assert specs[0].columns() == {
+        "trial": 0,
+        "scenario": "shared_room",
+        "condition": "all",
+        "model": "yielder",
+        "robot": "turtlebot2",
+        "speed_mps": 0.7,
+        "seed": 4,
+    }
     h1, h2 = specs[4].scenario.humans
     assert (h1.model, h1.speed_mps) == ("yielder", 0.7) and h2 == mixed.humans[1]  # the teleoperated one is left alone
     assert specs[2].toggles != specs[0].toggles
@@ -138,7 +146,16 @@ def test_a_participant_parameter_is_a_grid_axis_set_on_every_simulated_person():
     room = load_scenario("shared_room")
     specs = plan_sweep([room], {"reaction_s": (0.3, 2.0), "fov_deg": (60.0,)}, (0,))
     assert [(s.scenario.humans[0].params.reaction_s, s.scenario.humans[0].params.fov_deg) for s in specs] == [(0.3, 60.0), (2.0, 60.0)]
-    columns = {"trial": 1, "scenario": "shared_room", "condition": "all", "model": "walker", "reaction_s": 2.0, "fov_deg": 60.0, "seed": 0}
+    columns = {
+        "trial": 1,
+        "scenario": "shared_room",
+        "condition": "all",
+        "model": "walker",
+        "robot": "turtlebot2",
+        "reaction_s": 2.0,
+        "fov_deg": 60.0,
+        "seed": 0,
+    }
     assert specs[1].columns() == columns
     with pytest.raises(ValueError, match=r"^--grid: fov_deg must be within \(0, 360\], got 400$"):
         plan_sweep([room], {"fov_deg": (400.0,)}, (0,))
