@@ -14,6 +14,7 @@ import yaml
 from haven_scenarios.record.session import ROBOT_FILE, session_scenario, write_inputs
 from haven_scenarios.run.grid import parse_grid, plan_sweep
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
+from haven_scenarios.study.progress import ran_otherwise
 from haven_scenarios.study.protocol import StudyError, load_study
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.study.schedule import schedule
@@ -107,6 +108,9 @@ def test_a_study_plans_the_robot_between_or_within_participants(tmp_path: Path, 
     assert [t.robot_name for t in p01] == ["turtlebot2"] * 2 + ["slow_bot"] * 2  # a block of trials per robot,
     assert [t.robot_name for t in p02] == ["slow_bot"] * 2 + ["turtlebot2"] * 2  # in counterbalanced order
     assert [t.block for t in p01] == [1, 1, 2, 2] and p01[0].trial_id == "shared_room-all-turtlebot2"
+    ran = {"scenario": "shared_room", "condition": between[2].condition, "seed": between[2].seed, "robot_name": "turtlebot2"}
+    assert ran_otherwise(ran, between[2]) == "ran with robot turtlebot2; the schedule now says robot slow_bot"  # (not done: run again)
+    assert ran_otherwise({**ran, "robot_name": "slow_bot"}, between[2]) is None
     plain = schedule(load_study(study_file(tmp_path, robots=[])))
     assert {(t.robot, t.robot_name) for t in plain} == {("", "")} and plain[0].trial_id == "shared_room-all"
     for robots, says in (

@@ -72,9 +72,12 @@ def trial_dir(root: Path, trial: PlannedTrial) -> Path:
 
 
 def ran_otherwise(info: dict[str, Any], trial: PlannedTrial) -> str | None:
-    """How a session ran other than the trial is planned (scenario, condition, seed), if it did."""
+    """How a session ran other than the trial is planned (scenario, condition, seed, the study's
+    robot), if it did."""
     ran = (info.get("scenario"), info.get("condition"), info.get("seed"))
     planned = (trial.scenario, condition_name(parse_condition(trial.cues)), trial.seed)
+    if trial.robot_name and info.get("robot_name") != trial.robot_name:
+        return f"ran with robot {info.get('robot_name') or 'turtlebot2'}; the schedule now says robot {trial.robot_name}"
     if ran == planned:
         return None
     return f"ran as {ran[0]}, condition {ran[1]}, seed {ran[2]}; the schedule now says {planned[0]}, condition {planned[1]}, seed {planned[2]}"
