@@ -1,0 +1,151 @@
+"""Every robot as the participant page draws it, in headless Chromium: each registered robot (the
+catalogue and any lab's), a lab's robot file with a polygon footprint and an aerial one, each drawn
+from its description's look at real size, seen from 2.5 m (a drone hovering at its pad's 1.5 m).
+One page load for them all (the page swaps robots); no ROS: the front door serves the page alone.
+
+`HAVEN_ROBOT_PICTURES=docs/images/robots` writes the pictures the docs show (robot-pictures.md).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import socket
+from io import BytesIO
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from haven_scenarios.study.scenario import load_scenario
+from haven_scenarios.web.access import roles, urls
+from haven_scenarios.web.front_door import FrontDoor
+from haven_scenarios.web.page_config import PageSettings, page_config, robot_view
+from haven_sim.common import plugins
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.robot_kind import resolve_robot
+
+pytestmark = [pytest.mark.browser]
+PAGE_TIMEOUT_MS = 90_000  # software rendering on a loaded 2-core machine is slow to start
+VIEW = {"width": 640, "height": 480}
+CROP = {"width": 320, "height": 240}  # the docs' pictures: the middle of the view, around the robot
+DISTANCE_M = 2.5  # the participant's eye from the robot's centre
+HOVER_M = 1.5  # the aerial robot is pictured hovering this high
+SPECK = {"shape": "sphere", "size": [0.001] * 3, "at": [0, 0, 0], "rpy": [0, 0, 0], "colour": "#dfe6ee", "spin": False}  # an empty scene
+ROBOT_AT = (6.0, 2.0)  # in the hallway, clear of its walls
+
+POLYGON_ROBOT = """extends: turtlebot2
+name: lab_cart
+title: A lab's cart (a polygon footprint)
+footprint: {polygon: [[0.35, 0.25], [-0.35, 0.25], [-0.35, -0.25], [0.35, -0.25]]}
+height_m: 0.9
+look:
+  primitives:
+    - {shape: box, size: [0.7, 0.5, 0.25], at: [0, 0, 0.2], colour: "#c0392b"}
+    - {shape: box, size: [0.1, 0.4, 0.6], at: [-0.3, 0, 0.6], colour: "#7f8c8d"}
+    - {shape: cylinder, size: [0.07, 0.07, 0.04], at: [0.25, 0.27, 0.07], rpy: [1.5708, 0, 0], colour: "#111111", spin: true}
+    - {shape: cylinder, size: [0.07, 0.07, 0.04], at: [0.25, -0.27, 0.07], rpy: [1.5708, 0, 0], colour: "#111111", spin: true}
+"""
+AERIAL_ROBOT = """extends: turtlebot2
+name: lab_drone
+title: A lab's quadrotor
+kinematics: aerial
+footprint: {radius_m: 0.2}
+height_m: 0.1
+flight: {cruise_height_m: 1.5, climb_rate_mps: 0.5}
+look:
+  primitives:
+    - {shape: box, size: [0.12, 0.12, 0.05], at: [0, 0, 0.05], colour: "#e67e22"}
+    - {shape: box, size: [0.36, 0.02, 0.02], at: [0, 0, 0.06], rpy: [0, 0, 0.7854], colour: "#333333"}
+    - {shape: box, size: [0.36, 0.02, 0.02], at: [0, 0, 0.06], rpy: [0, 0, -0.7854], colour: "#333333"}
+    - {shape: torus, size: [0.07, 0.008, 0], at: [0.127, 0.127, 0.08], colour: "#222222", spin: true}
+    - {shape: torus, size: [0.07, 0.008, 0], at: [-0.127, 0.127, 0.08], colour: "#222222", spin: true}
+    - {shape: torus, size: [0.07, 0.008, 0], at: [-0.127, -0.127, 0.08], colour: "#222222", spin: true}
+    - {shape: torus, size: [0.07, 0.008, 0], at: [0.127, -0.127, 0.08], colour: "#222222", spin: true}
+"""
+
+
+@pytest.fixture(scope="module")
+def browser():  # type: ignore[no-untyped-def]
+    path = os.environ.get("HAVEN_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
+    if not path or not os.path.exists(path):
+        pytest.skip("no Chromium here (Debian's chromium package; scripts/setup.sh installs it when run as root): browser tests skipped")
+    playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
+    with playwright.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=path, args=["--use-angle=swiftshader", "--enable-unsafe-swiftshader"])
+        yield b
+        b.close()
+
+
+def free_port() -> int:
+    with socket.socket() as s:  # nothing listens there: the page's socket fails, the page stays
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+def robots(tmp_path: Path) -> list[RobotDescription]:
+    """Every registered robot, then a lab's two files."""
+    found = [resolve_robot(name) for name in plugins.registry("robots").names()]
+    for name, text in (("lab_cart", POLYGON_ROBOT), ("lab_drone", AERIAL_ROBOT)):
+        (tmp_path / f"{name}.yaml").write_text(text)
+        found.append(resolve_robot(str(tmp_path / f"{name}.yaml")))
+    return found
+
+
+def pose_for(desc: dict[str, Any]) -> tuple[dict[str, float], dict[str, float], float]:
+    """The robot's pose (hovering if it flies), the eye's pose 2.5 m in front of it, looking at
+    its middle: how far down to look."""
+    x, y = ROBOT_AT
+    z = HOVER_M if desc["flight_height_m"] is not None else 0.0
+    eye = {"x": x + DISTANCE_M, "y": y, "yaw": 3.14159265}
+    robot = {"x": x, "y": y, "z": z, "yaw": 0.6}  # turned a little: its front and side both show
+    from haven_sim.common.bodies import EYE_HEIGHT_M
+
+    pitch = max(0.0, (EYE_HEIGHT_M - (z + desc["height_m"] / 2)) / DISTANCE_M)  # (small angles: near enough)
+    return robot, eye, pitch
+
+
+def changed_pixels(a: bytes, b: bytes) -> int:
+    from PIL import Image, ImageChops
+
+    diff = ImageChops.difference(Image.open(BytesIO(a)).convert("RGB"), Image.open(BytesIO(b)).convert("RGB")).convert("L")
+    return sum(diff.point(lambda v: 255 if v > 24 else 0).histogram()[255:])
+
+
+def test_every_robot_is_drawn_from_its_description_at_real_size(browser, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    scenario = load_scenario("hallway")
+    role = roles(["h1"])["h1"]
+    door = FrontDoor("127.0.0.1", 0, "secret", {"h1": free_port()}, lambda r: page_config(role, scenario, PageSettings()))
+    door.start()
+    try:
+        page = browser.new_page(viewport=VIEW)
+        page.goto(urls(f"http://127.0.0.1:{door.port}", "secret", ["h1"])["h1"], timeout=PAGE_TIMEOUT_MS)
+        page.add_style_tag(content="#prompt, #inset, #hud, #lost { display: none !important; }")
+        page.wait_for_function("window.havenState && havenState.frames > 1 && typeof window.havenShowRobot === 'function'", timeout=PAGE_TIMEOUT_MS)
+        out = os.environ.get("HAVEN_ROBOT_PICTURES")
+        shown = []
+        for robot in robots(tmp_path):
+            desc = robot_view(robot)
+            at, eye, pitch = pose_for(desc)
+            empty = {**desc, "primitives": [SPECK]}
+            pictures = []
+            for shown_desc in (empty, desc):
+                meshes = page.evaluate(f"havenShowRobot({json.dumps(shown_desc)}, {json.dumps(at)}, {json.dumps(eye)}, {pitch})")
+                frames = page.evaluate("havenState.frames")
+                page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
+                pictures.append(page.screenshot())
+            assert meshes == max(1, len(robot.look.primitives)), robot.name
+            changed = changed_pixels(*pictures)
+            # At 2.5 m the smallest robot (a 0.2 m drone) still covers some hundreds of pixels.
+            assert changed > 300, (robot.name, changed)
+            shown.append(robot.name)
+            if out:  # the robot and its surroundings, at the size the participant sees it
+                spot = page.evaluate(f"havenProject({at['x']}, {at['y']}, {at['z'] + desc['height_m'] / 2})")
+                left = min(max(0, int(spot["x"]) - CROP["width"] // 2), VIEW["width"] - CROP["width"])
+                top = min(max(0, int(spot["y"]) - CROP["height"] // 2), VIEW["height"] - CROP["height"])
+                Path(out).mkdir(parents=True, exist_ok=True)
+                Path(out, f"{robot.name}.png").write_bytes(page.screenshot(clip={"x": left, "y": top, **CROP}))
+        assert {"turtlebot2", "lab_cart", "lab_drone"} <= set(shown)
+    finally:
+        door.stop()
