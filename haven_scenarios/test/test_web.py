@@ -18,10 +18,11 @@ import pytest
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.web.access import CONSOLE, READY, role_token, roles, route, token_of, token_ok, urls
 from haven_scenarios.web.front_door import STATIC, FrontDoor
-from haven_scenarios.web.page_config import PageSettings, page_config
+from haven_scenarios.web.page_config import PageSettings, page_config, robot_view
 from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS, StartGate, Wizard
 from haven_sim.common.events import MAX_EVENT_BYTES, EventKind
 from haven_sim.common.geometry import Twist2D
+from haven_sim.robots.robot_kind import resolve_robot
 
 pytestmark = pytest.mark.integration
 
@@ -75,6 +76,31 @@ def test_a_page_is_told_its_role_the_pose_order_and_how_to_encode_what_it_sends(
     assert c["eye_height_m"] == 1.6 and c["kind"] == "hallway" and "rooms" in c["instructions"]
     x0, y0, x1, y1 = c["bounds"]
     assert x0 < x1 and y0 < y1
+
+
+def test_a_page_is_told_the_trials_robot_its_look_footprint_and_flight(tmp_path):
+    scenario = load_scenario("hallway")
+    tb2 = page_config(roles(["h1"])["h1"], scenario, PageSettings())["robot"]
+    assert (tb2["name"], tb2["kinematics"], tb2["footprint"], tb2["flight_height_m"], tb2["model_url"]) == (
+        "turtlebot2", "diff_drive", {"radius_m": 0.177, "polygon": []}, None, None,
+    )  # fmt: skip
+    assert len(tb2["primitives"]) == len(scenario.robot.look.primitives) > 0
+    assert tb2["primitives"][0] == {
+        "shape": "cylinder",
+        "size": [0.177, 0.177, 0.09],
+        "at": [0, 0, 0.055],
+        "rpy": [0, 0, 0],
+        "colour": "#2b2b2e",
+        "spin": False,
+    }
+    (tmp_path / "model.glb").write_bytes(b"glTF")
+    (tmp_path / "drone.yaml").write_text(
+        "extends: turtlebot2\nname: drone\ntitle: D\nkinematics: aerial\nfootprint: {polygon: [[0.2, 0.1], [-0.2, 0.1], [0, -0.2]]}\n"
+        "flight: {cruise_height_m: 1.5, climb_rate_mps: 0.5}\nlook: {model: model.glb}\n"
+    )
+    drone = robot_view(resolve_robot(str(tmp_path / "drone.yaml")))
+    assert drone["footprint"]["polygon"] == [[0.2, 0.1], [-0.2, 0.1], [0, -0.2]] and drone["flight_height_m"] == 1.5
+    assert drone["model_url"] == "/robot/model.glb" and abs(drone["radius_m"] - 0.2236) < 1e-3
 
 
 class _Backend:

@@ -23,6 +23,7 @@ from haven_scenarios.web.access import roles, urls
 from haven_scenarios.web.front_door import FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config, robot_view
 from haven_sim.common import plugins
+from haven_sim.common.bodies import EYE_HEIGHT_M
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.robot_kind import resolve_robot
 
@@ -93,17 +94,30 @@ def robots(tmp_path: Path) -> list[RobotDescription]:
     return found
 
 
-def pose_for(desc: dict[str, Any]) -> tuple[dict[str, float], dict[str, float], float]:
-    """The robot's pose (hovering if it flies), the eye's pose 2.5 m in front of it, looking at
-    its middle: how far down to look."""
+def pose_for(desc: dict[str, Any], z: float) -> tuple[dict[str, float], dict[str, float], float]:
+    """The robot's pose at height z, the eye's pose 2.5 m in front of it, and how far down to look
+    to see its middle."""
     x, y = ROBOT_AT
-    z = HOVER_M if desc["flight_height_m"] is not None else 0.0
     eye = {"x": x + DISTANCE_M, "y": y, "yaw": 3.14159265}
     robot = {"x": x, "y": y, "z": z, "yaw": 0.6}  # turned a little: its front and side both show
-    from haven_sim.common.bodies import EYE_HEIGHT_M
-
     pitch = max(0.0, (EYE_HEIGHT_M - (z + desc["height_m"] / 2)) / DISTANCE_M)  # (small angles: near enough)
     return robot, eye, pitch
+
+
+def drawn(page, desc: dict[str, Any], z: float) -> tuple[int, bytes, bytes, bytes]:  # type: ignore[no-untyped-def]
+    """The robot at height z: its mesh count, the view without it and with it, and the middle of
+    the view around it (the docs' picture, at the size the participant sees it)."""
+    at, eye, pitch = pose_for(desc, z)
+    pictures = []
+    for shown in ({**desc, "primitives": [SPECK]}, desc):
+        meshes = page.evaluate(f"havenShowRobot({json.dumps(shown)}, {json.dumps(at)}, {json.dumps(eye)}, {pitch})")
+        frames = page.evaluate("havenState.frames")
+        page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
+        pictures.append(page.screenshot())
+    spot = page.evaluate(f"havenProject({at['x']}, {at['y']}, {z + desc['height_m'] / 2})")
+    left = min(max(0, int(spot["x"]) - CROP["width"] // 2), VIEW["width"] - CROP["width"])
+    top = min(max(0, int(spot["y"]) - CROP["height"] // 2), VIEW["height"] - CROP["height"])
+    return meshes, pictures[0], pictures[1], page.screenshot(clip={"x": left, "y": top, **CROP})
 
 
 def changed_pixels(a: bytes, b: bytes) -> int:
@@ -127,25 +141,16 @@ def test_every_robot_is_drawn_from_its_description_at_real_size(browser, tmp_pat
         shown = []
         for robot in robots(tmp_path):
             desc = robot_view(robot)
-            at, eye, pitch = pose_for(desc)
-            empty = {**desc, "primitives": [SPECK]}
-            pictures = []
-            for shown_desc in (empty, desc):
-                meshes = page.evaluate(f"havenShowRobot({json.dumps(shown_desc)}, {json.dumps(at)}, {json.dumps(eye)}, {pitch})")
-                frames = page.evaluate("havenState.frames")
-                page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
-                pictures.append(page.screenshot())
-            assert meshes == max(1, len(robot.look.primitives)), robot.name
-            changed = changed_pixels(*pictures)
-            # At 2.5 m the smallest robot (a 0.2 m drone) still covers some hundreds of pixels.
-            assert changed > 300, (robot.name, changed)
+            heights = {"": 0.0} if not robot.aerial else {"": HOVER_M, "_landed": 0.0}  # a drone: hovering, and on its pad
+            for suffix, z in heights.items():
+                meshes, empty, full, picture = drawn(page, desc, z)
+                assert meshes == max(1, len(robot.look.primitives)), robot.name
+                changed = changed_pixels(empty, full)
+                assert changed > 300, (robot.name, z, changed)  # at 2.5 m the smallest robot (a 0.2 m drone) covers some hundreds
+                if out:
+                    Path(out).mkdir(parents=True, exist_ok=True)
+                    Path(out, f"{robot.name}{suffix}.png").write_bytes(picture)
             shown.append(robot.name)
-            if out:  # the robot and its surroundings, at the size the participant sees it
-                spot = page.evaluate(f"havenProject({at['x']}, {at['y']}, {at['z'] + desc['height_m'] / 2})")
-                left = min(max(0, int(spot["x"]) - CROP["width"] // 2), VIEW["width"] - CROP["width"])
-                top = min(max(0, int(spot["y"]) - CROP["height"] // 2), VIEW["height"] - CROP["height"])
-                Path(out).mkdir(parents=True, exist_ok=True)
-                Path(out, f"{robot.name}.png").write_bytes(page.screenshot(clip={"x": left, "y": top, **CROP}))
         assert {"turtlebot2", "lab_cart", "lab_drone"} <= set(shown)
     finally:
         door.stop()
