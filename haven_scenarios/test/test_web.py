@@ -157,6 +157,20 @@ def test_nothing_is_served_without_the_token(door):
     assert _get(d, "/favicon.ico")[0] == 204
 
 
+def test_the_trials_robot_model_is_served_to_a_page_with_a_token_and_nothing_else_is(tmp_path):
+    (tmp_path / "bot.glb").write_bytes(b"glTF-bytes")
+    d = FrontDoor("127.0.0.1", 0, SECRET, {"h1": 1}, lambda role: {}, robot_model=str(tmp_path / "bot.glb"))
+    d.start()
+    try:
+        assert _get(d, "/robot/model.glb")[0] == 403
+        status, body, r = _get(d, "/robot/model.glb", {"Cookie": f"haven_token_h1={H1}"})
+        assert (status, body, r.getheader("Content-Type")) == (200, b"glTF-bytes", "model/gltf-binary")
+        for other in ("/robot/model.gltf", "/robot/bot.glb", "/robot/../bot.glb"):
+            assert _get(d, f"{other}?token={H1}")[0] == 404, other
+    finally:
+        d.stop()
+
+
 def test_a_page_comes_with_its_settings_and_a_cookie_for_its_code(door):
     d, _ = door
     status, body, r = _get(d, f"/participant/h1?token={H1}")

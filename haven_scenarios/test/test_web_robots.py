@@ -12,6 +12,7 @@ import json
 import os
 import shutil
 import socket
+import struct
 from io import BytesIO
 from pathlib import Path
 from typing import Any
@@ -67,6 +68,37 @@ look:
 """
 
 
+MODEL_ROBOT = """extends: turtlebot2
+name: lab_model
+title: A lab's robot drawn from a glTF model
+look: {model: pyramid.glb}
+"""
+
+
+def pyramid_glb() -> bytes:
+    """A glTF binary of one red pyramid (glTF axes: y up), 1 x 1 at the base and 2 high."""
+    points = [(-0.5, 0, -0.5), (0.5, 0, -0.5), (0.5, 0, 0.5), (-0.5, 0, 0.5), (0, 2, 0)]
+    faces = [(0, 2, 1), (0, 3, 2), (0, 1, 4), (1, 2, 4), (2, 3, 4), (3, 0, 4)]
+    data = struct.pack(f"<{3 * len(points)}f", *[c for p in points for c in p]) + struct.pack(f"<{3 * len(faces)}H", *[i for f in faces for i in f])
+    n_points = 12 * len(points)
+    gltf = {
+        "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+        "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.1, 1], "metallicFactor": 0}}],
+        "buffers": [{"byteLength": len(data)}],
+        "bufferViews": [{"buffer": 0, "byteLength": n_points}, {"buffer": 0, "byteOffset": n_points, "byteLength": len(data) - n_points}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": len(points), "type": "VEC3", "min": [-0.5, 0, -0.5], "max": [0.5, 2, 0.5]},
+            {"bufferView": 1, "componentType": 5123, "count": 3 * len(faces), "type": "SCALAR"},
+        ],
+    }  # fmt: skip
+    text = json.dumps(gltf).encode()
+    text += b" " * (-len(text) % 4)
+    data += b"\0" * (-len(data) % 4)
+    chunks = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(data), 0x004E4942) + data
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
 @pytest.fixture(scope="module")
 def browser():  # type: ignore[no-untyped-def]
     path = os.environ.get("HAVEN_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
@@ -109,8 +141,10 @@ def drawn(page, desc: dict[str, Any], z: float) -> tuple[int, bytes, bytes, byte
     the view around it (the docs' picture, at the size the participant sees it)."""
     at, eye, pitch = pose_for(desc, z)
     pictures = []
-    for shown in ({**desc, "primitives": [SPECK]}, desc):
+    for shown in ({**desc, "primitives": [SPECK], "model_url": None}, desc):
         meshes = page.evaluate(f"havenShowRobot({json.dumps(shown)}, {json.dumps(at)}, {json.dumps(eye)}, {pitch})")
+        if shown.get("model_url"):  # its glTF model replaces the primitives once loaded
+            page.wait_for_function("havenState.robotModel === true", timeout=PAGE_TIMEOUT_MS)
         frames = page.evaluate("havenState.frames")
         page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
         pictures.append(page.screenshot())
@@ -130,7 +164,11 @@ def changed_pixels(a: bytes, b: bytes) -> int:
 def test_every_robot_is_drawn_from_its_description_at_real_size(browser, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
     scenario = load_scenario("hallway")
     role = roles(["h1"])["h1"]
-    door = FrontDoor("127.0.0.1", 0, "secret", {"h1": free_port()}, lambda r: page_config(role, scenario, PageSettings()))
+    (tmp_path / "pyramid.glb").write_bytes(pyramid_glb())
+    (tmp_path / "lab_model.yaml").write_text(MODEL_ROBOT)
+    modelled = resolve_robot(str(tmp_path / "lab_model.yaml"))
+    config = page_config(role, scenario, PageSettings())
+    door = FrontDoor("127.0.0.1", 0, "secret", {"h1": free_port()}, lambda r: config, robot_model=modelled.look.model)
     door.start()
     try:
         page = browser.new_page(viewport=VIEW)
@@ -152,5 +190,12 @@ def test_every_robot_is_drawn_from_its_description_at_real_size(browser, tmp_pat
                     Path(out, f"{robot.name}{suffix}.png").write_bytes(picture)
             shown.append(robot.name)
         assert {"turtlebot2", "lab_cart", "lab_drone"} <= set(shown)
+        # A robot file's glTF model (served by the front door) replaces its primitives.
+        desc = robot_view(modelled)
+        _, empty, primitives, _ = drawn(page, {**desc, "model_url": None}, 0.0)
+        _, _, full, picture = drawn(page, desc, 0.0)
+        assert changed_pixels(empty, full) > 300 and changed_pixels(primitives, full) > 300
+        if out:
+            Path(out, "lab_model.png").write_bytes(picture)
     finally:
         door.stop()

@@ -15,7 +15,7 @@ from typing import Any
 from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order, trial_key
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.foxglove_relay import msgdef
-from haven_scenarios.web.access import Role
+from haven_scenarios.web.access import ROBOT_MODEL_PATH, Role
 from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS
 from haven_sim.common.bodies import EYE_HEIGHT_M, HUMAN_BODY
 from haven_sim.robots.description import RobotDescription
@@ -41,9 +41,6 @@ class PageSettings:
     map_inset: bool = True
     questionnaires: tuple[Questionnaire, ...] = ()  # asked after the trial
     teleoperated: tuple[str, ...] = ()  # the humans with a page (who answers them)
-
-
-ROBOT_MODEL_PATH = "/robot/model"  # where the front door would serve the trial robot's glTF model (look.model)
 
 
 def robot_view(robot: RobotDescription) -> dict[str, Any]:

@@ -1,6 +1,7 @@
 // The moving bodies drawn from the simulation's poses: the trial's robot (from its description's
 // look) and people (body, head, name).
 import * as THREE from "three";
+import { GLTFLoader } from "three/examples/jsm/loaders/GLTFLoader.js";
 import { textSprite } from "./markers.js";
 
 const lambert = (hex) => new THREE.MeshLambertMaterial({ color: hex });
@@ -46,6 +47,37 @@ export function robotBody(desc) {
   g.userData.meshes = g.children.length;
   g.userData.aerial = desc.flight_height_m !== null && desc.flight_height_m !== undefined;
   return g;
+}
+
+// A robot file's glTF model (look.model, served by the front door at desc.model_url) in place of
+// its primitives once it loads: turned from glTF's axes (y up, +z forward) to the base frame's,
+// scaled to the footprint's length and width, centred over it, standing on the floor. If it does not
+// load, the primitives stay.
+export function withModel(body, desc, loaded) {
+  if (!desc.model_url) return;
+  new GLTFLoader().load(desc.model_url, (gltf) => {
+    const holder = new THREE.Group();
+    gltf.scene.rotation.set(Math.PI / 2, 0, 0);
+    holder.rotation.z = Math.PI / 2;
+    holder.add(gltf.scene);
+    holder.updateMatrixWorld(true);
+    const box = new THREE.Box3().setFromObject(holder);
+    const size = box.getSize(new THREE.Vector3());
+    const fp = footprintBox(desc.footprint);
+    const k = Math.max(fp.max.x - fp.min.x, fp.max.y - fp.min.y) / Math.max(size.x, size.y, 1e-6);
+    const centre = box.getCenter(new THREE.Vector3());
+    holder.scale.setScalar(k);
+    holder.position.set((fp.min.x + fp.max.x) / 2 - k * centre.x, (fp.min.y + fp.max.y) / 2 - k * centre.y, -k * box.min.z);
+    for (const part of body.children) part.visible = false;
+    body.add(holder);
+    body.userData.model = true;
+    loaded();
+  });
+}
+
+function footprintBox(fp) {
+  const points = fp.polygon.length ? fp.polygon : [[-fp.radius_m, -fp.radius_m], [fp.radius_m, fp.radius_m]];
+  return new THREE.Box2().setFromPoints(points.map(([x, y]) => new THREE.Vector2(x, y)));
 }
 
 export const ROTOR_RPS = 40; // drawn rotor speed, rad/s (a blur at any real rotor speed)

@@ -5,7 +5,7 @@
 import * as THREE from "three";
 import { Link, config as readConfig, twist, yawOf } from "./link.js";
 import { MarkerLayer } from "./markers.js";
-import { robotBody, spinParts, person } from "./bodies.js";
+import { robotBody, spinParts, withModel, person } from "./bodies.js";
 import { drawInset } from "./inset.js";
 import { Controls } from "./controls.js";
 import { taskLine, promptFor } from "./task.js";
@@ -43,6 +43,8 @@ const FACING = new Set(["thought_bubble", "battery_indicator"]);
 let robot = robotBody(cfg.robot);
 robot.visible = false;
 scene.add(robot);
+const modelLoaded = (body) => () => body === robot && (state.robotModel = true);
+withModel(robot, cfg.robot, modelLoaded(robot));
 let robotMoved = 0; // metres since the last frame (the wheels turn by it)
 // The robot at its /odom pose, its height included (an aerial robot's altitude).
 function placeRobot(x, y, z, yaw) {
@@ -217,6 +219,8 @@ window.havenShowRobot = (desc, at, eye, pitch = 0) => {
   scene.remove(robot);
   robot = robotBody(desc);
   scene.add(robot);
+  state.robotModel = false;
+  withModel(robot, desc, modelLoaded(robot));
   placeRobot(at.x, at.y, at.z, at.yaw);
   state.pose = eye;
   camera.rotation.x = -pitch;
