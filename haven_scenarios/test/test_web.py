@@ -18,10 +18,11 @@ import pytest
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.web.access import CONSOLE, READY, role_token, roles, route, token_of, token_ok, urls
 from haven_scenarios.web.front_door import STATIC, FrontDoor
-from haven_scenarios.web.page_config import PageSettings, page_config
+from haven_scenarios.web.page_config import PageSettings, page_config, robot_view
 from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS, StartGate, Wizard
 from haven_sim.common.events import MAX_EVENT_BYTES, EventKind
 from haven_sim.common.geometry import Twist2D
+from haven_sim.robots.robot_kind import resolve_robot
 
 pytestmark = pytest.mark.integration
 
@@ -77,6 +78,31 @@ def test_a_page_is_told_its_role_the_pose_order_and_how_to_encode_what_it_sends(
     assert x0 < x1 and y0 < y1
 
 
+def test_a_page_is_told_the_trials_robot_its_look_footprint_and_flight(tmp_path):
+    scenario = load_scenario("hallway")
+    tb2 = page_config(roles(["h1"])["h1"], scenario, PageSettings())["robot"]
+    assert (tb2["name"], tb2["kinematics"], tb2["footprint"], tb2["flight_height_m"], tb2["model_url"]) == (
+        "turtlebot2", "diff_drive", {"radius_m": 0.177, "polygon": []}, None, None,
+    )  # fmt: skip
+    assert len(tb2["primitives"]) == len(scenario.robot.look.primitives) > 0
+    assert tb2["primitives"][0] == {
+        "shape": "cylinder",
+        "size": [0.177, 0.177, 0.09],
+        "at": [0, 0, 0.055],
+        "rpy": [0, 0, 0],
+        "colour": "#2b2b2e",
+        "spin": False,
+    }
+    (tmp_path / "model.glb").write_bytes(b"glTF")
+    (tmp_path / "drone.yaml").write_text(
+        "extends: turtlebot2\nname: drone\ntitle: D\nkinematics: aerial\nfootprint: {polygon: [[0.2, 0.1], [-0.2, 0.1], [0, -0.2]]}\n"
+        "flight: {cruise_height_m: 1.5, climb_rate_mps: 0.5}\nlook: {model: model.glb}\n"
+    )
+    drone = robot_view(resolve_robot(str(tmp_path / "drone.yaml")))
+    assert drone["footprint"]["polygon"] == [[0.2, 0.1], [-0.2, 0.1], [0, -0.2]] and drone["flight_height_m"] == 1.5
+    assert drone["model_url"] == "/robot/model.glb" and abs(drone["radius_m"] - 0.2236) < 1e-3
+
+
 class _Backend:
     """A stand-in for a role's Foxglove server: records the handshake, answers, then echoes."""
 
@@ -129,6 +155,20 @@ def test_nothing_is_served_without_the_token(door):
     assert _get(d, "/console", {"Cookie": f"haven_token_h1={H1}"})[0] == 403
     assert _get(d, f"/ws/console?token={H1}", {"Upgrade": "websocket"})[0] == 403
     assert _get(d, "/favicon.ico")[0] == 204
+
+
+def test_the_trials_robot_model_is_served_to_a_page_with_a_token_and_nothing_else_is(tmp_path):
+    (tmp_path / "bot.glb").write_bytes(b"glTF-bytes")
+    d = FrontDoor("127.0.0.1", 0, SECRET, {"h1": 1}, lambda role: {}, robot_model=str(tmp_path / "bot.glb"))
+    d.start()
+    try:
+        assert _get(d, "/robot/model.glb")[0] == 403
+        status, body, r = _get(d, "/robot/model.glb", {"Cookie": f"haven_token_h1={H1}"})
+        assert (status, body, r.getheader("Content-Type")) == (200, b"glTF-bytes", "model/gltf-binary")
+        for other in ("/robot/model.gltf", "/robot/bot.glb", "/robot/../bot.glb"):
+            assert _get(d, f"{other}?token={H1}")[0] == 404, other
+    finally:
+        d.stop()
 
 
 def test_a_page_comes_with_its_settings_and_a_cookie_for_its_code(door):

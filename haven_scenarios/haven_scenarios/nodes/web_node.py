@@ -100,7 +100,7 @@ class WebNode(Node):
         self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
         refuse_changes(self, self._refused)
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
-        self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__)
+        self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__, robot_model=scenario.robot.look.model)
         self.door.start()
         shown = address_for_others(host)
         for name, url in urls(f"http://{shown}:{self.door.port}", self.secret, humans).items():

@@ -101,9 +101,15 @@ def role_token(secret: str, role: str) -> str:
 class Request:
     """What the front door reads of a request: which page or socket, and whether its token is right."""
 
-    kind: str  # "page", "socket", "static", "favicon" or "" (not ours)
+    kind: str  # "page", "socket", "static", "robot_model", "favicon" or "" (not ours)
     role: str  # a human id, CONSOLE, or "" for static files
-    rest: str  # the static file's name
+    rest: str  # the static file's name (the robot model's: its suffix)
+
+
+ROBOT_MODEL_FILE = "model"
+ROBOT_MODEL_PATH = (
+    f"/robot/{ROBOT_MODEL_FILE}"  # + .glb/.gltf: the trial robot's glTF model (its look.model), the one file served from outside static/
+)
 
 
 def route(path: str) -> Request:
@@ -118,6 +124,8 @@ def route(path: str) -> Request:
         return Request("socket", CONSOLE, "")
     if len(parts) == 3 and parts[:2] == ["ws", "participant"]:
         return Request("socket", parts[2], "")
+    if len(parts) == 2 and parts[0] == ROBOT_MODEL_PATH.split("/")[1] and parts[1] in (f"{ROBOT_MODEL_FILE}.glb", f"{ROBOT_MODEL_FILE}.gltf"):
+        return Request("robot_model", "", parts[1].rsplit(".", 1)[1])
     if len(parts) == 2 and parts[0] == "static" and re.match(r"^[\w.-]+$", parts[1]) and not parts[1].startswith("."):
         return Request("static", "", parts[1])
     return Request("", "", "")

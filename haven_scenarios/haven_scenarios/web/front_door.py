@@ -1,7 +1,8 @@
 """The study's one web address: pages, their code, and each page's WebSocket, behind the token.
 
 A small threaded HTTP server (the standard library's): `/participant/<id>` and `/console` are the
-pages (their settings embedded as JSON), `/static/*` the built bundles, and `/ws/participant/<id>`,
+pages (their settings embedded as JSON), `/static/*` the built bundles, `/robot/model.glb` the
+trial robot's glTF model if its robot file names one, and `/ws/participant/<id>`,
 `/ws/console` are passed through, byte for byte, to that role's Foxglove WebSocket server on
 127.0.0.1 once the token is checked. So a lab network sees one port, every request needs the token,
 and each role's server knows who its clients are (a participant's can publish only their velocity).
@@ -19,6 +20,7 @@ import time
 from collections.abc import Callable, Mapping
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from importlib import resources
+from pathlib import Path
 from typing import Any
 
 from haven_scenarios.web.access import CONSOLE, TOKEN_COOKIE, cookie_tokens, role_token, route, token_of, token_ok
@@ -108,9 +110,12 @@ class FrontDoor:
         backends: Mapping[str, int],
         config: Callable[[str], Mapping[str, Any]],
         request_timeout_s: float = REQUEST_TIMEOUT_S,
+        robot_model: str = "",
     ) -> None:
         """`secret`: the session's (each role's token derives from it); `backends`: role -> its
-        Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings."""
+        Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings; `robot_model`:
+        the trial robot's glTF file (its look.model), served at ROBOT_MODEL_PATH."""
+        self.robot_model = Path(robot_model) if robot_model else None
         self.tokens = {role: role_token(secret, role) for role in backends}
         self.backends, self.config = dict(backends), config
         door = self
@@ -160,6 +165,10 @@ class FrontDoor:
         if req.kind == "page":
             cookie = f"{TOKEN_COOKIE}{req.role}={self.tokens[req.role]}; Path=/; HttpOnly; SameSite=Strict"
             return reply(h, 200, page_html(req.role, self.config(req.role)), "text/html; charset=utf-8", cookie)
+        if req.kind == "robot_model":
+            if self.robot_model is None or self.robot_model.suffix != f".{req.rest}" or not self.robot_model.is_file():
+                return reply(h, 404, b"no such file")
+            return reply(h, 200, self.robot_model.read_bytes(), "model/gltf-binary" if req.rest == "glb" else "model/gltf+json")
         if req.kind == "static":
             asset = STATIC / req.rest
             if not asset.is_file() or req.rest.endswith(".html"):

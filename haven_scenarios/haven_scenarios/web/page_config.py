@@ -9,14 +9,16 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any
 
 from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order, trial_key
 from haven_scenarios.study.scenario import Scenario
 from haven_scenarios.tools.foxglove_relay import msgdef
-from haven_scenarios.web.access import Role
+from haven_scenarios.web.access import ROBOT_MODEL_PATH, Role
 from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS
 from haven_sim.common.bodies import EYE_HEIGHT_M, HUMAN_BODY
+from haven_sim.robots.description import RobotDescription
 from haven_viz.world_markers import WALL_HEIGHT_M
 
 VIEW_WALL_HEIGHT_M = 2.4  # walls are drawn this tall in first person (the markers' 0.5 m suits a top-down view)
@@ -41,6 +43,26 @@ class PageSettings:
     teleoperated: tuple[str, ...] = ()  # the humans with a page (who answers them)
 
 
+def robot_view(robot: RobotDescription) -> dict[str, Any]:
+    """What the pages draw the robot from: its look (primitives in the base frame: x forward, z up)
+    and its footprint at real size; its flight height if it flies."""
+    fp = robot.footprint
+    return {
+        "name": robot.name,
+        "title": robot.title,
+        "kinematics": robot.kinematics.value,
+        "radius_m": robot.radius_m,
+        "footprint": {"radius_m": fp.radius_m, "polygon": [list(p) for p in fp.polygon]},
+        "height_m": robot.height_m,
+        "primitives": [
+            {"shape": p.shape, "size": list(p.size), "at": list(p.at), "rpy": list(p.rpy), "colour": p.colour, "spin": p.spin}
+            for p in robot.look.primitives
+        ],
+        "flight_height_m": robot.flight.cruise_height_m if robot.flight is not None else None,
+        "model_url": ROBOT_MODEL_PATH + Path(robot.look.model).suffix if robot.look.model else None,
+    }
+
+
 def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[str, Any]:
     world = scenario.world
     speeds: Mapping[str, float] = {h.id: h.speed_mps for h in scenario.humans}
@@ -59,6 +81,7 @@ def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[
         "bounds": list(world.bounds()),
         "eye_height_m": EYE_HEIGHT_M,
         "robot_body": {"radius_m": scenario.robot.radius_m, "height_m": scenario.robot.height_m},
+        "robot": robot_view(scenario.robot),
         "human_body": {"radius_m": HUMAN_BODY.radius_m, "height_m": HUMAN_BODY.height_m},
         "view_wall_height_m": VIEW_WALL_HEIGHT_M,
         "marker_wall_height_m": WALL_HEIGHT_M,

@@ -165,6 +165,19 @@ document.getElementById("thought-form").addEventListener("submit", (e) => {
   link.publish("/haven/thought", { data: document.getElementById("thought-text").value });
 });
 
+// The robot's footprint at real size, turned with its heading: its circle or its polygon.
+function robotOutline(ctx, p, { s, X, Y }) {
+  const fp = cfg.robot.footprint;
+  if (!fp.polygon.length) return ctx.arc(X(p.x), Y(p.y), fp.radius_m * s, 0, 2 * Math.PI);
+  const c = Math.cos(p.yaw), n = Math.sin(p.yaw);
+  fp.polygon.forEach(([x, y], i) => {
+    const wx = p.x + c * x - n * y, wy = p.y + n * x + c * y;
+    if (i) ctx.lineTo(X(wx), Y(wy));
+    else ctx.moveTo(X(wx), Y(wy));
+  });
+  ctx.closePath();
+}
+
 // -- the top-down scene --------------------------------------------------------------------------------
 const canvas = document.getElementById("scene");
 const COLORS = { robot: "#222", me: "#1660e8" };
@@ -202,7 +215,8 @@ function draw() {
     if (!p) continue;
     ctx.fillStyle = color;
     ctx.beginPath();
-    ctx.arc(X(p.x), Y(p.y), (id === "robot" ? cfg.robot_body.radius_m : cfg.human_body.radius_m) * s, 0, 2 * Math.PI);
+    if (id === "robot") robotOutline(ctx, p, t);
+    else ctx.arc(X(p.x), Y(p.y), cfg.human_body.radius_m * s, 0, 2 * Math.PI);
     ctx.fill();
     ctx.strokeStyle = "#fff";
     ctx.beginPath();

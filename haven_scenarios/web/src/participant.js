@@ -5,7 +5,7 @@
 import * as THREE from "three";
 import { Link, config as readConfig, twist, yawOf } from "./link.js";
 import { MarkerLayer } from "./markers.js";
-import { turtlebot, person } from "./bodies.js";
+import { robotBody, spinParts, withModel, person } from "./bodies.js";
 import { drawInset } from "./inset.js";
 import { Controls } from "./controls.js";
 import { taskLine, promptFor } from "./task.js";
@@ -40,9 +40,20 @@ const stretch = cfg.view_wall_height_m / cfg.marker_wall_height_m;
 const world = new MarkerLayer(scene, { stretchZ: { walls: stretch, obstructions: stretch }, lift: { rooms: cfg.view_wall_height_m - 0.3 } });
 const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]) }); // bodies come from the poses
 const FACING = new Set(["thought_bubble", "battery_indicator"]);
-const robot = turtlebot(cfg.robot_body.radius_m, cfg.robot_body.height_m);
+let robot = robotBody(cfg.robot);
 robot.visible = false;
 scene.add(robot);
+const modelLoaded = (body) => () => body === robot && (state.robotModel = true);
+withModel(robot, cfg.robot, modelLoaded(robot));
+let robotMoved = 0; // metres since the last frame (the wheels turn by it)
+// The robot at its /odom pose, its height included (an aerial robot's altitude).
+function placeRobot(x, y, z, yaw) {
+  if (robot.visible) robotMoved += Math.hypot(x - robot.position.x, y - robot.position.y, z - robot.position.z);
+  robot.position.set(x, y, z);
+  robot.rotation.z = yaw;
+  robot.visible = true;
+  state.robot = { x, y, z, meshes: robot.userData.meshes };
+}
 const others = new Map(); // human id -> avatar
 
 // The participant's head: the rig stands on their pose and turns with their heading; inside it a
@@ -72,10 +83,7 @@ const link = new Link(
     },
     "/odom": (m) => {
       const p = m.pose.pose;
-      robot.position.set(p.position.x, p.position.y, 0);
-      robot.rotation.z = yawOf(p.orientation);
-      robot.visible = true;
-      state.robot = { x: p.position.x, y: p.position.y };
+      placeRobot(p.position.x, p.position.y, p.position.z, yawOf(p.orientation));
     },
     "/humans": (m, at) => {
       m.poses.forEach((p, i) => {
@@ -205,6 +213,19 @@ window.havenProject = (x, y, z) => {
   const v = new THREE.Vector3(x, y, z).project(camera);
   return { x: ((v.x + 1) / 2) * window.innerWidth, y: ((1 - v.y) / 2) * window.innerHeight, z: v.z };
 };
+// For the pictures of each robot (tests, docs): draw another robot's description, stand the
+// participant at a pose, look down by `pitch` rad.
+window.havenShowRobot = (desc, at, eye, pitch = 0) => {
+  scene.remove(robot);
+  robot = robotBody(desc);
+  scene.add(robot);
+  state.robotModel = false;
+  withModel(robot, desc, modelLoaded(robot));
+  placeRobot(at.x, at.y, at.z, at.yaw);
+  state.pose = eye;
+  camera.rotation.x = -pitch;
+  return robot.userData.meshes;
+};
 window.havenOthers = () => Object.fromEntries([...others].map(([id, a]) => [id, { x: a.position.x, y: a.position.y }]));
 window.havenMarker = (ns, id) => {
   const e = cues.objects.get(`${ns}/${id}`);
@@ -212,8 +233,13 @@ window.havenMarker = (ns, id) => {
 };
 
 // -- every frame -----------------------------------------------------------------------------------
+let frameAt = null;
 renderer.setAnimationLoop((time) => {
   if (state.questionnaire) return; // the last view stays under the questionnaire; software rendering would only slow it
+  const dt = frameAt === null ? 0 : Math.min(0.1, (time - frameAt) / 1000);
+  frameAt = time;
+  spinParts(robot, robotMoved, robot.userData.aerial && robot.position.z > 0.05, dt);
+  robotMoved = 0;
   controls.poll(renderer.xr.isPresenting ? renderer.xr.getSession() : null);
   if (state.pose) {
     rig.position.set(state.pose.x, state.pose.y, 0);
