@@ -246,9 +246,10 @@ def test_estop_from_default_qos_publishers_several_at_once_and_a_latched_one_bef
 def test_teleop_from_another_node_drives_the_simulated_robot(ros):
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     teleop = ros.node.create_publisher(Twist, "/cmd_vel_teleop", qos.RELIABLE)
-    # Timeouts far above any stall of this test process between two commands: only the driving is tested.
-    ros.start(SIM, {"real_time_factor": 2.0, "cmd_timeout_s": 3.0})
-    ros.start(MUX, {"use_sim_time": True, "teleop_timeout_s": 3.0})
+    # Timeouts far above any stall of this test process between two commands (a loaded machine can
+    # stall it for seconds): only the driving is tested, not how steadily this process publishes.
+    ros.start(SIM, {"cmd_timeout_s": 20.0})
+    ros.start(MUX, {"use_sim_time": True, "teleop_timeout_s": 20.0})
     ros.wait_matched(teleop)
     ros.wait_for_messages(odom, 5)
     drive(ros, teleop, twist(0.0, 1.0), odom, 2.0)
