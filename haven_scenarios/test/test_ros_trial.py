@@ -152,9 +152,9 @@ def test_lockstep_trial_is_lossless_reproducible_rerunnable_and_equal_to_batch(r
     assert row["robot"] == "slow_bot"
 
 
-@pytest.mark.parametrize("rtf", ["1", "5", "10"])
+@pytest.mark.parametrize("rtf", ["1", "10"])
 def test_free_running_recordings_are_complete_and_score_independently(ros, tmp_path, rtf):
-    """On the free-running clock (a person's real-time trial; here a simulated one at 1x, 5x, 10x)
+    """On the free-running clock (a person's real-time trial; here a simulated one at 1x and 10x)
     the recorder keeps every message, and the metrics agree with the independent scorer."""
     scenario = tmp_path / "crossing.yaml"
     scenario.write_text(CROSSING)
