@@ -146,3 +146,11 @@ def test_a_study_with_robots_runs_in_batch_and_reports_the_robot_column(tmp_path
     assert {r["robot"] for r in summary} == {"turtlebot2", "slow_bot"}  # per robot when the robot varies
     session = next((root / "p02").glob("*/*/session.json"))
     assert json.loads(session.read_text())["robot_name"] == "slow_bot"
+
+
+def test_a_robot_too_big_for_the_worlds_start_is_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    big = tmp_path / "big.yaml"
+    big.write_text("extends: tiago\nname: big_bot\nfootprint: {radius_m: 3.0}\n")
+    assert main(["batch", "hallway", "--robot", str(big), "--seeds", "0", "--out", str(tmp_path / "x.csv")]) == 2
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert "robot 'big_bot' (radius 3.00 m) does not fit at world 'hallway''s robot start" in line and "overlaps a wall" in line

@@ -45,6 +45,7 @@ from haven_sim.robots.fields import DEFAULT
 from haven_sim.robots.robot_file import RobotError
 from haven_sim.robots.robot_kind import DEFAULT_ROBOT, is_file_spec, resolve_robot
 from haven_sim.sim.world import World, WorldError
+from haven_sim.sim.world_checks import overlapping_shape
 from haven_sim.sim.world_file import load_world
 from haven_viz.cues import CUES, CueParams, unknown_cue
 
@@ -101,7 +102,16 @@ class Scenario:
 
     def for_robot(self, robot: RobotDescription, model: str | None = None) -> Scenario:
         """This scenario with `robot` (named `model`: a name or a file; default its name); its battery
-        pack is the file's, else the robot's own."""
+        pack is the file's, else the robot's own. ScenarioError (one line) if the robot's body does
+        not fit at the world's robot start."""
+        start = self.world.robot_start
+        hit = overlapping_shape(self.world.solid_shapes(), start.x, start.y, robot.radius_m)
+        if hit is not None:
+            what = f"{hit[0].kind} {hit[0].id}".strip()
+            raise ScenarioError(
+                f"{self.source or self.name}: robot {robot.name!r} (radius {robot.radius_m:.2f} m) does not fit at world "
+                f"'{self.world.name}''s robot start ({start.x:g}, {start.y:g}): its body overlaps a {what}"
+            )
         battery = replace(self.battery, capacity_m=self.pack_m if self.pack_m is not None else robot.battery.capacity_m)
         return replace(self, robot=robot, robot_model=model or robot.name, battery=battery)
 
