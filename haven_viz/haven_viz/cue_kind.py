@@ -9,6 +9,7 @@ and only while the study condition has it on, what it shows now::
         hidden = 0                  # its value there while it shows nothing
         exposure = "floor_arrows_shown_s"   # its exposure metric (default: "<name>_shown_s")
         rank = 10                   # where it comes among the cues (default 100; then by name)
+        kinematics = ("diff_drive", "omni")  # the robot kinds it serves (default: every kind)
 
         def __init__(self, params: CueParams) -> None: ...
 
@@ -16,8 +17,10 @@ and only while the study condition has it on, what it shows now::
             ...                     # None: nothing to show now
 
 `CueContext` holds what every cue may draw on: the robot's pose, its path and how far along it is
-(`TrackedPath`), the people, the battery level, the thought text, the time, and where on this
-robot its own cues sit (`mounts`, from its robot file, above `robot_z_m`). `Shown` says what
+(`TrackedPath`), the people, the battery level, the thought text, the time, where on this
+robot its own cues sit (`mounts`, from its robot file, above `robot_z_m`: its altitude, 0 on the
+ground), the height it travels at (`flight_z_m`) and its cruise speed (`cruise_mps`). A robot
+gets only the cues that serve its kind (`kinematics`). `Shown` says what
 the cue shows: its value (JSON, recorded on /haven/cue_state), its markers (in frame `map`, drawn by
 every viewer and the participant page without page code), and for the simulated participants where
 it shows the robot's way ahead (`way`, nearest the robot first) and whether it is drawn on the robot
@@ -35,7 +38,7 @@ from haven_sim.common.geometry import FloatArray, Point, Pose2D
 from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.common.polyline import Polyline
 from haven_sim.nav.motion_style import MotionStyle
-from haven_sim.robots.description import CueMounts
+from haven_sim.robots.description import CueMounts, Kinematics
 from haven_sim.robots.fields import DEFAULT
 from haven_viz.markers import MarkerSpec
 
@@ -118,6 +121,8 @@ class CueContext:
     robot_height_m: float = 0.0  # the robot's body, from its robot file
     mounts: CueMounts = DEFAULT.cues  # where its own cues sit (robot file: cues), above ...
     robot_z_m: float = 0.0  # ... its base frame, this high above the floor (an aerial robot's altitude)
+    flight_z_m: float = 0.0  # the height it travels at (an aerial robot's cruise height; 0 on the ground)
+    cruise_mps: float = DEFAULT.motion.cruise_speed_mps  # its cruise speed (arrival estimates)
 
 
 @dataclass(frozen=True)
@@ -135,18 +140,31 @@ class Cue(Protocol):
     hidden: Any
     exposure: str
     rank: int
+    kinematics: tuple[str, ...]
 
     def show(self, ctx: CueContext, markers: bool) -> Shown | None: ...
 
 
+KINDS: tuple[str, ...] = tuple(k.value for k in Kinematics)
+
+
+def serves(cue: type[Any], kind: Kinematics | str) -> bool:
+    """Whether a cue class serves a robot of this kind."""
+    return Kinematics(kind).value in getattr(cue, "kinematics", KINDS)
+
+
 def accept_plugin(name: str, value: Any) -> Any:
     """A `haven.cues` plugin: a class taking `(params: CueParams)` whose objects `show(ctx, markers)`;
-    `key`, `hidden`, `exposure` and `rank` default to the name, None, `<name>_shown_s` and 100."""
+    `key`, `hidden`, `exposure`, `rank` and `kinematics` default to the name, None, `<name>_shown_s`,
+    100 and every kind."""
     if not inspect.isclass(value) or not callable(getattr(value, "show", None)):
         raise ValueError("is not a cue: a class taking (params) with a show(ctx, markers) method")
-    for attr, default in (("key", name), ("hidden", None), ("exposure", f"{name}_shown_s"), ("rank", 100)):
+    for attr, default in (("key", name), ("hidden", None), ("exposure", f"{name}_shown_s"), ("rank", 100), ("kinematics", KINDS)):
         if not hasattr(value, attr):
             setattr(value, attr, default)
+    kinds = getattr(value, "kinematics")  # noqa: B009 - (set just above)
+    if isinstance(kinds, str) or not isinstance(kinds, tuple) or not kinds or any(k not in KINDS for k in kinds):
+        raise ValueError(f"is not a cue: its kinematics must be a tuple of robot kinds ({', '.join(KINDS)}), got {str(kinds)[:50]}")
     key, exposure, rank = getattr(value, "key"), getattr(value, "exposure"), getattr(value, "rank")  # noqa: B009 - (set just above)
     if not isinstance(key, str) or not key or not isinstance(exposure, str) or not isinstance(rank, int):
         raise ValueError("is not a cue: its key and exposure must be names, its rank a whole number")

@@ -5,8 +5,10 @@ as a lab's are): CUES names them in order, HAVEN's first. `Toggles` is the study
 cues are on: the viz node's run-time parameters, one per cue); `ArCues` keeps one robot's path
 (`cue_kind.TrackedPath`) and asks each cue that is on what it shows; `CueState` is what is shown as
 data, which the viz node publishes on /haven/cue_state and metrics and the simulated participants
-read: nothing has to be inferred from marker namespaces and ids. Its JSON has each cue's value under
-the cue's key (HAVEN's: path_markers, turn_signal, thought, battery_level) and the toggles.
+read: nothing has to be inferred from marker namespaces and ids. Its JSON has the value of each cue
+the robot has under the cue's key (HAVEN's: path_markers, turn_signal, thought, battery_level) and
+the toggles. A cue serves some kinds of robot (`cue_kind.serves`): a robot has only those
+(`cues_for`), and a toggle of a cue it does not have shows nothing (condition `all`: every cue it has).
 """
 
 from __future__ import annotations
@@ -20,7 +22,7 @@ from typing import TYPE_CHECKING, Any
 from haven_sim.common import plugins
 from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import param
-from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.description import Kinematics, RobotDescription
 from haven_sim.robots.fields import DEFAULT
 from haven_viz.builtin_cues import (
     BATTERY_NS,
@@ -33,7 +35,7 @@ from haven_viz.builtin_cues import (
     TurnSignals,
     battery_color,
 )
-from haven_viz.cue_kind import Cue, CueContext, TrackedPath
+from haven_viz.cue_kind import Cue, CueContext, TrackedPath, serves
 from haven_viz.markers import MarkerSpec
 
 __all__ = ["BATTERY_NS", "CUES", "PATH_NS", "SCHEMES", "SIGNAL_NS", "THOUGHT_NS", "ArCues", "CueParams", "CueState", "Toggles", "battery_color"]
@@ -62,6 +64,11 @@ def cue_classes(reg: plugins.Registry) -> dict[str, type[Any]]:
 
 CUE_CLASSES = cue_classes(plugins.registry("cues"))
 CUES: tuple[str, ...] = tuple(CUE_CLASSES)
+
+
+def cues_for(kind: Kinematics | str) -> tuple[str, ...]:
+    """The registered cues a robot of this kind has, in order."""
+    return tuple(c for c in CUES if serves(CUE_CLASSES[c], kind))
 
 
 def unknown_cue(name: object) -> str:
@@ -110,9 +117,10 @@ class CueState:
 
     toggles: CueToggles = field(default_factory=Toggles)
     values: Mapping[str, Any] = field(default_factory=dict)
+    cues: tuple[str, ...] = CUES  # the cues the robot has
 
     def __post_init__(self) -> None:  # every cue's value, hidden ones too (so equal states compare equal)
-        object.__setattr__(self, "values", {cls.key: self.values.get(cls.key, cls.hidden) for cls in CUE_CLASSES.values()})
+        object.__setattr__(self, "values", {CUE_CLASSES[c].key: self.values.get(CUE_CLASSES[c].key, CUE_CLASSES[c].hidden) for c in self.cues})
 
     def value(self, cue: str) -> Any:
         cls = CUE_CLASSES[cue]
@@ -151,11 +159,12 @@ class CueState:
                 raise ValueError(f"{len(text)} characters")
             d = json.loads(text)
             toggles = Toggles(**{k: bool(v) for k, v in d["toggles"].items() if k in CUES})
-            values = {cls.key: d.get(cls.key, cls.hidden) for cls in CUE_CLASSES.values()}
+            cues = tuple(c for c in CUE_CLASSES if CUE_CLASSES[c].key in d)  # (the robot's: each has its value, hidden or not)
+            values = {CUE_CLASSES[c].key: d[CUE_CLASSES[c].key] for c in cues}
             for key, cast in CASTS.items():  # (HAVEN's values, checked; a lab's cue's are its JSON)
                 if values.get(key) is not None:
                     values[key] = cast(values[key])
-            return float(d["stamp"]), CueState(toggles, values)
+            return float(d["stamp"]), CueState(toggles, values, cues)
         except (ValueError, KeyError, TypeError, AttributeError, RecursionError) as e:
             raise ValueError(f"not a cue state: {str(e)[:80]}") from None
 
@@ -168,16 +177,19 @@ class CueFrame:
 
 
 class ArCues:
-    """The cues of one robot: the path it follows and one object per cue (`names`: all registered).
-    A cue whose code raises (a lab's, being written) is in `failed` and shows nothing from then
-    on; the others and the trial go on, and the viz says so (a `cue_failed` event)."""
+    """The cues of one robot: the path it follows and one object per cue (`names`: all registered)
+    that serves the robot's kind (the others it does not have). A cue whose code raises (a lab's,
+    being written) is in `failed` and shows nothing from then on; the others and the trial go on, and the viz says so (a `cue_failed` event)."""
 
     def __init__(self, params: CueParams | None = None, names: Sequence[str] | None = None, robot: RobotDescription = DEFAULT) -> None:
         self.params = params or CueParams()
         self.robot = robot
         self.failed: dict[str, str] = {}  # cue -> its error, for a cue whose code raised (it shows nothing from then on)
         self.cues: dict[str, Cue] = {}
-        for n in CUES if names is None else names:
+        self.names = tuple(n for n in (CUES if names is None else names) if serves(CUE_CLASSES[n], robot.kinematics))
+        flight = robot.flight
+        self.flight_z_m = flight.cruise_height_m if flight is not None and robot.kinematics is Kinematics.AERIAL else 0.0
+        for n in self.names:
             try:
                 self.cues[n] = CUE_CLASSES[n](self.params)
             except Exception as e:  # noqa: BLE001 - a lab's cue may fail in any way; the trial and the other cues go on
@@ -196,13 +208,18 @@ class ArCues:
         toggles: CueToggles | None = None,
         now: float | None = None,
         markers: bool = True,
+        altitude_m: float = 0.0,
     ) -> CueFrame:
         """Every marker of the cues on in `toggles` (default: all) for this moment, and what they show.
         With the time `now`, a lit turn signal is held at least `turn_signal_hold_s`. `markers=False`:
-        what they show only, no markers (no one reads them in batch mode)."""
+        what they show only, no markers (no one reads them in batch mode). `altitude_m`: the robot's
+        height above the floor (/odom), where its cues are drawn."""
         toggles = Toggles() if toggles is None else toggles
         self.path.advance(robot)
-        ctx = CueContext(robot, self.path, humans, battery_level, thought, now, self.robot.height_m, self.robot.cues)
+        r = self.robot
+        ctx = CueContext(
+            robot, self.path, humans, battery_level, thought, now, r.height_m, r.cues, altitude_m, self.flight_z_m, r.motion.cruise_speed_mps
+        )
         out: list[MarkerSpec] = []
         values: dict[str, Any] = {}
         ways: dict[str, tuple[tuple[Point, ...], bool]] = {}
@@ -220,7 +237,7 @@ class ArCues:
             out += shown.markers
             if shown.way:
                 ways[name] = (shown.way, shown.on_robot)
-        return CueFrame(out, CueState(toggles, values), ways)
+        return CueFrame(out, CueState(toggles, values, self.names), ways)
 
     def markers(
         self, robot: Pose2D, humans: Sequence[Point] = (), battery_level: float | None = None, thought: str = "", toggles: CueToggles | None = None

@@ -31,7 +31,7 @@ from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import DEFAULT
 from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.world import World
-from haven_viz.cues import CUE_CLASSES, CUES
+from haven_viz.cues import CUE_CLASSES, cues_for
 
 TURN_RATE_RPS = 0.3  # |angular velocity| above this is a turn
 # The robot is not moving: |v| and |w| below these (ours; HuNavSim's time_not_moving compares the
@@ -139,7 +139,7 @@ def mission(d: TrialData) -> dict[str, Any]:
 
 
 def cues(d: TrialData) -> dict[str, Any]:
-    return _cues(d.tl)
+    return _cues(d.tl, cues_for(d.robot.kinematics))
 
 
 def passes(d: TrialData) -> dict[str, Any]:
@@ -278,9 +278,9 @@ def _mission(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
     }
 
 
-def _exposure(tl: Timeline, sel: Any = slice(None)) -> dict[str, float]:
+def _exposure(tl: Timeline, names: Sequence[str], sel: Any = slice(None)) -> dict[str, float]:
     dt, cues = tl.dt[sel], tl.cues[sel] if isinstance(sel, slice) else [c for c, keep in zip(tl.cues, sel) if keep]
-    shown = {CUE_CLASSES[name].exposure: [c.shown(name) for c in cues] for name in CUES}  # every registered cue's
+    shown = {CUE_CLASSES[name].exposure: [c.shown(name) for c in cues] for name in names}  # every registered cue the robot has
     return {k: round(float(np.sum(dt[np.asarray(v, dtype=bool)])), 2) for k, v in shown.items()}
 
 
@@ -334,17 +334,19 @@ def _passes(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
     }
 
 
-def _cues(tl: Timeline) -> dict[str, Any]:
-    out: dict[str, Any] = dict(_exposure(tl))
+def _cues(tl: Timeline, names: Sequence[str]) -> dict[str, Any]:
+    out: dict[str, Any] = dict(_exposure(tl, names))
     leads = signal_lead_times(tl.t, tl.robot_w, [c.turn_signal for c in tl.cues])
     out.update(turns=len(leads), turns_signalled=sum(1 for x in leads if x > 0), turn_signal_lead_s_mean=_r(float(np.mean(leads)) if leads else None))
     segments, start = [], 0
     for i in range(1, len(tl.t) + 1):
         if i == len(tl.t) or tl.cues[i].toggles != tl.cues[start].toggles:
-            on = tl.cues[start].toggles.names_on()
+            on = [c for c in tl.cues[start].toggles.names_on() if c in names]
             sel = np.zeros(len(tl.t), dtype=bool)
             sel[start:i] = True
-            segments.append({"start_s": round(float(tl.t[start]), 2), "end_s": round(float(tl.t[i - 1]), 2), "cues_on": on, **_exposure(tl, sel)})
+            segments.append(
+                {"start_s": round(float(tl.t[start]), 2), "end_s": round(float(tl.t[i - 1]), 2), "cues_on": on, **_exposure(tl, names, sel)}
+            )
             start = i
     out["condition_segments"] = segments
     return out
