@@ -13,6 +13,9 @@
     the cue is on);
   * battery indicator: a level bar coloured by HAVEN's thresholds, and the percentage.
 
+All draw at the robot's height (`CueContext.robot_z_m`: 0 on the ground, an aerial robot's altitude),
+the projected path too, so a drone's path is projected at its flight height.
+
 `CueParams` are the viz node's cue parameters, shared by every cue (a lab's cue reads the colour
 scheme and marker size from them too).
 """
@@ -64,6 +67,11 @@ class CueParams:
     thought_radius_m: float = param(3.0, "a human this close shows the thought bubble ...", POSITIVE)
     thought_hysteresis_m: float = param(0.5, "... which hides again only beyond radius + this", NOT_NEGATIVE)
     thought_backdrop: bool = param(True, "a white bubble behind the thought's text")
+    nav_points_ahead: int = param(
+        3, "NavPoints (aerial robots): waypoints shown ahead, each with its arrival countdown (Walker et al. 2018)", POSITIVE
+    )
+    nav_point_spacing_m: float = param(1.0, "NavPoints: a waypoint this far apart along the path, and at its end (ours)", POSITIVE)
+    gaze_lookahead_m: float = param(1.0, "Gaze (aerial robots): the eye looks at the path this far ahead (ours)", POSITIVE)
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -104,7 +112,10 @@ class PathProjection:
         if not shown:
             return None
         size, color = p.marker_size_m, SCHEMES[p.scheme]
-        specs = [MarkerSpec(PATH_NS, i, Shape.CUBE if m.arc else Shape.SPHERE, (m.x, m.y, size / 2.0), 0.0, (size,) * 3, color) for i, m in shown]
+        specs = [
+            MarkerSpec(PATH_NS, i, Shape.CUBE if m.arc else Shape.SPHERE, (m.x, m.y, ctx.robot_z_m + size / 2.0), 0.0, (size,) * 3, color)
+            for i, m in shown
+        ]
         return Shown(len(shown), specs if markers else [], tuple((m.x, m.y) for _, m in shown), on_robot=False)
 
 

@@ -6,7 +6,7 @@ into HAVEN's AR cues (`cues.ArCues`) plus the moving bodies, sending only what c
 joins and every `refresh_period_s`, for viewers and bag replays that start late or missed a message.
 What is shown goes out as data on /haven/cue_state when it changes. The world (walls, rooms,
 gems, base) goes on /haven/world_markers, again when a gem is collected or an obstruction removed.
-The four cue toggles are the study condition; every change is a `cue_toggled` event.
+The cue toggles are the study condition (a cue the robot does not have shows nothing); every change is a `cue_toggled` event.
 """
 
 from __future__ import annotations
@@ -56,6 +56,7 @@ class VizComponent:
         self.ar_diff = MarkerDiff()
         self.world_diff = MarkerDiff()
         self.robot: Pose2D | None = None
+        self.altitude_m = 0.0  # the robot's height above the floor (/odom; an aerial robot's), where its cues are drawn
         self.humans: HumanPoses = {}
         self.battery: float | None = None
         self.thought = ""
@@ -91,7 +92,7 @@ class VizComponent:
         return []
 
     def on_odom(self, state: RobotState, now: float) -> list[Message]:
-        self.robot = state.pose
+        self.robot, self.altitude_m = state.pose, state.altitude_m
         return []
 
     def on_battery(self, reading: BatteryReading, now: float) -> list[Message]:
@@ -159,7 +160,7 @@ class VizComponent:
             return out
         humans_xy = [(h.x, h.y) for h in self.humans.values()]
         shown = topics.AR_MARKERS not in self.unread
-        frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles, now, markers=shown)
+        frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles, now, markers=shown, altitude_m=self.altitude_m)
         out += self._failures(now)
         refresh = self._refresh_now or self._last_refresh is None or now - self._last_refresh >= self.config.refresh_period_s
         if refresh:
