@@ -33,6 +33,9 @@ setup(
             "turn_signals = haven_viz.builtin_cues:TurnSignals",
             "thought_bubble = haven_viz.builtin_cues:ThoughtBubble",
             "battery_indicator = haven_viz.builtin_cues:BatteryIndicator",
+            "nav_points = haven_viz.drone_cues:NavPoints",
+            "arrow = haven_viz.drone_cues:Arrow",
+            "gaze = haven_viz.drone_cues:Gaze",
         ],
     },
 )

@@ -1,0 +1,143 @@
+"""The drone's intent cues of Walker, Hedayati, Lee & Szafir, "Communicating Robot Motion Intent with
+Augmented Reality", HRI '18 (ACM/IEEE International Conference on Human-Robot Interaction, 2018,
+pp. 316-324, doi:10.1145/3171221.3171253), as `haven.cues` plugins for aerial robots only
+(`kinematics = ("aerial",)`: a robot of another kind has none of them):
+
+  * NavPoints (`nav_points`): the next `nav_points_ahead` waypoints of the remaining path (every
+    `nav_point_spacing_m` along it, and its end) as spheres at flight height, joined by a line from
+    the robot, each with a countdown of its estimated arrival in seconds (distance along the path /
+    the robot's cruise speed);
+  * Arrow (`arrow`): one 3D arrow on the robot pointing at the next waypoint;
+  * Gaze (`gaze`): an eye on the robot (a white ball and a dark pupil) looking at the point
+    `gaze_lookahead_m` ahead along the path.
+
+Their parameters are in `builtin_cues.CueParams` with HAVEN's. The simulated participants read
+NavPoints' points where they are drawn, and the Arrow's and Gaze's target with the robot.
+"""
+
+from __future__ import annotations
+
+import math
+
+from haven_viz.builtin_cues import SCHEMES, CueParams
+from haven_viz.cue_kind import CueContext, Shown, TrackedPath
+from haven_viz.markers import MarkerSpec, Shape
+
+NAV_NS, ARROW_NS, GAZE_NS = "nav_points", "arrow", "gaze"
+AERIAL = ("aerial",)  # the robot kinds these cues serve (haven_sim.robots.description.Kinematics)
+TEXT_COLOUR = (0.05, 0.05, 0.05, 1.0)
+EYE_RADIUS_M = 0.08  # the Gaze eye's ball (ours: legible at a few metres, about a third of the drone's width)
+PUPIL_RADIUS_M = 0.04
+
+
+def waypoints(path: TrackedPath, params: CueParams) -> list[tuple[float, float, float]]:
+    """(x, y, s) of the waypoints not yet reached: every `nav_point_spacing_m` along the path and
+    its end, beyond `consume_distance_m` ahead of the robot, nearest first."""
+    line = path.line
+    if len(line) < 2:
+        return []
+    step = params.nav_point_spacing_m
+    stations = [k * step for k in range(1, int(line.length / step - 1e-9) + 1)] + [line.length]
+    limit = path.progress + params.consume_distance_m
+    return [(*line.point_at(s), s) for s in stations if s > limit]
+
+
+def _height(ctx: CueContext) -> float:
+    """Where the robot flies: its cruise height (its altitude until it knows one)."""
+    return max(ctx.flight_z_m, ctx.robot_z_m)
+
+
+def _eye_z(ctx: CueContext) -> float:
+    return ctx.robot_z_m + ctx.mounts.signal_height_m
+
+
+class NavPoints:
+    """The next waypoints with their arrival countdowns (Walker et al. 2018)."""
+
+    key, hidden, exposure, rank, kinematics = "nav_points", 0, "nav_points_shown_s", 4, AERIAL
+
+    def __init__(self, params: CueParams) -> None:
+        self.params = params
+
+    def show(self, ctx: CueContext, markers: bool) -> Shown | None:
+        p = self.params
+        points = waypoints(ctx.path, p)[: p.nav_points_ahead]
+        if not points:
+            return None
+        way = tuple((x, y) for x, y, _ in points)
+        if not markers:
+            return Shown(len(points), [], way, on_robot=False)
+        z, size, color = _height(ctx), p.marker_size_m, SCHEMES[p.scheme]
+        speed = max(ctx.cruise_mps, 1e-3)
+        specs = [
+            MarkerSpec(
+                NAV_NS,
+                0,
+                Shape.LINE_STRIP,
+                (0.0, 0.0, 0.0),
+                0.0,
+                (0.02, 0.0, 0.0),
+                color,
+                "",
+                ((ctx.robot.x, ctx.robot.y, z), *((x, y, z) for x, y, _ in points)),
+            )
+        ]
+        for i, (x, y, s) in enumerate(points):
+            eta = (s - ctx.path.progress) / speed
+            specs.append(MarkerSpec(NAV_NS, 1 + 2 * i, Shape.SPHERE, (x, y, z), 0.0, (size,) * 3, color))
+            specs.append(MarkerSpec(NAV_NS, 2 + 2 * i, Shape.TEXT_VIEW_FACING, (x, y, z + size), 0.0, (0.0, 0.0, 0.12), TEXT_COLOUR, f"{eta:.0f} s"))
+        return Shown(len(points), specs, way, on_robot=False)
+
+
+class Arrow:
+    """A 3D arrow on the robot pointing at the next waypoint (Walker et al. 2018); its value: the
+    arrow's heading in the map (rad)."""
+
+    key, hidden, exposure, rank, kinematics = "arrow", None, "arrow_shown_s", 5, AERIAL
+
+    def __init__(self, params: CueParams) -> None:
+        self.params = params
+
+    def show(self, ctx: CueContext, markers: bool) -> Shown | None:
+        points = waypoints(ctx.path, self.params)
+        if not points:
+            return None
+        x, y, _ = points[0]
+        robot = ctx.robot
+        yaw = math.atan2(y - robot.y, x - robot.x)
+        length = min(0.5, max(0.15, math.hypot(x - robot.x, y - robot.y)))
+        z = _eye_z(ctx) + ctx.mounts.gauge_height_m - ctx.mounts.signal_height_m  # at the gauge's height, above the body
+        spec = MarkerSpec(ARROW_NS, 0, Shape.ARROW, (robot.x, robot.y, z), yaw, (length, 0.06, 0.1), SCHEMES[self.params.scheme])
+        return Shown(round(yaw, 3), [spec] if markers else [], ((x, y),), on_robot=True)
+
+
+class Gaze:
+    """An eye on the robot looking where it will go (Walker et al. 2018); its value: where it looks
+    (rad, in the map)."""
+
+    key, hidden, exposure, rank, kinematics = "gaze", None, "gaze_shown_s", 6, AERIAL
+
+    def __init__(self, params: CueParams) -> None:
+        self.params = params
+
+    def show(self, ctx: CueContext, markers: bool) -> Shown | None:
+        path = ctx.path
+        if len(path.line) < 2 or path.remaining_m <= self.params.consume_distance_m:
+            return None
+        robot = ctx.robot
+        gx, gy = path.line.point_at(min(path.line.length, path.progress + self.params.gaze_lookahead_m))
+        yaw = math.atan2(gy - robot.y, gx - robot.x)
+        if not markers:
+            return Shown(round(yaw, 3), [], ((gx, gy),), on_robot=True)
+        z = _eye_z(ctx) + EYE_RADIUS_M
+        # The eye sits on the robot's front in the direction it looks; the pupil on the ball's surface, toward the look-at point.
+        ex, ey = robot.x + ctx.mounts.signal_offset_m * 0.5 * math.cos(yaw), robot.y + ctx.mounts.signal_offset_m * 0.5 * math.sin(yaw)
+        dz = _height(ctx) - z
+        dist = math.hypot(math.hypot(gx - ex, gy - ey), dz)
+        k = (EYE_RADIUS_M - PUPIL_RADIUS_M / 2.0) / max(dist, 1e-6)
+        pupil = (ex + k * (gx - ex), ey + k * (gy - ey), z + k * dz)
+        specs = [
+            MarkerSpec(GAZE_NS, 0, Shape.SPHERE, (ex, ey, z), yaw, (2 * EYE_RADIUS_M,) * 3, (1.0, 1.0, 1.0, 1.0)),
+            MarkerSpec(GAZE_NS, 1, Shape.SPHERE, pupil, yaw, (2 * PUPIL_RADIUS_M,) * 3, (0.05, 0.05, 0.05, 1.0)),
+        ]
+        return Shown(round(yaw, 3), specs, ((gx, gy),), on_robot=True)
