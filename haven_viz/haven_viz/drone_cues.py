@@ -3,8 +3,8 @@ Augmented Reality", HRI '18 (ACM/IEEE International Conference on Human-Robot In
 pp. 316-324, doi:10.1145/3171221.3171253), as `haven.cues` plugins for aerial robots only
 (`kinematics = ("aerial",)`: a robot of another kind has none of them):
 
-  * NavPoints (`nav_points`): the next `nav_points_ahead` waypoints of the remaining path (every
-    `nav_point_spacing_m` along it, and its end) as spheres at flight height, joined by a line from
+  * NavPoints (`nav_points`): the next `nav_points_ahead` waypoints of the remaining path (its
+    corners, every `nav_point_spacing_m` along it between them, and its end) as spheres at flight height, joined by a line from
     the robot, each with a countdown of its estimated arrival in seconds (distance along the path /
     the robot's cruise speed);
   * Arrow (`arrow`): one 3D arrow on the robot pointing at the next waypoint;
@@ -28,18 +28,70 @@ AERIAL = ("aerial",)  # the robot kinds these cues serve (haven_sim.robots.descr
 TEXT_COLOUR = (0.05, 0.05, 0.05, 1.0)
 EYE_RADIUS_M = 0.08  # the Gaze eye's ball (ours: legible at a few metres, about a third of the drone's width)
 PUPIL_RADIUS_M = 0.04
+CORNER_TOLERANCE_M = 0.1  # a path simplified to within this (a grid planner's cell wiggle is smaller) ...
+CORNER_DEG = 30.0  # ... has a corner where it turns by this much (ours)
 
 
-def waypoints(path: TrackedPath, params: CueParams) -> list[tuple[float, float, float]]:
-    """(x, y, s) of the waypoints not yet reached: every `nav_point_spacing_m` along the path and
-    its end, beyond `consume_distance_m` ahead of the robot, nearest first."""
+def _simplify(xy: list[tuple[float, float]], lo: int, hi: int, out: list[int]) -> None:
+    """Ramer-Douglas-Peucker: the indices strictly between lo and hi of the points kept."""
+    (ax, ay), (bx, by) = xy[lo], xy[hi]
+    chord = math.hypot(bx - ax, by - ay)
+    far, worst = -1, CORNER_TOLERANCE_M
+    for i in range(lo + 1, hi):
+        px, py = xy[i]
+        d = abs((bx - ax) * (ay - py) - (ax - px) * (by - ay)) / chord if chord > 1e-9 else math.hypot(px - ax, py - ay)
+        if d > worst:
+            far, worst = i, d
+    if far >= 0:
+        _simplify(xy, lo, far, out)
+        out.append(far)
+        _simplify(xy, far, hi, out)
+
+
+def corners(path: TrackedPath) -> list[float]:
+    """Arc lengths of the path's corners: where the path, simplified to within CORNER_TOLERANCE_M,
+    turns by at least CORNER_DEG."""
+    line = path.line
+    xy, cum = [(float(x), float(y)) for x, y in line.points], line.cumulative.tolist()
+    kept: list[int] = []
+    if len(xy) > 2:
+        _simplify(xy, 0, len(xy) - 1, kept)
+    idx = [0, *kept, len(xy) - 1]
+    out = []
+    for a, b, c in zip(idx, idx[1:], idx[2:]):
+        turn = math.atan2(xy[c][1] - xy[b][1], xy[c][0] - xy[b][0]) - math.atan2(xy[b][1] - xy[a][1], xy[b][0] - xy[a][0])
+        if abs(math.remainder(turn, math.tau)) >= math.radians(CORNER_DEG):
+            out.append(cum[b])
+    return out
+
+
+def waypoints(path: TrackedPath, params: CueParams, turns: list[float] | None = None) -> list[tuple[float, float, float]]:
+    """(x, y, s) of the waypoints not yet reached: the path's corners (`turns`, default: found
+    here), and between them every `nav_point_spacing_m` along the path (none within half of that of
+    a corner), and its end, beyond `consume_distance_m` ahead of the robot, nearest first."""
     line = path.line
     if len(line) < 2:
         return []
     step = params.nav_point_spacing_m
-    stations = [k * step for k in range(1, int(line.length / step - 1e-9) + 1)] + [line.length]
+    turns = corners(path) if turns is None else turns
+    regular = [k * step for k in range(1, int(line.length / step - 1e-9) + 1)]
+    stations = sorted([*turns, *(s for s in regular if all(abs(s - t) >= step / 2.0 for t in turns)), line.length])
     limit = path.progress + params.consume_distance_m
     return [(*line.point_at(s), s) for s in stations if s > limit]
+
+
+class _Waypoints:
+    """A cue's waypoints, with the corners found once per path."""
+
+    def __init__(self, params: CueParams) -> None:
+        self.params = params
+        self.path: TrackedPath | None = None
+        self.turns: list[float] = []
+
+    def __call__(self, path: TrackedPath) -> list[tuple[float, float, float]]:
+        if path is not self.path:
+            self.path, self.turns = path, corners(path)
+        return waypoints(path, self.params, self.turns)
 
 
 def _height(ctx: CueContext) -> float:
@@ -47,8 +99,14 @@ def _height(ctx: CueContext) -> float:
     return max(ctx.flight_z_m, ctx.robot_z_m)
 
 
+def _arrow_z(ctx: CueContext) -> float:
+    """Above the body, between the turn-signal arrows and the battery gauge (clear of both)."""
+    return ctx.robot_z_m + (ctx.mounts.signal_height_m + ctx.mounts.gauge_height_m) / 2.0
+
+
 def _eye_z(ctx: CueContext) -> float:
-    return ctx.robot_z_m + ctx.mounts.signal_height_m
+    """At the body's middle height, on its front (below the Arrow)."""
+    return ctx.robot_z_m + ctx.robot_height_m / 2.0
 
 
 class NavPoints:
@@ -58,10 +116,11 @@ class NavPoints:
 
     def __init__(self, params: CueParams) -> None:
         self.params = params
+        self.waypoints = _Waypoints(params)
 
     def show(self, ctx: CueContext, markers: bool) -> Shown | None:
         p = self.params
-        points = waypoints(ctx.path, p)[: p.nav_points_ahead]
+        points = self.waypoints(ctx.path)[: p.nav_points_ahead]
         if not points:
             return None
         way = tuple((x, y) for x, y, _ in points)
@@ -97,17 +156,17 @@ class Arrow:
 
     def __init__(self, params: CueParams) -> None:
         self.params = params
+        self.waypoints = _Waypoints(params)
 
     def show(self, ctx: CueContext, markers: bool) -> Shown | None:
-        points = waypoints(ctx.path, self.params)
+        points = self.waypoints(ctx.path)
         if not points:
             return None
         x, y, _ = points[0]
         robot = ctx.robot
         yaw = math.atan2(y - robot.y, x - robot.x)
         length = min(0.5, max(0.15, math.hypot(x - robot.x, y - robot.y)))
-        z = _eye_z(ctx) + ctx.mounts.gauge_height_m - ctx.mounts.signal_height_m  # at the gauge's height, above the body
-        spec = MarkerSpec(ARROW_NS, 0, Shape.ARROW, (robot.x, robot.y, z), yaw, (length, 0.06, 0.1), SCHEMES[self.params.scheme])
+        spec = MarkerSpec(ARROW_NS, 0, Shape.ARROW, (robot.x, robot.y, _arrow_z(ctx)), yaw, (length, 0.06, 0.1), SCHEMES[self.params.scheme])
         return Shown(round(yaw, 3), [spec] if markers else [], ((x, y),), on_robot=True)
 
 
@@ -129,7 +188,7 @@ class Gaze:
         yaw = math.atan2(gy - robot.y, gx - robot.x)
         if not markers:
             return Shown(round(yaw, 3), [], ((gx, gy),), on_robot=True)
-        z = _eye_z(ctx) + EYE_RADIUS_M
+        z = _eye_z(ctx)
         # The eye sits on the robot's front in the direction it looks; the pupil on the ball's surface, toward the look-at point.
         ex, ey = robot.x + ctx.mounts.signal_offset_m * 0.5 * math.cos(yaw), robot.y + ctx.mounts.signal_offset_m * 0.5 * math.sin(yaw)
         dz = _height(ctx) - z

@@ -9,9 +9,9 @@ from haven_sim.common.geometry import Pose2D
 from haven_sim.common.state import RobotState
 from haven_sim.robots.fields import DEFAULT
 from haven_sim.robots.robot_kind import resolve_robot
-from haven_viz.cue_kind import accept_plugin
+from haven_viz.cue_kind import TrackedPath, accept_plugin
 from haven_viz.cues import CUES, PATH_NS, ArCues, CueParams, CueState, Toggles, cues_for
-from haven_viz.drone_cues import ARROW_NS, GAZE_NS, NAV_NS
+from haven_viz.drone_cues import ARROW_NS, GAZE_NS, NAV_NS, corners, waypoints
 from haven_viz.markers import Shape
 from haven_viz.viz import VizComponent, VizConfig
 
@@ -64,6 +64,16 @@ def test_navpoints_are_the_next_waypoints_at_flight_height_with_countdowns(path)
     assert frame.ways[NAV_NS] == (tuple(m.position[:2] for m in spheres), False)  # seen where they are
 
 
+def test_a_corner_is_a_waypoint_and_grid_wiggle_is_not():
+    # 2.3 m along x (with 1 cm cell wiggle), then 2 m along y.
+    poses = [Pose2D(0.05 * i, 0.01 * (i % 2), 0.0) for i in range(47)] + [Pose2D(2.3, 0.05 * j, math.pi / 2) for j in range(1, 41)]
+    path = TrackedPath(poses, CueParams().marker_spacing_m)
+    (corner,) = corners(path)
+    assert path.line.point_at(corner) == pytest.approx((2.3, 0.0), abs=0.011)
+    stations = [s for _, _, s in waypoints(path, CueParams())]
+    assert stations == pytest.approx([1.0, corner, 3.0, 4.0, path.line.length])  # 2.0 gives way to the corner (0.35 m along)
+
+
 def test_the_countdown_decreases_as_the_drone_advances_and_reached_points_go():
     cues, z = drone(STRAIGHT)
     first = of(cues.frame(Pose2D(0.0, 0.0, 0.0), altitude_m=z).markers, NAV_NS, Shape.TEXT_VIEW_FACING)[0].text
@@ -80,7 +90,8 @@ def test_the_arrow_on_the_drone_points_at_the_next_waypoint(path, target):
     frame = cues.frame(robot, altitude_m=z)
     (arrow,) = of(frame.markers, ARROW_NS)
     assert arrow.shape is Shape.ARROW and arrow.position[:2] == (robot.x, robot.y)
-    assert z < arrow.position[2] < z + 1.0  # on the drone, at its altitude
+    m = DRONE.cues
+    assert z + m.signal_height_m + 0.05 < arrow.position[2] < z + m.gauge_height_m - 0.05  # on the drone, clear of signals and gauge
     assert arrow.yaw == pytest.approx(math.atan2(target[1] - robot.y, target[0] - robot.x))
     (way, on_robot) = frame.ways[ARROW_NS]
     assert flat(way) == pytest.approx(target) and on_robot  # seen with the robot
