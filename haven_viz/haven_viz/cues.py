@@ -120,7 +120,8 @@ class CueState:
     cues: tuple[str, ...] = CUES  # the cues the robot has
 
     def __post_init__(self) -> None:  # every cue's value, hidden ones too (so equal states compare equal)
-        object.__setattr__(self, "values", {CUE_CLASSES[c].key: self.values.get(CUE_CLASSES[c].key, CUE_CLASSES[c].hidden) for c in self.cues})
+        classes = [CUE_CLASSES[c] for c in self.cues if c in CUE_CLASSES]
+        object.__setattr__(self, "values", {cls.key: self.values.get(cls.key, cls.hidden) for cls in classes})
 
     def value(self, cue: str) -> Any:
         cls = CUE_CLASSES[cue]
@@ -186,7 +187,7 @@ class ArCues:
         self.robot = robot
         self.failed: dict[str, str] = {}  # cue -> its error, for a cue whose code raised (it shows nothing from then on)
         self.cues: dict[str, Cue] = {}
-        self.names = tuple(n for n in (CUES if names is None else names) if serves(CUE_CLASSES[n], robot.kinematics))
+        self.names = tuple(n for n in (CUES if names is None else names) if n not in CUE_CLASSES or serves(CUE_CLASSES[n], robot.kinematics))
         flight = robot.flight
         self.flight_z_m = flight.cruise_height_m if flight is not None and robot.kinematics is Kinematics.AERIAL else 0.0
         for n in self.names:
