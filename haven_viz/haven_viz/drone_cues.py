@@ -150,7 +150,7 @@ class NavPoints:
 
 class Arrow:
     """A 3D arrow on the robot pointing at the next waypoint (Walker et al. 2018); its value: the
-    arrow's heading in the map (rad)."""
+    arrow's heading in the map (whole degrees: /haven/cue_state changes only when it turns)."""
 
     key, hidden, exposure, rank, kinematics = "arrow", None, "arrow_shown_s", 5, AERIAL
 
@@ -167,12 +167,12 @@ class Arrow:
         yaw = math.atan2(y - robot.y, x - robot.x)
         length = min(0.5, max(0.15, math.hypot(x - robot.x, y - robot.y)))
         spec = MarkerSpec(ARROW_NS, 0, Shape.ARROW, (robot.x, robot.y, _arrow_z(ctx)), yaw, (length, 0.06, 0.1), SCHEMES[self.params.scheme])
-        return Shown(round(yaw, 3), [spec] if markers else [], ((x, y),), on_robot=True)
+        return Shown(round(math.degrees(yaw)), [spec] if markers else [], ((x, y),), on_robot=True)
 
 
 class Gaze:
     """An eye on the robot looking where it will go (Walker et al. 2018); its value: where it looks
-    (rad, in the map)."""
+    (whole degrees, in the map)."""
 
     key, hidden, exposure, rank, kinematics = "gaze", None, "gaze_shown_s", 6, AERIAL
 
@@ -187,7 +187,7 @@ class Gaze:
         gx, gy = path.line.point_at(min(path.line.length, path.progress + self.params.gaze_lookahead_m))
         yaw = math.atan2(gy - robot.y, gx - robot.x)
         if not markers:
-            return Shown(round(yaw, 3), [], ((gx, gy),), on_robot=True)
+            return Shown(round(math.degrees(yaw)), [], ((gx, gy),), on_robot=True)
         z = _eye_z(ctx)
         # The eye sits on the robot's front in the direction it looks; the pupil on the ball's surface, toward the look-at point.
         ex, ey = robot.x + ctx.mounts.signal_offset_m * 0.5 * math.cos(yaw), robot.y + ctx.mounts.signal_offset_m * 0.5 * math.sin(yaw)
@@ -199,4 +199,4 @@ class Gaze:
             MarkerSpec(GAZE_NS, 0, Shape.SPHERE, (ex, ey, z), yaw, (2 * EYE_RADIUS_M,) * 3, (1.0, 1.0, 1.0, 1.0)),
             MarkerSpec(GAZE_NS, 1, Shape.SPHERE, pupil, yaw, (2 * PUPIL_RADIUS_M,) * 3, (0.05, 0.05, 0.05, 1.0)),
         ]
-        return Shown(round(yaw, 3), specs, ((gx, gy),), on_robot=True)
+        return Shown(round(math.degrees(yaw)), specs, ((gx, gy),), on_robot=True)
