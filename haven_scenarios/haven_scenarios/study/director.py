@@ -131,7 +131,7 @@ class TrialDirector:
         self.path: list[Pose2D] = []
         self.cue_state: CueState | None = None  # what the AR cues show (None until the viz says)
         # The projected path's markers, and what the other cues show, as the viz lays them out.
-        self.projection = ArCues(scenario.cues, names=[c for c in CUES if c not in BY_FIELD])
+        self.projection = ArCues(scenario.cues, names=[c for c in CUES if c not in BY_FIELD], robot=scenario.robot)
         self.sight: Sight | None = None
         self.percepts: dict[str, Percept] = {}  # what each simulated participant perceived at the last tick
         self.waiting = False
