@@ -40,9 +40,8 @@ class NavigatorParams:
         flight = self.robot.flight
         return 0.0 if flight is None else flight.person_distance_m
 
-    # The gaps the navigator works with: the parameters, the passing ones widened to the robot's
-    # person distance. The "on the path" test keeps path_clearance_m: widened too, a drone stopped
-    # beside a person's goal (a gem) leaves both waiting for ever (shared_room, seed 0).
+    # The gaps the navigator works with: the parameters, widened to the robot's person distance
+    # (the "on the path" test too, so that a person that near the path is passed or waited for).
     @property
     def pass_gap_m(self) -> float:
         return max(self.pass_clearance_m, self.person_distance_m)
@@ -53,7 +52,7 @@ class NavigatorParams:
 
     @property
     def path_gap_m(self) -> float:
-        return self.path_clearance_m
+        return max(self.path_clearance_m, self.person_distance_m)
 
     def __post_init__(self) -> None:
         check_bounds(self)  # (pass_angle_deg: beyond 60 the robot rotates in place)
