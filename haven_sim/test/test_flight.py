@@ -174,8 +174,8 @@ def test_obstacle_heights_in_world_files():
 def test_the_drone_passes_people_at_its_person_distance():
     ground, drone = NavigatorParams(), with_robot(NavigatorParams(), DRONE)
     assert (ground.pass_gap_m, ground.min_pass_gap_m) == (ground.pass_clearance_m, ground.min_pass_clearance_m)
-    assert drone.pass_gap_m == drone.min_pass_gap_m == drone.path_gap_m == 0.5
-    assert ground.path_gap_m == ground.path_clearance_m
+    assert drone.pass_gap_m == drone.min_pass_gap_m == 0.5
+    assert drone.path_gap_m == ground.path_gap_m == ground.path_clearance_m
 
 
 def test_a_holonomic_robot_corrects_sideways_and_a_diff_drive_does_not():
