@@ -29,6 +29,8 @@ class EventKind(StrEnum):
     BATTERY_EMPTY = "battery_empty"
     OBSTRUCTION_REMOVED = "obstruction_removed"  # id
     RESET = "reset"
+    TOOK_OFF = "took_off"  # an aerial robot left its pad (climbing to cruise height)
+    LANDED = "landed"  # an aerial robot is down on its pad
     # velocity mux
     CMD_SOURCE = "cmd_source"  # from, to: nav | teleop | estop | idle
     # planner

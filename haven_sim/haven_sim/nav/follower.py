@@ -3,7 +3,8 @@
 The path is read from its geometry (`common.paths.read_path`: any planner's path, the goal yaw on its
 last pose honoured) and cut at its rotate-in-place segments into alternating actions: rotate on the spot to a
 yaw, and drive along a piece by pure pursuit (arcs come out as arcs), slowing so as to stop where the
-piece ends. If the robot finds itself facing away from where it must go by more than the motion
+piece ends (a holonomic robot moves straight at the pure-pursuit point, sideways if need be, and
+turns to face its way as it goes). If the robot finds itself facing away from where it must go by more than the motion
 style allows for an arc (after a push, say), it stops and rotates first, as HAVEN's robot did. Unlike
 the original it never stalls on a small heading error and it finishes: the last action done, it
 reports arrival and stays stopped.
@@ -23,6 +24,8 @@ from haven_sim.common.polyline import Polyline
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.robots.fields import from_robot
 
+HEADING_GAIN = 2.0  # a holonomic robot turns to face its way at this rate per radian off (1/s), within its turn rate
+
 
 @dataclass(frozen=True)
 class FollowerParams:
@@ -33,6 +36,7 @@ class FollowerParams:
     decel_mps2: float = param(0.4, "planned deceleration to each stop (the robot can do 0.5 m/s^2)", POSITIVE)
     angular_decel_rps2: float = param(3.0, "planned angular deceleration at the end of a rotation", POSITIVE)
     max_angular_speed_rps: float = from_robot("motion.max_turn_rate_rps")  # while driving
+    holonomic: bool = from_robot("holonomic")  # moves in any direction: straight at the lookahead point
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -147,6 +151,9 @@ class PathFollower:
         v = min(p.linear_speed_mps, math.sqrt(2.0 * p.decel_mps2 * stop_in))
         v = max(v, p.min_linear_speed_mps)
         dist = max(math.hypot(dx, dy), 1e-6)
+        if p.holonomic:  # sideways as needed (no swing out on a tight turn), turning to face the way
+            w = max(-p.max_angular_speed_rps, min(p.max_angular_speed_rps, HEADING_GAIN * alpha))
+            return Twist2D(v * math.cos(alpha), v * math.sin(alpha), w)
         w = 2.0 * v * math.sin(alpha) / dist
         w = max(-p.max_angular_speed_rps, min(p.max_angular_speed_rps, w))
         return Twist2D(v, 0.0, w)

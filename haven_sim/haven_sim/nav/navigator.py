@@ -139,7 +139,7 @@ class Navigator:
 
     @property
     def block_distance_m(self) -> float:
-        return HUMAN_BODY.radius_m + self.planner_params.body_radius_m + self.params.path_clearance_m
+        return HUMAN_BODY.radius_m + self.planner_params.body_radius_m + self.params.path_gap_m
 
     # -- planning ----------------------------------------------------------------------------------
     def _goal_yaw(self) -> float | None:
@@ -224,7 +224,7 @@ class Navigator:
         # standing at the robot's next stop cannot be passed (no way back onto the route after them).
         at_stop = self.route.length - self.route.project(*person.xy).s < self._past + 0.05
         passing = None if at_stop else self._pass(robot, person, humans, towards > ONCOMING_MPS)
-        if passing is None and not at_stop and gap > self._need(self.params.pass_clearance_m):  # not round someone at arm's length
+        if passing is None and not at_stop and gap > self._need(self.params.pass_gap_m):  # not round someone at arm's length
             passing = self._replan_around(robot, person, humans, now)
         if passing is not None:
             if self.state is NavState.WAITING:
@@ -278,7 +278,7 @@ class Navigator:
     @property
     def _past(self) -> float:
         """How far beyond a person, along the route, the passing line is held."""
-        return self._need(self.params.pass_clearance_m) + HUMAN_BODY.radius_m
+        return self._need(self.params.pass_gap_m) + HUMAN_BODY.radius_m
 
     def _pass(self, robot: Pose2D, person: _OnPath, humans: Sequence[Point], oncoming: bool = False) -> _Detour | None:
         """Figure 3: a curve out to a line beside the person on the side with room, held past
@@ -291,10 +291,10 @@ class Navigator:
         around = (s_h - self._past, s_h + self._past)
         room = {side: room_beside(route, self.planner, *around, sign) for side, sign in (("left", 1.0), ("right", -1.0))}
         lateral = {
-            "left": min(room["left"], e + self._need(p.pass_clearance_m)),
-            "right": -min(room["right"], -e + self._need(p.pass_clearance_m)),
+            "left": min(room["left"], e + self._need(p.pass_gap_m)),
+            "right": -min(room["right"], -e + self._need(p.pass_gap_m)),
         }
-        fits = {side: abs(lateral[side] - e) >= self._need(p.min_pass_clearance_m) - 1e-9 for side in lateral}
+        fits = {side: abs(lateral[side] - e) >= self._need(p.min_pass_gap_m) - 1e-9 for side in lateral}
         # Someone coming the other way is passed on the right, as people keep right (they do the
         # same); someone standing on the side with more room beside them (the right on a tie). A
         # detour keeps its side while that still fits.
@@ -350,9 +350,9 @@ class Navigator:
 
     def _maybe_revert(self, robot: Pose2D, humans: Sequence[Point], now: float, out: NavOutput) -> None:
         """The person left the route or is passed: back to the centre line, as HAVEN's robot did.
-        "Left" means far enough aside that the robot passes them with `pass_clearance_m` on the
+        "Left" means far enough aside that the robot passes them with `pass_gap_m` on the
         centre line; nearer than that, the robot keeps its passing line."""
-        passing = self._need(self.params.pass_clearance_m)
+        passing = self._need(self.params.pass_gap_m)
         if self._on_path(self.route, self._route_s, humans, within=passing) is not None:
             return
         here = offset_from(self.route, self._route_s, (robot.x, robot.y))
@@ -382,9 +382,9 @@ class Navigator:
         room_right = self.planner.free_run(human, (-n[0], -n[1]))
         side = "left" if room_left >= room_right else "right"
         closed = (-n[0], -n[1]) if side == "left" else n
-        if max(room_left, room_right) - self.planner_params.inflation_m < self._need(self.params.min_pass_clearance_m) - HUMAN_BODY.radius_m:
+        if max(room_left, room_right) - self.planner_params.inflation_m < self._need(self.params.min_pass_gap_m) - HUMAN_BODY.radius_m:
             return None
-        radius = HUMAN_BODY.radius_m + self.params.path_clearance_m  # as wide as the "on the path" test
+        radius = HUMAN_BODY.radius_m + self.params.path_gap_m  # as wide as the "on the path" test
         grid = with_people(
             self.grid, humans, radius, human, closed, min(room_left if side == "right" else room_right, 10.0) + self.planner_params.inflation_m
         )
@@ -395,6 +395,6 @@ class Navigator:
             return None
         line = Polyline(plan.points)
         gap = min(line.project(h[0], h[1]).distance for h in humans) - self._need(0.0)
-        if gap < self.params.path_clearance_m:
+        if gap < self.params.path_gap_m:
             return None
         return _Detour(self._shape(plan.points, robot, planner), side, math.inf, gap)

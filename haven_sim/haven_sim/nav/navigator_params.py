@@ -5,6 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from haven_sim.common.params import NOT_NEGATIVE, Bounds, check_bounds, param
+from haven_sim.robots.description import RobotDescription
+from haven_sim.robots.fields import from_robot
 
 
 @dataclass(frozen=True)
@@ -30,6 +32,29 @@ class NavigatorParams:
     diverge_m: float = param(0.15, "off the route by more than this, the robot is on a detour", NOT_NEGATIVE)
     goal_tolerance_m: float = param(0.1, "the goal counts as reached this close", NOT_NEGATIVE)
     use_goal_yaw: bool = param(True, "rotate to the goal's orientation at the end")
+    robot: RobotDescription = from_robot()  # an aerial robot keeps its flight's distance from people
+
+    @property
+    def person_distance_m(self) -> float:
+        """The least gap the robot keeps from a person's body: its flight's (0 on the ground)."""
+        flight = self.robot.flight
+        return 0.0 if flight is None else flight.person_distance_m
+
+    # The gaps the navigator works with: the parameters, the passing ones widened to the robot's
+    # person distance. The "on the path" test keeps path_clearance_m: widened as well, a person
+    # anywhere in a 2 m hallway is "on the path" of a drone keeping 0.8 m, and it waits for ever
+    # (hallway, the catalogue quadrotor: every trial timed out).
+    @property
+    def pass_gap_m(self) -> float:
+        return max(self.pass_clearance_m, self.person_distance_m)
+
+    @property
+    def min_pass_gap_m(self) -> float:
+        return max(self.min_pass_clearance_m, self.person_distance_m)
+
+    @property
+    def path_gap_m(self) -> float:
+        return self.path_clearance_m
 
     def __post_init__(self) -> None:
         check_bounds(self)  # (pass_angle_deg: beyond 60 the robot rotates in place)

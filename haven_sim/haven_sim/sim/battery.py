@@ -77,11 +77,12 @@ class Battery:
     def range_m(self) -> float:
         return self.level * self.params.full_range_m
 
-    def update(self, dt: float, distance_m: float, rotation_rad: float, speed_mps: float, distance_to_base_m: float) -> None:
-        """Account for one step: what the robot did during dt and where it is now."""
+    def update(self, dt: float, distance_m: float, rotation_rad: float, speed_mps: float, distance_to_base_m: float, idle: bool = True) -> None:
+        """Account for one step: what the robot did during dt and where it is now; `idle` False
+        leaves out the idle drain (an aerial robot on the ground)."""
         p = self.params
         on_base = distance_to_base_m <= p.base_radius_m and speed_mps <= p.charge_max_speed_mps
-        drain = distance_m / p.full_range_m + abs(rotation_rad) * p.drain_per_rad + dt * p.idle_drain_per_s
+        drain = distance_m / p.full_range_m + abs(rotation_rad) * p.drain_per_rad + (dt * p.idle_drain_per_s if idle else 0.0)
         self.charging = on_base and self.level < 1.0
         gain = p.charge_rate_per_s * dt if on_base else 0.0
         self.level = min(1.0, max(0.0, self.level - drain + gain))

@@ -31,8 +31,9 @@ def static_frames(robot: RobotDescription, map_frame: str = "map", odom_frame: s
     return ([Frame(map_frame, odom_frame, 0.0, 0.0, 0.0, 0.0)] if map_to_odom else []) + body
 
 
-def robot_frame(odom_pose: Pose2D, odom_frame: str = "odom", base_frame: str = "base_footprint") -> Frame:
-    return Frame(odom_frame, base_frame, odom_pose.x, odom_pose.y, 0.0, odom_pose.yaw)
+def robot_frame(odom_pose: Pose2D, odom_frame: str = "odom", base_frame: str = "base_footprint", altitude_m: float = 0.0) -> Frame:
+    """odom -> base_footprint; an aerial robot's base frame is `altitude_m` above the floor."""
+    return Frame(odom_frame, base_frame, odom_pose.x, odom_pose.y, altitude_m, odom_pose.yaw)
 
 
 def human_frames(humans: Mapping[str, Pose2D], map_frame: str = "map") -> list[Frame]:

@@ -39,7 +39,11 @@ class OccupancyGridData:
         return bool(self.data[r, c] >= 50)
 
 
-def rasterise(world: World, resolution_m: float = 0.05, padding_m: float = 0.5, removed: frozenset[str] = frozenset()) -> OccupancyGridData:
+def rasterise(
+    world: World, resolution_m: float = 0.05, padding_m: float = 0.5, removed: frozenset[str] = frozenset(), below: float | None = None
+) -> OccupancyGridData:
+    """The world's solid shapes as a grid; with `below`, without the obstacles lower than that
+    (the map an aerial robot plans on: it flies over them). The grid's extent is the whole world's."""
     if resolution_m <= 0:
         raise ValueError(f"map resolution must be positive, got {resolution_m}")
     xmin, ymin, xmax, ymax = world.bounds()
@@ -48,7 +52,7 @@ def rasterise(world: World, resolution_m: float = 0.05, padding_m: float = 0.5, 
     width = int(math.ceil((xmax + padding_m - ox) / resolution_m))
     height = int(math.ceil((ymax + padding_m - oy) / resolution_m))
     grid = np.zeros((height, width), dtype=np.int8)
-    for shape in world.solid_shapes(removed):
+    for shape in world.solid_shapes(removed, below):
         poly = list(shape.polygon)
         pts = np.asarray(poly)
         c0 = max(0, int((pts[:, 0].min() - ox) / resolution_m) - 1)

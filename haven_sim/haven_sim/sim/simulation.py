@@ -20,6 +20,7 @@ from haven_sim.robots.fields import from_robot
 from haven_sim.runtime.component import NS_PER_S
 from haven_sim.sim.battery import Battery, BatteryParams, BatteryReading
 from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits
+from haven_sim.sim.flight import Altitude, FlightPhase, clear_height, pad_of, start_pose
 from haven_sim.sim.occupancy import OccupancyGridData, rasterise
 from haven_sim.sim.odometry import Odometry, OdometryNoise
 from haven_sim.sim.physics import Physics
@@ -76,17 +77,23 @@ class Simulation:
         self.robot_gate = CommandGate(self.config.robot_limits, self.config.cmd_timeout_s)
         self.human_gates = {h.id: CommandGate(self.config.human_limits, self.config.cmd_timeout_s) for h in world.humans}
         self.battery = Battery(self.config.battery)
-        self.odometry = Odometry(world.robot_start, self.config.odom_noise, seed=self.config.seed)
+        robot = self.config.robot
+        self.start = start_pose(world, robot)  # an aerial robot starts on its pad
+        self.altitude = Altitude(robot.flight, pad_of(world, self.config.battery.base_radius_m))
+        self.below = clear_height(robot)  # an aerial robot flies over the obstacles lower than this
+        self.odometry = Odometry(self.start, self.config.odom_noise, seed=self.config.seed)
         self._events: list[Event] = []
         self.removed: set[str] = set()
         self._build()
 
     def _build(self) -> None:
         w = self.world
-        self.physics = Physics(w.edges(obstructions=False), w.robot_start, {h.id: h.start for h in w.humans}, self.config.robot.body())
+        # An aerial robot: no low obstacles in its physics, its scan (the lidar at flight height) or
+        # its map; walls, obstructions and people stay solid (at cruise height it is below a head).
+        self.physics = Physics(w.edges(obstructions=False, below=self.below), self.start, {h.id: h.start for h in w.humans}, self.config.robot.body())
         for o in w.obstructions:  # kept apart so that each can be removed
             self.physics.add_obstruction(o.id, o.shape.edges())
-        self.scanner = LaserScanner(self.config.scan, w.edges(), seed=self.config.seed)
+        self.scanner = LaserScanner(self.config.scan, w.edges(below=self.below), seed=self.config.seed)
         self.removed = set()
         self._battery_was_empty = self.battery.empty
         self._robot_pose = self.physics.robot.pose()
@@ -108,7 +115,7 @@ class Simulation:
             raise KeyError(obstruction_id)
         self.removed.add(obstruction_id)
         self.physics.remove_obstruction(obstruction_id)
-        self.scanner.set_edges(self.world.edges(frozenset(self.removed)))
+        self.scanner.set_edges(self.world.edges(frozenset(self.removed), below=self.below))
         self._emit(EventKind.OBSTRUCTION_REMOVED, id=obstruction_id)
 
     def reset(self) -> None:
@@ -117,7 +124,8 @@ class Simulation:
         for g in self.human_gates.values():
             g.reset()
         self.battery.reset()
-        self.odometry.reset(self.world.robot_start)
+        self.altitude.reset()
+        self.odometry.reset(self.start)
         self._build()
         self._emit(EventKind.RESET)
 
@@ -130,7 +138,8 @@ class Simulation:
     def step(self) -> None:
         dt = self._step_s
         now = self.time
-        robot_cmd = self.robot_gate.update(now, dt, enabled=not self.battery.empty)
+        free, flight_events = self.altitude.step(self.robot_gate.target(now), self._robot_pose, dt)
+        robot_cmd = self.robot_gate.update(now, dt, enabled=free and not self.battery.empty)
         human_cmds = {hid: g.update(now, dt) for hid, g in self.human_gates.items()}
         before = self._robot_pose
         self.physics.step(robot_cmd, human_cmds, dt)
@@ -139,8 +148,12 @@ class Simulation:
         dist = math.hypot(after.x - before.x, after.y - before.y)
         base = self.world.charging_base
         to_base = math.hypot(after.x - base.position[0], after.y - base.position[1]) if base else math.inf
-        self.battery.update(dt, dist, wrap_angle(after.yaw - before.yaw), dist / dt, to_base)
+        if self.altitude.flight is not None and self.altitude.phase is not FlightPhase.LANDED:
+            to_base = math.inf  # an aerial robot charges only when landed on its pad
+        self.battery.update(dt, dist, wrap_angle(after.yaw - before.yaw), dist / dt, to_base, self.altitude.airborne)
         self.odometry.update(after)
+        for kind in flight_events:
+            self._emit(kind)
         for e in self.physics.events:
             self._emit(e.kind, other=e.other)
         self.physics.events.clear()
@@ -187,4 +200,4 @@ class Simulation:
         return self.physics.in_contact()
 
     def occupancy(self, resolution_m: float = 0.05) -> OccupancyGridData:
-        return rasterise(self.world, resolution_m, removed=frozenset(self.removed))
+        return rasterise(self.world, resolution_m, removed=frozenset(self.removed), below=self.below)

@@ -131,9 +131,10 @@ class SimulatorComponent:
             self._map_due = False
             out.append(Message(topics.MAP, sim.occupancy(c.map_resolution_m), now))
         odom = sim.odometry_pose()
-        out.append(Message(topics.ODOM, RobotState(odom, sim.robot_twist()), now))
+        altitude = sim.altitude.altitude_m
+        out.append(Message(topics.ODOM, RobotState(odom, sim.robot_twist(), altitude), now))
         tf = topics.TF not in skip
-        frames = [robot_frame(odom, c.odom_frame, c.base_frame)] if tf else []
+        frames = [robot_frame(odom, c.odom_frame, c.base_frame, altitude)] if tf else []
         if due(k, self._step_ns, self._humans_ns):
             humans = sim.human_poses()
             frames += human_frames(humans, c.map_frame) if tf else []

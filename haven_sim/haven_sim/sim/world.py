@@ -24,6 +24,11 @@ class Shape:
     polygon: tuple[Point, ...]
     kind: str = "wall"  # wall | obstacle | obstruction
     id: str = ""
+    height_m: float | None = None  # an obstacle's top above the floor; None: solid to the ceiling
+
+    def below(self, height_m: float | None) -> bool:
+        """Whether its top is lower than `height_m` (something flying at that height passes over it)."""
+        return height_m is not None and self.height_m is not None and self.height_m < height_m
 
     def edges(self) -> FloatArray:
         return polygon_edges(list(self.polygon))
@@ -83,14 +88,21 @@ class World:
     obstructions: tuple[Obstruction, ...] = ()
     source: str = field(default="", compare=False)
 
-    def solid_shapes(self, removed: frozenset[str] = frozenset()) -> list[Shape]:
-        """Walls, obstacles and the obstructions not in `removed`."""
+    def solid_shapes(self, removed: frozenset[str] = frozenset(), below: float | None = None) -> list[Shape]:
+        """Walls, obstacles and the obstructions not in `removed`; with `below` (a flying robot's
+        lowest clear height), without the obstacles lower than that (walls and obstructions have
+        no height: always solid)."""
         live = [o.shape for o in self.obstructions if o.id not in removed]
-        return [*self.walls, *self.obstacles, *live]
+        return [*self.walls, *self.obstacles_at(below), *live]
 
-    def edges(self, removed: frozenset[str] = frozenset(), obstructions: bool = True) -> FloatArray:
-        """Edges (N, 4) of every solid shape; without obstructions when `obstructions` is False."""
-        shapes = self.solid_shapes(removed) if obstructions else [*self.walls, *self.obstacles]
+    def obstacles_at(self, below: float | None = None) -> list[Shape]:
+        """The obstacles, less those lower than `below` (None: all)."""
+        return [s for s in self.obstacles if not s.below(below)]
+
+    def edges(self, removed: frozenset[str] = frozenset(), obstructions: bool = True, below: float | None = None) -> FloatArray:
+        """Edges (N, 4) of every solid shape; without obstructions when `obstructions` is False,
+        without obstacles lower than `below` (see `solid_shapes`)."""
+        shapes = self.solid_shapes(removed, below) if obstructions else [*self.walls, *self.obstacles_at(below)]
         if not shapes:
             return np.zeros((0, 4))
         return np.vstack([s.edges() for s in shapes])

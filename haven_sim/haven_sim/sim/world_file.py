@@ -8,7 +8,8 @@ walls:                        # solid geometry; each item is either
   - segment: [[0, 0], [6, 0]] #   a centre line with a thickness (m) ...
     thickness: 0.1
   - polygon: [[2, 2], [3, 2], [3, 3]]   # ... or a simple polygon (any winding)
-obstacles: [...]              # same shapes as walls (furniture); drawn differently
+obstacles: [...]              # same shapes as walls (furniture); drawn differently; an optional
+  - {polygon: [[5, 1], [6, 1], [6, 2]], height: 0.75}   # height (m): a drone flies over what is lower
 rooms:                        # named places; a centre is a navigation goal
   - {name: west, centre: [1.5, 2.0]}
 hallways:                     # a centre line the robot should keep to, and its clear width
@@ -33,6 +34,8 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Sequence
+from dataclasses import replace
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
@@ -119,6 +122,12 @@ class ShapeFile(FileModel):
     thickness: Length | None = None  # type: ignore[valid-type]
 
 
+class ObstacleFile(ShapeFile):
+    """Furniture: a shape with an optional height (absent: solid to the ceiling, like a wall)."""
+
+    height: Length | None = None  # type: ignore[valid-type]
+
+
 class ObstructionFile(ShapeFile):
     id: Ident
     removed_when_human_reaches: Any = None  # a room of the world
@@ -165,7 +174,7 @@ class WorldFile(FileModel):
 
     name: Line(MAX_NAME_CHARS)  # type: ignore[valid-type]
     walls: Annotated[list[ShapeFile], _items("walls")]
-    obstacles: Annotated[list[ShapeFile], _items("obstacles")] | None = None
+    obstacles: Annotated[list[ObstacleFile], _items("obstacles")] | None = None
     rooms: Annotated[list[RoomFile], _items("rooms")] | None = None
     hallways: Annotated[list[HallwayFile], _items("hallways")] | None = None
     charging_base: ChargingBaseFile | None = None
@@ -227,7 +236,7 @@ class _Parser:
         world = World(
             name=d.name,
             walls=walls,
-            obstacles=self.shapes(d.obstacles, "obstacles", "obstacle"),
+            obstacles=self.obstacles(d.obstacles or []),
             rooms=rooms,
             hallways=self.hallways(d.hallways or []),
             charging_base=ChargingBase((base.position[0], base.position[1]), base.radius) if base else None,
@@ -241,8 +250,12 @@ class _Parser:
         self.check_free(world)
         return world
 
-    def shapes(self, value: list[ShapeFile] | None, key: str, kind: str) -> tuple[Shape, ...]:
+    def shapes(self, value: Sequence[ShapeFile] | None, key: str, kind: str) -> tuple[Shape, ...]:
         return tuple(self.shape(w, f"{key}[{i}]", kind) for i, w in enumerate(value or ()))
+
+    def obstacles(self, value: list[ObstacleFile]) -> tuple[Shape, ...]:
+        shapes = self.shapes(value, "obstacles", "obstacle")
+        return tuple(replace(s, height_m=o.height) for s, o in zip(shapes, value, strict=True))
 
     def hallways(self, value: list[HallwayFile]) -> tuple[Hallway, ...]:
         hallways = []
