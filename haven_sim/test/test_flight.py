@@ -193,3 +193,19 @@ def test_a_ground_robot_ignores_heights_and_has_no_flight():
     fly(sim, None, 1.0)
     assert sim.altitude.altitude_m == 0.0 and sim.battery.level > 0.5  # charges on the base as before
     assert BatteryParams().idle_drain_per_s == DEFAULT.battery.idle_drain_per_s
+
+
+def test_the_people_plan_round_the_furniture_the_drone_flies_over() -> None:
+    from haven_sim.sim.flight import clear_height
+    from haven_sim.sim.occupancy import on_the_floor, rasterise
+    from haven_sim.sim.world_file import load_world
+
+    world = load_world(Path(__file__).resolve().parents[2] / "haven_scenarios" / "haven_scenarios" / "worlds" / "shared_room.yaml")
+    below = clear_height(resolve_robot("quadrotor"))
+    table = (6.3, 2.4)  # the middle of a 0.75 m table
+    drone_map = rasterise(world, below=below)
+    assert not drone_map.is_occupied(*table)
+    floor = on_the_floor(drone_map, world, below)
+    assert floor.is_occupied(*table) and (floor.data == rasterise(world).data).all()
+    ground = rasterise(world)
+    assert clear_height(DEFAULT) is None and on_the_floor(ground, world, None) is ground  # a ground robot's map is the people's

@@ -31,7 +31,8 @@ from haven_sim.nav.planner import GridPlanner, PlanningError
 from haven_sim.robots.fields import RobotChoice
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
-from haven_sim.sim.occupancy import OccupancyGridData
+from haven_sim.sim.flight import clear_height
+from haven_sim.sim.occupancy import OccupancyGridData, on_the_floor
 from haven_viz.cues import CUES, PATH_NS, ArCues, CueState
 
 STOPPED_MPS = 0.02  # the robot counts as standing still (the battery charges only then)
@@ -41,8 +42,7 @@ GOAL_MATCH_M = 0.01  # a plan's goal this close to the mission's (events round t
 
 
 def any_reader(topic: str) -> str:
-    """How `wait_for` says "whichever node reads this topic" (somebody's own planner)."""
-    return "/" + topic.lstrip("/")
+    return "/" + topic.lstrip("/")  # how `wait_for` says "whichever node reads this topic" (somebody's own planner)
 
 
 @dataclass(frozen=True)
@@ -166,19 +166,19 @@ class TrialDirector:
 
     # -- inputs ----------------------------------------------------------------------------------
     def on_map(self, grid: OccupancyGridData, now: float) -> list[Message]:
+        grid = on_the_floor(grid, self.scenario.world, clear_height(self.scenario.robot))  # people walk round what a drone flies over
         first = self.planner is None
         self.planner = GridPlanner(grid)
         self.sight = Sight(grid)
         if first:
             self.participants = make_participants(self.scenario, grid, self.seed)
-            base = self.scenario.world.charging_base
             kind = self.scenario
             self.mission = Mission(
                 robot_targets(kind),
                 self.path_length,
                 "fixed" if kind.kind == "hallway" else kind.robot_order,
                 kind.battery,
-                base.position if base else None,
+                kind.world.charging_base.position if kind.world.charging_base else None,
                 self.seed,
             )
             return []

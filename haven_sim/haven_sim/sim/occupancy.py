@@ -9,7 +9,7 @@ import numpy as np
 import numpy.typing as npt
 
 from haven_sim.common.geometry import points_in_polygon
-from haven_sim.sim.world import World
+from haven_sim.sim.world import Shape, World
 
 OCCUPIED = 100
 
@@ -52,25 +52,44 @@ def rasterise(
     width = int(math.ceil((xmax + padding_m - ox) / resolution_m))
     height = int(math.ceil((ymax + padding_m - oy) / resolution_m))
     grid = np.zeros((height, width), dtype=np.int8)
+    out = OccupancyGridData(resolution_m, width, height, ox, oy, grid)
     for shape in world.solid_shapes(removed, below):
-        poly = list(shape.polygon)
-        pts = np.asarray(poly)
-        c0 = max(0, int((pts[:, 0].min() - ox) / resolution_m) - 1)
-        c1 = min(width, int((pts[:, 0].max() - ox) / resolution_m) + 2)
-        r0 = max(0, int((pts[:, 1].min() - oy) / resolution_m) - 1)
-        r1 = min(height, int((pts[:, 1].max() - oy) / resolution_m) + 2)
-        cols = np.arange(c0, c1)
-        rows = np.arange(r0, r1)
-        xs, ys = np.meshgrid(ox + (cols + 0.5) * resolution_m, oy + (rows + 0.5) * resolution_m)
-        inside = points_in_polygon(xs, ys, poly)
-        grid[r0:r1, c0:c1][inside] = OCCUPIED
-        # Shapes thinner than a cell may contain no cell centre: also mark the cells their edges cross.
-        for x0, y0, x1, y1 in shape.edges():
-            n = max(2, int(math.hypot(x1 - x0, y1 - y0) / (resolution_m / 2.0)) + 1)
-            sx = np.linspace(x0, x1, n)
-            sy = np.linspace(y0, y1, n)
-            cc = np.floor((sx - ox) / resolution_m).astype(int)
-            rr = np.floor((sy - oy) / resolution_m).astype(int)
-            ok = (cc >= 0) & (cc < width) & (rr >= 0) & (rr < height)
-            grid[rr[ok], cc[ok]] = OCCUPIED
-    return OccupancyGridData(resolution_m, width, height, ox, oy, grid)
+        _mark(out, shape)
+    return out
+
+
+def on_the_floor(grid: OccupancyGridData, world: World, below: float | None) -> OccupancyGridData:
+    """`grid`, an aerial robot's map (without the obstacles lower than `below`), with those obstacles
+    marked again: the map of the people, who walk round the furniture the robot flies over."""
+    low = [s for s in world.obstacles if s.below(below)]
+    if not low:
+        return grid
+    out = OccupancyGridData(grid.resolution_m, grid.width, grid.height, grid.origin_x, grid.origin_y, grid.data.copy())
+    for shape in low:
+        _mark(out, shape)
+    return out
+
+
+def _mark(g: OccupancyGridData, shape: Shape) -> None:
+    """The cells of `shape` occupied, in place."""
+    resolution_m, width, height, ox, oy, grid = g.resolution_m, g.width, g.height, g.origin_x, g.origin_y, g.data
+    poly = list(shape.polygon)
+    pts = np.asarray(poly)
+    c0 = max(0, int((pts[:, 0].min() - ox) / resolution_m) - 1)
+    c1 = min(width, int((pts[:, 0].max() - ox) / resolution_m) + 2)
+    r0 = max(0, int((pts[:, 1].min() - oy) / resolution_m) - 1)
+    r1 = min(height, int((pts[:, 1].max() - oy) / resolution_m) + 2)
+    cols = np.arange(c0, c1)
+    rows = np.arange(r0, r1)
+    xs, ys = np.meshgrid(ox + (cols + 0.5) * resolution_m, oy + (rows + 0.5) * resolution_m)
+    inside = points_in_polygon(xs, ys, poly)
+    grid[r0:r1, c0:c1][inside] = OCCUPIED
+    # Shapes thinner than a cell may contain no cell centre: also mark the cells their edges cross.
+    for x0, y0, x1, y1 in shape.edges():
+        n = max(2, int(math.hypot(x1 - x0, y1 - y0) / (resolution_m / 2.0)) + 1)
+        sx = np.linspace(x0, x1, n)
+        sy = np.linspace(y0, y1, n)
+        cc = np.floor((sx - ox) / resolution_m).astype(int)
+        rr = np.floor((sy - oy) / resolution_m).astype(int)
+        ok = (cc >= 0) & (cc < width) & (rr >= 0) & (rr < height)
+        grid[rr[ok], cc[ok]] = OCCUPIED
