@@ -154,3 +154,14 @@ def test_a_robot_too_big_for_the_worlds_start_is_one_line(tmp_path: Path, capsys
     assert main(["batch", "hallway", "--robot", str(big), "--seeds", "0", "--out", str(tmp_path / "x.csv")]) == 2
     (line,) = capsys.readouterr().err.strip().splitlines()
     assert "robot 'big_bot' (radius 3.00 m) does not fit at world 'hallway''s robot start" in line and "overlaps a wall" in line
+
+
+def test_a_drone_counts_its_hovering_in_the_range_its_mission_plans_with() -> None:
+    from haven_sim.robots.robot_kind import resolve_robot
+
+    room = load_scenario("shared_room")
+    drone = resolve_robot("quadrotor")
+    assert room.battery.drain_factor == 1.0  # TurtleBot2 drains only as it moves
+    flying = room.for_robot(drone).battery
+    hover_m_per_m = drone.battery.idle_drain_per_s * 15.0 / drone.motion.cruise_speed_mps  # the scenario's 15 m pack
+    assert flying.capacity_m == 15.0 and flying.drain_factor == pytest.approx(1.0 + hover_m_per_m)

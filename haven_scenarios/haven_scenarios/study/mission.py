@@ -99,7 +99,9 @@ class Mission:
 
     # -- decisions -------------------------------------------------------------------------------
     def _range(self, level: float) -> float:
-        return level * self.battery.capacity_m
+        """Metres the robot can travel on `level`: the pack, less what the time at cruise drains (a
+        drone hovers all the way; nothing for a robot that drains only as it moves)."""
+        return level * self.battery.capacity_m / self.battery.drain_factor
 
     def _pick(self, robot: Pose2D) -> Target | None:
         """The next target by the order; targets kept for last come after every other."""

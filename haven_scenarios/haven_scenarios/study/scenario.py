@@ -65,6 +65,7 @@ class BatteryPlan:
     capacity_m: float = 100.0
     charge_until: float = 1.0  # fraction of full at which charging stops
     safety_factor: float = 1.2  # continuous mode: go home when range <= this x distance home
+    drain_factor: float = 1.0  # charge used per metre, in metres: 1 + what the time at cruise drains (a drone hovers)
 
 
 @dataclass(frozen=True)
@@ -112,7 +113,9 @@ class Scenario:
                 f"{self.source or self.name}: robot {robot.name!r} (radius {robot.radius_m:.2f} m) does not fit at world "
                 f"'{self.world.name}''s robot start ({start.x:g}, {start.y:g}): its body overlaps a {what}"
             )
-        battery = replace(self.battery, capacity_m=self.pack_m if self.pack_m is not None else robot.battery.capacity_m)
+        pack = self.pack_m if self.pack_m is not None else robot.battery.capacity_m
+        drain = 1.0 + robot.battery.idle_drain_per_s * pack / robot.motion.cruise_speed_mps  # (1 for a robot that drains only as it moves)
+        battery = replace(self.battery, capacity_m=pack, drain_factor=drain)
         return replace(self, robot=robot, robot_model=model or robot.name, battery=battery)
 
 
