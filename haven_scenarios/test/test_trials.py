@@ -49,10 +49,10 @@ def test_same_seed_same_trial_and_seeds_vary_the_participant():
 
 def test_condition_switches_cues_and_their_exposure():
     s = load_scenario("shared_room")
-    none = run_trial(s, 0, Toggles(False, False, False, False)).metrics
+    none = run_trial(s, 0, Toggles.none()).metrics
     assert none["thought_bubble_shown_s"] == 0 and none["turns_signalled"] == 0
     assert none["condition"] == "none"
-    assert parse_condition(["turn_signals", "path_projection"]) == Toggles(True, True, False, False)
+    assert parse_condition(["turn_signals", "path_projection"]) == Toggles.none().replaced({"turn_signals": True, "path_projection": True})
     with pytest.raises(ValueError, match="unknown cue 'sparkles'"):
         parse_condition(["sparkles"])
 
@@ -60,7 +60,7 @@ def test_condition_switches_cues_and_their_exposure():
 def test_the_hallway_shows_the_turn_signals_only_as_hallway_did_unless_a_run_says_otherwise():
     hallway = load_scenario("hallway")
     assert hallway.condition == ("turn_signals",)
-    assert parse_condition(hallway.condition) == Toggles(False, True, False, False)
+    assert parse_condition(hallway.condition) == Toggles.none().replaced({"turn_signals": True})
     assert load_scenario("shared_room").condition == ("all",)
 
 
