@@ -61,6 +61,16 @@ def test_continuous_abandons_the_target_when_range_runs_low_and_resumes_it():
     assert m.tick(0.0, Pose2D(0, 0), 1.0).goal[:2] == (10.0, 0.0)
 
 
+def test_a_robot_that_drains_while_it_waits_watches_its_range_in_on_arrival_mode_too():
+    # A drone held up hovering drains with no metre travelled: a check made on leaving cannot foresee it.
+    for drains_waiting, goes_home in ((False, False), (True, True)):
+        battery = BatteryPlan(mode="on_arrival", capacity_m=32.0, safety_factor=1.5, drains_waiting=drains_waiting)
+        m = Mission([T[0], T[2]], straight, "fixed", battery, BASE)
+        m.start(0.0, Pose2D(0, 0), 1.0)
+        out = m.tick(0.0, Pose2D(6.0, 0.0), 0.28)  # 8.96 m range <= 1.5 x 6 m home
+        assert (m.phase is Phase.TO_BASE) is goes_home and (out.goal is not None) is goes_home
+
+
 def test_a_target_no_charged_battery_can_serve_is_skipped_not_driven_to_on_a_flat_battery():
     """Defect: "not even a full charge covers it" was judged from where the robot stood, and the
     robot then went anyway and died on the way (11 of 20 on_arrival / random trials)."""

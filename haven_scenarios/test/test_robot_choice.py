@@ -161,7 +161,8 @@ def test_a_drone_counts_its_hovering_in_the_range_its_mission_plans_with() -> No
 
     room = load_scenario("shared_room")
     drone = resolve_robot("quadrotor")
-    assert room.battery.drain_factor == 1.0  # TurtleBot2 drains only as it moves
+    assert room.battery.drain_factor == 1.0 and not room.battery.drains_waiting  # TurtleBot2 drains only as it moves
     flying = room.for_robot(drone).battery
     hover_m_per_m = drone.battery.idle_drain_per_s * 15.0 / drone.motion.cruise_speed_mps  # the scenario's 15 m pack
     assert flying.capacity_m == 15.0 and flying.drain_factor == pytest.approx(1.0 + hover_m_per_m)
+    assert flying.drains_waiting  # its mission watches the range while it hovers (study/mission.py)

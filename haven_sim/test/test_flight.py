@@ -15,7 +15,9 @@ from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.nav.follower import FollowerParams, PathFollower
 from haven_sim.nav.motion_style import MotionStyle
-from haven_sim.nav.navigator_params import NavigatorParams
+from haven_sim.nav.navigator import Navigator
+from haven_sim.nav.navigator_params import WAIT_MARGIN_M, NavigatorParams
+from haven_sim.nav.planner import PlannerParams
 from haven_sim.robots.fields import DEFAULT, with_robot
 from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.sim.battery import BatteryParams
@@ -176,6 +178,17 @@ def test_the_drone_passes_people_at_its_person_distance():
     assert (ground.pass_gap_m, ground.min_pass_gap_m) == (ground.pass_clearance_m, ground.min_pass_clearance_m)
     assert drone.pass_gap_m == drone.min_pass_gap_m == 0.5
     assert drone.path_gap_m == ground.path_gap_m == ground.path_clearance_m
+
+
+def test_a_drone_brakes_where_it_may_still_replan_round_the_person_it_waits_for():
+    # Braking at wait_gap_m (1.2 m), nearer than the arm's length it keeps (its radius, a person's,
+    # 0.5 m), a drone could neither pass nor re-plan: it waited for ever (shared_room, blocker).
+    grid = sim_for(room(), DEFAULT).occupancy()
+    ground = NavigatorParams()
+    drone = Navigator(grid, with_robot(PlannerParams(), DRONE), params=with_robot(NavigatorParams(), DRONE))
+    assert ground.wait_distance_m == ground.wait_gap_m
+    assert drone.params.wait_distance_m == pytest.approx(drone._need(drone.params.pass_gap_m) + WAIT_MARGIN_M)
+    assert drone.params.wait_distance_m > drone.params.wait_gap_m
 
 
 def test_a_holonomic_robot_corrects_sideways_and_a_diff_drive_does_not():

@@ -170,3 +170,12 @@ def test_our_planners_paths_read_as_written():
                 moved, turned = math.hypot(b.x - a.x, b.y - a.y) > 1e-3, abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) > math.radians(0.5)
                 small = abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) < math.radians(2.0)
                 assert seg.kind is (A if moved and turned else S if moved else R) or (small and seg.kind is S)
+
+
+@pytest.mark.parametrize("start_deg", [70.0, 180.0, -120.0])
+def test_a_holonomic_robot_sets_off_straight_where_a_diff_drive_rotates_first(start_deg):
+    holonomic = MotionStyle(rotate_in_place=False)
+    poses = shape_path([(0.0, 0.0), (4.0, 0.0)], math.radians(start_deg), holonomic)
+    assert kinds(poses) == [S]
+    assert min(p.x for p in poses) >= 0.0 and max(abs(p.y) for p in poses) < 1e-9  # never swings away first
+    assert kinds(shape_path([(0.0, 0.0), (4.0, 0.0)], math.radians(40.0), holonomic)) == [A, S]  # an arc within 60 deg

@@ -11,6 +11,10 @@ planned path lengths instead of straight lines:
   * `continuous`: the same check before leaving, and at every tick, when the remaining range falls
     to `safety_factor` x path(robot -> base), abandon the target and go and charge.
 
+A robot that drains while it waits (a drone hovers while a person holds it up; `drains_waiting`)
+runs the continuous check in either mode: a check made on leaving cannot foresee how long it will
+be held up. It is the low-battery "Return" failsafe of drone autopilots (PX4's COM_LOW_BAT_ACT).
+
 Charging lasts until the level reaches `charge_until`; then the remaining targets resume, the
 abandoned one first. A target that a battery charged to `charge_until` can serve from the base one
 way only is kept for last (the mission ends there); one it cannot reach from the base at all is
@@ -234,7 +238,8 @@ class Mission:
                 self._say(out, f"Charging: {round(100 * level)} %")
             return out
         last = self.current is not None and [t.id for t in self.pending] == [self.current.id]  # (checked one way on leaving)
-        if self.phase is Phase.GOING and p.mode == "continuous" and self.base is not None and not last:
+        watch = p.mode == "continuous" or p.drains_waiting
+        if self.phase is Phase.GOING and watch and self.base is not None and not last:
             home = self.path_length((robot.x, robot.y), self.base)
             if self._range(level) <= p.safety_factor * home:
                 self._to_base(out, f"range {self._range(level):.1f} m <= {p.safety_factor:g} x {home:.1f} m home")

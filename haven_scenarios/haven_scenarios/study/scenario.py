@@ -66,6 +66,7 @@ class BatteryPlan:
     charge_until: float = 1.0  # fraction of full at which charging stops
     safety_factor: float = 1.2  # continuous mode: go home when range <= this x distance home
     drain_factor: float = 1.0  # charge used per metre, in metres: 1 + what the time at cruise drains (a drone hovers)
+    drains_waiting: bool = False  # the robot drains while it waits (a drone hovers): return-to-home failsafe in every mode
 
 
 @dataclass(frozen=True)
@@ -115,7 +116,7 @@ class Scenario:
             )
         pack = self.pack_m if self.pack_m is not None else robot.battery.capacity_m
         drain = 1.0 + robot.battery.idle_drain_per_s * pack / robot.motion.cruise_speed_mps  # (1 for a robot that drains only as it moves)
-        battery = replace(self.battery, capacity_m=pack, drain_factor=drain)
+        battery = replace(self.battery, capacity_m=pack, drain_factor=drain, drains_waiting=robot.battery.idle_drain_per_s > 0)
         return replace(self, robot=robot, robot_model=model or robot.name, battery=battery)
 
 

@@ -233,19 +233,11 @@ class Navigator:
             self._follow(passing.poses, NavState.DETOUR, passing.back_s)
             self.side = passing.side
             out.path = passing.poses
-            out.events.append(
-                self._event(
-                    EventKind.REPLANNED,
-                    now,
-                    reason="human on the path",
-                    side=passing.side,
-                    human=_xy(person.xy),
-                    gap_m=round(gap, 2),
-                    clearance_m=round(passing.clearance_m, 2),
-                )
-            )
+            data = {"side": passing.side, "human": _xy(person.xy), "gap_m": round(gap, 2), "clearance_m": round(passing.clearance_m, 2)}
+            out.events.append(self._event(EventKind.REPLANNED, now, reason="human on the path", **data))
             return out
-        if (gap <= self.params.wait_gap_m or at_stop and gap <= self.params.wait_gap_m + 1.0) and self.state is not NavState.WAITING:
+        wait_gap = self.params.wait_distance_m  # (beyond the arm's length below, where re-planning is not tried)
+        if (gap <= wait_gap or at_stop and gap <= wait_gap + 1.0) and self.state is not NavState.WAITING:
             reason = "human at the robot's next stop" if at_stop else "human on the path and no room to pass"
             self.state = NavState.WAITING
             out.waiting = True

@@ -4,9 +4,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.params import NOT_NEGATIVE, Bounds, check_bounds, param
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import from_robot
+
+WAIT_MARGIN_M = 0.3  # a wide robot brakes this far beyond arm's length (it rests a little nearer)
 
 
 @dataclass(frozen=True)
@@ -55,6 +58,13 @@ class NavigatorParams:
     @property
     def path_gap_m(self) -> float:
         return self.path_clearance_m
+
+    @property
+    def wait_distance_m(self) -> float:
+        """How far ahead of a person it cannot pass the robot brakes: `wait_gap_m`, or farther for a
+        robot that keeps a wide distance (a drone): beyond the arm's length (bodies + pass_gap_m)
+        within which the navigator does not re-plan round a person, else it would wait for ever."""
+        return max(self.wait_gap_m, HUMAN_BODY.radius_m + self.robot.radius_m + self.pass_gap_m + WAIT_MARGIN_M)
 
     def __post_init__(self) -> None:
         check_bounds(self)  # (pass_angle_deg: beyond 60 the robot rotates in place)

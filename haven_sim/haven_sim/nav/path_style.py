@@ -127,6 +127,10 @@ def shape_path(
     p = params or ShapeParams()
     clear = is_clear or (lambda pts: True)
     pts = [points[0]] + [q for a, q in zip(points, points[1:]) if _dist(a, q) > 1e-9]
+    if len(pts) >= 2 and not m.rotate_in_place and abs(wrap_angle(_heading(pts[0], pts[1]) - start_yaw)) > m.arc_max_angle_rad:
+        # A holonomic robot sets off straight where a differential drive would rotate first (an
+        # arc from its heading would swing it away from the way, up to a loop).
+        start_yaw = _heading(pts[0], pts[1])
     b = _Builder(Pose2D(pts[0][0], pts[0][1], wrap_angle(start_yaw)), p)
     if len(pts) >= 2:
         _start(b, pts[1], m, p, clear)
