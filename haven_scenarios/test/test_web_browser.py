@@ -5,8 +5,8 @@ by page state, never by time), W walks the avatar (seen on /humans), walking up 
 its thought bubble in the rendered pixels, a lab's installed cue is drawn and is a console toggle,
 a cue toggled in the console leaves the participant's view and is recorded, the researcher's Stop
 ends the trial, and nothing is served without the token.
-Two participants (one through the machine's network address) see each other, and Enter VR works
-with an emulated headset. Skipped, with one line, where no Chromium can be had.
+Two participants (one through the machine's network address) see each other, Enter VR works
+with an emulated headset, and a participant sees the flying drone's NavPoints, Arrow and Gaze. Skipped, with one line, where no Chromium can be had.
 """
 
 import csv
@@ -15,6 +15,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import threading
@@ -222,6 +223,39 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     assert ("trial_end", None, None, "stopped", "researcher") in kinds
     assert json.load(open(os.path.join(folder, "metrics.json")))["end_reason"] == "stopped"
     assert tracebacks("".join(trial.lines)) == []
+
+
+IN_VIEW = """m => { if (!m) return false; const p = havenProject(m.x, m.y, m.z);
+  return p.z < 1 && p.x > 0 && p.x < innerWidth && p.y > 0 && p.y < innerHeight; }"""
+
+
+def test_a_participant_sees_the_flying_drone_with_its_navpoints_arrow_and_gaze(ros, browser, tmp_path):
+    """`haven run shared_room --robot quadrotor --teleop h1 --web`: the participant starts facing
+    the drone's pad; once it has taken off, its three intent cues of Walker et al. 2018 are drawn
+    in the air, in view, and the participant walks among them."""
+    trial = WebTrial(ros, ["run", "shared_room", "--robot", "quadrotor", "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")])
+    urls = trial.urls()
+    page = browser.new_page(viewport={"width": 960, "height": 540})
+    page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
+    page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.robot && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
+    page.click("#start")
+    seen = f"""() => {{ const inView = {IN_VIEW}; const s = havenState;
+      return s.robot && s.robot.z > 1.2 && ['nav_points', 'arrow', 'gaze'].every(ns => inView(havenMarker(ns, ns === 'nav_points' ? 1 : 0))); }}"""
+    page.wait_for_function(seen, timeout=PAGE_TIMEOUT_MS)  # up at cruise height, its cues in front of the participant
+    screenshot("web_drone.png", page.screenshot())
+    drone = page.evaluate("havenState.robot")
+    assert drone["z"] == pytest.approx(1.5, abs=0.3), drone  # it flies at its cruise height (the catalogue's 1.5 m)
+    countdown = page.evaluate("havenMarker('nav_points', 2)")  # each NavPoint's arrival countdown, above it
+    assert countdown is not None and countdown["z"] > 1.2
+    x0 = page.evaluate("havenState.pose.x")
+    page.keyboard.down("KeyW")
+    page.wait_for_function(f"havenState.pose.x > {x0} + 0.3", timeout=PAGE_TIMEOUT_MS)  # walks toward the pad
+    page.keyboard.up("KeyW")
+    os.killpg(trial.proc.pid, signal.SIGINT)  # the researcher's Ctrl-C: the session is kept
+    trial.proc.wait(timeout=120)
+    out = "".join(trial.lines)
+    assert "haven: interrupted" in out and tracebacks(out) == [], out[-3000:]
+    assert json.load(open(os.path.join(trial.session(), "metrics.json")))["robot"] == "quadrotor"
 
 
 def lan_address():
