@@ -149,7 +149,8 @@ class CueState:
         return None if level is None else float(level)
 
     def to_json(self, stamp: float) -> str:
-        return json.dumps({"stamp": round(stamp, 4), "toggles": dataclasses.asdict(self.toggles), **self.values}, sort_keys=True)  # type: ignore[call-overload]
+        toggles = {c: on for c, on in dataclasses.asdict(self.toggles).items() if c in self.cues}  # type: ignore[call-overload]
+        return json.dumps({"stamp": round(stamp, 4), "toggles": toggles, **self.values}, sort_keys=True)  # (the console lists these)
 
     @staticmethod
     def from_json(text: str) -> tuple[float, CueState]:

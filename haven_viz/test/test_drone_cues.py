@@ -129,7 +129,9 @@ def test_a_diff_drive_has_no_drone_cues_even_in_condition_all():
     frame = cues.frame(Pose2D(0.0, 0.0, 0.0), toggles=Toggles())
     assert not set(DRONE_CUES) & set(cues.cues) and not any(m.ns in DRONE_CUES for m in frame.markers)
     assert frame.state.cues == cues_for(DEFAULT.kinematics) and not any(frame.state.shown(c) for c in DRONE_CUES)
-    assert not {"nav_points", "arrow", "gaze"} & set(json_keys(frame.state))  # /haven/cue_state: HAVEN's values only
+    published = json_keys(frame.state)
+    assert not {"nav_points", "arrow", "gaze"} & set(published)  # /haven/cue_state: HAVEN's values only ...
+    assert set(published["toggles"]) == set(frame.state.cues)  # ... and toggles (the console lists these)
 
 
 def json_keys(state):
