@@ -91,7 +91,14 @@ class WebTrial:
         )
         ros.procs.append(self.proc)
         self.lines: list[str] = []
-        threading.Thread(target=lambda: self.lines.extend(iter(self.proc.stdout.readline, "")), daemon=True).start()
+        self.reader = threading.Thread(target=lambda: self.lines.extend(iter(self.proc.stdout.readline, "")), daemon=True)
+        self.reader.start()
+
+    def ended(self, timeout_s=120):
+        """The exit code, once the process has ended and all it printed has been read."""
+        code = self.proc.wait(timeout=timeout_s)
+        self.reader.join(timeout=timeout_s)
+        return code
 
     def urls(self, timeout_s=90, pages=2):
         deadline = time.monotonic() + timeout_s
@@ -214,7 +221,7 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     # ... and stops the trial: the participant is told, the session is complete.
     console.click("#stop")
     page.wait_for_function("havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)
-    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
     events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
     kinds = [(e["type"], e.get("cue"), e.get("on"), e.get("reason"), e.get("by")) for e in events]
@@ -252,7 +259,7 @@ def test_a_participant_sees_the_flying_drone_with_its_navpoints_arrow_and_gaze(r
     page.wait_for_function(f"havenState.pose.x > {x0} + 0.3", timeout=PAGE_TIMEOUT_MS)  # walks toward the pad
     page.keyboard.up("KeyW")
     os.killpg(trial.proc.pid, signal.SIGINT)  # the researcher's Ctrl-C: the session is kept
-    trial.proc.wait(timeout=120)
+    trial.ended()
     out = "".join(trial.lines)
     assert "haven: interrupted" in out and tracebacks(out) == [], out[-3000:]
     assert json.load(open(os.path.join(trial.session(), "metrics.json")))["robot"] == "quadrotor"
@@ -462,7 +469,7 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     assert "Thank you for your answers" in page.inner_text("#prompt")
 
     # Every answer in: haven run stops by itself.
-    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
     data = json.load(open(os.path.join(folder, "questionnaires.json")))
     assert set(data) == {"h1"} and list(data["h1"]) == ["godspeed", "legibility", "nasa_tlx"]
@@ -504,7 +511,7 @@ def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros
     assert trial.proc.poll() is None  # haven run waits for the answers
     console.click("#skip-questionnaires")
     page.wait_for_function("havenState.prompt === 'Trial over' && havenState.questionnaire === null", timeout=PAGE_TIMEOUT_MS)
-    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
     session = json.load(open(os.path.join(folder, "session.json")))
     assert session["questionnaires_answered"] == {"h1": []} and session["questionnaires_end"] == "skipped"
@@ -542,7 +549,7 @@ def test_ctrl_c_while_waiting_for_answers_keeps_the_session_and_says_what_was_an
         assert time.monotonic() < deadline and trial.proc.poll() is None, "".join(trial.lines)[-3000:]
         time.sleep(0.05)
     trial.proc.send_signal(signal.SIGINT)
-    assert trial.proc.wait(timeout=120) == 0, "".join(trial.lines)[-3000:]
+    assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     session = json.load(open(os.path.join(trial.session(), "session.json")))
     assert session["questionnaires"] == ["nasa_tlx"] and session["questionnaires_answered"] == {"h1": []}
     assert session["questionnaires_end"] == "interrupted" and session["valid"] and session["outcome"] == "stopped"
