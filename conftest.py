@@ -14,6 +14,8 @@ says how many), so the unit tier runs in a venv without ROS.
 
 import ast
 import importlib.util
+import os
+import shutil
 import sys
 from pathlib import Path
 
@@ -63,3 +65,25 @@ def ros():
     from ros_harness import harness
 
     yield from harness()
+
+
+CHROMIUM_ARGS = ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist"]  # software WebGL
+
+
+def chromium_path() -> str | None:
+    found = os.environ.get("HAVEN_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
+    return found if found and os.path.exists(found) else None
+
+
+@pytest.fixture(scope="module")
+def browser():  # type: ignore[no-untyped-def]
+    """Headless Chromium for a test module's pages (closed with the module: pages left open would
+    go on rendering); skipped, with one line, where no Chromium or playwright can be had."""
+    path = chromium_path()
+    if path is None:
+        pytest.skip("no Chromium here (Debian's chromium package; scripts/setup.sh installs it when run as root): browser tests skipped")
+    playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
+    with playwright.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=path, args=CHROMIUM_ARGS)
+        yield b
+        b.close()

@@ -30,26 +30,6 @@ from test_example_plugins import installed
 pytestmark = [pytest.mark.ros, pytest.mark.browser]
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 PAGE_TIMEOUT_MS = 90_000  # software rendering on a loaded 2-core machine is slow to start
-CHROMIUM_ARGS = ["--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist"]
-
-
-def chromium_path():
-    found = os.environ.get("HAVEN_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
-    return found if found and os.path.exists(found) else None
-
-
-@pytest.fixture(scope="module")
-def browser():
-    path = chromium_path()
-    if path is None:
-        pytest.skip("no Chromium here (Debian's chromium package; scripts/setup.sh installs it when run as root): browser tests skipped")
-    playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
-    with playwright.sync_playwright() as p:
-        b = p.chromium.launch(executable_path=path, args=CHROMIUM_ARGS)
-        yield b
-        b.close()
-
-
 PAGE_LOAD_MS = 120_000  # a limit, not a wait: on a loaded 2-core machine a page took over 30 s to load
 WEB_SOURCES = os.path.join(os.path.dirname(__file__), "..", "web")
 

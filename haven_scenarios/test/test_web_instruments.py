@@ -8,7 +8,6 @@ from __future__ import annotations
 import json
 import os
 import re
-import shutil
 import subprocess
 import sys
 import threading
@@ -33,18 +32,6 @@ STUDY = {
     "participants": 2, "consent": {"text": CONSENT}, "before_study": ["demographics", {"name": "nars", "shuffle": True}],
     "after_study": ["preference"],
 }  # fmt: skip
-
-
-@pytest.fixture(scope="module")
-def browser():  # type: ignore[no-untyped-def]
-    path = os.environ.get("HAVEN_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
-    if not path or not os.path.exists(path):
-        pytest.skip("no Chromium here (Debian's chromium package; scripts/setup.sh installs it when run as root): browser tests skipped")
-    playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
-    with playwright.sync_playwright() as p:
-        b = p.chromium.launch(executable_path=path, args=["--use-angle=swiftshader", "--enable-unsafe-swiftshader"])
-        yield b
-        b.close()
 
 
 def screenshot(name: str, png: bytes) -> None:

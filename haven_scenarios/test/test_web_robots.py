@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import os
-import shutil
 import socket
 import struct
 from io import BytesIO
@@ -97,18 +96,6 @@ def pyramid_glb() -> bytes:
     data += b"\0" * (-len(data) % 4)
     chunks = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(data), 0x004E4942) + data
     return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
-
-
-@pytest.fixture(scope="module")
-def browser():  # type: ignore[no-untyped-def]
-    path = os.environ.get("HAVEN_CHROMIUM") or shutil.which("chromium") or shutil.which("chromium-browser")
-    if not path or not os.path.exists(path):
-        pytest.skip("no Chromium here (Debian's chromium package; scripts/setup.sh installs it when run as root): browser tests skipped")
-    playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
-    with playwright.sync_playwright() as p:
-        b = p.chromium.launch(executable_path=path, args=["--use-angle=swiftshader", "--enable-unsafe-swiftshader"])
-        yield b
-        b.close()
 
 
 def free_port() -> int:
