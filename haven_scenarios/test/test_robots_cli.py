@@ -27,7 +27,7 @@ def test_haven_robots_name_gives_each_figure_with_its_source(capsys):
     assert out.startswith("turtlebot4: TurtleBot4")
     assert "limits.max_linear_speed_mps = 0.46  (max speed 0.46 m/s" in out
     assert "battery.capacity_m = 2700  (operating time" in out
-    assert "cues.signal_height_m = " in out and "not stated" in out  # (derived from the body)
+    assert "cues.signal_height_m = " in out and "no source given" in out  # (derived from the body)
 
 
 def test_haven_robots_with_a_file_and_with_an_unknown_name(capsys, tmp_path):

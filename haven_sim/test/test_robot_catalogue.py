@@ -68,6 +68,12 @@ def test_a_labs_robot_file_extends_a_catalogue_robot(tmp_path):
     base = resolve_robot("turtlebot3_burger")
     assert (robot.name, robot.height_m) == ("my_bot", 0.6)
     assert robot.limits == base.limits and robot.footprint == base.footprint
+    # The figures it leaves keep their sources; the one it changes loses the burger's.
+    assert robot.sources["mass_kg"] == base.sources["mass_kg"] and "height_m" not in robot.sources
+    own.write_text(own.read_text() + "limits: {max_linear_speed_mps: 0.21}\nsources: {height_m: our lab}\n")
+    robot = resolve_robot(str(own))
+    assert robot.sources["height_m"] == "our lab" and "limits.max_linear_speed_mps" not in robot.sources
+    assert robot.sources["limits.max_angular_speed_rps"] == base.sources["limits.max_angular_speed_rps"]
 
 
 BURGER = yaml.safe_load((Path(catalogue.__file__).parent / "turtlebot3_burger.yaml").read_text())

@@ -115,8 +115,9 @@ def problem(model: type[BaseModel], e: ValidationError) -> str:
         return f"{key}: unknown key (allowed: {', '.join(_fields_at(model, loc[:-1]))})"
     if kind == "missing":
         return f"{key}: is required"
-    if kind == "value_error":
-        return f"{key}: {str(err['msg']).removeprefix('Value error, ')}"
+    if kind == "value_error":  # (a check of the whole file names its keys itself)
+        msg = str(err["msg"]).removeprefix("Value error, ")
+        return f"{key}: {msg}" if loc else msg
     if kind == "literal_error":
         options = str(err.get("ctx", {}).get("expected", "")).replace("'", "").replace(" or ", ", ")
         return f"{key}: must be one of {options}, got {short(given)}"

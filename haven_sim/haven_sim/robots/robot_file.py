@@ -1,9 +1,10 @@
 """Robot files: a robot's figures in YAML, checked by the schema layer (`haven schema robot`).
 
 A file either describes a whole robot or starts from another (`extends: turtlebot2`, a catalogue
-name or a file beside it) and changes what differs; mappings merge key by key. `sources` says where
-each figure comes from (`limits.max_linear_speed_mps: "Kobuki user guide, p. 3"`): the catalogue
-cites one for every figure it states.
+name or a file beside it) and changes what differs; mappings merge key by key, a footprint and a
+list are replaced whole. `sources` says where each figure comes from (`limits.max_linear_speed_mps:
+"Kobuki user guide, p. 3"`): the catalogue cites one for every figure it states; a file that
+extends another keeps the sources of the figures it leaves as they were.
 """
 
 from __future__ import annotations
@@ -234,8 +235,26 @@ def merged(path: Path, base: Any, depth: int) -> dict[str, Any]:
     else:
         raise RobotError(f"{file_label(path)}: extends: no robot file {parent!r} beside it")
     under = dict(under)
-    under.pop("sources", None) if "sources" in data else None
-    return _merge(under, data)
+    changed = _paths(data)  # the parent's sources no longer cite what this file changes
+    kept = {k: v for k, v in (under.get("sources") or {}).items() if not any(_related(k, p) for p in changed)}
+    sources = {**kept, **(data.get("sources") or {})} if isinstance(data.get("sources", {}), dict) else data["sources"]
+    return {**_merge(under, data), "sources": sources}
+
+
+def _paths(data: dict[str, Any], prefix: str = "") -> list[str]:
+    """The dotted paths a file sets (a footprint and a list are set whole)."""
+    out: list[str] = []
+    for k, v in data.items():
+        if k in ("name", "title", "sources") and not prefix:
+            continue
+        path = f"{prefix}{k}"
+        out += _paths(v, path + ".") if isinstance(v, dict) and path != "footprint" else [path]
+    return out
+
+
+def _related(source: str, changed: str) -> bool:
+    """A source names the changed figure, a part of it, or a section it is in."""
+    return source == changed or source.startswith(changed + ".") or changed.startswith(source + ".")
 
 
 def _merge(under: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:

@@ -77,7 +77,7 @@ def source_of(robot: RobotDescription, path: str) -> str:
         found = robot.sources.get(".".join(parts[:n]))
         if found:
             return found
-    return "not stated: the suite's default or what follows from the body"
+    return "no source given: the file's own figure, the suite's default or what follows from the body"
 
 
 def shown(value: Any) -> str:
