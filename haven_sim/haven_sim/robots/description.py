@@ -135,7 +135,7 @@ class Flight:
     cruise_height_m: float
     climb_rate_mps: float
     clearance_m: float  # flies over obstacles at least this much lower than itself
-    person_distance_m: float  # keeps at least this between its footprint and a person (never over a head)
+    person_distance_m: float  # the gap it plans and passes people with (a person who walks up to it may come nearer; never under it)
 
 
 @dataclass(frozen=True)
