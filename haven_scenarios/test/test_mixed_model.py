@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from haven_scenarios.record.mixed_model import Observation, fit, fit_counts, model_rows
@@ -36,6 +38,21 @@ def test_recovers_the_participant_variance_and_the_effects() -> None:
     all_, zero = f.term("all"), f.term("turn_signals")
     assert all_ is not None and all_.p is not None and all_.p < 1e-6
     assert zero is not None and zero.p is not None and zero.p > 0.001
+
+
+def test_a_robot_that_varies_between_participants_is_a_fixed_effect() -> None:
+    # Half the participants with each robot (robot_design: between); the TIAGo adds 2.0 to every value.
+    obs = [
+        replace(o, robot=r, value=o.value + (2.0 if r == "tiago" else 0.0))
+        for o in synthetic(120, 1.0, 0.5)
+        for r in [("tiago", "turtlebot2")[int(o.participant[1:]) % 2]]
+    ]
+    f = fit(obs, CONDITIONS, "none")
+    assert f.formula == "value ~ condition + robot + position + (1 | participant)" and "robot coded against tiago" in f.note
+    robot = f.term("robot:turtlebot2")
+    assert robot is not None and robot.ci_low is not None and robot.ci_high is not None and robot.ci_low < -2.0 < robot.ci_high
+    same = fit([replace(o, robot="turtlebot2") for o in obs], CONDITIONS, "none")  # one robot: no robot term
+    assert "robot" not in same.formula and same.term("robot:turtlebot2") is None
 
 
 def test_identical_participants_give_a_singular_fit_said_plainly() -> None:

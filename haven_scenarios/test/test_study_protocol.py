@@ -51,6 +51,11 @@ def test_williams_odd_needs_two_squares_and_then_each_pair_comes_twice(n: int) -
     assert set(carry_over(rows[:n]).values()) != {1}  # one square alone is not balanced
 
 
+@pytest.mark.parametrize("design", ["williams", "latin", "full", "none"])
+def test_one_scenario_or_condition_has_one_order(design: str) -> None:
+    assert orders(design, 1) == [[0]]  # (Williams' mirror once made one scenario two "block orders")
+
+
 @pytest.mark.parametrize("design, n", [("williams", 4), ("williams", 5), ("latin", 3), ("latin", 4), ("full", 3), ("full", 4)])
 def test_every_design_is_balanced_for_position(design: str, n: int) -> None:
     rows = orders(design, n)

@@ -1,12 +1,14 @@
-"""The study's mixed model: per scenario and measure, `value ~ condition (+ position) + (1 | participant)`.
+"""The study's mixed model: per scenario and measure, `value ~ condition (+ robot) (+ position) + (1 | participant)`.
 
 A linear mixed model with a random intercept per participant (statsmodels `MixedLM`, REML), fitted
 on the valid, non-practice trials: the conditions are within-subject, so each participant's own
 level is a random effect and the condition effects are fixed ones, coded against a reference
 condition (treatment coding). The trial's overall position in the participant's session enters as
 a linear fixed effect when it varies and is not confounded with the condition (with no
-counterbalancing it is: then it is left out and the note says so). A per-person measure is averaged
-over the trial's people first, so a trial is one observation.
+counterbalancing it is: then it is left out and the note says so). Where the study's robot varies (a
+design factor, between or within participants), the robot enters as a fixed effect too, coded against
+the first robot in alphabetical order (terms `robot:<name>`). A per-person measure is averaged over the
+trial's people first, so a trial is one observation.
 
 A fit whose participant variance is (numerically) zero is *singular*: the data show no difference
 between participants beyond the trial-to-trial noise, the model degenerates to ordinary least
@@ -48,6 +50,7 @@ class Observation:
     condition: str
     position: float
     value: float
+    robot: str = ""  # the trial's robot (a design factor where it varies)
 
 
 @dataclass(frozen=True)
@@ -86,7 +89,8 @@ def observations(results: Sequence[TrialResults], scenario: str, measure: str, p
         values = [m.value for m in r.measures if m.measure == measure and bool(m.human) == per_person]
         if values and all(math.isfinite(v) for v in values):
             position = next((float(d[k]) for k in POSITIONS if d.get(k) is not None), 0.0)
-            out.append(Observation(str(d["participant"]), str(d["condition"]), position, sum(values) / len(values)))
+            robot = str(d.get("robot") or "")
+            out.append(Observation(str(d["participant"]), str(d["condition"]), position, sum(values) / len(values), robot))
     return out
 
 
@@ -100,13 +104,21 @@ def _design(obs: Sequence[Observation], conditions: Sequence[str], reference: st
     others = [c for c in conditions if c != reference and any(o.condition == c for o in obs)]
     columns = [np.ones(len(obs))] + [np.array([o.condition == c for o in obs], dtype=float) for c in others]
     names = ["intercept", *others]
-    position = np.array([o.position for o in obs])
     note = ""
+    robots = sorted({o.robot for o in obs})
+    if len(robots) > 1:  # the robot as a design factor, against the first robot
+        with_robot = [*columns, *(np.array([o.robot == r for o in obs], dtype=float) for r in robots[1:])]
+        if np.linalg.matrix_rank(np.column_stack(with_robot)) == len(with_robot):
+            columns, names = with_robot, [*names, *(f"robot:{r}" for r in robots[1:])]
+            note = f"robot coded against {robots[0]}"
+        else:
+            note = "robot left out: confounded with condition"
+    position = np.array([o.position for o in obs])
     if np.ptp(position) > 0:
         with_position = np.column_stack([*columns, position - position.mean()])
         if np.linalg.matrix_rank(with_position) == with_position.shape[1]:
             return with_position, [*names, "position"], note
-        note = "position left out: confounded with condition"
+        note = "; ".join(filter(None, [note, "position left out: confounded with condition"]))
     return np.column_stack(columns), names, note
 
 
@@ -117,7 +129,8 @@ def fit(obs: Sequence[Observation], conditions: Sequence[str], reference: str) -
 
     people = sorted({o.participant for o in obs})
     x, names, note = _design(obs, conditions, reference)
-    formula = "value ~ condition" + (" + position" if "position" in names else "") + " + (1 | participant)"
+    robot = " + robot" if any(n.startswith("robot:") for n in names) else ""
+    formula = "value ~ condition" + robot + (" + position" if "position" in names else "") + " + (1 | participant)"
     base = Fit(formula, reference, len(people), len(obs))
     if not any(o.condition == reference for o in obs):
         return replace(base, note=f"no valid trial in the reference condition {reference}")

@@ -56,6 +56,8 @@ def latin(n: int) -> list[list[int]]:
 
 def orders(design: str, n: int) -> list[list[int]]:
     """The design's orders of n things (indices into the study's conditions or scenarios)."""
+    if n <= 1:  # (one thing has one order: Williams' mirror of it would count it twice)
+        return [list(range(n))]
     if design == "williams":
         return williams(n)
     if design == "latin":
@@ -129,8 +131,9 @@ def design_note(study: Study) -> str:
         text += f". Combined: {n} sequences (the least common multiple of {b} and {c}): every {n} participants use each block order "
         text += "and each condition order equally often"
         if n < b * c:
-            text += f" (the two are paired, not crossed: every block order meets every condition order only in a multiple of {b * c})"
-    text += _robots_note(study, n)
+            text += f" (the two are paired, not crossed: sequence s takes block order s mod {b} and condition order s mod {c}, "
+            text += f"so only {n} of the {b * c} pairs occur)"
+    text += _robots_note(study, n, c)
     full = n * (len(study.robots) if study.robots and study.robot_design == "between" else 1)
     if full > 1:
         text += f"; {p} participant(s) " + ("complete it" if p % full == 0 else f"do not complete it: use a multiple of {full}")
@@ -141,13 +144,17 @@ def design_note(study: Study) -> str:
     return text + "."
 
 
-def _robots_note(study: Study, n: int) -> str:
+def _robots_note(study: Study, n: int, c: int) -> str:
     if not study.robots:
         return ""
     names = ", ".join(r.name for r in study.robots)
     if study.robot_design == "within":
         rows = len(robot_orders(study))
-        return f". Robots (within): every participant meets {names}, one block of trials each, in one of {rows} robot orders"
+        text = f". Robots (within): every participant meets {names}, one block of trials each, in one of {rows} robot orders"
+        if rows > 1 and c > 1 and n < rows * c:
+            text += f" (paired with the condition orders, not crossed: sequence s takes robot order s mod {rows}, "
+            text += f"so only {n} of the {rows * c} pairs occur)"
+        return text
     return f". Robots (between): each set of {n} participants meets one robot, in turn {names}"
 
 

@@ -224,7 +224,7 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
     folder, info = _new_session(plan, sessions)
     pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf < UNCAPPED_RTF else "") if lockstep else f"{rtf:g}x real time"
     say(
-        f"haven: {scenario.name} trial, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
+        f"haven: {scenario.name} trial, robot {scenario.robot.name}, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
         f"seed {plan.seed}, {pace}, ROS domain {ros.domain_id} -> {folder}"
     )
     started = time.monotonic()

@@ -60,7 +60,8 @@ class SimNode(ComponentNode):
             self.create_timer(self.pacer.tick_period_s, self._tick, clock=Clock(clock_type=ClockType.STEADY_TIME))
             pace = f"{config.real_time_factor:g}x real time"
         self.get_logger().info(
-            f"world '{world.name}' from {world.source}: {len(world.humans)} human(s), {config.sim.physics_rate_hz:g} Hz physics, {pace}"
+            f"world '{world.name}' from {world.source}: robot {config.sim.robot.name}, {len(world.humans)} human(s), "
+            f"{config.sim.physics_rate_hz:g} Hz physics, {pace}"
         )
 
     def now(self) -> float:
