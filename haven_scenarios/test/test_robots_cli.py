@@ -38,3 +38,13 @@ def test_haven_robots_with_a_file_and_with_an_unknown_name(capsys, tmp_path):
     assert main(["robots", "r2d2"]) == 2
     err = capsys.readouterr().err
     assert err.count("\n") == 1 and "unknown robot 'r2d2'" in err
+
+
+def test_haven_validate_checks_robot_files(capsys, tmp_path):
+    good, bad = tmp_path / "my_bot.yaml", tmp_path / "fast.yaml"
+    good.write_text("extends: youbot\nname: my_bot\ntitle: youBot with a mast\nheight_m: 0.9\n")
+    bad.write_text("extends: turtlebot3_burger\nname: fast\ntitle: F\nmotion: {cruise_speed_mps: 0.5}\n")
+    assert main(["validate", str(good), str(bad)]) == 2
+    captured = capsys.readouterr()
+    assert captured.out.splitlines() == [f"ok: {good} (robot my_bot)"]
+    assert captured.err.splitlines() == [f"haven: error: {bad}: motion.cruise_speed_mps: 0.5 is above limits.max_linear_speed_mps 0.22"]

@@ -1,4 +1,4 @@
-"""`haven validate FILE...`: check world, scenario, study and parameter files without starting
+"""`haven validate FILE...`: check world, scenario, study, robot and parameter files without starting
 anything; `haven schema KIND`: a file kind's JSON Schema, for editors; `haven plugins`: what is
 installed to name in them."""
 
@@ -20,7 +20,8 @@ from haven_scenarios.tools.commands.common import fail
 from haven_sim.common import plugins
 from haven_sim.common.params import ParamsError, params_of
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
-from haven_sim.robots.robot_file import RobotFileModel
+from haven_sim.robots.robot_file import RobotError, RobotFileModel
+from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import WorldFile, parse_world
 
@@ -30,7 +31,7 @@ SCHEMAS: dict[str, Any] = {"world": WorldFile, "scenario": ScenarioFile, "study"
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     validate = sub.add_parser(
-        "validate", help="check world, scenario, study and parameter files (which is which: by their keys) without starting anything"
+        "validate", help="check world, scenario, study, robot and parameter files (which is which: by their keys) without starting anything"
     )
     validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
     validate.set_defaults(func=validate_cmd)
@@ -75,16 +76,16 @@ def validate_cmd(args: argparse.Namespace) -> int:
     for path in args.files:
         try:
             print(f"ok: {file_label(path)} ({describe(path)})", flush=True)
-        except (YamlFileError, WorldError, ScenarioError, StudyError, ParamsError) as e:
+        except (YamlFileError, WorldError, ScenarioError, StudyError, ParamsError, RobotError) as e:
             fail(str(e))
             failed += 1
     return 2 if failed else 0
 
 
 def describe(path: Path) -> str:
-    """What a valid file is, "world NAME", "scenario NAME", "study NAME" or "parameter file for NODES":
-    a scenario has `kind` or `world`, a world `walls`, a study `scenarios` and `conditions`, a
-    parameter file `ros__parameters` under each node."""
+    """What a valid file is, "world NAME", "scenario NAME", "study NAME", "robot NAME" or "parameter
+    file for NODES": a scenario has `kind` or `world`, a world `walls`, a study `scenarios` and
+    `conditions`, a robot `kinematics` or `extends`, a parameter file `ros__parameters` under each node."""
     data = read_yaml(path, "file")
     if isinstance(data, dict) and ("scenarios" in data or "conditions" in data):
         study = parse_study(data, str(path))
@@ -101,12 +102,14 @@ def describe(path: Path) -> str:
         return f"scenario {name}"
     if isinstance(data, dict) and "walls" in data:
         return f"world {parse_world(data, str(path)).name}"
+    if isinstance(data, dict) and ("kinematics" in data or "extends" in data):
+        return f"robot {resolve_robot(str(path)).name}"
     if isinstance(data, dict) and data and all(isinstance(v, dict) and "ros__parameters" in v for v in data.values()):
         params = params_of(data, file_label(path))
         checked_suite_config(params, file_label(path))
         return f"parameter file for {', '.join(params)}"
     kinds = (
-        "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key), a study (no 'scenarios' key) "
-        "nor a parameter file (no 'ros__parameters')"
+        "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key), a study (no 'scenarios' key), "
+        "a robot (no 'kinematics' or 'extends' key) nor a parameter file (no 'ros__parameters')"
     )
     raise YamlFileError(f"{file_label(path)}: {kinds}")
