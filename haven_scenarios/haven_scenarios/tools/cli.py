@@ -19,6 +19,7 @@
     haven schema world|scenario|study|questionnaire|robot   a file kind's JSON Schema, for YAML editors
     haven plugins                                     the registered plugins: KIND NAME PACKAGE
     haven robots [NAME|FILE]                          the robots to choose from; one robot's figures and sources
+    haven world show WORLD [--out PNG]                check a world file and draw it from above
 
 Discovery stays on this machine unless --network is given (study data stays local). Each group of
 subcommands lives in `haven_scenarios.tools.commands`.
@@ -41,11 +42,11 @@ class Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from haven_scenarios.tools.commands import batch_report, clients, files, recordings, robots, study, suite, trial
+    from haven_scenarios.tools.commands import batch_report, clients, files, recordings, robots, study, suite, trial, world
 
     parser = Parser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    for group in (suite, clients, trial, batch_report, study, recordings, files, robots):
+    for group in (suite, clients, trial, batch_report, study, recordings, files, robots, world):
         group.add(sub)
     return parser
 
