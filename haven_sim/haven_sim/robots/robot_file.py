@@ -204,6 +204,7 @@ def _name(v: Any) -> Any:
     return v
 
 
+REPLACED_WHOLE = frozenset({"footprint"})  # mappings an extending file replaces, not merges (a circle or a polygon)
 MAX_EXTENDS = 8  # a chain of `extends` longer than this is a loop
 
 
@@ -237,8 +238,8 @@ def merged(path: Path, base: Any, depth: int) -> dict[str, Any]:
     under = dict(under)
     changed = _paths(data)  # the parent's sources no longer cite what this file changes
     kept = {k: v for k, v in (under.get("sources") or {}).items() if not any(_related(k, p) for p in changed)}
-    sources = {**kept, **(data.get("sources") or {})} if isinstance(data.get("sources", {}), dict) else data["sources"]
-    return {**_merge(under, data), "sources": sources}
+    own = data.get("sources", {})
+    return {**_merge(under, data), "sources": {**kept, **own} if isinstance(own, dict) else own}  # (not a mapping: the schema says so)
 
 
 def _paths(data: dict[str, Any], prefix: str = "") -> list[str]:
@@ -248,7 +249,7 @@ def _paths(data: dict[str, Any], prefix: str = "") -> list[str]:
         if k in ("name", "title", "sources") and not prefix:
             continue
         path = f"{prefix}{k}"
-        out += _paths(v, path + ".") if isinstance(v, dict) and path != "footprint" else [path]
+        out += _paths(v, path + ".") if isinstance(v, dict) and path not in REPLACED_WHOLE else [path]
     return out
 
 
@@ -260,7 +261,7 @@ def _related(source: str, changed: str) -> bool:
 def _merge(under: dict[str, Any], over: dict[str, Any]) -> dict[str, Any]:
     out = dict(under)
     for k, v in over.items():
-        if isinstance(v, dict) and isinstance(out.get(k), dict) and k != "footprint":
+        if isinstance(v, dict) and isinstance(out.get(k), dict) and k not in REPLACED_WHOLE:
             out[k] = _merge(out[k], v)
         else:
             out[k] = v

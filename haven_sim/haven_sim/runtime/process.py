@@ -9,12 +9,27 @@ import ctypes.util
 import os
 import signal
 import sys
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from types import FrameType
 
 # Every signal whose default action ends a process and that a process can catch: each one stops
 # a node cleanly (the recorder closes its bag) and the supervisor with all its children.
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM, signal.SIGXCPU)
 PR_SET_PDEATHSIG = 1
+
+
+@contextmanager
+def on_stop_signals(handler: Callable[[int, FrameType | None], None], but: tuple[int, ...] = ()) -> Iterator[None]:
+    """`handler` for every stop signal (less `but`) while the block runs, the previous handlers
+    back after it. Main thread only. Installed explicitly, a handler also catches a SIGINT that the
+    shell had ignored (a background job), which Python would otherwise leave ignored."""
+    previous = {sig: signal.signal(sig, handler) for sig in STOP_SIGNALS if sig not in but}
+    try:
+        yield
+    finally:
+        for sig, old in previous.items():
+            signal.signal(sig, old)
 
 
 def die_with_parent(sig: int = signal.SIGTERM) -> Callable[[], None] | None:

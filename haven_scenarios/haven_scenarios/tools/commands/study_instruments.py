@@ -9,7 +9,6 @@ participants are asked nothing: each instrument is stored as not asked, never in
 
 from __future__ import annotations
 
-import signal
 import sys
 from collections.abc import Callable, Sequence
 from datetime import datetime, timezone
@@ -19,7 +18,7 @@ from typing import Any
 
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.study.questionnaires import CHOICE, TEXT, Item, Questionnaire, in_order, item_order
-from haven_sim.runtime.process import STOP_SIGNALS
+from haven_sim.runtime.process import on_stop_signals
 
 BATCH_REASON = "simulated participant (--batch pilot)"
 Read = Callable[[str], str]
@@ -105,14 +104,12 @@ def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, 
     server.start()
     # Every stop signal ends the wait, as it ends `haven run`: also where the shell started this
     # in the background with SIGINT ignored (Python then leaves Ctrl-C ignored; the wait hung).
-    previous = {sig: signal.signal(sig, _interrupted) for sig in STOP_SIGNALS}
     try:
-        when = "before the first trial" if first else "after the last trial"
-        print(f"web: participant {book.path.parent.name} ({when}: {', '.join(q.name for q in book.pending(qs))}): {server.url}", flush=True)
-        server.finished.wait()
+        with on_stop_signals(_interrupted):
+            when = "before the first trial" if first else "after the last trial"
+            print(f"web: participant {book.path.parent.name} ({when}: {', '.join(q.name for q in book.pending(qs))}): {server.url}", flush=True)
+            server.finished.wait()
     finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
         server.stop()
     return not book.declined()
 

@@ -36,7 +36,7 @@ from haven_scenarios.tools.locks import FileLock, Locked
 from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_sim.common.params import ParamsError
 from haven_sim.robots.robot_kind import resolve_robot
-from haven_sim.runtime.process import STOP_SIGNALS
+from haven_sim.runtime.process import on_stop_signals
 
 INTERRUPTED = 130
 RUNNER_LOCK = ".runner.lock"  # in the participant's folder, held while a `haven study run` works on it
@@ -121,14 +121,11 @@ def _raise_stopped(signum: int, frame: FrameType | None) -> None:
 
 def run_batch_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
     """The trial in this process; True if a stop signal (or Ctrl-C) cut it short."""
-    previous = {sig: signal.signal(sig, _raise_stopped) for sig in STOP_SIGNALS if sig != signal.SIGINT}
     try:
-        batch_session(trial, sessions, study, args.params_file)
+        with on_stop_signals(_raise_stopped, but=(signal.SIGINT,)):
+            batch_session(trial, sessions, study, args.params_file)
     except (KeyboardInterrupt, Stopped):
         return True
-    finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
     return False
 
 
