@@ -15,7 +15,7 @@ setup(
         (f"share/{package_name}/config", glob("haven_sim/config/*")),
         (f"share/{package_name}/worlds", glob("haven_sim/worlds/*.yaml")),
     ],
-    install_requires=["setuptools", "numpy", "pymunk", "PyYAML", "pydantic>=2"],
+    install_requires=["setuptools", "numpy", "pymunk", "PyYAML", "pydantic>=2", "pillow"],
     zip_safe=True,
     maintainer="HAVEN maintainers",
     maintainer_email="haven@example.org",

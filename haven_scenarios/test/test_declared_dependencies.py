@@ -29,6 +29,7 @@ UPSTREAM_KEYS = {
     "python3-pydantic": "pydantic",
     "python3-rosbags-pip": "rosbags",
     "python3-scipy": "scipy",
+    "python3-pil": "pillow",
 }
 
 

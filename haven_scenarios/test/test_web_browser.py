@@ -245,6 +245,33 @@ def test_a_participant_sees_the_flying_drone_with_its_navpoints_arrow_and_gaze(r
     assert json.load(open(os.path.join(trial.session(), "metrics.json")))["robot"] == "quadrotor"
 
 
+def test_a_participant_walks_in_a_world_made_from_a_ros_map_and_its_walls_hold(ros, browser, tmp_path):
+    """A world from a map the test makes (map_maker.py: map_server PGM + YAML + overlay): the page
+    draws its walls, and the participant walking into the dividing wall is held by it (the walls
+    are the simulator's too), then walks through its door."""
+    from map_maker import make_map_world
+
+    trial = WebTrial(ros, ["run", str(make_map_world(tmp_path / "map")), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")])
+    page = browser.new_page(viewport={"width": 960, "height": 540})
+    page.goto(trial.urls()["participant h1"], timeout=PAGE_LOAD_MS)
+    page.wait_for_function(
+        "s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held' && s.frames > 2", timeout=PAGE_TIMEOUT_MS
+    )
+    page.click("#start")
+    page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    screenshot("web_map_world.png", page.screenshot())  # the dividing wall ahead, its door to the left
+    page.keyboard.down("KeyW")  # from (5.5, 3.0) facing west: the dividing wall's east face is at x = 3.65
+    page.wait_for_function("havenState.pose.x < 4.0", timeout=PAGE_TIMEOUT_MS)
+    frames = page.evaluate("havenState.frames")
+    page.wait_for_function(f"havenState.frames > {frames} + 20", timeout=PAGE_TIMEOUT_MS)  # still pressing on
+    page.keyboard.up("KeyW")
+    assert page.evaluate("havenState.pose.x") > 3.65 + 0.25 - 0.05  # the body (0.25 m) against the wall, not through it
+    os.killpg(trial.proc.pid, signal.SIGINT)
+    trial.ended()
+    out = "".join(trial.lines)
+    assert "haven: interrupted" in out and tracebacks(out) == [], out[-3000:]
+
+
 def lan_address():
     """This machine's address on its network (not loopback), as another machine would use it."""
     import socket

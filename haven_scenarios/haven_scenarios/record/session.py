@@ -50,6 +50,7 @@ from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import DEFAULT
 from haven_sim.robots.robot_file import RobotError, merged
 from haven_sim.robots.robot_kind import resolve_robot
+from haven_sim.sim.map_file import world_files
 from haven_sim.sim.world import World, WorldError
 from haven_viz.cues import CUES, CueToggles
 from haven_viz.world_markers import world_markers
@@ -173,7 +174,8 @@ def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
     if robot is not None:
         atomic.write_text(folder / ROBOT_FILE, robot)
     data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps, **_params(h.params)} for h in scenario.humans]
-    atomic.write_text(folder / WORLD_FILE, Path(scenario.world_path).read_text(encoding="utf-8"))
+    for name, content in world_files(scenario.world, WORLD_FILE).items():  # (a world from a map: its image too)
+        atomic.write_bytes(folder / name, content)
     atomic.write_text(folder / SCENARIO_FILE, yaml.safe_dump(data, sort_keys=False))
     atomic.write_text(folder / PARAMS_FILE, params_yaml)
 

@@ -33,3 +33,9 @@ def write_text(path: str | Path, text: str) -> None:
     """`path` holds either its old content or all of `text` (UTF-8), however the process stops."""
     with replacing(path) as tmp:
         tmp.write_text(text, encoding="utf-8")
+
+
+def write_bytes(path: str | Path, data: bytes) -> None:
+    """`path` holds either its old content or all of `data`, however the process stops."""
+    with replacing(path) as tmp:
+        tmp.write_bytes(data)

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import numpy.typing as npt
 
 from haven_sim.common.geometry import points_in_polygon
-from haven_sim.sim.world import Shape, World
+from haven_sim.sim.world import MAP_WALL_ID, Shape, World
 
 OCCUPIED = 100
 
@@ -43,9 +43,18 @@ def rasterise(
     world: World, resolution_m: float = 0.05, padding_m: float = 0.5, removed: frozenset[str] = frozenset(), below: float | None = None
 ) -> OccupancyGridData:
     """The world's solid shapes as a grid; with `below`, without the obstacles lower than that
-    (the map an aerial robot plans on: it flies over them). The grid's extent is the whole world's."""
+    (the map an aerial robot plans on: it flies over them). The grid's extent is the whole world's.
+    A world made from a ROS map or floor plan has that map as its grid (its own resolution, as
+    map_server publishes it), with what the world adds to it marked (walls, obstacles, obstructions)."""
     if resolution_m <= 0:
         raise ValueError(f"map resolution must be positive, got {resolution_m}")
+    if world.map is not None:
+        source = world.map.grid()
+        out = replace(source, data=source.data.copy())
+        for shape in world.solid_shapes(removed, below):
+            if shape.id != MAP_WALL_ID:
+                _mark(out, shape)
+        return out
     xmin, ymin, xmax, ymax = world.bounds()
     ox = math.floor((xmin - padding_m) / resolution_m) * resolution_m
     oy = math.floor((ymin - padding_m) / resolution_m) * resolution_m

@@ -7,10 +7,16 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from haven_sim.common.geometry import FloatArray, Point, Pose2D, polygon_edges
+
+if TYPE_CHECKING:
+    from haven_sim.sim.map_image import MapImage
+
+MAP_WALL_ID = "map"  # the id of the walls made from a world's map (`map_image.wall_boxes`)
 
 
 class WorldError(ValueError):
@@ -87,6 +93,7 @@ class World:
     gems: tuple[Gem, ...] = ()
     obstructions: tuple[Obstruction, ...] = ()
     source: str = field(default="", compare=False)
+    map: MapImage | None = field(default=None, compare=False, repr=False)  # the ROS map or floor plan its walls come from
 
     def solid_shapes(self, removed: frozenset[str] = frozenset(), below: float | None = None) -> list[Shape]:
         """Walls, obstacles and the obstructions not in `removed`; with `below` (a flying robot's

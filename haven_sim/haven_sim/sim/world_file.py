@@ -4,7 +4,9 @@ A world is everything the simulator, planner and scenarios need to know about a 
 
 ```yaml
 name: small_test              # required
-walls:                        # solid geometry; each item is either
+map: building.yaml            # optional: walls from a ROS map or floor plan (`map_file`), then
+                              #   everything below is an overlay in map coordinates
+walls:                        # solid geometry (required without `map`); each item is either
   - segment: [[0, 0], [6, 0]] #   a centre line with a thickness (m) ...
     thickness: 0.1
   - polygon: [[2, 2], [3, 2], [3, 3]]   # ... or a simple polygon (any winding)
@@ -44,7 +46,10 @@ from haven_sim.common.geometry import Point, Pose2D, polygon_area, segment_to_po
 from haven_sim.common.schema import FileModel, Line, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
 from haven_sim.robots.fields import DEFAULT
+from haven_sim.sim.map_file import load_map
+from haven_sim.sim.map_image import wall_boxes
 from haven_sim.sim.world import (
+    MAP_WALL_ID,
     ChargingBase,
     Gem,
     Hallway,
@@ -173,7 +178,8 @@ class WorldFile(FileModel):
     """A world file's shape (the module docstring shows one)."""
 
     name: Line(MAX_NAME_CHARS)  # type: ignore[valid-type]
-    walls: Annotated[list[ShapeFile], _items("walls")]
+    map: Any = None  # a map_server YAML file or inline map settings (`map_file`)
+    walls: Annotated[list[ShapeFile], _items("walls")] | None = None
     obstacles: Annotated[list[ObstacleFile], _items("obstacles")] | None = None
     rooms: Annotated[list[RoomFile], _items("rooms")] | None = None
     hallways: Annotated[list[HallwayFile], _items("hallways")] | None = None
@@ -228,8 +234,11 @@ class _Parser:
 
     def world(self, d: WorldFile) -> World:
         walls = self.shapes(d.walls, "walls", "wall")
+        grid = load_map(d.map, self.source) if d.map is not None else None
+        if grid is not None:
+            walls = tuple(Shape(_ccw(list(box)), "wall", MAP_WALL_ID) for box in wall_boxes(grid)) + walls
         if not walls:
-            raise self.fail("walls", "needs at least one wall")
+            raise self.fail("walls", "needs at least one wall" + ("" if grid is None else " (the map has no occupied cell)"))
         rooms = tuple(Room(r.name, (r.centre[0], r.centre[1])) for r in d.rooms or ())
         self.unique([r.name for r in rooms], "rooms", "name")
         base = d.charging_base
@@ -245,8 +254,10 @@ class _Parser:
             gems=self.gems(d.gems or []),
             obstructions=self.obstructions(d.obstructions or [], {r.name for r in rooms}),
             source=self.source,
+            map=grid,
         )
         self.check_extent(world)
+        self.check_on_map(world)
         self.check_free(world)
         return world
 
@@ -308,6 +319,19 @@ class _Parser:
         problem = span_problem(items)
         if problem:
             raise self.fail(*problem)
+
+    def check_on_map(self, world: World) -> None:
+        """On a world made from a map, the places the overlay names lie on the map."""
+        if world.map is None:
+            return
+        items = [("robot.start", world.robot_start[:2])] + [(f"humans[{i}].start", h.start[:2]) for i, h in enumerate(world.humans)]
+        items += [(f"rooms[{i}].centre", r.centre) for i, r in enumerate(world.rooms)]
+        items += [(f"gems[{i}].position", g.position) for i, g in enumerate(world.gems)]
+        items += [("charging_base.position", world.charging_base.position)] if world.charging_base else []
+        for key, (x, y) in items:
+            if not world.map.contains(x, y):
+                x0, y0, x1, y1 = world.map.bounds()
+                raise self.fail(key, f"({x:g}, {y:g}) lies outside the map (x {x0:g}..{x1:g}, y {y0:g}..{y1:g})")
 
     def check_free(self, world: World) -> None:
         """The default robot's and each person's whole body (a disc of its radius) clear of solid

@@ -1,0 +1,92 @@
+"""The `map:` key of a world file: a ROS map (the map_server YAML that map_saver and slam_toolbox
+write, named by its path) or a floor-plan image with its scale, given inline::
+
+    map: building.yaml                 # a map_server YAML beside the world file
+    map: {image: plan.png, resolution: 0.02, origin: [-5.0, -3.0, 0.0]}   # a floor plan, 2 cm per pixel
+
+The inline keys are map_server's (image, resolution, origin, negate, occupied_thresh, free_thresh,
+mode), with map_saver's defaults where map_server requires them (`map_image`); a map_server YAML's
+other keys are ignored, as map_server ignores them. Paths are relative to the file that names them.
+HAVEN needs `origin`'s yaw to be 0 (Nav2's documentation: "many parts of the system currently
+ignore yaw"); a rotated map is refused in one line.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+import yaml
+from pydantic import ValidationError
+
+from haven_sim.common.schema import FileModel, check, checked, problem
+from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
+from haven_sim.sim.map_image import FREE_THRESH, OCCUPIED_THRESH, MapImage, image_path, read_image
+from haven_sim.sim.world import World, WorldError
+from haven_sim.sim.world_checks import MAX_COORDINATE_M
+
+
+def _origin(value: Any) -> Any:
+    if not isinstance(value, list) or len(value) not in (2, 3) or any(finite(v) is None for v in value):
+        raise ValueError(f"must be [x, y, yaw] (the lower-left pixel's pose), got {short(value)}")
+    if any(abs(v) > MAX_COORDINATE_M for v in value[:2]):
+        raise ValueError(f"must be within ±{MAX_COORDINATE_M:g} m, got {short(value)}")
+    if len(value) == 3 and value[2] != 0:
+        raise ValueError(f"yaw must be 0 (HAVEN does not rotate maps; nor do many Nav2 parts), got {value[2]:g}")
+    return [float(v) for v in value]
+
+
+def _negate(value: Any) -> Any:
+    if value in (0, 1) and not isinstance(value, float):
+        return bool(value)
+    raise ValueError(f"must be 0 or 1 (or false / true), got {short(value)}")
+
+
+class MapFile(FileModel):
+    """A map's settings, as map_server reads them from its YAML."""
+
+    image: str
+    resolution: float
+    origin: Annotated[list[float], checked(_origin)] = [0.0, 0.0, 0.0]
+    negate: Annotated[bool, checked(_negate)] = False
+    occupied_thresh: float = OCCUPIED_THRESH
+    free_thresh: float = FREE_THRESH
+    mode: Literal["trinary", "scale", "raw"] = "trinary"
+
+
+def load_map(value: Any, world_source: str) -> MapImage:
+    """The map a world file's `map:` names: a map_server YAML path or inline settings."""
+    base = Path(world_source).parent
+    if isinstance(value, str):
+        path = image_path(value, base, world_source, "map")
+        data = read_yaml(path, "map file", WorldError)
+        if not isinstance(data, dict):
+            raise WorldError(f"{file_label(path)}: the map file must be a mapping")
+        known = {k: v for k, v in data.items() if k in MapFile.model_fields}  # (map_server ignores other keys)
+        return _read(check(MapFile, known, str(path), WorldError, "map file"), path.parent, str(path), "")
+    if isinstance(value, dict):
+        try:
+            inline = MapFile.model_validate(value)
+        except ValidationError as e:
+            raise WorldError(f"{file_label(world_source)}: map.{problem(MapFile, e)}") from None
+        return _read(inline, base, world_source, "map")
+    raise WorldError(f"{file_label(world_source)}: map: must be a map_server YAML file or a mapping (image, resolution, ...), got {short(value)}")
+
+
+def _read(m: MapFile, base: Path, source: str, key: str) -> MapImage:
+    path = image_path(m.image, base, source, f"{key}.image" if key else "image")
+    return read_image(path, m.resolution, (m.origin[0], m.origin[1]), m.negate, m.occupied_thresh, m.free_thresh, m.mode, key)
+
+
+def world_files(world: World, name: str) -> dict[str, bytes]:
+    """A copy of a world's file as `name` and what it needs beside it (its map image, named in it
+    inline): the files of a folder that holds the world on its own (a session)."""
+    text = Path(world.source).read_bytes()
+    if world.map is None:
+        return {name: text}
+    image = Path(world.map.source)
+    image_name = f"{Path(name).stem}_map{image.suffix.lower()}"
+    data = yaml.safe_load(text)
+    data["map"] = {"image": image_name, **world.map.settings}
+    header = f"# {world.source} as run, its map ({image}) beside it\n"
+    return {name: (header + yaml.safe_dump(data, sort_keys=False)).encode(), image_name: image.read_bytes()}
