@@ -36,6 +36,10 @@ setup(
             "nav_points = haven_viz.drone_cues:NavPoints",
             "arrow = haven_viz.drone_cues:Arrow",
             "gaze = haven_viz.drone_cues:Gaze",
+            # the cue library (library_cues.py): off in condition `all`, shown where a condition names them
+            "path_line = haven_viz.library_cues:PathLine",
+            "projected_arrows = haven_viz.library_cues:ProjectedArrows",
+            "light_ring = haven_viz.library_cues:LightRing",
         ],
     },
 )

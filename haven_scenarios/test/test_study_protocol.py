@@ -11,7 +11,7 @@ import yaml
 
 from haven_scenarios.study.protocol import StudyError, load_study
 from haven_scenarios.study.schedule import design_note, latin, orders, participant_schedule, practice_note, schedule, williams
-from haven_viz.cues import CUES
+from haven_viz.cues import DEFAULT_ON
 
 BASE = {
     "name": "pilot",
@@ -139,7 +139,7 @@ def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) 
         ({"scenarios": []}, "scenarios: must be a non-empty list"),
         ({"conditions": {"x": ["blink"]}}, "conditions.x: unknown cue 'blink'"),
         (
-            {"conditions": {"a": ["all"], "b": list(CUES)}},  # (every installed cue, the drone's too)
+            {"conditions": {"a": ["all"], "b": list(DEFAULT_ON)}},  # (every cue on in `all`, the drone's too)
             "shows the same cues as condition 'a'",
         ),
         ({"conditions": {"a-b": ["all"]}}, "conditions.a-b: a condition name has no '-'"),

@@ -245,13 +245,18 @@ def test_a_participant_sees_the_flying_drone_with_its_navpoints_arrow_and_gaze(r
     assert json.load(open(os.path.join(trial.session(), "metrics.json")))["robot"] == "quadrotor"
 
 
-def test_a_participant_walks_in_a_world_made_from_a_ros_map_and_its_walls_hold(ros, browser, tmp_path):
-    """A world from a map the test makes (map_maker.py: map_server PGM + YAML + overlay): the page
-    draws its walls, and the participant walking into the dividing wall is held by it (the walls
-    are the simulator's too), then walks through its door."""
+LIBRARY_CUES = ("path_line", "projected_arrows", "light_ring")
+
+
+def test_a_participant_sees_the_library_cues_in_a_world_made_from_a_ros_map_whose_walls_hold(ros, browser, tmp_path):
+    """A world from a map the test makes (map_maker.py: map_server PGM + YAML + overlay), with the
+    cue library's three cues (condition path_line+projected_arrows+light_ring): the page draws the
+    map's walls and each cue with no page code of its own, and the participant walking into the
+    dividing wall is held by it (the walls are the simulator's too)."""
     from map_maker import make_map_world
 
-    trial = WebTrial(ros, ["run", str(make_map_world(tmp_path / "map")), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")])
+    argv = ["run", str(make_map_world(tmp_path / "map")), "--teleop", "h1", "--web", "--port", "0", "--condition", *LIBRARY_CUES]
+    trial = WebTrial(ros, [*argv, "--sessions", str(tmp_path / "s")])
     page = browser.new_page(viewport={"width": 960, "height": 540})
     page.goto(trial.urls()["participant h1"], timeout=PAGE_LOAD_MS)
     page.wait_for_function(
@@ -259,7 +264,9 @@ def test_a_participant_walks_in_a_world_made_from_a_ros_map_and_its_walls_hold(r
     )
     page.click("#start")
     page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
-    screenshot("web_map_world.png", page.screenshot())  # the dividing wall ahead, its door to the left
+    drawn = " && ".join(f"(havenState.markers.{ns} || 0) >= 1" for ns in LIBRARY_CUES)
+    page.wait_for_function(f"{drawn} && havenState.robot && havenState.robot.x > 2.0", timeout=PAGE_TIMEOUT_MS)  # on its way to the door
+    screenshot("web_map_world.png", page.screenshot())  # the dividing wall ahead, the robot coming through its door with the library cues
     page.keyboard.down("KeyW")  # from (5.5, 3.0) facing west: the dividing wall's east face is at x = 3.65
     page.wait_for_function("havenState.pose.x < 4.0", timeout=PAGE_TIMEOUT_MS)
     frames = page.evaluate("havenState.frames")

@@ -10,6 +10,7 @@ and only while the study condition has it on, what it shows now::
         exposure = "floor_arrows_shown_s"   # its exposure metric (default: "<name>_shown_s")
         rank = 10                   # where it comes among the cues (default 100; then by name)
         kinematics = ("diff_drive", "omni")  # the robot kinds it serves (default: every kind)
+        default_on = True           # on in condition `all` (False: a library cue, shown only where a condition names it)
 
         def __init__(self, params: CueParams) -> None: ...
 
@@ -19,7 +20,8 @@ and only while the study condition has it on, what it shows now::
 `CueContext` holds what every cue may draw on: the robot's pose, its path and how far along it is
 (`TrackedPath`), the people, the battery level, the thought text, the time, where on this
 robot its own cues sit (`mounts`, from its robot file, above `robot_z_m`: its altitude, 0 on the
-ground), the height it travels at (`flight_z_m`) and its cruise speed (`cruise_mps`). A robot
+ground), the height it travels at (`flight_z_m`), its cruise speed (`cruise_mps`) and half its
+width (`half_width_m`). A robot
 gets only the cues that serve its kind (`kinematics`). `Shown` says what
 the cue shows: its value (JSON, recorded on /haven/cue_state), its markers (in frame `map`, drawn by
 every viewer and the participant page without page code), and for the simulated participants where
@@ -123,6 +125,7 @@ class CueContext:
     robot_z_m: float = 0.0  # ... its base frame, this high above the floor (an aerial robot's altitude)
     flight_z_m: float = 0.0  # the height it travels at (an aerial robot's cruise height; 0 on the ground)
     cruise_mps: float = DEFAULT.motion.cruise_speed_mps  # its cruise speed (arrival estimates)
+    half_width_m: float = DEFAULT.footprint.width_m / 2.0  # half its body's width (lights on its body sit within it)
 
 
 @dataclass(frozen=True)
@@ -141,6 +144,7 @@ class Cue(Protocol):
     exposure: str
     rank: int
     kinematics: tuple[str, ...]
+    default_on: bool
 
     def show(self, ctx: CueContext, markers: bool) -> Shown | None: ...
 
@@ -155,17 +159,26 @@ def serves(cue: type[Any], kind: Kinematics | str) -> bool:
 
 def accept_plugin(name: str, value: Any) -> Any:
     """A `haven.cues` plugin: a class taking `(params: CueParams)` whose objects `show(ctx, markers)`;
-    `key`, `hidden`, `exposure`, `rank` and `kinematics` default to the name, None, `<name>_shown_s`,
-    100 and every kind."""
+    `key`, `hidden`, `exposure`, `rank`, `kinematics` and `default_on` default to the name, None,
+    `<name>_shown_s`, 100, every kind and True."""
     if not inspect.isclass(value) or not callable(getattr(value, "show", None)):
         raise ValueError("is not a cue: a class taking (params) with a show(ctx, markers) method")
-    for attr, default in (("key", name), ("hidden", None), ("exposure", f"{name}_shown_s"), ("rank", 100), ("kinematics", KINDS)):
+    for attr, default in (
+        ("key", name),
+        ("hidden", None),
+        ("exposure", f"{name}_shown_s"),
+        ("rank", 100),
+        ("kinematics", KINDS),
+        ("default_on", True),
+    ):
         if not hasattr(value, attr):
             setattr(value, attr, default)
     kinds = getattr(value, "kinematics")  # noqa: B009 - (set just above)
     if isinstance(kinds, str) or not isinstance(kinds, tuple) or not kinds or any(k not in KINDS for k in kinds):
         raise ValueError(f"is not a cue: its kinematics must be a tuple of robot kinds ({', '.join(KINDS)}), got {str(kinds)[:50]}")
     key, exposure, rank = getattr(value, "key"), getattr(value, "exposure"), getattr(value, "rank")  # noqa: B009 - (set just above)
+    if not isinstance(getattr(value, "default_on"), bool):  # noqa: B009 - (set just above)
+        raise ValueError("is not a cue: its default_on must be true or false")
     if not isinstance(key, str) or not key or not isinstance(exposure, str) or not isinstance(rank, int):
         raise ValueError("is not a cue: its key and exposure must be names, its rank a whole number")
     return value

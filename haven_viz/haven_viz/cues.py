@@ -64,6 +64,7 @@ def cue_classes(reg: plugins.Registry) -> dict[str, type[Any]]:
 
 CUE_CLASSES = cue_classes(plugins.registry("cues"))
 CUES: tuple[str, ...] = tuple(CUE_CLASSES)
+DEFAULT_ON: tuple[str, ...] = tuple(c for c in CUES if CUE_CLASSES[c].default_on)  # condition `all` (library cues are named)
 
 
 def cues_for(kind: Kinematics | str) -> tuple[str, ...]:
@@ -77,6 +78,19 @@ def unknown_cue(name: object) -> str:
     if isinstance(name, str) and name in left_out:
         return f"cue {name!r} is installed but left out: {left_out[name]}"
     return f"unknown cue {str(name)[:50]!r} (cues: {', '.join(CUES)}, or all / none)"
+
+
+def unfit(on: Sequence[str], robot: RobotDescription) -> str | None:
+    """Why a condition that names the cues `on` cannot be shown on this robot (a cue that does not
+    serve its kind, e.g. a floor projection on a drone), or None. Condition `all` names none: it is
+    every cue the robot has."""
+    if tuple(on) == DEFAULT_ON:
+        return None
+    for name in on:
+        cls = CUE_CLASSES[name]
+        if not serves(cls, robot.kinematics):
+            return f"cue {name} does not fit robot {robot.name} ({robot.kinematics.value}): it serves {', '.join(cls.kinematics)} robots"
+    return None
 
 
 class CueToggles:
@@ -103,7 +117,7 @@ class CueToggles:
 
 Toggles: type[CueToggles] = dataclasses.make_dataclass(
     "Toggles",
-    [(c, bool, param(True, "cue toggle (study condition), settable at run time")) for c in CUES],
+    [(c, bool, param(CUE_CLASSES[c].default_on, "cue toggle (study condition), settable at run time")) for c in CUES],
     bases=(CueToggles,),
     frozen=True,
     module=__name__,
@@ -220,7 +234,18 @@ class ArCues:
         self.path.advance(robot)
         r = self.robot
         ctx = CueContext(
-            robot, self.path, humans, battery_level, thought, now, r.height_m, r.cues, altitude_m, self.flight_z_m, r.motion.cruise_speed_mps
+            robot,
+            self.path,
+            humans,
+            battery_level,
+            thought,
+            now,
+            r.height_m,
+            r.cues,
+            altitude_m,
+            self.flight_z_m,
+            r.motion.cruise_speed_mps,
+            r.footprint.width_m / 2.0,
         )
         out: list[MarkerSpec] = []
         values: dict[str, Any] = {}

@@ -22,6 +22,7 @@ from haven_scenarios.run.grid import TrialSpec
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.sweep import Row, run_rows
 from haven_scenarios.study.rules import EndReason
+from haven_viz.cues import CUE_CLASSES, CUES
 
 NOT_DESIGN = ("trial", "seed")  # design columns that do not make a group of the summary
 MAX_SUMMARY_LINES = 24
@@ -105,7 +106,18 @@ def summary(rows: Sequence[dict[str, Any]]) -> str:
     contacts = sum(r["human_contacts"] for r in rows)
     distances = [r["min_human_centre_distance_m"] for r in rows if r["min_human_centre_distance_m"] is not None]
     closest = f"closest approach {min(distances):.2f} m (the least of any trial)" if distances else "no person in any trial"
-    return f"{done}/{n} completed, {finish}, {contacts} human contact(s), {closest}{_people(rows)}"
+    return f"{done}/{n} completed, {finish}, {contacts} human contact(s), {closest}{_people(rows)}{_exposure(rows)}"
+
+
+def _exposure(rows: Sequence[dict[str, Any]]) -> str:
+    """How long each cue was shown, averaged over the trials (the cues shown at all)."""
+    said = []
+    for name in CUES:
+        values = [r.get(CUE_CLASSES[name].exposure) for r in rows]
+        mean = sum(v for v in values if isinstance(v, (int, float))) / len(values) if values else 0.0
+        if mean > 0:
+            said.append(f"{name} {mean:.1f} s")
+    return f"; cues shown: {', '.join(said)}" if said else "; no cue shown"
 
 
 def _people(rows: Sequence[dict[str, Any]]) -> str:

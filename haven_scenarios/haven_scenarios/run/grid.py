@@ -18,7 +18,7 @@ from dataclasses import dataclass, fields, replace
 from pathlib import Path
 from typing import Any
 
-from haven_scenarios.run.trial import condition_name, parse_condition
+from haven_scenarios.run.trial import check_fit, condition_name, parse_condition
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.scenario import MAX_WALKING_SPEED_MPS, HumanTask, Scenario
 from haven_sim.common import plugins
@@ -157,6 +157,7 @@ def apply(scenario: Scenario, point: Point) -> tuple[Scenario, CueToggles]:
     toggles = parse_condition(point["condition"].split("+") if "condition" in point else scenario.condition)
     if "robot" in point:
         scenario = scenario.for_robot(resolve_robot(point["robot"]), point["robot"])
+    check_fit(toggles, scenario.robot)
     return replace(scenario, humans=tuple(_human(h, point) for h in scenario.humans)), toggles
 
 

@@ -24,11 +24,12 @@ from haven_scenarios.study.scenario import Scenario
 from haven_sim.nav.controller import ControllerComponent
 from haven_sim.nav.mux import MuxComponent
 from haven_sim.nav.planning import PlannerComponent, world_lanes
+from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import with_robot
 from haven_sim.runtime.component import Component
 from haven_sim.runtime.loop import DelayFn, InProcessLoop
 from haven_sim.sim.simulator import SimulatorComponent
-from haven_viz.cues import CUES, CueParams, CueToggles, Toggles, unknown_cue
+from haven_viz.cues import CUES, DEFAULT_ON, CueParams, CueToggles, Toggles, unfit, unknown_cue
 from haven_viz.viz import VizComponent
 
 SEED_MAX = 2**31 - 1  # a trial's seed: 0..this (a ROS integer parameter of the nodes, numpy's seed)
@@ -60,7 +61,14 @@ def parse_condition(names: Sequence[str]) -> CueToggles:
 
 def condition_name(t: CueToggles) -> str:
     on = t.names_on()
-    return "all" if len(on) == len(CUES) else ("none" if not on else "+".join(on))
+    return "all" if tuple(on) == DEFAULT_ON else ("none" if not on else "+".join(on))
+
+
+def check_fit(toggles: CueToggles, robot: RobotDescription) -> None:
+    """ValueError (one line) when the condition names a cue the robot cannot show."""
+    why = unfit(toggles.names_on(), robot)
+    if why is not None:
+        raise ValueError(why)
 
 
 def scenario_suite(scenario: Scenario, seed: int, toggles: CueToggles, suite: SuiteConfig | None = None) -> SuiteConfig:

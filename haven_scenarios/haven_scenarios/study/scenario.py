@@ -47,7 +47,7 @@ from haven_sim.robots.robot_kind import DEFAULT_ROBOT, is_file_spec, resolve_rob
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_checks import overlapping_shape
 from haven_sim.sim.world_file import load_world
-from haven_viz.cues import CUES, CueParams, unknown_cue
+from haven_viz.cues import CUES, CueParams, unfit, unknown_cue
 
 TELEOP = "teleop"  # a person drives this avatar (the browser or `haven teleop`), no simulated model
 MAX_WALKING_SPEED_MPS = 3.0
@@ -270,7 +270,11 @@ class _ScenarioParser:
             source=self.source,
             pack_m=battery.capacity_m,
         )
-        return scenario.for_robot(*self.robot(robot.model))
+        scenario = scenario.for_robot(*self.robot(robot.model))
+        why = unfit(list(scenario.condition), scenario.robot) if scenario.condition not in (("all",), ("none",)) else None
+        if why is not None:
+            raise self.fail("condition", why)
+        return scenario
 
     def robot(self, model: str | None) -> tuple[RobotDescription, str]:
         """The robot `robot.model` names (a name, or a file beside the scenario file), as named."""

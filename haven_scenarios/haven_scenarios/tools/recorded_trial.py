@@ -42,7 +42,7 @@ from haven_scenarios.record.session import (
 )
 from haven_scenarios.run.grid import robot_spec
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
-from haven_scenarios.run.trial import check_seed, condition_name, parse_condition
+from haven_scenarios.run.trial import check_fit, check_seed, condition_name, parse_condition
 from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import TELEOP, ScenarioError, load_scenario
@@ -170,6 +170,7 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
             spec = robot_spec(r.robot)
             scenario = scenario.for_robot(resolve_robot(spec), spec)
         toggles = parse_condition(list(r.condition or scenario.condition))
+        check_fit(toggles, scenario.robot)
         if r.person is not None:
             scenario = in_session(scenario, *r.person)
         if r.teleop is not None:
