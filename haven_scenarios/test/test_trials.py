@@ -15,7 +15,10 @@ from haven_viz.cues import Toggles
 pytestmark = pytest.mark.integration
 
 
-@pytest.mark.parametrize("name", ["hallway", "hallway_hard", "shared_room"])
+NEW_ENVIRONMENTS = ("office_crossing", "office_blind_corner", "home_fetch", "warehouse_aisle")  # (issue 25; 30 seeds x every model: bench/RESULTS.md)
+
+
+@pytest.mark.parametrize("name", ["hallway", "hallway_hard", "shared_room", *NEW_ENVIRONMENTS])
 def test_every_shipped_scenario_completes_without_contact(name):
     r = run_trial(load_scenario(name), seed=0)
     m = r.metrics

@@ -29,11 +29,12 @@ import numpy as np
 
 from haven_sim.common.geometry import Pose2D, wrap_angle
 from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, check_bounds, param
-from haven_viz.cue_kind import CueContext, Shown, TrackedPath
+from haven_viz.cue_kind import NO_MANOEUVRE, CueContext, Manoeuvre, Shown, TrackedPath
 from haven_viz.markers import Color, MarkerSpec, Shape
 
 PATH_NS, SIGNAL_NS, THOUGHT_NS, BATTERY_NS = "path_projection", "turn_signals", "thought_bubble", "battery_indicator"
 LOOKAHEAD_STEP_M = 0.1  # the turn signals sample the path ahead this finely
+SIGNAL_RULES = ("pass_side", "path_turn")
 
 SCHEMES: dict[str, Color] = {
     "yellow": (0.934, 0.923, 0.0, 1.0),  # HAVEN's marker material
@@ -72,9 +73,15 @@ class CueParams:
     )
     nav_point_spacing_m: float = param(1.0, "NavPoints: a waypoint this far apart along the path, and at its end (ours)", POSITIVE)
     gaze_lookahead_m: float = param(1.0, "Gaze (aerial robots): the eye looks at the path this far ahead (ours)", POSITIVE)
+    turn_signal_rule: str = param(
+        "pass_side",
+        "in a pass round a person: pass_side (the side passed on, the whole pass; dark on the way back) or path_turn (every turn of the path)",
+    )
 
     def __post_init__(self) -> None:
         check_bounds(self)
+        if self.turn_signal_rule not in SIGNAL_RULES:
+            raise ValueError(f"turn_signal_rule must be one of {', '.join(SIGNAL_RULES)}, got {self.turn_signal_rule!r}")
         if self.scheme not in SCHEMES:
             raise ValueError(f"scheme must be one of {', '.join(SCHEMES)}, got {self.scheme!r}")
         if not 0 <= self.turn_signal_release_deg <= self.turn_signal_threshold_deg:
@@ -130,6 +137,7 @@ class TurnSignals:
         self.lit_since = 0.0
         self.path: TrackedPath | None = None
         self.rotations_done = 0
+        self.back_done = 0  # the last pass whose way back is over (Manoeuvre.count)
 
     def turn_error(self, robot: Pose2D, path: TrackedPath) -> float | None:
         """Signed heading error (rad, + = left) the turn signals show, or None without a path."""
@@ -160,10 +168,25 @@ class TurnSignals:
             largest = e if largest is None or abs(e) > abs(largest) else largest  # the first of the largest, as max() keeps
         return largest
 
-    def side(self, robot: Pose2D, path: TrackedPath, now: float | None = None) -> int:
+    def side(self, robot: Pose2D, path: TrackedPath, now: float | None = None, manoeuvre: Manoeuvre = NO_MANOEUVRE) -> int:
         """+1 (left) or -1 (right) while the turn ahead reaches the threshold (a lit side stays lit
-        down to the release angle, and for `turn_signal_hold_s` when the time is given), else 0."""
+        down to the release angle, and for `turn_signal_hold_s` when the time is given), else 0.
+        With the pass-side rule, during a pass round a person (`manoeuvre`) the side passed on,
+        and dark on the way back until the robot heads along its path again (within the release angle)."""
         err = self.turn_error(robot, path)
+        lit = self._path_turn(err, now)
+        m = manoeuvre
+        if self.params.turn_signal_rule != "pass_side" or m.side == 0 or self.back_done == m.count:
+            return lit
+        if not m.returning:
+            return m.side
+        if err is None or abs(err) < self.params.turn_signal_release_rad:
+            self.back_done = m.count  # back on its way: the pass is over
+            return lit
+        return 0
+
+    def _path_turn(self, err: float | None, now: float | None) -> int:
+        """The path-turn rule (HAVEN's): the side of the turn ahead, with hysteresis and a hold."""
         p = self.params
         if now is not None and self.lit and now - self.lit_since < p.turn_signal_hold_s:
             return self.lit
@@ -178,7 +201,7 @@ class TurnSignals:
         return self.lit
 
     def show(self, ctx: CueContext, markers: bool) -> Shown | None:
-        side = self.side(ctx.robot, ctx.path, ctx.now)
+        side = self.side(ctx.robot, ctx.path, ctx.now, ctx.manoeuvre)
         if side == 0:
             return None
         robot = ctx.robot

@@ -21,7 +21,7 @@ and only while the study condition has it on, what it shows now::
 (`TrackedPath`), the people, the battery level, the thought text, the time, where on this
 robot its own cues sit (`mounts`, from its robot file, above `robot_z_m`: its altitude, 0 on the
 ground), the height it travels at (`flight_z_m`), its cruise speed (`cruise_mps`) and half its
-width (`half_width_m`). A robot
+width (`half_width_m`), and a pass round a person under way (`manoeuvre`). A robot
 gets only the cues that serve its kind (`kinematics`). `Shown` says what
 the cue shows: its value (JSON, recorded on /haven/cue_state), its markers (in frame `map`, drawn by
 every viewer and the participant page without page code), and for the simulated participants where
@@ -111,6 +111,21 @@ class TrackedPath:
 
 
 @dataclass(frozen=True)
+class Manoeuvre:
+    """A pass the robot's navigator is making round a person (its `replanned` event: the side it
+    passes on, +1 left, -1 right), and whether it is on its way back to its route (`reverted`);
+    `count` tells one pass from the next. Only the viz knows it, from /haven/events; another
+    planner's paths have none."""
+
+    count: int = 0
+    side: int = 0  # 0: no pass
+    returning: bool = False
+
+
+NO_MANOEUVRE = Manoeuvre()
+
+
+@dataclass(frozen=True)
 class CueContext:
     """What a cue may draw on at one moment."""
 
@@ -126,6 +141,7 @@ class CueContext:
     flight_z_m: float = 0.0  # the height it travels at (an aerial robot's cruise height; 0 on the ground)
     cruise_mps: float = DEFAULT.motion.cruise_speed_mps  # its cruise speed (arrival estimates)
     half_width_m: float = DEFAULT.footprint.width_m / 2.0  # half its body's width (lights on its body sit within it)
+    manoeuvre: Manoeuvre = NO_MANOEUVRE  # a pass under way (the turn signals' pass-side rule)
 
 
 @dataclass(frozen=True)

@@ -35,7 +35,7 @@ from haven_viz.builtin_cues import (
     TurnSignals,
     battery_color,
 )
-from haven_viz.cue_kind import Cue, CueContext, TrackedPath, serves
+from haven_viz.cue_kind import NO_MANOEUVRE, Cue, CueContext, TrackedPath, serves
 from haven_viz.markers import MarkerSpec
 
 __all__ = ["BATTERY_NS", "CUES", "PATH_NS", "SCHEMES", "SIGNAL_NS", "THOUGHT_NS", "ArCues", "CueParams", "CueState", "Toggles", "battery_color"]
@@ -211,6 +211,7 @@ class ArCues:
             except Exception as e:  # noqa: BLE001 - a lab's cue may fail in any way; the trial and the other cues go on
                 self.failed[n] = plugins.failure(e)
         self.set_path([])
+        self.manoeuvre = NO_MANOEUVRE  # the navigator's pass under way (the viz reads it from its events)
 
     def set_path(self, poses: Sequence[Pose2D]) -> None:
         self.path = TrackedPath(poses, self.params.marker_spacing_m)
@@ -246,6 +247,7 @@ class ArCues:
             self.flight_z_m,
             r.motion.cruise_speed_mps,
             r.footprint.width_m / 2.0,
+            self.manoeuvre,
         )
         out: list[MarkerSpec] = []
         values: dict[str, Any] = {}
@@ -282,4 +284,4 @@ class ArCues:
         """The turn signal's side now (+1 left, -1 right, 0 dark)."""
         self.path.advance(robot)
         signals = self.cues.get(SIGNAL_NS)
-        return signals.side(robot, self.path, now) if isinstance(signals, TurnSignals) else 0
+        return signals.side(robot, self.path, now, self.manoeuvre) if isinstance(signals, TurnSignals) else 0

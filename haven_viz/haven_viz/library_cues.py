@@ -144,7 +144,7 @@ class LightRing:
         robot = ctx.robot
         x, y, _ = ahead[0]
         bearing = wrap_angle(math.atan2(y - robot.y, x - robot.x) - robot.yaw) if math.hypot(x - robot.x, y - robot.y) > 1e-3 else 0.0
-        side = self.signal.side(robot, ctx.path, ctx.now)
+        side = self.signal.side(robot, ctx.path, ctx.now, ctx.manoeuvre)
         blink_on = side != 0 and (ctx.now is None or (ctx.now * BLINK_HZ) % 1.0 < 0.5)
         value = {"bearing_deg": round(math.degrees(bearing)), "blink": side}
         way = ((x, y),)

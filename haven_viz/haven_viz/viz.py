@@ -12,7 +12,7 @@ The cue toggles are the study condition (a cue the robot does not have shows not
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import Event, EventKind, Source, event
@@ -24,9 +24,12 @@ from haven_sim.robots.fields import RobotChoice, from_robot
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.world import World
+from haven_viz.cue_kind import NO_MANOEUVRE, Manoeuvre
 from haven_viz.cues import ArCues, CueParams, CueState, CueToggles, Toggles
 from haven_viz.markers import MarkerDiff
 from haven_viz.world_markers import body_markers, world_markers
+
+PASS_SIDES = {"left": 1, "right": -1}  # the navigator's `replanned` event's side
 
 
 @dataclass(frozen=True)
@@ -108,6 +111,16 @@ class VizComponent:
         return []
 
     def on_event(self, e: Event, now: float) -> list[Message]:
+        m = self.cues.manoeuvre
+        if e.kind is EventKind.REPLANNED and e.get("side") in PASS_SIDES:  # a pass round a person begins
+            self.cues.manoeuvre = Manoeuvre(m.count + 1, PASS_SIDES[e["side"]])
+            return []
+        if e.kind is EventKind.REVERTED:  # ... its way back to the route
+            self.cues.manoeuvre = replace(m, returning=True)
+            return []
+        if e.kind is EventKind.PLAN_MADE:  # a new goal: no pass under way
+            self.cues.manoeuvre = NO_MANOEUVRE
+            return []
         if e.kind is EventKind.GEM_COLLECTED:
             self.collected.add(e["gem"])
         elif e.kind is EventKind.OBSTRUCTION_REMOVED:

@@ -123,3 +123,24 @@ def test_library_cues_show_nothing_at_the_end_of_the_path():
             f = cues.frame(Pose2D(x, 0.0, 0.0), toggles=parse_condition([cue]))
         assert not [m for m in f.markers if m.ns in (LINE_NS, ARROWS_NS, RING_NS)], cue
         assert not f.state.shown(cue)
+
+
+def test_the_pass_side_rule_on_plain_data():
+    """A pass to the right (Manoeuvre side -1): the right side lit the whole pass, whatever the path
+    does; on the way back dark until the robot heads along its path again; then HAVEN's rule."""
+    from haven_viz.builtin_cues import CueParams, TurnSignals
+    from haven_viz.cue_kind import Manoeuvre, TrackedPath
+
+    left_curve = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(3)] + [Pose2D(1.0 + y * 0.3, y * 0.5, 1.0) for y in range(1, 5)]
+    path = TrackedPath(left_curve, 0.4)
+    robot = Pose2D(0.0, 0.0, 0.0)
+    signals = TurnSignals(CueParams())
+    assert signals.side(robot, path, 0.0, Manoeuvre(1, -1)) == -1  # the path turns left; the pass is to the right
+    assert signals.side(robot, path, 1.0, Manoeuvre(1, -1, returning=True)) == 0  # way back: dark
+    straight = TrackedPath(STRAIGHT, 0.4)
+    assert signals.side(robot, straight, 2.0, Manoeuvre(1, -1, returning=True)) == 0  # back along its path: over ...
+    assert signals.side(robot, path, 3.0, Manoeuvre(1, -1, returning=True)) == 1  # ... then turns are signalled again
+    old = TurnSignals(CueParams(turn_signal_rule="path_turn"))
+    assert old.side(robot, path, 0.0, Manoeuvre(1, -1)) == 1  # HAVEN's rule: the path's turn
+    with pytest.raises(ValueError, match="turn_signal_rule must be one of pass_side, path_turn"):
+        CueParams(turn_signal_rule="driver")

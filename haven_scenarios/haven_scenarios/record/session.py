@@ -50,8 +50,8 @@ from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import DEFAULT
 from haven_sim.robots.robot_file import RobotError, merged
 from haven_sim.robots.robot_kind import resolve_robot
-from haven_sim.sim.map_file import world_files
 from haven_sim.sim.world import World, WorldError
+from haven_sim.sim.world_file import world_files
 from haven_viz.cues import CUES, CueToggles
 from haven_viz.world_markers import world_markers
 
@@ -174,6 +174,7 @@ def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
     if robot is not None:
         atomic.write_text(folder / ROBOT_FILE, robot)
     data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps, **_params(h.params)} for h in scenario.humans]
+    data["robot"].pop("start", None)  # (the starts as run are the world copy's)
     for name, content in world_files(scenario.world, WORLD_FILE).items():  # (a world from a map: its image too)
         atomic.write_bytes(folder / name, content)
     atomic.write_text(folder / SCENARIO_FILE, yaml.safe_dump(data, sort_keys=False))

@@ -13,9 +13,13 @@ robot:
   route: [B, C, D, A]          # hallway: room centres in order
   order: nearest               # retrieval: nearest | random (seeded) gem order
   battery: {mode: off, capacity_m: 100.0, charge_until: 1.0, safety_factor: 1.2}   # capacity_m: the pack (default: the robot's own)
+  start: [2.0, 2.0, 0.0]       # where it starts (default: the world's robot start)
 humans:
   - {id: h1, model: walker, route: [B, A, D, C], speed_mps: 1.0}   # walker | blocker | yielder | teleop
-  - {id: h2, model: yielder, params: {reaction_s: 1.0, fov_deg: 110}}  # perception parameters
+  - id: h2
+    model: yielder
+    params: {reaction_s: 1.0, fov_deg: 110}   # perception parameters
+    start: [16.0, 16.0, 3.14]   # a start of this scenario's own (default: the world's start for h2)
 dwell_time_s: 3.0
 ```
 
@@ -37,6 +41,7 @@ from typing import Annotated, Any, Literal
 
 from haven_scenarios.study.person import PersonParams
 from haven_sim.common import plugins
+from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import build
 from haven_sim.common.schema import FileModel, Line, Positive, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, one_line, read_yaml, short, shown_key
@@ -45,8 +50,8 @@ from haven_sim.robots.fields import DEFAULT
 from haven_sim.robots.robot_file import RobotError
 from haven_sim.robots.robot_kind import DEFAULT_ROBOT, is_file_spec, resolve_robot
 from haven_sim.sim.world import World, WorldError
-from haven_sim.sim.world_checks import overlapping_shape
-from haven_sim.sim.world_file import load_world
+from haven_sim.sim.world_checks import MAX_COORDINATE_M, overlapping_shape
+from haven_sim.sim.world_file import check_starts, load_world
 from haven_viz.cues import CUES, CueParams, unfit, unknown_cue
 
 TELEOP = "teleop"  # a person drives this avatar (the browser or `haven teleop`), no simulated model
@@ -178,6 +183,7 @@ class RobotFile(FileModel):
     route: Any = None  # room names of the world
     order: Any = "nearest"  # a mission behaviour
     battery: BatteryFile | None = None
+    start: Any = None  # [x, y, yaw]: where the robot starts (default: the world's robot start)
 
 
 class HumanFile(FileModel):
@@ -186,6 +192,7 @@ class HumanFile(FileModel):
     route: Any = None  # room names of the world
     speed_mps: Positive() = 1.0  # type: ignore[valid-type]
     params: dict[Any, Any] | None = None  # PersonParams fields
+    start: Any = None  # [x, y, yaw]: where this person starts (default: the world's start for them)
 
 
 class ScenarioFile(FileModel):
@@ -247,6 +254,7 @@ class _ScenarioParser:
         except WorldError as e:
             raise self.fail("world", str(e)) from None
         robot = f.robot or RobotFile()
+        world = self.starts(world, robot.start, f.humans or [])
         route = self.names(robot.route, "robot.route", {r.name for r in world.rooms}, "room")
         if f.kind == "hallway" and not route:
             raise self.fail("robot.route", "a hallway scenario needs the robot's room route")
@@ -275,6 +283,26 @@ class _ScenarioParser:
         if why is not None:
             raise self.fail("condition", why)
         return scenario
+
+    def starts(self, world: World, robot: Any, humans: list[HumanFile]) -> World:
+        """The world with the starts the scenario gives (a world serves several scenarios), checked
+        as a world file's starts are."""
+        if robot is None and all(h.start is None for h in humans):
+            return world
+        pose = self.pose(robot, "robot.start") if robot is not None else world.robot_start
+        given = {h.id: self.pose(h.start, f"humans[{i}].start") for i, h in enumerate(humans) if h.start is not None}
+        people = tuple(replace(h, start=given.get(h.id, h.start)) for h in world.humans)
+        moved = replace(world, robot_start=pose, humans=people)
+        try:
+            check_starts(moved, self.source)
+        except WorldError as e:
+            raise ScenarioError(str(e)) from None
+        return moved
+
+    def pose(self, value: Any, key: str) -> Pose2D:
+        if not isinstance(value, list) or len(value) not in (2, 3) or any(finite(v) is None or abs(v) > MAX_COORDINATE_M for v in value):
+            raise self.fail(key, f"must be a pose [x, y, yaw] (metres within ±{MAX_COORDINATE_M:g}, radians), got {short(value)}")
+        return Pose2D(float(value[0]), float(value[1]), float(value[2]) if len(value) == 3 else 0.0)
 
     def robot(self, model: str | None) -> tuple[RobotDescription, str]:
         """The robot `robot.model` names (a name, or a file beside the scenario file), as named."""

@@ -16,13 +16,12 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
-import yaml
 from pydantic import ValidationError
 
 from haven_sim.common.schema import FileModel, check, checked, problem
 from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
 from haven_sim.sim.map_image import FREE_THRESH, OCCUPIED_THRESH, MapImage, image_path, read_image
-from haven_sim.sim.world import World, WorldError
+from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_checks import MAX_COORDINATE_M
 
 
@@ -76,17 +75,3 @@ def load_map(value: Any, world_source: str) -> MapImage:
 def _read(m: MapFile, base: Path, source: str, key: str) -> MapImage:
     path = image_path(m.image, base, source, f"{key}.image" if key else "image")
     return read_image(path, m.resolution, (m.origin[0], m.origin[1]), m.negate, m.occupied_thresh, m.free_thresh, m.mode, key)
-
-
-def world_files(world: World, name: str) -> dict[str, bytes]:
-    """A copy of a world's file as `name` and what it needs beside it (its map image, named in it
-    inline): the files of a folder that holds the world on its own (a session)."""
-    text = Path(world.source).read_bytes()
-    if world.map is None:
-        return {name: text}
-    image = Path(world.map.source)
-    image_name = f"{Path(name).stem}_map{image.suffix.lower()}"
-    data = yaml.safe_load(text)
-    data["map"] = {"image": image_name, **world.map.settings}
-    header = f"# {world.source} as run, its map ({image}) beside it\n"
-    return {name: (header + yaml.safe_dump(data, sort_keys=False)).encode(), image_name: image.read_bytes()}

@@ -41,6 +41,8 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
+import yaml
+
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, polygon_area, segment_to_polygon
 from haven_sim.common.schema import FileModel, Line, check, checked, listing
@@ -69,6 +71,31 @@ MAX_NAME_CHARS = 64
 def _ccw(polygon: list[Point]) -> tuple[Point, ...]:
     """Counter-clockwise vertex order, so every edge's outward normal is (dy, -dx)."""
     return tuple(polygon if polygon_area(polygon) > 0 else polygon[::-1])
+
+
+def world_files(world: World, name: str) -> dict[str, bytes]:
+    """The world as run, as the files of a folder that holds it on its own (a session): its file
+    as `name`, with the starts it was run with (a scenario may give its own), and its map image
+    beside it, named in it inline."""
+    data = yaml.safe_load(Path(world.source).read_bytes())
+    data["robot"] = {**data["robot"], "start": list(world.robot_start)}
+    data["humans"] = [{"id": h.id, "start": list(h.start)} for h in world.humans]
+    files: dict[str, bytes] = {}
+    if world.map is not None:
+        image = Path(world.map.source)
+        image_name = f"{Path(name).stem}_map{image.suffix.lower()}"
+        data["map"] = {"image": image_name, **world.map.settings}
+        files[image_name] = image.read_bytes()
+    header = f"# {world.source} as run (its starts as the scenario gave them; its map image beside it)\n"
+    return {name: (header + yaml.safe_dump(data, sort_keys=False)).encode(), **files}
+
+
+def check_starts(world: World, source: str) -> None:
+    """The robot's and the people's starts on the map and clear of solid geometry, as a world file's
+    are (for starts a scenario gives); WorldError naming `source`'s key."""
+    parser = _Parser(source)
+    parser.check_on_map(world)
+    parser.check_free(world)
 
 
 def load_world(path: str | Path) -> World:

@@ -61,4 +61,6 @@ def draw(world: World, out: Path) -> Path:
     lines = {f"hallway {h.name}": (np.array(h.centreline, dtype=float), HALLWAY_COLOUR) for h in world.hallways}
     starts = [(world.robot_start.x, world.robot_start.y, "robot start", ROBOT_COLOUR)]
     starts += [(h.start.x, h.start.y, f"{h.id} start", PERSON_COLOUR) for h in world.humans]
-    return render_scene(world, world_markers(world), out, title=f"world {world.name} ({file_label(world.source)})", trails=lines, points=starts)
+    return render_scene(
+        world, world_markers(world), out, title=f"world {world.name} ({file_label(Path(world.source).name)})", trails=lines, points=starts
+    )
