@@ -32,6 +32,7 @@ bench: setup
 	.venv/bin/python bench/sim_speed.py
 	.venv/bin/python bench/odom_rate.py
 	.venv/bin/python bench/planner_latency.py
+	.venv/bin/python bench/map_walls.py
 	.venv/bin/python bench/trials.py
 	.venv/bin/python bench/web_wire.py
 	.venv/bin/python bench/web_loop.py

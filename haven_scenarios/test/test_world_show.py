@@ -21,3 +21,22 @@ def test_a_broken_world_is_one_line_and_no_picture(capsys, tmp_path: Path) -> No
     assert main(["world", "show", str(bad), "--out", str(tmp_path / "lab.png")]) == 2
     (line,) = capsys.readouterr().err.strip().splitlines()
     assert line.startswith(f"haven: error: {bad}: walls[0].thickness") and not (tmp_path / "lab.png").exists()
+
+
+def test_a_world_from_a_ros_map_is_drawn_with_the_maps_walls(capsys, tmp_path: Path) -> None:
+    """The map the tests make (haven_sim/test/map_maker.py): its occupied and unknown cells drawn as
+    walls, about 29 of its 70 m² (the building's 0.2 m shell, the dividing wall, the unknown around)."""
+    import numpy as np
+    from map_maker import make_map_world
+    from PIL import Image
+
+    from haven_viz.world_markers import COLORS
+
+    make_map_world(tmp_path)
+    out = tmp_path / "map.png"
+    assert main(["world", "show", str(tmp_path / "world.yaml"), "--out", str(out)]) == 0
+    assert "world test_map: 7 wall(s)" in capsys.readouterr().out
+    pixels = np.asarray(Image.open(out).convert("RGB"))
+    wall = np.array([round(255 * c) for c in COLORS["wall"][:3]])
+    share = float((np.abs(pixels.astype(int) - wall).max(axis=2) <= 2).mean())
+    assert 0.2 < share < 0.5, share

@@ -70,6 +70,35 @@ def test_wall_boxes_cover_exactly_the_blocked_cells_and_are_few(tmp_path):
     assert ((covered == 1) == m.blocked).all()
 
 
+def test_a_400_by_400_map_with_ragged_walls_gives_a_few_hundred_boxes(tmp_path):
+    """A building-size map (20 m at 0.05 m/cell) as a scan makes it: walls with cells stuck to
+    their faces, furniture, unknown outside. The boxes, painted back cell by cell, are its blocked cells."""
+    rng = np.random.default_rng(7)
+    pixels = np.full((400, 400), 128, np.uint8)  # unknown outside the building
+    pixels[10:390, 10:390] = 0
+    pixels[14:386, 14:386] = 254
+    for k in (130, 260):  # two inner walls each way, a 1 m door in each
+        pixels[14:386, k : k + 3] = 0
+        pixels[k : k + 3, 14:386] = 0
+        pixels[60:80, k : k + 3] = pixels[k : k + 3, 200:220] = 254
+    for _ in range(30):  # furniture
+        r, c = rng.integers(20, 370, 2)
+        pixels[r : r + rng.integers(4, 20), c : c + rng.integers(4, 20)] = 0
+    walls = pixels == 0
+    face = (np.roll(walls, 1, 0) | np.roll(walls, -1, 0) | np.roll(walls, 1, 1) | np.roll(walls, -1, 1)) & ~walls
+    pixels[face & (rng.random(pixels.shape) < 0.05)] = 0  # ragged faces
+    m = read_image(_image(tmp_path, pixels), 0.05, origin=(-3.0, 2.0))
+    boxes = wall_boxes(m)
+    assert len(boxes) <= 400, len(boxes)
+    painted = np.zeros(pixels.shape, int)
+    for box in boxes:
+        xs, ys = [p[0] for p in box], [p[1] for p in box]
+        c0, c1 = round((min(xs) + 3.0) / 0.05), round((max(xs) + 3.0) / 0.05)
+        r0, r1 = 400 - round((max(ys) - 2.0) / 0.05), 400 - round((min(ys) - 2.0) / 0.05)
+        painted[r0:r1, c0:c1] += 1
+    assert (painted <= 1).all() and ((painted == 1) == m.blocked).all()
+
+
 def test_a_map_world_loads_its_walls_and_publishes_the_source_map(tmp_path):
     make_map_world(tmp_path)
     w = load_world(tmp_path / "world.yaml")
@@ -143,3 +172,5 @@ def test_map_image_grid_rows_are_bottom_up():
     m = MapImage(np.array([[100, 0], [0, -1]], np.int8), 0.5, (0.0, 0.0))
     g = m.grid()
     assert g.is_occupied(0.25, 0.75) and not g.is_occupied(0.75, 0.75) and not g.is_occupied(0.25, 0.25)
+    assert m.occupied.tolist() == [[True, False], [False, False]] and m.unknown.tolist() == [[False, False], [False, True]]
+    assert m.blocked.tolist() == [[True, False], [False, True]]

@@ -55,10 +55,19 @@ class MapImage:
     settings: Mapping[str, Any] = field(default_factory=dict)
 
     @property
+    def occupied(self) -> BoolArray:
+        """Occupied cells: map_server's 100, and scale mode's >= 50 (as our planner reads /map)."""
+        return np.asarray(self.cells >= 50)
+
+    @property
+    def unknown(self) -> BoolArray:
+        """Cells map_server publishes as unknown (-1)."""
+        return np.asarray(self.cells < 0)
+
+    @property
     def blocked(self) -> BoolArray:
-        """Cells HAVEN does not walk on: occupied (map_server's 100, and scale mode's >= 50, as our
-        planner reads /map) or unknown."""
-        return np.asarray((self.cells >= 50) | (self.cells < 0))
+        """Cells HAVEN does not walk on: occupied or unknown (what a scan never saw is not floor)."""
+        return self.occupied | self.unknown
 
     def bounds(self) -> tuple[float, float, float, float]:
         """xmin, ymin, xmax, ymax of the map."""
@@ -155,33 +164,28 @@ def _pixels(path: Path, key: str) -> tuple[npt.NDArray[np.uint8], bool]:
 
 
 def wall_boxes(image: MapImage) -> list[tuple[Point, ...]]:
-    """The blocked cells as few axis-aligned rectangles (counter-clockwise polygons in frame `map`)
-    that cover exactly those cells: each row's runs of blocked cells, a run merged with the one
-    just above when both span the same columns (walls, shelves and rooms' outlines come out as
-    one box per straight piece)."""
+    """The blocked cells (occupied and unknown: HAVEN walks on free cells only) as few axis-aligned
+    rectangles (counter-clockwise polygons in frame `map`) that cover exactly those cells, none
+    overlapping: greedy maximal rectangles, top row first, each a row's run of cells not yet
+    covered, grown downwards while the rows below are blocked and uncovered across its width.
+    A wall is one box, and a cell a scan left stuck to its face one more (not a split wall)."""
     blocked = image.blocked
     height, _ = blocked.shape
+    covered = np.zeros_like(blocked)
     res, (ox, oy) = image.resolution, image.origin
-    boxes: list[tuple[int, int, int, int]] = []  # top row, bottom row (inclusive), first col, end col
-    open_runs: dict[tuple[int, int], int] = {}  # (c0, c1) -> index in boxes of the box still growing
+    boxes: list[tuple[int, int, int, int]] = []  # top row, end row (exclusive), first col, end col
     for r in range(height):
-        runs = _runs(blocked[r])
-        grown: dict[tuple[int, int], int] = {}
-        for run in runs:
-            i = open_runs.get(run)
-            if i is None:
-                boxes.append((r, r, *run))
-                i = len(boxes) - 1
-            else:
-                top, _, c0, c1 = boxes[i]
-                boxes[i] = (top, r, c0, c1)
-            grown[run] = i
-        open_runs = grown
+        for c0, c1 in _runs(blocked[r] & ~covered[r]):
+            r1 = r + 1
+            while r1 < height and blocked[r1, c0:c1].all() and not covered[r1, c0:c1].any():
+                r1 += 1
+            covered[r:r1, c0:c1] = True
+            boxes.append((r, r1, c0, c1))
 
     def corner(row_edge: int, col: int) -> Point:
         return (ox + col * res, oy + (height - row_edge) * res)
 
-    return [(corner(r1 + 1, c0), corner(r1 + 1, c1), corner(r0, c1), corner(r0, c0)) for r0, r1, c0, c1 in boxes]
+    return [(corner(r1, c0), corner(r1, c1), corner(r0, c1), corner(r0, c0)) for r0, r1, c0, c1 in boxes]
 
 
 def _runs(row: BoolArray) -> list[tuple[int, int]]:
