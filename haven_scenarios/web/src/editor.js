@@ -57,6 +57,7 @@ async function check() {
   const [, answer] = await post("/edit/check", sent);
   if (sent !== JSON.stringify(world)) return; // changed meanwhile: a newer check follows
   state.verdict = answer;
+  state.checkedWorld = sent;
   state.checks += 1;
   say(answer.ok ? `OK: ${answer.summary}` : `Not valid yet: ${answer.error}`, answer.ok);
   draw();
@@ -229,6 +230,7 @@ window.havenEditor = {
   world: () => structuredClone(world),
   get verdict() { return state.verdict; },
   get checks() { return state.checks; },
+  get checkedWorld() { return state.checkedWorld; }, // the world the verdict is about (JSON)
   get saved() { return state.saved; },
   // where a point in metres is on the page (for the tests' mouse)
   toPage: (x, y) => { const r = canvas.getBoundingClientRect(); const [px, py] = toPixels(x, y); return [r.left + px, r.top + py]; },
