@@ -110,3 +110,59 @@ def test_haven_edit_draws_a_room_that_haven_batch_runs(browser, tmp_path: Path) 
     rows = list(csv.DictReader(out.open()))
     assert len(rows) == 1 and rows[0]["end_reason"] == "completed", rows
     assert os.path.exists(tmp_path / "worlds" / "room6x4.yaml")
+
+
+def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_as_walls(browser, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    from haven_scenarios.tools.commands.edit import NEW_WORLD
+    from haven_scenarios.web.editor_server import EditorServer
+
+    server = EditorServer("127.0.0.1", 0, NEW_WORLD, tmp_path)
+    server.start()
+    try:
+        page = browser.new_page(viewport={"width": 1280, "height": 760})
+        page.goto(server.url)
+        page.wait_for_function("havenEditor.checks >= 1", timeout=PAGE_TIMEOUT_MS)
+        page.evaluate("havenEditor.fit(-1, -1, 7, 5)")
+        editor = Editor(page)
+        pixels = np.full((80, 120), 255, dtype=np.uint8)  # 6 x 4 m at 0.05 m per pixel
+        pixels[:2, :] = pixels[-2:, :] = pixels[:, :2] = pixels[:, -2:] = 0  # a dark border: the room's walls
+        png = io.BytesIO()
+        Image.fromarray(pixels).save(png, format="PNG")
+        page.set_input_files("#image", files=[{"name": "plan.png", "mimeType": "image/png", "buffer": png.getvalue()}])
+        page.click("#as-walls")
+        page.wait_for_function("havenEditor.world().walls.length === 4", timeout=PAGE_TIMEOUT_MS)
+        assert all("polygon" in w for w in page.evaluate("havenEditor.world().walls"))
+        editor.tool("obstacle")
+        a, b = page.evaluate("havenEditor.toPage(2, 1)"), page.evaluate("havenEditor.toPage(3, 1.5)")
+        page.mouse.move(*a)
+        page.mouse.down()
+        page.mouse.move(*b, steps=4)
+        page.mouse.up()
+        assert page.evaluate("havenEditor.world().obstacles") == [{"polygon": [[2, 1], [3, 1], [3, 1.5], [2, 1.5]], "height": 0.75}]
+        editor.tool("hallway")
+        for x in (1.0, 3.0, 5.0):
+            editor.click(x, 3.0)
+        page.keyboard.press("Enter")
+        assert page.evaluate("havenEditor.world().hallways") == [{"name": "hall1", "centreline": [[1, 3], [3, 3], [5, 3]], "width": 1.8}]
+        editor.tool("select")  # drag the furniture 1 m to the right, then delete the hallway
+        a, b = page.evaluate("havenEditor.toPage(2.5, 1.25)"), page.evaluate("havenEditor.toPage(3.5, 1.25)")
+        page.mouse.move(*a)
+        page.mouse.down()
+        page.mouse.move(*b, steps=4)
+        page.mouse.up()
+        assert page.evaluate("havenEditor.world().obstacles[0].polygon[0]") == [3, 1]
+        editor.click(4.0, 3.0)
+        page.click("#delete")
+        assert page.evaluate("havenEditor.world().hallways") == []
+        page.click("#undo")
+        assert len(page.evaluate("havenEditor.world().hallways")) == 1
+        checks = page.evaluate("havenEditor.checks")
+        verdict = editor.verdict_after(checks - 1)
+        assert verdict["ok"] is True, verdict  # the robot's start (1, 1) is clear of the image's walls
+    finally:
+        server.stop()
