@@ -4,6 +4,7 @@ that load, an existing file replaced only when the page says so, walls from a ma
 
 from __future__ import annotations
 
+import http.client
 import io
 import json
 import urllib.error
@@ -71,8 +72,15 @@ def test_without_the_token_nothing_is_served_or_checked(server: EditorServer) ->
 
 
 def test_a_world_larger_than_a_world_file_may_be_is_refused_unread(server: EditorServer) -> None:
-    code, answer = post(server, "check", b" " * (MAX_WORLD_BYTES + 1))
-    assert code == 400 and answer["error"] == f"the world of {MAX_WORLD_BYTES + 1} bytes (at most {MAX_WORLD_BYTES})"
+    port = int(server.httpd.server_address[1])
+    conn = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
+    conn.putrequest("POST", f"/edit/check?token={server.token}")
+    conn.putheader("Content-Length", str(MAX_WORLD_BYTES + 1))  # (the body is never sent: the answer comes first)
+    conn.endheaders()
+    response = conn.getresponse()
+    assert response.status == 400
+    assert json.loads(response.read())["error"] == f"the world of {MAX_WORLD_BYTES + 1} bytes (at most {MAX_WORLD_BYTES})"
+    conn.close()
     assert post(server, "check", b"{not json")[1]["error"] == "the page sent something that is not JSON"
 
 
@@ -86,6 +94,8 @@ def test_check_answers_with_the_loaders_own_line_and_the_key_it_names(server: Ed
     code, answer = post(server, "check", json.dumps(world).encode())
     assert code == 200 and answer["ok"] is False and answer["key"] == "humans[0].start"
     assert answer["error"] == f"{server.out / 'lab.yaml'}: humans[0].start: (6, 2) lies inside a wall"
+    code, answer = post(server, "check", json.dumps({**room_world(), "name": "my lab"}).encode())
+    assert answer["ok"] is False and answer["key"] == "name" and answer["error"].startswith("name: the world's name names its file")
 
 
 def test_save_writes_a_world_and_a_scenario_that_load_and_replaces_only_when_told(server: EditorServer) -> None:

@@ -31,6 +31,7 @@ import yaml
 
 from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.study.scenario_template import TASKS, TemplateError, scenario_template
+from haven_scenarios.tools.commands.world import summary  # (the same words `haven world show` prints)
 from haven_scenarios.web.access import TOKEN_COOKIE, TOKEN_PARAM, new_token, role_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json
 from haven_sim.common import atomic
@@ -126,9 +127,13 @@ class EditorServer:
         return self.out / f"{name}.yaml"
 
     def check(self, world: Any) -> tuple[int, dict[str, Any]]:
-        """The loader's verdict on a world tree (as if it were the file it would be saved as)."""
-        source = str(self.target(world)) if isinstance(world, dict) and _FILE_NAME.match(str(world.get("name"))) else "world.yaml"
-        return 200, verdict(world, source)
+        """The loader's verdict on a world tree (as if it were the file it would be saved as), and
+        whether its name can name that file."""
+        try:
+            return 200, verdict(world, str(self.target(world)))
+        except ValueError as e:
+            answer = verdict(world, "world.yaml")
+            return 200, answer if not answer["ok"] else {"ok": False, "error": str(e), "key": "name"}
 
     def save(self, message: Any) -> tuple[int, dict[str, Any]]:
         if not isinstance(message, dict) or not isinstance(message.get("world"), dict):
@@ -167,8 +172,6 @@ def verdict(world: Any, source: str) -> dict[str, Any]:
         line = str(e)
         rest = line.removeprefix(f"{file_label(source)}: ")
         return {"ok": False, "error": line, "key": rest.split(": ", 1)[0] if ": " in rest else ""}
-    from haven_scenarios.tools.commands.world import summary  # (the same words `haven world show` prints)
-
     return {"ok": True, "summary": f"world {loaded.name}: {summary(loaded)}"}
 
 

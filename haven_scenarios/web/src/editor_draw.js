@@ -62,9 +62,12 @@ function pose(ctx, start, scene, colour, label) {
 
 function spot(ctx, p, scene, colour, radius, label) {
   const [px, py] = scene.toPixels(p[0], p[1]);
+  const r = Math.max(4, radius * scene.view.scale);
   ctx.fillStyle = colour;
-  ctx.beginPath(), ctx.arc(px, py, Math.max(4, radius * scene.view.scale), 0, 2 * Math.PI), ctx.fill();
-  if (label) ctx.fillText(label, px + 8, py - 8);
+  ctx.globalAlpha = radius > 0.2 ? 0.6 : 1; // (a gem's or the base's area: the plan shows through)
+  ctx.beginPath(), ctx.arc(px, py, r, 0, 2 * Math.PI), ctx.fill();
+  ctx.globalAlpha = 1;
+  if (label) ctx.fillText(label, px + r + 3, py - 4);
 }
 
 function hallway(ctx, h, scene) {
@@ -92,7 +95,7 @@ function items(ctx, scene) {
   (w.obstructions || []).forEach((it) => shape(ctx, it, scene, COLOURS.obstructions));
   (w.rooms || []).forEach((r) => spot(ctx, r.centre, scene, COLOURS.rooms, 0.12, `room ${r.name}`));
   (w.gems || []).forEach((g) => spot(ctx, g.position, scene, GEM[g.owner] || "#555", g.radius || 0.3, `gem ${g.id}`));
-  if (w.charging_base) spot(ctx, w.charging_base.position, scene, "rgba(249, 168, 37, 0.6)", w.charging_base.radius || 0.5, "charging base");
+  if (w.charging_base) spot(ctx, w.charging_base.position, scene, COLOURS.charging_base, w.charging_base.radius || 0.5, "charging base");
   (w.humans || []).forEach((h) => pose(ctx, h.start, scene, COLOURS.humans, `person ${h.id}`));
   if (w.robot && w.robot.start) pose(ctx, w.robot.start, scene, COLOURS.robot, "robot");
 }
