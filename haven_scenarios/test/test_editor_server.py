@@ -163,3 +163,11 @@ def test_haven_edit_starts_from_a_shipped_world_or_a_new_one_but_not_from_a_map(
     (tmp_path / "m.yaml").write_text("name: m\nmap: building.yaml\nrobot: {start: [1, 1]}\n")
     with pytest.raises(WorldError, match="m.yaml: map: the editor draws walls itself"):
         world_tree(str(tmp_path / "m.yaml"))
+
+
+def test_haven_edit_refuses_a_world_it_cannot_read_in_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from haven_scenarios.tools.cli import main
+
+    assert main(["edit", str(tmp_path / "nosuch.yaml")]) == 2
+    err = capsys.readouterr().err
+    assert err == f"haven: error: {tmp_path / 'nosuch.yaml'}: cannot read world file: No such file or directory\n"
