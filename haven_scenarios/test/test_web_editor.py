@@ -112,7 +112,7 @@ def test_haven_edit_draws_a_room_that_haven_batch_runs(browser, tmp_path: Path) 
     assert os.path.exists(tmp_path / "worlds" / "room6x4.yaml")
 
 
-def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_as_walls(browser, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_under_the_plan_and_as_walls(browser, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
     import io
 
     import numpy as np
@@ -134,6 +134,9 @@ def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_a
         png = io.BytesIO()
         Image.fromarray(pixels).save(png, format="PNG")
         page.set_input_files("#image", files=[{"name": "plan.png", "mimeType": "image/png", "buffer": png.getvalue()}])
+        page.click("#as-background")
+        page.wait_for_function("havenEditor.background !== null", timeout=PAGE_TIMEOUT_MS)
+        assert page.evaluate("havenEditor.background") == {"width": 120, "height": 80, "resolution": 0.05, "x": 0, "y": 0}
         page.click("#as-walls")
         page.wait_for_function("havenEditor.world().walls.length === 4", timeout=PAGE_TIMEOUT_MS)
         assert all("polygon" in w for w in page.evaluate("havenEditor.world().walls"))

@@ -232,6 +232,7 @@ window.havenEditor = {
   get checks() { return state.checks; },
   get checkedWorld() { return state.checkedWorld; }, // the world the verdict is about (JSON)
   get saved() { return state.saved; },
+  get background() { const b = state.background; return b && { width: b.bitmap.width, height: b.bitmap.height, resolution: b.resolution, x: b.x, y: b.y }; },
   // where a point in metres is on the page (for the tests' mouse)
   toPage: (x, y) => { const r = canvas.getBoundingClientRect(); const [px, py] = toPixels(x, y); return [r.left + px, r.top + py]; },
   fit: (x0, y0, x1, y1) => { view.scale = Math.min(canvas.clientWidth / (x1 - x0), canvas.clientHeight / (y1 - y0)); view.x0 = x0; view.y0 = y0; draw(); },
