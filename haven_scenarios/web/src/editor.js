@@ -122,7 +122,10 @@ canvas.addEventListener("mousedown", (e) => {
 });
 canvas.addEventListener("mousemove", (e) => {
   const d = state.drag;
-  if (!d) return;
+  if (!d) {
+    state.hover = state.pending.length ? snapped(e.offsetX, e.offsetY) : null; // where the next click lands
+    return state.hover && draw();
+  }
   if (d.pan) {
     view.x0 = d.pan[2] - (e.offsetX - d.pan[0]) / view.scale;
     view.y0 = d.pan[3] + (e.offsetY - d.pan[1]) / view.scale;
@@ -222,7 +225,7 @@ function draw() {
   canvas.width = canvas.clientWidth;
   canvas.height = canvas.clientHeight;
   const bad = state.verdict && !state.verdict.ok ? named(world, state.verdict.key) : null;
-  drawPlan(ctx, { world, view, toPixels, toMetres, background: state.background, selected: selectedItem(), bad, pending: state.pending, drag: state.drag });
+  drawPlan(ctx, { world, view, toPixels, toMetres, background: state.background, selected: selectedItem(), bad, pending: state.pending, hover: state.hover, drag: state.drag });
 }
 window.addEventListener("resize", draw);
 

@@ -121,6 +121,14 @@ function drafts(ctx, scene) {
     path(ctx, scene.pending, scene.toPixels, false);
     ctx.stroke();
     for (const p of scene.pending) spot(ctx, p, scene, "#1660e8", 0, "");
+    if (scene.hover) {
+      ctx.setLineDash([6, 4]);
+      path(ctx, [scene.pending[scene.pending.length - 1], scene.hover], scene.toPixels, false);
+      ctx.stroke();
+      ctx.setLineDash([]);
+      const length = Math.hypot(scene.hover[0] - scene.pending[scene.pending.length - 1][0], scene.hover[1] - scene.pending[scene.pending.length - 1][1]);
+      ctx.fillText(`${length.toFixed(2)} m`, ...scene.toPixels(...scene.hover).map((v) => v + 10));
+    }
   }
   const d = scene.drag;
   if (d && d.from) {
