@@ -289,7 +289,7 @@ def test_the_committed_bundles_are_what_the_sources_build(tmp_path):
         pytest.skip("no Node.js or no haven_scenarios/web/node_modules (scripts/setup.sh runs npm ci where npm exists)")
     subprocess.run(["node", "build.mjs", "--out", str(tmp_path)], cwd=WEB, check=True, timeout=120)
     built = sorted(p.name for p in tmp_path.iterdir())
-    assert built == ["console.js", "instruments.js", "participant.js", "participant.js.LEGAL.txt"]
+    assert built == ["console.js", "editor.js", "instruments.js", "participant.js", "participant.js.LEGAL.txt"]
     _, mismatch, errors = filecmp.cmpfiles(tmp_path, Path(str(STATIC)), built, shallow=False)
     assert mismatch == errors == [], "the committed bundles are stale: run `node build.mjs` in haven_scenarios/web"
     assert json.loads((WEB / "package-lock.json").read_text())["lockfileVersion"] >= 3

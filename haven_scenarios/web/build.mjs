@@ -1,4 +1,4 @@
-// Builds the two pages' bundles into the Python package (haven_scenarios/web/static), so users need
+// Builds the pages' bundles into the Python package (haven_scenarios/web/static), so users need
 // no Node. Deterministic: the same sources and lock file give the same bytes (a test rebuilds and
 // compares). `node build.mjs --out DIR` writes elsewhere; `--xr-emulator FILE` builds the tests'
 // emulated headset (test/xr_emulator.js) instead.
@@ -12,7 +12,7 @@ if (emulator) {
 }
 const out = process.argv.includes("--out") ? process.argv[process.argv.indexOf("--out") + 1] : "../haven_scenarios/web/static";
 await esbuild.build({
-  entryPoints: { participant: "src/participant.js", console: "src/console.js", instruments: "src/instruments.js" },
+  entryPoints: { participant: "src/participant.js", console: "src/console.js", instruments: "src/instruments.js", editor: "src/editor.js" },
   bundle: true,
   minify: true,
   format: "esm",

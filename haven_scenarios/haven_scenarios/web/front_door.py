@@ -101,6 +101,43 @@ def reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/p
     h.wfile.write(body)
 
 
+def reply_json(h: BaseHTTPRequestHandler, code: int, data: Mapping[str, Any]) -> None:
+    reply(h, code, json.dumps(data).encode(), "application/json")
+
+
+def read_body(h: BaseHTTPRequestHandler, limit: int, what: str) -> bytes:
+    """A POST's body of 1..`limit` bytes; ValueError (one line naming `what`) otherwise."""
+    try:
+        length = int(h.headers.get("Content-Length") or 0)
+    except ValueError:
+        length = -1
+    if not 0 < length <= limit:
+        raise ValueError(f"{what} of {length} bytes (at most {limit})")
+    return h.rfile.read(length)
+
+
+def quiet_handler(
+    on_get: Callable[[BaseHTTPRequestHandler], None], on_post: Callable[[BaseHTTPRequestHandler], None]
+) -> type[BaseHTTPRequestHandler]:
+    """A request handler class for a standalone page server (the instruments, the editor): GET and
+    POST passed on, nothing logged (the researcher's terminal stays quiet)."""
+
+    class Handler(BaseHTTPRequestHandler):
+        server_version = "haven"
+        timeout = REQUEST_TIMEOUT_S
+
+        def log_message(self, format: str, *args: Any) -> None:
+            pass
+
+        def do_GET(self) -> None:
+            on_get(self)
+
+        def do_POST(self) -> None:
+            on_post(self)
+
+    return Handler
+
+
 class FrontDoor:
     def __init__(
         self,

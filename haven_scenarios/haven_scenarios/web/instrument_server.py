@@ -25,7 +25,7 @@ from haven_scenarios.record.answers import MAX_MESSAGE_BYTES
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, role_token, token_of, token_ok
-from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, reply
+from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json
 
 PAGE, COOKIE = "instruments", "haven_instruments_"  # the page's path and its token cookie (+ participant)
 SERVED = ("instruments.js", "haven.css")
@@ -41,23 +41,8 @@ class InstrumentServer:
         self.token = role_token(new_token(), self.participant)
         self.finished = threading.Event()
         self._lock = threading.Lock()
-        server = self
-
-        class Handler(BaseHTTPRequestHandler):
-            server_version = "haven"
-            timeout = 10.0
-
-            def log_message(self, format: str, *args: Any) -> None:  # the researcher's terminal stays quiet
-                pass
-
-            def do_GET(self) -> None:
-                server.get(self)
-
-            def do_POST(self) -> None:
-                server.post(self)
-
         try:
-            self.httpd = _Server((host, port), Handler)
+            self.httpd = _Server((host, port), quiet_handler(self.get, self.post))
         except OSError as e:
             raise ValueError(f"cannot serve the instruments page on {host}:{port}: {e.strerror}") from None
         self.host = host
@@ -116,15 +101,9 @@ class InstrumentServer:
         if [p for p in urlsplit(h.path).path.split("/") if p] != [PAGE, self.participant, "answers"]:
             return reply(h, 404, b"no such page")
         if not self._cookie_ok(h):
-            return _json(h, 403, {"error": "not this participant's page: open the address `haven study run` printed"})
+            return reply_json(h, 403, {"error": "not this participant's page: open the address `haven study run` printed"})
         try:
-            length = int(h.headers.get("Content-Length") or 0)
-        except ValueError:
-            length = -1
-        if not 0 < length <= MAX_MESSAGE_BYTES:
-            return _json(h, 400, {"error": f"answers of {length} bytes (at most {MAX_MESSAGE_BYTES})"})
-        try:
-            msg = json.loads(h.rfile.read(length))
+            msg = json.loads(read_body(h, MAX_MESSAGE_BYTES, "answers"))
             if not isinstance(msg, dict) or set(msg) != {"questionnaire", "answers"} or msg["questionnaire"] not in self.qs:
                 raise ValueError(f"answers must name one of {', '.join(self.qs)}")
             name = msg["questionnaire"]
@@ -133,11 +112,7 @@ class InstrumentServer:
                 self._check_done()
                 answer = {"answered": [n for n in self.qs if n in self.book.data], "declined": self.book.declined()}
         except (ValueError, RecursionError) as e:
-            return _json(h, 400, {"error": str(e) if not isinstance(e, json.JSONDecodeError) else "answers: not JSON"})
+            return reply_json(h, 400, {"error": str(e) if not isinstance(e, json.JSONDecodeError) else "answers: not JSON"})
         except OSError as e:  # (a full disk: the page can send them again)
-            return _json(h, 500, {"error": f"cannot write {e.filename}: {e.strerror or e}"})
-        _json(h, 200, answer)
-
-
-def _json(h: BaseHTTPRequestHandler, code: int, data: dict[str, Any]) -> None:
-    reply(h, code, json.dumps(data).encode(), "application/json")
+            return reply_json(h, 500, {"error": f"cannot write {e.filename}: {e.strerror or e}"})
+        reply_json(h, 200, answer)

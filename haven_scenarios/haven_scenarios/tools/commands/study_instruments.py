@@ -105,7 +105,7 @@ def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, 
     # Every stop signal ends the wait, as it ends `haven run`: also where the shell started this
     # in the background with SIGINT ignored (Python then leaves Ctrl-C ignored; the wait hung).
     try:
-        with on_stop_signals(_interrupted):
+        with on_stop_signals(interrupted):
             when = "before the first trial" if first else "after the last trial"
             print(f"web: participant {book.path.parent.name} ({when}: {', '.join(q.name for q in book.pending(qs))}): {server.url}", flush=True)
             server.finished.wait()
@@ -114,7 +114,8 @@ def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, 
     return not book.declined()
 
 
-def _interrupted(signum: int, frame: FrameType | None) -> None:
+def interrupted(signum: int, frame: FrameType | None) -> None:
+    """A stop signal as Ctrl-C: the waiting command's own `finally` stops its server."""
     raise KeyboardInterrupt
 
 

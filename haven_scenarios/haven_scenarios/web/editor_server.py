@@ -1,0 +1,213 @@
+"""The world editor's server (`haven edit`): the page, the real loader's verdict on what is drawn,
+walls from a map image, and saving a world with a scenario from a template.
+
+No ROS: a small threaded HTTP server (the standard library's), as the instruments page has
+(web/instrument_server.py). `/edit` is the page (editor.html, the world being edited embedded as
+JSON), `/static/editor.js` its bundle. The page POSTs, each with the token (in the printed address,
+then the cookie the page sets) and size-capped:
+- `/edit/check`: a world as its YAML tree in JSON; the answer is the loader's own verdict
+  (`parse_world`): `{"ok": true, "summary": ...}` or `{"ok": false, "error": line, "key": key}`;
+- `/edit/walls?resolution=R&x=X&y=Y&negate=0|1`: a PNG or JPEG; its dark cells as wall boxes
+  (`map_image.read_image` and `wall_boxes`, as a world's `map:` is read), `{"walls": [polygon, ...]}`;
+- `/edit/save`: `{"world": tree, "task": visit_rooms|collect_gems|none, "overwrite": bool}`; writes
+  OUT/<name>.yaml and OUT/<name>_scenario.yaml (study/scenario_template.py), each written whole
+  (common/atomic.py) and only after both load in a scratch folder; an existing file is replaced
+  only when the page says so (`overwrite`, after asking), else the answer is `{"exists": [...]}`.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+import tempfile
+import threading
+from collections.abc import Mapping
+from http.server import BaseHTTPRequestHandler
+from pathlib import Path
+from typing import Any
+from urllib.parse import parse_qs, urlsplit
+
+import yaml
+
+from haven_scenarios.study.scenario import ScenarioError, parse_scenario
+from haven_scenarios.study.scenario_template import TASKS, TemplateError, scenario_template
+from haven_scenarios.tools.commands.world import summary  # (the same words `haven world show` prints)
+from haven_scenarios.web.access import TOKEN_COOKIE, TOKEN_PARAM, new_token, role_token, token_of, token_ok
+from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json
+from haven_sim.common import atomic
+from haven_sim.common.yaml_file import MAX_FILE_BYTES, YamlFileError, file_label
+from haven_sim.sim.map_image import read_image, wall_boxes
+from haven_sim.sim.world import WorldError
+from haven_sim.sim.world_file import parse_world
+
+PAGE = ROLE = "edit"
+SERVED = ("editor.js", "haven.css")
+MAX_WORLD_BYTES = MAX_FILE_BYTES  # a world the page sends is held to what a world file may be (1 MiB)
+MAX_IMAGE_BYTES = 16 << 20  # a map image upload (a 4000 x 4000 grey PNG, map_image.MAX_CELLS, is well under)
+IMAGE_SUFFIXES = {"image/png": ".png", "image/jpeg": ".jpg"}
+NO_TASK = "none"
+_FILE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$")
+
+
+class EditorServer:
+    """Serves the editor for one world tree until stopped; saves into `out`."""
+
+    def __init__(self, host: str, port: int, world: Mapping[str, Any], out: Path) -> None:
+        self.world, self.out = dict(world), out
+        self.token = role_token(new_token(), ROLE)
+        self._lock = threading.Lock()
+        try:
+            self.httpd = _Server((host, port), quiet_handler(self.get, self.post))
+        except OSError as e:
+            raise ValueError(f"cannot serve the editor on {host}:{port}: {e.strerror}") from None
+        self.host = host
+        self.thread = threading.Thread(target=self.httpd.serve_forever, name="editor", daemon=True)
+
+    @property
+    def url(self) -> str:
+        port = int(self.httpd.server_address[1])
+        return f"http://{address_for_others(self.host)}:{port}/{PAGE}?{TOKEN_PARAM}={self.token}"
+
+    def start(self) -> None:
+        self.thread.start()
+
+    def stop(self) -> None:
+        self.httpd.shutdown()
+        self.httpd.server_close()
+
+    def _allowed(self, h: BaseHTTPRequestHandler) -> bool:
+        return token_ok(token_of(h.path, h.headers.get("Cookie"), ROLE), self.token)
+
+    def get(self, h: BaseHTTPRequestHandler) -> None:
+        parts = [p for p in urlsplit(h.path).path.split("/") if p]
+        if parts == ["favicon.ico"]:
+            return reply(h, 204, b"")
+        if not self._allowed(h):
+            return reply(h, 403, b"this page needs its token: open the address `haven edit` printed")
+        if parts == [PAGE]:
+            config = {"world": self.world, "tasks": list(TASKS), "out": str(self.out)}
+            text = json.dumps(config).replace("<", "\\u003c")
+            page = (STATIC / "editor.html").read_text().replace("{{CONFIG}}", text).encode()
+            cookie = f"{TOKEN_COOKIE}{ROLE}={self.token}; Path=/; HttpOnly; SameSite=Strict"
+            return reply(h, 200, page, "text/html; charset=utf-8", cookie)
+        if len(parts) == 2 and parts[0] == "static" and parts[1] in SERVED:
+            kind = "text/javascript" if parts[1].endswith(".js") else "text/css"
+            return reply(h, 200, (STATIC / parts[1]).read_bytes(), kind)
+        return reply(h, 404, b"no such page")
+
+    def post(self, h: BaseHTTPRequestHandler) -> None:
+        split = urlsplit(h.path)
+        parts = [p for p in split.path.split("/") if p]
+        actions = {"check": self.check, "save": self.save}
+        if len(parts) != 2 or parts[0] != PAGE or parts[1] not in (*actions, "walls"):
+            return reply(h, 404, b"no such page")
+        if not self._allowed(h):
+            return reply_json(h, 403, {"error": "not the editor's page: open the address `haven edit` printed"})
+        try:
+            if parts[1] == "walls":
+                body = read_body(h, MAX_IMAGE_BYTES, "the image")
+                return reply_json(h, 200, image_walls(body, h.headers.get("Content-Type", ""), parse_qs(split.query)))
+            sent = read_body(h, MAX_WORLD_BYTES, "the world")
+            try:
+                message = json.loads(sent)
+            except (json.JSONDecodeError, UnicodeDecodeError, RecursionError):
+                raise ValueError("the page sent something that is not JSON") from None
+            with self._lock:
+                code, answer = actions[parts[1]](message)
+        except ValueError as e:
+            return reply_json(h, 400, {"ok": False, "error": str(e)})
+        except OSError as e:  # (a full disk, a folder that cannot be written: the page can save again)
+            return reply_json(h, 500, {"ok": False, "error": f"cannot write {e.filename}: {e.strerror or e}"})
+        reply_json(h, code, answer)
+
+    def target(self, world: Any) -> Path:
+        name = world.get("name") if isinstance(world, dict) else None
+        if not isinstance(name, str) or not _FILE_NAME.match(name):
+            raise ValueError("name: the world's name names its file: letters, digits, '_' and '-' (up to 64), starting with a letter or digit")
+        return self.out / f"{name}.yaml"
+
+    def check(self, world: Any) -> tuple[int, dict[str, Any]]:
+        """The loader's verdict on a world tree (as if it were the file it would be saved as), and
+        whether its name can name that file."""
+        try:
+            return 200, verdict(world, str(self.target(world)))
+        except ValueError as e:
+            answer = verdict(world, "world.yaml")
+            return 200, answer if not answer["ok"] else {"ok": False, "error": str(e), "key": "name"}
+
+    def save(self, message: Any) -> tuple[int, dict[str, Any]]:
+        if not isinstance(message, dict) or not isinstance(message.get("world"), dict):
+            raise ValueError("the page must send {world, task}")
+        world, task = message["world"], message.get("task", NO_TASK)
+        world_path = self.target(world)
+        answer = verdict(world, str(world_path))
+        if not answer["ok"]:
+            return 400, answer
+        files = {world_path: dump(world)}
+        if task != NO_TASK:
+            scenario_path = self.out / f"{world['name']}_scenario.yaml"
+            try:
+                scenario = scenario_template(f"{world['name']}_scenario", world_path.name, world, task)
+            except TemplateError as e:
+                return 400, {"ok": False, "error": str(e)}
+            files[scenario_path] = dump(scenario)
+            problem = _scenario_problem(world_path.name, files[world_path], scenario_path.name, files[scenario_path])
+            if problem:
+                return 400, {"ok": False, "error": problem}
+        existing = [str(p) for p in files if p.exists()]
+        if existing and message.get("overwrite") is not True:
+            return 409, {"ok": False, "exists": existing, "error": f"{', '.join(existing)} exist(s): save again to replace"}
+        self.out.mkdir(parents=True, exist_ok=True)
+        for path, text in files.items():
+            atomic.write_text(path, text)
+        self.world = dict(world)
+        return 200, {"ok": True, "saved": [str(p) for p in files], "summary": answer["summary"]}
+
+
+def verdict(world: Any, source: str) -> dict[str, Any]:
+    """`parse_world`'s answer: ok with a summary, or its one line and the key it names."""
+    try:
+        loaded = parse_world(world, source)
+    except (WorldError, YamlFileError) as e:
+        line = str(e)
+        rest = line.removeprefix(f"{file_label(source)}: ")
+        return {"ok": False, "error": line, "key": rest.split(": ", 1)[0] if ": " in rest else ""}
+    return {"ok": True, "summary": f"world {loaded.name}: {summary(loaded)}"}
+
+
+def dump(tree: Any) -> str:
+    return yaml.safe_dump(tree, sort_keys=False, default_flow_style=None, allow_unicode=True)
+
+
+def _scenario_problem(world_name: str, world_text: str, scenario_name: str, scenario_text: str) -> str:
+    """The scenario loader's line on the pair written to a scratch folder ('' when it loads)."""
+    with tempfile.TemporaryDirectory(prefix="haven_edit_") as scratch:
+        Path(scratch, world_name).write_text(world_text)
+        try:
+            parse_scenario(yaml.safe_load(scenario_text), str(Path(scratch, scenario_name)))
+        except ScenarioError as e:
+            return str(e).replace(f"{scratch}/", "")
+    return ""
+
+
+def image_walls(image: bytes, content_type: str, query: Mapping[str, list[str]]) -> dict[str, Any]:
+    """A map image's occupied and unknown cells as wall polygons, read as a world's `map:` is."""
+    suffix = IMAGE_SUFFIXES.get(content_type.split(";")[0].strip())
+    if suffix is None:
+        raise ValueError(f"the image must be a PNG or a JPEG, got {content_type or 'no type'}")
+
+    def number(key: str, default: str) -> float:
+        text = query.get(key, [default])[0]
+        try:
+            return float(text)
+        except ValueError:
+            raise ValueError(f"{key}: must be a number, got {text[:20]!r}") from None
+
+    with tempfile.NamedTemporaryFile(prefix="haven_edit_", suffix=suffix) as f:
+        f.write(image)
+        f.flush()
+        try:
+            grid = read_image(f.name, number("resolution", "0.05"), (number("x", "0"), number("y", "0")), negate=query.get("negate", ["0"])[0] == "1")
+        except WorldError as e:
+            raise ValueError(str(e).replace(f.name, "the image")) from None
+    return {"walls": [[[round(x, 4), round(y, 4)] for x, y in box] for box in wall_boxes(grid)]}
