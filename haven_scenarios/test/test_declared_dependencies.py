@@ -30,6 +30,7 @@ UPSTREAM_KEYS = {
     "python3-rosbags-pip": "rosbags",
     "python3-scipy": "scipy",
     "python3-pil": "pillow",
+    "python3-cryptography": "cryptography",
 }
 
 

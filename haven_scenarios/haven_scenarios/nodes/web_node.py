@@ -39,8 +39,9 @@ from haven_scenarios.study.rules import TrialCommand
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_scenarios.web.access import ANSWERS, CONSOLE, READY, SKIP_QUESTIONNAIRES, TOKEN_ENV, Role, absolute, new_token, roles, urls
-from haven_scenarios.web.front_door import FrontDoor, address_for_others
+from haven_scenarios.web.front_door import FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config
+from haven_scenarios.web.tls import server_context
 from haven_scenarios.web.wizard import StartGate, Wizard
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import Event, EventKind, Sequencer, Source, event
@@ -73,6 +74,8 @@ class WebNode(Node):
         humans = [h for h in self.declare_parameter("humans", [""]).value or () if h]  # `[]` on the command line reads as None
         scenario = load_scenario(str(self.declare_parameter("scenario", "hallway").value))
         researcher_start = bool(self.declare_parameter("researcher_start", False).value)
+        tls_cert = str(self.declare_parameter("tls_cert", "").value)  # with tls_key: HTTPS (web/tls.py)
+        tls_key = str(self.declare_parameter("tls_key", "").value)
         questionnaires = from_parameter(str(self.declare_parameter("questionnaires", "[]").value))
         settings = PageSettings(
             participant=str(self.declare_parameter("participant", "sim").value),
@@ -100,10 +103,10 @@ class WebNode(Node):
         self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
         refuse_changes(self, self._refused)
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
-        self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__, robot_model=scenario.robot.look.model)
+        tls = server_context(tls_cert, tls_key) if tls_cert else None
+        self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__, robot_model=scenario.robot.look.model, tls=tls)
         self.door.start()
-        shown = address_for_others(host)
-        for name, url in urls(f"http://{shown}:{self.door.port}", self.secret, humans).items():
+        for name, url in urls(self.door.base_url(host), self.secret, humans).items():
             print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)
 
     def _relay(self, topic: str, msgtype: str, data: bytes) -> None:

@@ -43,11 +43,11 @@ class Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from haven_scenarios.tools.commands import batch_report, clients, edit, files, recordings, robots, study, suite, trial, world
+    from haven_scenarios.tools.commands import batch_report, cert, clients, edit, files, recordings, robots, study, suite, trial, world
 
     parser = Parser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    for group in (suite, clients, trial, batch_report, study, recordings, files, robots, world, edit):
+    for group in (suite, clients, trial, batch_report, study, recordings, files, robots, world, edit, cert):
         group.add(sub)
     return parser
 

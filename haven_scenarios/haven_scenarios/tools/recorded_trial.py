@@ -53,6 +53,7 @@ from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_te
 from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
 from haven_scenarios.tools.domains import DomainBusy
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_environment
+from haven_scenarios.web.tls import tls_files
 from haven_sim.common import nodes
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import ParamsError
@@ -126,6 +127,8 @@ class WebRequest:
     port: int = 8088
     researcher_start: bool = False  # the trial starts on the console's Start, not when the participants are ready
     map_inset: bool = True
+    tls_cert: str = ""  # with tls_key: HTTPS, a certificate and its key in PEM (`haven cert` makes them)
+    tls_key: str = ""
 
 
 @dataclass(frozen=True)
@@ -184,7 +187,14 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
         questionnaires = after_trial.specs(r.questionnaires, r.web is not None, teleop)
         web = None
         if r.web is not None:
-            web = WebOptions(r.web.host, r.web.port, r.web.researcher_start, r.web.map_inset, questionnaires=questionnaires)
+            web = WebOptions(
+                r.web.host,
+                r.web.port,
+                r.web.researcher_start,
+                r.web.map_inset,
+                questionnaires=questionnaires,
+                tls=tls_files(r.web.tls_cert, r.web.tls_key),
+            )
             busy = port_free(r.web.host, r.web.port)
             if busy:
                 raise ValueError(busy)

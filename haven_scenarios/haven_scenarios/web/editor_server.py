@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import json
 import re
+import ssl
 import tempfile
 import threading
 from collections.abc import Mapping
@@ -33,7 +34,7 @@ from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.study.scenario_template import TASKS, TemplateError, scenario_template
 from haven_scenarios.tools.commands.world import summary  # (the same words `haven world show` prints)
 from haven_scenarios.web.access import TOKEN_COOKIE, TOKEN_PARAM, new_token, role_token, token_of, token_ok
-from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json
+from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json, token_cookie
 from haven_sim.common import atomic
 from haven_sim.common.yaml_file import MAX_FILE_BYTES, YamlFileError, file_label
 from haven_sim.sim.map_image import read_image, wall_boxes
@@ -52,12 +53,12 @@ _FILE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$")
 class EditorServer:
     """Serves the editor for one world tree until stopped; saves into `out`."""
 
-    def __init__(self, host: str, port: int, world: Mapping[str, Any], out: Path) -> None:
+    def __init__(self, host: str, port: int, world: Mapping[str, Any], out: Path, tls: ssl.SSLContext | None = None) -> None:
         self.world, self.out = dict(world), out
         self.token = role_token(new_token(), ROLE)
         self._lock = threading.Lock()
         try:
-            self.httpd = _Server((host, port), quiet_handler(self.get, self.post))
+            self.httpd = _Server((host, port), quiet_handler(self.get, self.post), tls)
         except OSError as e:
             raise ValueError(f"cannot serve the editor on {host}:{port}: {e.strerror}") from None
         self.host = host
@@ -66,7 +67,7 @@ class EditorServer:
     @property
     def url(self) -> str:
         port = int(self.httpd.server_address[1])
-        return f"http://{address_for_others(self.host)}:{port}/{PAGE}?{TOKEN_PARAM}={self.token}"
+        return f"{self.httpd.scheme}://{address_for_others(self.host)}:{port}/{PAGE}?{TOKEN_PARAM}={self.token}"
 
     def start(self) -> None:
         self.thread.start()
@@ -88,7 +89,7 @@ class EditorServer:
             config = {"world": self.world, "tasks": list(TASKS), "out": str(self.out)}
             text = json.dumps(config).replace("<", "\\u003c")
             page = (STATIC / "editor.html").read_text().replace("{{CONFIG}}", text).encode()
-            cookie = f"{TOKEN_COOKIE}{ROLE}={self.token}; Path=/; HttpOnly; SameSite=Strict"
+            cookie = token_cookie(h, TOKEN_COOKIE + ROLE, self.token)
             return reply(h, 200, page, "text/html; charset=utf-8", cookie)
         if len(parts) == 2 and parts[0] == "static" and parts[1] in SERVED:
             kind = "text/javascript" if parts[1].endswith(".js") else "text/css"

@@ -14,6 +14,7 @@ import json
 import mimetypes
 import selectors
 import socket
+import ssl
 import sys
 import threading
 import time
@@ -64,6 +65,8 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
                 if not data:
                     return
                 key.data.sendall(data)
+                while isinstance(src, ssl.SSLSocket) and src.pending():  # (decrypted bytes select() cannot see)
+                    key.data.sendall(src.recv(src.pending()))
     except OSError:
         return
     finally:
@@ -75,14 +78,30 @@ REQUEST_TIMEOUT_S = 10.0  # a request's headers must come within this (a client 
 
 class _Server(ThreadingHTTPServer):
     """A client that leaves mid-request (a closed tab, a slow or broken client) is its own business:
-    nothing is said; anything else that fails a request is one line, at most every 10 s."""
+    nothing is said; anything else that fails a request is one line, at most every 10 s. With `tls`
+    (web/tls.py), every connection is HTTPS: its handshake runs in the request's own thread, so a
+    slow client holds up no one else."""
 
     daemon_threads = True
     said_at = 0.0
 
+    def __init__(self, address: tuple[str, int], handler: type[BaseHTTPRequestHandler], tls: ssl.SSLContext | None = None) -> None:
+        self.tls = tls
+        super().__init__(address, handler)
+
+    @property
+    def scheme(self) -> str:
+        return "https" if self.tls is not None else "http"
+
+    def get_request(self) -> tuple[socket.socket, Any]:
+        sock, address = super().get_request()
+        if self.tls is not None:
+            sock = self.tls.wrap_socket(sock, server_side=True, do_handshake_on_connect=False)
+        return sock, address
+
     def handle_error(self, request: Any, client_address: Any) -> None:
         e = sys.exc_info()[1]
-        if isinstance(e, (ConnectionError, TimeoutError)):
+        if isinstance(e, (ConnectionError, TimeoutError, ssl.SSLError)):  # (a browser that does not trust the certificate yet)
             return
         if time.monotonic() - self.said_at >= 10.0:
             self.said_at = time.monotonic()
@@ -99,6 +118,13 @@ def reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/p
         h.send_header("Set-Cookie", cookie)
     h.end_headers()
     h.wfile.write(body)
+
+
+def token_cookie(h: BaseHTTPRequestHandler, name: str, token: str) -> str:
+    """The Set-Cookie value that keeps a page's token for its bundle and socket requests: never
+    for scripts (HttpOnly), never sent from other sites, and over HTTPS never sent in clear."""
+    secure = "; Secure" if getattr(h.server, "tls", None) is not None else ""
+    return f"{name}={token}; Path=/; HttpOnly; SameSite=Strict{secure}"
 
 
 def reply_json(h: BaseHTTPRequestHandler, code: int, data: Mapping[str, Any]) -> None:
@@ -148,10 +174,12 @@ class FrontDoor:
         config: Callable[[str], Mapping[str, Any]],
         request_timeout_s: float = REQUEST_TIMEOUT_S,
         robot_model: str = "",
+        tls: ssl.SSLContext | None = None,
     ) -> None:
         """`secret`: the session's (each role's token derives from it); `backends`: role -> its
         Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings; `robot_model`:
-        the trial robot's glTF file (its look.model), served at ROBOT_MODEL_PATH."""
+        the trial robot's glTF file (its look.model), served at ROBOT_MODEL_PATH; `tls`: serve HTTPS
+        (web/tls.py)."""
         self.robot_model = Path(robot_model) if robot_model else None
         self.tokens = {role: role_token(secret, role) for role in backends}
         self.backends, self.config = dict(backends), config
@@ -168,7 +196,7 @@ class FrontDoor:
                 door.handle(self)
 
         try:
-            self.httpd = _Server((host, port), Handler)
+            self.httpd = _Server((host, port), Handler, tls)
         except OSError as e:  # one line for the user, not a traceback
             raise ValueError(f"cannot serve the study pages on {host}:{port}: {e.strerror}") from None
         self.thread = threading.Thread(target=self.httpd.serve_forever, name="front_door", daemon=True)
@@ -176,6 +204,10 @@ class FrontDoor:
     @property
     def port(self) -> int:
         return int(self.httpd.server_address[1])
+
+    def base_url(self, host: str) -> str:
+        """The address others open (`host` as bound: see address_for_others)."""
+        return f"{self.httpd.scheme}://{address_for_others(host)}:{self.port}"
 
     def start(self) -> None:
         self.thread.start()
@@ -200,7 +232,7 @@ class FrontDoor:
         if not self._allowed(h, req.role):
             return reply(h, 403, b"this page needs its token: open the address `haven run` printed for it")
         if req.kind == "page":
-            cookie = f"{TOKEN_COOKIE}{req.role}={self.tokens[req.role]}; Path=/; HttpOnly; SameSite=Strict"
+            cookie = token_cookie(h, TOKEN_COOKIE + req.role, self.tokens[req.role])
             return reply(h, 200, page_html(req.role, self.config(req.role)), "text/html; charset=utf-8", cookie)
         if req.kind == "robot_model":
             if self.robot_model is None or self.robot_model.suffix != f".{req.rest}" or not self.robot_model.is_file():

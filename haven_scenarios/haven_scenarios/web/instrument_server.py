@@ -14,6 +14,7 @@ takes the same port.
 from __future__ import annotations
 
 import json
+import ssl
 import threading
 from collections.abc import Sequence
 from datetime import datetime, timezone
@@ -25,7 +26,7 @@ from haven_scenarios.record.answers import MAX_MESSAGE_BYTES
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, role_token, token_of, token_ok
-from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json
+from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json, token_cookie
 
 PAGE, COOKIE = "instruments", "haven_instruments_"  # the page's path and its token cookie (+ participant)
 SERVED = ("instruments.js", "haven.css")
@@ -34,7 +35,9 @@ SERVED = ("instruments.js", "haven.css")
 class InstrumentServer:
     """One participant's instruments page until they have answered `qs` (or declined consent)."""
 
-    def __init__(self, host: str, port: int, book: InstrumentBook, qs: Sequence[Questionnaire], key: str, done_text: str) -> None:
+    def __init__(
+        self, host: str, port: int, book: InstrumentBook, qs: Sequence[Questionnaire], key: str, done_text: str, tls: ssl.SSLContext | None = None
+    ) -> None:
         self.book, self.participant, self.done_text = book, book.path.parent.name, done_text
         self.qs = {q.name: q for q in qs}
         self.order = {q.name: item_order(q, key) for q in qs}
@@ -42,7 +45,7 @@ class InstrumentServer:
         self.finished = threading.Event()
         self._lock = threading.Lock()
         try:
-            self.httpd = _Server((host, port), quiet_handler(self.get, self.post))
+            self.httpd = _Server((host, port), quiet_handler(self.get, self.post), tls)
         except OSError as e:
             raise ValueError(f"cannot serve the instruments page on {host}:{port}: {e.strerror}") from None
         self.host = host
@@ -52,7 +55,7 @@ class InstrumentServer:
     @property
     def url(self) -> str:
         port = int(self.httpd.server_address[1])
-        return f"http://{address_for_others(self.host)}:{port}/{PAGE}/{self.participant}?{TOKEN_PARAM}={self.token}"
+        return f"{self.httpd.scheme}://{address_for_others(self.host)}:{port}/{PAGE}/{self.participant}?{TOKEN_PARAM}={self.token}"
 
     def start(self) -> None:
         self.thread.start()
@@ -85,7 +88,7 @@ class InstrumentServer:
             with self._lock:
                 text = json.dumps(self.config()).replace("<", "\\u003c")
             page = (STATIC / "instruments.html").read_text().replace("{{CONFIG}}", text).encode()
-            cookie = f"{COOKIE}{self.participant}={self.token}; Path=/; HttpOnly; SameSite=Strict"
+            cookie = token_cookie(h, COOKIE + self.participant, self.token)
             return reply(h, 200, page, "text/html; charset=utf-8", cookie)
         if len(parts) == 2 and parts[0] == "static" and parts[1] in SERVED:
             kind = "text/javascript" if parts[1].endswith(".js") else "text/css"

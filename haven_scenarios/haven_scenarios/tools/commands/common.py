@@ -17,6 +17,12 @@ from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv,
 from haven_sim.common import nodes
 
 
+def add_tls_options(group: argparse._ActionsContainer) -> None:
+    """`--tls-cert FILE --tls-key FILE`: serve the pages over HTTPS (web/tls.py)."""
+    group.add_argument("--tls-cert", default=None, metavar="FILE", help="serve HTTPS with this certificate (PEM; `haven cert` makes one)")
+    group.add_argument("--tls-key", default=None, metavar="FILE", help="the certificate's private key (PEM)")
+
+
 def finite(text: str) -> float:
     try:
         value = float(text)

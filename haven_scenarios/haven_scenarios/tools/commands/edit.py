@@ -12,7 +12,7 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.study.scenario import resolve_world
-from haven_scenarios.tools.commands.common import bounded_int, fail
+from haven_scenarios.tools.commands.common import add_tls_options, bounded_int, fail
 from haven_scenarios.tools.commands.study_instruments import interrupted
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
 from haven_sim.runtime.process import on_stop_signals
@@ -28,6 +28,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     edit.add_argument("--out", type=Path, default=Path("."), help="the folder saved worlds and scenarios go to (default: here)")
     edit.add_argument("--host", default=DEFAULT_HOST, help="the address to serve on (0.0.0.0: every interface; default this machine only)")
     edit.add_argument("--port", type=bounded_int(0, 65535), default=DEFAULT_PORT, help=f"the port (default {DEFAULT_PORT}; 0: any free one)")
+    add_tls_options(edit)
     edit.set_defaults(func=edit_cmd)
 
 
@@ -46,9 +47,11 @@ def world_tree(spec: str | None) -> dict[str, Any]:
 
 def edit_cmd(args: argparse.Namespace) -> int:
     from haven_scenarios.web.editor_server import EditorServer  # (the server loads only for this command)
+    from haven_scenarios.web.tls import server_context, tls_files
 
     try:
-        server = EditorServer(args.host, args.port, world_tree(args.world), args.out)
+        files = tls_files(args.tls_cert, args.tls_key)
+        server = EditorServer(args.host, args.port, world_tree(args.world), args.out, server_context(*files) if files else None)
     except (WorldError, YamlFileError, ValueError) as e:
         return fail(str(e))
     server.start()

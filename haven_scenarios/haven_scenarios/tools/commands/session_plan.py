@@ -109,6 +109,7 @@ class WebOptions:
     map_inset: bool = True
     secret: str = field(default_factory=new_token)  # each page role's token derives from it
     questionnaires: tuple[str | dict[str, Any], ...] = ()  # asked after the trial: built-in names, Likert mappings
+    tls: tuple[str, str] | None = None  # HTTPS: the certificate's and its key's absolute paths (checked: web/tls.py)
 
 
 def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
@@ -123,5 +124,6 @@ def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
         "researcher_start": web.researcher_start,
         "map_inset": web.map_inset,
         **({"questionnaires": after_trial.as_parameter(web.questionnaires)} if web.questionnaires else {}),
+        **({"tls_cert": web.tls[0], "tls_key": web.tls[1]} if web.tls else {}),
     }
     return ProcessSpec(nodes.WEB.key, node_argv(nodes.WEB.module, params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))

@@ -14,7 +14,7 @@ from collections.abc import Callable, Sequence
 from datetime import datetime, timezone
 from pathlib import Path
 from types import FrameType
-from typing import Any
+from typing import Any, Protocol
 
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.study.questionnaires import CHOICE, TEXT, Item, Questionnaire, in_order, item_order
@@ -90,17 +90,33 @@ def run_instruments(book: InstrumentBook, qs: Sequence[Questionnaire], key: str,
     return not book.declined()
 
 
+class Served(Protocol):
+    """Where the instruments page is served (a study run's options)."""
+
+    @property
+    def host(self) -> str: ...
+    @property
+    def port(self) -> int: ...
+    @property
+    def tls_cert(self) -> str | None: ...
+    @property
+    def tls_key(self) -> str | None: ...
+
+
 DONE_BEFORE = "Thank you. Please wait: the researcher starts the first trial."
 DONE_AFTER = "Thank you for taking part: the study is over."
 
 
-def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, host: str, port: int, first: bool) -> bool:
+def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, where: Served, first: bool) -> bool:
     """The participant answers what is pending of `qs` in their browser (web/instrument_server.py):
-    prints the address, returns once all is answered (False: consent declined). ValueError (one
-    line) if the address cannot be served; Ctrl-C ends the wait (KeyboardInterrupt)."""
+    prints the address, returns once all is answered (False: consent declined). `where`: the
+    study run's host, port and TLS files. ValueError (one line) if the address cannot be served; Ctrl-C ends the wait (KeyboardInterrupt)."""
     from haven_scenarios.web.instrument_server import InstrumentServer  # (only with --web)
+    from haven_scenarios.web.tls import server_context, tls_files
 
-    server = InstrumentServer(host, port, book, qs, key, DONE_BEFORE if first else DONE_AFTER)
+    files = tls_files(where.tls_cert, where.tls_key)
+    tls = server_context(*files) if files else None
+    server = InstrumentServer(where.host, where.port, book, qs, key, DONE_BEFORE if first else DONE_AFTER, tls)
     server.start()
     # Every stop signal ends the wait, as it ends `haven run`: also where the shell started this
     # in the background with SIGINT ignored (Python then leaves Ctrl-C ignored; the wait hung).

@@ -54,6 +54,8 @@ class StudyRun:
     web: bool = False  # the participant plays in the browser, questionnaires after each trial
     host: str = "127.0.0.1"
     port: int = 8088
+    tls_cert: str | None = None  # with tls_key: the pages over HTTPS
+    tls_key: str | None = None
     teleop: tuple[str, ...] | None = None  # these humans (() for all) are driven by the participant
     no_pause: bool = True  # with a person: do not wait for Enter between trials
     params_file: str | None = None
@@ -86,7 +88,7 @@ def person_of(study: Study, trial: PlannedTrial) -> tuple[int, int]:
 def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str], study: Study | None = None) -> TrialRequest:
     """The recorded trial for one trial of the schedule (`study`: for session.json, and who the
     simulated participant is)."""
-    web = WebRequest(args.host, args.port) if args.web else None
+    web = WebRequest(args.host, args.port, tls_cert=args.tls_cert or "", tls_key=args.tls_key or "") if args.web else None
     teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
     return TrialRequest(
         trial.scenario_spec,
@@ -220,7 +222,7 @@ def _instruments(args: StudyRun, study: Study, root: Path, qs: tuple[Questionnai
     asker = None if args.batch else terminal_asker()
     key = order_key(study.name, args.participant)
     try:
-        agreed = ask_in_browser(book, qs, key, args.host, args.port, first) if args.web else run_instruments(book, qs, key, asker)
+        agreed = ask_in_browser(book, qs, key, args, first) if args.web else run_instruments(book, qs, key, asker)
         if not agreed:
             say_declined(args.participant, book.path)
             return 0

@@ -1,0 +1,142 @@
+"""HTTPS for the pages (web/tls.py, `haven cert`, `--tls-cert/--tls-key`): the certificate `haven
+cert` makes is checked by a client we did not write (the standard library's OpenSSL, trusting only
+the lab's authority, host names checked), the pages and a WebSocket pass through TLS whole, and
+bad files are one line."""
+
+from __future__ import annotations
+
+import socket
+import ssl
+import stat
+import threading
+import urllib.error
+import urllib.request
+from pathlib import Path
+
+import pytest
+from cryptography import x509
+
+from haven_scenarios.tools.cli import main
+from haven_scenarios.web.access import role_token
+from haven_scenarios.web.editor_server import EditorServer
+from haven_scenarios.web.front_door import FrontDoor
+from haven_scenarios.web.tls import CA_CERT, CA_KEY, server_context, tls_files
+
+
+@pytest.fixture(scope="module")
+def certs(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    folder = tmp_path_factory.mktemp("tls")
+    assert main(["cert", "--dir", str(folder), "--name", "localhost", "--name", "127.0.0.1"]) == 0
+    return folder
+
+
+def served(certs: Path, tmp_path: Path) -> EditorServer:
+    server = EditorServer("127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(certs / "localhost.pem", certs / "localhost-key.pem"))
+    server.start()
+    return server
+
+
+def test_haven_cert_makes_the_authority_once_and_keeps_the_keys_private(certs: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    for key in (CA_KEY, "localhost-key.pem"):
+        assert stat.S_IMODE((certs / key).stat().st_mode) == 0o600, key
+    before = (certs / CA_CERT).read_bytes()
+    assert main(["cert", "--dir", str(certs), "--name", "lab-pc.local"]) == 0
+    out = capsys.readouterr().out
+    assert "authority (kept)" in out and "--tls-cert" in out, out
+    assert (certs / CA_CERT).read_bytes() == before  # headsets that trust it go on trusting the next certificate
+    leaf = x509.load_pem_x509_certificates((certs / "lab-pc.local.pem").read_bytes())[0]
+    leaf.verify_directly_issued_by(x509.load_pem_x509_certificate(before))  # signed by the same, kept authority
+
+
+def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_is_secure(certs: Path, tmp_path: Path) -> None:
+    server = served(certs, tmp_path)
+    try:
+        assert server.url.startswith("https://localhost:"), server.url
+        trusting = ssl.create_default_context(cafile=certs / CA_CERT)  # host names checked, as browsers do
+        for url in (server.url, server.url.replace("localhost", "127.0.0.1")):
+            with urllib.request.urlopen(url, context=trusting, timeout=30) as r:
+                assert r.status == 200
+                assert "Secure" in r.headers["Set-Cookie"] and "HttpOnly" in r.headers["Set-Cookie"]
+        with pytest.raises(urllib.error.URLError, match="CERTIFICATE_VERIFY_FAILED"):  # nobody else trusts it
+            urllib.request.urlopen(server.url, context=ssl.create_default_context(), timeout=30)
+        plain = server.url.replace("https://", "http://")
+        with pytest.raises((urllib.error.URLError, ConnectionError)):  # no clear-text answer on the same port
+            urllib.request.urlopen(plain, timeout=30)
+    finally:
+        server.stop()
+
+
+def test_a_certificate_for_other_names_fails_the_host_name_check(certs: Path, tmp_path: Path) -> None:
+    assert main(["cert", "--dir", str(certs), "--name", "elsewhere.example"]) == 0
+    server = EditorServer(
+        "127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(certs / "elsewhere.example.pem", certs / "elsewhere.example-key.pem")
+    )
+    server.start()
+    try:
+        with pytest.raises(urllib.error.URLError, match="match|mismatch"):
+            urllib.request.urlopen(server.url, context=ssl.create_default_context(cafile=certs / CA_CERT), timeout=30)
+    finally:
+        server.stop()
+
+
+def _backend() -> tuple[socket.socket, threading.Thread]:
+    """A stand-in for a role's WebSocket server: answers the upgrade, then echoes every byte."""
+    listener = socket.create_server(("127.0.0.1", 0))
+
+    def serve() -> None:
+        conn, _ = listener.accept()
+        with conn:
+            head = b""
+            while b"\r\n\r\n" not in head:
+                head += conn.recv(4096)
+            conn.sendall(b"HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n\r\n")
+            while data := conn.recv(65536):
+                conn.sendall(data)
+
+    thread = threading.Thread(target=serve, daemon=True)
+    thread.start()
+    return listener, thread
+
+
+def test_a_websocket_passes_through_the_https_front_door_byte_for_byte(certs: Path) -> None:
+    listener, thread = _backend()
+    tls = server_context(certs / "localhost.pem", certs / "localhost-key.pem")
+    door = FrontDoor("127.0.0.1", 0, "secret", {"console": listener.getsockname()[1]}, lambda role: {}, tls=tls)
+    door.start()
+    try:
+        assert door.base_url("127.0.0.1").startswith("https://localhost:")
+        context = ssl.create_default_context(cafile=certs / CA_CERT)
+        with socket.create_connection(("127.0.0.1", door.port), timeout=30) as raw, context.wrap_socket(raw, server_hostname="localhost") as s:
+            token = role_token("secret", "console")
+            s.sendall(f"GET /ws/console?token={token} HTTP/1.1\r\nHost: localhost\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n\r\n".encode())
+            answer = b""
+            while b"\r\n\r\n" not in answer:
+                answer += s.recv(4096)
+            assert answer.startswith(b"HTTP/1.1 101"), answer
+            payload = bytes(range(256)) * 1024  # 256 KiB: many TLS records, some held decrypted inside the socket
+            s.sendall(payload)
+            echoed = b""
+            while len(echoed) < len(payload):
+                echoed += s.recv(65536)
+            assert echoed == payload
+    finally:
+        door.stop()
+        listener.close()
+        thread.join(timeout=10)
+
+
+def test_tls_files_that_are_wrong_are_one_line(certs: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    assert tls_files(None, None) is None
+    with pytest.raises(ValueError, match="go together"):
+        tls_files(str(certs / "localhost.pem"), None)
+    with pytest.raises(ValueError, match="--tls-key .*: no such file"):
+        tls_files(str(certs / "localhost.pem"), str(tmp_path / "missing.pem"))
+    with pytest.raises(ValueError, match="not a certificate and its key"):  # another certificate's key
+        server_context(certs / "localhost.pem", certs / CA_KEY)
+    not_pem = tmp_path / "notes.txt"
+    not_pem.write_text("hello\n")
+    with pytest.raises(ValueError, match="not a certificate and its key"):
+        server_context(not_pem, certs / "localhost-key.pem")
+    assert main(["edit", "--port", "0", "--tls-cert", str(not_pem), "--tls-key", str(certs / "localhost-key.pem")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.count("\n") == 0 and "not a certificate and its key" in err, err
