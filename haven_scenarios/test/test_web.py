@@ -16,7 +16,8 @@ from pathlib import Path
 import pytest
 
 from haven_scenarios.study.scenario import load_scenario
-from haven_scenarios.web.access import CONSOLE, READY, role_token, roles, route, token_of, token_ok, urls
+from haven_scenarios.web.access import CONSOLE, READY, door_key, role_token, roles, route, token_of, token_ok, urls
+from haven_scenarios.web.door_hello import DOOR_TOPIC
 from haven_scenarios.web.front_door import STATIC, FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config, robot_view
 from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS, StartGate, Wizard
@@ -112,6 +113,7 @@ class _Backend:
         self.sock.listen()
         self.port = self.sock.getsockname()[1]
         self.handshake = b""
+        self.received = b""  # after the handshake
         threading.Thread(target=self._serve, daemon=True).start()
 
     def _serve(self) -> None:
@@ -121,7 +123,23 @@ class _Backend:
                 self.handshake += conn.recv(4096)
             conn.sendall(b"HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n\r\n")
             while data := conn.recv(4096):
+                self.received += data
                 conn.sendall(data.upper())
+
+
+def client_frames(data):
+    """RFC 6455 client frames (masked) decoded: [(opcode, payload)], and the bytes after them."""
+    out = []
+    while len(data) >= 6 and data[0] & 0x80 and data[1] & 0x80:
+        n, at = data[1] & 0x7F, 2
+        if n == 126:
+            n, at = struct.unpack("!H", data[2:4])[0], 4
+        elif n == 127:
+            n, at = struct.unpack("!Q", data[2:10])[0], 10
+        mask, payload = data[at : at + 4], data[at + 4 : at + 4 + n]
+        out.append((data[0] & 0x0F, bytes(b ^ mask[i % 4] for i, b in enumerate(payload))))
+        data = data[at + 4 + n :]
+    return out, data
 
 
 SECRET = "secret"
@@ -193,7 +211,16 @@ def test_a_socket_with_the_token_is_passed_through_byte_for_byte(door):
             reply += s.recv(4096)
         assert reply.startswith(b"HTTP/1.1 101")
         s.sendall(b"frame bytes")
-        assert s.recv(4096) == b"FRAME BYTES"
+        echoed = b""
+        while not echoed.endswith(b"FRAME BYTES"):
+            echoed += s.recv(4096)
+    # The role's server heard the door's hello first (web/door_hello.py), then the page's bytes as sent.
+    (advertise, hello, unadvertise), rest = client_frames(backend.received)
+    assert rest == b"frame bytes"
+    channel = json.loads(advertise[1])["channels"][0]
+    assert advertise[0] == 1 and channel["topic"] == DOOR_TOPIC
+    assert hello == (2, struct.pack("<BI", 1, channel["id"]) + door_key(SECRET, "h1").encode())
+    assert json.loads(unadvertise[1]) == {"op": "unadvertise", "channelIds": [channel["id"]]}
     assert backend.handshake.startswith(b"GET / HTTP/1.1\r\n")
     assert b"Sec-WebSocket-Protocol: foxglove.sdk.v1" in backend.handshake and b"haven_token" not in backend.handshake
 
@@ -293,3 +320,74 @@ def test_the_committed_bundles_are_what_the_sources_build(tmp_path):
     _, mismatch, errors = filecmp.cmpfiles(tmp_path, Path(str(STATIC)), built, shallow=False)
     assert mismatch == errors == [], "the committed bundles are stale: run `node build.mjs` in haven_scenarios/web"
     assert json.loads((WEB / "package-lock.json").read_text())["lockfileVersion"] >= 3
+
+
+class _RoleSink:
+    """What a role's server was sent (a stand-in for the web node's RoleSink)."""
+
+    def __init__(self):
+        self.messages, self.refusals, self.parameter_sets = [], [], []
+
+    def advertised(self, topic, schema_name):
+        return None
+
+    def refused_client(self, why):
+        self.refusals.append(why)
+
+    def message(self, topic, schema_name, data):
+        self.messages.append((topic, bytes(data)))
+
+    def get_parameters(self, names):
+        return []
+
+    def set_parameters(self, parameters):
+        self.parameter_sets.append(parameters)
+        return parameters
+
+
+def _publish_and_set(ws, text):
+    """What a client would do to drive the robot and change a cue: advertise, send, set a parameter."""
+    channel = {"id": 1, "topic": "/cmd_vel_teleop", "encoding": "cdr", "schemaName": "geometry_msgs/msg/Twist"}
+    ws.send(json.dumps({"op": "advertise", "channels": [channel]}))
+    ws.send(struct.pack("<BI", 1, 1) + text)
+    ws.send(json.dumps({"op": "setParameters", "parameters": [{"name": "viz.path_projection", "value": False}]}))
+
+
+def test_only_connections_through_the_front_door_reach_a_role_server():
+    """Real Foxglove servers behind the real door: a page's socket through the door publishes and sets
+    parameters; a client that connects to the server's port directly is served nothing and its
+    connection is closed (the guard's sweep), whatever it sends first."""
+    from websockets.exceptions import ConnectionClosed
+    from websockets.sync.client import connect
+
+    from haven_scenarios.tools.foxglove_relay import DoorCheck, FoxgloveRelay
+    from haven_scenarios.web.door_hello import BackendGuard
+
+    relay, guard, sink = FoxgloveRelay(), BackendGuard(), _RoleSink()
+    server = relay.serve("127.0.0.1", 0, "haven console", sink, parameters=True, door=DoorCheck(door_key(SECRET, CONSOLE), guard.sweep))
+    d = FrontDoor("127.0.0.1", 0, SECRET, {CONSOLE: server.port}, lambda role: {}, guard=guard)
+    d.start()
+    try:
+        with connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as direct:
+            _publish_and_set(direct, b"direct")
+            with pytest.raises(ConnectionClosed):  # closed by the server, not by us (a limit, not a wait)
+                while True:
+                    direct.recv(timeout=60)
+        deadline = time.monotonic() + 60
+        while guard.cut < 1 and time.monotonic() < deadline:  # (the sweeping thread counts just after the shutdown)
+            time.sleep(0.01)
+        assert guard.cut >= 1 and any("did not come through the front door" in r for r in sink.refusals), sink.refusals
+        with connect(f"ws://127.0.0.1:{d.port}/ws/console?token={CON}", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as page:
+            _publish_and_set(page, b"through the door")
+            deadline = time.monotonic() + 60
+            while not (sink.messages and sink.parameter_sets) and time.monotonic() < deadline:
+                time.sleep(0.01)
+        assert sink.messages == [("/cmd_vel_teleop", b"through the door")]  # the direct client's never arrived
+        assert len(sink.parameter_sets) == 1
+        with connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as lurker:  # asks for nothing
+            with pytest.raises(ConnectionClosed):  # the door's periodic sweep closes it too
+                while True:
+                    lurker.recv(timeout=60)
+    finally:
+        d.stop()
+        relay.stop()

@@ -16,6 +16,7 @@ import os
 import re
 import shutil
 import signal
+import struct
 import subprocess
 import sys
 import threading
@@ -95,6 +96,48 @@ class WebTrial:
         return line.split(" in ", 1)[1].split(" (")[0]
 
 
+def listening_ports(module):
+    """The TCP ports on 127.0.0.1 a node (by its module in the command line) listens on, read from
+    /proc (proc(5)): the process's socket inodes matched against the kernel's LISTEN rows."""
+    pids = [p for p in os.listdir("/proc") if p.isdigit() and module in open(f"/proc/{p}/cmdline", "rb").read().decode(errors="replace")]
+    ports = set()
+    for pid in pids:
+        inodes = set()
+        for fd in os.listdir(f"/proc/{pid}/fd"):
+            try:
+                inodes.add(os.readlink(f"/proc/{pid}/fd/{fd}"))
+            except OSError:
+                continue
+        for row in open(f"/proc/{pid}/net/tcp").read().splitlines()[1:]:
+            f = row.split()
+            if f[3] == "0A" and f[1].startswith("0100007F:") and f"socket:[{f[9]}]" in inodes:  # LISTEN on 127.0.0.1
+                ports.add(int(f[1].split(":")[1], 16))
+    return ports
+
+
+def cdr_string(text):
+    """A std_msgs/String in CDR (little-endian encapsulation), as a page would send it."""
+    data = text.encode() + b"\0"
+    return b"\x00\x01\x00\x00" + struct.pack("<I", len(data)) + data
+
+
+def try_the_backends_directly(ports):
+    """Connect to each page server's port, skipping the door, and try what the console may do: start
+    and stop the trial, switch a cue off. Each connection must be closed by the server."""
+    from websockets.exceptions import ConnectionClosed
+    from websockets.sync.client import connect
+
+    for port in ports:
+        with connect(f"ws://127.0.0.1:{port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as ws:
+            channel = {"id": 1, "topic": "/haven/trial_control", "encoding": "cdr", "schemaName": "std_msgs/msg/String"}
+            ws.send(json.dumps({"op": "advertise", "channels": [channel]}))
+            ws.send(struct.pack("<BI", 1, 1) + cdr_string("stop"))
+            ws.send(json.dumps({"op": "setParameters", "parameters": [{"name": "/viz.thought_bubble", "value": False}]}))
+            with pytest.raises(ConnectionClosed):  # a limit, not a wait: the server closes it
+                while True:
+                    ws.recv(timeout=60)
+
+
 def status_of(url):
     u = urlsplit(url)
     c = http.client.HTTPConnection(u.hostname, u.port, timeout=10)
@@ -153,6 +196,12 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     console.goto(console_url, timeout=PAGE_LOAD_MS)
     console.wait_for_function("s => (s = window.havenState) && s.toggles && s.trial", timeout=PAGE_TIMEOUT_MS)
 
+    # Around the door: each role's server on 127.0.0.1 refuses a connection that skipped it.
+    backends = listening_ports("haven_scenarios.nodes.web_node") - {int(urlsplit(console_url).port)}
+    assert len(backends) == 2, backends  # the console's and h1's
+    try_the_backends_directly(backends)
+    assert console.evaluate("havenState.toggles.thought_bubble") is True and page.evaluate("havenState.trial.state") == "held"
+
     page.click("#start")  # read the instructions, ready: the trial starts
     page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
     # The lab's cue (the example's floor arrows) is drawn with no page code of its own, and is a console toggle.
@@ -208,6 +257,12 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     assert ("participant_ready", None, None, None, "h1") in kinds
     assert ("cue_toggled", "thought_bubble", False, None, None) in kinds
     assert ("trial_end", None, None, "stopped", "researcher") in kinds
+    # (the direct connections' stop and cue change never happened: only the console's)
+    assert [k for k in kinds if k[0] in ("trial_end", "cue_toggled")] == [
+        ("cue_toggled", "thought_bubble", False, None, None),
+        ("trial_end", None, None, "stopped", "researcher"),
+    ]
+    assert "did not come through the front door" in "".join(trial.lines)
     assert json.load(open(os.path.join(folder, "metrics.json")))["end_reason"] == "stopped"
     assert tracebacks("".join(trial.lines)) == []
 

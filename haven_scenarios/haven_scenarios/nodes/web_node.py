@@ -37,8 +37,9 @@ from haven_scenarios.nodes.role_sink import RoleSink, TablePublishers
 from haven_scenarios.record.answers import AnswerBook, from_parameter
 from haven_scenarios.study.rules import TrialCommand
 from haven_scenarios.study.scenario import load_scenario
-from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
-from haven_scenarios.web.access import ANSWERS, CONSOLE, READY, SKIP_QUESTIONNAIRES, TOKEN_ENV, Role, absolute, new_token, roles, urls
+from haven_scenarios.tools.foxglove_relay import DoorCheck, FoxgloveRelay
+from haven_scenarios.web.access import ANSWERS, CONSOLE, READY, SKIP_QUESTIONNAIRES, TOKEN_ENV, Role, absolute, door_key, new_token, roles, urls
+from haven_scenarios.web.door_hello import BackendGuard
 from haven_scenarios.web.front_door import FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config
 from haven_scenarios.web.tls import server_context
@@ -96,15 +97,17 @@ class WebNode(Node):
         self.relay = FoxgloveRelay()
         self.relay.keep(absolute(topics.EVENTS), EVENTS_KEPT)  # a console opened mid-trial shows the whole log
         self.servers = {}
+        guard = BackendGuard()  # only the front door reaches the role servers (web/door_hello.py)
         for name, role in self.roles.items():
             sink = RoleSink(self, role, functools.partial(self.forward, role), self.cues, f"page {name}")
-            self.servers[name] = self.relay.serve("127.0.0.1", 0, f"haven {name}", sink, parameters=role.parameters)
+            door = DoorCheck(door_key(self.secret, name), guard.sweep)
+            self.servers[name] = self.relay.serve("127.0.0.1", 0, f"haven {name}", sink, parameters=role.parameters, door=door)
         ports = {name: int(server.port) for name, server in self.servers.items()}
         self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
         refuse_changes(self, self._refused)
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
         tls = server_context(tls_cert, tls_key) if tls_cert else None
-        self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__, robot_model=scenario.robot.look.model, tls=tls)
+        self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__, robot_model=scenario.robot.look.model, tls=tls, guard=guard)
         self.door.start()
         for name, url in urls(self.door.base_url(host), self.secret, humans).items():
             print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)

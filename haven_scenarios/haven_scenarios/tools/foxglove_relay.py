@@ -14,8 +14,11 @@ capability) and, for the researcher console, set parameters, as a `ClientSink` a
 
 from __future__ import annotations
 
+import hmac
 import threading
 from collections import Counter, deque
+from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any, Protocol
 
 import foxglove
@@ -23,6 +26,7 @@ from foxglove import Channel, Parameter, Schema
 from foxglove.websocket import Capability, ChannelView, Client, ClientChannel, ServerListener, StatusLevel
 
 from haven_scenarios.record.bag import TYPESTORE
+from haven_scenarios.web.door_hello import DOOR_TOPIC
 
 
 def msgdef(msgtype: str) -> str:
@@ -50,20 +54,50 @@ class ClientSink(Protocol):
     def set_parameters(self, parameters: list[Parameter]) -> list[Parameter]: ...
 
 
+@dataclass(frozen=True)
+class DoorCheck:
+    """A server behind the front door (web/door_hello.py): a client is served only once it has sent
+    `key` on DOOR_TOPIC; the first request of one that has not calls `on_stranger` (the guard's sweep)."""
+
+    key: str
+    on_stranger: Callable[[], object]
+
+
 class _Listener(ServerListener):
-    def __init__(self, relay: FoxgloveRelay, sink: ClientSink | None) -> None:
-        self.relay, self.sink = relay, sink
+    def __init__(self, relay: FoxgloveRelay, sink: ClientSink | None, door: DoorCheck | None = None) -> None:
+        self.relay, self.sink, self.door = relay, sink, door
+        self.vouched: set[int] = set()  # clients that said the door's hello
+        self.hello: set[tuple[int, int]] = set()  # (client, its channel) the hello comes on
+        self.strangers: set[int] = set()
         self.accepted: dict[tuple[int, int], tuple[str, str]] = {}  # (client, its channel) -> topic, type
         self.advertised: Counter[int] = Counter()  # client -> channels it has advertised
         self.server: Any = None
 
+    def _stranger(self, client: Client) -> bool:
+        """True for a client of a server behind the door that has not said its hello: refused (said
+        once per client, and the guard shuts its connection)."""
+        if self.door is None or client.id in self.vouched:
+            return False
+        if client.id not in self.strangers:
+            self.strangers.add(client.id)
+            if self.sink is not None:
+                self.sink.refused_client(f"client {client.id} did not come through the front door: refused")
+            self.door.on_stranger()
+        return True
+
     def on_subscribe(self, client: Client, channel: ChannelView) -> None:
-        self.relay.resend_latched(channel.topic)
+        if not self._stranger(client):
+            self.relay.resend_latched(channel.topic)
 
     def on_client_advertise(self, client: Client, channel: ClientChannel) -> None:
         """A client's channel: accepted or refused as the sink says; beyond MAX_CHANNELS_PER_CLIENT a
         client's advertisements are ignored at once (said once), so one client's flood of them
         costs the others nothing; a refusal is said to the clients once per client."""
+        if self.door is not None and channel.topic == DOOR_TOPIC and client.id not in self.vouched:
+            self.hello.add((client.id, channel.id))
+            return
+        if self._stranger(client):
+            return
         self.advertised[client.id] += 1
         if self.advertised[client.id] > MAX_CHANNELS_PER_CLIENT:
             if self.advertised[client.id] == MAX_CHANNELS_PER_CLIENT + 1 and self.sink is not None:
@@ -78,17 +112,24 @@ class _Listener(ServerListener):
 
     def on_client_unadvertise(self, client: Client, client_channel_id: int) -> None:
         self.accepted.pop((client.id, client_channel_id), None)
+        self.hello.discard((client.id, client_channel_id))
 
     def on_message_data(self, client: Client, client_channel_id: int, data: bytes) -> None:
+        if (client.id, client_channel_id) in self.hello and self.door is not None:
+            if hmac.compare_digest(bytes(data), self.door.key.encode()):
+                self.vouched.add(client.id)
+            return
+        if self._stranger(client):
+            return
         accepted = self.accepted.get((client.id, client_channel_id))
         if accepted is not None and self.sink is not None:
             self.sink.message(accepted[0], accepted[1], bytes(data))
 
     def on_get_parameters(self, client: Client, param_names: list[str], request_id: str | None = None) -> list[Parameter]:
-        return self.sink.get_parameters(param_names) if self.sink is not None else []
+        return self.sink.get_parameters(param_names) if self.sink is not None and not self._stranger(client) else []
 
     def on_set_parameters(self, client: Client, parameters: list[Parameter], request_id: str | None = None) -> list[Parameter]:
-        return self.sink.set_parameters(parameters) if self.sink is not None else []
+        return self.sink.set_parameters(parameters) if self.sink is not None and not self._stranger(client) else []
 
 
 class FoxgloveRelay:
@@ -106,16 +147,18 @@ class FoxgloveRelay:
         sink: ClientSink | None = None,
         parameters: bool = False,
         time: bool = False,
+        door: DoorCheck | None = None,
     ) -> Any:
         """Start one more server on these channels (port 0: any free port; see `.port`). With a
         `sink`, its clients may publish (and set parameters, if `parameters`); with `time`, it
-        tells its clients the time (`broadcast_time`)."""
+        tells its clients the time (`broadcast_time`); with `door`, only clients that came through
+        the front door are served (web/door_hello.py)."""
         caps: list[Capability] = []
         if sink is not None:
             caps = [Capability.ClientPublish, *([Capability.Parameters] if parameters else [])]
         if time:
             caps.append(Capability.Time)
-        listener = _Listener(self, sink)
+        listener = _Listener(self, sink, door)
         server = foxglove.start_server(
             name=name, host=host, port=port, capabilities=list(caps), supported_encodings=["cdr"], server_listener=listener
         )

@@ -97,6 +97,12 @@ def role_token(secret: str, role: str) -> str:
     return base64.urlsafe_b64encode(digest[:16]).decode().rstrip("=")
 
 
+def door_key(secret: str, role: str) -> str:
+    """What the front door says first on each connection to a role's server (web/door_hello.py):
+    derived from the session's secret like the tokens, but never given to a page."""
+    return role_token(secret, f"front door/{role}")
+
+
 @dataclass(frozen=True)
 class Request:
     """What the front door reads of a request: which page or socket, and whether its token is right."""

@@ -24,7 +24,8 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from haven_scenarios.web.access import CONSOLE, TOKEN_COOKIE, cookie_tokens, role_token, route, token_of, token_ok
+from haven_scenarios.web.access import CONSOLE, TOKEN_COOKIE, cookie_tokens, door_key, role_token, route, token_of, token_ok
+from haven_scenarios.web.door_hello import BackendGuard, hello_frames
 
 STATIC = resources.files("haven_scenarios.web") / "static"
 CONFIG_MARK = "{{CONFIG}}"
@@ -73,6 +74,8 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
         sel.close()
 
 
+SWEEP_PERIOD_S = 1.0  # how often connections that skipped the door are looked for (and on their first request)
+MAX_ANSWER_HEAD = 16384  # a role server's answer to the upgrade: its headers within this
 REQUEST_TIMEOUT_S = 10.0  # a request's headers must come within this (a client that sends them slowly is cut off)
 
 
@@ -175,13 +178,18 @@ class FrontDoor:
         request_timeout_s: float = REQUEST_TIMEOUT_S,
         robot_model: str = "",
         tls: ssl.SSLContext | None = None,
+        guard: BackendGuard | None = None,
     ) -> None:
         """`secret`: the session's (each role's token derives from it); `backends`: role -> its
         Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings; `robot_model`:
         the trial robot's glTF file (its look.model), served at ROBOT_MODEL_PATH; `tls`: serve HTTPS
-        (web/tls.py)."""
+        (web/tls.py); `guard`: the one the role servers call on a stranger (web/door_hello.py)."""
         self.robot_model = Path(robot_model) if robot_model else None
         self.tokens = {role: role_token(secret, role) for role in backends}
+        self.door_keys = {role: door_key(secret, role) for role in backends}
+        self.guard = guard or BackendGuard()
+        self.guard.watch(backends.values())
+        self._stopped = threading.Event()
         self.backends, self.config = dict(backends), config
         door = self
 
@@ -200,6 +208,7 @@ class FrontDoor:
         except OSError as e:  # one line for the user, not a traceback
             raise ValueError(f"cannot serve the study pages on {host}:{port}: {e.strerror}") from None
         self.thread = threading.Thread(target=self.httpd.serve_forever, name="front_door", daemon=True)
+        self.sweeper = threading.Thread(target=self._sweep, name="front_door_guard", daemon=True)
 
     @property
     def port(self) -> int:
@@ -211,8 +220,15 @@ class FrontDoor:
 
     def start(self) -> None:
         self.thread.start()
+        self.sweeper.start()
+
+    def _sweep(self) -> None:
+        """Connections that skipped the door and never asked for anything are cut too, within a second."""
+        while not self._stopped.wait(SWEEP_PERIOD_S):
+            self.guard.sweep()
 
     def stop(self) -> None:
+        self._stopped.set()
         self.httpd.shutdown()
         self.httpd.server_close()
 
@@ -246,21 +262,35 @@ class FrontDoor:
             return reply(h, 200, asset.read_bytes(), kind)
         if h.headers.get("Upgrade", "").lower() != "websocket":
             return reply(h, 400, b"a WebSocket address")
-        self._proxy(h, self.backends[req.role])
+        self._proxy(h, req.role)
 
-    @staticmethod
-    def _proxy(h: BaseHTTPRequestHandler, port: int) -> None:
-        """Hand the WebSocket handshake (without our cookie) and then every byte to the role's server."""
+    def _proxy(self, h: BaseHTTPRequestHandler, role: str) -> None:
+        """Hand the WebSocket handshake (without our cookie) to the role's server, its answer back,
+        then the door's hello (web/door_hello.py), then every byte both ways."""
         h.close_connection = True
         try:
-            upstream = socket.create_connection(("127.0.0.1", port), timeout=5.0)
+            upstream = self.guard.connect(self.backends[role])
         except OSError:
             return reply(h, 502, b"the relay is not running")
-        upstream.settimeout(None)
-        h.connection.settimeout(None)  # (the request timeout was for the headers: a socket may stay quiet)
-        for s in (upstream, h.connection):  # small frames both ways: no Nagle delay (40 ms with delayed ACKs)
-            s.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        head = ["GET / HTTP/1.1", *(f"{k}: {v}" for k, v in h.headers.items() if k.lower() != "cookie")]
-        with upstream:
+        try:
+            for s in (upstream, h.connection):  # small frames both ways: no Nagle delay (40 ms with delayed ACKs)
+                s.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+            head = ["GET / HTTP/1.1", *(f"{k}: {v}" for k, v in h.headers.items() if k.lower() != "cookie")]
             upstream.sendall(("\r\n".join(head) + "\r\n\r\n").encode("latin-1"))
+            answer = b""
+            while b"\r\n\r\n" not in answer and len(answer) < MAX_ANSWER_HEAD:
+                data = upstream.recv(4096)
+                if not data:
+                    return
+                answer += data
+            h.connection.sendall(answer)  # (with any frames the server sent right after it)
+            if not answer.startswith(b"HTTP/1.1 101"):
+                return
+            upstream.sendall(hello_frames(self.door_keys[role]))
+            upstream.settimeout(None)
+            h.connection.settimeout(None)  # (the request timeout was for the headers: a socket may stay quiet)
             _pump(h.connection, upstream)
+        except OSError:
+            return
+        finally:
+            self.guard.release(upstream)
