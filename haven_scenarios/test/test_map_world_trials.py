@@ -27,6 +27,14 @@ def test_haven_batch_runs_a_world_made_from_a_ros_map(tmp_path):
     assert all(row["end_reason"] == "completed" and int(row["human_contacts"]) == 0 for row in rows), rows
 
 
+@pytest.mark.integration
+def test_haven_validate_takes_a_world_made_from_a_ros_map(tmp_path):
+    scenario = make_map_world(tmp_path / "map")
+    world = scenario.parent / "world.yaml"
+    r = subprocess.run([*HAVEN, "validate", str(world), str(scenario)], capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0 and "(world test_map)" in r.stdout, r.stdout + r.stderr
+
+
 LIBRARY = ("path_line", "projected_arrows", "light_ring")
 
 

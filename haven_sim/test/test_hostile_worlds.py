@@ -112,6 +112,19 @@ def test_the_robots_and_peoples_whole_bodies_must_be_clear_of_walls_at_start(tmp
     refusal(door, "robot.start", "into an obstruction door")
 
 
+def test_places_someone_must_stand_on_are_clear_of_walls_and_furniture(tmp_path):
+    """A gem, a room's centre or the charging base in a wall would only show as a trial that times
+    out (the planner refuses the goal): refused in one line instead, with its owner's body size."""
+    gem = world_file(tmp_path, mutated(lambda d: d["gems"][0].update(position=[4.0, 1.0])))  # in the x = 4 wall
+    refusal(gem, "gems[0].position", "(4, 1) lies inside a wall")
+    room = world_file(tmp_path, mutated(lambda d: d["rooms"][0].update(centre=[3.95 - ROBOT_BODY.radius_m + 0.05, 1.0])))
+    refusal(room, "rooms[0].centre", f"the robot's body (radius {ROBOT_BODY.radius_m:g} m) into a wall")
+    under = world_file(tmp_path, mutated(lambda d: d["gems"][0].update(position=[6.3, 3.8])))  # under the obstacle
+    refusal(under, "gems[0].position", "lies inside an obstacle")
+    base = world_file(tmp_path, mutated(lambda d: d.update(charging_base={"position": [4.0, 0.5], "radius": 0.4})))
+    refusal(base, "charging_base.position", "lies inside a wall")
+
+
 def test_polygons_must_be_simple(tmp_path):
     bowtie = [[6.0, 3.5], [6.6, 4.1], [6.6, 3.5], [6.0, 4.3]]  # edges 0 and 2 cross; the area is not zero
     crossing = "edges from point 0 to 1 and from point 2 to 3 cross"

@@ -143,8 +143,9 @@ def test_a_floor_plan_png_with_a_scale_is_a_world(tmp_path):
         (("map: map.yaml", "map: {image: missing.png, resolution: 0.05}"), "cannot be read as an image"),
         (("map: map.yaml", "map: {image: map.pgm, resolution: 5.0}"), "exceed the 100 m"),
         (("start: [1.0, 0.0, 0.0]", "start: [20.0, 0.0, 0.0]"), "robot.start: (20, 0) lies outside the map"),
-        (("start: [1.0, 0.0, 0.0]", "start: [-0.5, 0.0, 0.0]"), "robot.start: (-0.5, 0) lies inside a wall map"),
+        (("start: [1.0, 0.0, 0.0]", "start: [-0.5, 0.0, 0.0]"), "robot.start: (-0.5, 0) lies inside a wall of the map"),
         (("centre: [1.5, 1.0]", "centre: [15, 1.0]"), "rooms[0].centre: (15, 1) lies outside the map"),
+        (("map: map.yaml", "map: map.pgm"), "map: map.pgm is an image: give its scale with it, map: {image: map.pgm, resolution:"),
     ],
 )
 def test_bad_maps_are_refused_in_one_line(tmp_path, change, words):
@@ -158,8 +159,23 @@ def test_bad_maps_are_refused_in_one_line(tmp_path, change, words):
 def test_a_bad_map_yaml_names_its_own_file_and_key(tmp_path):
     make_map_world(tmp_path)
     (tmp_path / "map.yaml").write_text((tmp_path / "map.yaml").read_text().replace("resolution: 0.05", "resolution: fine"))
-    with pytest.raises(WorldError, match=r"map\.yaml: resolution: must be a number"):
+    with pytest.raises(WorldError, match=r"map\.yaml: resolution: must be a positive number, got .fine."):
         load_world(tmp_path / "world.yaml")
+
+
+@pytest.mark.parametrize(
+    "change, words",
+    [
+        (("resolution: 0.05", "resolution: 0"), "map.yaml: resolution: must be a positive number, got 0"),
+        (("resolution: 0.05", "resolutoin: 0.05"), "map.yaml: resolution: is required (is 'resolutoin' meant to be 'resolution'?)"),
+    ],
+)
+def test_a_map_yamls_own_mistakes_name_it(tmp_path, change, words):
+    make_map_world(tmp_path)
+    (tmp_path / "map.yaml").write_text((tmp_path / "map.yaml").read_text().replace(*change))
+    with pytest.raises(WorldError) as e:
+        load_world(tmp_path / "world.yaml")
+    assert words in str(e.value), str(e.value)
 
 
 def test_a_map_image_with_nothing_occupied_makes_no_world(tmp_path):

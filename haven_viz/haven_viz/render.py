@@ -151,7 +151,7 @@ def render_scene(
         bx, by = world.charging_base.position
         ax.annotate("charging base", (bx, by), ha="center", va="center", fontsize=6, color="black", zorder=9.7)
     if trails or events:
-        ax.legend(loc="upper right", fontsize=7, framealpha=0.8)
+        ax.legend(loc="best", fontsize=7, framealpha=0.8)  # (where it hides the least)
     ax.set_xlim(xmin - 0.3, xmax + 0.3)
     ax.set_ylim(ymin - 0.3, ymax + 0.3)
     ax.set_aspect("equal")

@@ -111,6 +111,8 @@ class WebNode(Node):
         self.door.start()
         for name, url in urls(self.door.base_url(host), self.secret, humans).items():
             print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)
+        when = "on the console's Start" if researcher_start or not humans else f"when {', '.join(humans)} pressed Start (or on the console's)"
+        print(f"web: the trial starts {when}", flush=True)
 
     def _relay(self, topic: str, msgtype: str, data: bytes) -> None:
         self.relay.publish(topic, data, time.time_ns())

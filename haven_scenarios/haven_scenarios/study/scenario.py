@@ -35,6 +35,7 @@ every key is type-checked (booleans are true or false, numbers finite, lists lis
 from __future__ import annotations
 
 from dataclasses import dataclass, field, fields, replace
+from difflib import get_close_matches
 from importlib import resources
 from pathlib import Path
 from typing import Annotated, Any, Literal
@@ -141,7 +142,17 @@ def resolve_world(spec: str, base: Path | None = None) -> Path:
         candidate = Path(str(resources.files(package) / "worlds" / f"{spec}.yaml"))
         if _exists(candidate):
             return candidate
+    if not p.suffix and len(p.parts) == 1:  # a name, not a path: say which names there are
+        shipped = world_names()
+        close = get_close_matches(spec, shipped, n=1)
+        hint = f"did you mean {close[0]!r}? " if close else ""
+        raise WorldError(f"{spec}: no such world file and no shipped world of that name ({hint}shipped: {', '.join(shipped)})")
     return p
+
+
+def world_names() -> list[str]:
+    """The worlds shipped with haven_scenarios (the scenarios' worlds)."""
+    return sorted(p.stem for p in Path(str(resources.files("haven_scenarios") / "worlds")).glob("*.yaml"))
 
 
 def _exists(p: Path) -> bool:
@@ -248,8 +259,8 @@ class _ScenarioParser:
         return tuple(value)
 
     def scenario(self, f: ScenarioFile) -> Scenario:
-        world_path = resolve_world(f.world, Path(self.source).parent)
         try:
+            world_path = resolve_world(f.world, Path(self.source).parent)
             world = load_world(world_path)
         except WorldError as e:
             raise self.fail("world", str(e)) from None

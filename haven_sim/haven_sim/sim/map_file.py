@@ -13,12 +13,13 @@ ignore yaw"); a rotated map is refused in one line.
 
 from __future__ import annotations
 
+from difflib import get_close_matches
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
 from pydantic import ValidationError
 
-from haven_sim.common.schema import FileModel, check, checked, problem
+from haven_sim.common.schema import FileModel, Positive, check, checked, problem
 from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
 from haven_sim.sim.map_image import FREE_THRESH, OCCUPIED_THRESH, MapImage, image_path, read_image
 from haven_sim.sim.world import WorldError
@@ -45,7 +46,7 @@ class MapFile(FileModel):
     """A map's settings, as map_server reads them from its YAML."""
 
     image: str
-    resolution: float
+    resolution: Positive()  # type: ignore[valid-type]  # (checked here, so the error names the file that sets it)
     origin: Annotated[list[float], checked(_origin)] = [0.0, 0.0, 0.0]
     negate: Annotated[bool, checked(_negate)] = False
     occupied_thresh: float = OCCUPIED_THRESH
@@ -57,12 +58,21 @@ def load_map(value: Any, world_source: str) -> MapImage:
     """The map a world file's `map:` names: a map_server YAML path or inline settings."""
     base = Path(world_source).parent
     if isinstance(value, str):
+        if Path(value).suffix.lower() in IMAGE_SUFFIXES:
+            raise WorldError(
+                f"{file_label(world_source)}: map: {value} is an image: give its scale with it, "
+                f"map: {{image: {value}, resolution: M_PER_PIXEL, origin: [X, Y, 0]}}"
+            )
         path = image_path(value, base, world_source, "map")
         data = read_yaml(path, "map file", WorldError)
         if not isinstance(data, dict):
             raise WorldError(f"{file_label(path)}: the map file must be a mapping")
         known = {k: v for k, v in data.items() if k in MapFile.model_fields}  # (map_server ignores other keys)
-        return _read(check(MapFile, known, str(path), WorldError, "map file"), path.parent, str(path), "")
+        try:
+            settings = check(MapFile, known, str(path), WorldError, "map file")
+        except WorldError as e:
+            raise WorldError(f"{e}{_misspelt(data)}") from None
+        return _read(settings, path.parent, str(path), "")
     if isinstance(value, dict):
         try:
             inline = MapFile.model_validate(value)
@@ -70,6 +80,20 @@ def load_map(value: Any, world_source: str) -> MapImage:
             raise WorldError(f"{file_label(world_source)}: map.{problem(MapFile, e)}") from None
         return _read(inline, base, world_source, "map")
     raise WorldError(f"{file_label(world_source)}: map: must be a map_server YAML file or a mapping (image, resolution, ...), got {short(value)}")
+
+
+IMAGE_SUFFIXES = (".pgm", ".png", ".jpg", ".jpeg", ".bmp", ".gif", ".tif", ".tiff")
+
+
+def _misspelt(data: dict[Any, Any]) -> str:
+    """The note for a key map_server would ignore that is close to one of its own, as in
+    " (is 'resolutoin' meant to be 'resolution'?)" (a typo would only show as a missing key)."""
+    for key in data:
+        if isinstance(key, str) and key not in MapFile.model_fields:
+            close = get_close_matches(key, list(MapFile.model_fields), n=1, cutoff=0.75)
+            if close:
+                return f" (is {key!r} meant to be {close[0]!r}?)"
+    return ""
 
 
 def _read(m: MapFile, base: Path, source: str, key: str) -> MapImage:

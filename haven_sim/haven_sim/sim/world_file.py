@@ -362,17 +362,23 @@ class _Parser:
 
     def check_free(self, world: World) -> None:
         """The default robot's and each person's whole body (a disc of its radius) clear of solid
-        geometry at start (another robot is checked when a trial chooses it: `robot_fits`)."""
+        geometry where they start and where they must stand: rooms' centres (visited), gems (by
+        their owner) and the charging base (another robot is checked when a trial chooses it:
+        `robot_fits`). A place in a wall would otherwise only show as a trial that times out."""
         shapes = world.solid_shapes()
-        checks = [("robot.start", world.robot_start, "the robot", DEFAULT.radius_m)]
-        checks += [(f"humans[{i}].start", h.start, "the person", HUMAN_BODY.radius_m) for i, h in enumerate(world.humans)]
-        for key, pose, who, radius in checks:
-            hit = overlapping_shape(shapes, pose.x, pose.y, radius)
+        robot, person = ("the robot", DEFAULT.radius_m), ("the person", HUMAN_BODY.radius_m)
+        checks = [("robot.start", world.robot_start.x, world.robot_start.y, *robot)]
+        checks += [(f"humans[{i}].start", h.start.x, h.start.y, *person) for i, h in enumerate(world.humans)]
+        checks += [(f"rooms[{i}].centre", *r.centre, *robot) for i, r in enumerate(world.rooms)]
+        checks += [(f"gems[{i}].position", *g.position, *(robot if g.owner == "robot" else person)) for i, g in enumerate(world.gems)]
+        checks += [("charging_base.position", *world.charging_base.position, *robot)] if world.charging_base else []
+        for key, x, y, who, radius in checks:
+            hit = overlapping_shape(shapes, x, y, radius)
             if hit is None:
                 continue
             shape, centre_inside = hit
-            what = f"{shape.kind} {shape.id}".strip()
-            article = "an" if what[0] in "aeiou" else "a"
+            what = "a wall of the map" if shape.id == MAP_WALL_ID else f"{shape.kind} {shape.id}".strip()
+            what = what if what.startswith("a wall of") else ("an " if what[0] in "aeiou" else "a ") + what
             if centre_inside:
-                raise self.fail(key, f"({pose.x:g}, {pose.y:g}) lies inside {article} {what}")
-            raise self.fail(key, f"({pose.x:g}, {pose.y:g}) puts {who}'s body (radius {radius:g} m) into {article} {what}")
+                raise self.fail(key, f"({x:g}, {y:g}) lies inside {what}")
+            raise self.fail(key, f"({x:g}, {y:g}) puts {who}'s body (radius {radius:g} m) into {what}")

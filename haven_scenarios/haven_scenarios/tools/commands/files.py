@@ -84,8 +84,8 @@ def validate_cmd(args: argparse.Namespace) -> int:
 
 def describe(path: Path) -> str:
     """What a valid file is, "world NAME", "scenario NAME", "study NAME", "robot NAME" or "parameter
-    file for NODES": a scenario has `kind` or `world`, a world `walls`, a study `scenarios` and
-    `conditions`, a robot `kinematics` or `extends`, a parameter file `ros__parameters` under each node."""
+    file for NODES": a scenario has `kind` or `world`, a world `walls` or `map`, a study `scenarios`
+    and `conditions`, a robot `kinematics` or `extends`, a parameter file `ros__parameters` under each node."""
     data = read_yaml(path, "file")
     if isinstance(data, dict) and ("scenarios" in data or "conditions" in data):
         study = parse_study(data, str(path))
@@ -100,7 +100,7 @@ def describe(path: Path) -> str:
         except ValueError as e:
             raise ScenarioError(str(e)) from None
         return f"scenario {name}"
-    if isinstance(data, dict) and "walls" in data:
+    if isinstance(data, dict) and ("walls" in data or "map" in data):
         return f"world {parse_world(data, str(path)).name}"
     if isinstance(data, dict) and ("kinematics" in data or "extends" in data):
         return f"robot {resolve_robot(str(path)).name}"
@@ -109,7 +109,7 @@ def describe(path: Path) -> str:
         checked_suite_config(params, file_label(path))
         return f"parameter file for {', '.join(params)}"
     kinds = (
-        "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key), a study (no 'scenarios' key), "
+        "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' or 'map' key), a study (no 'scenarios' key), "
         "a robot (no 'kinematics' or 'extends' key) nor a parameter file (no 'ros__parameters')"
     )
     raise YamlFileError(f"{file_label(path)}: {kinds}")

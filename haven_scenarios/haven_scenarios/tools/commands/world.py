@@ -14,7 +14,7 @@ from haven_sim.common.yaml_file import YamlFileError, file_label
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_file import load_world
 
-HALLWAY_COLOUR = "tab:purple"
+HALLWAY_COLOURS = ("tab:purple", "tab:green", "tab:orange", "tab:pink", "tab:olive", "tab:cyan", "tab:brown", "tab:gray")  # one each
 ROBOT_COLOUR, PERSON_COLOUR = "tab:blue", "tab:red"
 
 
@@ -28,8 +28,8 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
 
 
 def show_cmd(args: argparse.Namespace) -> int:
-    path = resolve_world(args.world)
     try:
+        path = resolve_world(args.world)
         world = load_world(path)
     except (YamlFileError, WorldError) as e:
         return fail(str(e))
@@ -58,7 +58,9 @@ def draw(world: World, out: Path) -> Path:
     from haven_viz.render import render_scene
     from haven_viz.world_markers import world_markers
 
-    lines = {f"hallway {h.name}": (np.array(h.centreline, dtype=float), HALLWAY_COLOUR) for h in world.hallways}
+    lines = {
+        f"hallway {h.name}": (np.array(h.centreline, dtype=float), HALLWAY_COLOURS[i % len(HALLWAY_COLOURS)]) for i, h in enumerate(world.hallways)
+    }
     starts = [(world.robot_start.x, world.robot_start.y, "robot start", ROBOT_COLOUR)]
     starts += [(h.start.x, h.start.y, f"{h.id} start", PERSON_COLOUR) for h in world.humans]
     return render_scene(
