@@ -142,7 +142,18 @@ def test_a_map_images_dark_cells_become_wall_polygons(server: EditorServer) -> N
     assert (min(xs), max(xs), min(ys), max(ys)) == pytest.approx((1.0, 1.1, 2.0, 4.0))
     code, answer = post(server, "walls?resolution=0", data.getvalue(), kind="image/png")
     assert code == 400 and "resolution" in answer["error"]
-    assert post(server, "walls", b"GIF89a", kind="image/gif")[1]["error"] == "the image must be a PNG or a JPEG, got image/gif"
+    assert post(server, "walls", b"GIF89a", kind="image/gif")[1]["error"] == "the image must be a PNG, a JPEG or a PGM (a ROS map's image)"
+    # map_saver's own PGM (told by its first bytes, whatever type the browser gives it): the same walls,
+    # and as a PNG the page can draw under the plan
+    pgm = io.BytesIO()
+    Image.fromarray(pixels).save(pgm, format="PPM")  # (Pillow writes a grey image as a binary PGM, "P5")
+    assert pgm.getvalue().startswith(b"P5")
+    code, answer = post(server, "walls?resolution=0.05&x=1&y=2", pgm.getvalue(), kind="application/octet-stream")
+    assert code == 200 and len(answer["walls"]) == 1
+    request = urllib.request.Request(server.url.replace("/edit?", "/edit/image?"), data=pgm.getvalue(), method="POST")
+    with urllib.request.urlopen(request, timeout=30) as r:
+        assert r.headers["Content-Type"] == "image/png"
+        assert np.array_equal(np.asarray(Image.open(io.BytesIO(r.read()))), pixels)
 
 
 def test_the_template_makes_scenarios_that_load(tmp_path: Path) -> None:

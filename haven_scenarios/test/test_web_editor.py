@@ -131,9 +131,9 @@ def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_u
         editor = Editor(page)
         pixels = np.full((80, 120), 255, dtype=np.uint8)  # 6 x 4 m at 0.05 m per pixel
         pixels[:2, :] = pixels[-2:, :] = pixels[:, :2] = pixels[:, -2:] = 0  # a dark border: the room's walls
-        png = io.BytesIO()
-        Image.fromarray(pixels).save(png, format="PNG")
-        page.set_input_files("#image", files=[{"name": "plan.png", "mimeType": "image/png", "buffer": png.getvalue()}])
+        pgm = io.BytesIO()  # a ROS map's own image, a PGM, which the browser cannot draw itself (the editor converts it)
+        Image.fromarray(pixels).save(pgm, format="PPM")
+        page.set_input_files("#image", files=[{"name": "map.pgm", "mimeType": "image/x-portable-graymap", "buffer": pgm.getvalue()}])
         page.click("#as-background")
         page.wait_for_function("havenEditor.background !== null", timeout=PAGE_TIMEOUT_MS)
         assert page.evaluate("havenEditor.background") == {"width": 120, "height": 80, "resolution": 0.05, "x": 0, "y": 0}

@@ -7,8 +7,10 @@ JSON), `/static/editor.js` its bundle. The page POSTs, each with the token (in t
 then the cookie the page sets) and size-capped:
 - `/edit/check`: a world as its YAML tree in JSON; the answer is the loader's own verdict
   (`parse_world`): `{"ok": true, "summary": ...}` or `{"ok": false, "error": line, "key": key}`;
-- `/edit/walls?resolution=R&x=X&y=Y&negate=0|1`: a PNG or JPEG; its dark cells as wall boxes
-  (`map_image.read_image` and `wall_boxes`, as a world's `map:` is read), `{"walls": [polygon, ...]}`;
+- `/edit/walls?resolution=R&x=X&y=Y&negate=0|1`: a PNG, JPEG or PGM (map_saver's own format; told
+  apart by their first bytes); its dark cells as wall boxes (`map_image.read_image` and
+  `wall_boxes`, as a world's `map:` is read), `{"walls": [polygon, ...]}`;
+- `/edit/image`: such an image as a PNG, for a background the browser cannot decode itself (a PGM);
 - `/edit/save`: `{"world": tree, "task": visit_rooms|collect_gems|none, "overwrite": bool}`; writes
   OUT/<name>.yaml and OUT/<name>_scenario.yaml (study/scenario_template.py), each written whole
   (common/atomic.py) and only after both load in a scratch folder; an existing file is replaced
@@ -17,6 +19,7 @@ then the cookie the page sets) and size-capped:
 
 from __future__ import annotations
 
+import io
 import json
 import re
 import ssl
@@ -45,7 +48,7 @@ PAGE = ROLE = "edit"
 SERVED = ("editor.js", "haven.css")
 MAX_WORLD_BYTES = MAX_FILE_BYTES  # a world the page sends is held to what a world file may be (1 MiB)
 MAX_IMAGE_BYTES = 16 << 20  # a map image upload (a 4000 x 4000 grey PNG, map_image.MAX_CELLS, is well under)
-IMAGE_SUFFIXES = {"image/png": ".png", "image/jpeg": ".jpg"}
+IMAGE_MAGIC = {b"\x89PNG": ".png", b"\xff\xd8": ".jpg", b"P5": ".pgm", b"P2": ".pgm"}  # (the formats' signatures)
 NO_TASK = "none"
 _FILE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$")
 
@@ -100,14 +103,16 @@ class EditorServer:
         split = urlsplit(h.path)
         parts = [p for p in split.path.split("/") if p]
         actions = {"check": self.check, "save": self.save}
-        if len(parts) != 2 or parts[0] != PAGE or parts[1] not in (*actions, "walls"):
+        if len(parts) != 2 or parts[0] != PAGE or parts[1] not in (*actions, "walls", "image"):
             return reply(h, 404, b"no such page")
         if not self._allowed(h):
             return reply_json(h, 403, {"error": "not the editor's page: open the address `haven edit` printed"})
         try:
             if parts[1] == "walls":
                 body = read_body(h, MAX_IMAGE_BYTES, "the image")
-                return reply_json(h, 200, image_walls(body, h.headers.get("Content-Type", ""), parse_qs(split.query)))
+                return reply_json(h, 200, image_walls(body, parse_qs(split.query)))
+            if parts[1] == "image":
+                return reply(h, 200, as_png(read_body(h, MAX_IMAGE_BYTES, "the image")), "image/png")
             sent = read_body(h, MAX_WORLD_BYTES, "the world")
             try:
                 message = json.loads(sent)
@@ -191,11 +196,31 @@ def _scenario_problem(world_name: str, world_text: str, scenario_name: str, scen
     return ""
 
 
-def image_walls(image: bytes, content_type: str, query: Mapping[str, list[str]]) -> dict[str, Any]:
+def image_suffix(image: bytes) -> str:
+    """The file suffix of a PNG, JPEG or PGM by its first bytes; ValueError for anything else."""
+    for magic, suffix in IMAGE_MAGIC.items():
+        if image.startswith(magic):
+            return suffix
+    raise ValueError("the image must be a PNG, a JPEG or a PGM (a ROS map's image)")
+
+
+def as_png(image: bytes) -> bytes:
+    """The image (PNG, JPEG or PGM) as a PNG the page can draw."""
+    from PIL import Image, UnidentifiedImageError
+
+    image_suffix(image)
+    try:
+        with Image.open(io.BytesIO(image)) as picture:
+            out = io.BytesIO()
+            picture.save(out, "PNG")
+    except (UnidentifiedImageError, OSError, ValueError) as e:
+        raise ValueError(f"the image cannot be read: {e}") from None
+    return out.getvalue()
+
+
+def image_walls(image: bytes, query: Mapping[str, list[str]]) -> dict[str, Any]:
     """A map image's occupied and unknown cells as wall polygons, read as a world's `map:` is."""
-    suffix = IMAGE_SUFFIXES.get(content_type.split(";")[0].strip())
-    if suffix is None:
-        raise ValueError(f"the image must be a PNG or a JPEG, got {content_type or 'no type'}")
+    suffix = image_suffix(image)
 
     def number(key: str, default: str) -> float:
         text = query.get(key, [default])[0]

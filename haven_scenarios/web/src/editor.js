@@ -203,13 +203,19 @@ $("save").addEventListener("click", save);
 
 function imageFile() {
   const file = $("image").files[0];
-  if (!file) say("Choose a map image first (PNG or JPEG)", false);
+  if (!file) say("Choose a map image first (PNG, JPEG or a ROS map's PGM)", false);
   return file;
 }
 $("as-background").addEventListener("click", async () => {
   const file = imageFile();
   if (!file) return;
-  state.background = { bitmap: await createImageBitmap(file), resolution: num("resolution"), x: num("ox"), y: num("oy") };
+  // The browser draws a PNG or JPEG itself; a PGM (a ROS map's image) comes back from the editor as a PNG.
+  const bitmap = await createImageBitmap(file).catch(async () => {
+    const r = await fetch("/edit/image", { method: "POST", headers: { "Content-Type": "application/octet-stream" }, body: file });
+    return r.ok ? createImageBitmap(await r.blob()) : null;
+  });
+  if (!bitmap) return say("The image cannot be read: a PNG, JPEG or a ROS map's PGM", false);
+  state.background = { bitmap, resolution: num("resolution"), x: num("ox"), y: num("oy") };
   draw();
 });
 $("as-walls").addEventListener("click", async () => {
