@@ -15,6 +15,7 @@ from haven_scenarios.run.sweep import LOCAL, cores
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands.common import SEED, add_robot_option, bounded_int, existing_file, fail
+from haven_viz.cues import CUES
 
 MAX_WORKERS = 1024
 GRID_HELP = (
@@ -23,7 +24,10 @@ GRID_HELP = (
     f"speed_mps=0.8,1.2 or a participant parameter{' (' + ', '.join(param_keys()) + ')' if param_keys() else ''}"
 )
 CLUSTER_HELP = "run on Dask: local (a LocalCluster of --workers processes) or a running scheduler's address (tcp://host:8786)"
-CONDITION_HELP = "cues shown: all, none, or any of path_projection turn_signals thought_bubble battery_indicator (default: the scenario's condition)"
+CONDITION_HELP = (
+    f"cues shown: all (each cue the robot has that is on by default), none, or any of the installed cues: {' '.join(CUES)} "
+    "(default: the scenario's condition)"
+)
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
