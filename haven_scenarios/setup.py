@@ -30,6 +30,7 @@ setup(
         "pydantic>=2",
         "scipy",
         "statsmodels",
+        "pillow",  # haven edit: a map image as a PNG for the page
         "cryptography",  # `haven cert`: the lab's certificate authority for HTTPS (web/tls.py)
     ],
     # `haven batch --cluster`: sweeps on a Dask cluster (a LocalCluster or a lab's scheduler)

@@ -56,4 +56,4 @@ def test_colcon_build_of_ros2_ws_installs_runnable_nodes(tmp_path):
         cwd=tmp_path,
     )
     assert run.returncode == 2
-    assert run.stderr.strip() == f"error: {bad}: walls: is required"
+    assert run.stderr.strip() == f"error: {bad}: robot: is required"  # (walls are not: a world may come from a map)

@@ -18,7 +18,7 @@ from haven_scenarios.record.timeline import Recording
 from haven_scenarios.record.validity import check
 from haven_scenarios.run.trial import Trial
 from haven_scenarios.study.scenario import load_scenario
-from haven_scenarios.web.access import ANSWERS, CONSOLE_ROLE, READY, SKIP_QUESTIONNAIRES, participant_role
+from haven_scenarios.web.access import CONSOLE_ROLE, NOT_ROS, participant_role
 from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.state import RobotState
@@ -36,7 +36,7 @@ def test_every_topic_a_component_writes_names_it_as_a_writer_and_nothing_else_do
         for topic in c.outputs():
             if watched(absolute(topic)):
                 written.setdefault(absolute(topic), set()).add(c.name)
-    pages = {t for t in [*CONSOLE_ROLE.publish, *participant_role("h1").publish] if t not in (READY, ANSWERS, SKIP_QUESTIONNAIRES)}
+    pages = {t for t in [*CONSOLE_ROLE.publish, *participant_role("h1").publish] if t not in NOT_ROS}
     for topic in pages:
         written.setdefault(topic, set()).add(WEB)
     written.setdefault("/haven/events", set()).add(WEB)  # (the web node logs the console's interventions)

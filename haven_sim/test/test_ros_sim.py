@@ -302,7 +302,7 @@ def test_invalid_world_fails_fast_with_one_line(ros, tmp_path):
     proc = ros.start(SIM, {"world": str(bad)}, capture=True)
     assert proc.wait(timeout=30) == 2
     err = proc.stderr.read().strip()
-    assert err == f"error: {bad}: walls: needs at least one wall"
+    assert err == f"error: {bad}: walls: needs at least one wall (or a map: to make them from)"
 
 
 def test_declared_bounds_are_the_parameters_ros_ranges_and_out_of_range_is_one_line(ros):

@@ -32,16 +32,31 @@ from rclpy.serialization import deserialize_message
 from std_msgs.msg import String
 
 from haven_scenarios.nodes.cue_parameters import CueParameters
+from haven_scenarios.nodes.presence_desk import PresenceDesk
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.nodes.role_sink import RoleSink, TablePublishers
 from haven_scenarios.record.answers import AnswerBook, from_parameter
 from haven_scenarios.study.rules import TrialCommand
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.foxglove_relay import DoorCheck, FoxgloveRelay
-from haven_scenarios.web.access import ANSWERS, CONSOLE, READY, SKIP_QUESTIONNAIRES, TOKEN_ENV, Role, absolute, door_key, new_token, roles, urls
+from haven_scenarios.web.access import (
+    ANSWERS,
+    CONSOLE,
+    PAGE_REPORT,
+    READY,
+    SKIP_QUESTIONNAIRES,
+    TOKEN_ENV,
+    Role,
+    absolute,
+    door_key,
+    new_token,
+    roles,
+    urls,
+)
 from haven_scenarios.web.door_hello import BackendGuard
 from haven_scenarios.web.front_door import FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config
+from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, Attendance, OnDisconnect
 from haven_scenarios.web.tls import server_context
 from haven_scenarios.web.wizard import StartGate, Wizard
 from haven_sim.common import nodes, topics
@@ -50,6 +65,7 @@ from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
 from haven_sim.nodes.runner import refuse_changes, refused, run_node
 
+STATUS_TOPIC = absolute(topics.TRIAL_STATUS)
 EVENTS_KEPT = 2000  # a trial logs a few hundred
 RELAYED = tuple(
     absolute(t)
@@ -77,6 +93,8 @@ class WebNode(Node):
         researcher_start = bool(self.declare_parameter("researcher_start", False).value)
         tls_cert = str(self.declare_parameter("tls_cert", "").value)  # with tls_key: HTTPS (web/tls.py)
         tls_key = str(self.declare_parameter("tls_key", "").value)
+        on_disconnect = OnDisconnect(str(self.declare_parameter("on_disconnect", OnDisconnect.KEEP.value).value))
+        reconnect_timeout_s = float(self.declare_parameter("reconnect_timeout_s", DEFAULT_RECONNECT_TIMEOUT_S).value)
         questionnaires = from_parameter(str(self.declare_parameter("questionnaires", "[]").value))
         settings = PageSettings(
             participant=str(self.declare_parameter("participant", "sim").value),
@@ -96,6 +114,8 @@ class WebNode(Node):
         self.cues = CueParameters(self)
         self.relay = FoxgloveRelay()
         self.relay.keep(absolute(topics.EVENTS), EVENTS_KEPT)  # a console opened mid-trial shows the whole log
+        attendance = Attendance(humans, on_disconnect, reconnect_timeout_s)
+        self.presence = PresenceDesk(self, attendance, self.relay, self._log, self._control, self.now, self._lock)
         self.servers = {}
         guard = BackendGuard()  # only the front door reaches the role servers (web/door_hello.py)
         for name, role in self.roles.items():
@@ -107,7 +127,17 @@ class WebNode(Node):
         refuse_changes(self, self._refused)
         configs = {name: page_config(role, scenario, settings) for name, role in self.roles.items()}
         tls = server_context(tls_cert, tls_key) if tls_cert else None
-        self.door = FrontDoor(host, port, self.secret, ports, configs.__getitem__, robot_model=scenario.robot.look.model, tls=tls, guard=guard)
+        self.door = FrontDoor(
+            host,
+            port,
+            self.secret,
+            ports,
+            configs.__getitem__,
+            robot_model=scenario.robot.look.model,
+            tls=tls,
+            guard=guard,
+            on_socket=self.presence.socket,
+        )
         self.door.start()
         for name, url in urls(self.door.base_url(host), self.secret, humans).items():
             print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)
@@ -115,7 +145,12 @@ class WebNode(Node):
         print(f"web: the trial starts {when}", flush=True)
 
     def _relay(self, topic: str, msgtype: str, data: bytes) -> None:
+        if topic == STATUS_TOPIC:
+            self.presence.trial_status(data)
         self.relay.publish(topic, data, time.time_ns())
+
+    def _control(self, command: str) -> None:
+        self._publisher(absolute(topics.TRIAL_CONTROL)).publish(String(data=command))
 
     def now(self) -> float:
         return self.get_clock().now().nanoseconds * 1e-9
@@ -135,7 +170,12 @@ class WebNode(Node):
                 events, start = self.gate.ready(role.name, self.now())
                 self._log(events)
                 if start:
-                    self._publisher(absolute(topics.TRIAL_CONTROL)).publish(String(data=TrialCommand.START))
+                    self._control(TrialCommand.START)
+                return
+            if topic == PAGE_REPORT:  # not a ROS topic: the console's table of who is connected
+                refused_because = self.presence.report(role.name, _text(data))
+                if refused_because:
+                    refused(self, topic, refused_because)
                 return
             if topic in (ANSWERS, SKIP_QUESTIONNAIRES):
                 self._after_trial(role, topic, data)
@@ -147,6 +187,8 @@ class WebNode(Node):
                 except Exception:  # noqa: BLE001 - bad bytes from a page: drop them, say so
                     self.get_logger().warning(f"console: undecodable message on {topic}", throttle_duration_sec=5.0)
                     return
+                if topic == absolute(topics.TRIAL_CONTROL) and str(msg.data) in (TrialCommand.STOP, TrialCommand.ABORT):
+                    self.presence.ending()
                 if topic == absolute(topics.CMD_VEL_TELEOP):
                     self._log(self.wizard.drive(conv.twist_from_msg(msg), self.now()))
                 elif topic == absolute(topics.THOUGHT):
@@ -176,9 +218,19 @@ class WebNode(Node):
             refused(self, topic, f"cannot write {e.filename}: {e.strerror or e}")
 
     def destroy_node(self) -> None:
+        with self._lock:
+            self.presence.closing = True
         self.door.stop()
         self.relay.stop()
         super().destroy_node()
+
+
+def _text(data: bytes) -> str:
+    """A page's std_msgs/String as text ('' if it is not one)."""
+    try:
+        return str(deserialize_message(data, String).data)
+    except Exception:  # noqa: BLE001 - bad bytes from a page
+        return ""
 
 
 def main(args: list[str] | None = None) -> None:

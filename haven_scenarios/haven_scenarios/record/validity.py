@@ -7,7 +7,9 @@ source (`seq`), so a missing one shows too, and the planner's and the scenario's
 and a loss on a topic the metrics read counts; a trial must have ended with `trial_end`; and no
 publisher from outside the suite may have been there before it ended (`record/outsiders.py`), nor
 the planner have planned before it began (for an outside goal); and no cue may have failed (its code
-raised: the condition was not shown as designed).
+raised: the condition was not shown as designed); and no participant may have been away (their
+page disconnected) for longer than MAX_AWAY_S while it ran on without them (`web/presence.py`: with
+`on_disconnect: pause` it stood still instead, and a participant not back in time aborts it).
 """
 
 from __future__ import annotations
@@ -20,6 +22,7 @@ import numpy as np
 
 from haven_scenarios.record.outsiders import METRIC_TOPICS, Declared, judge
 from haven_scenarios.record.timeline import Recording
+from haven_scenarios.web.presence import MAX_AWAY_S
 from haven_sim.common import topics
 from haven_sim.common.events import PLAN_POSES, EventKind, Source
 
@@ -98,6 +101,25 @@ def _planned_before_start(rec: Recording, window: tuple[float, float], declared:
     return ([], [line]) if declared is not None and f"/{topics.GOAL}" in declared.open else ([line], [])
 
 
+def _away(rec: Recording, window: tuple[float, float]) -> list[str]:
+    """Participants whose page was disconnected for longer than MAX_AWAY_S while the trial ran on
+    without them (policy keep): as the web node measured it, or, for one never back, to the trial's end."""
+    out, left = [], {}
+    for e in rec.events:
+        if e.kind is EventKind.PARTICIPANT_DISCONNECTED and window[0] - 1e-6 <= e.stamp <= window[1] + 1e-6 and e.get("policy") == "keep":
+            left[e["by"]] = e.stamp
+        elif e.kind in (EventKind.PARTICIPANT_RECONNECTED, EventKind.PARTICIPANT_LOST) and e["by"] in left:
+            at = left.pop(e["by"])
+            if e["away_s"] > MAX_AWAY_S:
+                out.append(f"participant {e['by']}: away {e['away_s']:g} s from {at - window[0]:.1f} s into the trial (its page disconnected)")
+    out += [
+        f"participant {who}: away from {at - window[0]:.1f} s into the trial to its end (its page disconnected)"
+        for who, at in left.items()
+        if window[1] - at > MAX_AWAY_S
+    ]
+    return out
+
+
 def check(rec: Recording, window: tuple[float, float] | None, declared: Declared | None = None) -> dict[str, Any]:
     """`declared`: what the run said of itself (session.json), to judge the publishers the recorder
     saw (record/outsiders.py); None: nothing to judge (batch mode, sessions from before)."""
@@ -116,7 +138,7 @@ def check(rec: Recording, window: tuple[float, float] | None, declared: Declared
     if rec.first(EventKind.TRIAL_END) is None:
         reasons.append("no trial_end recorded")
     if window is not None:
-        reasons += _sent_but_not_recorded(rec, window)
+        reasons += _sent_but_not_recorded(rec, window) + _away(rec, window)
         early, early_noted = _planned_before_start(rec, window, declared)
         reasons, noted = reasons + early, noted + early_noted
     reasons += _missing_events(rec, window)

@@ -53,6 +53,7 @@ from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_te
 from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
 from haven_scenarios.tools.domains import DomainBusy
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_environment
+from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.web.tls import tls_files
 from haven_sim.common import nodes
 from haven_sim.common.events import EventKind
@@ -129,6 +130,8 @@ class WebRequest:
     map_inset: bool = True
     tls_cert: str = ""  # with tls_key: HTTPS, a certificate and its key in PEM (`haven cert` makes them)
     tls_key: str = ""
+    on_disconnect: str = OnDisconnect.KEEP.value  # a participant's drop-out during the trial: keep | pause | abort
+    reconnect_timeout_s: float = DEFAULT_RECONNECT_TIMEOUT_S  # with pause: abort after this long away
 
 
 @dataclass(frozen=True)
@@ -194,6 +197,7 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
                 r.web.map_inset,
                 questionnaires=questionnaires,
                 tls=tls_files(r.web.tls_cert, r.web.tls_key),
+                dropout=(OnDisconnect(r.web.on_disconnect).value, float(r.web.reconnect_timeout_s)),
             )
             busy = port_free(r.web.host, r.web.port)
             if busy:

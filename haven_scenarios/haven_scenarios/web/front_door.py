@@ -179,17 +179,20 @@ class FrontDoor:
         robot_model: str = "",
         tls: ssl.SSLContext | None = None,
         guard: BackendGuard | None = None,
+        on_socket: Callable[[str, bool], None] | None = None,
     ) -> None:
         """`secret`: the session's (each role's token derives from it); `backends`: role -> its
         Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings; `robot_model`:
         the trial robot's glTF file (its look.model), served at ROBOT_MODEL_PATH; `tls`: serve HTTPS
-        (web/tls.py); `guard`: the one the role servers call on a stranger (web/door_hello.py)."""
+        (web/tls.py); `guard`: the one the role servers call on a stranger (web/door_hello.py);
+        `on_socket(role, open)`: a page's WebSocket opened or closed (web/presence.py)."""
         self.robot_model = Path(robot_model) if robot_model else None
         self.tokens = {role: role_token(secret, role) for role in backends}
         self.door_keys = {role: door_key(secret, role) for role in backends}
         self.guard = guard or BackendGuard()
         self.guard.watch(backends.values())
         self._stopped = threading.Event()
+        self.on_socket = on_socket or (lambda role, opened: None)
         self.backends, self.config = dict(backends), config
         door = self
 
@@ -289,7 +292,11 @@ class FrontDoor:
             upstream.sendall(hello_frames(self.door_keys[role]))
             upstream.settimeout(None)
             h.connection.settimeout(None)  # (the request timeout was for the headers: a socket may stay quiet)
-            _pump(h.connection, upstream)
+            self.on_socket(role, True)
+            try:
+                _pump(h.connection, upstream)
+            finally:
+                self.on_socket(role, False)
         except OSError:
             return
         finally:

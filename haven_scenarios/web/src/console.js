@@ -24,6 +24,11 @@ const link = new Link(
       state.trial = JSON.parse(m.data);
       showStatus();
     },
+    "/haven/participants": (m) => {
+      state.participants = JSON.parse(m.data);
+      showParticipants();
+      showStatus();
+    },
     "/haven/cue_state": (m) => {
       state.cue = JSON.parse(m.data);
       state.toggles = state.cue.toggles;
@@ -75,7 +80,12 @@ function track(id, p) {
 document.getElementById("who").textContent = `participant ${cfg.participant} · scenario ${cfg.scenario}${cfg.session ? " · " + cfg.session : ""}`;
 function showStatus() {
   const t = state.trial;
-  document.getElementById("status-line").textContent = !t ? "connecting…" : `trial ${t.state}${t.end_reason ? ": " + t.end_reason : ""}`;
+  const away = awayWhilePaused();
+  document.getElementById("status-line").textContent = !t
+    ? "connecting…"
+    : away && t.state === "running"
+      ? `trial paused: waiting for ${away.join(", ")}`
+      : `trial ${t.state}${t.end_reason ? ": " + t.end_reason : ""}`;
   document.getElementById("tasks").textContent = !t
     ? ""
     : Object.entries(t.humans)
@@ -85,6 +95,35 @@ function showStatus() {
   const over = !t || t.state === "ended";
   for (const el of document.querySelectorAll("#stop, #abort, #toggles input, #drive-pad button, #thought-form *")) el.disabled = over;
   showQuestionnaires();
+}
+
+// -- who is connected: each participant's page, what it reports (web/presence.py) -------------------------
+function showParticipants() {
+  const p = state.participants;
+  const table = document.getElementById("participants");
+  table.replaceChildren();
+  const row = (cells, head = false) => {
+    const tr = table.insertRow();
+    for (const c of cells) {
+      const cell = document.createElement(head ? "th" : "td");
+      cell.textContent = c;
+      tr.appendChild(cell);
+    }
+    return tr;
+  };
+  row(["", "connection", "fps", "key→view", "last input"], true);
+  const num = (v, unit) => (v === null || v === undefined ? "–" : `${v}${unit}`);
+  for (const [id, r] of Object.entries(p.participants)) {
+    const connection = r.state === "away" ? `away ${r.away_s} s` : r.state;
+    const stale = r.report_age_s !== null && r.report_age_s > 5; // its page stopped reporting
+    const tr = row([id, connection, num(r.fps, ""), num(r.latency_ms, " ms"), num(r.input_age_s, " s ago")]);
+    tr.className = r.state === "away" ? "away" : stale ? "stale" : "";
+  }
+  if (p.paused) row([`paused: waiting for ${awayWhilePaused().join(", ")}`]).cells[0].colSpan = 5;
+}
+function awayWhilePaused() {
+  const p = state.participants;
+  return p && p.paused ? Object.keys(p.participants).filter((id) => p.participants[id].state === "away") : null;
 }
 
 // -- the questionnaires after the trial: each participant's progress, and Skip (haven run then stops) --

@@ -110,6 +110,11 @@ const link = new Link(
       state.trial = JSON.parse(m.data);
       showTrial();
     },
+    "/haven/participants": (m) => {
+      const p = JSON.parse(m.data);
+      state.paused = p.paused ? Object.keys(p.participants).filter((id) => p.participants[id].state === "away") : null;
+      showTrial();
+    },
     "/haven/events": (m) => {  // the web node confirms each questionnaire this participant answered; the researcher may skip them
       const e = JSON.parse(m.data);
       if (e.type === "questionnaire_answered" && e.by === me && !state.answered.includes(e.questionnaire)) {
@@ -125,7 +130,9 @@ const link = new Link(
 );
 
 // -- the participant's controls -------------------------------------------------------------------
+let inputAt = null; // the last key or stick input (for the researcher's check that the participant is there)
 const controls = new Controls(cfg.speed_mps, (cmd, pressedAt) => {
+  if (cmd.vx || cmd.vy || cmd.wz) inputAt = performance.now();
   if (pressedAt !== undefined && state.pose && !pending) pending = { t: pressedAt, ...state.pose };
   return link.publish(`/humans/${me}/cmd_vel`, twist(cmd.vx, cmd.vy, cmd.wz));
 });
@@ -155,7 +162,7 @@ function showTrial() {
   state.questionnaire = q ? q.name : null;
   if (q) form.show(q, cfg.questionnaires.indexOf(q) + 1, cfg.questionnaires.length);
   else form.hide();
-  taskEl.textContent = taskLine(t, me);
+  taskEl.textContent = state.paused ? `Paused: waiting for ${state.paused.join(", ")} to come back` : taskLine(t, me);
   const dwell = t && t.humans[me] && t.humans[me].dwell;
   document.getElementById("dwell").style.width = dwell ? `${Math.round(100 * dwell)}%` : "0";
   const prompt = promptFor(t, cfg, state.pressedStart, state.skipped);
@@ -180,6 +187,18 @@ setInterval(() => {  // the connection: a notice when it is lost, and no walking
   }
 }, 250);
 showTrial();
+
+// -- every 2 s, what the researcher checks this machine by: frame rate, key-to-view latency, last input
+let reportedFrames = 0;
+let reportedAt = performance.now();
+setInterval(() => {
+  const now = performance.now();
+  const fps = ((state.frames - reportedFrames) * 1000) / (now - reportedAt);
+  [reportedFrames, reportedAt] = [state.frames, now];
+  const latency = state.latencies.length ? state.latencies[state.latencies.length - 1] : null;
+  const report = { fps: Math.round(fps * 10) / 10, latency_ms: latency === null ? null : Math.round(latency), input_age_s: inputAt === null ? null : (now - inputAt) / 1000 };
+  state.reported = (state.reported || 0) + (link.publish("/haven/page_report", { data: JSON.stringify(report) }) ? 1 : 0);
+}, 2000);
 
 // -- the map inset (optional per study) ----------------------------------------------------------
 const inset = document.getElementById("inset");

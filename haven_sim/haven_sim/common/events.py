@@ -70,6 +70,11 @@ class EventKind(StrEnum):
     # researcher console (Wizard of Oz)
     INTERVENTION = "intervention"  # action: thought (text) | drive | drive_end | skip_questionnaires, by
     PARTICIPANT_READY = "participant_ready"  # by: a participant pressed Start on their page
+    PARTICIPANT_DISCONNECTED = "participant_disconnected"  # by, policy: their page's connection closed (a tab, the network)
+    PARTICIPANT_RECONNECTED = "participant_reconnected"  # by, away_s (wall time)
+    PARTICIPANT_LOST = "participant_lost"  # by, away_s: not back within the pause's timeout (the trial is aborted)
+    TRIAL_PAUSED = "trial_paused"  # simulated time stands still (a participant away, on_disconnect: pause)
+    TRIAL_RESUMED = "trial_resumed"  # paused_s (wall time)
     QUESTIONNAIRE_ANSWERED = "questionnaire_answered"  # by, questionnaire, scores, answers: after the trial, on their page
 
 

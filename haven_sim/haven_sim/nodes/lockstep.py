@@ -46,6 +46,7 @@ from haven_sim.nodes.wire import TopicSpec
 from haven_sim.runtime.component import NS_PER_S, Component, Message, due
 from haven_sim.runtime.lockstep import Ack, Hello, LockstepParams, ParticipantInfo, Schedule, Tick, inbox_order
 from haven_sim.runtime.suite_messages import Expected, OutsideInputs, absolute, digest
+from haven_sim.sim.pacer import WallClock
 
 T = TypeVar("T")
 TICKS, ACK, HELLO = "haven/lockstep/tick", "haven/lockstep/ack", "haven/lockstep/hello"
@@ -163,8 +164,10 @@ class LockstepCoordinator:
         outputs: Mapping[str, Publisher],
         params: LockstepParams,
         deferred: list[Message],
+        clock: WallClock,
     ) -> None:
-        """`deferred`: what the node made between steps (sent before the next)."""
+        """`deferred`: what the node made between steps (sent before the next); `clock`: the wall
+        clock the real-time factor is kept against (paused: no step)."""
         self.node, self.sim, self.specs, self.outputs, self.deferred = node, sim, specs, outputs, deferred
         self.sequencer = Sequencer()
         self.expected_names, self.observers, self.wait_for, self.rtf = set(participants), set(observers), list(wait_for), real_time_factor
@@ -179,6 +182,7 @@ class LockstepCoordinator:
         self.ready: dict[str, bool] = {}
         self.matched: dict[str, dict[str, int]] = {}  # participant -> its publishers' matched readers
         self.waiting: set[str] | None = None  # None until the first step
+        self.clock, self.held = clock, False  # held: a step due while paused, taken on resume
         self.step = -1
         self._stable, self._since = 0, time.monotonic()
         self.tick_pubs = {name: node.create_publisher(String, tick_topic(name), CONTROL) for name in participants}
@@ -218,7 +222,7 @@ class LockstepCoordinator:
             self.node.get_logger().info(f"lockstep: {len(self.expected_names)} participant(s) ready; stepping")
             self.owned = absolute(t for ts in self.writes.values() for t in ts)
             self.inbox.outside.owned = self.owned
-            self._wall0 = time.monotonic()
+            self._wall0 = self.clock.now()
             self.waiting = set()
             self._run()
 
@@ -257,6 +261,9 @@ class LockstepCoordinator:
                 self.step, self.waiting, self._since = k, set(acting) - self.observers, time.monotonic()
                 if self.waiting:
                     return
+            if self.clock.paused:
+                self.held = True
+                return
             self._advance()
 
     def _on_ack(self, msg: String) -> None:
@@ -270,6 +277,16 @@ class LockstepCoordinator:
         self.schedule.published(ack.node, [t for t, names in ack.sent.items() if names])
         self.waiting.discard(ack.node)
         if not self.waiting:
+            if self.clock.paused:
+                self.held = True
+                return
+            self._advance()
+            self._run()
+
+    def resumed(self) -> None:
+        """The clock runs again: take the step that was due when it stopped."""
+        if self.held and not self.clock.paused:
+            self.held = False
             self._advance()
             self._run()
 
@@ -284,7 +301,7 @@ class LockstepCoordinator:
         self.own = {}
         self._publish(self.report.events(self.inbox, now) + self.deferred)
         self.deferred.clear()
-        ahead = self.sim.sim.time / self.rtf - (time.monotonic() - self._wall0)
+        ahead = self.sim.sim.time / self.rtf - (self.clock.now() - self._wall0)
         if ahead > 0:
             time.sleep(ahead)
         self.sim.advance()

@@ -3,25 +3,28 @@
 Publishes /clock, /map (latched), /odom (every physics step, 50 Hz) with odom -> base_footprint on
 /tf, the fixed frames on /tf_static, /scan, /battery_state, /humans (and map -> human_<id> on /tf)
 and /haven/events; subscribes /cmd_vel, /humans/<id>/cmd_vel and /haven/remove_obstruction; serves
-/haven/reset. The behaviour is `haven_sim.sim.simulator.SimulatorComponent`; this node adds the
-wall-clock pacing (it is the clock, so it must not wait on /clock itself).
+/haven/reset and /haven/pause (std_srvs/SetBool: simulated time stands still, as Gazebo's
+pause_physics; the web node pauses a trial a participant has dropped out of). The behaviour is
+`haven_sim.sim.simulator.SimulatorComponent`; this node adds the wall-clock pacing (it is the
+clock, so it must not wait on /clock itself).
 """
 
 from __future__ import annotations
 
 import sys
-import time
 
 from rclpy.clock import Clock, ClockType
-from std_srvs.srv import Trigger
+from std_srvs.srv import SetBool, Trigger
 
 from haven_sim.common import nodes, topics
+from haven_sim.common.events import EventKind, Source, event
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.lockstep import LockstepCoordinator
 from haven_sim.nodes.runner import run_node
+from haven_sim.runtime.component import Message
 from haven_sim.runtime.lockstep import UNCAPPED_RTF
-from haven_sim.sim.pacer import Pacer
+from haven_sim.sim.pacer import Pacer, WallClock
 from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig
 from haven_sim.sim.world import resolve_world_path
 from haven_sim.sim.world_file import load_world
@@ -39,6 +42,9 @@ class SimNode(ComponentNode):
             self.get_logger().warning("tf2_msgs is not installed: no /tf or /tf_static (run scripts/build_interfaces.py)")
         self.wire(self.sim, specs, participant=False)
         self.create_service(Trigger, "haven/reset", self._on_reset)
+        self.clock = WallClock()
+        self.coordinator: LockstepCoordinator | None = None
+        self.create_service(SetBool, "haven/pause", self._on_pause)
         if self.lockstep_mode:
             self.coordinator = LockstepCoordinator(
                 self,
@@ -51,6 +57,7 @@ class SimNode(ComponentNode):
                 self._pubs,
                 self.lockstep_params,
                 self.deferred,
+                self.clock,
             )
             cap = "as fast as they go" if config.real_time_factor >= UNCAPPED_RTF else f"at most {config.real_time_factor:g}x real time"
             pace = f"lockstep with {', '.join(config.lockstep_participants) or 'no participants'}, {cap}"
@@ -69,9 +76,28 @@ class SimNode(ComponentNode):
         return self.sim.sim.time
 
     def _tick(self) -> None:
-        for _ in range(self.pacer.due_steps(time.monotonic())):
+        for _ in range(self.pacer.due_steps(self.clock.now())):
             self.sim.advance()
             self.publish(self.sim.sense())
+
+    def _on_pause(self, request: SetBool.Request, response: SetBool.Response) -> SetBool.Response:
+        """Pause (data true) or resume simulated time; a `trial_paused` / `trial_resumed` event."""
+        now = self.sim.sim.time
+        if request.data:
+            response.success = self.clock.pause()
+            response.message = f"paused at t={now:.2f} s" if response.success else "already paused"
+            if response.success:
+                self.emit([Message(topics.EVENTS, event(EventKind.TRIAL_PAUSED, now, Source.SIM), now)])
+        else:
+            stood = self.clock.resume()
+            response.success = stood is not None
+            response.message = f"resumed at t={now:.2f} s after {stood:.1f} s" if stood is not None else "not paused"
+            if stood is not None:
+                self.emit([Message(topics.EVENTS, event(EventKind.TRIAL_RESUMED, now, Source.SIM, paused_s=round(stood, 2)), now)])
+                if self.coordinator is not None:
+                    self.coordinator.resumed()
+        self.get_logger().info(f"/haven/pause: {response.message}")
+        return response
 
     def _on_reset(self, request: Trigger.Request, response: Trigger.Response) -> Trigger.Response:
         if not self.sim.config.reset_allowed:

@@ -1,11 +1,48 @@
 """Keeps sim time running at `real_time_factor` x wall time, in whole physics steps.
 
 The simulator node calls `due_steps(wall_now)` from a short wall-clock timer and runs that many
-steps. Tying steps to elapsed wall time (not to timer callbacks) keeps the average rate exact even
-when individual callbacks fire late; a cap stops a long stall from turning into a burst.
+steps (wall_now from a `WallClock`, so a pause stops it without a burst after). Tying steps to
+elapsed wall time (not to timer callbacks) keeps the average rate exact even when individual
+callbacks fire late; a cap stops a long stall from turning into a burst.
 """
 
 from __future__ import annotations
+
+import time
+from collections.abc import Callable
+
+
+class WallClock:
+    """Wall time with the pauses taken out: pacing against it neither steps while paused nor
+    catches up for the pause afterwards (the simulator's pause, `haven/pause`)."""
+
+    def __init__(self, source: Callable[[], float] = time.monotonic) -> None:
+        self.source = source
+        self._paused_at: float | None = None
+        self._paused_total = 0.0
+
+    @property
+    def paused(self) -> bool:
+        return self._paused_at is not None
+
+    def now(self) -> float:
+        return (self._paused_at if self._paused_at is not None else self.source()) - self._paused_total
+
+    def pause(self) -> bool:
+        """Stop the clock; False if it already was."""
+        if self._paused_at is not None:
+            return False
+        self._paused_at = self.source()
+        return True
+
+    def resume(self) -> float | None:
+        """Start it again: how long it stood (wall seconds), None if it was not paused."""
+        if self._paused_at is None:
+            return None
+        stood = self.source() - self._paused_at
+        self._paused_total += stood
+        self._paused_at = None
+        return stood
 
 
 class Pacer:

@@ -265,7 +265,9 @@ class _Parser:
         if grid is not None:
             walls = tuple(Shape(_ccw(list(box)), "wall", MAP_WALL_ID) for box in wall_boxes(grid)) + walls
         if not walls:
-            raise self.fail("walls", "needs at least one wall" + ("" if grid is None else " (the map has no occupied cell)"))
+            raise self.fail(
+                "walls", "needs at least one wall" + (" (or a map: to make them from)" if grid is None else " (the map has no occupied cell)")
+            )
         rooms = tuple(Room(r.name, (r.centre[0], r.centre[1])) for r in d.rooms or ())
         self.unique([r.name for r in rooms], "rooms", "name")
         base = d.charging_base

@@ -17,6 +17,26 @@ from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv,
 from haven_sim.common import nodes
 
 
+def add_dropout_options(group: argparse._ActionsContainer) -> None:
+    """What a participant's drop-out during a trial does (web/presence.py)."""
+    from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
+
+    group.add_argument(
+        "--on-disconnect",
+        choices=[p.value for p in OnDisconnect],
+        default=OnDisconnect.KEEP.value,
+        help="a participant's page disconnects during the trial: keep running (default), pause simulated time until they are back, "
+        "or abort the trial",
+    )
+    group.add_argument(
+        "--reconnect-timeout",
+        type=positive,
+        default=DEFAULT_RECONNECT_TIMEOUT_S,
+        metavar="S",
+        help=f"with --on-disconnect pause: abort after S seconds away (default {DEFAULT_RECONNECT_TIMEOUT_S:g})",
+    )
+
+
 def add_tls_options(group: argparse._ActionsContainer) -> None:
     """`--tls-cert FILE --tls-key FILE`: serve the pages over HTTPS (web/tls.py)."""
     group.add_argument("--tls-cert", default=None, metavar="FILE", help="serve HTTPS with this certificate (PEM; `haven cert` makes one)")

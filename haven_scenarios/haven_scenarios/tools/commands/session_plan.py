@@ -18,6 +18,7 @@ from haven_scenarios.tools.commands import after_trial
 from haven_scenarios.tools.commands.common import suite_specs
 from haven_scenarios.tools.supervisor import ProcessSpec, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
+from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_sim.common import nodes, topics
 from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
 from haven_viz.cues import CueToggles
@@ -110,6 +111,7 @@ class WebOptions:
     secret: str = field(default_factory=new_token)  # each page role's token derives from it
     questionnaires: tuple[str | dict[str, Any], ...] = ()  # asked after the trial: built-in names, Likert mappings
     tls: tuple[str, str] | None = None  # HTTPS: the certificate's and its key's absolute paths (checked: web/tls.py)
+    dropout: tuple[str, float] = (OnDisconnect.KEEP.value, DEFAULT_RECONNECT_TIMEOUT_S)  # on_disconnect, reconnect_timeout_s
 
 
 def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
@@ -125,5 +127,7 @@ def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
         "map_inset": web.map_inset,
         **({"questionnaires": after_trial.as_parameter(web.questionnaires)} if web.questionnaires else {}),
         **({"tls_cert": web.tls[0], "tls_key": web.tls[1]} if web.tls else {}),
+        "on_disconnect": web.dropout[0],
+        "reconnect_timeout_s": web.dropout[1],
     }
     return ProcessSpec(nodes.WEB.key, node_argv(nodes.WEB.module, params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))

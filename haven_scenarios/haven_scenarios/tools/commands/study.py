@@ -27,7 +27,7 @@ from haven_scenarios.study.schedule import (
     trials_per_participant,
 )
 from haven_scenarios.tools.commands import power as power_step
-from haven_scenarios.tools.commands.common import PORT, add_ros_options, add_tls_options, existing_file, fail
+from haven_scenarios.tools.commands.common import PORT, add_dropout_options, add_ros_options, add_tls_options, existing_file, fail
 
 SHOWN_SEQUENCES = 24  # `plan` lists the design's sequences up to this many
 
@@ -50,6 +50,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("--host", default="127.0.0.1", help="with --web: address the pages are served on")
     run.add_argument("--port", type=PORT, default=8088, help="with --web: port of the pages")
     add_tls_options(run)
+    add_dropout_options(run)
     run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN", help="these humans (default: all) are driven by the participant")
     run.add_argument("--no-pause", action="store_true", help="with a person: do not wait for Enter between trials")
     run.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every trial")

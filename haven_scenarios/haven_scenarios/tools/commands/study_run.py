@@ -34,6 +34,7 @@ from haven_scenarios.tools.commands.study import study_dir
 from haven_scenarios.tools.commands.study_instruments import ask_in_browser, order_key, run_instruments, say_declined, terminal_asker
 from haven_scenarios.tools.locks import FileLock, Locked
 from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
+from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_sim.common.params import ParamsError
 from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.runtime.process import on_stop_signals
@@ -56,6 +57,8 @@ class StudyRun:
     port: int = 8088
     tls_cert: str | None = None  # with tls_key: the pages over HTTPS
     tls_key: str | None = None
+    on_disconnect: str = OnDisconnect.KEEP.value  # a participant's drop-out during a trial: keep | pause | abort
+    reconnect_timeout: float = DEFAULT_RECONNECT_TIMEOUT_S  # with pause: abort after this long away
     teleop: tuple[str, ...] | None = None  # these humans (() for all) are driven by the participant
     no_pause: bool = True  # with a person: do not wait for Enter between trials
     params_file: str | None = None
@@ -88,7 +91,10 @@ def person_of(study: Study, trial: PlannedTrial) -> tuple[int, int]:
 def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str], study: Study | None = None) -> TrialRequest:
     """The recorded trial for one trial of the schedule (`study`: for session.json, and who the
     simulated participant is)."""
-    web = WebRequest(args.host, args.port, tls_cert=args.tls_cert or "", tls_key=args.tls_key or "") if args.web else None
+    web = None
+    if args.web:
+        tls = (args.tls_cert or "", args.tls_key or "")
+        web = WebRequest(args.host, args.port, False, True, *tls, args.on_disconnect, args.reconnect_timeout)
     teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
     return TrialRequest(
         trial.scenario_spec,

@@ -24,6 +24,7 @@ from haven_scenarios.tools.commands.batch_report import CONDITION_HELP
 from haven_scenarios.tools.commands.common import (
     PORT,
     SEED,
+    add_dropout_options,
     add_robot_option,
     add_ros_options,
     add_suite_options,
@@ -85,6 +86,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     web.add_argument("--host", default="127.0.0.1", help="address the pages are served on (0.0.0.0: the lab network; default: this machine)")
     web.add_argument("--port", type=PORT, default=8088, help="port of the pages (default 8088)")
     add_tls_options(web)
+    add_dropout_options(web)
     web.add_argument("--researcher-start", action="store_true", help="the trial starts on the console's Start, not when the participants are ready")
     web.add_argument("--no-map-inset", action="store_true", help="no map inset on the participants' pages")
     after_trial.add_option(web)
@@ -121,9 +123,10 @@ def _said(result: RecordedTrial) -> int:
 
 def request_of(args: argparse.Namespace) -> TrialRequest:
     """`haven run`'s options as a trial request."""
-    web = (
-        WebRequest(args.host, args.port, args.researcher_start, not args.no_map_inset, args.tls_cert or "", args.tls_key or "") if args.web else None
-    )
+    web = None
+    if args.web:
+        tls = (args.tls_cert or "", args.tls_key or "")
+        web = WebRequest(args.host, args.port, args.researcher_start, not args.no_map_inset, *tls, args.on_disconnect, args.reconnect_timeout)
     return TrialRequest(
         args.scenario,
         args.participant,
