@@ -20,10 +20,11 @@ from haven_scenarios.web.access import CONSOLE, READY, door_key, role_token, rol
 from haven_scenarios.web.door_hello import DOOR_TOPIC
 from haven_scenarios.web.front_door import STATIC, FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config, robot_view
-from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS, StartGate, Wizard
+from haven_scenarios.web.wizard import DEFAULT_HOLD_S, MAX_THOUGHT_CHARS, StartGate, Wizard
 from haven_sim.common.events import MAX_EVENT_BYTES, EventKind
 from haven_sim.common.geometry import Twist2D
 from haven_sim.robots.robot_kind import resolve_robot
+from haven_viz.wizard_thought import WizardThought
 
 pytestmark = pytest.mark.integration
 
@@ -41,7 +42,11 @@ def test_each_page_may_publish_only_what_its_role_allows():
     )
     console = r[CONSOLE]
     assert console.parameters and not r["h1"].parameters
-    allowed = {"/cmd_vel_teleop": "geometry_msgs/msg/Twist", "/haven/thought": "std_msgs/msg/String", "/haven/trial_control": "std_msgs/msg/String"}
+    allowed = {
+        "/cmd_vel_teleop": "geometry_msgs/msg/Twist",
+        "/haven/wizard_thought": "std_msgs/msg/String",
+        "/haven/trial_control": "std_msgs/msg/String",
+    }
     for topic, kind in allowed.items():
         assert console.may_publish(topic, kind) is None
     assert console.may_publish("/cmd_vel", "geometry_msgs/msg/Twist") is not None  # never around the mux
@@ -283,18 +288,35 @@ def test_a_client_advertising_thousands_of_channels_is_cut_off_after_a_few_and_s
     assert listener.accepted[(2, 0)] == ("/humans/h1/cmd_vel", "geometry_msgs/msg/Twist")
 
 
-def test_a_thought_longer_than_the_logs_limit_is_refused_with_the_limit():
+def said(text, hold_s=None, everywhere=None):
+    """The console's thought message."""
+    return json.dumps({"text": text, **({} if hold_s is None else {"hold_s": hold_s}), **({} if everywhere is None else {"everywhere": everywhere})})
+
+
+def test_a_thought_longer_than_the_logs_limit_or_held_wrong_is_refused_with_the_limit():
     w = Wizard()
     with pytest.raises(ValueError, match=f"at most {MAX_THOUGHT_CHARS}"):
-        w.thought("x" * (MAX_THOUGHT_CHARS + 1), 1.0)
-    (e,) = w.thought("\U0001f600" * MAX_THOUGHT_CHARS, 1.0)  # the longest allowed, in the widest escapes, fits an event
+        w.thought(said("x" * (MAX_THOUGHT_CHARS + 1)), 1.0)
+    _, (e,) = w.thought(said("\U0001f600" * MAX_THOUGHT_CHARS), 1.0)  # the longest allowed, in the widest escapes, fits an event
     assert len(e.to_json()) < MAX_EVENT_BYTES
+    for bad, words in [("plain text", "not JSON"), ("[]", "must be"), (said("hi", -1), "hold_s must be 0..3600"), (said("hi", True), "hold_s")]:
+        with pytest.raises(ValueError, match=words):
+            w.thought(bad, 1.0)
 
 
-def test_the_researchers_driving_and_thought_text_are_events():
+def test_the_researchers_driving_and_thought_text_are_events_and_the_text_is_held():
     w = Wizard()
-    (e,) = w.thought("I will wait here", 1.0)
-    assert (e.kind, e["action"], e["text"], e["by"]) == (EventKind.INTERVENTION, "thought", "I will wait here", "researcher")
+    held, (e,) = w.thought(said("I will wait here", 20, True), 1.0)
+    assert (e.kind, e["action"], e["text"], e["hold_s"], e["everywhere"], e["by"]) == (
+        EventKind.INTERVENTION,
+        "thought",
+        "I will wait here",
+        20.0,
+        True,
+        "researcher",
+    )
+    assert WizardThought.from_json(held.to_json()) == WizardThought("I will wait here", 21.0, True)
+    assert w.thought(said("hm"), 5.0)[0] == WizardThought("hm", 5.0 + DEFAULT_HOLD_S, False)
     assert [e["action"] for e in w.drive(Twist2D(0.2, 0.0, 0.0), 2.0)] == ["drive"]
     assert w.drive(Twist2D(0.3, 0.0, 0.1), 2.1) == []  # one event per stretch of driving
     assert [e["action"] for e in w.drive(Twist2D(0.0, 0.0, 0.0), 3.0)] == ["drive_end"]

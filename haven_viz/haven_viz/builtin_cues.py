@@ -228,7 +228,7 @@ class ThoughtBubble:
         robot = ctx.robot
         nearest = min((math.hypot(h[0] - robot.x, h[1] - robot.y) for h in ctx.humans), default=math.inf)
         self.near = nearest <= p.thought_radius_m + (p.thought_hysteresis_m if self.near else 0.0)
-        if not (self.near and ctx.thought):
+        if not ((self.near or ctx.thought_everywhere) and ctx.thought):
             return None
         if not markers:
             return Shown(ctx.thought)

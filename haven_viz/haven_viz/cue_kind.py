@@ -142,6 +142,7 @@ class CueContext:
     cruise_mps: float = DEFAULT.motion.cruise_speed_mps  # its cruise speed (arrival estimates)
     half_width_m: float = DEFAULT.footprint.width_m / 2.0  # half its body's width (lights on its body sit within it)
     manoeuvre: Manoeuvre = NO_MANOEUVRE  # a pass under way (the turn signals' pass-side rule)
+    thought_everywhere: bool = False  # the researcher's thought: shown whoever is near (Wizard of Oz)
 
 
 @dataclass(frozen=True)

@@ -226,11 +226,13 @@ class ArCues:
         now: float | None = None,
         markers: bool = True,
         altitude_m: float = 0.0,
+        thought_everywhere: bool = False,
     ) -> CueFrame:
         """Every marker of the cues on in `toggles` (default: all) for this moment, and what they show.
         With the time `now`, a lit turn signal is held at least `turn_signal_hold_s`. `markers=False`:
         what they show only, no markers (no one reads them in batch mode). `altitude_m`: the robot's
-        height above the floor (/odom), where its cues are drawn."""
+        height above the floor (/odom), where its cues are drawn; `thought_everywhere`: the thought is
+        the researcher's, to be shown at any distance."""
         toggles = Toggles() if toggles is None else toggles
         self.path.advance(robot)
         r = self.robot
@@ -248,6 +250,7 @@ class ArCues:
             r.motion.cruise_speed_mps,
             r.footprint.width_m / 2.0,
             self.manoeuvre,
+            thought_everywhere,
         )
         out: list[MarkerSpec] = []
         values: dict[str, Any] = {}

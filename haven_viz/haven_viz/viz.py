@@ -27,6 +27,7 @@ from haven_sim.sim.world import World
 from haven_viz.cue_kind import NO_MANOEUVRE, Manoeuvre
 from haven_viz.cues import ArCues, CueParams, CueState, CueToggles, Toggles
 from haven_viz.markers import MarkerDiff
+from haven_viz.wizard_thought import WizardThought
 from haven_viz.world_markers import body_markers, world_markers
 
 PASS_SIDES = {"left": 1, "right": -1}  # the navigator's `replanned` event's side
@@ -63,6 +64,7 @@ class VizComponent:
         self.humans: HumanPoses = {}
         self.battery: float | None = None
         self.thought = ""
+        self.wizard: WizardThought | None = None  # the researcher's text, held over the robot's own
         self.collected: set[str] = set()
         self.removed: set[str] = set()
         self.state: CueState | None = None
@@ -83,6 +85,7 @@ class VizComponent:
             topics.BATTERY: self.on_battery,
             topics.HUMANS: self.on_humans,
             topics.THOUGHT: self.on_thought,
+            topics.WIZARD_THOUGHT: self.on_wizard_thought,
             topics.EVENTS: self.on_event,
         }
 
@@ -108,6 +111,13 @@ class VizComponent:
 
     def on_thought(self, text: str, now: float) -> list[Message]:
         self.thought = text
+        return []
+
+    def on_wizard_thought(self, text: str, now: float) -> list[Message]:
+        try:
+            self.wizard = WizardThought.from_json(text)
+        except ValueError as e:
+            self.warnings.append(f"{topics.WIZARD_THOUGHT}: {e}")
         return []
 
     def on_event(self, e: Event, now: float) -> list[Message]:
@@ -173,7 +183,12 @@ class VizComponent:
             return out
         humans_xy = [(h.x, h.y) for h in self.humans.values()]
         shown = topics.AR_MARKERS not in self.unread
-        frame = self.cues.frame(self.robot, humans_xy, self.battery, self.thought, self.toggles, now, markers=shown, altitude_m=self.altitude_m)
+        wizard = self.wizard if self.wizard is not None and now < self.wizard.until else None
+        thought = wizard.text if wizard is not None else self.thought
+        everywhere = wizard is not None and wizard.everywhere
+        frame = self.cues.frame(
+            self.robot, humans_xy, self.battery, thought, self.toggles, now, markers=shown, altitude_m=self.altitude_m, thought_everywhere=everywhere
+        )
         out += self._failures(now)
         refresh = self._refresh_now or self._last_refresh is None or now - self._last_refresh >= self.config.refresh_period_s
         if refresh:

@@ -59,3 +59,22 @@ def test_world_markers_follow_gems_and_a_viewer_joining_gets_everything():
     viz.on_event(event(EventKind.GEM_COLLECTED, 0.3, Source.SCENARIO, gem=gem, by="robot"), 0.3)
     (world,) = by_topic(viz.tick(0.3), topics.WORLD_MARKERS)
     assert ("gems", 0) in world.delete
+
+
+def test_the_researchers_thought_is_held_over_the_robots_own_and_shown_at_any_distance_when_asked():
+    from haven_viz.wizard_thought import WizardThought
+
+    viz = VizComponent(VizConfig(), load_world(packaged_world("small_test")))
+    viz.on_odom(RobotState(Pose2D(1.0, 2.5, 0.0)), 0.0)
+    viz.on_humans({"h1": Pose2D(7.0, 2.5, 0.0)}, 0.0)  # 6 m away: beyond the bubble's 3 m
+    viz.on_thought("Going to room B", 0.0)
+    assert by_topic(viz.tick(0.0), topics.CUE_STATE)[0].thought == ""  # nobody near
+    viz.on_wizard_thought(WizardThought("Please keep to your right", until=10.0, everywhere=True).to_json(), 1.0)
+    viz.on_thought("Waiting for you to pass", 2.0)  # the robot's own thought meanwhile does not overwrite it
+    assert by_topic(viz.tick(2.0), topics.CUE_STATE)[0].thought == "Please keep to your right"
+    (after,) = by_topic(viz.tick(10.0), topics.CUE_STATE)  # the hold is over: the robot's own, and only near
+    assert after.thought == ""
+    viz.on_humans({"h1": Pose2D(2.0, 2.5, 0.0)}, 10.1)
+    assert by_topic(viz.tick(10.1), topics.CUE_STATE)[0].thought == "Waiting for you to pass"
+    viz.on_wizard_thought("not json", 11.0)
+    assert viz.warnings[-1] == "haven/wizard_thought: not JSON"

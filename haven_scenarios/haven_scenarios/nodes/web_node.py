@@ -5,7 +5,7 @@ on 127.0.0.1) and serves the pages and their sockets through one token-checked a
 (`haven_scenarios.web.front_door`). What pages send comes back through Foxglove's client-publish
 capability and is published only where their role allows (`haven_scenarios.web.access`): a
 participant's velocity on /humans/<id>/cmd_vel; the console's robot driving on /cmd_vel_teleop
-(the velocity mux's teleop input, so the e-stop still wins), the thought text on /haven/thought,
+(the velocity mux's teleop input, so the e-stop still wins), the thought text on /haven/wizard_thought,
 trial start / stop / abort on /haven/trial_control, and the cue toggles as the viz node's
 parameters. The console's interventions are study events (`haven_scenarios.web.wizard`). After the
 trial, participants answer the run's questionnaires in their page (`haven run --questionnaire`):
@@ -191,13 +191,16 @@ class WebNode(Node):
                     self.presence.ending()
                 if topic == absolute(topics.CMD_VEL_TELEOP):
                     self._log(self.wizard.drive(conv.twist_from_msg(msg), self.now()))
-                elif topic == absolute(topics.THOUGHT):
+                elif topic == absolute(topics.WIZARD_THOUGHT):  # the page's {text, hold_s, everywhere}: the viz's held thought
                     try:
-                        self._log(self.wizard.thought(str(msg.data), self.now()))
+                        held, events = self.wizard.thought(str(msg.data), self.now())
                     except ValueError as e:  # (said on the console too: the page shows the server's status)
                         refused(self, topic, e)
                         self.servers[role.name].publish_status(f"refused: {e}", StatusLevel.Warning)
                         return
+                    self._log(events)
+                    pub.publish(String(data=held.to_json()))
+                    return
             pub.publish(data)
 
     def _after_trial(self, role: Role, topic: str, data: bytes) -> None:

@@ -18,7 +18,7 @@ The topics a run may declare open:
 - the outputs of our nodes a run leaves out (`--without planner`: the user's planner publishes
   /plan and /haven/wait), and the velocity of each teleoperated person (`--teleop`);
 - what the run allows with `--allow TOPIC` (a teleop node on /cmd_vel_teleop, RViz goals on
-  /goal_pose, a researcher's thought text on /haven/thought).
+  /goal_pose, a researcher's thought text on /haven/wizard_thought).
 """
 
 from __future__ import annotations
@@ -55,7 +55,8 @@ WRITERS: Mapping[str, frozenset[str]] = {
     _t(topics.GOAL): frozenset({SCENARIO}),
     _t(topics.PLAN): frozenset({PLANNER}),
     _t(topics.WAIT): frozenset({PLANNER}),
-    _t(topics.THOUGHT): frozenset({SCENARIO, WEB}),
+    _t(topics.THOUGHT): frozenset({SCENARIO}),
+    _t(topics.WIZARD_THOUGHT): frozenset({WEB}),
     _t(topics.EVENTS): EVERY_NODE,
     _t(topics.REMOVE_OBSTRUCTION): frozenset({SCENARIO}),
     _t(topics.TRIAL_STATUS): frozenset({SCENARIO}),

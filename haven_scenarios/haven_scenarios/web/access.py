@@ -73,7 +73,7 @@ CONSOLE_ROLE = Role(
     CONSOLE,
     {
         absolute(topics.CMD_VEL_TELEOP): TWIST,
-        absolute(topics.THOUGHT): STRING,
+        absolute(topics.WIZARD_THOUGHT): STRING,  # {text, hold_s, everywhere} from the page (web/wizard.py)
         absolute(topics.TRIAL_CONTROL): STRING,
         SKIP_QUESTIONNAIRES: STRING,
     },

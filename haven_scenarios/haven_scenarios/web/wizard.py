@@ -1,7 +1,8 @@
 """The researcher's interventions as study events (Wizard of Oz): every one is in the recording;
 and the start gate: a held trial starts when every participant has pressed Start on their page.
 
-Typing the thought bubble's text is one `intervention` event (action `thought`, with the text);
+Typing the thought bubble's text is one `intervention` event (action `thought`, with the text, how
+long it is held over the robot's own thoughts and whether it shows at any distance);
 driving the robot from the console is one event when it starts (`drive`) and one when the
 console's commands come back to zero (`drive_end`); skipping the questionnaires after the trial is
 one (`skip_questionnaires`). The velocity mux logs the switch of its source
@@ -10,9 +11,12 @@ one (`skip_questionnaires`). The velocity mux logs the switch of its source
 
 from __future__ import annotations
 
+import json
+
 from haven_scenarios.record.answers import SKIP
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Twist2D
+from haven_viz.wizard_thought import MAX_HOLD_S, WizardThought
 
 BY = "researcher"
 # Longest thought text the console may show: its `intervention` event must fit the study log's
@@ -21,15 +25,31 @@ BY = "researcher"
 MAX_THOUGHT_CHARS = 1000
 
 
+DEFAULT_HOLD_S = 10.0  # the console's default: long enough to read a sentence twice
+
+
 class Wizard:
     def __init__(self) -> None:
         self.driving = False
 
-    def thought(self, text: str, now: float) -> list[Event]:
-        """ValueError (naming the limit) for a text longer than MAX_THOUGHT_CHARS: it is not shown."""
+    def thought(self, sent: str, now: float) -> tuple[WizardThought, list[Event]]:
+        """The console's {"text": ..., "hold_s": s, "everywhere": bool} as the viz's held thought and
+        its event; ValueError in one line (naming the limit) for anything else: it is not shown."""
+        try:
+            data = json.loads(sent)
+        except (json.JSONDecodeError, RecursionError):
+            raise ValueError("thought: not JSON") from None
+        text, hold, everywhere = (data.get(k) for k in ("text", "hold_s", "everywhere")) if isinstance(data, dict) else (None, None, None)
+        if not isinstance(text, str):
+            raise ValueError('thought: must be {"text": ..., "hold_s": seconds, "everywhere": true|false}')
         if len(text) > MAX_THOUGHT_CHARS:
             raise ValueError(f"thought text of {len(text)} characters refused: at most {MAX_THOUGHT_CHARS} (the study log's events hold 64 KiB)")
-        return [event(EventKind.INTERVENTION, now, Source.WEB, action="thought", text=text, by=BY)]
+        hold = DEFAULT_HOLD_S if hold is None else hold
+        if isinstance(hold, bool) or not isinstance(hold, (int, float)) or not 0 <= hold <= MAX_HOLD_S:
+            raise ValueError(f"thought: hold_s must be 0..{MAX_HOLD_S:g} seconds, got {str(hold)[:40]}")
+        everywhere = bool(everywhere)
+        held = WizardThought(text, now + float(hold), everywhere)
+        return held, [event(EventKind.INTERVENTION, now, Source.WEB, action="thought", text=text, hold_s=float(hold), everywhere=everywhere, by=BY)]
 
     def skip_questionnaires(self, now: float) -> list[Event]:
         """The researcher ends the wait for questionnaire answers (`haven run` stops then)."""

@@ -143,12 +143,15 @@ function showQuestionnaires() {
 }
 document.getElementById("skip-questionnaires").addEventListener("click", () => link.publish("/haven/skip_questionnaires", { data: "skip" }));
 
-// What the robot "thinks" now, and whether a participant sees it (the bubble shows within 3 m).
+// What the participants' bubble says now (the researcher's text while it is held), and whether a
+// participant sees it (the bubble shows within 3 m, or at any distance when the researcher chose).
 function showThought() {
   const shown = state.cue && state.cue.thought;
-  document.getElementById("thought-now").textContent = state.thought
-    ? `robot thinks: "${state.thought}" (${shown ? "shown to a participant" : "not shown: nobody near, or the cue is off"})`
-    : "robot thinks: nothing yet";
+  document.getElementById("thought-now").textContent = shown
+    ? `bubble shows: "${shown}"`
+    : state.thought
+      ? `robot thinks: "${state.thought}" (not shown: nobody near, or the cue is off)`
+      : "robot thinks: nothing yet";
 }
 showStatus();
 showThought();
@@ -201,7 +204,8 @@ window.addEventListener("keyup", (e) => {
 document.getElementById("thought-text").maxLength = cfg.thought_max_chars; // the study log's limit
 document.getElementById("thought-form").addEventListener("submit", (e) => {
   e.preventDefault();
-  link.publish("/haven/thought", { data: document.getElementById("thought-text").value });
+  const sent = { text: document.getElementById("thought-text").value, hold_s: Number(document.getElementById("thought-hold").value), everywhere: document.getElementById("thought-everywhere").checked };
+  link.publish("/haven/wizard_thought", { data: JSON.stringify(sent) });
 });
 
 // The robot's footprint at real size, turned with its heading: its circle or its polygon.

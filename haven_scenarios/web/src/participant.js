@@ -38,8 +38,9 @@ scene.add(grid);
 
 const stretch = cfg.view_wall_height_m / cfg.marker_wall_height_m;
 const world = new MarkerLayer(scene, { stretchZ: { walls: stretch, obstructions: stretch }, lift: { rooms: cfg.view_wall_height_m - 0.3 } });
-const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]) }); // bodies come from the poses
 const FACING = new Set(["thought_bubble", "battery_indicator"]);
+// (bodies come from the poses; the bubble and the gauge are never hidden by a wall: a 2 m hallway clipped them)
+const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]), onTop: FACING });
 let robot = robotBody(cfg.robot);
 robot.visible = false;
 scene.add(robot);
@@ -189,6 +190,9 @@ setInterval(() => {  // the connection: a notice when it is lost, and no walking
 showTrial();
 
 // -- every 2 s, what the researcher checks this machine by: frame rate, key-to-view latency, last input
+// ... and, with `&stats` on the page's address, the same in a corner for the researcher's own look.
+const statsEl = new URLSearchParams(location.search).has("stats") ? document.body.appendChild(document.createElement("div")) : null;
+if (statsEl) statsEl.id = "stats";
 let reportedFrames = 0;
 let reportedAt = performance.now();
 setInterval(() => {
@@ -198,6 +202,7 @@ setInterval(() => {
   const latency = state.latencies.length ? state.latencies[state.latencies.length - 1] : null;
   const report = { fps: Math.round(fps * 10) / 10, latency_ms: latency === null ? null : Math.round(latency), input_age_s: inputAt === null ? null : (now - inputAt) / 1000 };
   state.reported = (state.reported || 0) + (link.publish("/haven/page_report", { data: JSON.stringify(report) }) ? 1 : 0);
+  if (statsEl) statsEl.textContent = `${report.fps} fps · key→view ${report.latency_ms === null ? "–" : report.latency_ms + " ms"}`;
 }, 2000);
 
 // -- the map inset (optional per study) ----------------------------------------------------------
@@ -242,13 +247,14 @@ window.havenShowRobot = (desc, at, eye, pitch = 0) => {
   withModel(robot, desc, modelLoaded(robot));
   placeRobot(at.x, at.y, at.z, at.yaw);
   state.pose = eye;
+  state.posed = true;
   camera.rotation.x = -pitch;
   return robot.userData.meshes;
 };
 window.havenOthers = () => Object.fromEntries([...others].map(([id, a]) => [id, { x: a.position.x, y: a.position.y }]));
 window.havenMarker = (ns, id) => {
   const e = cues.objects.get(`${ns}/${id}`);
-  return e ? { x: e.object.position.x, y: e.object.position.y, z: e.object.position.z } : null;
+  return e ? { x: e.object.position.x, y: e.object.position.y, z: e.object.position.z, onTop: e.object.renderOrder === 10 } : null;
 };
 
 // -- every frame -----------------------------------------------------------------------------------
@@ -260,6 +266,9 @@ renderer.setAnimationLoop((time) => {
   spinParts(robot, robotMoved, robot.userData.aerial && robot.position.z > 0.05, dt);
   robotMoved = 0;
   controls.poll(renderer.xr.isPresenting ? renderer.xr.getSession() : null);
+  controls.look(dt);
+  if (!renderer.xr.isPresenting && !state.posed) camera.rotation.x = controls.pitch; // (a headset looks with the head)
+  state.pitch = controls.pitch;
   if (state.pose) {
     rig.position.set(state.pose.x, state.pose.y, 0);
     rig.rotation.z = state.pose.yaw;

@@ -26,6 +26,7 @@ GOAL = "goal_pose"
 PLAN = "plan"
 WAIT = "haven/wait"
 THOUGHT = "haven/thought"
+WIZARD_THOUGHT = "haven/wizard_thought"  # the researcher's thought text, held (String: JSON {text, until, everywhere})
 EVENTS = "haven/events"
 REMOVE_OBSTRUCTION = "haven/remove_obstruction"
 AR_MARKERS = "haven/ar_markers"
