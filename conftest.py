@@ -29,12 +29,16 @@ _left_out: list[str] = []
 
 
 def needs_ros(path: Path) -> bool:
-    """Whether a test file imports ROS at its top: rclpy, message packages, the harness, our nodes."""
+    """Whether a test file imports ROS at its top: rclpy, message packages, the harness, our nodes,
+    or another test file beside it that does."""
     for node in ast.parse(path.read_text(), str(path)).body:
         names = [a.name for a in node.names] if isinstance(node, ast.Import) else [node.module or ""] if isinstance(node, ast.ImportFrom) else []
         for name in names:
             top = name.partition(".")[0]
             if top in ("rclpy", "ros_harness") or top.endswith(("_msgs", "_srvs")) or ".nodes" in name:
+                return True
+            sibling = path.with_name(f"{top}.py")
+            if top.startswith("test_") and sibling != path and sibling.is_file() and needs_ros(sibling):
                 return True
     return False
 
