@@ -60,11 +60,12 @@ def test_a_closed_tab_shows_on_the_console_is_recorded_and_the_pause_stands_the_
     assert all(c.clock == frozen[1] for c in clock[frozen[0] :]), "simulated time went on while the participant was away"
 
     back = browser.new_context(viewport={"width": 480, "height": 270}).new_page()
-    back.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)  # the same address: back in the trial
+    back.goto(urls["participant h1"] + "&quality=low", timeout=PAGE_LOAD_MS)  # the same address: back in the trial (on a slow machine's setting)
     console.wait_for_function("havenState.participants.participants.h1.state === 'connected'", timeout=PAGE_TIMEOUT_MS)
     seconds = frozen[1].sec + frozen[1].nanosec * 1e-9
     assert ros.spin_until(lambda: clock[-1].clock.sec + clock[-1].clock.nanosec * 1e-9 > seconds + 0.5, timeout_s=60), "time did not run on"
     back.wait_for_function("(t => t && t.state === 'running')(havenState.trial)", timeout=PAGE_TIMEOUT_MS)
+    assert back.evaluate("havenState.quality") == "low"
 
     console.click("#stop")
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]

@@ -89,18 +89,77 @@ export function spinParts(body, travelledM, airborne, dt) {
   }
 }
 
+// A person built from primitives (nothing to license), in the proportions of the segment lengths
+// Drillis, Contini and Bluestein gave as fractions of stature H (as drawn in D. A. Winter,
+// Biomechanics and Motor Control of Human Movement, 4th ed., 2009, Fig. 4.1): hip height 0.530 H,
+// shoulder height 0.818 H, shoulder width 0.259 H, hip width 0.191 H, upper arm 0.186 H, forearm
+// and hand 0.254 H, head 0.130 H. Legs and arms swing with the distance walked (`walkPerson`); each
+// person's shirt has its own colour (from their id), so two people are told apart.
+const SHIRTS = [0xcc3333, 0x2f6db5, 0x3a8f4a, 0xc77d1e, 0x7a4fa3, 0x1f8f8f];
+const STRIDE_M = 0.75; // one step (a comfortable walking step: about 0.43 H at 1.75 m)
+const SWING_RAD = 0.45;
+
+function limb(length, radius, material) {
+  const pivot = new THREE.Group(); // at the hip or shoulder: the limb hangs down from it
+  const mesh = new THREE.Mesh(new THREE.CylinderGeometry(radius, radius * 0.8, length, 10).rotateX(Math.PI / 2), material);
+  mesh.position.z = -length / 2;
+  pivot.add(mesh);
+  return pivot;
+}
+
 export function person(id, radius, height) {
   const g = new THREE.Group();
-  const head = 0.23;
-  const body = new THREE.Mesh(new THREE.CylinderGeometry(radius * 0.8, radius * 0.6, height - head, 20).rotateX(Math.PI / 2), lambert(0xcc3333));
-  body.position.z = (height - head) / 2;
-  const face = new THREE.Mesh(new THREE.SphereGeometry(head / 2, 20, 14), lambert(0xe0b090));
-  face.position.z = height - head / 2;
-  const nose = new THREE.Mesh(new THREE.ConeGeometry(0.03, 0.07, 8), lambert(0xd09a7a));
+  const H = height;
+  const hash = [...id].reduce((h, c) => (h * 31 + c.charCodeAt(0)) >>> 0, 7);
+  const skin = lambert(0xe0b090), shirt = lambert(SHIRTS[hash % SHIRTS.length]), trousers = lambert(0x34384a);
+  const hip = 0.53 * H, shoulder = 0.818 * H, head = 0.13 * H;
+  const legs = [1, -1].map((side) => {
+    const leg = limb(hip - 0.04, 0.065, trousers);
+    leg.position.set(0, (side * 0.191 * H) / 2 - side * 0.045, hip);
+    const shoe = new THREE.Mesh(new THREE.BoxGeometry(0.26, 0.1, 0.08), lambert(0x2a2a2a));
+    shoe.position.set(0.05, 0, -(hip - 0.04));
+    leg.add(shoe);
+    return leg;
+  });
+  const torso = new THREE.Mesh(new THREE.CylinderGeometry(0.259 * H * 0.42, 0.191 * H * 0.5, shoulder - hip + 0.04, 16).rotateX(Math.PI / 2), shirt);
+  torso.position.z = (hip + shoulder) / 2;
+  torso.scale.x = 0.6; // flatter front to back than side to side
+  const arms = [1, -1].map((side) => {
+    const arm = limb(0.44 * H - 0.02, 0.045, shirt);
+    arm.position.set(0, (side * 0.259 * H) / 2, shoulder - 0.02);
+    const hand = new THREE.Mesh(new THREE.SphereGeometry(0.045, 10, 8), skin);
+    hand.position.z = -(0.44 * H - 0.02);
+    arm.add(hand);
+    return arm;
+  });
+  const neck = new THREE.Mesh(new THREE.CylinderGeometry(0.05, 0.05, 0.08, 10).rotateX(Math.PI / 2), skin);
+  neck.position.z = shoulder + 0.03;
+  const face = new THREE.Mesh(new THREE.SphereGeometry(head / 2, 20, 14), skin);
+  face.scale.set(0.9, 0.8, 1);
+  face.position.z = H - head / 2;
+  const nose = new THREE.Mesh(new THREE.ConeGeometry(0.025, 0.06, 8), lambert(0xd09a7a));
   nose.rotation.z = -Math.PI / 2;
-  nose.position.set(head / 2, 0, height - head / 2);
+  nose.position.set(head * 0.45, 0, H - head / 2);
   const label = textSprite(id, { r: 0.1, g: 0.1, b: 0.1, a: 1 }, 0.18);
-  label.position.z = height + 0.25;
-  g.add(body, face, nose, label);
+  label.position.z = H + 0.25;
+  g.add(...legs, torso, ...arms, neck, face, nose, label);
+  g.userData.gait = { legs, arms, phase: 0 };
   return g;
+}
+
+// The gait: legs and the opposite arms swing with the distance walked since the last frame; a
+// person standing still eases back to standing.
+export function walkPerson(g, movedM, dt) {
+  const gait = g.userData.gait;
+  let swing;
+  if (movedM > 1e-3) {
+    gait.phase += (movedM / STRIDE_M) * Math.PI;
+    swing = Math.sin(gait.phase) * SWING_RAD;
+  } else {
+    swing = gait.legs[0].rotation.y * Math.max(0, 1 - 8 * dt);
+  }
+  gait.legs[0].rotation.y = swing;
+  gait.legs[1].rotation.y = -swing;
+  gait.arms[0].rotation.y = -0.7 * swing;
+  gait.arms[1].rotation.y = 0.7 * swing;
 }

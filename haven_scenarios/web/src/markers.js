@@ -84,7 +84,13 @@ function build(m, options) {
       const geo = new THREE.BufferGeometry();
       geo.setAttribute("position", new THREE.BufferAttribute(pos, 3));
       geo.computeVertexNormals();
-      return new THREE.Mesh(geo, material(m.color));
+      const own = options.materials && options.materials[m.ns];
+      if (own) {  // texture coordinates in metres: along the wall (x + y: its walls are axis-aligned or near), and up
+        const uv = new Float32Array(m.points.length * 2);
+        m.points.forEach((p, i) => uv.set([p.x + p.y, p.z * stretch], 2 * i));
+        geo.setAttribute("uv", new THREE.BufferAttribute(uv, 2));
+      }
+      return new THREE.Mesh(geo, own || material(m.color));
     }
     case LINE_STRIP: {
       const geo = new THREE.BufferGeometry().setFromPoints(m.points.map((p) => new THREE.Vector3(p.x, p.y, p.z)));
@@ -114,7 +120,9 @@ export class MarkerLayer {
   // options: {hide: Set of namespaces drawn otherwise, stretchZ: {ns: factor}, lift: {ns: z},
   // bubbles: Set of namespaces whose text is drawn on its own white label, facing the viewer, in
   // place of the namespace's other markers (the viz node's backdrop, which suits a top-down view),
-  // onTop: Set of namespaces drawn over everything else (a bubble or a gauge a wall would clip)}
+  // onTop: Set of namespaces drawn over everything else (a bubble or a gauge a wall would clip),
+  // materials: {ns: material} in place of the markers' colours (textures: scenery.js),
+  // shadows: the markers cast and receive shadows}
   constructor(parent, options = {}) {
     this.group = new THREE.Group();
     parent.add(this.group);
@@ -140,6 +148,7 @@ export class MarkerLayer {
       if (m.type !== TEXT) object.quaternion.set(q.x, q.y, q.z, q.w);
       object.userData = { ns: m.ns, id: m.id, type: m.type, anchor: object.position.clone(), scale: m.scale };
       if (this.options.onTop && this.options.onTop.has(m.ns)) drawOnTop(object);
+      if (this.options.shadows) object.traverse((o) => o.isMesh && (o.castShadow = o.receiveShadow = true));
       this.group.add(object);
       this.objects.set(key, { object, marker: m });
     }

@@ -5,7 +5,8 @@
 import * as THREE from "three";
 import { Link, config as readConfig, twist, yawOf } from "./link.js";
 import { MarkerLayer } from "./markers.js";
-import { robotBody, spinParts, withModel, person } from "./bodies.js";
+import { robotBody, spinParts, withModel, person, walkPerson } from "./bodies.js";
+import { dressScene, quality } from "./scenery.js";
 import { drawInset } from "./inset.js";
 import { Controls } from "./controls.js";
 import { taskLine, promptFor } from "./task.js";
@@ -38,13 +39,19 @@ scene.add(grid);
 
 const stretch = cfg.view_wall_height_m / cfg.marker_wall_height_m;
 const world = new MarkerLayer(scene, { stretchZ: { walls: stretch, obstructions: stretch }, lift: { rooms: cfg.view_wall_height_m - 0.3 } });
+state.quality = quality(cfg);
+const dressed = dressScene({ level: state.quality, renderer, sun, floor, grid, world, bounds: cfg.bounds, wallHeight: cfg.view_wall_height_m });
 const FACING = new Set(["thought_bubble", "battery_indicator"]);
 // (bodies come from the poses; the bubble and the gauge are never hidden by a wall: a 2 m hallway clipped them)
 const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]), onTop: FACING });
 let robot = robotBody(cfg.robot);
 robot.visible = false;
 scene.add(robot);
-const modelLoaded = (body) => () => body === robot && (state.robotModel = true);
+dressed.shade(robot);
+const modelLoaded = (body) => () => {
+  dressed.shade(body);
+  if (body === robot) state.robotModel = true;
+};
 withModel(robot, cfg.robot, modelLoaded(robot));
 let robotMoved = 0; // metres since the last frame (the wheels turn by it)
 // The robot at its /odom pose, its height included (an aerial robot's altitude).
@@ -99,9 +106,11 @@ const link = new Link(
         }
         if (!others.has(id)) {
           others.set(id, person(id, cfg.human_body.radius_m, cfg.human_body.height_m));
+          dressed.shade(others.get(id));
           scene.add(others.get(id));
         }
         const a = others.get(id);
+        a.userData.moved = (a.userData.moved || 0) + Math.hypot(pose.x - a.position.x, pose.y - a.position.y);
         a.position.set(pose.x, pose.y, 0);
         a.rotation.z = pose.yaw;
         state.others = others.size;
@@ -243,6 +252,7 @@ window.havenShowRobot = (desc, at, eye, pitch = 0) => {
   scene.remove(robot);
   robot = robotBody(desc);
   scene.add(robot);
+  dressed.shade(robot);
   state.robotModel = false;
   withModel(robot, desc, modelLoaded(robot));
   placeRobot(at.x, at.y, at.z, at.yaw);
@@ -265,6 +275,10 @@ renderer.setAnimationLoop((time) => {
   frameAt = time;
   spinParts(robot, robotMoved, robot.userData.aerial && robot.position.z > 0.05, dt);
   robotMoved = 0;
+  for (const a of others.values()) {
+    walkPerson(a, a.userData.moved || 0, dt);
+    a.userData.moved = 0;
+  }
   controls.poll(renderer.xr.isPresenting ? renderer.xr.getSession() : null);
   controls.look(dt);
   if (!renderer.xr.isPresenting && !state.posed) camera.rotation.x = controls.pitch; // (a headset looks with the head)
