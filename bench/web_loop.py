@@ -6,7 +6,10 @@ headless Chromium (Debian's, software WebGL through SwiftShader: no GPU), starts
 drawn after its own pose on /humans has moved (its `havenState.latencies`), then releases and waits
 for the avatar to stand still. Also the page's frame rate over `--seconds` of walking.
 
-usage: python bench/web_loop.py [--presses 30] [--seconds 10] [--size 960x540]
+The page draws at `--quality` (low, standard, high: web/src/scenery.js), so each setting's cost
+shows in its frame rate.
+
+usage: python bench/web_loop.py [--presses 30] [--seconds 10] [--size 960x540] [--quality standard]
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ def main() -> None:
     ap.add_argument("--presses", type=int, default=30)
     ap.add_argument("--seconds", type=float, default=10.0)
     ap.add_argument("--size", default="960x540")
+    ap.add_argument("--quality", default="standard", choices=["low", "standard", "high"])
     ap.add_argument("--params-file", default=None, help="parameters for the suite (e.g. another /humans rate)")
     a = ap.parse_args()
     width, height = (int(v) for v in a.size.split("x"))
@@ -67,7 +71,7 @@ def main() -> None:
         with sync_playwright() as p:
             browser = p.chromium.launch(executable_path="/usr/bin/chromium", args=ARGS)
             page = browser.new_page(viewport={"width": width, "height": height})
-            page.goto(url)
+            page.goto(url + f"&quality={a.quality}")
             page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held'", timeout=120_000)
             page.click("#start")
             page.wait_for_function("havenState.trial.state === 'running'", timeout=60_000)
@@ -91,6 +95,7 @@ def main() -> None:
     w = statistics.quantiles(wire, n=20)
     row = {
         "size": a.size,
+        "quality": a.quality,
         "presses": len(latencies),
         "median_ms": statistics.median(latencies),
         "p95_ms": q[18],
@@ -101,9 +106,9 @@ def main() -> None:
     print(
         f"key -> frame: median {row['median_ms']:.0f} ms, p95 {row['p95_ms']:.0f} ms over {len(latencies)} presses "
         f"(key -> moved pose back: median {row['pose_back_median_ms']:.0f} ms, p95 {row['pose_back_p95_ms']:.0f} ms); "
-        f"{fps:.1f} frames/s at {a.size}"
+        f"{fps:.1f} frames/s at {a.size}, quality {a.quality}"
     )
-    save({"summary": row, "latencies_ms": latencies, "pose_back_ms": wire}, OUT / f"web_loop_{a.size}.json")
+    save({"summary": row, "latencies_ms": latencies, "pose_back_ms": wire}, OUT / f"web_loop_{a.size}_{a.quality}.json")
 
 
 if __name__ == "__main__":
