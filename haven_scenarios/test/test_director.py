@@ -172,6 +172,17 @@ def test_stop_and_abort_end_the_trial_with_their_reason(command, started, reason
 def test_an_unknown_trial_command_is_refused_in_one_line():
     with pytest.raises(ValueError, match="unknown trial command 'go' \\(expected start, stop, abort\\)"):
         TrialDirector(load_scenario("hallway")).on_control("go", 0.0)
+    with pytest.raises(ValueError, match="who asked must be"):
+        TrialDirector(load_scenario("hallway")).on_control("abort by me", 0.0)
+
+
+def test_an_abort_says_who_asked_for_it():
+    d = TrialDirector(load_scenario("hallway"))
+    d.held = False
+    ready(d)
+    d.tick(0.0)
+    (end,) = by_topic(d.on_control("abort dropout:h1", 1.0), topics.EVENTS)  # the web node's drop-out policy
+    assert (end["reason"], end["by"]) == ("aborted", "dropout:h1")
 
 
 def test_the_status_shows_a_participants_gems_and_dwell_progress():

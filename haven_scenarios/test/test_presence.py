@@ -59,6 +59,7 @@ def test_abort_calls_the_trial_off_at_once():
 
 def test_page_reports_are_checked_and_shown():
     a = Attendance(["h1"])
+    a.opened("h1", 0.0, 0.0)
     assert a.report("h1", json.dumps({"fps": 4.66, "latency_ms": 87, "input_age_s": None}), 1.0) is None
     row = a.table(3.0)["participants"]["h1"]
     assert (row["fps"], row["latency_ms"], row["input_age_s"], row["report_age_s"]) == (4.7, 87.0, None, 2.0)
@@ -68,6 +69,8 @@ def test_page_reports_are_checked_and_shown():
     assert a.report("h1", '{"fps": -1}', 1.0) == "a page report with a value that is not a number >= 0"
     assert a.report("h1", '{"fps": true}', 1.0) == "a page report with a value that is not a number >= 0"
     assert "at most 512" in (a.report("h1", json.dumps({"x": "y" * 600}), 1.0) or "")
+    a.closed("h1", 4.0, 4.0, running=True)
+    assert a.table(5.0)["participants"]["h1"]["fps"] is None  # away: nothing its page said counts as now
 
 
 def test_a_paused_wall_clock_stands_still_and_pacing_does_not_catch_up_after():

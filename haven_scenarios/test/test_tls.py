@@ -21,32 +21,35 @@ from haven_scenarios.web.access import door_key, role_token
 from haven_scenarios.web.door_hello import hello_frames
 from haven_scenarios.web.editor_server import EditorServer
 from haven_scenarios.web.front_door import FrontDoor
-from haven_scenarios.web.tls import CA_CERT, CA_KEY, server_context, tls_files
+from haven_scenarios.web.tls import CA_CERT, CA_KEY, SERVER_CERT, SERVER_KEY, address_notes, make_certificates, names_of, server_context, tls_files
 
 
 @pytest.fixture(scope="module")
 def certs(tmp_path_factory: pytest.TempPathFactory) -> Path:
     folder = tmp_path_factory.mktemp("tls")
-    assert main(["cert", "--dir", str(folder), "--name", "localhost", "--name", "127.0.0.1"]) == 0
+    assert main(["cert", "--dir", str(folder)]) == 0  # this machine's names and addresses, localhost among them
     return folder
 
 
 def served(certs: Path, tmp_path: Path) -> EditorServer:
-    server = EditorServer("127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(certs / "localhost.pem", certs / "localhost-key.pem"))
+    server = EditorServer("127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(certs / SERVER_CERT, certs / SERVER_KEY))
     server.start()
     return server
 
 
 def test_haven_cert_makes_the_authority_once_and_keeps_the_keys_private(certs: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    for key in (CA_KEY, "localhost-key.pem"):
+    for key in (CA_KEY, SERVER_KEY):
         assert stat.S_IMODE((certs / key).stat().st_mode) == 0o600, key
     before = (certs / CA_CERT).read_bytes()
     assert main(["cert", "--dir", str(certs), "--name", "lab-pc.local"]) == 0
     out = capsys.readouterr().out
     assert "authority (kept)" in out and "--tls-cert" in out, out
     assert (certs / CA_CERT).read_bytes() == before  # headsets that trust it go on trusting the next certificate
-    leaf = x509.load_pem_x509_certificates((certs / "lab-pc.local.pem").read_bytes())[0]
+    leaf = x509.load_pem_x509_certificates((certs / SERVER_CERT).read_bytes())[0]
     leaf.verify_directly_issued_by(x509.load_pem_x509_certificate(before))  # signed by the same, kept authority
+    assert {"localhost", "127.0.0.1", "lab-pc.local"} <= set(names_of(certs / SERVER_CERT))  # --name adds to this machine's
+    assert main(["cert", "--dir", str(certs), "--name", "bad name"]) == 2
+    assert "is neither a host name" in capsys.readouterr().err
 
 
 def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_is_secure(certs: Path, tmp_path: Path) -> None:
@@ -61,21 +64,20 @@ def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_
         with pytest.raises(urllib.error.URLError, match="CERTIFICATE_VERIFY_FAILED"):  # nobody else trusts it
             urllib.request.urlopen(server.url, context=ssl.create_default_context(), timeout=30)
         plain = server.url.replace("https://", "http://")
-        with pytest.raises((urllib.error.URLError, ConnectionError)):  # no clear-text answer on the same port
+        with pytest.raises(urllib.error.HTTPError) as refused:  # no page in clear text on the same port: one line saying why
             urllib.request.urlopen(plain, timeout=30)
+        assert refused.value.code == 400 and b"open it with https://" in refused.value.read()
     finally:
         server.stop()
 
 
 def test_a_certificate_for_other_names_fails_the_host_name_check(certs: Path, tmp_path: Path) -> None:
-    assert main(["cert", "--dir", str(certs), "--name", "elsewhere.example"]) == 0
-    server = EditorServer(
-        "127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(certs / "elsewhere.example.pem", certs / "elsewhere.example-key.pem")
-    )
+    made = make_certificates(tmp_path / "other", ["elsewhere.example"])
+    server = EditorServer("127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(made.cert, made.key))
     server.start()
     try:
         with pytest.raises(urllib.error.URLError, match="match|mismatch"):
-            urllib.request.urlopen(server.url, context=ssl.create_default_context(cafile=certs / CA_CERT), timeout=30)
+            urllib.request.urlopen(server.url, context=ssl.create_default_context(cafile=made.ca_cert), timeout=30)
     finally:
         server.stop()
 
@@ -101,7 +103,7 @@ def _backend() -> tuple[socket.socket, threading.Thread]:
 
 def test_a_websocket_passes_through_the_https_front_door_byte_for_byte(certs: Path) -> None:
     listener, thread = _backend()
-    tls = server_context(certs / "localhost.pem", certs / "localhost-key.pem")
+    tls = server_context(certs / SERVER_CERT, certs / SERVER_KEY)
     door = FrontDoor("127.0.0.1", 0, "secret", {"console": listener.getsockname()[1]}, lambda role: {}, tls=tls)
     door.start()
     try:
@@ -127,18 +129,26 @@ def test_a_websocket_passes_through_the_https_front_door_byte_for_byte(certs: Pa
         thread.join(timeout=10)
 
 
+def test_the_researcher_is_told_when_the_printed_address_will_not_work_for_a_headset(certs: Path) -> None:
+    assert address_notes("localhost", "") == []
+    assert "plain http on 192.168.1.20" in address_notes("192.168.1.20", "")[0]
+    assert address_notes("127.0.0.1", str(certs / SERVER_CERT)) == []
+    (warning,) = address_notes("10.9.9.9", str(certs / SERVER_CERT))
+    assert warning.startswith("warning: the certificate") and "does not name 10.9.9.9" in warning
+
+
 def test_tls_files_that_are_wrong_are_one_line(certs: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert tls_files(None, None) is None
     with pytest.raises(ValueError, match="go together"):
-        tls_files(str(certs / "localhost.pem"), None)
+        tls_files(str(certs / SERVER_CERT), None)
     with pytest.raises(ValueError, match="--tls-key .*: no such file"):
-        tls_files(str(certs / "localhost.pem"), str(tmp_path / "missing.pem"))
+        tls_files(str(certs / SERVER_CERT), str(tmp_path / "missing.pem"))
     with pytest.raises(ValueError, match="not a certificate and its key"):  # another certificate's key
-        server_context(certs / "localhost.pem", certs / CA_KEY)
+        server_context(certs / SERVER_CERT, certs / CA_KEY)
     not_pem = tmp_path / "notes.txt"
     not_pem.write_text("hello\n")
     with pytest.raises(ValueError, match="not a certificate and its key"):
-        server_context(not_pem, certs / "localhost-key.pem")
-    assert main(["edit", "--port", "0", "--tls-cert", str(not_pem), "--tls-key", str(certs / "localhost-key.pem")]) == 2
+        server_context(not_pem, certs / SERVER_KEY)
+    assert main(["edit", "--port", "0", "--tls-cert", str(not_pem), "--tls-key", str(certs / SERVER_KEY)]) == 2
     err = capsys.readouterr().err.strip()
     assert err.count("\n") == 0 and "not a certificate and its key" in err, err

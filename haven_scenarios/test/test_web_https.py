@@ -53,11 +53,11 @@ def test_over_https_a_browser_that_trusts_the_lab_authority_is_offered_enter_vr(
     address = lan_address() or "127.0.0.1"
     host = "0.0.0.0" if address != "127.0.0.1" else "127.0.0.1"
     certs = tmp_path / "tls"
-    assert haven(["cert", "--dir", str(certs), "--name", address, "--name", "localhost"]) == 0
+    assert haven(["cert", "--dir", str(certs), "--name", address]) == 0
     emulator = tmp_path / "xr_emulator.js"
     subprocess.run(["node", "build.mjs", "--xr-emulator", str(emulator)], cwd=WEB_SOURCES, check=True, timeout=120)
     argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--host", host, "--port", "0", "--sessions", str(tmp_path / "s")]
-    trial = WebTrial(ros, [*argv, "--tls-cert", str(certs / f"{address}.pem"), "--tls-key", str(certs / f"{address}-key.pem")])
+    trial = WebTrial(ros, [*argv, "--tls-cert", str(certs / "haven-server.pem"), "--tls-key", str(certs / "haven-server-key.pem")])
     plain = ThreadingHTTPServer((host, 0), _Blank)  # today's page over http from the same address, for contrast
     threading.Thread(target=plain.serve_forever, daemon=True).start()
     trusted = spki_hash((certs / "haven-ca.pem").read_bytes())

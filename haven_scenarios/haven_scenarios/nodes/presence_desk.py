@@ -19,7 +19,7 @@ from haven_scenarios.study.rules import TrialCommand, TrialState
 from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_scenarios.web.access import PARTICIPANTS
 from haven_scenarios.web.presence import Act, Attendance
-from haven_sim.common.events import Event
+from haven_sim.common.events import Event, EventKind
 
 TABLE_PERIOD_S = 1.0
 
@@ -55,9 +55,11 @@ class PresenceDesk:
                 return
             wall = time.monotonic()
             if opened:
-                self._do(*self.attendance.opened(role, wall, self.now()))
+                events, acts = self.attendance.opened(role, wall, self.now())
             else:
-                self._do(*self.attendance.closed(role, wall, self.now(), self.running))
+                events, acts = self.attendance.closed(role, wall, self.now(), self.running)
+            if self.state != TrialState.ENDED.value:  # (after the trial: the console's table only, not the study log)
+                self._do(events, acts)
             self._table()
 
     def report(self, who: str, text: str) -> str | None:
@@ -85,8 +87,9 @@ class PresenceDesk:
     def _do(self, events: list[Event], acts: list[Act]) -> None:
         self.log(events)
         for act in acts:
-            if act is Act.ABORT:
-                self.control(TrialCommand.ABORT)
+            if act is Act.ABORT:  # (trial_end says it was the drop-out policy, and whose)
+                gone = [e["by"] for e in events if e.kind in (EventKind.PARTICIPANT_LOST, EventKind.PARTICIPANT_DISCONNECTED)]
+                self.control(f"{TrialCommand.ABORT} dropout:{gone[0] if gone else 'participant'}")
                 continue
             if not self.pause_client.service_is_ready():
                 self.node.get_logger().warning(f"cannot {act} the trial: the simulator's /haven/pause is not there")

@@ -54,10 +54,10 @@ from haven_scenarios.web.access import (
     urls,
 )
 from haven_scenarios.web.door_hello import BackendGuard
-from haven_scenarios.web.front_door import FrontDoor
+from haven_scenarios.web.front_door import FrontDoor, address_for_others
 from haven_scenarios.web.page_config import PageSettings, page_config
 from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, Attendance, OnDisconnect
-from haven_scenarios.web.tls import server_context
+from haven_scenarios.web.tls import address_notes, server_context
 from haven_scenarios.web.wizard import StartGate, Wizard
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import Event, EventKind, Sequencer, Source, event
@@ -139,8 +139,14 @@ class WebNode(Node):
             on_socket=self.presence.socket,
         )
         self.door.start()
+        self._say_addresses(host, humans, researcher_start, tls_cert)
+
+    def _say_addresses(self, host: str, humans: list[str], researcher_start: bool, tls_cert: str) -> None:
+        """Each page's address, what would keep a headset from using it, and when the trial starts."""
         for name, url in urls(self.door.base_url(host), self.secret, humans).items():
             print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)
+        for note in address_notes(address_for_others(host), tls_cert):
+            print(f"web: {note}", flush=True)
         when = "on the console's Start" if researcher_start or not humans else f"when {', '.join(humans)} pressed Start (or on the console's)"
         print(f"web: the trial starts {when}", flush=True)
 

@@ -222,11 +222,10 @@ class TrialDirector:
         return []
 
     def on_control(self, text: str, now: float) -> list[Message]:
-        """The researcher's start, stop or abort (anything else is refused with a ValueError)."""
-        try:
-            command = TrialCommand(text.strip().lower())
-        except ValueError:
-            raise ValueError(f"unknown trial command {text!r} (expected {', '.join(TrialCommand)})") from None
+        """The researcher's start, stop or abort, optionally followed by who asked (`abort
+        dropout:h1`: the web node's drop-out policy; default `researcher`); anything else is refused
+        with a ValueError."""
+        command, by = TrialCommand.parse(text)
         if command is TrialCommand.START:
             self.held = False
             return []
@@ -234,7 +233,7 @@ class TrialDirector:
             return []
         started = self.start_time is not None
         self.ended = EndReason.STOPPED if command is TrialCommand.STOP and started else EndReason.ABORTED
-        return [self._event(EventKind.TRIAL_END, now, reason=self.ended, by="researcher")] + self._status_messages(now)
+        return [self._event(EventKind.TRIAL_END, now, reason=self.ended, by=by)] + self._status_messages(now)
 
     def status(self, now: float) -> dict[str, Any]:
         """The trial as a participant's page and the researcher console show it (data, not text):

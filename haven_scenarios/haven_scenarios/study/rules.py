@@ -11,6 +11,7 @@ that becomes one JSON object on /haven/events).
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from enum import StrEnum
@@ -158,6 +159,22 @@ class TrialCommand(StrEnum):
     START = "start"  # begin a trial held for the researcher (`hold_start`)
     STOP = "stop"  # end it now: completed as far as it went
     ABORT = "abort"  # end it now: called off
+
+    @staticmethod
+    def parse(text: str) -> tuple[TrialCommand, str]:
+        """A command and who asked (`abort dropout:h1`; default `researcher`); ValueError in one line."""
+        word, _, by = text.strip().partition(" ")
+        try:
+            command = TrialCommand(word.lower())
+        except ValueError:
+            raise ValueError(f"unknown trial command {text!r} (expected {', '.join(TrialCommand)})") from None
+        by = by.strip() or "researcher"
+        if not _BY.match(by):
+            raise ValueError(f"trial command {text[:80]!r}: who asked must be letters, digits, '_', ':' or '-' (up to 64)")
+        return command, by
+
+
+_BY = re.compile(r"^[A-Za-z0-9_:-]{1,64}$")  # who asked for a trial command (trial_end's `by`)
 
 
 @dataclass(frozen=True)

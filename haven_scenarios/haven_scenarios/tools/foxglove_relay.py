@@ -15,6 +15,7 @@ capability) and, for the researcher console, set parameters, as a `ClientSink` a
 from __future__ import annotations
 
 import hmac
+import logging
 import threading
 from collections import Counter, deque
 from collections.abc import Callable
@@ -36,6 +37,11 @@ def msgdef(msgtype: str) -> str:
 
 
 MAX_CHANNELS_PER_CLIENT = 16  # a page advertises at most 4
+
+# foxglove-sdk logs (through Python's logging) every client that leaves without a WebSocket close
+# frame: each closed tab, lost network and connection the front door's guard cuts. Those are the
+# participants' business, said by the web node where it matters (web/presence.py), not an error.
+logging.getLogger("foxglove.websocket.connected_client.poller").setLevel(logging.CRITICAL)
 
 
 class ClientSink(Protocol):

@@ -76,6 +76,7 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
 
 SWEEP_PERIOD_S = 1.0  # how often connections that skipped the door are looked for (and on their first request)
 MAX_ANSWER_HEAD = 16384  # a role server's answer to the upgrade: its headers within this
+TLS_HANDSHAKE = b"\x16"  # the first byte of every TLS connection (a handshake record, RFC 8446 5.1)
 REQUEST_TIMEOUT_S = 10.0  # a request's headers must come within this (a client that sends them slowly is cut off)
 
 
@@ -96,11 +97,20 @@ class _Server(ThreadingHTTPServer):
     def scheme(self) -> str:
         return "https" if self.tls is not None else "http"
 
-    def get_request(self) -> tuple[socket.socket, Any]:
-        sock, address = super().get_request()
+    def finish_request(self, request: Any, client_address: Any) -> None:
+        """(In the request's own thread.) Over HTTPS: a plain-http request gets one line saying to use
+        https, anything else its TLS handshake."""
         if self.tls is not None:
-            sock = self.tls.wrap_socket(sock, server_side=True, do_handshake_on_connect=False)
-        return sock, address
+            request.settimeout(REQUEST_TIMEOUT_S)
+            if request.recv(1, socket.MSG_PEEK)[:1] not in (TLS_HANDSHAKE, b""):
+                body = b"this address is served over HTTPS: open it with https://"
+                request.sendall(b"HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n")
+                request.sendall(b"Content-Length: %d\r\n\r\n%s" % (len(body), body))
+                return
+            with self.tls.wrap_socket(request, server_side=True) as secure:  # (the handshake, under the timeout)
+                super().finish_request(secure, client_address)
+            return
+        super().finish_request(request, client_address)
 
     def handle_error(self, request: Any, client_address: Any) -> None:
         e = sys.exc_info()[1]

@@ -29,7 +29,7 @@ INSTRUCTIONS = {
         "Collect the red gems: walk into a gem's red circle and stand still until it is collected. The robot collects the blue gems in the same room."
     ),
 }
-CONTROLS = "W / S or ↑ / ↓: walk forward and back · A / D or ← / →: turn · Q / E: step sideways · a gamepad works too"
+CONTROLS = "W / S or ↑ / ↓: walk forward and back · A / D or ← / →: turn · Q / E: step sideways · R / F: look up and down · a gamepad works too"
 
 
 @dataclass(frozen=True)

@@ -162,7 +162,7 @@ class Attendance:
             rows[who] = {
                 "state": state,
                 "away_s": round(wall - p.away_since, 1) if p.away_since is not None else None,
-                **{k: p.report.get(k) for k in REPORTED},
+                **{k: p.report.get(k) if p.sockets else None for k in REPORTED},  # (an away page reports nothing)
                 "report_age_s": round(wall - p.reported_at, 1) if p.reported_at is not None else None,
             }
         return {"paused": self.paused, "on_disconnect": str(self.on_disconnect), "participants": rows}

@@ -16,6 +16,7 @@ from __future__ import annotations
 import datetime
 import ipaddress
 import os
+import re
 import socket
 import ssl
 from collections.abc import Sequence
@@ -28,6 +29,7 @@ from cryptography.hazmat.primitives.asymmetric import ec
 from cryptography.x509.oid import ExtendedKeyUsageOID, NameOID
 
 CA_CERT, CA_KEY = "haven-ca.pem", "haven-ca-key.pem"
+SERVER_CERT, SERVER_KEY = "haven-server.pem", "haven-server-key.pem"  # (made again each time: the names may have changed)
 CA_DAYS = 3650  # the lab's authority: ten years (a headset trusts it once)
 # A server certificate's lifetime: at most 398 days, the limit Chrome and Safari enforce for
 # certificates (Apple, "About upcoming limits on trusted certificates", 2020; CA/Browser Forum
@@ -61,6 +63,22 @@ def tls_files(cert: str | None, key: str | None) -> tuple[str, str] | None:
     return str(Path(cert).resolve()), str(Path(key).resolve())
 
 
+def address_notes(shown: str, cert: str) -> list[str]:
+    """What to tell the researcher about the address the pages are printed with (`shown`): served
+    without a certificate beyond this machine, a browser treats them as insecure; with one that does
+    not name the address, it refuses them."""
+    if not cert:
+        if shown in ("localhost", "127.0.0.1", "::1"):
+            return []
+        return [
+            f"plain http on {shown}: browsers on other devices treat the pages as insecure (no Enter VR) and the tokens "
+            "travel in clear text; serve HTTPS (haven cert, then --tls-cert and --tls-key)"
+        ]
+    if shown in names_of(cert):
+        return []
+    return [f"warning: the certificate {cert} does not name {shown}: browsers will refuse the pages; run haven cert again (docs/howto/https.md)"]
+
+
 def this_machines_names() -> list[str]:
     """The names another device may reach this machine by: localhost, the loopback addresses, the
     host name (and its .local mDNS name) and the address other machines see."""
@@ -90,6 +108,9 @@ def make_certificates(folder: Path, names: Sequence[str], now: datetime.datetime
 
     if not names:
         raise ValueError("haven cert: no name or address to certify")
+    bad = [n for n in names if not _nameable(n)]
+    if bad:
+        raise ValueError(f"haven cert: --name {bad[0]!r} is neither a host name (letters, digits, '-', dots) nor an IP address")
     folder.mkdir(parents=True, exist_ok=True)
     now = now or datetime.datetime.now(datetime.timezone.utc)
     ca_cert_path, ca_key_path = folder / CA_CERT, folder / CA_KEY
@@ -110,8 +131,7 @@ def make_certificates(folder: Path, names: Sequence[str], now: datetime.datetime
         ca_key = loaded
     key = ec.generate_private_key(ec.SECP256R1())
     cert = _server(key, ca_key, ca_cert, names, now)
-    stem = _safe_stem(names[0])
-    cert_path, key_path = folder / f"{stem}.pem", folder / f"{stem}-key.pem"
+    cert_path, key_path = folder / SERVER_CERT, folder / SERVER_KEY
     _write_key(key_path, key)
     cert_path.write_bytes(
         cert.public_bytes(serialization.Encoding.PEM) + ca_cert.public_bytes(serialization.Encoding.PEM)
@@ -184,5 +204,23 @@ def _write_key(path: Path, key: ec.EllipticCurvePrivateKey) -> None:
     os.chmod(path, 0o600)  # (an existing file keeps its mode through O_CREAT)
 
 
-def _safe_stem(name: str) -> str:
-    return "".join(c if c.isalnum() or c in "-." else "_" for c in name)[:64] or "server"
+_LABEL = re.compile(r"^(?!-)[A-Za-z0-9-]{1,63}(?<!-)$")
+
+
+def _nameable(name: str) -> bool:
+    """An IP address, or a DNS name of RFC 1123 labels (what a certificate's names may be)."""
+    try:
+        ipaddress.ip_address(name)
+        return True
+    except ValueError:
+        return 0 < len(name) <= 253 and all(_LABEL.match(label) for label in name.rstrip(".").split("."))
+
+
+def names_of(cert: str | os.PathLike[str]) -> list[str]:
+    """The host names and addresses a certificate (PEM, its first) is for."""
+    first = x509.load_pem_x509_certificates(Path(cert).read_bytes())[0]
+    try:
+        alt = first.extensions.get_extension_for_class(x509.SubjectAlternativeName).value
+    except x509.ExtensionNotFound:
+        return []
+    return [*alt.get_values_for_type(x509.DNSName), *(str(a) for a in alt.get_values_for_type(x509.IPAddress))]

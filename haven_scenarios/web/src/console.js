@@ -150,7 +150,7 @@ function showThought() {
   document.getElementById("thought-now").textContent = shown
     ? `bubble shows: "${shown}"`
     : state.thought
-      ? `robot thinks: "${state.thought}" (not shown: nobody near, or the cue is off)`
+      ? `robot thinks: "${state.thought}" (not shown: ${state.toggles && state.toggles.thought_bubble === false ? "the thought bubble is off in this condition: switch it on to show text" : "nobody near"})`
       : "robot thinks: nothing yet";
 }
 showStatus();

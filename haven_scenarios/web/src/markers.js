@@ -116,6 +116,8 @@ function drawOnTop(object) {
   });
 }
 
+const LEGIBLE_M = 4; // text as big as it is at this distance, however far away (a thought bubble's: readable at 3-4 m)
+
 export class MarkerLayer {
   // options: {hide: Set of namespaces drawn otherwise, stretchZ: {ns: factor}, lift: {ns: z},
   // bubbles: Set of namespaces whose text is drawn on its own white label, facing the viewer, in
@@ -180,7 +182,9 @@ export class MarkerLayer {
 
   // The namespaces that face the viewer (the battery gauge and the thought bubble, as in HAVEN):
   // each is turned about its first marker so that its x axis runs left to right across the view.
-  face(camera, namespaces) {
+  // `legible`: namespaces whose text grows with distance beyond LEGIBLE_M, so it reads the same from
+  // afar (a thought the researcher shows at any distance).
+  face(camera, namespaces, legible = new Set()) {
     const eye = new THREE.Vector3();
     camera.getWorldPosition(eye);
     const groups = new Map();
@@ -199,6 +203,10 @@ export class MarkerLayer {
         const d = o.userData.anchor.clone().sub(centre);
         o.position.set(centre.x + c * d.x - s * d.y, centre.y + s * d.x + c * d.y, o.userData.anchor.z);
         if (o.userData.type !== TEXT && o.userData.type !== SPHERE) o.rotation.set(0, 0, yaw);
+        if (o.isSprite && legible.has(o.userData.ns)) {
+          o.userData.size ||= o.scale.clone();
+          o.scale.copy(o.userData.size).multiplyScalar(Math.max(1, eye.distanceTo(o.position) / LEGIBLE_M));
+        }
       }
     }
   }

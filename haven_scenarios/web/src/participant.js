@@ -42,6 +42,7 @@ const world = new MarkerLayer(scene, { stretchZ: { walls: stretch, obstructions:
 state.quality = quality(cfg);
 const dressed = dressScene({ level: state.quality, renderer, sun, floor, grid, world, bounds: cfg.bounds, wallHeight: cfg.view_wall_height_m });
 const FACING = new Set(["thought_bubble", "battery_indicator"]);
+const LEGIBLE = new Set(["thought_bubble"]); // shown far away only when the researcher asks: then readable there
 // (bodies come from the poses; the bubble and the gauge are never hidden by a wall: a 2 m hallway clipped them)
 const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]), onTop: FACING });
 let robot = robotBody(cfg.robot);
@@ -288,7 +289,7 @@ renderer.setAnimationLoop((time) => {
     rig.rotation.z = state.pose.yaw;
   }
   scene.updateMatrixWorld();
-  cues.face(renderer.xr.isPresenting ? renderer.xr.getCamera() : camera, FACING);
+  cues.face(renderer.xr.isPresenting ? renderer.xr.getCamera() : camera, FACING, LEGIBLE);
   renderer.render(scene, camera);
   state.frames++;
   // (from the matrix the frame was drawn with: getWorldDirection would recompute an XR camera's

@@ -76,6 +76,8 @@ class SimNode(ComponentNode):
         return self.sim.sim.time
 
     def _tick(self) -> None:
+        if self.clock.paused:  # (not even the steps a busy machine still owes)
+            return
         for _ in range(self.pacer.due_steps(self.clock.now())):
             self.sim.advance()
             self.publish(self.sim.sense())

@@ -20,7 +20,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         action="append",
         default=None,
         metavar="NAME",
-        help="a host name or IP address the pages are opened by (repeat; default: this machine's names and addresses)",
+        help="one more host name or IP address the pages are opened by, beside this machine's names and addresses (repeat)",
     )
     cert.set_defaults(func=cert_cmd)
 
@@ -28,7 +28,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
 def cert_cmd(args: argparse.Namespace) -> int:
     from haven_scenarios.web.tls import make_certificates, this_machines_names  # (cryptography loads only here)
 
-    names = args.name or this_machines_names()
+    names = list(dict.fromkeys([*this_machines_names(), *(args.name or [])]))
     try:
         made = make_certificates(args.dir, names)
     except (ValueError, OSError) as e:

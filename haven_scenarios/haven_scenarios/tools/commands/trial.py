@@ -146,6 +146,8 @@ def request_of(args: argparse.Namespace) -> TrialRequest:
 
 
 def run_cmd(args: argparse.Namespace) -> int:
+    if not args.web and (args.tls_cert or args.tls_key):
+        return fail("--tls-cert and --tls-key serve the pages: they need --web")
     try:
         plan = plan_trial(request_of(args))
     except TrialError as e:
