@@ -259,7 +259,7 @@ def test_validate_checks_worlds_and_scenarios_without_starting_anything(tmp_path
     assert captured.out.splitlines() == [f"ok: {world} (world {load_world(world).name})"]
     assert captured.err.splitlines() == [
         f"haven: error: {bad}: timeout_s: must be a positive number, got inf",
-        f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key), a world (no 'walls' key), a study (no 'scenarios' key), "
+        f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key), a world (no 'walls' or 'map' key), a study (no 'scenarios' key), "
         "a robot (no 'kinematics' or 'extends' key) nor a parameter file (no 'ros__parameters')",
         "haven: error: /dev/zero: cannot read file: not a regular file",
     ]

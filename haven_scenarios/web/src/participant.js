@@ -39,7 +39,7 @@ scene.add(grid);
 
 const stretch = cfg.view_wall_height_m / cfg.marker_wall_height_m;
 const world = new MarkerLayer(scene, { stretchZ: { walls: stretch, obstructions: stretch }, lift: { rooms: cfg.view_wall_height_m - 0.3 } });
-state.quality = quality(cfg);
+state.quality = quality(cfg, renderer);
 const dressed = dressScene({ level: state.quality, renderer, sun, floor, grid, world, bounds: cfg.bounds, wallHeight: cfg.view_wall_height_m });
 const FACING = new Set(["thought_bubble", "battery_indicator"]);
 const LEGIBLE = new Set(["thought_bubble"]); // shown far away only when the researcher asks: then readable there

@@ -1,8 +1,9 @@
 // The participant's scene beyond the diagram: a floor and walls with texture and, at the highest
 // quality, soft shadows. Textures are drawn here on canvases (nothing downloaded, nothing to
 // license). The researcher picks the quality for each device (`&quality=` on the participant's
-// address): `low` is the plain scene (the fastest on a machine without a GPU), `standard` (the
-// default) adds the textures, `high` adds soft shadows from the ceiling light.
+// address): `low` is the plain scene (the fastest on a machine without a GPU), `standard` adds the
+// textures, `high` adds soft shadows from the ceiling light. Without a choice: `standard`, or `low`
+// where the browser draws in software (no GPU: SwiftShader, llvmpipe), which textures halve.
 import * as THREE from "three";
 
 export const QUALITIES = ["low", "standard", "high"];
@@ -50,9 +51,19 @@ function wallTexture() {
   });
 }
 
-export function quality(cfg) {
-  const asked = new URLSearchParams(location.search).get("quality") || cfg.quality || "standard";
-  return QUALITIES.includes(asked) ? asked : "standard";
+const SOFTWARE = /swiftshader|llvmpipe|softpipe|software/i;
+
+// The WebGL renderer's name, where the browser tells it (a software one means no GPU).
+export function rendererName(renderer) {
+  const gl = renderer.getContext();
+  const info = gl.getExtension("WEBGL_debug_renderer_info");
+  return String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER) || "");
+}
+
+export function quality(cfg, renderer) {
+  const asked = new URLSearchParams(location.search).get("quality") || cfg.quality;
+  if (QUALITIES.includes(asked)) return asked;
+  return SOFTWARE.test(rendererName(renderer)) ? "low" : "standard";
 }
 
 // Dress the scene for the quality: the floor's and the walls' materials (walls: the world layer's
