@@ -101,28 +101,12 @@ function build(m, options) {
   }
 }
 
-// Drawn after, and over, everything else: no depth test (a wall in front does not hide it). Shared
-// materials are copied first, so other markers of the same colour keep theirs.
-function drawOnTop(object) {
-  object.traverse((o) => {
-    if (!o.material) return;
-    if (!o.isSprite) {
-      o.material = o.material.clone();
-      o.userData.ownMaterial = true;
-    }
-    o.material.depthTest = false;
-    o.material.depthWrite = false;
-    o.renderOrder = 10;
-  });
-}
-
 const LEGIBLE_M = 4; // text as big as it is at this distance, however far away (a thought bubble's: readable at 3-4 m)
 
 export class MarkerLayer {
   // options: {hide: Set of namespaces drawn otherwise, stretchZ: {ns: factor}, lift: {ns: z},
   // bubbles: Set of namespaces whose text is drawn on its own white label, facing the viewer, in
   // place of the namespace's other markers (the viz node's backdrop, which suits a top-down view),
-  // onTop: Set of namespaces drawn over everything else (a bubble or a gauge a wall would clip),
   // materials: {ns: material} in place of the markers' colours (textures: scenery.js),
   // shadows: the markers cast and receive shadows}
   constructor(parent, options = {}) {
@@ -149,7 +133,6 @@ export class MarkerLayer {
       object.position.set(p.x, p.y, lift !== undefined ? lift : p.z);
       if (m.type !== TEXT) object.quaternion.set(q.x, q.y, q.z, q.w);
       object.userData = { ns: m.ns, id: m.id, type: m.type, anchor: object.position.clone(), scale: m.scale };
-      if (this.options.onTop && this.options.onTop.has(m.ns)) drawOnTop(object);
       if (this.options.shadows) object.traverse((o) => o.isMesh && (o.castShadow = o.receiveShadow = true));
       this.group.add(object);
       this.objects.set(key, { object, marker: m });
@@ -161,7 +144,6 @@ export class MarkerLayer {
     if (!entry) return;
     this.group.remove(entry.object);
     entry.object.traverse((o) => {
-      if (o.userData.ownMaterial) o.material.dispose();
       if (o.isSprite) o.material.map.dispose(), o.material.dispose();
       else if (o.geometry && ![box, ball, tube].includes(o.geometry)) o.geometry.dispose();
     });

@@ -43,8 +43,7 @@ state.quality = quality(cfg, renderer);
 const dressed = dressScene({ level: state.quality, renderer, sun, floor, grid, world, bounds: cfg.bounds, wallHeight: cfg.view_wall_height_m });
 const FACING = new Set(["thought_bubble", "battery_indicator"]);
 const LEGIBLE = new Set(["thought_bubble"]); // shown far away only when the researcher asks: then readable there
-// (bodies come from the poses; the bubble and the gauge are never hidden by a wall: a 2 m hallway clipped them)
-const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]), onTop: FACING });
+const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]) }); // bodies come from the poses
 let robot = robotBody(cfg.robot);
 robot.visible = false;
 scene.add(robot);
@@ -265,7 +264,7 @@ window.havenShowRobot = (desc, at, eye, pitch = 0) => {
 window.havenOthers = () => Object.fromEntries([...others].map(([id, a]) => [id, { x: a.position.x, y: a.position.y }]));
 window.havenMarker = (ns, id) => {
   const e = cues.objects.get(`${ns}/${id}`);
-  return e ? { x: e.object.position.x, y: e.object.position.y, z: e.object.position.z, onTop: e.object.renderOrder === 10 } : null;
+  return e ? { x: e.object.position.x, y: e.object.position.y, z: e.object.position.z } : null;
 };
 
 // -- every frame -----------------------------------------------------------------------------------
