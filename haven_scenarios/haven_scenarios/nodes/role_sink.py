@@ -5,6 +5,7 @@ when the role may set them; and the publishers such messages go out on."""
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable
 
 from foxglove import Parameter as FoxgloveParameter
@@ -40,8 +41,15 @@ class RoleSink:
         return self.cues.set(parameters) if self.role.parameters else []
 
 
+MATCH_WAIT_S = 1.0  # a new publisher waits this long at most for the readers the graph already shows
+
+
 class TablePublishers:
-    """Publishers made as clients first send on a topic, with the topic table's type and QoS."""
+    """Publishers made as clients first send on a topic, with the topic table's type and QoS. A new
+    one waits (briefly) until it has matched the readers the graph already shows, as `ros2 topic
+    pub` waits for matching subscriptions: a page's or Foxglove's first message (a goal, a Start)
+    would otherwise go out before DDS has matched its readers, and a volatile reader never gets it.
+    (Called from the Foxglove servers' threads, never the node's executor.)"""
 
     def __init__(self, node: Node, table: dict[str, TopicSpec]) -> None:
         self.node, self.table = node, table
@@ -50,5 +58,9 @@ class TablePublishers:
     def __call__(self, topic: str) -> Publisher:
         if topic not in self.pubs:
             spec = self.table[topic.lstrip("/")]
-            self.pubs[topic] = self.node.create_publisher(spec.msg_type, topic, spec.pub_qos)
+            pub = self.node.create_publisher(spec.msg_type, topic, spec.pub_qos)
+            deadline = time.monotonic() + MATCH_WAIT_S
+            while pub.get_subscription_count() < self.node.count_subscribers(topic) and time.monotonic() < deadline:
+                time.sleep(0.01)
+            self.pubs[topic] = pub
         return self.pubs[topic]
