@@ -96,10 +96,33 @@ class WebTrial:
         return line.split(" in ", 1)[1].split(" (")[0]
 
 
-def listening_ports(module):
-    """The TCP ports on 127.0.0.1 a node (by its module in the command line) listens on, read from
-    /proc (proc(5)): the process's socket inodes matched against the kernel's LISTEN rows."""
-    pids = [p for p in os.listdir("/proc") if p.isdigit() and module in open(f"/proc/{p}/cmdline", "rb").read().decode(errors="replace")]
+def descendants(pid):
+    """`pid`'s processes below it (from /proc's parent pids)."""
+    children = {}
+    for p in (p for p in os.listdir("/proc") if p.isdigit()):
+        try:
+            children.setdefault(int(open(f"/proc/{p}/stat").read().rsplit(")", 1)[1].split()[1]), []).append(int(p))
+        except (OSError, IndexError, ValueError):
+            continue
+    out, todo = [], list(children.get(pid, []))
+    while todo:
+        p = todo.pop()
+        out.append(p)
+        todo += children.get(p, [])
+    return out
+
+
+def listening_ports(parent, module):
+    """The TCP ports on 127.0.0.1 a node of this trial (by its module in the command line, below the
+    `haven run` process `parent`) listens on, read from /proc (proc(5)): the process's socket inodes
+    matched against the kernel's LISTEN rows."""
+    pids = []
+    for p in descendants(parent):
+        try:
+            if module in open(f"/proc/{p}/cmdline", "rb").read().decode(errors="replace"):
+                pids.append(p)
+        except OSError:
+            continue
     ports = set()
     for pid in pids:
         inodes = set()
@@ -197,7 +220,7 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     console.wait_for_function("s => (s = window.havenState) && s.toggles && s.trial", timeout=PAGE_TIMEOUT_MS)
 
     # Around the door: each role's server on 127.0.0.1 refuses a connection that skipped it.
-    backends = listening_ports("haven_scenarios.nodes.web_node") - {int(urlsplit(console_url).port)}
+    backends = listening_ports(trial.proc.pid, "haven_scenarios.nodes.web_node") - {int(urlsplit(console_url).port)}
     assert len(backends) == 2, backends  # the console's and h1's
     try_the_backends_directly(backends)
     assert console.evaluate("havenState.toggles.thought_bubble") is True and page.evaluate("havenState.trial.state") == "held"

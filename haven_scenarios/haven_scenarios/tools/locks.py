@@ -104,11 +104,24 @@ def _open(path: Path) -> int:
     return os.open(path, os.O_RDONLY)
 
 
+HOLDER_WAIT_S = 0.5  # a holder writes who it is just after it takes the lock: a taker that finds the file empty waits this long for it
+
+
 def read_holder(path: Path) -> Holder:
-    try:
-        d = json.loads(path.read_text(encoding="utf-8", errors="replace")[:1000])
-    except (OSError, ValueError):
-        d = None
+    d = None
+    deadline = time.monotonic() + HOLDER_WAIT_S
+    while True:
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")[:1000]
+        except OSError:
+            break
+        if text.strip() or time.monotonic() >= deadline:
+            try:
+                d = json.loads(text)
+            except ValueError:
+                d = None
+            break
+        time.sleep(0.01)
     if not isinstance(d, dict):
         return Holder(None, "", "")
     pid = d.get("pid")
