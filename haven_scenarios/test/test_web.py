@@ -379,7 +379,7 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
     """Real Foxglove servers behind the real door: a page's socket through the door publishes and sets
     parameters; a client that connects to the server's port directly is served nothing and its
     connection is closed (the guard's sweep), whatever it sends first."""
-    from websockets.exceptions import ConnectionClosed
+    from websockets.exceptions import ConnectionClosed, InvalidHandshake
     from websockets.sync.client import connect
 
     from haven_scenarios.tools.foxglove_relay import DoorCheck, FoxgloveRelay
@@ -390,15 +390,17 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
     d = FrontDoor("127.0.0.1", 0, SECRET, {CONSOLE: server.port}, lambda role: {}, guard=guard)
     d.start()
     try:
-        with connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as direct:
-            _publish_and_set(direct, b"direct")
-            with pytest.raises(ConnectionClosed):  # closed by the server, not by us (a limit, not a wait)
+        # Closed by the server (a limit, not a wait): after its first requests, or during its handshake
+        # already where the periodic sweep comes first (a busy machine).
+        with pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)):
+            with connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as direct:
+                _publish_and_set(direct, b"direct")
                 while True:
                     direct.recv(timeout=60)
         deadline = time.monotonic() + 60
         while guard.cut < 1 and time.monotonic() < deadline:  # (the sweeping thread counts just after the shutdown)
             time.sleep(0.01)
-        assert guard.cut >= 1 and any("did not come through the front door" in r for r in sink.refusals), sink.refusals
+        assert guard.cut >= 1 and all("did not come through the front door" in r for r in sink.refusals), sink.refusals
         with connect(f"ws://127.0.0.1:{d.port}/ws/console?token={CON}", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as page:
             _publish_and_set(page, b"through the door")
             deadline = time.monotonic() + 60
@@ -406,8 +408,8 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
                 time.sleep(0.01)
         assert sink.messages == [("/cmd_vel_teleop", b"through the door")]  # the direct client's never arrived
         assert len(sink.parameter_sets) == 1
-        with connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as lurker:  # asks for nothing
-            with pytest.raises(ConnectionClosed):  # the door's periodic sweep closes it too
+        with pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)):  # the periodic sweep closes it too
+            with connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as lurker:  # asks for nothing
                 while True:
                     lurker.recv(timeout=60)
     finally:
