@@ -4,6 +4,7 @@ import asyncio
 import json
 import socket
 import struct
+import threading
 
 import pytest
 import websockets
@@ -92,16 +93,17 @@ def test_bridge_is_local_by_default():
     assert args.host == "127.0.0.1" and args.port == 8765
 
 
-async def foxglove_client(port, goal_cdr, timeout_s=30.0):
+async def foxglove_client(port, goal_cdr, goal_arrived, timeout_s=45.0):
     """As Foxglove's app does: read the server's capabilities and time, flip a cue toggle from the
-    Parameters panel, publish a goal (allowed) and try a topic that is not."""
+    Parameters panel, publish a goal (allowed) and try a topic that is not. Stays connected until
+    `goal_arrived` is set (a client that leaves at once may take its last message with it)."""
     async with connect(port) as ws:
         seen = {"values": [], "status": [], "time": []}
         info = None
         sent = False
 
         def done():
-            return info and len(seen["values"]) >= 2 and seen["status"] and seen["time"]
+            return info and len(seen["values"]) >= 2 and seen["status"] and seen["time"] and goal_arrived.is_set()
 
         async for frame in frames(ws, timeout_s, done):
             if isinstance(frame, bytes):
@@ -143,7 +145,15 @@ def test_foxglove_parameters_panel_toggles_a_cue_and_clients_publish_only_the_al
     goal = PoseStamped()
     goal.header.frame_id = "map"
     goal.pose.position.x, goal.pose.position.y, goal.pose.orientation.w = 2.0, 3.0, 1.0
-    info, seen = asyncio.run(foxglove_client(port, bytes(serialize_message(goal))))
+    goal_arrived, answer = threading.Event(), {}
+    client = threading.Thread(target=lambda: answer.update(r=asyncio.run(foxglove_client(port, bytes(serialize_message(goal)), goal_arrived))))
+    client.start()
+    try:
+        ros.wait_for_messages(goals, 1, timeout_s=30.0)
+    finally:
+        goal_arrived.set()
+        client.join(60)
+    info, seen = answer["r"]
     assert {"parameters", "clientPublish", "time"} <= set(info["capabilities"])
     assert seen["values"][0]["/viz.thought_bubble"] is True and seen["values"][1]["/viz.thought_bubble"] is False
     assert any("may not publish on /cmd_vel" in s for s in seen["status"])  # refused: not on the allow-list
@@ -151,5 +161,4 @@ def test_foxglove_parameters_panel_toggles_a_cue_and_clients_publish_only_the_al
     future = viz.get_parameters(["thought_bubble"])
     ros.spin_until(future.done, 10)
     assert future.result().values[0].bool_value is False  # the viz node's own parameter changed
-    ros.wait_for_messages(goals, 1)
     assert (goals[0].pose.position.x, goals[0].pose.position.y) == (2.0, 3.0)

@@ -41,13 +41,13 @@ class RoleSink:
         return self.cues.set(parameters) if self.role.parameters else []
 
 
-MATCH_WAIT_S = 1.0  # a new publisher waits this long at most for the readers the graph already shows
+MATCH_WAIT_S = 1.0  # a new publisher waits this long at most for its readers
 
 
 class TablePublishers:
     """Publishers made as clients first send on a topic, with the topic table's type and QoS. A new
-    one waits (briefly) until it has matched the readers the graph already shows, as `ros2 topic
-    pub` waits for matching subscriptions: a page's or Foxglove's first message (a goal, a Start)
+    one waits (briefly) until it has matched the readers the graph already shows and at least one
+    other node's, as `ros2 topic pub` waits for a matching subscription: a page's or Foxglove's first message (a goal, a Start)
     would otherwise go out before DDS has matched its readers, and a volatile reader never gets it.
     (Called from the Foxglove servers' threads, never the node's executor.)"""
 
@@ -60,7 +60,14 @@ class TablePublishers:
             spec = self.table[topic.lstrip("/")]
             pub = self.node.create_publisher(spec.msg_type, topic, spec.pub_qos)
             deadline = time.monotonic() + MATCH_WAIT_S
-            while pub.get_subscription_count() < self.node.count_subscribers(topic) and time.monotonic() < deadline:
+            while pub.get_subscription_count() < self._readers(topic) and time.monotonic() < deadline:
                 time.sleep(0.01)
             self.pubs[topic] = pub
         return self.pubs[topic]
+
+    def _readers(self, topic: str) -> int:
+        """The readers to wait for: those the graph shows, and at least one that is not this node's
+        own (a relay reads every topic; a reader seen by nobody yet is still being discovered)."""
+        me = (self.node.get_name(), self.node.get_namespace())
+        own = sum((i.node_name, i.node_namespace) == me for i in self.node.get_subscriptions_info_by_topic(topic))
+        return max(self.node.count_subscribers(topic), own + 1)
