@@ -102,6 +102,7 @@ class WebNode(Node):
             map_inset=bool(self.declare_parameter("map_inset", True).value),
             questionnaires=questionnaires,
             teleoperated=tuple(humans),
+            next_url=str(self.declare_parameter("next_url", "").value),
         )
         self.roles = roles(humans)
         self.secret = os.environ.get(TOKEN_ENV) or new_token()

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from pathlib import Path
 
 from haven_scenarios.study.questionnaires import CHOICE, TEXT, Item, Questionnaire
 
@@ -125,3 +126,18 @@ class StudyInstruments:
 
     def __bool__(self) -> bool:
         return bool(self.first or self.after)
+
+
+def read_consent(path: Path, max_bytes: int) -> str:
+    """A consent file's text, read when the study is loaded (so a study runs with what it said);
+    ValueError (one line) when it is not a readable regular file of UTF-8 within `max_bytes`."""
+    if not path.is_file():  # (not a FIFO or a device, which would block or never end)
+        raise ValueError(f"{path} is not a readable regular file")
+    try:
+        with path.open("rb") as f:
+            raw = f.read(max_bytes + 1)
+        if len(raw) > max_bytes:
+            raise ValueError(f"{path} is longer than {max_bytes} bytes")
+        return raw.decode("utf-8")
+    except (OSError, UnicodeDecodeError) as e:
+        raise ValueError(f"cannot read {path}: {getattr(e, 'strerror', None) or e}") from None

@@ -19,6 +19,7 @@ consent: {file: consent.md}        # before anything: {text: ...} or a text file
 before_study: [demographics, nars]  # before the first trial, after consent (study/instruments.py)
 after_study: [preference]           # after the last trial: `preference` ranks the conditions
 robots: [turtlebot2, turtlebot4]    # a design factor (default: the scenario's robot); robot_design: between | within
+online: {completion_code: C1A2B3}   # `haven serve`: the landing page's text, the code or redirect at the end (study/online.py)
 ```
 
 Scenarios run as blocks, in the participant's counterbalanced block order (`blocks`), each showing
@@ -38,7 +39,8 @@ from pydantic import Field
 
 from haven_scenarios.record.session import check_name
 from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
-from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference
+from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference, read_consent
+from haven_scenarios.study.online import Online
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_scenarios.study.study_robots import StudyRobot, parse_robots
@@ -97,6 +99,7 @@ class Study:
     after_study: tuple[Any, ...] = ()  # ... and `preference`
     robots: tuple[StudyRobot, ...] = ()  # the robot as a design factor (); none: the scenario's own
     robot_design: str = "between"  # between | within (study/study_robots.py)
+    online: Online = Online()  # `haven serve` (study/online.py)
 
     def resolved_questionnaires(self) -> tuple[Questionnaire, ...]:
         return resolve(self.questionnaires, "questionnaires")
@@ -230,6 +233,7 @@ class StudyFile(FileModel):
     after_study: Annotated[list[Any], listing("a list of questionnaires (preference, ...)", non_empty=False)] = []
     robots: Annotated[list[Any], listing("a list of robots: names (haven robots) or robot files", non_empty=False)] = []
     robot_design: Literal["between", "within"] = "between"
+    online: Online | None = None
 
 
 class _StudyParser:
@@ -277,6 +281,7 @@ class _StudyParser:
             after_study=self.instruments(f.after_study, "after_study", (PREFERENCE,)),
             robots=parse_robots(f.robots, self.source, StudyError),
             robot_design=f.robot_design,
+            online=f.online or Online(),
         )
 
     def scenario(self, value: Any, key: str) -> StudyScenario:
@@ -371,17 +376,10 @@ class _StudyParser:
         text = value.text
         if value.file is not None:
             path = Path(value.file)
-            path = path if path.is_absolute() else Path(self.source).parent / path
-            if not path.is_file():  # (not a FIFO or a device, which would block or never end)
-                raise self.fail("consent.file", f"{path} is not a readable regular file")
             try:
-                with path.open("rb") as f:
-                    raw = f.read(4 * MAX_CONSENT_CHARS + 1)  # (UTF-8: at most 4 bytes a character)
-                if len(raw) > 4 * MAX_CONSENT_CHARS:
-                    raise self.fail("consent", f"the text must be 1..{MAX_CONSENT_CHARS} characters")
-                text = raw.decode("utf-8")
-            except (OSError, UnicodeDecodeError) as e:
-                raise self.fail("consent.file", f"cannot read {path}: {getattr(e, 'strerror', None) or e}") from None
+                text = read_consent(path if path.is_absolute() else Path(self.source).parent / path, 4 * MAX_CONSENT_CHARS)
+            except ValueError as e:
+                raise self.fail("consent.file", str(e)) from None
         text = (text or "").strip()
         if not text or len(text) > MAX_CONSENT_CHARS:
             raise self.fail("consent", f"the text must be 1..{MAX_CONSENT_CHARS} characters")

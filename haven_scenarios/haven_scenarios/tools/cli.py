@@ -21,6 +21,7 @@
     haven robots [NAME|FILE]                          the robots to choose from; one robot's figures and sources
     haven world show WORLD [--out PNG]                check a world file and draw it from above
     haven edit [WORLD] [--out DIR] [--host H] [--port P]   the world editor in the browser
+    haven serve STUDY [--capacity N] [--host H] [--port P]  a study for remote participants (panel ids, completion code)
 
 Discovery stays on this machine unless --network is given (study data stays local). Each group of
 subcommands lives in `haven_scenarios.tools.commands`.
@@ -43,11 +44,11 @@ class Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from haven_scenarios.tools.commands import batch_report, cert, clients, edit, files, recordings, robots, study, suite, trial, world
+    from haven_scenarios.tools.commands import batch_report, cert, clients, edit, files, recordings, robots, serve, study, suite, trial, world
 
     parser = Parser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)
-    for group in (suite, clients, trial, batch_report, study, recordings, files, robots, world, edit, cert):
+    for group in (suite, clients, trial, batch_report, study, recordings, files, robots, world, edit, cert, serve):
         group.add(sub)
     return parser
 

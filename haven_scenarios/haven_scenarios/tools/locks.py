@@ -50,10 +50,11 @@ class FileLock:
         self.path, self.what = Path(path), what or command_line()
         self.fd: int | None = None
 
-    def acquire(self) -> FileLock:
+    def acquire(self, wait: bool = False) -> FileLock:
+        """Take the lock (`wait`: block until the holder lets go, for short critical sections)."""
         fd = _open(self.path)
         try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            fcntl.flock(fd, fcntl.LOCK_EX | (0 if wait else fcntl.LOCK_NB))
         except OSError as e:
             os.close(fd)
             if e.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):

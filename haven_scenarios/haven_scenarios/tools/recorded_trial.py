@@ -132,6 +132,7 @@ class WebRequest:
     tls_key: str = ""
     on_disconnect: str = OnDisconnect.KEEP.value  # a participant's drop-out during the trial: keep | pause | abort
     reconnect_timeout_s: float = DEFAULT_RECONNECT_TIMEOUT_S  # with pause: abort after this long away
+    next_url: str = ""  # the participant's browser goes here when they are done with the page (`haven serve`)
 
 
 @dataclass(frozen=True)
@@ -198,6 +199,7 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
                 questionnaires=questionnaires,
                 tls=tls_files(r.web.tls_cert, r.web.tls_key),
                 dropout=(OnDisconnect(r.web.on_disconnect).value, float(r.web.reconnect_timeout_s)),
+                next_url=r.web.next_url,
             )
             busy = port_free(r.web.host, r.web.port)
             if busy:

@@ -36,9 +36,18 @@ class InstrumentServer:
     """One participant's instruments page until they have answered `qs` (or declined consent)."""
 
     def __init__(
-        self, host: str, port: int, book: InstrumentBook, qs: Sequence[Questionnaire], key: str, done_text: str, tls: ssl.SSLContext | None = None
+        self,
+        host: str,
+        port: int,
+        book: InstrumentBook,
+        qs: Sequence[Questionnaire],
+        key: str,
+        done_text: str,
+        tls: ssl.SSLContext | None = None,
+        next_url: str = "",
     ) -> None:
-        self.book, self.participant, self.done_text = book, book.path.parent.name, done_text
+        """`next_url`: where the page goes once all is answered (`haven serve`'s session page)."""
+        self.book, self.participant, self.done_text, self.next_url = book, book.path.parent.name, done_text, next_url
         self.qs = {q.name: q for q in qs}
         self.order = {q.name: item_order(q, key) for q in qs}
         self.token = role_token(new_token(), self.participant)
@@ -72,6 +81,7 @@ class InstrumentServer:
             "declined": self.book.declined(),
             "answers_url": f"/{PAGE}/{self.participant}/answers",
             "done_text": self.done_text,
+            "next_url": self.next_url,
         }
 
     def _check_done(self) -> None:

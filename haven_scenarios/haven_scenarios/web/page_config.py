@@ -41,6 +41,7 @@ class PageSettings:
     map_inset: bool = True
     questionnaires: tuple[Questionnaire, ...] = ()  # asked after the trial
     teleoperated: tuple[str, ...] = ()  # the humans with a page (who answers them)
+    next_url: str = ""  # the page goes here once the trial and its questionnaires are over (`haven serve`)
 
 
 def robot_view(robot: RobotDescription) -> dict[str, Any]:
@@ -91,4 +92,5 @@ def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[
         "questionnaires": [in_order(q, item_order(q, trial_key(settings.session, role.name))).to_dict() for q in settings.questionnaires],
         "teleoperated": list(settings.teleoperated),
         "thought_max_chars": MAX_THOUGHT_CHARS,
+        "next_url": settings.next_url,
     }

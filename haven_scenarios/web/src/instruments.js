@@ -4,6 +4,7 @@
 // (web/instrument_server.py) with a POST; the server checks and stores it and says what is left.
 // Not agreeing to the consent ends the page: the participant is thanked and runs no trial.
 import { QuestionnaireForm } from "./questionnaire.js";
+import { goOn } from "./next_page.js";
 
 const cfg = JSON.parse(document.getElementById("config").textContent);
 const state = { answered: [...cfg.answered], questionnaire: null, declined: cfg.declined, done: false };
@@ -36,11 +37,13 @@ function next() {
   if (state.declined) {
     state.questionnaire = null;
     state.done = true;
+    if (goOn(cfg.next_url)) return say("Thank you", "You chose not to take part: the study ends here.");
     return say("Thank you", "You chose not to take part: the study ends here. Please tell the researcher.");
   }
   if (!pending.length) {
     state.questionnaire = null;
     state.done = true;
+    if (goOn(cfg.next_url)) return say("Thank you", "Taking you on…");
     return say("Thank you", cfg.done_text);
   }
   const q = pending[0];

@@ -10,6 +10,7 @@ import { dressScene, quality } from "./scenery.js";
 import { drawInset } from "./inset.js";
 import { Controls } from "./controls.js";
 import { taskLine, promptFor } from "./task.js";
+import { goOn } from "./next_page.js";
 import { QuestionnaireForm } from "./questionnaire.js";
 
 const cfg = readConfig();
@@ -187,6 +188,7 @@ function showTrial() {
   const over = !!t && t.state === "ended";
   controls.enabled = !!t && t.state === "running" && state.connected;
   link.reconnect = !over || !!q; // the study is over: its server goes away, and that is no loss
+  if (over && !q) goOn(cfg.next_url); // (haven serve: on to the participant's next page)
   document.getElementById("lost").hidden = state.connected || !state.everConnected || (over && !q);
 }
 setInterval(() => {  // the connection: a notice when it is lost, and no walking blind

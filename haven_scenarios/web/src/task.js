@@ -33,7 +33,8 @@ export function promptFor(t, cfg, pressedStart, skipped) {
   }
   if (t.state === "ended") {
     const answered = cfg.questionnaires.length && t.end_reason !== "aborted" && !skipped ? " Thank you for your answers!" : " Thank you!";
-    return { title: "Trial over", text: `${ENDINGS[t.end_reason] || ""}${answered}`, small: "You can close this page.", start: false };
+    const small = cfg.next_url ? "Taking you on…" : "You can close this page.";
+    return { title: "Trial over", text: `${ENDINGS[t.end_reason] || ""}${answered}`, small, start: false };
   }
   return null;
 }

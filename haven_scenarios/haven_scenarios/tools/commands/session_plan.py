@@ -112,6 +112,7 @@ class WebOptions:
     questionnaires: tuple[str | dict[str, Any], ...] = ()  # asked after the trial: built-in names, Likert mappings
     tls: tuple[str, str] | None = None  # HTTPS: the certificate's and its key's absolute paths (checked: web/tls.py)
     dropout: tuple[str, float] = (OnDisconnect.KEEP.value, DEFAULT_RECONNECT_TIMEOUT_S)  # on_disconnect, reconnect_timeout_s
+    next_url: str = ""  # where a participant's page goes when the trial and its questionnaires are over
 
 
 def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
@@ -129,5 +130,6 @@ def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
         **({"tls_cert": web.tls[0], "tls_key": web.tls[1]} if web.tls else {}),
         "on_disconnect": web.dropout[0],
         "reconnect_timeout_s": web.dropout[1],
+        **({"next_url": web.next_url} if web.next_url else {}),
     }
     return ProcessSpec(nodes.WEB.key, node_argv(nodes.WEB.module, params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))

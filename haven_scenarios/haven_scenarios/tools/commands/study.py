@@ -51,6 +51,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("--port", type=PORT, default=8088, help="with --web: port of the pages")
     add_tls_options(run)
     add_dropout_options(run)
+    run.add_argument("--next-url", default=None, metavar="URL", help="with --web: the participant's browser goes here after each page (haven serve)")
     run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN", help="these humans (default: all) are driven by the participant")
     run.add_argument("--no-pause", action="store_true", help="with a person: do not wait for Enter between trials")
     run.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every trial")

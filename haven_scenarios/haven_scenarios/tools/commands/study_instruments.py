@@ -101,6 +101,8 @@ class Served(Protocol):
     def tls_cert(self) -> str | None: ...
     @property
     def tls_key(self) -> str | None: ...
+    @property
+    def next_url(self) -> str | None: ...
 
 
 DONE_BEFORE = "Thank you. Please wait: the researcher starts the first trial."
@@ -116,7 +118,7 @@ def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, 
 
     files = tls_files(where.tls_cert, where.tls_key)
     tls = server_context(*files) if files else None
-    server = InstrumentServer(where.host, where.port, book, qs, key, DONE_BEFORE if first else DONE_AFTER, tls)
+    server = InstrumentServer(where.host, where.port, book, qs, key, DONE_BEFORE if first else DONE_AFTER, tls, where.next_url or "")
     server.start()
     # Every stop signal ends the wait, as it ends `haven run`: also where the shell started this
     # in the background with SIGINT ignored (Python then leaves Ctrl-C ignored; the wait hung).

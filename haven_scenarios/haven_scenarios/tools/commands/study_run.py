@@ -59,6 +59,7 @@ class StudyRun:
     tls_key: str | None = None
     on_disconnect: str = OnDisconnect.KEEP.value  # a participant's drop-out during a trial: keep | pause | abort
     reconnect_timeout: float = DEFAULT_RECONNECT_TIMEOUT_S  # with pause: abort after this long away
+    next_url: str | None = None  # with web: the participant's browser goes here after each page (`haven serve`)
     teleop: tuple[str, ...] | None = None  # these humans (() for all) are driven by the participant
     no_pause: bool = True  # with a person: do not wait for Enter between trials
     params_file: str | None = None
@@ -94,7 +95,7 @@ def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]
     web = None
     if args.web:
         tls = (args.tls_cert or "", args.tls_key or "")
-        web = WebRequest(args.host, args.port, False, True, *tls, args.on_disconnect, args.reconnect_timeout)
+        web = WebRequest(args.host, args.port, False, True, *tls, args.on_disconnect, args.reconnect_timeout, args.next_url or "")
     teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
     return TrialRequest(
         trial.scenario_spec,

@@ -1,0 +1,97 @@
+"""`haven serve`'s book of who is who: remote participants' panel ids and the design's participants.
+
+A participant arrives with the id their recruitment panel appends to the link; they take the next
+free participant of the study's design (p01, p02, ... in order: the design's `assignment` already
+decides who of them takes which order) and keep it: a reload, a return the next day or a visit to
+another server on the same study folder finds the same place. The book is `online.json` in the
+study's folder, each change made under an OS lock (tools/locks.py), so servers that share the
+folder never hand out one place twice. A key per place (in the participant's session address) keeps
+others out of it.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import secrets
+from collections.abc import Sequence
+from dataclasses import asdict, dataclass
+from datetime import datetime, timezone
+from pathlib import Path
+
+from haven_scenarios.record.participants import InstrumentBook
+from haven_scenarios.record.session import check_name
+from haven_scenarios.study.progress import progress
+from haven_scenarios.study.protocol import Study
+from haven_scenarios.study.schedule import PlannedTrial
+from haven_scenarios.tools.locks import FileLock
+
+BOOK, BOOK_LOCK = "online.json", ".online.lock"  # in the study's folder
+
+
+class Full(Exception):
+    """Every participant of the design has been given to somebody."""
+
+
+@dataclass(frozen=True)
+class Seat:
+    panel_id: str  # as the panel gave it
+    participant: str  # the design's participant (p01, ...)
+    key: str  # in their session address
+    joined: str  # ISO time, UTC
+
+
+class Seats:
+    """The study folder's panel ids and their participants (shared by every server on the folder)."""
+
+    def __init__(self, root: Path, participants: Sequence[str]) -> None:
+        self.root, self.participants = root, tuple(participants)
+        root.mkdir(parents=True, exist_ok=True)
+
+    def _read(self) -> dict[str, Seat]:
+        try:
+            data = json.loads((self.root / BOOK).read_text())
+        except FileNotFoundError:
+            return {}
+        return {pid: Seat(**s) for pid, s in data.items()}
+
+    def _write(self, seats: dict[str, Seat]) -> None:
+        tmp = self.root / f".{BOOK}.{os.getpid()}"
+        tmp.write_text(json.dumps({pid: asdict(s) for pid, s in seats.items()}, indent=1) + "\n")
+        os.replace(tmp, self.root / BOOK)  # (whole or not at all: a reader never sees half a book)
+
+    def join(self, panel_id: str) -> Seat:
+        """Their place: the one they had, else the next free participant of the design. ValueError
+        (one line) for an id that is not one; Full when every participant has been given."""
+        check_name(panel_id, "participant")
+        with FileLock(self.root / BOOK_LOCK, "haven serve").acquire(wait=True):
+            seats = self._read()
+            if panel_id in seats:
+                return seats[panel_id]
+            taken = {s.participant for s in seats.values()}
+            free = [p for p in self.participants if p not in taken]
+            if not free:
+                raise Full(f"all {len(self.participants)} participants of the study have taken part or are taking part")
+            seat = Seat(panel_id, free[0], secrets.token_urlsafe(16), datetime.now(timezone.utc).isoformat(timespec="seconds"))
+            seats[panel_id] = seat
+            self._write(seats)
+            return seat
+
+    def by_participant(self, participant: str) -> Seat | None:
+        return next((s for s in self._read().values() if s.participant == participant), None)
+
+    def all(self) -> list[Seat]:
+        return sorted(self._read().values(), key=lambda s: s.participant)
+
+
+def standing(study: Study, root: Path, participant: str, trials: Sequence[PlannedTrial]) -> str:
+    """Where a participant stands, from the study folder alone: declined (consent), done (every
+    trial and every instrument), or started / new."""
+    book = InstrumentBook(root, participant)
+    if book.declined():
+        return "declined"
+    mine = [t for t in trials if t.participant == participant]
+    instruments = study.instruments()
+    if all(p.status == "done" for p in progress(root, mine)) and not book.pending([*instruments.first, *instruments.after]):
+        return "done"
+    return "started" if (root / participant).is_dir() else "new"

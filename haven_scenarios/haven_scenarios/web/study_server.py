@@ -1,0 +1,247 @@
+"""`haven serve`: one server that runs a study for remote participants.
+
+A participant opens the study's link with the id their panel appends (`/?participant=ID`), reads
+the welcome and the consent text, and joins: they take the next participant of the design
+(web/online_seats.py) and land on their session page, which takes them from page to page as their
+own `haven study run --web` (web/online_runner.py: its own processes and ROS domain) opens them:
+consent and questionnaires, each trial (they press Start themselves), the questionnaires after it,
+and at the end the study's completion code or redirect (study/online.py). At most `capacity`
+runners at once; who arrives beyond that waits on their session page, first come first served.
+A reload, a closed tab or a return later finds the same place: a trial that did not finish runs
+again. The researcher's list (`/console`, its own token) shows every session.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import threading
+import time
+from collections import Counter
+from collections.abc import Sequence
+from dataclasses import dataclass
+from http.server import BaseHTTPRequestHandler
+from pathlib import Path
+from typing import Any
+from urllib.parse import parse_qs, quote, urlsplit
+
+from haven_scenarios.study.protocol import Study
+from haven_scenarios.study.schedule import PlannedTrial
+from haven_scenarios.web import online_pages as pages
+from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
+from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, reply, reply_json, token_cookie
+from haven_scenarios.web.online_runner import Runner
+from haven_scenarios.web.online_seats import Full, Seat, Seats, standing
+from haven_scenarios.web.presence import OnDisconnect
+
+DEFAULT_CAPACITY = 2  # live trials at once: what a 2-core machine holds at a 100 ms p95 (bench/RESULTS.md)
+MAX_STARTS = 5  # a participant's runner starts again this often at most (their trial did not finish)
+GONE_S = 15.0  # a waiting participant whose page has not asked for this long has left the queue
+TICK_S = 0.5
+CONSOLE_COOKIE = "haven_serve_console"
+
+
+@dataclass(frozen=True)
+class ServeOptions:
+    """`haven serve`'s options (the Python API's arguments)."""
+
+    study: str  # the study file's path
+    root: Path  # the study's folder
+    host: str = "127.0.0.1"
+    port: int = 8090
+    capacity: int = DEFAULT_CAPACITY
+    tls: tuple[str, str] | None = None  # HTTPS: the certificate and its key (checked: web/tls.py)
+    trial_ports: tuple[int, int] | None = None  # the runners' pages on these ports (None: any free port)
+    id_param: str = "participant"  # the landing page's query key the panel fills in
+    on_disconnect: str = OnDisconnect.PAUSE.value  # a participant gone mid-trial: their place frees after the timeout
+    reconnect_timeout: float = 60.0
+    params_file: str | None = None
+    network: bool = False
+
+
+class StudyServer:
+    def __init__(self, options: ServeOptions, study: Study, trials: Sequence[PlannedTrial]) -> None:
+        from haven_scenarios.web.tls import server_context
+
+        self.o, self.study, self.trials = options, study, list(trials)
+        self.seats = Seats(options.root, study.participants)
+        self.runners: dict[str, Runner] = {}
+        self.ports: dict[str, int] = {}  # each runner's port (0: any free one)
+        self.starts: Counter[str] = Counter()
+        self.waiting: dict[str, float] = {}  # participant -> when their page last asked (arrival order)
+        self.token = new_token()
+        self._lock = threading.Lock()
+        self._stopping = threading.Event()
+        tls = server_context(*options.tls) if options.tls else None
+        try:
+            self.httpd = _Server((options.host, options.port), quiet_handler(self.get, lambda h: reply(h, 405, b"nothing here takes a POST")), tls)
+        except OSError as e:
+            raise ValueError(f"cannot serve on {options.host}:{options.port}: {e.strerror}") from None
+        self.threads = [
+            threading.Thread(target=self.httpd.serve_forever, name="serve http", daemon=True),
+            threading.Thread(target=self._tick_loop, name="serve runners", daemon=True),
+        ]
+
+    @property
+    def base(self) -> str:
+        return f"{self.httpd.scheme}://{address_for_others(self.o.host)}:{self.httpd.server_address[1]}"
+
+    @property
+    def join_url(self) -> str:
+        return f"{self.base}/?{self.o.id_param}=ID"
+
+    @property
+    def console_url(self) -> str:
+        return f"{self.base}/console?{TOKEN_PARAM}={self.token}"
+
+    def start(self) -> None:
+        for t in self.threads:
+            t.start()
+
+    def stop(self) -> None:
+        """The pages first, then every runner as Ctrl-C (their trials end cleanly, to run again)."""
+        self._stopping.set()
+        self.httpd.shutdown()
+        self.httpd.server_close()
+        self.threads[1].join()
+        for runner in list(self.runners.values()):
+            runner.stop()
+
+    # -- the runners: started and reaped by one long-lived thread ------------------------------
+    def _tick_loop(self) -> None:
+        while not self._stopping.wait(TICK_S):
+            self.tick(time.monotonic())
+
+    def tick(self, now: float) -> None:
+        with self._lock:
+            for p in [p for p, r in self.runners.items() if r.code is not None]:
+                del self.runners[p], self.ports[p]
+            for p in [p for p, asked in self.waiting.items() if now - asked > GONE_S]:
+                del self.waiting[p]
+            for p in list(self.waiting):
+                if len(self.runners) >= self.o.capacity:
+                    break
+                seat = self.seats.by_participant(p)
+                del self.waiting[p]
+                if seat is not None:
+                    self.starts[p] += 1
+                    self.runners[p] = Runner(p, self.runner_argv(seat), os.environ, self.o.root / p)
+
+    def runner_argv(self, seat: Seat) -> list[str]:
+        o = self.o
+        port = next((q for q in range(o.trial_ports[0], o.trial_ports[1] + 1) if q not in self.ports.values()), 0) if o.trial_ports else 0
+        self.ports[seat.participant] = port
+        next_url = f"{self.base}/session/{seat.participant}?key={seat.key}"
+        argv = [sys.executable, "-m", "haven_scenarios", "study", "run", o.study, "--participant", seat.participant, "--dir", str(o.root)]
+        argv += ["--web", "--no-pause", "--host", o.host, "--port", str(port), "--next-url", next_url]
+        argv += ["--on-disconnect", o.on_disconnect, "--reconnect-timeout", str(o.reconnect_timeout)]
+        argv += ["--tls-cert", o.tls[0], "--tls-key", o.tls[1]] if o.tls else []
+        argv += ["--params-file", o.params_file] if o.params_file else []
+        return argv + (["--network"] if o.network else [])
+
+    # -- what a participant's session page is told --------------------------------------------
+    def state(self, seat: Seat, now: float) -> dict[str, Any]:
+        p = seat.participant
+        with self._lock:
+            runner = self.runners.get(p)
+            live = runner is not None and runner.code is None
+            where = standing(self.study, self.o.root, p, self.trials) if not live else "started"
+            if where in ("done", "declined"):
+                return self._ended(where)
+            if live and runner is not None:
+                page = runner.current_page()
+                if page:
+                    return {"state": "running", "title": "Go on", "text": "Taking you there…", "url": page}
+                return {"state": "preparing", "title": "One moment", "text": "Your next part is being prepared…"}
+            if self.starts[p] >= MAX_STARTS:
+                return {"state": "failed", "title": "Sorry", "text": "Your session cannot go on: please tell the researcher."}
+            self.waiting[p] = now  # (a participant already in line keeps their place)
+            ahead = list(self.waiting).index(p) - (self.o.capacity - len(self.runners))
+            if ahead < 0:
+                return {"state": "preparing", "title": "One moment", "text": "Your session is starting…"}
+            return {
+                "state": "waiting",
+                "title": "Please wait",
+                "text": f"All places are in use right now: you are number {ahead + 1} in line. This page goes on by itself.",
+            }
+
+    def _ended(self, where: str) -> dict[str, Any]:
+        online = self.study.online
+        if where == "declined":
+            return {"state": "declined", "title": "Thank you", "text": "You chose not to take part: nothing more is asked. You can close this page."}
+        code = online.completion_code
+        text = "You have finished the study. Thank you!" + (" Your completion code:" if code else "")
+        return {"state": "done", "title": "Thank you", "text": text, "code": code or None, "url": online.completion_url or None}
+
+    def sessions(self) -> list[dict[str, Any]]:
+        """The researcher's list: every participant who joined, live ones first."""
+        rows = []
+        for seat in self.seats.all():
+            with self._lock:
+                runner = self.runners.get(seat.participant)
+                live = runner is not None and runner.code is None
+                waiting = seat.participant in self.waiting
+            if live and runner is not None:
+                state, now, console = ("running" if runner.page else "preparing"), runner.trial, runner.console
+            else:
+                state, now, console = ("waiting" if waiting else standing(self.study, self.o.root, seat.participant, self.trials)), "", None
+            row = {"panel_id": seat.panel_id, "participant": seat.participant, "state": state, "now": now, "joined": seat.joined}
+            rows.append({**row, "console": console})
+        return sorted(rows, key=lambda r: (r["state"] not in ("running", "preparing", "waiting"), r["participant"]))
+
+    # -- HTTP ---------------------------------------------------------------------------------
+    def get(self, h: BaseHTTPRequestHandler) -> None:
+        url = urlsplit(h.path)
+        parts, query = [p for p in url.path.split("/") if p], {k: v[0] for k, v in parse_qs(url.query).items()}
+        if parts in ([], ["join"]):
+            return self._join(h, query.get(self.o.id_param, "").strip(), bool(parts))
+        if parts == ["static", "haven.css"]:
+            return reply(h, 200, (STATIC / "haven.css").read_bytes(), "text/css")
+        if parts and parts[0] == "console":
+            return self._console(h, parts)
+        if len(parts) in (2, 3) and parts[0] == "session" and parts[2:] in ([], ["state"]):
+            seat = self.seats.by_participant(parts[1])
+            if seat is None or not token_ok(query.get("key", ""), seat.key):
+                wrong = pages.message("Not found", "This session address is not right: open the study's link again.")
+                return reply(h, 403, wrong, "text/html; charset=utf-8")
+            if parts[2:]:
+                return reply_json(h, 200, self.state(seat, time.monotonic()))
+            if "left" in query:  # back from a page they finished
+                with self._lock:
+                    runner = self.runners.get(seat.participant)
+                if runner is not None:
+                    runner.finished_page(query["left"])
+            return reply(h, 200, pages.session(f"/session/{seat.participant}/state?key={quote(seat.key)}"), "text/html; charset=utf-8")
+        if parts == ["favicon.ico"]:
+            return reply(h, 204, b"")
+        return reply(h, 404, b"no such page")
+
+    def _join(self, h: BaseHTTPRequestHandler, panel_id: str, join: bool) -> None:
+        html = "text/html; charset=utf-8"
+        if not join:
+            return reply(h, 200, pages.landing(self.study, panel_id, self.o.id_param), html)
+        try:
+            seat = self.seats.join(panel_id)
+        except ValueError as e:
+            return reply(h, 400, pages.message("Cannot join", str(e).replace("participant: ", "Your participant id ")), html)
+        except Full:
+            return reply(h, 200, pages.message("The study is full", "Every place in this study has been taken. Thank you for your interest."), html)
+        h.send_response(303)
+        h.send_header("Location", f"/session/{seat.participant}?key={quote(seat.key)}")
+        h.send_header("Content-Length", "0")
+        h.send_header("Cache-Control", "no-store")
+        h.end_headers()
+
+    def _console(self, h: BaseHTTPRequestHandler, parts: list[str]) -> None:
+        given = token_of(h.path, None, "") or _cookie(h, CONSOLE_COOKIE)
+        if not token_ok(given, self.token):
+            return reply(h, 403, b"this page needs its token: open the address `haven serve` printed")
+        if parts == ["console", "sessions.json"]:
+            return reply_json(h, 200, {"capacity": self.o.capacity, "sessions": self.sessions()})
+        page = pages.researcher_list(self.study, self.sessions(), self.o.capacity)
+        return reply(h, 200, page, "text/html; charset=utf-8", token_cookie(h, CONSOLE_COOKIE, self.token))
+
+
+def _cookie(h: BaseHTTPRequestHandler, name: str) -> str:
+    cookies = dict(p.strip().partition("=")[::2] for p in (h.headers.get("Cookie") or "").split(";") if "=" in p)
+    return cookies.get(name, "")
