@@ -1,6 +1,6 @@
 """Wizard of Oz and the participant's view, in a real browser: the researcher's thought text is held
 over the robot's own and shown to a participant 6 m away when the researcher asks (its text as large
-there as at 4 m); the participant looks down with a key and sees the floor at their feet; `&stats` shows the
+there as at 4 m, drawn before the walls); the participant looks down with a key and sees the floor at their feet; `&stats` shows the
 page's frame rate and latency in a corner. Skipped, with one line, where no Chromium can be had."""
 
 import json
@@ -37,6 +37,10 @@ def test_the_researchers_held_thought_shows_far_away_and_the_participant_looks_d
     console.check("#thought-everywhere")
     console.click("#thought-form button")
     page.wait_for_function("(havenState.markers.thought_bubble || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
+    frames = page.evaluate("havenState.frames")
+    page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
+    # Drawn 1 m from the eye, as large as it looks 6 m away: before every wall beyond 1 m, never clipped by one.
+    assert page.evaluate("havenMarker('thought_bubble', 0).pull") == pytest.approx(1 / 6, rel=0.25)
     console.wait_for_function(f"document.getElementById('thought-now').textContent.includes({json.dumps(TEXT)})", timeout=PAGE_TIMEOUT_MS)
     screenshot("web_wizard_far.png", page.screenshot())
 

@@ -165,8 +165,11 @@ export class MarkerLayer {
   // The namespaces that face the viewer (the battery gauge and the thought bubble, as in HAVEN):
   // each is turned about its first marker so that its x axis runs left to right across the view.
   // `legible`: namespaces whose text grows with distance beyond LEGIBLE_M, so it reads the same from
-  // afar (a thought the researcher shows at any distance).
-  face(camera, namespaces, legible = new Set()) {
+  // afar (a thought the researcher shows at any distance). `pullTo` (metres, 0: not): each group
+  // farther than that is drawn that far from the eye instead, shrunk by as much, so it looks the
+  // same (same place and size on screen) but comes before every wall beyond it: a wall beside the
+  // robot never clips its bubble or gauge. (Not in a headset, where both eyes would see the change.)
+  face(camera, namespaces, legible = new Set(), pullTo = 0) {
     const eye = new THREE.Vector3();
     camera.getWorldPosition(eye);
     const groups = new Map();
@@ -181,14 +184,17 @@ export class MarkerLayer {
       const centre = objects[0].userData.anchor;
       const yaw = Math.atan2(eye.y - centre.y, eye.x - centre.x) + Math.PI / 2; // the viewer's right
       const c = Math.cos(yaw), s = Math.sin(yaw);
+      const far = eye.distanceTo(centre);
+      const pull = pullTo > 0 && far > pullTo ? pullTo / far : 1;
       for (const o of objects) {
         const d = o.userData.anchor.clone().sub(centre);
         o.position.set(centre.x + c * d.x - s * d.y, centre.y + s * d.x + c * d.y, o.userData.anchor.z);
         if (o.userData.type !== TEXT && o.userData.type !== SPHERE) o.rotation.set(0, 0, yaw);
-        if (o.isSprite && legible.has(o.userData.ns)) {
-          o.userData.size ||= o.scale.clone();
-          o.scale.copy(o.userData.size).multiplyScalar(Math.max(1, eye.distanceTo(o.position) / LEGIBLE_M));
-        }
+        o.userData.size ||= o.scale.clone();
+        const grow = o.isSprite && legible.has(o.userData.ns) ? Math.max(1, eye.distanceTo(o.position) / LEGIBLE_M) : 1;
+        o.scale.copy(o.userData.size).multiplyScalar(grow * pull);
+        if (pull < 1) o.position.sub(eye).multiplyScalar(pull).add(eye);
+        o.userData.pull = pull;
       }
     }
   }

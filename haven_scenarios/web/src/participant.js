@@ -44,6 +44,7 @@ state.quality = quality(cfg, renderer);
 const dressed = dressScene({ level: state.quality, renderer, sun, floor, grid, world, bounds: cfg.bounds, wallHeight: cfg.view_wall_height_m });
 const FACING = new Set(["thought_bubble", "battery_indicator"]);
 const LEGIBLE = new Set(["thought_bubble"]); // shown far away only when the researcher asks: then readable there
+const PULL_M = 1.0; // the bubble and the gauge are drawn this near, so a wall beside the robot never clips them (markers.js)
 const cues = new MarkerLayer(scene, { hide: new Set(["robot", "humans", "human_names"]), bubbles: new Set(["thought_bubble"]) }); // bodies come from the poses
 let robot = robotBody(cfg.robot);
 robot.visible = false;
@@ -266,7 +267,7 @@ window.havenShowRobot = (desc, at, eye, pitch = 0) => {
 window.havenOthers = () => Object.fromEntries([...others].map(([id, a]) => [id, { x: a.position.x, y: a.position.y }]));
 window.havenMarker = (ns, id) => {
   const e = cues.objects.get(`${ns}/${id}`);
-  return e ? { x: e.object.position.x, y: e.object.position.y, z: e.object.position.z } : null;
+  return e ? { x: e.object.position.x, y: e.object.position.y, z: e.object.position.z, pull: e.object.userData.pull } : null;
 };
 
 // -- every frame -----------------------------------------------------------------------------------
@@ -290,7 +291,8 @@ renderer.setAnimationLoop((time) => {
     rig.rotation.z = state.pose.yaw;
   }
   scene.updateMatrixWorld();
-  cues.face(renderer.xr.isPresenting ? renderer.xr.getCamera() : camera, FACING, LEGIBLE);
+  const xr = renderer.xr.isPresenting;
+  cues.face(xr ? renderer.xr.getCamera() : camera, FACING, LEGIBLE, xr ? 0 : PULL_M);
   renderer.render(scene, camera);
   state.frames++;
   // (from the matrix the frame was drawn with: getWorldDirection would recompute an XR camera's
