@@ -123,3 +123,24 @@ def test_rates_that_do_not_divide_the_physics_rate_hold_on_average(rate):
         n += sum(1 for m in sim.sense() if m.topic == topics.HUMANS)
         sim.advance()
     assert n == pytest.approx(10 * rate, abs=1)
+
+
+def test_the_simulator_honours_the_estop_whatever_publishes_its_commands():
+    """A command straight on /cmd_vel (past the mux) does not move the robot while the e-stop is
+    on; a false releases it only after the hold, as in the mux."""
+    sim = SimulatorComponent(box_world(10.0), SimulatorConfig(estop_hold_s=1.0))
+
+    def drive(seconds: float) -> float:
+        x0 = sim.sim.odometry_pose().x
+        for _ in range(round(seconds * 50)):
+            sim.on_cmd_vel(Twist2D(0.4, 0, 0), sim.sim.time)
+            sim.advance()
+        return sim.sim.odometry_pose().x - x0
+
+    assert drive(1.0) > 0.2
+    sim.on_estop(True, sim.sim.time)
+    for _ in range(50):  # (the robot brakes from its speed)
+        sim.advance()
+    assert drive(2.0) == pytest.approx(0.0, abs=1e-3)
+    sim.on_estop(False, sim.sim.time)  # the true came 2 s ago, beyond the 1 s hold: released
+    assert drive(1.0) > 0.2

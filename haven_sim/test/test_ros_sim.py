@@ -360,3 +360,38 @@ def test_an_unknown_robot_fails_fast_with_one_line(ros):
     assert proc.wait(timeout=30) == 2
     err = proc.stderr.read().strip()
     assert err.startswith("error: sim_node: ") and "unknown robot 'no_such_bot'" in err and "\n" not in err
+
+
+def test_with_the_estop_on_a_publisher_on_cmd_vel_beside_the_mux_moves_nothing_and_is_named(ros):
+    """teleop_twist_keyboard publishes /cmd_vel by default (default QoS, depth 10): straight to the
+    simulator, past the mux. With the e-stop on, the simulator itself stops the robot, and warns
+    about the publisher by name; released, the same commands drive it again."""
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    keyboard = ros.node.create_publisher(Twist, "/cmd_vel", 10)
+    estop = ros.node.create_publisher(Bool, "/haven/estop", qos.LATCHED)
+    sim = ros.start(SIM, {"cmd_timeout_s": 20.0, "estop_hold_s": 1.0}, capture=True)
+    ros.start(MUX, {"use_sim_time": True})
+    os.set_blocking(sim.stderr.fileno(), False)
+    ros.wait_matched(keyboard)
+    ros.wait_for_messages(odom, 5)
+    estop.publish(Bool(data=True))
+    assert ros.spin_until(lambda: estop.get_subscription_count() >= 2)  # the mux and the simulator
+    assert estop.wait_for_all_acked(Duration(seconds=5.0))
+    start = conv.pose_from_msg(odom[-1].pose.pose)
+    drive(ros, keyboard, twist(0.5, 0.0), odom, 2.0)
+    moved = conv.pose_from_msg(odom[-1].pose.pose)
+    assert math.hypot(moved.x - start.x, moved.y - start.y) < 0.01, (start, moved)
+    err = ""
+
+    def warned():
+        nonlocal err
+        try:
+            err += os.read(sim.stderr.fileno(), 1 << 16).decode(errors="replace")
+        except BlockingIOError:
+            pass
+        return "/haven_test_probe publishes on /cmd_vel beside the velocity mux" in err and "cmd_vel:=cmd_vel_teleop" in err
+
+    assert ros.spin_until(warned, 30.0), err
+    estop.publish(Bool(data=False))  # released once no true has come for estop_hold_s
+    drive(ros, keyboard, twist(0.5, 0.0), odom, 3.0)
+    assert conv.pose_from_msg(odom[-1].pose.pose).x - moved.x > 0.3

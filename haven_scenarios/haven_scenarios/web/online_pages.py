@@ -11,6 +11,7 @@ from html import escape
 from typing import Any
 
 from haven_scenarios.study.protocol import Study
+from haven_scenarios.web.online_seats import LIVE
 
 POLL_MS = 1000  # the session page asks its state this often
 
@@ -77,7 +78,7 @@ def researcher_list(study: Study, rows: Sequence[dict[str, Any]], capacity: int)
         link = f'<a href="{escape(r["console"])}" target=_blank>open</a>' if r.get("console") else ""
         values = [escape(str(r[k])) for k in ("panel_id", "participant", "state", "now", "joined")]
         cells.append("<tr>" + "".join(f"<td>{v}</td>" for v in values) + f"<td>{link}</td></tr>")
-    live = sum(r["state"] in ("running", "preparing") for r in rows)
+    live = sum(r["state"] in LIVE for r in rows)
     table = "<table id=sessions><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>" + "".join(cells) + "</table>"
     body = f"<h1>Study {escape(study.name)}</h1><p>{live} of {capacity} places in use · {len(rows)} joined</p>{table}"
     return _page(f"{study.name}: sessions", body, "<script>setTimeout(() => location.reload(), 2000);</script>")

@@ -17,6 +17,7 @@ import secrets
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass
 from datetime import datetime, timezone
+from enum import StrEnum
 from pathlib import Path
 
 from haven_scenarios.record.participants import InstrumentBook
@@ -27,6 +28,22 @@ from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.locks import FileLock
 
 BOOK, BOOK_LOCK = "online.json", ".online.lock"  # in the study's folder
+
+
+class Standing(StrEnum):
+    """Where a participant's session is (the session page's `state`, the researcher's list)."""
+
+    NEW = "new"  # joined, nothing asked yet
+    STARTED = "started"  # some of it done, not running now
+    WAITING = "waiting"  # in line for a place
+    PREPARING = "preparing"  # their runner is opening the next page
+    RUNNING = "running"  # on a page of their runner's
+    DONE = "done"  # every trial and instrument
+    DECLINED = "declined"  # did not consent
+    FAILED = "failed"  # their runner did not get on: the researcher looks
+
+
+LIVE = (Standing.RUNNING, Standing.PREPARING)
 
 
 class Full(Exception):
@@ -84,14 +101,14 @@ class Seats:
         return sorted(self._read().values(), key=lambda s: s.participant)
 
 
-def standing(study: Study, root: Path, participant: str, trials: Sequence[PlannedTrial]) -> str:
+def standing(study: Study, root: Path, participant: str, trials: Sequence[PlannedTrial]) -> Standing:
     """Where a participant stands, from the study folder alone: declined (consent), done (every
     trial and every instrument), or started / new."""
     book = InstrumentBook(root, participant)
     if book.declined():
-        return "declined"
+        return Standing.DECLINED
     mine = [t for t in trials if t.participant == participant]
     instruments = study.instruments()
     if all(p.status == "done" for p in progress(root, mine)) and not book.pending([*instruments.first, *instruments.after]):
-        return "done"
-    return "started" if (root / participant).is_dir() else "new"
+        return Standing.DONE
+    return Standing.STARTED if (root / participant).is_dir() else Standing.NEW

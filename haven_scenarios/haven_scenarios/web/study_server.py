@@ -31,7 +31,7 @@ from haven_scenarios.web import online_pages as pages
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, reply, reply_json, token_cookie
 from haven_scenarios.web.online_runner import Runner
-from haven_scenarios.web.online_seats import Full, Seat, Seats, standing
+from haven_scenarios.web.online_seats import LIVE, Full, Seat, Seats, Standing, standing
 from haven_scenarios.web.presence import OnDisconnect
 
 DEFAULT_CAPACITY = 2  # live trials at once: what a 2-core machine holds at a 100 ms p95 (bench/RESULTS.md)
@@ -145,33 +145,37 @@ class StudyServer:
         with self._lock:
             runner = self.runners.get(p)
             live = runner is not None and runner.code is None
-            where = standing(self.study, self.o.root, p, self.trials) if not live else "started"
-            if where in ("done", "declined"):
+            where = standing(self.study, self.o.root, p, self.trials) if not live else Standing.STARTED
+            if where in (Standing.DONE, Standing.DECLINED):
                 return self._ended(where)
             if live and runner is not None:
                 page = runner.current_page()
                 if page:
-                    return {"state": "running", "title": "Go on", "text": "Taking you there…", "url": page}
-                return {"state": "preparing", "title": "One moment", "text": "Your next part is being prepared…"}
+                    return {"state": Standing.RUNNING, "title": "Go on", "text": "Taking you there…", "url": page}
+                return {"state": Standing.PREPARING, "title": "One moment", "text": "Your next part is being prepared…"}
             if self.starts[p] >= MAX_STARTS:
-                return {"state": "failed", "title": "Sorry", "text": "Your session cannot go on: please tell the researcher."}
+                return {"state": Standing.FAILED, "title": "Sorry", "text": "Your session cannot go on: please tell the researcher."}
             self.waiting[p] = now  # (a participant already in line keeps their place)
             ahead = list(self.waiting).index(p) - (self.o.capacity - len(self.runners))
             if ahead < 0:
-                return {"state": "preparing", "title": "One moment", "text": "Your session is starting…"}
+                return {"state": Standing.PREPARING, "title": "One moment", "text": "Your session is starting…"}
             return {
-                "state": "waiting",
+                "state": Standing.WAITING,
                 "title": "Please wait",
                 "text": f"All places are in use right now: you are number {ahead + 1} in line. This page goes on by itself.",
             }
 
-    def _ended(self, where: str) -> dict[str, Any]:
+    def _ended(self, where: Standing) -> dict[str, Any]:
         online = self.study.online
-        if where == "declined":
-            return {"state": "declined", "title": "Thank you", "text": "You chose not to take part: nothing more is asked. You can close this page."}
+        if where == Standing.DECLINED:
+            return {
+                "state": Standing.DECLINED,
+                "title": "Thank you",
+                "text": "You chose not to take part: nothing more is asked. You can close this page.",
+            }
         code = online.completion_code
         text = "You have finished the study. Thank you!" + (" Your completion code:" if code else "")
-        return {"state": "done", "title": "Thank you", "text": text, "code": code or None, "url": online.completion_url or None}
+        return {"state": Standing.DONE, "title": "Thank you", "text": text, "code": code or None, "url": online.completion_url or None}
 
     def sessions(self) -> list[dict[str, Any]]:
         """The researcher's list: every participant who joined, live ones first."""
@@ -182,12 +186,12 @@ class StudyServer:
                 live = runner is not None and runner.code is None
                 waiting = seat.participant in self.waiting
             if live and runner is not None:
-                state, now, console = ("running" if runner.page else "preparing"), runner.trial, runner.console
+                state, now, console = (Standing.RUNNING if runner.page else Standing.PREPARING), runner.trial, runner.console
             else:
-                state, now, console = ("waiting" if waiting else standing(self.study, self.o.root, seat.participant, self.trials)), "", None
+                state, now, console = (Standing.WAITING if waiting else standing(self.study, self.o.root, seat.participant, self.trials)), "", None
             row = {"panel_id": seat.panel_id, "participant": seat.participant, "state": state, "now": now, "joined": seat.joined}
             rows.append({**row, "console": console})
-        return sorted(rows, key=lambda r: (r["state"] not in ("running", "preparing", "waiting"), r["participant"]))
+        return sorted(rows, key=lambda r: (r["state"] not in (*LIVE, Standing.WAITING), r["participant"]))
 
     # -- HTTP ---------------------------------------------------------------------------------
     def get(self, h: BaseHTTPRequestHandler) -> None:

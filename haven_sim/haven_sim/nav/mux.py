@@ -27,6 +27,26 @@ from haven_sim.common.params import POSITIVE, check_bounds, param
 from haven_sim.runtime.component import Handler, Message
 
 NAV, TELEOP, ESTOP, IDLE = "nav", "teleop", "estop", "idle"
+ESTOP_HOLD_S = 2.0  # longer than `ros2 topic pub`'s 1 s repeat (the module docstring says why)
+
+
+class EStopLatch:
+    """The e-stop as each of its readers keeps it (the mux, and the simulator, which nothing
+    bypasses): a true from anyone stops at once; a false releases only when no true has come for
+    `hold_s`. Time is an argument."""
+
+    def __init__(self, hold_s: float = ESTOP_HOLD_S) -> None:
+        self.hold_s = hold_s
+        self._said = False  # the latest e-stop message
+        self._true_at = -math.inf  # when a true last came
+
+    def said(self, engaged: bool, now: float) -> None:
+        self._said = engaged
+        if engaged:
+            self._true_at = now
+
+    def engaged(self, now: float) -> bool:
+        return self._said or now - self._true_at < self.hold_s
 
 
 @dataclass(frozen=True)
@@ -34,7 +54,7 @@ class MuxConfig:
     teleop_timeout_s: float = param(0.5, "teleop hands control back this long after its last command", POSITIVE)
     nav_timeout_s: float = param(0.5, "navigation commands older than this are stale", POSITIVE)
     rate_hz: float = param(20.0, "/cmd_vel is re-sent at this rate while a source is active", POSITIVE)
-    estop_hold_s: float = param(2.0, "a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE)
+    estop_hold_s: float = param(ESTOP_HOLD_S, "a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE)
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -47,12 +67,10 @@ class MuxOutput:
 
 
 class VelocityMux:
-    def __init__(self, teleop_timeout_s: float = 0.5, nav_timeout_s: float = 0.5, estop_hold_s: float = 2.0) -> None:
+    def __init__(self, teleop_timeout_s: float = 0.5, nav_timeout_s: float = 0.5, estop_hold_s: float = ESTOP_HOLD_S) -> None:
         self.teleop_timeout_s = teleop_timeout_s
         self.nav_timeout_s = nav_timeout_s
-        self.estop_hold_s = estop_hold_s
-        self._estop_said = False  # the latest e-stop message
-        self._estop_true_at = -math.inf  # when a true last came
+        self.latch = EStopLatch(estop_hold_s)
         self._teleop = (ZERO_TWIST, -math.inf)
         self._nav = (ZERO_TWIST, -math.inf)
 
@@ -63,12 +81,10 @@ class VelocityMux:
         self._nav = (twist, now)
 
     def set_estop(self, engaged: bool, now: float) -> None:
-        self._estop_said = engaged
-        if engaged:
-            self._estop_true_at = now
+        self.latch.said(engaged, now)
 
     def estop(self, now: float) -> bool:
-        return self._estop_said or now - self._estop_true_at < self.estop_hold_s
+        return self.latch.engaged(now)
 
     def output(self, now: float) -> MuxOutput:
         if self.estop(now):

@@ -4,7 +4,9 @@ Publishes /clock, /map (latched), /odom (every physics step, 50 Hz) with odom ->
 /tf, the fixed frames on /tf_static, /scan, /battery_state, /humans (and map -> human_<id> on /tf)
 and /haven/events; subscribes /cmd_vel, /humans/<id>/cmd_vel and /haven/remove_obstruction; serves
 /haven/reset and /haven/pause (std_srvs/SetBool: simulated time stands still, as Gazebo's
-pause_physics; the web node pauses a trial a participant has dropped out of). The behaviour is
+pause_physics; the web node pauses a trial a participant has dropped out of). It honours /haven/estop
+itself, and warns once about each publisher on /cmd_vel beside the velocity mux (such as
+teleop_twist_keyboard's default topic): it bypasses the mux's arbitration. The behaviour is
 `haven_sim.sim.simulator.SimulatorComponent`; this node adds the wall-clock pacing (it is the
 clock, so it must not wait on /clock itself).
 """
@@ -29,6 +31,8 @@ from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig
 from haven_sim.sim.world import resolve_world_path
 from haven_sim.sim.world_file import load_world
 
+WRITERS_CHECK_S = 2.0  # wall seconds between looks at who publishes the robot's commands
+
 
 class SimNode(ComponentNode):
     def __init__(self) -> None:
@@ -45,6 +49,8 @@ class SimNode(ComponentNode):
         self.clock = WallClock()
         self.coordinator: LockstepCoordinator | None = None
         self.create_service(SetBool, "haven/pause", self._on_pause)
+        self._bypassing: set[str] = set()  # publishers beside the mux, warned about once each
+        self.create_timer(WRITERS_CHECK_S, self._check_writers, clock=Clock(clock_type=ClockType.STEADY_TIME))
         if self.lockstep_mode:
             self.coordinator = LockstepCoordinator(
                 self,
@@ -81,6 +87,19 @@ class SimNode(ComponentNode):
         for _ in range(self.pacer.due_steps(self.clock.now())):
             self.sim.advance()
             self.publish(self.sim.sense())
+
+    def _check_writers(self) -> None:
+        topic = self.resolve_topic_name(topics.CMD_VEL)
+        writers = {f"{i.node_namespace.rstrip('/')}/{i.node_name}" for i in self.get_publishers_info_by_topic(topic)}
+        if len(writers) < 2:
+            return
+        for name in sorted(writers - {f"/{nodes.MUX.name}"} - self._bypassing):
+            self._bypassing.add(name)
+            self.get_logger().warning(
+                f"{name} publishes on {topic} beside the velocity mux: it bypasses the mux (teleop, navigation, e-stop); "
+                f"publish on /{topics.CMD_VEL_TELEOP} instead (teleop_twist_keyboard: --ros-args -r cmd_vel:={topics.CMD_VEL_TELEOP}). "
+                "The e-stop still holds: the simulator honours /haven/estop itself."
+            )
 
     def _on_pause(self, request: SetBool.Request, response: SetBool.Response) -> SetBool.Response:
         """Pause (data true) or resume simulated time; a `trial_paused` / `trial_resumed` event."""

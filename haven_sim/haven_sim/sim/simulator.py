@@ -4,7 +4,10 @@ It owns the `Simulation` and decides what is published when: at every physics st
 /odom and `odom -> base_footprint` on /tf; /humans (and `map -> human_<id>` on /tf) at
 `humans_rate_hz`, /scan at `scan_rate_hz`, /battery_state at `battery_rate_hz`; the map and the
 static frames at start and whenever the world changes; the simulator's events as they happen. It
-takes velocity commands for the robot and each person, and obstruction removals.
+takes velocity commands for the robot and each person, and obstruction removals. It also reads the
+e-stop (/haven/estop) as the velocity mux does: while it is on, the robot is commanded to stop
+whatever arrives on /cmd_vel, so no publisher beside the mux (teleop_twist_keyboard's default
+/cmd_vel) moves it.
 """
 
 from __future__ import annotations
@@ -15,9 +18,10 @@ from dataclasses import dataclass
 
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind
-from haven_sim.common.geometry import FloatArray, Twist2D
+from haven_sim.common.geometry import ZERO_TWIST, FloatArray, Twist2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import RobotState
+from haven_sim.nav.mux import ESTOP_HOLD_S, EStopLatch
 from haven_sim.robots.fields import RobotChoice, from_robot
 from haven_sim.runtime.component import Handler, Message, due, period_ns
 from haven_sim.sim.commands import CommandStatus
@@ -45,6 +49,9 @@ class SimulatorConfig:
     lockstep_observers: tuple[str, ...] = param((), "with lockstep: participants nobody reads during a tick, not waited for")
     lockstep_wait_for: tuple[str, ...] = param((), "with lockstep: nodes that must listen before the first step (the recorder)")
     reset_allowed: bool = param(True, "/haven/reset resets the world (haven run turns it off: a recorded trial refuses it, as an event)")
+    estop_hold_s: float = param(
+        ESTOP_HOLD_S, "as the mux's: a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE
+    )
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -70,6 +77,7 @@ class SimulatorComponent:
         self._step_ns = c.sim.step_ns
         self._scan_ns, self._humans_ns, self._battery_ns = (period_ns(r) for r in (c.sim.scan.rate_hz, c.humans_rate_hz, c.battery_rate_hz))
         self._map_due = self._static_due = True  # both go out with the first sense()
+        self.estop = EStopLatch(c.estop_hold_s)
         self.warnings: list[str] = []
 
     @property
@@ -78,7 +86,11 @@ class SimulatorComponent:
 
     # -- inputs ----------------------------------------------------------------------------------
     def handlers(self) -> Mapping[str, Handler]:
-        out: dict[str, Handler] = {topics.CMD_VEL: self.on_cmd_vel, topics.REMOVE_OBSTRUCTION: self.on_remove_obstruction}
+        out: dict[str, Handler] = {
+            topics.CMD_VEL: self.on_cmd_vel,
+            topics.REMOVE_OBSTRUCTION: self.on_remove_obstruction,
+            topics.ESTOP: self.on_estop,
+        }
         for h in self.world.humans:
             out[topics.human_cmd_vel(h.id)] = functools.partial(self.on_human_cmd, h.id)
         return out
@@ -88,7 +100,13 @@ class SimulatorComponent:
         return (*fixed, *(topics.human_pose(h.id) for h in self.world.humans))
 
     def on_cmd_vel(self, cmd: Twist2D, now: float) -> list[Message]:
-        self._check(self.sim.command_robot(cmd), topics.CMD_VEL)
+        self._check(self.sim.command_robot(ZERO_TWIST if self.estop.engaged(now) else cmd), topics.CMD_VEL)
+        return []
+
+    def on_estop(self, engaged: bool, now: float) -> list[Message]:
+        self.estop.said(engaged, now)
+        if engaged:
+            self.sim.command_robot(ZERO_TWIST)
         return []
 
     def on_human_cmd(self, human_id: str, cmd: Twist2D, now: float) -> list[Message]:
