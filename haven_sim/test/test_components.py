@@ -144,3 +144,28 @@ def test_the_simulator_honours_the_estop_whatever_publishes_its_commands():
     assert drive(2.0) == pytest.approx(0.0, abs=1e-3)
     sim.on_estop(False, sim.sim.time)  # the true came 2 s ago, beyond the 1 s hold: released
     assert drive(1.0) > 0.2
+
+
+def test_goal_reached_comes_once_the_final_rotation_has_braked_to_rest():
+    """A plan that ends turning in place: the event waits for the robot to stop turning, and its
+    pose is the one the robot rests at (no overshoot after it)."""
+    sim = SimulatorComponent(box_world(10.0), SimulatorConfig())
+    ctrl = ControllerComponent()
+    plan = [Pose2D(5.0 + 0.1 * k, 5.0, 0.0) for k in range(11)] + [Pose2D(6.0, 5.0, math.pi / 2)]
+    ctrl.on_plan(plan, 0.0)
+    reached, states = [], []
+    for step in range(50 * 20):
+        state = by_topic(sim.sense(), topics.ODOM)[0]
+        states.append(state)
+        ctrl.on_odom(state, sim.sim.time)
+        if step % 2 == 0:  # (20 Hz of the simulator's 50)
+            for m in ctrl.tick(sim.sim.time):
+                if m.topic == topics.CMD_VEL_NAV:
+                    sim.on_cmd_vel(m.data, sim.sim.time)
+                elif m.data.kind is EventKind.GOAL_REACHED:
+                    reached.append((m.data, state))
+        sim.advance()
+    (event, at), last = reached[0], states[-1]
+    assert len(reached) == 1 and abs(at.twist.wz) < 0.02 and abs(at.twist.vx) < 0.01
+    assert event["pose"][2] == pytest.approx(last.pose.yaw, abs=0.01)  # where it rests, nothing after
+    assert last.pose.yaw == pytest.approx(math.pi / 2, abs=0.15)

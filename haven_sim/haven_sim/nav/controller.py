@@ -2,7 +2,8 @@
 
 `ControllerComponent` is the whole controller node without ROS (the node only wires it to topics):
 it keeps the latest path, pose and wait flag, and at `rate_hz` commands the robot through the path
-follower, reporting a `goal_reached` event once per path.
+follower, reporting a `goal_reached` event once per path: when the follower has arrived and the
+robot has come to rest (its final rotation braked to a stop), with the pose it rests at.
 """
 
 from __future__ import annotations
@@ -12,13 +13,16 @@ from dataclasses import dataclass
 
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind, Source, event
-from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.common.geometry import ZERO_TWIST, Pose2D, Twist2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import RobotState
 from haven_sim.nav.follower import FollowerParams, PathFollower, Status
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.robots.fields import RobotChoice
 from haven_sim.runtime.component import Handler, Message
+
+AT_REST_MPS, AT_REST_RPS = 0.01, 0.02  # the robot is at rest below these (odometry's speeds)
+REST_WAIT_S = 3.0  # arrived but not at rest after this long (odometry gone quiet): reported all the same
 
 
 @dataclass(frozen=True)
@@ -40,6 +44,8 @@ class ControllerComponent:
         self.config = config or ControllerConfig()
         self.follower = PathFollower(self.config.follower, self.config.style)
         self.robot: Pose2D | None = None
+        self.twist = ZERO_TWIST
+        self._arrived_at: float | None = None  # the follower arrived; goal_reached waits for rest
         self._active = False  # the last tick drove or rotated the robot
         self._plan: list[Pose2D] = []
 
@@ -58,13 +64,14 @@ class ControllerComponent:
             return []  # the plan being followed, sent again (a planner re-sending it): nothing changes
         self._plan = list(poses)
         self.follower.set_path(poses)
+        self._arrived_at = None
         if not poses:  # a cleared plan stops the robot at once
             self._active = False
             return [Message(topics.CMD_VEL_NAV, Twist2D(), now)]
         return []
 
     def on_odom(self, state: RobotState, now: float) -> list[Message]:
-        self.robot = state.pose
+        self.robot, self.twist = state.pose, state.twist
         return []
 
     def on_wait(self, waiting: bool, now: float) -> list[Message]:
@@ -85,7 +92,14 @@ class ControllerComponent:
         self._active = moving
         goal = self.follower.goal
         if status is Status.ARRIVED and before is not Status.ARRIVED and goal is not None:
+            self._arrived_at = now
+        if self._arrived_at is not None and goal is not None and (self._at_rest() or now - self._arrived_at >= REST_WAIT_S):
+            self._arrived_at = None
             pose = [round(v, 3) for v in self.robot]
             reached = event(EventKind.GOAL_REACHED, now, Source.CONTROLLER, goal=[round(goal.x, 3), round(goal.y, 3)], pose=pose)
             out.append(Message(topics.EVENTS, reached, now))
         return out
+
+    def _at_rest(self) -> bool:
+        t = self.twist
+        return abs(t.vx) < AT_REST_MPS and abs(t.vy) < AT_REST_MPS and abs(t.wz) < AT_REST_RPS
