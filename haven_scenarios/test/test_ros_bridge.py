@@ -162,3 +162,22 @@ def test_foxglove_parameters_panel_toggles_a_cue_and_clients_publish_only_the_al
     ros.spin_until(future.done, 10)
     assert future.result().values[0].bool_value is False  # the viz node's own parameter changed
     assert (goals[0].pose.position.x, goals[0].pose.position.y) == (2.0, 3.0)
+
+
+def test_start_up_parameters_are_read_only_and_lists_are_string_arrays_even_when_empty(ros):
+    """As rqt_reconfigure, Foxglove and `ros2 param` see them: what a node reads once at start-up is
+    read-only (not offered for editing); an empty list is a string array, not a byte array."""
+    from rcl_interfaces.msg import ParameterType
+    from rclpy.parameter_client import AsyncParameterClient
+
+    ros.start("haven_sim.nodes.sim_node", {"real_time_factor": 2.0})
+    ros.start("haven_scenarios.nodes.bridge", {"port": 0})
+    for node, names in (("sim_node", ["lockstep_participants", "real_time_factor"]), ("haven_bridge", ["topics", "port"])):
+        client = AsyncParameterClient(ros.node, node)
+        assert ros.spin_until(client.services_are_ready, 30), node
+        described, got = client.describe_parameters(names), client.get_parameters(names[:1])
+        assert ros.spin_until(lambda: described.done() and got.done(), 10)
+        assert [d.read_only for d in described.result().descriptors] == [True, True], node
+        assert described.result().descriptors[0].type == ParameterType.PARAMETER_STRING_ARRAY, node
+        value = got.result().values[0]
+        assert (value.type, list(value.string_array_value)) == (ParameterType.PARAMETER_STRING_ARRAY, []), node

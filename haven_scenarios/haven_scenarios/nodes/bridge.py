@@ -26,7 +26,7 @@ from haven_sim.common import nodes, topics
 from haven_sim.common.params import build, defaults
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import qos, wire
-from haven_sim.nodes.runner import run_node
+from haven_sim.nodes.runner import declare, run_node
 
 ALLOWED = (topics.GOAL, topics.CMD_VEL_TELEOP, topics.ESTOP)  # what Foxglove clients may publish
 TIME_PERIOD_S = 0.05  # the server's time is broadcast at most this often (wall time)
@@ -35,10 +35,10 @@ TIME_PERIOD_S = 0.05  # the server's time is broadcast at most this often (wall 
 class Bridge(Node):
     def __init__(self) -> None:
         super().__init__(nodes.BRIDGE.name)
-        host = self.declare_parameter("host", "127.0.0.1").value
-        port = self.declare_parameter("port", 8765).value
-        only = list(self.declare_parameter("topics", [""]).value)
-        params = build(WireParams, {n: self.declare_parameter(n, d).value for n, d in defaults(WireParams).items()}, where="bridge: parameter ")
+        host = declare(self, "host", "127.0.0.1")
+        port = declare(self, "port", 8765)
+        only = list(declare(self, "topics", []))
+        params = build(WireParams, {n: declare(self, n, d) for n, d in defaults(WireParams).items()}, where="bridge: parameter ")
         self.table = wire.with_wire_params(wire.specs(), params)
         self.publisher = TablePublishers(self, self.table)
         role = Role("foxglove", {absolute(t): wire.type_name(self.table[t].msg_type) for t in ALLOWED}, parameters=True)

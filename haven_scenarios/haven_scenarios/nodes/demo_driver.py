@@ -21,14 +21,14 @@ from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
-from haven_sim.nodes.runner import run_node
+from haven_sim.nodes.runner import declare, run_node
 
 
 class DemoDriver(Node):
     def __init__(self) -> None:
         super().__init__("demo_driver")
-        side = self.declare_parameter("side_m", 1.5).value
-        laps = self.declare_parameter("laps", 1).value
+        side = declare(self, "side_m", 1.5)
+        laps = declare(self, "laps", 1)
         self.driver = SquareDriver(side_m=side, laps=laps)
         self.pose: Pose2D | None = None
         self.last_odom_t: float | None = None

@@ -22,16 +22,16 @@ from haven_scenarios.tools.teleop_status import announce, joined
 from haven_sim.common.events import EventError, EventKind
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import qos
-from haven_sim.nodes.runner import run_node
+from haven_sim.nodes.runner import declare, run_node
 
 
 class KeyboardTeleop(Node):
     def __init__(self) -> None:
         super().__init__("keyboard_teleop")
-        human = self.declare_parameter("human", "h1").value
+        human = declare(self, "human", "h1")
         self.human = str(human)
         self.over = False
-        self.keys = KeyMapper(speed_mps=self.declare_parameter("speed_mps", 1.0).value)
+        self.keys = KeyMapper(speed_mps=declare(self, "speed_mps", 1.0))
         self.pub = self.create_publisher(Twist, f"humans/{human}/cmd_vel", qos.RELIABLE)
         if not sys.stdin.isatty():
             raise ValueError("keyboard teleop needs a terminal (stdin is not one)")

@@ -22,7 +22,7 @@ from rosbags.interfaces import Qos, QosDurability, QosReliability
 
 from haven_scenarios.nodes.raw_topics import message_class
 from haven_scenarios.record.bag import TYPESTORE
-from haven_sim.nodes.runner import run_node, stop_requested
+from haven_sim.nodes.runner import declare, run_node, stop_requested
 
 LATCHED_DEPTH = 10  # rosbag2's depth for a replayed topic whose recorded history is unknown
 
@@ -44,9 +44,9 @@ def replay_qos(offered: list[Qos]) -> QoSProfile:
 class Player(Node):
     def __init__(self) -> None:
         super().__init__("haven_player")
-        self.bag = Path(self.declare_parameter("bag", "").value)
-        self.rate = float(self.declare_parameter("rate", 1.0).value)
-        self.hold = bool(self.declare_parameter("hold", False).value)
+        self.bag = Path(declare(self, "bag", ""))
+        self.rate = float(declare(self, "rate", 1.0))
+        self.hold = bool(declare(self, "hold", False))
         if not self.rate > 0:
             raise ValueError(f"rate must be positive, got {self.rate}")
         if not (self.bag / "metadata.yaml").exists():

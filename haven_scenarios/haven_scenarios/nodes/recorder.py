@@ -49,7 +49,6 @@ import time
 from pathlib import Path
 
 import rclpy
-from rcl_interfaces.msg import ParameterDescriptor
 from rclpy.clock import Clock, ClockType
 from rclpy.node import Node
 from rclpy.qos import QoSProfile
@@ -66,7 +65,7 @@ from haven_sim.common.events import EventKind
 from haven_sim.common.params import build, defaults
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import conversions as conv
-from haven_sim.nodes.runner import refuse_changes, run_node
+from haven_sim.nodes.runner import declare, refuse_changes, run_node
 
 EVENTS = "/" + topics.EVENTS
 GATED = (EVENTS, "/" + topics.GOAL)  # what the scenario node's start waits for the recorder to read
@@ -106,7 +105,7 @@ def bag_qos(p: QoSProfile) -> Qos:
 class Recorder(Node):
     def __init__(self) -> None:
         super().__init__(nodes.RECORDER.name)
-        folder = Path(self.declare_parameter("session_dir", "session").value)
+        folder = Path(declare(self, "session_dir", "session"))
         try:
             folder.mkdir(parents=True, exist_ok=True)
             self.bag = BagWriter(folder / "bag")
@@ -124,8 +123,8 @@ class Recorder(Node):
         self.reached: set[str] = set()  # streams recorded up to the end
         self.flowing: set[str] = set()  # streams that have reached the recorder
         self.publisher_log = PublisherLog()
-        names, opened = (self.declare_parameter(n, [], ParameterDescriptor(dynamic_typing=True)).value or [] for n in ("suite_nodes", "open_topics"))
-        lockstep = bool(self.declare_parameter("suite_lockstep", False).value)
+        names, opened = (declare(self, n, []) for n in ("suite_nodes", "open_topics"))
+        lockstep = bool(declare(self, "suite_lockstep", False))
         self.declared = Declared(frozenset(names), tuple(opened), lockstep) if names else None  # (`haven sim --record`: no trial to judge)
         self.topics = RawTopics(
             self,
@@ -191,7 +190,7 @@ class Recorder(Node):
 
     def _declare_wire_params(self) -> WireParams:
         """The topic table's parameters (stamped velocity commands), as the other nodes have them."""
-        values = {name: self.declare_parameter(name, default).value for name, default in defaults(WireParams).items()}
+        values = {name: declare(self, name, default) for name, default in defaults(WireParams).items()}
         return build(WireParams, values, where="recorder: parameter ")
 
     def _streams_missing(self) -> None:

@@ -63,7 +63,7 @@ from haven_sim.common import nodes, topics
 from haven_sim.common.events import Event, EventKind, Sequencer, Source, event
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
-from haven_sim.nodes.runner import refuse_changes, refused, run_node
+from haven_sim.nodes.runner import declare, refuse_changes, refused, run_node
 
 STATUS_TOPIC = absolute(topics.TRIAL_STATUS)
 EVENTS_KEPT = 2000  # a trial logs a few hundred
@@ -86,23 +86,23 @@ RELAYED = tuple(
 class WebNode(Node):
     def __init__(self) -> None:
         super().__init__(nodes.WEB.name)
-        host = str(self.declare_parameter("host", "127.0.0.1").value)
-        port = int(self.declare_parameter("port", 8088).value)
-        humans = [h for h in self.declare_parameter("humans", [""]).value or () if h]  # `[]` on the command line reads as None
-        scenario = load_scenario(str(self.declare_parameter("scenario", "hallway").value))
-        researcher_start = bool(self.declare_parameter("researcher_start", False).value)
-        tls_cert = str(self.declare_parameter("tls_cert", "").value)  # with tls_key: HTTPS (web/tls.py)
-        tls_key = str(self.declare_parameter("tls_key", "").value)
-        on_disconnect = OnDisconnect(str(self.declare_parameter("on_disconnect", OnDisconnect.KEEP.value).value))
-        reconnect_timeout_s = float(self.declare_parameter("reconnect_timeout_s", DEFAULT_RECONNECT_TIMEOUT_S).value)
-        questionnaires = from_parameter(str(self.declare_parameter("questionnaires", "[]").value))
+        host = str(declare(self, "host", "127.0.0.1"))
+        port = int(declare(self, "port", 8088))
+        humans = [h for h in declare(self, "humans", []) if h]
+        scenario = load_scenario(str(declare(self, "scenario", "hallway")))
+        researcher_start = bool(declare(self, "researcher_start", False))
+        tls_cert = str(declare(self, "tls_cert", ""))  # with tls_key: HTTPS (web/tls.py)
+        tls_key = str(declare(self, "tls_key", ""))
+        on_disconnect = OnDisconnect(str(declare(self, "on_disconnect", OnDisconnect.KEEP.value)))
+        reconnect_timeout_s = float(declare(self, "reconnect_timeout_s", DEFAULT_RECONNECT_TIMEOUT_S))
+        questionnaires = from_parameter(str(declare(self, "questionnaires", "[]")))
         settings = PageSettings(
-            participant=str(self.declare_parameter("participant", "sim").value),
-            session=str(self.declare_parameter("session", "").value),
-            map_inset=bool(self.declare_parameter("map_inset", True).value),
+            participant=str(declare(self, "participant", "sim")),
+            session=str(declare(self, "session", "")),
+            map_inset=bool(declare(self, "map_inset", True)),
             questionnaires=questionnaires,
             teleoperated=tuple(humans),
-            next_url=str(self.declare_parameter("next_url", "").value),
+            next_url=str(declare(self, "next_url", "")),
         )
         self.roles = roles(humans)
         self.secret = os.environ.get(TOKEN_ENV) or new_token()

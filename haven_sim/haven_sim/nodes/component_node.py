@@ -31,7 +31,7 @@ from haven_sim.common.params import ParamsError, bounds_of, build, defaults, doc
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import wire
 from haven_sim.nodes.lockstep import LockstepParticipant
-from haven_sim.nodes.runner import handle, refused, start_up_only
+from haven_sim.nodes.runner import declare, handle, refused, start_up_only
 from haven_sim.nodes.wire import TopicSpec, type_name
 from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import LockstepParams
@@ -78,23 +78,22 @@ class ComponentNode(Node):
     def declare_config(self, cls: type[C]) -> C:
         """Declare every parameter of a config dataclass and build the config from their values. Its
         descriptor has the declaration's range and doc, and is read-only unless the parameter is one
-        of `runtime_parameters` (`ros2 param describe` shows both)."""
+        of `runtime_parameters` (`ros2 param describe` shows both). A list is a string array, also
+        when empty (rclpy would type an empty list as a byte array)."""
         values: dict[str, Any] = {}
         described, bounded = docs(cls), bounds_of(cls)
         for name, default in defaults(cls).items():
             read_only = name not in self.runtime_parameters
-            descriptor = ParameterDescriptor(description=described.get(name, ""), dynamic_typing=True, read_only=read_only)
+            descriptor = ParameterDescriptor(description=described.get(name, ""), read_only=read_only)
             span = ros_range(bounded.get(name))
             if span is not None and isinstance(default, float):
                 descriptor.floating_point_range = [FloatingPointRange(from_value=float(span[0]), to_value=float(span[1]), step=0.0)]
             elif span is not None and isinstance(default, int) and not isinstance(default, bool):
                 descriptor.integer_range = [IntegerRange(from_value=int(span[0]), to_value=int(span[1]), step=0)]
             try:
-                value = self.declare_parameter(name, default, descriptor).value
+                values[name] = declare(self, name, default, descriptor)
             except InvalidParameterValueException:  # (out of its range: said as build() says it)
                 raise ParamsError(f"{self.get_name()}: parameter {name} {bounded[name].rule()}") from None
-            # An empty list in a parameter file (`[]`) reaches the node as "not set".
-            values[name] = [] if value is None and isinstance(default, list) else value
         return build(cls, values, where=f"{self.get_name()}: parameter ")
 
     def _note_read_only(self, params: list[Parameter]) -> list[Parameter]:

@@ -17,12 +17,14 @@ from pathlib import Path
 from typing import Any
 
 import rclpy
-from rcl_interfaces.msg import SetParametersResult
+from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+from rclpy.exceptions import InvalidParameterTypeException
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.signals import SignalHandlerOptions
 
+from haven_sim.common.params import ParamsError
 from haven_sim.runtime.component import Message
 from haven_sim.runtime.process import STOP_SIGNALS
 from haven_sim.sim.world import WorldError
@@ -93,6 +95,25 @@ def refuse_changes(node: Node, on_refused: Callable[[str, str], None] | None = N
         return SetParametersResult(successful=False, reason=refused[1])
 
     node.add_on_set_parameters_callback(check)
+
+
+def declare(node: Node, name: str, default: Any, descriptor: ParameterDescriptor | None = None) -> Any:
+    """Declare a parameter and return its value. Read at start-up only, it is read-only unless
+    `descriptor` says otherwise (so `ros2 param set`, rqt_reconfigure and Foxglove do not offer to
+    change what the node would not act on). A list is a string array, also when empty (rclpy types
+    `[]` as a byte array). ParamsError (one line) for a list given as something else."""
+    d = descriptor if descriptor is not None else ParameterDescriptor(read_only=True)
+    listed = isinstance(default, list)
+    d.dynamic_typing = not listed
+    try:
+        value = node.declare_parameter(name, Parameter.Type.STRING_ARRAY if listed and not default else default, d).value
+    except InvalidParameterTypeException:
+        raise ParamsError(f"{node.get_name()}: parameter {name}: must be a list of strings") from None
+    if listed and value is None:  # declared by its type (or `[]` on the command line): the empty string array
+        # (rclpy's public calls would infer a byte array from [] or leave it unset; its own store takes the typed value)
+        node._parameters[name] = Parameter(name, Parameter.Type.STRING_ARRAY, [])
+        return []
+    return value
 
 
 def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:

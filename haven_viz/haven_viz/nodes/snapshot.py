@@ -13,7 +13,7 @@ from rclpy.node import Node
 from visualization_msgs.msg import Marker, MarkerArray
 
 from haven_sim.nodes import qos
-from haven_sim.nodes.runner import run_node
+from haven_sim.nodes.runner import declare, run_node
 from haven_sim.sim.world import resolve_world_path
 from haven_sim.sim.world_file import load_world
 from haven_viz.markers import MarkerSpec
@@ -24,15 +24,15 @@ from haven_viz.render import render_scene
 class Snapshot(Node):
     def __init__(self) -> None:
         super().__init__("snapshot")
-        self.world = load_world(resolve_world_path(self.declare_parameter("world", "small_test").value))
-        self.out = self.declare_parameter("output", "haven_snapshot.png").value
-        self.wait_s = self.declare_parameter("wait_s", 2.5).value  # one refresh period of the viz node, and a bit
+        self.world = load_world(resolve_world_path(declare(self, "world", "small_test")))
+        self.out = declare(self, "output", "haven_snapshot.png")
+        self.wait_s = declare(self, "wait_s", 2.5)  # one refresh period of the viz node, and a bit
         self.live: dict[tuple[str, int], MarkerSpec] = {}
         self.have_world = False
         self.start: float | None = None
         self.create_subscription(MarkerArray, "haven/world_markers", self._on_world, qos.LATCHED)
         self.create_subscription(MarkerArray, "haven/ar_markers", self._on_ar, qos.RELIABLE)
-        self.timeout_s = float(self.declare_parameter("timeout_s", 10.0).value)
+        self.timeout_s = float(declare(self, "timeout_s", 10.0))
         self.create_timer(0.1, self._tick)
         self.create_timer(self.timeout_s, self._give_up, clock=Clock(clock_type=ClockType.STEADY_TIME))
 
