@@ -41,11 +41,19 @@ SLOW_BOT = "name: slow_bot\ntitle: a slower TurtleBot2\nextends: turtlebot2\nmot
 
 
 def mcap_counts(bag_dir):
-    counts = {}
+    """Messages per topic, read with the mcap library; each /odom and /clock message is logged at
+    the stamp it carries (decoded by rosbags)."""
+    from rosbags.typesys import Stores, get_typestore
+
+    typestore, counts = get_typestore(Stores.ROS2_JAZZY), {}
     with open(next(bag_dir.glob("*.mcap")), "rb") as f:
-        for schema, channel, _ in make_reader(f).iter_messages():
+        for schema, channel, message in make_reader(f).iter_messages():
             counts[channel.topic] = counts.get(channel.topic, 0) + 1
             assert schema.encoding == "ros2msg" and channel.message_encoding == "cdr"
+            if channel.topic in ("/odom", "/clock"):
+                msg = typestore.deserialize_cdr(message.data, schema.name)
+                stamp = msg.header.stamp if channel.topic == "/odom" else msg.clock
+                assert message.log_time == stamp.sec * 1_000_000_000 + stamp.nanosec, channel.topic
     return counts
 
 

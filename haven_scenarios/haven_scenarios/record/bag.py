@@ -3,6 +3,11 @@ as the trial's messages (core payloads) so metrics can be recomputed from any re
 
 Messages arrive as raw CDR bytes (the recorder node subscribes with raw=True), so recording costs
 no Python message conversion; reading deserialises only the topics the metrics need.
+
+A message's log time is the stamp it carries, where it carries one (a std_msgs/Header first, as
+Odometry, LaserScan, PoseStamped; /clock's own time), so the bag's times are the suite's sim-time
+stamps however late the recorder read them; other messages (Bool, String, TFMessage, ...) are
+logged at the recorder's sim time when they arrived, as `ros2 bag record --use-sim-time` does.
 """
 
 from __future__ import annotations
@@ -41,6 +46,7 @@ from haven_sim.sim.battery import BatteryReading, PowerStatus, checked_percentag
 from haven_viz.cues import CueState
 
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
+HEADER, TIME = "std_msgs/msg/Header", "builtin_interfaces/msg/Time"
 LOST_KEY = "haven.messages_lost"  # custom_data in metadata.yaml: {topic: messages DDS reported lost}
 WALL_CLOCK_KEY = "haven.wall_clock"  # custom_data: [[sim ns, wall ns (Unix epoch)], ...] paired about once a second
 CHUNK_OPCODE = 0x06  # an MCAP chunk record
@@ -55,6 +61,7 @@ class BagWriter:
         self.path = path
         self._writer = Writer(path, version=9, storage_plugin=StoragePlugin.MCAP)
         self._connections: dict[str, Connection] = {}
+        self._stamped: dict[str, bool] = {}  # the type starts with a stamp (a Header, or /clock's time)
         self.counts: dict[str, int] = {}
 
     def __enter__(self) -> BagWriter:
@@ -108,12 +115,25 @@ class BagWriter:
         if msgtype not in TYPESTORE.types:
             return False
         self._connections[topic] = self._writer.add_connection(topic, msgtype, typestore=TYPESTORE, offered_qos_profiles=offered_qos)
+        fields = TYPESTORE.fielddefs[msgtype][1]
+        self._stamped[topic] = bool(fields) and fields[0][1][1] in (HEADER, TIME)
         self.counts[topic] = 0
         return True
 
-    def write(self, topic: str, stamp_ns: int, data: bytes) -> None:
-        self._writer.write(self._connections[topic], stamp_ns, data)
+    def write(self, topic: str, received_ns: int, data: bytes) -> None:
+        """One message: logged at its own stamp where it has one (not zero), else at `received_ns`."""
+        stamp = own_stamp(data) if self._stamped[topic] else 0
+        self._writer.write(self._connections[topic], stamp or received_ns, data)
         self.counts[topic] += 1
+
+
+def own_stamp(cdr: bytes) -> int:
+    """The nanoseconds of the Time a CDR message starts with (after the 4-byte encapsulation: little
+    endian when its second byte is 1); 0 when there is none to read."""
+    if len(cdr) < 12:
+        return 0
+    sec, nsec = struct.unpack_from("<iI" if cdr[1] == 1 else ">iI", cdr, 4)
+    return max(0, sec * 1_000_000_000 + nsec) if nsec < 1_000_000_000 else 0
 
 
 def _pose(p: Any) -> Pose2D:
