@@ -88,5 +88,5 @@ def test_hostile_messages_recorded_from_other_nodes_are_skipped_when_read(tmp_pa
             assert abs(m.data.pose.x) <= 1e6 and abs(m.data.pose.y) <= 1e6
         if m.topic == topics.BATTERY:
             assert 0.0 <= m.data.level <= 1.0
-    assert [m.data.pose.x for m in back if m.topic == topics.ODOM and m.data.pose == (1.0, 2.0, 0.3)] == [1.0]  # (in stamp order: where its own puts it)
+    assert [m.data.pose.x for m in back if m.topic == topics.ODOM and m.data.pose == (1.0, 2.0, 0.3)] == [1.0]
     assert not [m for m in back if m.topic in (topics.EVENTS, topics.CUE_STATE)]  # none of the strings is one
