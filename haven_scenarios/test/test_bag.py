@@ -5,7 +5,7 @@ from mcap.reader import make_reader
 from rclpy.serialization import serialize_message
 from std_msgs.msg import String
 
-from haven_scenarios.record.bag import BagWriter, read_messages, to_wall_time
+from haven_scenarios.record.bag import BagWriter, not_recorded, read_messages, to_wall_time
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
@@ -27,6 +27,7 @@ def test_write_then_read_back(tmp_path):
         w.write("/haven/events", 0, bytes(serialize_message(conv.event_msg(e))))
         w.write("/haven/events", 1, bytes(serialize_message(String(data="not an event"))))
     assert (bag / "metadata.yaml").exists() and w.counts == {"/odom": 5, "/haven/events": 2}
+    assert not_recorded(bag) == {"/x": "no_msgs/msg/Nothing: package no_msgs is not installed here"}
     with open(next(bag.glob("*.mcap")), "rb") as f:
         seen = [(c.topic, m.log_time) for _, c, m in make_reader(f).iter_messages()]
     assert sorted(seen) == sorted([("/haven/events", 0), ("/haven/events", 1)] + [("/odom", i * 20_000_000) for i in range(5)])

@@ -113,6 +113,7 @@ class RawTopics:
         params: WireParams = WireParams(),
         on_matched: Callable[[str], None] | None = None,
         catch_up: bool = False,
+        on_unreadable: Callable[[str, str, str], None] | None = None,
     ) -> None:
         """`topics`: only these (all of the graph when None); `keep_all`: readers that drop nothing
         (a recorder's), else the depth of the topic's profile; `on_lost(topic, n)`: DDS reports
@@ -121,9 +122,10 @@ class RawTopics:
         thousands a second); `held`: suite topics not subscribed until `release()`; `params`: the
         topic table's (stamped velocity commands); `on_matched(topic)`: a publisher matched or left
         one of the readers (however briefly it lived); `catch_up`: latched readers beside the
-        volatile ones where every publisher latches (batched mode)."""
+        volatile ones where every publisher latches (batched mode); `on_unreadable(topic, type,
+        why)`: a topic whose type cannot be read here (its package is not installed), said once."""
         self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = node, add, on_message, topics, keep_all, on_lost
-        self.on_matched = on_matched
+        self.on_matched, self.on_unreadable = on_matched, on_unreadable
         self.late: dict[str, Subscription] = {}  # topic -> its latched catch-up reader, while it has one
         self.late_qos = _late_readable(params) if catch_up and batched else {}
         self.seen: dict[str, deque[tuple[int, int]]] = {t: deque(maxlen=1000) for t in self.late_qos}
@@ -205,6 +207,8 @@ class RawTopics:
         try:
             cls = message_class(msgtype)
         except (ImportError, AttributeError):  # e.g. tf2_msgs where the pip setup could not build it
+            if self.on_unreadable is not None:
+                self.on_unreadable(topic, msgtype, f"its package {msgtype.split('/')[0]} is not installed here")
             return
         if not self.add(topic, msgtype, latched):
             return

@@ -123,6 +123,7 @@ class Recorder(Node):
         self.reached: set[str] = set()  # streams recorded up to the end
         self.flowing: set[str] = set()  # streams that have reached the recorder
         self.publisher_log = PublisherLog()
+        self.said_not_recorded: set[str] = set()
         names, opened = (declare(self, n, []) for n in ("suite_nodes", "open_topics"))
         lockstep = bool(declare(self, "suite_lockstep", False))
         self.declared = Declared(frozenset(names), tuple(opened), lockstep) if names else None  # (`haven sim --record`: no trial to judge)
@@ -137,6 +138,7 @@ class Recorder(Node):
             params=self._declare_wire_params(),
             on_matched=self._watch_publishers,
             catch_up=True,
+            on_unreadable=self._not_recorded,
         )
         self.create_timer(PUBLISHERS_PERIOD_S, self._watch_publishers, clock=Clock(clock_type=ClockType.STEADY_TIME))
         self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
@@ -230,12 +232,20 @@ class Recorder(Node):
         if topic == EVENTS:
             self._event(data)
 
+    def _not_recorded(self, topic: str, msgtype: str, why: str) -> None:
+        """A topic that cannot be recorded: said once, and noted in the bag's metadata (so in session.json)."""
+        if topic in self.said_not_recorded:
+            return
+        self.said_not_recorded.add(topic)
+        self.bag.not_recorded.setdefault(topic, f"{msgtype}: {why}")
+        self.get_logger().warning(f"not recording {topic} ({msgtype}): {why}")
+
     def _record(self, topic: str, msgtype: str, data: bytes) -> bool:
         """Into the bag; False for a type rosbags does not know (not recorded)."""
         if not self.bag.has_topic(topic):
             offered = [bag_qos(i.qos_profile) for i in self.get_publishers_info_by_topic(topic)]
             if not self.bag.add_topic(topic, msgtype, offered):
-                self.get_logger().warning(f"not recording {topic}: type {msgtype} unknown to rosbags", throttle_duration_sec=60.0)
+                self._not_recorded(topic, msgtype, self.bag.not_recorded[topic])
                 return False
         self.bag.write(topic, self.get_clock().now().nanoseconds, data)
         return True

@@ -35,6 +35,7 @@ from rosbags.rosbag2 import StoragePlugin, Writer
 from rosbags.rosbag2.storage_mcap import McapWriter
 from rosbags.typesys import Stores, get_typestore
 
+from haven_scenarios.record.message_types import why_not
 from haven_scenarios.record.outsiders import PublisherLog
 from haven_scenarios.record.timeline import RECORDED, Recording
 from haven_sim.common import topics
@@ -51,6 +52,7 @@ LOST_KEY = "haven.messages_lost"  # custom_data in metadata.yaml: {topic: messag
 WALL_CLOCK_KEY = "haven.wall_clock"  # custom_data: [[sim ns, wall ns (Unix epoch)], ...] paired about once a second
 CHUNK_OPCODE = 0x06  # an MCAP chunk record
 PUBLISHERS_KEY = "haven.publishers"  # custom_data: every publisher the recorder saw (record/outsiders.py PublisherLog)
+NOT_RECORDED_KEY = "haven.not_recorded"  # custom_data: {topic: "type: why it could not be recorded"}
 REPAIRED_KEY = "haven.repaired"  # custom_data of a bag rebuilt by record/repair.py: JSON, how and how much
 
 
@@ -62,6 +64,7 @@ class BagWriter:
         self._writer = Writer(path, version=9, storage_plugin=StoragePlugin.MCAP)
         self._connections: dict[str, Connection] = {}
         self._stamped: dict[str, bool] = {}  # the type starts with a stamp (a Header, or /clock's time)
+        self.not_recorded: dict[str, str] = {}  # topic -> "type: why not" (kept in the metadata)
         self.counts: dict[str, int] = {}
 
     def __enter__(self) -> BagWriter:
@@ -83,6 +86,8 @@ class BagWriter:
                 self._writer.set_custom_data(WALL_CLOCK_KEY, json.dumps([list(p) for p in wall_clock]))
             if publishers is not None:
                 self._writer.set_custom_data(PUBLISHERS_KEY, publishers)
+            if self.not_recorded:
+                self._writer.set_custom_data(NOT_RECORDED_KEY, json.dumps(self.not_recorded, sort_keys=True))
             self._writer.close()
             self._writer = None  # type: ignore[assignment]
 
@@ -109,10 +114,15 @@ class BagWriter:
 
     def add_topic(self, topic: str, msgtype: str, offered_qos: Sequence[Qos] = ()) -> bool:
         """Register a topic with the QoS its publishers offer (what `ros2 bag play` republishes with);
-        False for types this ROS distribution's typestore does not know."""
+        a type the typestore does not know is taken from its installed package
+        (record/message_types.py); False (and why, in `not_recorded`) when it cannot be."""
         if topic in self._connections:
             return True
-        if msgtype not in TYPESTORE.types:
+        if topic in self.not_recorded:
+            return False
+        why = why_not(TYPESTORE, msgtype)
+        if why is not None:
+            self.not_recorded[topic] = why  # (it names the type it could not find: this one or one it uses)
             return False
         self._connections[topic] = self._writer.add_connection(topic, msgtype, typestore=TYPESTORE, offered_qos_profiles=offered_qos)
         fields = TYPESTORE.fielddefs[msgtype][1]
@@ -304,6 +314,15 @@ def lost_messages(bag: Path) -> dict[str, int]:
     try:
         lost = json.loads(custom_data(bag).get(LOST_KEY, "{}"))
         return {str(k): int(v) for k, v in lost.items()}
+    except (TypeError, ValueError, AttributeError):
+        return {}
+
+
+def not_recorded(bag: Path) -> dict[str, str]:
+    """The topics the recorder saw but could not record, and why (custom_data of metadata.yaml)."""
+    try:
+        kept = json.loads(custom_data(bag).get(NOT_RECORDED_KEY, "{}"))
+        return {str(k): str(v) for k, v in kept.items()}
     except (TypeError, ValueError, AttributeError):
         return {}
 

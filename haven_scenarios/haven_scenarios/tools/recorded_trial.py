@@ -22,6 +22,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.record.bag import not_recorded
 from haven_scenarios.record.outsiders import allowable
 from haven_scenarios.record.session import (
     END_FD_ENV,
@@ -355,6 +356,7 @@ def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float) 
     write_json(folder / METRICS_FILE, metrics)
     info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
     info["wall_clock"] = trial_wall_clock(folder)
+    info.update({"not_recorded": skipped} if (skipped := not_recorded(folder / "bag")) else {})
     write_json(folder / SESSION_FILE, info)
     if world is not None:
         trajectory_picture(folder, world, rec, f"{plan.scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")

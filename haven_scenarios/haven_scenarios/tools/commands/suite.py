@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 from pathlib import Path
 
+from haven_scenarios.record.bag import not_recorded
 from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, check_name, new_session_dir, provenance, write_json
 from haven_scenarios.run.grid import robot_spec
 from haven_scenarios.run.suite import SIM_SETS, load_suite_config
@@ -118,6 +120,8 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
         codes = sup.stop(first=tuple(n for n in sup.pids() if n != nodes.RECORDER.key))  # the recorder last: it gets everything
     if folder is not None:
         repair_bag(folder / "bag", how="haven sim --record")  # (a recorder that died leaves a bag to mend)
+        if skipped := not_recorded(folder / "bag"):  # (said by the recorder as it saw them; kept with the session)
+            write_json(folder / SESSION_FILE, {**json.loads((folder / SESSION_FILE).read_text()), "not_recorded": skipped})
         print(f"haven: recorded in {folder}")
     if exited is not None and not (exited.name == until and exited.code == 0):
         print(f"haven: {exited.name} exited with code {exited.code}; stopped the others", file=sys.stderr)
