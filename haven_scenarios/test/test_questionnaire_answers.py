@@ -125,6 +125,10 @@ def test_the_researchers_skip_ends_them_and_an_aborted_or_unstarted_trial_has_no
     trial(aborted, "aborted")
     record(unstarted, Event(EventKind.TRIAL_END, 0.0, "scenario", {"reason": "aborted"}))
     assert not wanted(aborted) and not wanted(unstarted) and not wanted(tmp_path / "nothing")
+    interrupted = tmp_path / "c"  # (Ctrl-C mid-trial: it runs again, and is asked about then)
+    interrupted.mkdir()
+    trial(interrupted, "interrupted")
+    assert not wanted(interrupted)
 
 
 def test_the_pages_get_the_questionnaires_and_only_participants_answer_only_the_console_skips():

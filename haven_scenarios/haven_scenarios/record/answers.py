@@ -117,10 +117,11 @@ def _recorded(folder: Path) -> list[dict[str, Any]]:
 
 
 def wanted(folder: Path) -> bool:
-    """Whether the recorded trial is one that questionnaires follow (it started, was not aborted)."""
+    """Whether the recorded trial is one that questionnaires follow (it started, and was neither
+    aborted nor interrupted: such a trial runs again, and is asked about then)."""
     kinds = {e["type"]: e for e in _recorded(folder)}
     end = kinds.get(EventKind.TRIAL_END)
-    return EventKind.TRIAL_START in kinds and end is not None and end.get("reason") != EndReason.ABORTED
+    return EventKind.TRIAL_START in kinds and end is not None and end.get("reason") not in (EndReason.ABORTED, EndReason.INTERRUPTED)
 
 
 def over(folder: Path, humans: Sequence[str], names: Sequence[str]) -> str | None:

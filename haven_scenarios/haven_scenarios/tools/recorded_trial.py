@@ -271,7 +271,8 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
         if asked is not None:  # (also when interrupted)
             info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
         write_outcome(folder, info)
-    stopped = ended.exited is None and not ended.timed_out
+    # (a stop signal that ended the questionnaires' wait stops a study too: no next trial starts)
+    stopped = (ended.exited is None and not ended.timed_out) or ended.questionnaires == "interrupted"
     wall = float(info["wall_time_s"])  # (as session.json has it: the trial to its metrics)
     return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), wall, died, ended.timed_out, stopped)
 

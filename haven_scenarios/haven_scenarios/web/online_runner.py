@@ -44,6 +44,7 @@ class Runner:
         self.console: str | None = None  # the trial's researcher console
         self.trial = ""  # what the runner said it runs now
         self.left: set[str] = set()  # tokens of pages the participant has finished
+        self.last = ""  # its last line of output (why it ended, when it fails)
         self._lock = threading.Lock()
         folder.mkdir(parents=True, exist_ok=True)
         self.log = (folder / LOG).open("a", buffering=1)
@@ -66,6 +67,7 @@ class Runner:
             self.log.write(line)
             line = line.rstrip("\n")
             with self._lock:
+                self.last = line or self.last
                 if line.startswith(PAGE_GONE):
                     self.page = None
                 if m := PAGE_LINE.match(line):

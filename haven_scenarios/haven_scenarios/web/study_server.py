@@ -30,7 +30,7 @@ from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.web import online_pages as pages
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, reply, reply_json, token_cookie
-from haven_scenarios.web.online_runner import Runner
+from haven_scenarios.web.online_runner import LOG, Runner
 from haven_scenarios.web.online_seats import LIVE, Full, Seat, Seats, Standing, standing
 from haven_scenarios.web.presence import OnDisconnect
 
@@ -115,7 +115,8 @@ class StudyServer:
     def tick(self, now: float) -> None:
         with self._lock:
             for p in [p for p, r in self.runners.items() if r.code is not None]:
-                del self.runners[p], self.ports[p]
+                self._ended_runner(p, self.runners.pop(p))
+                del self.ports[p]
             for p in [p for p, asked in self.waiting.items() if now - asked > GONE_S]:
                 del self.waiting[p]
             for p in list(self.waiting):
@@ -126,6 +127,18 @@ class StudyServer:
                 if seat is not None:
                     self.starts[p] += 1
                     self.runners[p] = Runner(p, self.runner_argv(seat), os.environ, self.o.root / p)
+                    print(f"serve: {seat.panel_id} ({p}): session started (pid {self.runners[p].proc.pid})", flush=True)
+
+    def _ended_runner(self, p: str, runner: Runner) -> None:
+        """Said on the researcher's terminal: how a participant's runner ended (its log: online.log)."""
+        seat = self.seats.by_participant(p)
+        who = f"{seat.panel_id if seat else '?'} ({p})"
+        if runner.code == 0:
+            print(f"serve: {who}: session ended", flush=True)
+            return
+        again = "; it starts again when they come back" if self.starts[p] < MAX_STARTS else f"; given up after {MAX_STARTS} starts"
+        log = self.o.root / p / LOG
+        print(f"serve: {who}: session stopped (code {runner.code}: {runner.last[:200]}){again} (log: {log})", file=sys.stderr, flush=True)
 
     def runner_argv(self, seat: Seat) -> list[str]:
         o = self.o
@@ -187,6 +200,11 @@ class StudyServer:
                 waiting = seat.participant in self.waiting
             if live and runner is not None:
                 state, now, console = (Standing.RUNNING if runner.page else Standing.PREPARING), runner.trial, runner.console
+            elif self.starts[seat.participant] >= MAX_STARTS and standing(self.study, self.o.root, seat.participant, self.trials) not in (
+                Standing.DONE,
+                Standing.DECLINED,
+            ):
+                state, now, console = Standing.FAILED, "", None
             else:
                 state, now, console = (Standing.WAITING if waiting else standing(self.study, self.o.root, seat.participant, self.trials)), "", None
             row = {"panel_id": seat.panel_id, "participant": seat.participant, "state": state, "now": now, "joined": seat.joined}

@@ -4,6 +4,7 @@
 // participant's questionnaire progress with Skip questionnaires. Every intervention is an event.
 import { Link, config as readConfig, twist, yawOf } from "./link.js";
 import { fit, footprint, disc, rgba } from "./topdown.js";
+import { NOT_ASKED } from "./task.js";
 
 const cfg = readConfig();
 const state = (window.havenState = { frames: 0, trial: null, toggles: null, events: [], tracks: { robot: [] }, cue: null });
@@ -131,7 +132,7 @@ const answeredBy = {}; // human -> the questionnaires they answered
 function showQuestionnaires() {
   const names = cfg.questionnaires.map((q) => q.name);
   const t = state.trial;
-  const asked = names.length > 0 && !!t && t.state === "ended" && t.end_reason !== "aborted";
+  const asked = names.length > 0 && !!t && t.state === "ended" && !NOT_ASKED.includes(t.end_reason);
   const progress = Object.fromEntries(cfg.teleoperated.map((h) => [h, (answeredBy[h] || []).length]));
   const lines = cfg.teleoperated.map((h) => (progress[h] >= names.length ? `${h}: questionnaires done` : `${h}: questionnaire ${progress[h] + 1} of ${names.length}`));
   state.questionnaires = asked ? lines : [];

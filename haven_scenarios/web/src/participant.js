@@ -9,7 +9,7 @@ import { robotBody, spinParts, withModel, person, walkPerson } from "./bodies.js
 import { dressScene, quality } from "./scenery.js";
 import { drawInset } from "./inset.js";
 import { Controls } from "./controls.js";
-import { taskLine, promptFor } from "./task.js";
+import { taskLine, promptFor, NOT_ASKED } from "./task.js";
 import { goOn } from "./next_page.js";
 import { QuestionnaireForm } from "./questionnaire.js";
 
@@ -165,7 +165,7 @@ const form = new QuestionnaireForm(document.getElementById("questionnaire"), (q,
 window.havenForm = form;
 // After a trial that was not called off: the questionnaires this participant has not answered, in order.
 function pendingQuestionnaire(t) {
-  if (!t || t.state !== "ended" || t.end_reason === "aborted" || state.skipped) return null;
+  if (!t || t.state !== "ended" || NOT_ASKED.includes(t.end_reason) || state.skipped) return null;
   return cfg.questionnaires.find((q) => !state.answered.includes(q.name)) || null;
 }
 function showTrial() {

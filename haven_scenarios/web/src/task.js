@@ -11,6 +11,9 @@ export function taskLine(t, me) {
   return h.dwell !== null ? `${line}  ·  standing in a gem: stay there` : line;
 }
 
+// Trials that end so run again (or not at all): nothing is asked about them.
+export const NOT_ASKED = ["aborted", "interrupted"];
+
 const ENDINGS = {
   completed: "Everyone finished the task.",
   timeout: "The time for this trial is up.",
@@ -32,7 +35,7 @@ export function promptFor(t, cfg, pressedStart, skipped) {
     };
   }
   if (t.state === "ended") {
-    const answered = cfg.questionnaires.length && t.end_reason !== "aborted" && !skipped ? " Thank you for your answers!" : " Thank you!";
+    const answered = cfg.questionnaires.length && !NOT_ASKED.includes(t.end_reason) && !skipped ? " Thank you for your answers!" : " Thank you!";
     const small = cfg.next_url ? "Taking you on…" : "You can close this page.";
     return { title: "Trial over", text: `${ENDINGS[t.end_reason] || ""}${answered}`, small, start: false };
   }

@@ -17,16 +17,16 @@ from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv,
 from haven_sim.common import nodes
 
 
-def add_dropout_options(group: argparse._ActionsContainer) -> None:
+def add_dropout_options(group: argparse._ActionsContainer, default: str = "keep") -> None:
     """What a participant's drop-out during a trial does (web/presence.py)."""
     from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 
     group.add_argument(
         "--on-disconnect",
         choices=[p.value for p in OnDisconnect],
-        default=OnDisconnect.KEEP.value,
-        help="a participant's page disconnects during the trial: keep running (default), pause simulated time until they are back, "
-        "or abort the trial",
+        default=OnDisconnect(default).value,
+        help=f"a participant's page disconnects during the trial: keep running, pause simulated time until they are back, "
+        f"or abort the trial (default {default})",
     )
     group.add_argument(
         "--reconnect-timeout",

@@ -30,6 +30,12 @@ def port_range(text: str) -> tuple[int, int]:
     return int(m.group(1)), int(m.group(2))
 
 
+def query_key(text: str) -> str:
+    if not re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]{0,63}", text):
+        raise argparse.ArgumentTypeError(f"expected a query key of letters, digits and _ (such as PROLIFIC_PID), got {text!r}")
+    return text
+
+
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     from haven_scenarios.web.study_server import DEFAULT_CAPACITY
 
@@ -42,10 +48,9 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         "--capacity", type=bounded_int(1, 64), default=DEFAULT_CAPACITY, help=f"participants in a trial at once (default {DEFAULT_CAPACITY})"
     )
     serve.add_argument("--trial-ports", type=port_range, default=None, metavar="FIRST-LAST", help="the trials' pages on these ports (default any)")
-    serve.add_argument("--id-param", default="participant", help="the link's query key with the panel's id (default participant)")
+    serve.add_argument("--id-param", type=query_key, default="participant", help="the link's query key with the panel's id (default participant)")
     add_tls_options(serve)
-    add_dropout_options(serve)
-    serve.set_defaults(on_disconnect=OnDisconnect.PAUSE.value)  # (a participant gone for good frees their place)
+    add_dropout_options(serve, OnDisconnect.PAUSE.value)  # (a participant gone for good frees their place)
     serve.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every trial")
     serve.add_argument("--network", action="store_true", help="allow DDS discovery beyond localhost")
     serve.set_defaults(func=serve_cmd)
