@@ -30,6 +30,21 @@ def twist(vx=0.0, wz=0.0):
     return conv.twist_msg(conv.Twist2D(vx, 0.0, wz))
 
 
+def stderr_of(proc):
+    """A function returning what `proc` (started with capture) has written to stderr so far."""
+    os.set_blocking(proc.stderr.fileno(), False)
+    text = []
+
+    def said():
+        try:
+            text.append(os.read(proc.stderr.fileno(), 1 << 16).decode(errors="replace"))
+        except BlockingIOError:
+            pass
+        return "".join(text)
+
+    return said
+
+
 def drive(ros, pub, msg, odom, sim_seconds):
     """Publish `msg` every 0.05 s of sim time (as a 20 Hz controller would) for sim_seconds."""
     start = conv.time_from_msg(odom[-1].header.stamp)
@@ -276,23 +291,13 @@ def test_stamped_velocity_commands_drive_the_robot_when_configured(ros):
 def test_a_publisher_of_the_wrong_type_is_named_in_a_warning(ros):
     teleop = ros.node.create_publisher(TwistStamped, "/cmd_vel_teleop", 10)
     mux = ros.start(MUX, capture=True)
-    os.set_blocking(mux.stderr.fileno(), False)
     warning = (
         "/cmd_vel_teleop: haven_test_probe publishes geometry_msgs/msg/TwistStamped, this node reads geometry_msgs/msg/Twist; "
         "ignored (set the stamped_cmd_vel parameter to match)"
     )
-    err = ""
-
-    def warned():
-        nonlocal err
-        try:
-            err += os.read(mux.stderr.fileno(), 1 << 16).decode(errors="replace")
-        except BlockingIOError:
-            pass
-        return warning in err
-
     teleop.publish(TwistStamped())
-    assert ros.spin_until(warned, 30.0), err
+    said = stderr_of(mux)
+    assert ros.spin_until(lambda: warning in said(), 30.0), said()
     ros.stop(mux)
 
 
@@ -371,7 +376,6 @@ def test_with_the_estop_on_a_publisher_on_cmd_vel_beside_the_mux_moves_nothing_a
     estop = ros.node.create_publisher(Bool, "/haven/estop", qos.LATCHED)
     sim = ros.start(SIM, {"cmd_timeout_s": 20.0, "estop_hold_s": 1.0}, capture=True)
     ros.start(MUX, {"use_sim_time": True})
-    os.set_blocking(sim.stderr.fileno(), False)
     ros.wait_matched(keyboard)
     ros.wait_for_messages(odom, 5)
     estop.publish(Bool(data=True))
@@ -381,17 +385,9 @@ def test_with_the_estop_on_a_publisher_on_cmd_vel_beside_the_mux_moves_nothing_a
     drive(ros, keyboard, twist(0.5, 0.0), odom, 2.0)
     moved = conv.pose_from_msg(odom[-1].pose.pose)
     assert math.hypot(moved.x - start.x, moved.y - start.y) < 0.01, (start, moved)
-    err = ""
-
-    def warned():
-        nonlocal err
-        try:
-            err += os.read(sim.stderr.fileno(), 1 << 16).decode(errors="replace")
-        except BlockingIOError:
-            pass
-        return "/haven_test_probe publishes on /cmd_vel beside the velocity mux" in err and "cmd_vel:=cmd_vel_teleop" in err
-
-    assert ros.spin_until(warned, 30.0), err
+    said = stderr_of(sim)
+    named = ("/haven_test_probe publishes on /cmd_vel beside the velocity mux", "cmd_vel:=cmd_vel_teleop")
+    assert ros.spin_until(lambda: all(n in said() for n in named), 30.0), said()
     estop.publish(Bool(data=False))  # released once no true has come for estop_hold_s
     drive(ros, keyboard, twist(0.5, 0.0), odom, 3.0)
     assert conv.pose_from_msg(odom[-1].pose.pose).x - moved.x > 0.3
