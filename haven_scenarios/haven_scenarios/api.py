@@ -16,6 +16,9 @@ layer over the same functions. For example::
     api.run_participant("haven_paper", "p01", batch=True)
     api.study_status("haven_paper"); api.study_report("haven_paper")
 
+    server = api.serve_study("haven_paper", host="0.0.0.0", capacity=2)   # online: `haven serve`
+    print(server.join_url); ...; server.stop()
+
 Bad input raises `TrialError` (or `ValueError`) with one line naming what is wrong. Recorded trials
 and studies start processes and take ROS domains as `haven run` does; call them from the main
 thread (a stop signal, Ctrl-C, ends the trial cleanly).
@@ -25,7 +28,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from haven_scenarios.run.grid import TrialSpec, parse_grid, plan_sweep
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
@@ -39,6 +42,9 @@ from haven_scenarios.tools.commands.study import Report, study_dir, write_report
 from haven_scenarios.tools.commands.study_run import StudyRun
 from haven_scenarios.tools.commands.study_run import run_participant as _run_participant
 from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
+
+if TYPE_CHECKING:
+    from haven_scenarios.web.study_server import StudyServer
 
 __all__ = [
     "RecordedTrial",
@@ -149,3 +155,36 @@ def study_report(study: str, dir: str | Path | None = None, out: str | Path | No
     """The study's tables and summary picture (`haven study report`): what was written where."""
     s = load_study(study)
     return write_report(s, study_dir(Path(dir) if dir is not None else None, s), Path(out) if out is not None else None)
+
+
+SERVE_OPTIONS = (
+    "dir",
+    "host",
+    "port",
+    "capacity",
+    "trial_ports",
+    "id_param",
+    "on_disconnect",
+    "reconnect_timeout",
+    "tls_cert",
+    "tls_key",
+    "params_file",
+    "network",
+)
+
+
+def serve_study(study: str, **options: Any) -> StudyServer:
+    """`haven serve` from a script: the study's server for remote participants, started. Its
+    `join_url` is the panel's link, `console_url` the researcher's list, `sessions()` every
+    session now; `stop()` ends it (each participant's trial stops cleanly, to run again). Options:
+    SERVE_OPTIONS, as `haven serve`'s. ValueError (one line) for a bad study or option."""
+    from haven_scenarios.tools.commands.serve import open_server
+
+    unknown = sorted(set(options) - set(SERVE_OPTIONS))
+    if unknown:
+        raise ValueError(f"serve_study: unknown option {unknown[0]!r} (options: {', '.join(SERVE_OPTIONS)})")
+    if options.get("dir") is not None:
+        options["dir"] = Path(options["dir"])
+    server = open_server(study, **options)
+    server.start()
+    return server

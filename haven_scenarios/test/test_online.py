@@ -167,3 +167,16 @@ def test_a_runner_hands_out_the_page_it_opened_until_the_participant_has_finishe
     assert runner.current_page() is None
     runner.stop()
     assert runner.code is not None and "researcher console" in (tmp_path / "p01" / LOG).read_text()
+
+
+def test_the_api_serves_a_study_as_the_command_does(tmp_path):
+    from haven_scenarios import api
+
+    with pytest.raises(ValueError, match="serve_study: unknown option 'capcity'"):
+        api.serve_study(str(study_file(tmp_path)), capcity=2)
+    server = api.serve_study(str(study_file(tmp_path)), dir=tmp_path / "s", port=0, capacity=1)
+    try:
+        code, page, _ = get(server.join_url.replace("=ID", "=API_1"))
+        assert code == 200 and "Walk past a robot" in page and server.sessions() == []
+    finally:
+        server.stop()

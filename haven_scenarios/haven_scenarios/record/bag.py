@@ -14,12 +14,12 @@ from __future__ import annotations
 
 import json
 import struct
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from io import BytesIO
 from pathlib import Path
 from types import TracebackType
-from typing import Any, BinaryIO
+from typing import Any, BinaryIO, TypeVar
 
 import numpy as np
 import yaml
@@ -47,6 +47,7 @@ from haven_sim.sim.battery import BatteryReading, PowerStatus, checked_percentag
 from haven_viz.cues import CueState
 
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
+T = TypeVar("T")
 HEADER, TIME = "std_msgs/msg/Header", "builtin_interfaces/msg/Time"
 LOST_KEY = "haven.messages_lost"  # custom_data in metadata.yaml: {topic: messages DDS reported lost}
 WALL_CLOCK_KEY = "haven.wall_clock"  # custom_data: [[sim ns, wall ns (Unix epoch)], ...] paired about once a second
@@ -309,22 +310,23 @@ def to_wall_time(pairs: Sequence[tuple[int, int]], sim_s: float) -> float | None
     return float(np.interp(sim_s, sim, wall))
 
 
-def lost_messages(bag: Path) -> dict[str, int]:
-    """What the recorder noted as lost per topic (custom_data of metadata.yaml)."""
+def _kept(bag: Path, key: str, kind: Callable[[Any], T]) -> dict[str, T]:
+    """A {topic: value} mapping the recorder kept in metadata.yaml's custom_data ({} if none or unreadable)."""
     try:
-        lost = json.loads(custom_data(bag).get(LOST_KEY, "{}"))
-        return {str(k): int(v) for k, v in lost.items()}
+        kept = json.loads(custom_data(bag).get(key, "{}"))
+        return {str(k): kind(v) for k, v in kept.items()}
     except (TypeError, ValueError, AttributeError):
         return {}
+
+
+def lost_messages(bag: Path) -> dict[str, int]:
+    """What the recorder noted as lost per topic."""
+    return _kept(bag, LOST_KEY, int)
 
 
 def not_recorded(bag: Path) -> dict[str, str]:
-    """The topics the recorder saw but could not record, and why (custom_data of metadata.yaml)."""
-    try:
-        kept = json.loads(custom_data(bag).get(NOT_RECORDED_KEY, "{}"))
-        return {str(k): str(v) for k, v in kept.items()}
-    except (TypeError, ValueError, AttributeError):
-        return {}
+    """The topics the recorder saw but could not record, and why."""
+    return _kept(bag, NOT_RECORDED_KEY, str)
 
 
 def repaired_note(bag: Path) -> str:

@@ -8,19 +8,22 @@ from __future__ import annotations
 
 import argparse
 import re
+from dataclasses import replace
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from haven_scenarios.study.progress import bind
-from haven_scenarios.study.protocol import StudyError, load_study, study_names
-from haven_scenarios.study.scenario import ScenarioError
+from haven_scenarios.study.protocol import load_study, study_names
 from haven_scenarios.tools.commands.common import PORT, add_dropout_options, add_tls_options, bounded_int, existing_file, fail
 from haven_scenarios.tools.commands.study import study_dir
 from haven_scenarios.tools.commands.study_instruments import interrupted
 from haven_scenarios.web.presence import OnDisconnect
-from haven_sim.common.params import ParamsError
 from haven_sim.runtime.process import on_stop_signals
 
 DEFAULT_PORT = 8080
+
+if TYPE_CHECKING:
+    from haven_scenarios.web.study_server import StudyServer
 
 
 def port_range(text: str) -> tuple[int, int]:
@@ -56,26 +59,39 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     serve.set_defaults(func=serve_cmd)
 
 
-def serve_cmd(args: argparse.Namespace) -> int:
+def open_server(
+    study: str,
+    dir: Path | None = None,
+    tls_cert: str | None = None,
+    tls_key: str | None = None,
+    params_file: str | None = None,
+    **options: Any,
+) -> StudyServer:
+    """`haven serve`'s server for a study file or a shipped study, not started yet (`options`:
+    ServeOptions' host, port, capacity, trial_ports, id_param, on_disconnect, reconnect_timeout,
+    network). ValueError (one line) for a bad study or option; OSError when its folder cannot be written."""
     from haven_scenarios.web.study_server import ServeOptions, StudyServer
     from haven_scenarios.web.tls import tls_files
 
+    s = load_study(study)
+    root = study_dir(dir, s).resolve()
+    trials = bind(s, root)
+    o = ServeOptions(str(Path(s.source).resolve()), root, **options)
+    if o.trial_ports and o.trial_ports[1] - o.trial_ports[0] + 1 < o.capacity:
+        raise ValueError(f"--trial-ports: {o.trial_ports[0]}-{o.trial_ports[1]} has fewer ports than --capacity {o.capacity}")
+    o = replace(o, tls=tls_files(tls_cert, tls_key), params_file=str(Path(params_file).resolve()) if params_file else None)
+    return StudyServer(o, s, trials)
+
+
+def serve_cmd(args: argparse.Namespace) -> int:
+    names = ("host", "port", "capacity", "trial_ports", "id_param", "on_disconnect", "reconnect_timeout", "network")
     try:
-        study = load_study(args.study)
-        root = study_dir(args.dir, study).resolve()
-        trials = bind(study, root)
-        if args.trial_ports and args.trial_ports[1] - args.trial_ports[0] + 1 < args.capacity:
-            raise ValueError(f"--trial-ports: {args.trial_ports[0]}-{args.trial_ports[1]} has fewer ports than --capacity {args.capacity}")
-        tls = tls_files(args.tls_cert, args.tls_key)
-        options = ServeOptions(
-            str(Path(study.source).resolve()), root, args.host, args.port, args.capacity, tls, args.trial_ports, args.id_param,
-            args.on_disconnect, args.reconnect_timeout, str(Path(args.params_file).resolve()) if args.params_file else None, args.network,
-        )  # fmt: skip
-        server = StudyServer(options, study, trials)
-    except (StudyError, ScenarioError, ParamsError, ValueError) as e:
+        server = open_server(args.study, args.dir, args.tls_cert, args.tls_key, args.params_file, **{n: getattr(args, n) for n in names})
+    except ValueError as e:  # (StudyError, ScenarioError and ParamsError are ValueErrors)
         return fail(str(e))
     except OSError as e:
         return fail(f"cannot write the study's folder: {e.strerror or e}")
+    study, root = server.study, server.o.root
     server.start()
     try:
         with on_stop_signals(interrupted):
