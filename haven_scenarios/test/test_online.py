@@ -94,6 +94,8 @@ def test_two_servers_on_one_study_folder_share_the_places_and_refuse_strangers(t
         assert code == 303 and head["Location"].startswith("/session/p01?key=")
         assert get(f"{two.base}/join?participant=PANEL_B")[2]["Location"].startswith("/session/p02?key=")
         assert get(f"{two.base}/join?participant=PANEL_A")[2]["Location"] == head["Location"]  # the same place on the other server
+        code, page, _ = get(f"{two.base}/?participant=PANEL_A")  # back on the landing page: the way back, not a new start
+        assert code == 200 and "Welcome back" in page and "Continue where you left off" in page
         code, page, _ = get(f"{two.base}/join?participant=PANEL_C")
         assert code == 200 and "The study is full" in page
         code, page, _ = get(f"{one.base}/join?participant=..%2Fetc")

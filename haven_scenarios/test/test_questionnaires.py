@@ -74,7 +74,10 @@ def test_answers_off_the_scale_are_refused_in_one_line(answers: object, message:
         (["godspeed", "godspeed"], "named twice"),
         ([3], "must be a registered questionnaire.s name or a mapping"),
         # YAML reads `anchors: [No, Yes]` as booleans
-        ([{"name": "x", "anchors": [False, True], "items": [{"id": "a", "text": "x"}]}], r"anchors.*must be text, got False \(put the words"),
+        (
+            [{"name": "x", "anchors": [False, True], "items": [{"id": "a", "text": "x"}]}],
+            r"anchors.*must be text, got False \(YAML reads Yes, No, On and Off as true or false: put the words in quotes",
+        ),
     ],
 )
 def test_bad_questionnaire_specs_are_one_line_errors(specs: list[object], message: str) -> None:

@@ -175,7 +175,8 @@ def _text(limit: int) -> Any:
 
     def check(value: Any) -> str:
         if isinstance(value, (bool, int, float)):  # YAML reads Yes, No, On, Off as booleans, 5 as a number
-            raise ValueError(f'must be text, got {short(value)} (put the words in quotes: "Yes")')
+            words = "YAML reads Yes, No, On and Off as true or false" if isinstance(value, bool) else "YAML reads it as a number"
+            raise ValueError(f'must be text, got {short(value)} ({words}: put the words in quotes, e.g. "No")')
         if not isinstance(value, str) or not value.strip() or len(value) > limit or "\n" in value.strip():
             raise ValueError(f"must be one line of text (at most {limit} characters)")
         return value.strip()

@@ -94,6 +94,9 @@ class Seats:
             self._write(seats)
             return seat
 
+    def by_panel_id(self, panel_id: str) -> Seat | None:
+        return self._read().get(panel_id)
+
     def by_participant(self, participant: str) -> Seat | None:
         return next((s for s in self._read().values() if s.participant == participant), None)
 

@@ -241,7 +241,8 @@ class StudyServer:
     def _join(self, h: BaseHTTPRequestHandler, panel_id: str, join: bool) -> None:
         html = "text/html; charset=utf-8"
         if not join:
-            return reply(h, 200, pages.landing(self.study, panel_id, self.o.id_param), html)
+            returning = bool(panel_id) and self.seats.by_panel_id(panel_id) is not None
+            return reply(h, 200, pages.landing(self.study, panel_id, self.o.id_param, returning), html)
         try:
             seat = self.seats.join(panel_id)
         except ValueError as e:
