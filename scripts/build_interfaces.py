@@ -1,8 +1,11 @@
-"""Builds tf2_msgs (TFMessage) into the venv with colcon, for the pip-only setup: PyPI has no
-tf2_msgs wheel. Per ROS_PIP_NOTES: the ROS build wheels must be installed (they are in the lock file),
-and the include paths of the wheels' build machine baked into their *Export.cmake files rewritten
-to this machine's. Installs with --merge-install into the venv prefix, where rclpy already finds
-messages. Exits non-zero with one line if anything is missing; setup.sh then carries on without TF.
+"""Builds the interface packages PyPI has no wheel for into the venv with colcon, for the pip-only
+setup: tf2_msgs (TF), and the nav2_msgs subset that HAVEN's Nav2 action servers and
+nav2_simple_commander need (with geographic_msgs' two messages it uses). Their interface files are
+in scripts/interfaces/. Per ROS_PIP_NOTES: the ROS build wheels must be installed (they are in the
+lock file), and the include paths of the wheels' build machine baked into their *Export.cmake
+files rewritten to this machine's. Installs with --merge-install into the venv prefix, where rclpy
+already finds messages; only packages that do not import yet are built. Exits non-zero with one
+line if anything is missing; setup.sh then carries on without them.
 
 usage: .venv/bin/python scripts/build_interfaces.py
 """
@@ -16,10 +19,17 @@ import subprocess
 import sys
 import sysconfig
 import tempfile
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 PREFIX = Path(sys.prefix)
+# package -> (an import that proves it is built, what is missing without it)
+PACKAGES = {
+    "tf2_msgs": ("from tf2_msgs.msg import TFMessage; TFMessage()", "TF (/tf, /tf_static)"),
+    "geographic_msgs": ("from geographic_msgs.msg import GeoPose; GeoPose()", "Nav2's actions"),
+    "nav2_msgs": ("from nav2_msgs.action import NavigateToPose; NavigateToPose.Goal()", "Nav2's actions (navigate_to_pose, ...)"),
+}
 
 
 def fix_export_paths() -> int:
@@ -37,12 +47,22 @@ def fix_export_paths() -> int:
     return fixed
 
 
+def imports(package: str) -> bool:
+    return subprocess.run([sys.executable, "-c", PACKAGES[package][0]], capture_output=True).returncode == 0
+
+
 def main() -> int:
+    wanted = [p for p in PACKAGES if not imports(p)]
+    if not wanted:
+        print("build_interfaces: " + ", ".join(PACKAGES) + " already built")
+        return 0
+    missing = "; ".join(f"{p}: {PACKAGES[p][1]}" for p in wanted)
     for tool in ("cmake", "make", "cc"):
         if shutil.which(tool) is None:
-            print(f"build_interfaces: {tool} not found; TF (tf2_msgs) will not be available", file=sys.stderr)
+            print(f"build_interfaces: {tool} not found; not available: {missing}", file=sys.stderr)
             return 1
     fixed = fix_export_paths()
+    started = time.monotonic()
     with tempfile.TemporaryDirectory() as tmp:
         cmd = [
             str(PREFIX / "bin" / "colcon"),
@@ -52,6 +72,8 @@ def main() -> int:
             "--merge-install",
             "--base-paths",
             str(ROOT / "scripts" / "interfaces"),
+            "--packages-select",
+            *wanted,
             "--build-base",
             f"{tmp}/build",
             "--install-base",
@@ -66,13 +88,14 @@ def main() -> int:
         r = subprocess.run(cmd, capture_output=True, text=True, env=env)
         if r.returncode != 0:
             tail = (r.stdout + r.stderr).strip().splitlines()[-15:]
-            print("build_interfaces: colcon build of tf2_msgs failed:\n" + "\n".join(tail), file=sys.stderr)
+            print(f"build_interfaces: colcon build of {', '.join(wanted)} failed:\n" + "\n".join(tail), file=sys.stderr)
             return 1
-    check = subprocess.run([sys.executable, "-c", "from tf2_msgs.msg import TFMessage; TFMessage()"], capture_output=True, text=True)
-    if check.returncode != 0:
-        print(f"build_interfaces: tf2_msgs built but does not import: {check.stderr.strip().splitlines()[-1]}", file=sys.stderr)
+    broken = [p for p in wanted if not imports(p)]
+    if broken:
+        print(f"build_interfaces: built but does not import: {', '.join(broken)}", file=sys.stderr)
         return 1
-    print(f"build_interfaces: tf2_msgs built into {PREFIX} ({fixed} cmake files had their paths fixed)")
+    took = time.monotonic() - started
+    print(f"build_interfaces: {', '.join(wanted)} built into {PREFIX} in {took:.0f} s ({fixed} cmake files had their paths fixed)")
     return 0
 
 

@@ -46,10 +46,11 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   echo "setup: installed the locked dependencies and the HAVEN packages into $VENV"
 fi
 
-# tf2_msgs is not on PyPI: build it into the venv once (needs cmake and a C compiler). Without it
-# everything works except TF (/tf, /tf_static), which the simulator then skips with a warning.
-if ! "$VENV/bin/python" -c "import tf2_msgs.msg" >/dev/null 2>&1; then
-  "$VENV/bin/python" scripts/build_interfaces.py || echo "setup: continuing without TF" >&2
+# tf2_msgs and nav2_msgs are not on PyPI: build them into the venv once (needs cmake and a C
+# compiler; about 2 minutes). Without them everything works except TF (/tf, /tf_static), which the
+# simulator then skips with a warning, and Nav2's action servers (navigate_to_pose, ...).
+if ! "$VENV/bin/python" -c "import tf2_msgs.msg, nav2_msgs.action" >/dev/null 2>&1; then
+  "$VENV/bin/python" scripts/build_interfaces.py || echo "setup: continuing without them" >&2
 fi
 
 # The browser pieces: the pages' npm packages (a test rebuilds the committed bundles from them) and
