@@ -17,6 +17,8 @@ ROS_IMPORTS = (
     "std_srvs",
     "builtin_interfaces",
     "tf2_msgs",
+    "nav2_msgs",
+    "lifecycle_msgs",
     "rcl_interfaces",
 )
 

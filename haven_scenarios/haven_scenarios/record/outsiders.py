@@ -59,6 +59,7 @@ WRITERS: Mapping[str, frozenset[str]] = {
     _t(topics.WIZARD_THOUGHT): frozenset({WEB}),
     _t(topics.EVENTS): EVERY_NODE,
     _t(topics.REMOVE_OBSTRUCTION): frozenset({SCENARIO}),
+    _t(topics.CANCEL_GOAL): frozenset(),  # (`haven sim`'s Nav2 servers, which a trial does not run)
     _t(topics.TRIAL_STATUS): frozenset({SCENARIO}),
     _t(topics.TRIAL_CONTROL): frozenset({WEB}),
     _t(topics.ESTOP): frozenset(),

@@ -35,11 +35,12 @@ class EventKind(StrEnum):
     CMD_SOURCE = "cmd_source"  # from, to: nav | teleop | estop | idle
     # planner
     PLAN_MADE = "plan_made"  # goal, length_m, poses
-    PLAN_REFUSED = "plan_refused"  # reason
+    PLAN_REFUSED = "plan_refused"  # reason; failure (nav.planner.PlanFailure) where a plan was tried
     WAITING = "waiting"  # reason, human
     RESUMED = "resumed"
     REPLANNED = "replanned"  # side, human
     REVERTED = "reverted"
+    GOAL_CANCELLED = "goal_cancelled"  # by: the goal dropped on /haven/cancel_goal (a Nav2 client's cancel)
     GOAL_STORM = "goal_storm"  # goals, superseded, seconds: goals came faster than goal_interval_s (the newest won)
     # controller
     GOAL_REACHED = "goal_reached"  # goal, pose

@@ -25,10 +25,13 @@ SCENARIO = SuiteNode("scenario", "scenario", "haven_scenarios.nodes.scenario_nod
 RECORDER = SuiteNode("recorder", "recorder", "haven_scenarios.nodes.recorder", observer=True)
 WEB = SuiteNode("web", "web", "haven_scenarios.nodes.web_node", observer=True)
 BRIDGE = SuiteNode("bridge", "haven_bridge", "haven_scenarios.nodes.bridge", observer=True)
+# Nav2's action servers over the planner and controller (its process also holds planner_server,
+# controller_server, waypoint_follower and amcl): `haven sim` starts it where nav2_msgs is installed.
+NAV2 = SuiteNode("nav2", "bt_navigator", "haven_sim.nodes.nav2_node", replaceable=True)
 
 COMPONENTS = (SIM, MUX, PLANNER, CONTROLLER, VIZ)  # what `haven sim` starts, in this order
 TRIAL = (RECORDER, *COMPONENTS, SCENARIO)  # what `haven run` starts (and WEB with --web)
 LOCKSTEP_PARTICIPANTS = (MUX, PLANNER, CONTROLLER, VIZ, SCENARIO)  # on the lockstep clock, each takes every tick
-REPLACEABLE = tuple(n.key for n in COMPONENTS if n.replaceable)
+REPLACEABLE = tuple(n.key for n in (*COMPONENTS, NAV2) if n.replaceable)
 OBSERVERS = frozenset(n.name for n in (VIZ, RECORDER, WEB, BRIDGE))
-BY_KEY = {n.key: n for n in (*TRIAL, WEB, BRIDGE)}
+BY_KEY = {n.key: n for n in (*TRIAL, WEB, BRIDGE, NAV2)}

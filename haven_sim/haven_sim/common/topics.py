@@ -29,6 +29,7 @@ THOUGHT = "haven/thought"
 WIZARD_THOUGHT = "haven/wizard_thought"  # the researcher's thought text, held (String: JSON {text, until, everywhere})
 EVENTS = "haven/events"
 REMOVE_OBSTRUCTION = "haven/remove_obstruction"
+CANCEL_GOAL = "haven/cancel_goal"  # (String: who cancels) the planner drops its goal and the robot stops
 AR_MARKERS = "haven/ar_markers"
 WORLD_MARKERS = "haven/world_markers"
 CUE_STATE = "haven/cue_state"

@@ -38,7 +38,7 @@ from haven_sim.nav.navigator_params import NavigatorParams
 from haven_sim.nav.passing import beside, normal_at, offset_from, room_beside
 from haven_sim.nav.path_style import ShapeParams, shape_path
 from haven_sim.nav.people_map import with_people
-from haven_sim.nav.planner import GridPlanner, Plan, PlannerParams, PlanningError
+from haven_sim.nav.planner import GridPlanner, Plan, PlanFailure, PlannerParams, PlanningError
 from haven_sim.nav.planner_kind import PathSearch
 from haven_sim.sim.occupancy import OccupancyGridData
 
@@ -135,7 +135,7 @@ class Navigator:
         except PlanningError:
             raise
         except Exception as e:  # noqa: BLE001 - a lab's planner may fail in any way
-            raise PlanningError(f"the planner failed: {plugins.failure(e)}") from None
+            raise PlanningError(f"the planner failed: {plugins.failure(e)}", PlanFailure.UNKNOWN) from None
 
     @property
     def block_distance_m(self) -> float:
@@ -161,9 +161,8 @@ class Navigator:
         try:
             plan = self._plan(self.search, (robot.x, robot.y), (goal.x, goal.y))
         except PlanningError as e:
-            self.state, self.goal, self.original, self.active = NavState.IDLE, None, [], []
-            out.path, out.waiting = [], False
-            out.events.append(self._event(EventKind.PLAN_REFUSED, now, goal=_xy((goal.x, goal.y)), reason=str(e)))
+            out = self.cancel()
+            out.events.append(self._event(EventKind.PLAN_REFUSED, now, goal=_xy((goal.x, goal.y)), reason=str(e), failure=e.failure))
             return out
         self.goal = goal
         points = onto_lanes(plan.points, self.lanes, self._visible) if self.lanes else plan.points
@@ -174,6 +173,13 @@ class Navigator:
         self.original = poses
         out.path, out.waiting = poses, False
         out.events.append(self._event(EventKind.PLAN_MADE, now, goal=_xy((goal.x, goal.y)), length_m=round(self.route.length, 3), poses=len(poses)))
+        return out
+
+    def cancel(self) -> NavOutput:
+        """Drop the goal: an empty path (the controller stops at once) and no waiting."""
+        self.state, self.goal, self.original, self.active = NavState.IDLE, None, [], []
+        out = NavOutput()
+        out.path, out.waiting = [], False
         return out
 
     def _follow(self, poses: list[Pose2D], state: NavState, back_s: float = math.inf) -> None:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from enum import StrEnum
 from typing import Protocol, overload
 
 import numpy as np
@@ -41,8 +42,25 @@ class PlannerParams:
         return self.body_radius_m + self.safety_margin_m
 
 
+class PlanFailure(StrEnum):
+    """Why a plan could not be made (the `failure` of a `plan_refused` event): the kinds Nav2's
+    planner server reports (nav2_msgs/action/ComputePathToPose's error codes), so a Nav2 client
+    is told the same."""
+
+    START_OUTSIDE_MAP = "start_outside_map"
+    GOAL_OUTSIDE_MAP = "goal_outside_map"
+    START_OCCUPIED = "start_occupied"
+    GOAL_OCCUPIED = "goal_occupied"
+    NO_VALID_PATH = "no_valid_path"
+    UNKNOWN = "unknown"  # (a lab's planner that failed otherwise)
+
+
 class PlanningError(Exception):
     """A goal that cannot be reached; the message is the reason, for the user and the events."""
+
+    def __init__(self, reason: str, failure: PlanFailure = PlanFailure.NO_VALID_PATH) -> None:
+        super().__init__(reason)
+        self.failure = failure
 
 
 def inflate_square(occupied: BoolGrid, cells: int) -> BoolGrid:
@@ -209,7 +227,7 @@ class GridPlanner:
         x, y = p
         r, c = g.cell_of(x, y)
         if not (0 <= r < g.height and 0 <= c < g.width):
-            raise PlanningError(f"{what} ({x:.2f}, {y:.2f}) is outside the map")
+            raise PlanningError(f"{what} ({x:.2f}, {y:.2f}) is outside the map", PlanFailure(f"{what}_outside_map"))
         if not self.blocked[r, c]:
             return p
         k = int(math.ceil(self.params.snap_radius_m / g.resolution_m))
@@ -221,7 +239,8 @@ class GridPlanner:
             best = int(np.argmin(d))
             if d[best] <= self.params.snap_radius_m:
                 return (float(pts[best, 0]), float(pts[best, 1]))
-        raise PlanningError(f"{what} ({x:.2f}, {y:.2f}) is inside an obstacle or within {self.params.inflation_m:.2f} m of one")
+        inside = f"{what} ({x:.2f}, {y:.2f}) is inside an obstacle or within {self.params.inflation_m:.2f} m of one"
+        raise PlanningError(inside, PlanFailure(f"{what}_occupied"))
 
     # -- queries ---------------------------------------------------------------------------------
     def plan(self, start: Point, goal: Point) -> Plan:

@@ -96,7 +96,13 @@ class PlannerComponent:
         return 1.0 / self.config.check_rate_hz
 
     def handlers(self) -> Mapping[str, Handler]:
-        return {topics.MAP: self.on_map, topics.ODOM: self.on_odom, topics.HUMANS: self.on_humans, topics.GOAL: self.on_goal}
+        return {
+            topics.MAP: self.on_map,
+            topics.ODOM: self.on_odom,
+            topics.HUMANS: self.on_humans,
+            topics.GOAL: self.on_goal,
+            topics.CANCEL_GOAL: self.on_cancel,
+        }
 
     def outputs(self) -> Sequence[str]:
         return (topics.PLAN, topics.WAIT, topics.EVENTS)
@@ -136,6 +142,15 @@ class PlannerComponent:
             self.storm.goals += 1
         self.pending = goal.pose
         return self._try_pending(now)
+
+    def on_cancel(self, by: str, now: float) -> list[Message]:
+        """Drop the goal (and one not planned yet): the robot stops; said in a `goal_cancelled` event."""
+        had = self.pending is not None or (self.nav is not None and self.nav.goal is not None)
+        self.pending = None
+        if self.nav is None or not had:
+            return []
+        cancelled = event(EventKind.GOAL_CANCELLED, now, Source.PLANNER, by=by or "unknown")
+        return self._messages(self.nav.cancel(), now) + [Message(topics.EVENTS, cancelled, now)]
 
     def refusal(self, goal: Goal) -> str | None:
         """Why a goal cannot even be planned for, or None."""

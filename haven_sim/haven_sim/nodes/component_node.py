@@ -44,6 +44,28 @@ CLOCK_LEAP_S = 60.0  # a jump of the clock this large either way is no simulator
 FLOOD_RATE_HZ, FLOOD_BURST = 200.0, 200  # per input topic, sim time: 4x the fastest the suite sends (/odom: 50 Hz)
 
 
+def declare_config(node: Node, cls: type[C], runtime: frozenset[str] = frozenset()) -> C:
+    """Declare every parameter of a config dataclass on `node` and build the config from their
+    values. Its descriptor has the declaration's range and doc, and is read-only unless the
+    parameter is one of `runtime` (`ros2 param describe` shows both). A list is a string array,
+    also when empty (rclpy would type an empty list as a byte array)."""
+    values: dict[str, Any] = {}
+    described, bounded = docs(cls), bounds_of(cls)
+    for name, default in defaults(cls).items():
+        read_only = name not in runtime
+        descriptor = ParameterDescriptor(description=described.get(name, ""), read_only=read_only)
+        span = ros_range(bounded.get(name))
+        if span is not None and isinstance(default, float):
+            descriptor.floating_point_range = [FloatingPointRange(from_value=float(span[0]), to_value=float(span[1]), step=0.0)]
+        elif span is not None and isinstance(default, int) and not isinstance(default, bool):
+            descriptor.integer_range = [IntegerRange(from_value=int(span[0]), to_value=int(span[1]), step=0)]
+        try:
+            values[name] = declare(node, name, default, descriptor)
+        except InvalidParameterValueException:  # (out of its range: said as build() says it)
+            raise ParamsError(f"{node.get_name()}: parameter {name} {bounded[name].rule()}") from None
+    return build(cls, values, where=f"{node.get_name()}: parameter ")
+
+
 class ComponentNode(Node):
     # Parameters that may change while the node runs (the rest are read at start-up only).
     runtime_parameters: frozenset[str] = frozenset()
@@ -76,25 +98,8 @@ class ComponentNode(Node):
 
     # -- declare and configure -------------------------------------------------------------------
     def declare_config(self, cls: type[C]) -> C:
-        """Declare every parameter of a config dataclass and build the config from their values. Its
-        descriptor has the declaration's range and doc, and is read-only unless the parameter is one
-        of `runtime_parameters` (`ros2 param describe` shows both). A list is a string array, also
-        when empty (rclpy would type an empty list as a byte array)."""
-        values: dict[str, Any] = {}
-        described, bounded = docs(cls), bounds_of(cls)
-        for name, default in defaults(cls).items():
-            read_only = name not in self.runtime_parameters
-            descriptor = ParameterDescriptor(description=described.get(name, ""), read_only=read_only)
-            span = ros_range(bounded.get(name))
-            if span is not None and isinstance(default, float):
-                descriptor.floating_point_range = [FloatingPointRange(from_value=float(span[0]), to_value=float(span[1]), step=0.0)]
-            elif span is not None and isinstance(default, int) and not isinstance(default, bool):
-                descriptor.integer_range = [IntegerRange(from_value=int(span[0]), to_value=int(span[1]), step=0)]
-            try:
-                values[name] = declare(self, name, default, descriptor)
-            except InvalidParameterValueException:  # (out of its range: said as build() says it)
-                raise ParamsError(f"{self.get_name()}: parameter {name} {bounded[name].rule()}") from None
-        return build(cls, values, where=f"{self.get_name()}: parameter ")
+        """`declare_config` with this node's `runtime_parameters`."""
+        return declare_config(self, cls, self.runtime_parameters)
 
     def _note_read_only(self, params: list[Parameter]) -> list[Parameter]:
         """An attempt to set a read-only parameter (which rclpy then refuses, "Trying to set a

@@ -19,7 +19,7 @@ from typing import Any
 import rclpy
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
 from rclpy.exceptions import InvalidParameterTypeException
-from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor, SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.signals import SignalHandlerOptions
@@ -116,31 +116,36 @@ def declare(node: Node, name: str, default: Any, descriptor: ParameterDescriptor
     return value
 
 
-def run_node(factory: Callable[[], Node], args: Sequence[str] | None = None) -> int:
-    """Configuration errors become one line on stderr and exit code 2, never a traceback."""
+def run_node(factory: Callable[[], Node | Sequence[Node]], args: Sequence[str] | None = None, threads: int = 1) -> int:
+    """Configuration errors become one line on stderr and exit code 2, never a traceback. The
+    factory may make several nodes (one process, one executor); with `threads` above 1 their
+    callbacks run on that many threads (for callbacks that wait, as action servers' do)."""
     rclpy.init(args=list(args) if args is not None else None, signal_handler_options=SignalHandlerOptions.NO)
     for sig in STOP_SIGNALS:
         signal.signal(sig, _on_signal)
-    node: Node | None = None
+    made: list[Node] = []
     try:
         try:
-            node = factory()
+            got = factory()
+            made = [got] if isinstance(got, Node) else list(got)
         except (WorldError, ValueError) as e:  # bad world or parameters: one line, no traceback
             print(f"error: {e}", file=sys.stderr)
             return 2
-        executor = SingleThreadedExecutor()
-        executor.add_node(node)
+        executor = SingleThreadedExecutor() if threads == 1 else MultiThreadedExecutor(num_threads=threads)
+        for node in made:
+            executor.add_node(node)
         while not _stop.is_set():
             try:
                 executor.spin_once(timeout_sec=POLL_S)
             except ExternalShutdownException:
                 raise
             except Exception as e:  # noqa: BLE001 - see callback_failed
-                callback_failed(node, e)
+                callback_failed(made[0], e)
+        executor.shutdown(timeout_sec=1.0)
     except ExternalShutdownException:
         pass
     finally:
-        if node is not None:
+        for node in made:
             node.destroy_node()
         rclpy.try_shutdown()
     return 0

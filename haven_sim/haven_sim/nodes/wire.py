@@ -93,6 +93,7 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
         topics.WIZARD_THOUGHT: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
         topics.EVENTS: TopicSpec(String, lambda e, _: conv.event_msg(e), conv.event_from_msg, qos.EVENTS_PUB, qos.EVENTS),
         topics.REMOVE_OBSTRUCTION: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
+        topics.CANCEL_GOAL: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
         topics.TRIAL_STATUS: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
         topics.TRIAL_CONTROL: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
     }

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import difflib
+import importlib.util
 import math
 import socket
 import sys
@@ -15,6 +16,7 @@ from haven_scenarios.run.trial import SEED_MAX
 from haven_scenarios.tools.domains import MAX_DOMAIN_ID, Claim, claim_domain
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 from haven_sim.common import nodes
+from haven_sim.common.params import load_params_file
 
 
 def add_dropout_options(group: argparse._ActionsContainer, default: str = "keep") -> None:
@@ -190,6 +192,18 @@ def suite_specs(params: Mapping[str, Mapping[str, object]], pfile: str | None, w
             own = {"use_sim_time": True, **own}
         specs.append(ProcessSpec(node.key, node_argv(node.module, own, params_file=pfile)))
     return specs
+
+
+def nav2_specs(params: Mapping[str, Mapping[str, object]], pfile: str | None) -> list[ProcessSpec]:
+    """Nav2's action servers (nodes.NAV2) with the planner's parameters, from the parameter file's
+    planner section and the command's (its planner_server plans as our planner does), or nothing,
+    said in one line, where nav2_msgs is not installed."""
+    if importlib.util.find_spec("nav2_msgs") is None:
+        print("haven: nav2_msgs is not installed: no Nav2 action servers (scripts/build_interfaces.py builds it)", flush=True)
+        return []
+    from_file = load_params_file(pfile).get(nodes.PLANNER.name, {}) if pfile else {}
+    own = {"use_sim_time": True, **from_file, **params.get(nodes.PLANNER.key, {})}
+    return [ProcessSpec(nodes.NAV2.key, node_argv(nodes.NAV2.module, own, params_file=pfile))]
 
 
 def run_client(args: argparse.Namespace, name: str, module: str, params: dict[str, object], extra: Sequence[str] = ()) -> int:

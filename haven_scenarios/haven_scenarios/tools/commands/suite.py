@@ -19,6 +19,7 @@ from haven_scenarios.tools.commands.common import (
     claim,
     environment,
     fail,
+    nav2_specs,
     params_file,
     positive,
     suite_specs,
@@ -98,6 +99,8 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
     if args.robot is not None:  # (every node that has the `robot` parameter; the others ignore it)
         own = {n.key: {**own.get(n.key, {}), "robot": args.robot} for n in nodes.COMPONENTS}
     specs = suite_specs(own, params_file(args), args.without)
+    if nodes.NAV2.key not in args.without:
+        specs += nav2_specs(own, params_file(args))
     until, timeout = None, getattr(args, "duration", None)
     folder = None
     if getattr(args, "record", False):

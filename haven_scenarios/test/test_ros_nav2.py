@@ -1,0 +1,78 @@
+"""Nav2's own way of scripting a robot drives the simulated one: a nav2_simple_commander script
+(nav2/drive.py: waitUntilNav2Active, getPath, followPath, goToPose, followWaypoints, cancelTask
+and a goal off the map) against `haven sim`'s Nav2 servers, with the AR cues showing on every
+drive. The script runs with BasicNavigator itself where nav2_simple_commander is installed (it
+comes with Nav2 from apt; there is no wheel), and always with nav2/commander.py, a stand-in that
+does on the wire what BasicNavigator does."""
+
+import importlib.util
+import json
+import math
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import pytest
+from geometry_msgs.msg import PoseWithCovarianceStamped
+from nav_msgs.msg import Odometry
+from visualization_msgs.msg import Marker, MarkerArray
+
+from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import qos
+
+pytestmark = pytest.mark.ros
+nav2_actions = pytest.importorskip("nav2_msgs.action", reason="nav2_msgs is not built here (scripts/build_interfaces.py)")
+HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
+DRIVE = Path(__file__).parent / "nav2" / "drive.py"
+sys.path.insert(0, str(DRIVE.parent))
+from drive import FAR  # noqa: E402
+
+
+def clients():
+    yield pytest.param("--ours", id="stand_in")
+    installed = importlib.util.find_spec("nav2_simple_commander") is not None
+    skip = pytest.mark.skipif(not installed, reason="nav2_simple_commander is not installed (apt: ros-jazzy-nav2-simple-commander)")
+    yield pytest.param("", id="basic_navigator", marks=skip)
+
+
+@pytest.mark.parametrize("which", list(clients()))
+def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(ros, which):
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    arrivals: list[tuple[float, MarkerArray]] = []  # (when, what): the cues as they came
+    ros.node.create_subscription(MarkerArray, "/haven/ar_markers", lambda m: arrivals.append((time.monotonic(), m)), qos.RELIABLE)
+    ros.procs.append(subprocess.Popen([*HAVEN, "sim", "--rtf", "2", "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True))
+    ros.wait_for_messages(ros.collect(PoseWithCovarianceStamped, "/amcl_pose", qos.LATCHED), timeout_s=60)  # the servers are active
+    script = subprocess.Popen(
+        [sys.executable, str(DRIVE), *([which] if which else [])], env=ros.env, stdout=subprocess.PIPE, text=True, start_new_session=True
+    )
+    ros.procs.append(script)
+    steps: list[tuple[float, dict]] = []
+    reader = threading.Thread(target=lambda: steps.extend((time.monotonic(), json.loads(line)) for line in script.stdout if line.startswith("{")))
+    reader.start()
+    assert ros.spin_until(lambda: script.poll() is not None, 300), [s for _, s in steps]
+    reader.join(5)
+    got = {s["step"]: s for _, s in steps}
+    assert script.returncode == 0 and list(got) == ["active", "getPath", "followPath", "goToPose", "followWaypoints", "cancelTask", "offMap"], got
+    assert got["getPath"]["poses"] > 2  # compute_path_to_pose: our planner's arcs and straights
+    for step in ("followPath", "goToPose", "followWaypoints"):
+        assert got[step]["result"] == "SUCCEEDED" and got[step]["error_code"] == 0, got[step]
+    assert got["followWaypoints"]["current_waypoint"] == 1
+    distances = got["goToPose"]["distances"]  # navigate_to_pose's feedback: the distance left falls to the goal
+    assert distances and max(distances) > 1.0 and distances[-1] < 0.3, distances
+    assert got["cancelTask"]["result"] == "CANCELED"
+    assert got["offMap"]["result"] == "FAILED" and got["offMap"]["error_code"] == nav2_actions.ComputePathToPose.Result.GOAL_OUTSIDE_MAP
+
+    # The cancel stopped the robot short of the far goal; the final goal of the waypoints was reached.
+    ros.spin_until(lambda: abs(odom[-1].twist.twist.linear.x) < 0.01, 10)
+    here = conv.pose_from_msg(odom[-1].pose.pose)
+    assert math.hypot(here.x - FAR[0], here.y - FAR[1]) > 1.0 and abs(odom[-1].twist.twist.linear.x) < 0.01
+
+    # The AR cues showed on every drive: path projection markers came during each moving task.
+    bounds = [t for t, _ in steps]
+    for i, (_, s) in enumerate(steps):
+        if s["step"] in ("followPath", "goToPose", "followWaypoints", "cancelTask"):
+            during = [m for t, m in arrivals if bounds[i - 1] <= t <= bounds[i]]
+            shown = [mk for m in during for mk in m.markers if mk.ns == "path_projection" and mk.action == Marker.ADD]
+            assert shown, f"no path projection during {s['step']}"
