@@ -70,7 +70,7 @@ class NavTask:
     kind: TaskKind
     poses: list[Pose2D]  # the poses to visit (follow_path: the path's)
     started: float
-    by: str = "nav2"  # who cancels, in the planner's goal_cancelled event
+    by: str = "nav2"  # who cancels (the server's name), in the planner's goal_cancelled event
     index: int = 0
     outcome: Outcome | None = None
     failure: PlanFailure | None = None

@@ -34,13 +34,15 @@ from rclpy.lifecycle import LifecycleNode, TransitionCallbackReturn
 from haven_sim.common import topics
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.nav2_tasks import NavTask, TaskKind
+from haven_sim.nav.planning import PlannerConfig
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
+from haven_sim.nodes.component_node import declare_config
 from haven_sim.nodes.nav2_planner import PathPlanner
 from haven_sim.nodes.runner import run_node
 from haven_sim.nodes.task_runner import TaskRunner, finish, goal_error
 
-THREADS = 6  # one per server's execute loop, and the inputs
+THREADS = 6  # for the servers' execute callbacks, which wait (one task runs at a time), and the inputs
 AMCL_PERIOD_S = 0.5  # sim time between /amcl_pose messages
 
 
@@ -100,7 +102,8 @@ class BtNavigator(Nav2Lifecycle):
     def _navigate(self, handle: Any, kind: TaskKind, action: Any, msgs: Sequence[PoseStamped]) -> Any:
         poses = _poses(msgs, self.map_frame)
         assert not isinstance(poses, str)  # (checked when the goal came)
-        task = self.runner.run(handle, NavTask(kind, poses, self.runner.now()), lambda p: self.runner.nav_feedback(action, p))
+        task = NavTask(kind, poses, self.runner.now(), by=self.get_name())
+        self.runner.run(handle, task, lambda p: self.runner.nav_feedback(action, p))
         result = action.Result()
         result.error_code, result.error_msg = goal_error(task)
         return finish(handle, task, result)
@@ -128,7 +131,7 @@ class WaypointFollower(Nav2Lifecycle):
         request = handle.request
         poses = _poses(request.poses, self.map_frame)
         assert not isinstance(poses, str)
-        task = NavTask(TaskKind.FOLLOW_WAYPOINTS, poses, self.runner.now(), index=request.goal_index)
+        task = NavTask(TaskKind.FOLLOW_WAYPOINTS, poses, self.runner.now(), by=self.get_name(), index=request.goal_index)
 
         def feedback(progress: Any) -> Any:
             return FollowWaypoints.Feedback(current_waypoint=progress.index)
@@ -156,7 +159,7 @@ class ControllerServer(Nav2Lifecycle):
     def follow(self, handle: Any) -> Any:
         poses = conv.path_from_msg(handle.request.path)
         result = FollowPath.Result()
-        task = NavTask(TaskKind.FOLLOW_PATH, poses, self.runner.now())
+        task = NavTask(TaskKind.FOLLOW_PATH, poses, self.runner.now(), by=self.get_name())
         if len(poses) < 1 or not all(math.isfinite(p.x) and math.isfinite(p.y) for p in poses):
             result.error_code, result.error_msg = FollowPath.Result.INVALID_PATH, "the path is empty or not finite"
             handle.abort()
@@ -171,11 +174,14 @@ class ControllerServer(Nav2Lifecycle):
 
 
 class PlannerServer(Nav2Lifecycle):
+    """Declares the planner's parameters (PlannerConfig): its map frame is every server's."""
+
     def __init__(self) -> None:
         super().__init__("planner_server")
+        self.config = declare_config(self, PlannerConfig)
 
     def start_planning(self, runner: TaskRunner) -> PathPlanner:
-        return PathPlanner(self, runner)
+        return PathPlanner(self, runner, self.config)
 
 
 class Amcl(Nav2Lifecycle):
@@ -209,10 +215,9 @@ def make_nodes() -> list[Nav2Lifecycle]:
     out (a reader on /goal_pose, a controller publishing /cmd_vel_nav), as lifecycle_manager
     brings Nav2 up in order: a client's first goal is then never lost."""
     planner = PlannerServer()
-    planning = planner.start_planning
-    bt = BtNavigator("map")
-    frame = planning(bt.runner).config.map_frame
-    bt.map_frame = frame
+    frame = planner.config.map_frame
+    bt = BtNavigator(frame)
+    planner.start_planning(bt.runner)
     made = [bt, WaypointFollower(bt.runner, frame), ControllerServer(bt.runner, frame), planner, Amcl(frame)]
     for node in made:
         node.trigger_configure()

@@ -3,7 +3,7 @@
 The path is the one our planner node would send on /plan for that goal (HAVEN's rotate / arc /
 straight shape, down the world's hallway centre lines), from the request's start or the robot's
 pose; nothing is driven. `planner_id` names a registered planner (`haven plugins`), '' the
-configured one. The planner's parameters are the planner node's (PlannerConfig), declared here.
+configured one. The planner's parameters are the planner node's (PlannerConfig; the planner_server declares them).
 """
 
 from __future__ import annotations
@@ -21,7 +21,6 @@ from haven_sim.nav.planner_kind import planner_class
 from haven_sim.nav.planning import PlannerConfig, world_lanes
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
-from haven_sim.nodes.component_node import declare_config
 from haven_sim.nodes.task_runner import FAILURE_CODES, TaskRunner, duration
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import resolve_world_path
@@ -31,9 +30,9 @@ Result = ComputePathToPose.Result
 
 
 class PathPlanner:
-    def __init__(self, node: Any, runner: TaskRunner) -> None:
+    def __init__(self, node: Any, runner: TaskRunner, config: PlannerConfig) -> None:
         self.node, self.runner = node, runner
-        self.config = c = declare_config(node, PlannerConfig)
+        self.config = c = config
         self.lanes = world_lanes(load_world(resolve_world_path(c.world))) if c.world else ()
         self.grid: OccupancyGridData | None = None
         self.navigators: dict[str, Navigator] = {}  # by planner name, for the map in hand
