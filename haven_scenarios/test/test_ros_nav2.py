@@ -8,6 +8,8 @@ does on the wire what BasicNavigator does."""
 import importlib.util
 import json
 import math
+import os
+import signal
 import subprocess
 import sys
 import threading
@@ -17,6 +19,7 @@ from pathlib import Path
 import pytest
 from geometry_msgs.msg import PoseWithCovarianceStamped
 from nav_msgs.msg import Odometry
+from ros_harness import tracebacks
 from visualization_msgs.msg import Marker, MarkerArray
 
 from haven_sim.nodes import conversions as conv
@@ -38,11 +41,13 @@ def clients():
 
 
 @pytest.mark.parametrize("which", list(clients()))
-def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(ros, which):
+def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(ros, which, tmp_path):
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     arrivals: list[tuple[float, MarkerArray]] = []  # (when, what): the cues as they came
     ros.node.create_subscription(MarkerArray, "/haven/ar_markers", lambda m: arrivals.append((time.monotonic(), m)), qos.RELIABLE)
-    ros.procs.append(subprocess.Popen([*HAVEN, "sim", "--rtf", "2", "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True))
+    log = (tmp_path / "sim.log").open("w")
+    sim = subprocess.Popen([*HAVEN, "sim", "--rtf", "2", "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True, stderr=log)
+    ros.procs.append(sim)
     ros.wait_for_messages(ros.collect(PoseWithCovarianceStamped, "/amcl_pose", qos.LATCHED), timeout_s=60)  # the servers are active
     script = subprocess.Popen(
         [sys.executable, str(DRIVE), *([which] if which else [])], env=ros.env, stdout=subprocess.PIPE, text=True, start_new_session=True
@@ -76,3 +81,7 @@ def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(r
             during = [m for t, m in arrivals if bounds[i - 1] <= t <= bounds[i]]
             shown = [mk for m in during for mk in m.markers if mk.ns == "path_projection" and mk.action == Marker.ADD]
             assert shown, f"no path projection during {s['step']}"
+
+    # Ctrl-C stops the Nav2 servers (and the rest) cleanly.
+    os.killpg(sim.pid, signal.SIGINT)
+    assert sim.wait(timeout=30) == 0 and tracebacks((tmp_path / "sim.log").read_text()) == []

@@ -25,6 +25,8 @@ def test_a_replayed_session_relatches_static_tf_the_map_and_the_world(ros, tmp_p
         [*HAVEN, "sim", "--record", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True
     )
     ros.procs.append(live)
+    assert ros.spin_until(lambda: "recorder" in {i.node_name for i in ros.node.get_subscriptions_info_by_topic("/clock")}, 60)
+    del clock[:]
     ros.wait_for_messages(clock, 200, timeout_s=60)  # 4 s of sim time recorded, however slowly the suite started
     os.killpg(live.pid, signal.SIGINT)  # Ctrl-C
     assert live.wait(timeout=60) == 0

@@ -183,10 +183,13 @@ def harness() -> Iterator[RosHarness]:
 
 def tracebacks(stderr: str) -> list[str]:
     """Tracebacks in a process's stderr, leaving out rclpy's "Exception ignored in" destructor
-    noise at interpreter exit (an rclpy shutdown artefact, not an error of the node)."""
+    noise at interpreter exit (an rclpy shutdown artefact, not an error of the node); and rclpy's
+    one-line "exception was never retrieved" of a callback that failed (at shutdown, say)."""
     lines = stderr.splitlines()
     found = []
     for i, line in enumerate(lines):
         if line.startswith("Traceback") and not (i > 0 and lines[i - 1].startswith("Exception ignored in")):
             found.append("\n".join(lines[i : i + 12]))
+        elif line.startswith("The following exception was never retrieved"):
+            found.append(line)
     return found

@@ -74,6 +74,14 @@ class DrainedReaders(CallbackGroup):
 
 IGNORED = ("/rosout", "/parameter_events", "/haven/lockstep/")  # logs, parameter changes, the lockstep clock's own traffic
 
+
+def hidden(topic: str) -> bool:
+    """A hidden topic (a name part starting with "_": an action's feedback and status, a service's
+    events; ROS 2 design, "Topic and Service name mapping to DDS": tools may leave them out), which
+    `ros2 bag record` records only with --include-hidden-topics."""
+    return any(part.startswith("_") for part in topic.split("/"))
+
+
 # add(topic, type name, latched) -> whether to subscribe; on_message(topic, type name, cdr bytes)
 AddTopic = Callable[[str, str, bool], bool]
 OnMessage = Callable[[str, str, bytes], None]
@@ -184,7 +192,7 @@ class RawTopics:
             self.on_message(topic, msgtype, data)
 
     def _wanted(self, topic: str) -> bool:
-        return topic not in IGNORED and not topic.startswith(IGNORED) and (self.only is None or topic in self.only)
+        return topic not in IGNORED and not topic.startswith(IGNORED) and not hidden(topic) and (self.only is None or topic in self.only)
 
     def release(self) -> None:
         """Subscribe the held topics (with the topic table's QoS)."""

@@ -11,6 +11,7 @@ from __future__ import annotations
 import signal
 import sys
 import threading
+import time
 import traceback
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -116,6 +117,16 @@ def declare(node: Node, name: str, default: Any, descriptor: ParameterDescriptor
     return value
 
 
+def _drain(executor: Any, timeout_s: float = 2.0) -> None:
+    """Let the callbacks still running on a MultiThreadedExecutor's threads finish before it shuts
+    down (rclpy 7's Executor.shutdown does not wait for them, it tests the flag it has just set, and
+    destroys the guard condition each one triggers as it ends: "exception was never retrieved")."""
+    deadline = time.monotonic() + timeout_s
+    for task in list(getattr(executor, "_futures", ())):  # (its running callbacks: no public way to them)
+        while not task.done() and time.monotonic() < deadline:
+            time.sleep(0.01)
+
+
 def run_node(factory: Callable[[], Node | Sequence[Node]], args: Sequence[str] | None = None, threads: int = 1) -> int:
     """Configuration errors become one line on stderr and exit code 2, never a traceback. The
     factory may make several nodes (one process, one executor); with `threads` above 1 their
@@ -141,6 +152,7 @@ def run_node(factory: Callable[[], Node | Sequence[Node]], args: Sequence[str] |
                 raise
             except Exception as e:  # noqa: BLE001 - see callback_failed
                 callback_failed(made[0], e)
+        _drain(executor)
         executor.shutdown(timeout_sec=1.0)
     except ExternalShutdownException:
         pass

@@ -128,15 +128,16 @@ def add_ros_options(p: argparse.ArgumentParser, suite: bool = False) -> None:
     p.add_argument("--network", action="store_true", help="allow DDS discovery beyond localhost")
 
 
-def add_suite_options(p: argparse.ArgumentParser) -> None:
+def add_suite_options(p: argparse.ArgumentParser, sim: bool = False) -> None:
+    """--params-file and --without (`haven sim` also runs Nav2's servers, which it may leave out)."""
     p.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
     p.add_argument(
         "--without",
         nargs="+",
         default=[],
-        choices=nodes.REPLACEABLE,
+        choices=nodes.SIM_REPLACEABLE if sim else nodes.REPLACEABLE,
         metavar="NODE",
-        help="leave out our mux, planner, controller or viz (to run your own in their place)",
+        help="leave out our mux, planner, controller or viz" + (" or the Nav2 servers (nav2)" if sim else "") + " (to run your own in their place)",
     )
 
 

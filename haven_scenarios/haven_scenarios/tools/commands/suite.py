@@ -49,7 +49,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
 def _suite_arguments(p: argparse.ArgumentParser, rtf: float) -> None:
     p.add_argument("--world", default="small_test", help="packaged world name or world YAML path (default: small_test)")
     p.add_argument("--rtf", type=positive, default=rtf, help=f"real-time factor of the simulation (default: {rtf:g})")
-    add_suite_options(p)
+    add_suite_options(p, sim=True)
     add_robot_option(p)
     add_ros_options(p, suite=True)
 
