@@ -59,8 +59,9 @@ def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(r
     assert ros.spin_until(lambda: script.poll() is not None, 300), [s for _, s in steps]
     reader.join(5)
     got = {s["step"]: s for _, s in steps}
-    assert script.returncode == 0 and list(got) == ["active", "getPath", "followPath", "goToPose", "followWaypoints", "cancelTask", "offMap"], got
-    assert got["getPath"]["poses"] > 2  # compute_path_to_pose: our planner's arcs and straights
+    steps_run = ["active", "getPath", "getPathInAnotherFrame", "followPath", "goToPose", "followWaypoints", "cancelTask", "offMap"]
+    assert script.returncode == 0 and list(got) == steps_run, got
+    assert got["getPath"]["poses"] > 2 and got["getPathInAnotherFrame"]["refused"]  # compute_path_to_pose: our planner's arcs and straights
     for step in ("followPath", "goToPose", "followWaypoints"):
         assert got[step]["result"] == "SUCCEEDED" and got[step]["error_code"] == 0, got[step]
     assert got["followWaypoints"]["current_waypoint"] == 1

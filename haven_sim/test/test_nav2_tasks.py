@@ -92,3 +92,16 @@ def test_the_planner_drops_its_goal_on_cancel_and_says_so():
     (e,) = [m.data for m in cancelled if m.topic == topics.EVENTS and m.data.kind is EventKind.GOAL_CANCELLED]
     assert e.data["by"] == "bt_navigator" and planner.nav is not None and planner.nav.goal is None
     assert planner.on_cancel("again", 2.0) == [] and planner.tick(2.0) == []  # nothing to cancel: nothing said
+
+
+def test_a_robot_that_makes_no_progress_fails_its_task_and_is_stopped():
+    task = NavTask(TaskKind.NAVIGATE_TO_POSE, [A], 0.0, by="bt_navigator")
+    task.start(0.0)
+    task.on_odom(RobotState(Pose2D(0.0, 0.0, 0.0)))
+    assert task.check_progress(0.0, 30.0) == []
+    task.on_odom(RobotState(Pose2D(0.6, 0.0, 0.0)))
+    assert task.check_progress(20.0, 30.0) == []  # moved 0.6 m: progress made at 20 s
+    task.on_odom(RobotState(Pose2D(0.9, 0.0, 0.0)))  # 0.3 m more: not enough to count
+    assert task.check_progress(49.0, 30.0) == [] and task.outcome is None
+    (stop,) = task.check_progress(50.5, 30.0)
+    assert stop.topic == topics.CANCEL_GOAL and task.stalled and task.outcome is Outcome.ABORTED and "no progress" in task.reason

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import functools
 import importlib
+import importlib.util
 from collections import deque
 from collections.abc import Callable
 from typing import Any
@@ -216,7 +217,11 @@ class RawTopics:
             cls = message_class(msgtype)
         except (ImportError, AttributeError):  # e.g. tf2_msgs where the pip setup could not build it
             if self.on_unreadable is not None:
-                self.on_unreadable(topic, msgtype, f"its package {msgtype.split('/')[0]} is not installed here")
+                package = msgtype.split("/")[0]
+                installed = importlib.util.find_spec(package) is not None
+                self.on_unreadable(
+                    topic, msgtype, f"no such type in its package {package}" if installed else f"its package {package} is not installed here"
+                )
             return
         if not self.add(topic, msgtype, latched):
             return

@@ -69,7 +69,7 @@ WRITERS: Mapping[str, frozenset[str]] = {
     _t(topics.human_cmd_vel("*")): frozenset({SCENARIO, WEB}),
 }
 ALWAYS_OPEN = (_t(topics.ESTOP), _t(topics.TRIAL_CONTROL))
-UNNAMED = "_NODE_NAME_UNKNOWN_"  # rmw's name for a node whose name discovery has not brought yet
+UNNAMED = nodes.UNNAMED
 
 
 def writers(topic: str) -> frozenset[str] | None:

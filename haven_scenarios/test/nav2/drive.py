@@ -72,6 +72,9 @@ def main() -> None:
     say("active")
     path = nav.getPath(pose(nav, 0, 0, 0), pose(nav, *GOAL))
     say("getPath", poses=len(path.poses) if path is not None else 0)
+    elsewhere = pose(nav, *GOAL)
+    elsewhere.header.frame_id = "base_link"
+    say("getPathInAnotherFrame", refused=nav.getPath(pose(nav, 0, 0, 0), elsewhere) is None)
     nav.followPath(path)
     finish(nav, "followPath")
     nav.goToPose(pose(nav, *WAYPOINTS[0]))

@@ -36,3 +36,4 @@ REPLACEABLE = tuple(n.key for n in COMPONENTS if n.replaceable)  # `haven run --
 SIM_REPLACEABLE = (*REPLACEABLE, NAV2.key)  # `haven sim --without`
 OBSERVERS = frozenset(n.name for n in (VIZ, RECORDER, WEB, BRIDGE))
 BY_KEY = {n.key: n for n in (*TRIAL, WEB, BRIDGE, NAV2)}
+UNNAMED = "_NODE_NAME_UNKNOWN_"  # rmw's name for a node whose name discovery has not brought yet

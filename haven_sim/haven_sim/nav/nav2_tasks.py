@@ -23,6 +23,7 @@ from enum import Enum, StrEnum
 from haven_sim.common import topics
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import Pose2D
+from haven_sim.common.params import POSITIVE, check_bounds, param
 from haven_sim.common.polyline import Polyline
 from haven_sim.common.state import Goal, RobotState
 from haven_sim.nav.planner import PlanFailure
@@ -36,6 +37,22 @@ GOAL_MATCH_M = 0.5
 # is higher than 1cm/s and at least 10cm to go").
 ETA_MIN_SPEED_MPS, ETA_MIN_DISTANCE_M = 0.01, 0.1
 RECOVERIES = (EventKind.WAITING, EventKind.REPLANNED)  # the planner's ways round a person
+# Nav2's progress checker (nav2_controller SimpleProgressChecker, required_movement_radius 0.5 m):
+# a robot that has not moved this far in `progress_timeout_s` has failed to make progress.
+PROGRESS_RADIUS_M = 0.5
+
+
+@dataclass(frozen=True)
+class Nav2TaskParams:
+    progress_timeout_s: float = param(
+        30.0,
+        "a Nav2 task whose robot has not moved 0.5 m in this much sim time fails (FAILED_TO_MAKE_PROGRESS), as Nav2's does once "
+        "its progress checker (10 s) and recoveries are spent: a person who never leaves the way does not hold a client forever",
+        POSITIVE,
+    )
+
+    def __post_init__(self) -> None:
+        check_bounds(self)
 
 
 class TaskKind(StrEnum):
@@ -76,10 +93,12 @@ class NavTask:
     failure: PlanFailure | None = None
     reason: str = ""
     recoveries: int = 0
+    stalled: bool = False  # failed to make progress (Nav2TaskParams.progress_timeout_s)
     missed: list[tuple[int, PlanFailure]] = field(default_factory=list)  # (follow_waypoints) pose index, why
     _planned: bool = False  # the planner has made the plan for the pose being visited
     _robot: RobotState | None = None
     _line: Polyline | None = None
+    _anchor: tuple[Pose2D, float] | None = None  # where and when the robot last made progress
 
     def start(self, now: float) -> list[Message]:
         """What goes out first: the path for follow_path, else the first pose as a goal."""
@@ -132,6 +151,22 @@ class NavTask:
     def cancel(self, now: float) -> list[Message]:
         """The client's cancel: the goal dropped, the robot stopped."""
         self._end(Outcome.CANCELED, "canceled")
+        return self._stop(now)
+
+    def check_progress(self, now: float, timeout_s: float) -> list[Message]:
+        """Fail a task whose robot has not moved PROGRESS_RADIUS_M in `timeout_s` (stopping it)."""
+        here = self._robot.pose if self._robot is not None else None
+        if self.outcome is not None or here is None:
+            return []
+        if self._anchor is None or math.hypot(here.x - self._anchor[0].x, here.y - self._anchor[0].y) > PROGRESS_RADIUS_M:
+            self._anchor = (here, now)
+        if now - self._anchor[1] < timeout_s:
+            return []
+        self.stalled = True
+        self._end(Outcome.ABORTED, f"no progress: the robot moved less than {PROGRESS_RADIUS_M:g} m in {timeout_s:g} s")
+        return self._stop(now)
+
+    def _stop(self, now: float) -> list[Message]:
         if self.kind is TaskKind.FOLLOW_PATH:
             return [Message(topics.PLAN, [], now)]
         return [Message(topics.CANCEL_GOAL, self.by, now)]

@@ -139,8 +139,7 @@ class WaypointFollower(Nav2Lifecycle):
         self.runner.run(handle, task, feedback)
         result = FollowWaypoints.Result()
         result.error_code, result.error_msg = goal_error(task)
-        if result.error_code:  # (the waypoint's own code is in missed_waypoints)
-            result.error_code = FollowWaypoints.Result.TASK_EXECUTOR_FAILED
+        result.error_code = 0  # (as Nav2's waypoint follower: why a waypoint failed is in missed_waypoints)
         result.missed_waypoints = self.runner.missed(task, request.poses)
         return finish(handle, task, result)
 

@@ -8,6 +8,7 @@ configured one. The planner's parameters are the planner node's (PlannerConfig; 
 
 from __future__ import annotations
 
+import math
 import threading
 import time
 from typing import Any
@@ -39,7 +40,17 @@ class PathPlanner:
         self.lock = threading.Lock()
         spec = wire.specs()[topics.MAP]
         node.create_subscription(spec.msg_type, topics.MAP, self._on_map, spec.sub_qos)
-        node.serve(ComputePathToPose, "compute_path_to_pose", self.compute)
+        node.serve(ComputePathToPose, "compute_path_to_pose", self.compute, self._why)
+
+    def _why(self, request: Any) -> str | None:
+        """Why a request cannot be planned for (a frame other than the map's, a position not finite), or None."""
+        frames = ("", self.config.map_frame, "odom")
+        for what, pose in (("goal", request.goal), *((("start", request.start),) if request.use_start else ())):
+            if pose.header.frame_id not in frames:
+                return f"{what} frame '{pose.header.frame_id}' is not '{self.config.map_frame}'"
+            if not (math.isfinite(pose.pose.position.x) and math.isfinite(pose.pose.position.y)):
+                return f"{what} position is not finite"
+        return None
 
     def _on_map(self, msg: Any) -> None:
         grid = conv.occupancy_from_msg(msg)

@@ -90,7 +90,10 @@ class SimNode(ComponentNode):
 
     def _check_writers(self) -> None:
         topic = self.resolve_topic_name(topics.CMD_VEL)
-        writers = {f"{i.node_namespace.rstrip('/')}/{i.node_name}" for i in self.get_publishers_info_by_topic(topic)}
+        infos = self.get_publishers_info_by_topic(topic)
+        if any(i.node_name == nodes.UNNAMED for i in infos):
+            return  # (a writer whose node's name discovery has not brought yet: named at a later look)
+        writers = {f"{i.node_namespace.rstrip('/')}/{i.node_name}" for i in infos}
         if len(writers) < 2:
             return
         for name in sorted(writers - {f"/{nodes.MUX.name}"} - self._bypassing):

@@ -15,16 +15,17 @@ from typing import Any
 
 from builtin_interfaces.msg import Duration
 from geometry_msgs.msg import PoseStamped
-from nav2_msgs.action import ComputePathToPose
+from nav2_msgs.action import ComputePathToPose, FollowPath
 from nav2_msgs.msg import MissedWaypoint
 from rclpy.node import Node
 
 from haven_sim.common import topics
 from haven_sim.common.state import RobotState
-from haven_sim.nav.nav2_tasks import NavTask, Outcome, Progress
+from haven_sim.nav.nav2_tasks import Nav2TaskParams, NavTask, Outcome, Progress
 from haven_sim.nav.planner import PlanFailure
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
+from haven_sim.nodes.component_node import declare_config
 from haven_sim.nodes.runner import refused, stop_requested
 from haven_sim.runtime.component import Message
 
@@ -51,6 +52,8 @@ def goal_error(task: NavTask, otherwise: int = _P.UNKNOWN) -> tuple[int, str]:
     planner server's code (bt_navigator passes its tree's failing node's code on), else `otherwise`."""
     if task.outcome is not Outcome.ABORTED:
         return 0, ""
+    if task.stalled:  # (the controller server's code, which bt_navigator passes on)
+        return FollowPath.Result.FAILED_TO_MAKE_PROGRESS, task.reason
     if task.failure is not None:
         return FAILURE_CODES[task.failure], task.reason
     return otherwise, task.reason
@@ -70,6 +73,7 @@ def finish(handle: Any, task: NavTask, result: Any) -> Any:
 class TaskRunner:
     def __init__(self, node: Node, map_frame: str) -> None:
         self.node, self.frame = node, map_frame
+        self.params = declare_config(node, Nav2TaskParams)
         self.lock = threading.Lock()
         self.task: NavTask | None = None
         self.robot: RobotState | None = None
@@ -129,6 +133,8 @@ class TaskRunner:
                     self._publish(task.cancel(self.now()))
                 elif task.outcome is None and stop_requested():
                     task.preempt("the Nav2 servers are shutting down")
+                else:
+                    self._publish(task.check_progress(self.now(), self.params.progress_timeout_s))
                 if task.outcome is not None:
                     return task
                 message = feedback(task.progress(self.now()))
