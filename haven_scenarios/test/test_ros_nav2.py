@@ -60,6 +60,7 @@ def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(r
     reader.join(5)
     got = {s["step"]: s for _, s in steps}
     steps_run = ["active", "getPath", "getPathInAnotherFrame", "followPath", "goToPose", "followWaypoints", "cancelTask", "offMap"]
+    steps_run.append("throughPosesOffMap")
     assert script.returncode == 0 and list(got) == steps_run, got
     assert got["getPath"]["poses"] > 2 and got["getPathInAnotherFrame"]["refused"]  # compute_path_to_pose: our planner's arcs and straights
     for step in ("followPath", "goToPose", "followWaypoints"):
@@ -69,6 +70,8 @@ def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(r
     assert distances and max(distances) > 1.0 and distances[-1] < 0.3, distances
     assert got["cancelTask"]["result"] == "CANCELED"
     assert got["offMap"]["result"] == "FAILED" and got["offMap"]["error_code"] == nav2_actions.ComputePathToPose.Result.GOAL_OUTSIDE_MAP
+    through = got["throughPosesOffMap"]  # refused before the robot moves, with the through-poses planner's code
+    assert through["result"] == "FAILED" and through["error_code"] == nav2_actions.ComputePathThroughPoses.Result.GOAL_OUTSIDE_MAP
 
     # The cancel stopped the robot short of the far goal; the final goal of the waypoints was reached.
     ros.spin_until(lambda: abs(odom[-1].twist.twist.linear.x) < 0.01, 10)

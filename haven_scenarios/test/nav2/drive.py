@@ -85,6 +85,8 @@ def main() -> None:
     finish(nav, "cancelTask", cancel_below_m=4.0)
     nav.goToPose(pose(nav, *OFF_MAP))
     finish(nav, "offMap")
+    nav.goThroughPoses([pose(nav, *GOAL), pose(nav, *OFF_MAP)])
+    finish(nav, "throughPosesOffMap")
     nav.destroy_node()
     rclpy.shutdown()
 

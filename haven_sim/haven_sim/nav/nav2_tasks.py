@@ -179,6 +179,10 @@ class NavTask:
         self.index += 1
         return self._send(now)
 
+    def fail(self, failure: PlanFailure, reason: str) -> None:
+        """Failed before it started (a pose the planner cannot plan to, seen beforehand)."""
+        self._failed(failure, reason, self.started)
+
     def _failed(self, failure: PlanFailure, reason: str, now: float) -> list[Message]:
         self.failure = failure
         if self.kind is TaskKind.FOLLOW_WAYPOINTS:

@@ -34,6 +34,7 @@ from rclpy.lifecycle import LifecycleNode, TransitionCallbackReturn
 from haven_sim.common import topics
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.nav2_tasks import NavTask, TaskKind
+from haven_sim.nav.planner import PlanFailure
 from haven_sim.nav.planning import PlannerConfig
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
@@ -92,6 +93,7 @@ class BtNavigator(Nav2Lifecycle):
         super().__init__("bt_navigator")
         self.map_frame = map_frame
         self.runner = TaskRunner(self, map_frame)
+        self.paths: PathPlanner | None = None  # the planner server's, for what can be seen before driving
         self.serve(NavigateToPose, "navigate_to_pose", self.to_pose, lambda r: self._why([r.pose]))
         self.serve(NavigateThroughPoses, "navigate_through_poses", self.through_poses, lambda r: self._why(r.poses))
 
@@ -103,7 +105,11 @@ class BtNavigator(Nav2Lifecycle):
         poses = _poses(msgs, self.map_frame)
         assert not isinstance(poses, str)  # (checked when the goal came)
         task = NavTask(kind, poses, self.runner.now(), by=self.get_name())
-        self.runner.run(handle, task, lambda p: self.runner.nav_feedback(action, p))
+        outside = self.paths.first_outside(poses) if self.paths is not None and kind is TaskKind.NAVIGATE_THROUGH_POSES else None
+        if outside is not None:  # (Nav2 plans through every pose first: fails before the robot moves)
+            task.fail(PlanFailure.GOAL_OUTSIDE_MAP, f"pose {outside} ({poses[outside].x:.2f}, {poses[outside].y:.2f}) is outside the map")
+        else:
+            self.runner.run(handle, task, lambda p: self.runner.nav_feedback(action, p))
         result = action.Result()
         result.error_code, result.error_msg = goal_error(task)
         return finish(handle, task, result)
@@ -216,7 +222,7 @@ def make_nodes() -> list[Nav2Lifecycle]:
     planner = PlannerServer()
     frame = planner.config.map_frame
     bt = BtNavigator(frame)
-    planner.start_planning(bt.runner)
+    bt.paths = planner.start_planning(bt.runner)
     made = [bt, WaypointFollower(bt.runner, frame), ControllerServer(bt.runner, frame), planner, Amcl(frame)]
     for node in made:
         node.trigger_configure()

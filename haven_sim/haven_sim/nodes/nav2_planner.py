@@ -11,18 +11,21 @@ from __future__ import annotations
 import math
 import threading
 import time
+from collections.abc import Sequence
 from typing import Any
 
 from nav2_msgs.action import ComputePathToPose
 
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind
+from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.navigator import Navigator
+from haven_sim.nav.planner import PlanFailure
 from haven_sim.nav.planner_kind import planner_class
 from haven_sim.nav.planning import PlannerConfig, world_lanes
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
-from haven_sim.nodes.task_runner import FAILURE_CODES, TaskRunner, duration
+from haven_sim.nodes.task_runner import TaskRunner, duration, failure_code
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import resolve_world_path
 from haven_sim.sim.world_file import load_world
@@ -57,6 +60,15 @@ class PathPlanner:
         with self.lock:
             self.grid, self.navigators = grid, {}
 
+    def first_outside(self, poses: Sequence[Pose2D]) -> int | None:
+        """The index of the first pose outside the map (None: all inside, or no map yet)."""
+        with self.lock:
+            grid = self.grid
+        if grid is None:
+            return None
+        cells = (grid.cell_of(p.x, p.y) for p in poses)
+        return next((i for i, (r, c) in enumerate(cells) if not (0 <= r < grid.height and 0 <= c < grid.width)), None)
+
     def _navigator(self, planner_id: str) -> Navigator | str:
         """The navigator for `planner_id`, or why there is none."""
         name = planner_id or self.config.algorithm
@@ -90,7 +102,7 @@ class PathPlanner:
         result.planning_time = duration(time.monotonic() - started)
         if refused:
             e = refused[0]
-            result.error_code, result.error_msg = FAILURE_CODES[e.data["failure"]], str(e.data["reason"])
+            result.error_code, result.error_msg = failure_code(PlanFailure(e.data["failure"])), str(e.data["reason"])
             handle.abort()
             return result
         result.path = conv.path_msg(now, out.path or [], self.config.map_frame)

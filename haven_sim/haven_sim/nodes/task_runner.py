@@ -15,13 +15,13 @@ from typing import Any
 
 from builtin_interfaces.msg import Duration
 from geometry_msgs.msg import PoseStamped
-from nav2_msgs.action import ComputePathToPose, FollowPath
+from nav2_msgs.action import ComputePathThroughPoses, ComputePathToPose, FollowPath
 from nav2_msgs.msg import MissedWaypoint
 from rclpy.node import Node
 
 from haven_sim.common import topics
 from haven_sim.common.state import RobotState
-from haven_sim.nav.nav2_tasks import Nav2TaskParams, NavTask, Outcome, Progress
+from haven_sim.nav.nav2_tasks import Nav2TaskParams, NavTask, Outcome, Progress, TaskKind
 from haven_sim.nav.planner import PlanFailure
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
@@ -31,15 +31,12 @@ from haven_sim.runtime.component import Message
 
 FEEDBACK_PERIOD_S = 0.1  # wall time between feedback messages (bt_navigator sends one each tree tick)
 _P = ComputePathToPose.Result
-# The planner's failures as Nav2's planner server reports them (nav2_msgs/action/ComputePathToPose).
-FAILURE_CODES = {
-    PlanFailure.START_OUTSIDE_MAP: _P.START_OUTSIDE_MAP,
-    PlanFailure.GOAL_OUTSIDE_MAP: _P.GOAL_OUTSIDE_MAP,
-    PlanFailure.START_OCCUPIED: _P.START_OCCUPIED,
-    PlanFailure.GOAL_OCCUPIED: _P.GOAL_OCCUPIED,
-    PlanFailure.NO_VALID_PATH: _P.NO_VALID_PATH,
-    PlanFailure.UNKNOWN: _P.UNKNOWN,
-}
+
+
+def failure_code(failure: PlanFailure, result: Any = _P) -> int:
+    """The planner's failure as Nav2's planner server reports it: the constant of that name in
+    ComputePathToPose's result (or ComputePathThroughPoses', whose codes are its own)."""
+    return int(getattr(result, failure.name))
 
 
 def duration(seconds: float) -> Duration:
@@ -49,13 +46,15 @@ def duration(seconds: float) -> Duration:
 
 def goal_error(task: NavTask, otherwise: int = _P.UNKNOWN) -> tuple[int, str]:
     """(error_code, error_msg) of a task's result: 0 unless aborted; the planner's failure as the
-    planner server's code (bt_navigator passes its tree's failing node's code on), else `otherwise`."""
+    planner server's code (bt_navigator passes its tree's failing node's code on; through poses,
+    ComputePathThroughPoses'), else `otherwise`."""
     if task.outcome is not Outcome.ABORTED:
         return 0, ""
     if task.stalled:  # (the controller server's code, which bt_navigator passes on)
         return FollowPath.Result.FAILED_TO_MAKE_PROGRESS, task.reason
     if task.failure is not None:
-        return FAILURE_CODES[task.failure], task.reason
+        through = task.kind is TaskKind.NAVIGATE_THROUGH_POSES
+        return failure_code(task.failure, ComputePathThroughPoses.Result if through else _P), task.reason
     return otherwise, task.reason
 
 
@@ -155,4 +154,4 @@ class TaskRunner:
     @staticmethod
     def missed(task: NavTask, poses: Sequence[PoseStamped]) -> list[MissedWaypoint]:
         """follow_waypoints' missed waypoints, each with the planner server's code for why."""
-        return [MissedWaypoint(index=i, goal=poses[i], error_code=FAILURE_CODES[f]) for i, f in task.missed]
+        return [MissedWaypoint(index=i, goal=poses[i], error_code=failure_code(f)) for i, f in task.missed]
