@@ -41,7 +41,7 @@ from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import declare_config
 from haven_sim.nodes.nav2_planner import PathPlanner
 from haven_sim.nodes.runner import run_node
-from haven_sim.nodes.task_runner import TaskRunner, finish, goal_error
+from haven_sim.nodes.task_runner import TaskRunner, finish, goal_error, unusable
 
 THREADS = 6  # for the servers' execute callbacks, which wait (one task runs at a time), and the inputs
 AMCL_PERIOD_S = 0.5  # sim time between /amcl_pose messages
@@ -77,15 +77,11 @@ class Nav2Lifecycle(LifecycleNode):
 
 
 def _poses(msgs: Sequence[PoseStamped], map_frame: str) -> list[Pose2D] | str:
-    """The poses of a goal, or why they cannot be driven to (a frame other than the map's, not finite, none)."""
+    """The poses of a goal, or why they cannot be driven to."""
     if not msgs:
         return "no poses"
-    for m in msgs:
-        if m.header.frame_id not in ("", map_frame, "odom"):
-            return f"frame '{m.header.frame_id}' is not '{map_frame}'"
-        if not (math.isfinite(m.pose.position.x) and math.isfinite(m.pose.position.y)):
-            return "a position is not finite"
-    return [conv.pose_from_stamped(m) for m in msgs]
+    why = next((w for m in msgs if (w := unusable("pose", m, map_frame))), None)
+    return why if why is not None else [conv.pose_from_stamped(m) for m in msgs]
 
 
 class BtNavigator(Nav2Lifecycle):
@@ -157,18 +153,16 @@ class ControllerServer(Nav2Lifecycle):
         self.serve(FollowPath, "follow_path", self.follow, lambda r: self._why(r.path))
 
     def _why(self, path: Any) -> str | None:
-        if path.header.frame_id not in ("", self.map_frame, "odom"):
-            return f"path frame '{path.header.frame_id}' is not '{self.map_frame}'"
-        return None
+        return unusable("path", path, self.map_frame) if path.poses else None  # (an empty path: INVALID_PATH, as Nav2's)
 
     def follow(self, handle: Any) -> Any:
         poses = conv.path_from_msg(handle.request.path)
         result = FollowPath.Result()
-        task = NavTask(TaskKind.FOLLOW_PATH, poses, self.runner.now(), by=self.get_name())
-        if len(poses) < 1 or not all(math.isfinite(p.x) and math.isfinite(p.y) for p in poses):
-            result.error_code, result.error_msg = FollowPath.Result.INVALID_PATH, "the path is empty or not finite"
+        if not poses:
+            result.error_code, result.error_msg = FollowPath.Result.INVALID_PATH, "the path is empty"
             handle.abort()
             return result
+        task = NavTask(TaskKind.FOLLOW_PATH, poses, self.runner.now(), by=self.get_name())
 
         def feedback(progress: Any) -> Any:
             return FollowPath.Feedback(distance_to_goal=float(progress.distance_remaining_m), speed=float(progress.speed_mps))

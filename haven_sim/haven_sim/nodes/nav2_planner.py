@@ -8,7 +8,6 @@ configured one. The planner's parameters are the planner node's (PlannerConfig; 
 
 from __future__ import annotations
 
-import math
 import threading
 import time
 from collections.abc import Sequence
@@ -25,7 +24,7 @@ from haven_sim.nav.planner_kind import planner_class
 from haven_sim.nav.planning import PlannerConfig, world_lanes
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
-from haven_sim.nodes.task_runner import TaskRunner, duration, failure_code
+from haven_sim.nodes.task_runner import TaskRunner, duration, failure_code, unusable
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import resolve_world_path
 from haven_sim.sim.world_file import load_world
@@ -46,14 +45,9 @@ class PathPlanner:
         node.serve(ComputePathToPose, "compute_path_to_pose", self.compute, self._why)
 
     def _why(self, request: Any) -> str | None:
-        """Why a request cannot be planned for (a frame other than the map's, a position not finite), or None."""
-        frames = ("", self.config.map_frame, "odom")
-        for what, pose in (("goal", request.goal), *((("start", request.start),) if request.use_start else ())):
-            if pose.header.frame_id not in frames:
-                return f"{what} frame '{pose.header.frame_id}' is not '{self.config.map_frame}'"
-            if not (math.isfinite(pose.pose.position.x) and math.isfinite(pose.pose.position.y)):
-                return f"{what} position is not finite"
-        return None
+        """Why a request cannot be planned for, or None."""
+        frame = self.config.map_frame
+        return unusable("goal", request.goal, frame) or (unusable("start", request.start, frame) if request.use_start else None)
 
     def _on_map(self, msg: Any) -> None:
         grid = conv.occupancy_from_msg(msg)

@@ -8,6 +8,7 @@ executor thread), sending feedback, until the task has an outcome or the client 
 
 from __future__ import annotations
 
+import math
 import threading
 import time
 from collections.abc import Callable, Sequence
@@ -37,6 +38,17 @@ def failure_code(failure: PlanFailure, result: Any = _P) -> int:
     """The planner's failure as Nav2's planner server reports it: the constant of that name in
     ComputePathToPose's result (or ComputePathThroughPoses', whose codes are its own)."""
     return int(getattr(result, failure.name))
+
+
+def unusable(what: str, msg: Any, map_frame: str) -> str | None:
+    """Why a stamped pose or path cannot be driven to or planned for, or None: a frame other than
+    the map's (or odom, which coincides with it; '' counts as the map), a position not finite."""
+    if msg.header.frame_id not in ("", map_frame, "odom"):
+        return f"{what} frame '{msg.header.frame_id}' is not '{map_frame}'"
+    poses = [p.pose for p in msg.poses] if hasattr(msg, "poses") else [msg.pose]
+    if not all(math.isfinite(p.position.x) and math.isfinite(p.position.y) for p in poses):
+        return f"{what} position is not finite"
+    return None
 
 
 def duration(seconds: float) -> Duration:
