@@ -38,6 +38,8 @@ def test_poses_twists_odometry_goals_and_paths():
 
 def test_time_stamps_humans_and_events():
     assert conv.time_from_msg(conv.time_msg(12.345678901)) == pytest.approx(12.345678901, abs=1e-9)
+    d = conv.duration_msg(2.5)
+    assert (d.sec, d.nanosec) == (2, 500_000_000) and conv.duration_msg(-1.0).sec == 0  # (a Nav2 feedback's times)
     humans = {"ann": Pose2D(1, 2, 0.5), "bob": Pose2D(3, 4, -1.0)}
     back = conv.humans_from_msg(conv.humans_msg(1.0, humans), ["ann", "bob"])
     assert list(back) == ["ann", "bob"] and all(close(back[k], humans[k]) for k in humans)

@@ -12,7 +12,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-from builtin_interfaces.msg import Time
+from builtin_interfaces.msg import Duration, Time
 from geometry_msgs.msg import Pose, PoseArray, PoseStamped, Quaternion, TransformStamped, Twist, TwistStamped
 from nav_msgs.msg import OccupancyGrid, Odometry, Path
 from rosgraph_msgs.msg import Clock
@@ -31,6 +31,12 @@ from haven_sim.sim.simulator import ScanData
 def time_msg(t: float) -> Time:
     sec, nanosec = stamp_parts(t)
     return Time(sec=sec, nanosec=nanosec)
+
+
+def duration_msg(seconds: float) -> Duration:
+    """A span of time (never negative) as builtin_interfaces/Duration."""
+    sec, nanosec = stamp_parts(max(0.0, seconds))
+    return Duration(sec=sec, nanosec=nanosec)
 
 
 MAX_MAP_CELLS = 100_000_000  # 5 km x 5 km at 0.5 m, or 500 m x 500 m at 5 cm

@@ -196,7 +196,7 @@ class Amcl(Nav2Lifecycle):
         self.create_subscription(PoseWithCovarianceStamped, "initialpose", self.on_initial, 10)
 
     def on_odom(self, msg: Any) -> None:
-        t = msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9
+        t = conv.time_from_msg(msg.header.stamp)
         if not self.active or t - self.last < AMCL_PERIOD_S:
             return
         self.last = t

@@ -24,7 +24,7 @@ from haven_sim.nav.planner_kind import planner_class
 from haven_sim.nav.planning import PlannerConfig, world_lanes
 from haven_sim.nodes import conversions as conv
 from haven_sim.nodes import wire
-from haven_sim.nodes.task_runner import TaskRunner, duration, failure_code, unusable
+from haven_sim.nodes.task_runner import TaskRunner, failure_code, unusable
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import resolve_world_path
 from haven_sim.sim.world_file import load_world
@@ -93,7 +93,7 @@ class PathPlanner:
             out = nav.set_goal(start, conv.pose_from_stamped(request.goal), now)
             nav.cancel()  # (this navigator only plans)
         refused = [e for e in out.events if e.kind is EventKind.PLAN_REFUSED]
-        result.planning_time = duration(time.monotonic() - started)
+        result.planning_time = conv.duration_msg(time.monotonic() - started)
         if refused:
             e = refused[0]
             result.error_code, result.error_msg = failure_code(PlanFailure(e.data["failure"])), str(e.data["reason"])

@@ -14,7 +14,6 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Any
 
-from builtin_interfaces.msg import Duration
 from geometry_msgs.msg import PoseStamped
 from nav2_msgs.action import ComputePathThroughPoses, ComputePathToPose, FollowPath
 from nav2_msgs.msg import MissedWaypoint
@@ -49,11 +48,6 @@ def unusable(what: str, msg: Any, map_frame: str) -> str | None:
     if not all(math.isfinite(p.position.x) and math.isfinite(p.position.y) for p in poses):
         return f"{what} position is not finite"
     return None
-
-
-def duration(seconds: float) -> Duration:
-    ns = max(0, round(seconds * 1e9))
-    return Duration(sec=ns // 1_000_000_000, nanosec=ns % 1_000_000_000)
 
 
 def goal_error(task: NavTask, otherwise: int = _P.UNKNOWN) -> tuple[int, str]:
@@ -157,7 +151,7 @@ class TaskRunner:
         fb = action.Feedback()
         if p.pose is not None:
             fb.current_pose = conv.pose_stamped_msg(self.now(), p.pose, self.frame)
-        fb.navigation_time, fb.estimated_time_remaining = duration(p.elapsed_s), duration(p.eta_s)
+        fb.navigation_time, fb.estimated_time_remaining = conv.duration_msg(p.elapsed_s), conv.duration_msg(p.eta_s)
         fb.number_of_recoveries, fb.distance_remaining = min(p.recoveries, 32767), float(p.distance_remaining_m)
         if hasattr(fb, "number_of_poses_remaining"):
             fb.number_of_poses_remaining = p.remaining_poses
