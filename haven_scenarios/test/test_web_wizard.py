@@ -39,6 +39,7 @@ def test_the_researchers_held_thought_shows_far_away_and_the_participant_looks_d
     page.wait_for_function("(havenState.markers.thought_bubble || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
     frames = page.evaluate("havenState.frames")
     page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("(havenMarker('thought_bubble', 0) || {}).pull != null", timeout=PAGE_TIMEOUT_MS)  # (placed at its next frame)
     # Drawn 1 m from the eye, as large as it looks 6 m away: before every wall beyond 1 m, never clipped by one.
     assert page.evaluate("havenMarker('thought_bubble', 0).pull") == pytest.approx(1 / 6, rel=0.25)
     console.wait_for_function(f"document.getElementById('thought-now').textContent.includes({json.dumps(TEXT)})", timeout=PAGE_TIMEOUT_MS)
