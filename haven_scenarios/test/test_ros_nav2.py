@@ -30,7 +30,7 @@ nav2_actions = pytest.importorskip("nav2_msgs.action", reason="nav2_msgs is not 
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 DRIVE = Path(__file__).parent / "nav2" / "drive.py"
 sys.path.insert(0, str(DRIVE.parent))
-from drive import FAR  # noqa: E402
+from drive import FAR, THROUGH  # noqa: E402
 
 
 def clients():
@@ -43,6 +43,14 @@ def clients():
 @pytest.mark.parametrize("which", list(clients()))
 def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(ros, which, tmp_path):
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    moving: list[tuple[float, float, float]] = []  # (when, distance to the pose passed on the way, speed)
+    via = THROUGH[0]
+
+    def on_odom(m: Odometry) -> None:
+        p = m.pose.pose.position
+        moving.append((time.monotonic(), math.hypot(p.x - via[0], p.y - via[1]), abs(m.twist.twist.linear.x)))
+
+    ros.node.create_subscription(Odometry, "/odom", on_odom, qos.RELIABLE)
     arrivals: list[tuple[float, MarkerArray]] = []  # (when, what): the cues as they came
     ros.node.create_subscription(MarkerArray, "/haven/ar_markers", lambda m: arrivals.append((time.monotonic(), m)), qos.RELIABLE)
     log = (tmp_path / "sim.log").open("w")
@@ -59,15 +67,20 @@ def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(r
     assert ros.spin_until(lambda: script.poll() is not None, 300), [s for _, s in steps]
     reader.join(5)
     got = {s["step"]: s for _, s in steps}
-    steps_run = ["active", "getPath", "getPathInAnotherFrame", "followPath", "goToPose", "followWaypoints", "cancelTask", "offMap"]
+    steps_run = ["active", "getPath", "getPathInAnotherFrame", "followPath", "goToPose", "followWaypoints", "goThroughPoses", "cancelTask", "offMap"]
     steps_run.append("throughPosesOffMap")
     assert script.returncode == 0 and list(got) == steps_run, got
     assert got["getPath"]["poses"] > 2 and got["getPathInAnotherFrame"]["refused"]  # compute_path_to_pose: our planner's arcs and straights
-    for step in ("followPath", "goToPose", "followWaypoints"):
+    for step in ("followPath", "goToPose", "followWaypoints", "goThroughPoses"):
         assert got[step]["result"] == "SUCCEEDED" and got[step]["error_code"] == 0, got[step]
     assert got["followWaypoints"]["current_waypoint"] == 1
     distances = got["goToPose"]["distances"]  # navigate_to_pose's feedback: the distance left falls to the goal
     assert distances and max(distances) > 1.0 and distances[-1] < 0.3, distances
+    # navigate_through_poses passed its first pose without slowing to stop there (within 0.5 m of it,
+    # a robot braking at 0.4 m/s^2 to stop on it would be slower than 0.3 m/s at its last 0.11 m).
+    (start, end) = [t for t, s in steps if s["step"] in ("followWaypoints", "goThroughPoses")]
+    passing = [v for t, d, v in moving if start <= t <= end and d < 0.5]
+    assert passing and min(passing) > 0.3, passing
     assert got["cancelTask"]["result"] == "CANCELED"
     assert got["offMap"]["result"] == "FAILED" and got["offMap"]["error_code"] == nav2_actions.ComputePathToPose.Result.GOAL_OUTSIDE_MAP
     through = got["throughPosesOffMap"]  # refused before the robot moves, with the through-poses planner's code
@@ -81,7 +94,7 @@ def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(r
     # The AR cues showed on every drive: path projection markers came during each moving task.
     bounds = [t for t, _ in steps]
     for i, (_, s) in enumerate(steps):
-        if s["step"] in ("followPath", "goToPose", "followWaypoints", "cancelTask"):
+        if s["step"] in ("followPath", "goToPose", "followWaypoints", "goThroughPoses", "cancelTask"):
             during = [m for t, m in arrivals if bounds[i - 1] <= t <= bounds[i]]
             shown = [mk for m in during for mk in m.markers if mk.ns == "path_projection" and mk.action == Marker.ADD]
             assert shown, f"no path projection during {s['step']}"

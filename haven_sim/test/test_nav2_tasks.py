@@ -5,7 +5,7 @@ from haven_sim.common import topics
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.common.state import Goal, RobotState
-from haven_sim.nav.nav2_tasks import NavTask, Outcome, TaskKind
+from haven_sim.nav.nav2_tasks import VIAPOINT_RADIUS_M, NavTask, Outcome, TaskKind
 from haven_sim.nav.planner import PlanFailure
 from haven_sim.nav.planning import PlannerComponent
 from haven_sim.sim.occupancy import rasterise
@@ -72,12 +72,31 @@ def test_cancel_drops_the_goal_on_the_planner_and_follow_path_clears_the_plan():
 def test_feedback_distance_follows_the_plan_and_on_through_later_poses_with_bt_navigators_estimate():
     task = NavTask(TaskKind.NAVIGATE_THROUGH_POSES, [A, B], 0.0)
     task.start(0.0)
-    task.on_odom(RobotState(Pose2D(0.0, 1.0, 0.0), Twist2D(0.5, 0.0, 0.0)))
+    task.on_odom(RobotState(Pose2D(0.0, 1.0, 0.0), Twist2D(0.5, 0.0, 0.0)), 1.0)
     assert task.progress(1.0).distance_remaining_m == 3.0  # as the crow flies until a plan comes: 2 to A, 1 on to B
     task.on_event(made(A), 1.0)
     task.on_plan([Pose2D(0.0, 1.0, 0.0), Pose2D(0.0, 2.0, 0.0), Pose2D(2.0, 2.0, 0.0), A])  # a detour: 4 m to A
     p = task.progress(2.0)
     assert abs(p.distance_remaining_m - 5.0) < 1e-9 and abs(p.eta_s - 10.0) < 1e-9 and p.elapsed_s == 2.0 and p.remaining_poses == 2
+
+
+def test_through_poses_passes_a_pose_on_the_way_without_stopping_and_ends_at_rest_at_the_last():
+    task = NavTask(TaskKind.NAVIGATE_THROUGH_POSES, [A, B], 0.0)
+    task.start(0.0)
+    near_a = RobotState(Pose2D(A.x - VIAPOINT_RADIUS_M + 0.05, A.y, 0.0), Twist2D(0.5, 0.0, 0.0))
+    assert task.on_odom(near_a, 1.0) == []  # (the plan to A not made yet: nothing to pass)
+    task.on_event(made(A), 1.0)
+    assert task.on_odom(RobotState(Pose2D(0.0, 1.0, 0.0), Twist2D(0.5, 0.0, 0.0)), 1.5) == []  # still far from A
+    (goal,) = task.on_odom(near_a, 2.0)  # within the radius, moving: on to B, no goal_reached at A
+    assert goal.topic == topics.GOAL and goal.data == Goal(B) and task.index == 1 and task.outcome is None
+    task.on_event(made(B), 2.1)
+    assert task.on_odom(RobotState(B, Twist2D(0.5, 0.0, 0.0)), 3.0) == [] and task.outcome is None  # the last pose: at rest only
+    task.on_event(reached(B), 4.0)
+    assert task.outcome is Outcome.SUCCEEDED
+    waypoints = NavTask(TaskKind.FOLLOW_WAYPOINTS, [A, B], 0.0)  # (follow_waypoints stops at every waypoint, as Nav2's)
+    waypoints.start(0.0)
+    waypoints.on_event(made(A), 1.0)
+    assert waypoints.on_odom(RobotState(A), 2.0) == [] and waypoints.index == 0
 
 
 def test_the_planner_drops_its_goal_on_cancel_and_says_so():
@@ -97,11 +116,11 @@ def test_the_planner_drops_its_goal_on_cancel_and_says_so():
 def test_a_robot_that_makes_no_progress_fails_its_task_and_is_stopped():
     task = NavTask(TaskKind.NAVIGATE_TO_POSE, [A], 0.0, by="bt_navigator")
     task.start(0.0)
-    task.on_odom(RobotState(Pose2D(0.0, 0.0, 0.0)))
+    task.on_odom(RobotState(Pose2D(0.0, 0.0, 0.0)), 0.0)
     assert task.check_progress(0.0, 30.0) == []
-    task.on_odom(RobotState(Pose2D(0.6, 0.0, 0.0)))
+    task.on_odom(RobotState(Pose2D(0.6, 0.0, 0.0)), 20.0)
     assert task.check_progress(20.0, 30.0) == []  # moved 0.6 m: progress made at 20 s
-    task.on_odom(RobotState(Pose2D(0.9, 0.0, 0.0)))  # 0.3 m more: not enough to count
+    task.on_odom(RobotState(Pose2D(0.9, 0.0, 0.0)), 21.0)  # 0.3 m more: not enough to count
     assert task.check_progress(49.0, 30.0) == [] and task.outcome is None
     (stop,) = task.check_progress(50.5, 30.0)
     assert stop.topic == topics.CANCEL_GOAL and task.stalled and task.outcome is Outcome.ABORTED and "no progress" in task.reason

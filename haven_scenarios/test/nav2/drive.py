@@ -1,5 +1,5 @@
 """A Nav2 user's script, as the nav2_simple_commander examples write them: wait for Nav2, get a
-path, follow it, go to a pose, follow waypoints, cancel a goal, and a goal off the map. Uses
+path, follow it, go to a pose, follow waypoints, go through poses, cancel a goal, and goals off the map. Uses
 nav2_simple_commander's BasicNavigator where it is installed (or with --ours, commander.py's
 stand-in); prints one JSON line per step for test_ros_nav2.py.
 
@@ -20,6 +20,7 @@ from geometry_msgs.msg import PoseStamped
 
 GOAL = (2.2, 4.2, 2.6)  # small_test: from the start (1.0, 2.5) a left turn, a straight, a turn to the yaw
 WAYPOINTS = [(3.0, 1.5, 0.0), (1.5, 1.5, math.pi)]
+THROUGH = [(1.0, 3.8, 3.5), (1.0, 2.0, -1.57)]  # from GOAL: passed on the way (a curve), then the end
 FAR = (7.0, 2.5, 0.0)  # through the door into the east room: cancelled on the way
 OFF_MAP = (50.0, 50.0, 0.0)
 
@@ -81,6 +82,8 @@ def main() -> None:
     finish(nav, "goToPose")
     nav.followWaypoints([pose(nav, *w) for w in WAYPOINTS[1:] + [GOAL]])
     finish(nav, "followWaypoints")
+    nav.goThroughPoses([pose(nav, *p) for p in THROUGH])
+    finish(nav, "goThroughPoses")
     nav.goToPose(pose(nav, *FAR))
     finish(nav, "cancelTask", cancel_below_m=4.0)
     nav.goToPose(pose(nav, *OFF_MAP))

@@ -1,7 +1,8 @@
 """Nav2's task actions carried out by HAVEN's own planner and controller, without ROS.
 
 A `NavTask` is one goal of navigate_to_pose, navigate_through_poses or follow_waypoints (its poses
-visited in turn, each sent on /goal_pose as RViz sends one) or of follow_path (a path handed to the
+visited in turn, each sent on /goal_pose as RViz sends one; navigate_through_poses passes those on
+the way without stopping, as Nav2's does) or of follow_path (a path handed to the
 controller on /plan). The planner's and controller's events say how it goes: `goal_reached` at
 the pose being visited (the robot at rest there, its final turn done) moves on to the next pose
 or succeeds; `plan_refused` fails it, with the planner's `failure` (the node turns it into Nav2's
@@ -37,6 +38,9 @@ GOAL_MATCH_M = 0.5
 # is higher than 1cm/s and at least 10cm to go").
 ETA_MIN_SPEED_MPS, ETA_MIN_DISTANCE_M = 0.01, 0.1
 RECOVERIES = (EventKind.WAITING, EventKind.REPLANNED)  # the planner's ways round a person
+# navigate_through_poses passes a pose on the way this close to it without stopping there (Nav2
+# 1.3.13's navigate_through_poses_w_replanning_and_recovery.xml: RemovePassedGoals radius 0.7).
+VIAPOINT_RADIUS_M = 0.7
 # Nav2's progress checker (nav2_controller SimpleProgressChecker, required_movement_radius 0.5 m):
 # a robot that has not moved this far in `progress_timeout_s` has failed to make progress.
 PROGRESS_RADIUS_M = 0.5
@@ -145,8 +149,17 @@ class NavTask:
         if self._planned and poses:
             self._line = Polyline(list(poses))
 
-    def on_odom(self, state: RobotState) -> None:
+    def on_odom(self, state: RobotState, now: float) -> list[Message]:
+        """The robot's pose; navigate_through_poses goes on to the next pose once the robot has
+        come within VIAPOINT_RADIUS_M of one on the way (Nav2 passes them, it does not stop)."""
         self._robot = state
+        if self.kind is not TaskKind.NAVIGATE_THROUGH_POSES or self.outcome is not None or not self._planned:
+            return []
+        via = self.poses[self.index]
+        if self.index + 1 >= len(self.poses) or math.hypot(state.pose.x - via.x, state.pose.y - via.y) > VIAPOINT_RADIUS_M:
+            return []
+        self.index += 1
+        return self._send(now)
 
     def cancel(self, now: float) -> list[Message]:
         """The client's cancel: the goal dropped, the robot stopped."""

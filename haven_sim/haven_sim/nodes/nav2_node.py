@@ -3,7 +3,7 @@
 One process, the lifecycle nodes Nav2 users call by name, each configured and activated at start
 as Nav2's lifecycle_manager does with autostart (so nav2_simple_commander's waitUntilNav2Active()
 returns), each serving its actions while active:
-- bt_navigator: navigate_to_pose, navigate_through_poses (the poses in turn, a stop at each);
+- bt_navigator: navigate_to_pose, navigate_through_poses (the poses in turn, passed on the way);
 - waypoint_follower: follow_waypoints (stopping at the first that fails, as Nav2's default);
 - planner_server: compute_path_to_pose, from HAVEN's planner (arcs, straights and rotations);
 - controller_server: follow_path, handed to HAVEN's controller on /plan;

@@ -113,7 +113,7 @@ class TaskRunner:
     def _on_odom(self, state: RobotState) -> None:
         self.robot = state
         if self.task is not None:
-            self.task.on_odom(state)
+            self._publish(self.task.on_odom(state, self.now()))
 
     def _on_plan(self, poses: Sequence[Any]) -> None:
         if self.task is not None:
@@ -130,7 +130,7 @@ class TaskRunner:
                 self.task.preempt()
             self.task = task
             if self.robot is not None:
-                task.on_odom(self.robot)
+                task.on_odom(self.robot, self.now())  # (nothing to pass yet: no plan made)
             self._publish(task.start(self.now()))
         while True:
             with self.lock:
