@@ -153,10 +153,8 @@ class NavTask:
         """The robot's pose; navigate_through_poses goes on to the next pose once the robot has
         come within VIAPOINT_RADIUS_M of one on the way (Nav2 passes them, it does not stop)."""
         self._robot = state
-        if self.kind is not TaskKind.NAVIGATE_THROUGH_POSES or self.outcome is not None or not self._planned:
-            return []
-        via = self.poses[self.index]
-        if self.index + 1 >= len(self.poses) or math.hypot(state.pose.x - via.x, state.pose.y - via.y) > VIAPOINT_RADIUS_M:
+        on_the_way = self.kind is TaskKind.NAVIGATE_THROUGH_POSES and self.outcome is None and self._planned and self.index + 1 < len(self.poses)
+        if not on_the_way or math.hypot(state.pose.x - self.target.x, state.pose.y - self.target.y) > VIAPOINT_RADIUS_M:
             return []
         self.index += 1
         return self._send(now)
