@@ -1,8 +1,8 @@
 """Nav2's task actions carried out by HAVEN's own planner and controller, without ROS.
 
 A `NavTask` is one goal of navigate_to_pose, navigate_through_poses or follow_waypoints (its poses
-visited in turn, each sent on /goal_pose as RViz sends one; navigate_through_poses passes those on
-the way without stopping, as Nav2's does) or of follow_path (a path handed to the
+visited in turn, each sent on /goal_pose as RViz sends one; navigate_through_poses heads for the
+next once within reach of one on the way, as Nav2's does) or of follow_path (a path handed to the
 controller on /plan). The planner's and controller's events say how it goes: `goal_reached` at
 the pose being visited (the robot at rest there, its final turn done) moves on to the next pose
 or succeeds; `plan_refused` fails it, with the planner's `failure` (the node turns it into Nav2's
