@@ -103,7 +103,8 @@ async def foxglove_client(port, goal_cdr, goal_arrived, timeout_s=45.0):
         sent = False
 
         def done():
-            return info and len(seen["values"]) >= 2 and seen["status"] and seen["time"] and goal_arrived.is_set()
+            # (the time: once it is the suite's; until the bridge has read /clock it sends 0)
+            return info and len(seen["values"]) >= 2 and seen["status"] and seen["time"] and seen["time"][-1] > 0 and goal_arrived.is_set()
 
         async for frame in frames(ws, timeout_s, done):
             if isinstance(frame, bytes):
