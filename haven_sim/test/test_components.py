@@ -169,3 +169,35 @@ def test_goal_reached_comes_once_the_final_rotation_has_braked_to_rest():
     assert len(reached) == 1 and abs(at.twist.wz) < 0.02 and abs(at.twist.vx) < 0.01
     assert event["pose"][2] == pytest.approx(last.pose.yaw, abs=0.01)  # where it rests, nothing after
     assert last.pose.yaw == pytest.approx(math.pi / 2, abs=0.15)
+
+
+def test_goal_reached_only_within_the_goal_checkers_tolerances_when_commands_come_late():
+    """A control loop that falls behind (its commands applied 0.3 s late, as on a busy machine on
+    the free-running clock) overshoots the goal and over-turns: the controller goes back until the
+    pose it rests at is within its xy and yaw tolerances, and only then says the goal is reached."""
+    sim = SimulatorComponent(box_world(10.0), SimulatorConfig())
+    ctrl = ControllerComponent()
+    plan = [Pose2D(4.0 + 0.1 * k, 5.0, 0.0) for k in range(21)] + [Pose2D(6.0, 5.0, math.pi / 2)]
+    ctrl.on_plan(plan, 0.0)
+    late: list[list[Twist2D]] = [[] for _ in range(15)]  # 15 physics steps: 0.3 s
+    reached, farthest = [], 0.0
+    for step in range(50 * 40):
+        state = by_topic(sim.sense(), topics.ODOM)[0]
+        farthest = max(farthest, state.pose.x - 6.0)
+        ctrl.on_odom(state, sim.sim.time)
+        sent = []
+        if step % 2 == 0:
+            for m in ctrl.tick(sim.sim.time):
+                if m.topic == topics.CMD_VEL_NAV:
+                    sent.append(m.data)
+                elif m.data.kind is EventKind.GOAL_REACHED:
+                    reached.append((m.data, state.pose))
+        late.append(sent)
+        for cmd in late.pop(0):
+            sim.on_cmd_vel(cmd, sim.sim.time)
+        sim.advance()
+    assert farthest > 0.1 and ctrl.corrections >= 1  # it did overshoot, and went back
+    assert len(reached) == 1
+    event, at = reached[0]
+    assert math.hypot(at.x - 6.0, at.y - 5.0) <= 0.1 and abs(at.yaw - math.pi / 2) <= 0.1
+    assert event["pose"] == pytest.approx([at.x, at.y, at.yaw], abs=1e-3)

@@ -7,7 +7,7 @@ import pytest
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.nav.mux import ESTOP, IDLE, NAV, TELEOP, VelocityMux
 from haven_sim.sim.odometry import Odometry, OdometryNoise
-from haven_sim.sim.pacer import Pacer
+from haven_sim.sim.pacer import ControlPace, Pacer
 
 
 def _circle(n=500):
@@ -43,6 +43,39 @@ def test_pacer_keeps_average_rate_and_caps_catch_up():
     assert pacer.due_steps(200.01) == 1
     with pytest.raises(ValueError):
         Pacer(0.02, 0.0)
+
+
+def test_a_control_loop_that_falls_behind_slows_the_clock_without_a_burst_after():
+    """The clock runs at most control_lag_s (and two control ticks) past what the controller has
+    acted at; the steps it held are not owed, and the factor achieved is reported."""
+    step, pacer, pace = 0.02, Pacer(0.02, 1.0), ControlPace(lag_s=0.1)
+    sim, wall, seen, reported = 0.0, 0.0, [(0.0, 0.0)], []  # (wall, sim) as the clock went; factors reported
+
+    def run(seconds: float, controller_lag_s: float | None) -> None:
+        nonlocal sim, wall
+        for _ in range(round(seconds / 0.01)):
+            wall += 0.01
+            if controller_lag_s is not None:  # ticks at 20 Hz of the sim time it saw controller_lag_s of wall time ago
+                saw = max(s for w, s in seen if w <= wall - controller_lag_s + 1e-9) if wall >= controller_lag_s else 0.0
+                pace.report(math.floor(saw / 0.05 + 1e-9) * 0.05, wall)
+            sim += step * pacer.due_steps(wall, pace.allowed_steps(sim, step, wall))
+            seen.append((wall, sim))
+            if (factor := pace.factor(sim, wall, pacer.holding)) is not None:  # as the simulator node asks, each tick
+                reported.append(factor)
+
+    run(2.0, None)  # nobody reports: not held
+    assert sim == pytest.approx(2.0, abs=0.03) and pace.allowed_steps(sim, step, wall) is None
+    run(5.0, 0.0)  # a controller that keeps up holds nothing
+    assert sim == pytest.approx(7.0, abs=0.05) and reported == []
+    before = sim
+    run(6.0, 0.4)  # one that is 0.4 s behind: the clock waits for it
+    assert 0.1 < (sim - before) / 6.0 < 0.9 and pace.acted_at is not None and sim - pace.acted_at <= 0.1 + step
+    assert len(reported) == 1 and 0.1 < reported[0] < 0.9
+    before = sim
+    run(1.0, 0.0)  # caught up: back at 1x, no burst for the time held
+    assert sim - before == pytest.approx(1.0, abs=0.15)
+    run(6.0, None)  # silent for longer than silence_s: no longer held
+    assert pace.allowed_steps(sim, step, wall) is None
 
 
 def test_mux_priorities_and_timeouts():

@@ -9,6 +9,7 @@ import pytest
 from geometry_msgs.msg import PoseArray, PoseStamped, Twist, TwistStamped
 from nav_msgs.msg import OccupancyGrid, Odometry
 from rclpy.duration import Duration
+from rclpy.qos import DurabilityPolicy, QoSProfile, ReliabilityPolicy
 from ros_harness import tracebacks
 from rosgraph_msgs.msg import Clock
 from sensor_msgs.msg import BatteryState, LaserScan
@@ -391,3 +392,45 @@ def test_with_the_estop_on_a_publisher_on_cmd_vel_beside_the_mux_moves_nothing_a
     estop.publish(Bool(data=False))  # released once no true has come for estop_hold_s
     drive(ros, keyboard, twist(0.5, 0.0), odom, 3.0)
     assert conv.pose_from_msg(odom[-1].pose.pose).x - moved.x > 0.3
+
+
+def test_an_estop_of_any_qos_stops_teleop_in_the_mux_and_the_simulator(ros):
+    """A joystick or safety node often publishes its e-stop best effort; `ros2 topic pub` reliable
+    and volatile; `haven` latched. Each holds the robot still while teleop (through the mux) and a
+    keyboard node (on /cmd_vel, past the mux) ask it to turn, and nobody logs incompatible QoS."""
+    odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
+    events = ros.collect(String, "/haven/events", qos.EVENTS)
+    teleop = ros.node.create_publisher(Twist, "/cmd_vel_teleop", 10)
+    keyboard = ros.node.create_publisher(Twist, "/cmd_vel", 10)
+    sim = ros.start(SIM, {"cmd_timeout_s": 20.0, "estop_hold_s": 0.5}, capture=True)
+    mux = ros.start(MUX, {"use_sim_time": True, "estop_hold_s": 0.5}, capture=True)
+    for e in (teleop, keyboard, events):
+        ros.wait_matched(e)
+    ros.wait_for_messages(odom, 5)
+    turn = twist(0.0, 1.0)
+    best_effort = QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT)
+    transient_best_effort = QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    for name, profile in (("best effort", best_effort), ("reliable", 10), ("latched", qos.LATCHED), ("best effort latched", transient_best_effort)):
+        estop = ros.node.create_publisher(Bool, "/haven/estop", profile)
+        assert ros.spin_until(lambda: estop.get_subscription_count() >= 2, 15.0), name  # the mux and the simulator
+        del events[:]
+
+        def send(stop: bool, estop=estop):
+            estop.publish(Bool(data=stop))
+            teleop.publish(turn)
+            keyboard.publish(turn)
+
+        assert ros.spin_until(lambda: (send(True), ros.spin_for(0.05)) and odom[-1].twist.twist.angular.z == 0.0, 10.0), name
+        still = conv.pose_from_msg(odom[-1].pose.pose)
+        stamp = conv.time_from_msg(odom[-1].header.stamp)
+        while conv.time_from_msg(odom[-1].header.stamp) - stamp < 1.5:  # 1.5 s of sim time asking to turn at 1 rad/s
+            send(True)
+            ros.spin_for(0.05)
+        assert abs(conv.pose_from_msg(odom[-1].pose.pose).yaw - still.yaw) < 0.02, name
+        assert any(conv.event_from_msg(m).get("to") == "estop" for m in events), name  # the mux too
+        # Released: a false, and no true for estop_hold_s; the same commands turn it again.
+        assert ros.spin_until(lambda: (send(False), ros.spin_for(0.05)) and abs(odom[-1].twist.twist.angular.z) > 0.5, 15.0), name
+        ros.node.destroy_publisher(estop)
+    for proc in (sim, mux):
+        said = stderr_of(proc)()
+        assert "incompatible QoS" not in said, said

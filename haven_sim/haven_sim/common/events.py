@@ -31,6 +31,7 @@ class EventKind(StrEnum):
     RESET = "reset"
     TOOK_OFF = "took_off"  # an aerial robot left its pad (climbing to cruise height)
     LANDED = "landed"  # an aerial robot is down on its pad
+    CLOCK_HELD = "clock_held"  # real_time_factor, requested: the controller fell behind, sim time ran slower (free-running)
     # velocity mux
     CMD_SOURCE = "cmd_source"  # from, to: nav | teleop | estop | idle
     # planner

@@ -2,8 +2,12 @@
 
 `ControllerComponent` is the whole controller node without ROS (the node only wires it to topics):
 it keeps the latest path, pose and wait flag, and at `rate_hz` commands the robot through the path
-follower, reporting a `goal_reached` event once per path: when the follower has arrived and the
-robot has come to rest (its final rotation braked to a stop), with the pose it rests at.
+follower, reporting a `goal_reached` event once per path: when the follower has arrived, the
+robot has come to rest (its final rotation braked to a stop) and the goal checker finds the pose
+it rests at within the follower's xy and yaw tolerances. Resting outside them (it coasted past the
+goal or turned too far), it drives back and turns again, as Nav2's controller server keeps going
+until its goal checker agrees; a robot that cannot get there is left to the caller's progress
+check or timeout. A "reached" is therefore a measured pose, whatever the machine's load.
 """
 
 from __future__ import annotations
@@ -22,7 +26,7 @@ from haven_sim.robots.fields import RobotChoice
 from haven_sim.runtime.component import Handler, Message
 
 AT_REST_MPS, AT_REST_RPS = 0.01, 0.02  # the robot is at rest below these (odometry's speeds)
-REST_WAIT_S = 3.0  # arrived but not at rest after this long (odometry gone quiet): reported all the same
+REST_WAIT_S = 3.0  # arrived but not at rest after this long (odometry gone quiet): checked all the same
 
 
 @dataclass(frozen=True)
@@ -34,11 +38,17 @@ class ControllerConfig:
 
     def __post_init__(self) -> None:
         check_bounds(self)
+        if self.follower.yaw_goal_tolerance_rad < self.style.facing_tolerance_rad:
+            raise ValueError(
+                f"follower.yaw_goal_tolerance_rad ({self.follower.yaw_goal_tolerance_rad:g}) must be at least the motion style's "
+                f"facing tolerance ({self.style.facing_tolerance_deg:g} deg), where a rotation ends"
+            )
 
 
 class ControllerComponent:
     name = nodes.CONTROLLER.name
     unread: frozenset[str] = frozenset()
+    paces_clock = True  # on the free-running clock, sim time waits for this loop (topics.PACE)
 
     def __init__(self, config: ControllerConfig | None = None) -> None:
         self.config = config or ControllerConfig()
@@ -48,6 +58,8 @@ class ControllerComponent:
         self._arrived_at: float | None = None  # the follower arrived; goal_reached waits for rest
         self._active = False  # the last tick drove or rotated the robot
         self._plan: list[Pose2D] = []
+        self.corrections = 0  # times the robot came to rest off its goal and went back to it
+        self.notes: list[str] = []  # logged by the node
 
     @property
     def period_s(self) -> float:
@@ -95,6 +107,12 @@ class ControllerComponent:
             self._arrived_at = now
         if self._arrived_at is not None and goal is not None and (self._at_rest() or now - self._arrived_at >= REST_WAIT_S):
             self._arrived_at = None
+            if not self.follower.at_goal(self.robot):
+                xy, yaw = self.follower.off_goal(self.robot)
+                self.corrections += 1
+                self.notes.append(f"at rest {xy:.3f} m and {yaw:.3f} rad off the goal: going back to it")
+                self.follower.correct(self.robot)
+                return out
             pose = [round(v, 3) for v in self.robot]
             reached = event(EventKind.GOAL_REACHED, now, Source.CONTROLLER, goal=[round(goal.x, 3), round(goal.y, 3)], pose=pose)
             out.append(Message(topics.EVENTS, reached, now))

@@ -25,13 +25,25 @@ from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.robots.fields import from_robot
 
 HEADING_GAIN = 2.0  # a holonomic robot turns to face its way at this rate per radian off (1/s), within its turn rate
+# Going back to a goal it came to rest off (`PathFollower.correct`), the robot moves at most this
+# many m/s per metre (rad/s per radian) still to go: slow enough that a command applied a few
+# tenths of a second late still ends inside the goal checker's tolerances.
+CORRECTION_GAIN = 1.0
 
 
 @dataclass(frozen=True)
 class FollowerParams:
     linear_speed_mps: float = from_robot("motion.cruise_speed_mps")  # along arcs and straights
     min_linear_speed_mps: float = param(0.05, "slowest speed while still driving toward a stop", POSITIVE)
-    goal_tolerance_m: float = param(0.1, "the goal counts as reached this close", POSITIVE)
+    goal_tolerance_m: float = param(
+        0.1, "the goal checker's xy tolerance: the goal counts as reached with the robot at rest this close (Nav2's default: 0.25)", POSITIVE
+    )
+    yaw_goal_tolerance_rad: float = param(
+        0.1,
+        "the goal checker's yaw tolerance: at rest, the robot must face the path's last pose this closely (Nav2's default: 0.25); "
+        "at least the motion style's facing tolerance, where a rotation ends",
+        POSITIVE,
+    )
     lookahead_m: float = param(0.35, "pure-pursuit lookahead along the path", POSITIVE)
     decel_mps2: float = param(0.4, "planned deceleration to each stop (the robot can do 0.5 m/s^2)", POSITIVE)
     angular_decel_rps2: float = param(3.0, "planned angular deceleration at the end of a rotation", POSITIVE)
@@ -86,6 +98,7 @@ class PathFollower:
         self._index = 0
         self._progress = 0.0  # arc length reached along the current drive piece
         self._realigning = False
+        self._correcting = False  # going back to the goal, slowly (`correct`)
         self.goal = poses[-1] if poses else None
         if not poses:
             self.status = Status.IDLE
@@ -95,6 +108,36 @@ class PathFollower:
     @property
     def active(self) -> bool:
         return self._index < len(self._actions)
+
+    def off_goal(self, pose: Pose2D) -> tuple[float, float]:
+        """How far `pose` is from the goal: (metres, radians; 0 where the goal has no heading)."""
+        goal = self.goal
+        if goal is None:
+            return 0.0, 0.0
+        yaw = abs(wrap_angle(goal.yaw - pose.yaw)) if math.isfinite(goal.yaw) else 0.0
+        return math.hypot(goal.x - pose.x, goal.y - pose.y), yaw
+
+    def at_goal(self, pose: Pose2D) -> bool:
+        """The goal checker (Nav2's SimpleGoalChecker's rule, our tolerances): within
+        `goal_tolerance_m` and `yaw_goal_tolerance_rad` of the path's last pose."""
+        xy, yaw = self.off_goal(pose)
+        return xy <= self.params.goal_tolerance_m and yaw <= self.params.yaw_goal_tolerance_rad
+
+    def correct(self, pose: Pose2D) -> None:
+        """Arrived but not at the goal (the robot coasted past it, or turned too far): drive back to
+        it and turn to its heading again, in the motion style (a goal behind is turned to first)."""
+        goal = self.goal
+        if goal is None:
+            return
+        xy, _ = self.off_goal(pose)
+        actions: list[_Rotate | Polyline] = []
+        if xy > self.params.goal_tolerance_m:
+            actions.append(Polyline([(pose.x, pose.y), (goal.x, goal.y)]))
+        if math.isfinite(goal.yaw):
+            actions.append(_Rotate(goal.x, goal.y, goal.yaw))
+        self._actions, self._index, self._progress, self._realigning = actions, 0, 0.0, False
+        self._correcting = True
+        self.status = Status.DRIVING
 
     def command(self, pose: Pose2D) -> Twist2D:
         """The velocity for this control tick."""
@@ -115,7 +158,9 @@ class PathFollower:
 
     def _turn(self, err: float) -> Twist2D:
         speed = min(self.style.rotate_speed_rps, math.sqrt(2.0 * self.params.angular_decel_rps2 * abs(err)))
-        return Twist2D(0.0, 0.0, math.copysign(max(speed, 0.1), err))
+        if self._correcting:
+            speed = min(speed, CORRECTION_GAIN * abs(err))
+        return Twist2D(0.0, 0.0, math.copysign(max(speed, 0.05 if self._correcting else 0.1), err))
 
     def _rotate(self, pose: Pose2D, action: _Rotate) -> Twist2D | None:
         err = wrap_angle(action.yaw - pose.yaw)
@@ -149,6 +194,8 @@ class PathFollower:
         self.status = Status.DRIVING
         stop_in = max(remaining, to_end)
         v = min(p.linear_speed_mps, math.sqrt(2.0 * p.decel_mps2 * stop_in))
+        if self._correcting:
+            v = min(v, CORRECTION_GAIN * stop_in)
         v = max(v, p.min_linear_speed_mps)
         dist = max(math.hypot(dx, dy), 1e-6)
         if p.holonomic:  # sideways as needed (no swing out on a tight turn), turning to face the way

@@ -17,11 +17,12 @@ from typing import Any, TypeVar
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor, SetParametersResult
 from rclpy.clock import Clock, ClockType, JumpThreshold, TimeJump
 from rclpy.duration import Duration
+from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.exceptions import InvalidParameterValueException
 from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.publisher import Publisher
-from rclpy.qos import DurabilityPolicy
+from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
 from rclpy.serialization import serialize_message
 from rclpy.subscription import Subscription
 
@@ -29,7 +30,7 @@ from haven_sim.common import topics
 from haven_sim.common.events import Event, EventKind, Sequencer, event
 from haven_sim.common.params import ParamsError, bounds_of, build, defaults, docs, ros_range
 from haven_sim.common.topics import WireParams
-from haven_sim.nodes import wire
+from haven_sim.nodes import qos, wire
 from haven_sim.nodes.lockstep import LockstepParticipant
 from haven_sim.nodes.runner import declare, handle, refused, start_up_only
 from haven_sim.nodes.wire import TopicSpec, type_name
@@ -167,9 +168,19 @@ class ComponentNode(Node):
 
             self._subs[topic] = self._subscribe(topic, spec, on_message)
         if component.period_s is not None:
-            self.create_timer(component.period_s, lambda: self.publish(component.tick(self.now())))
+            self.create_timer(component.period_s, lambda: self._tick_component(component))
+        # A loop that paces the free-running clock (the controller) says after each tick which sim
+        # time it has acted at; the simulator holds time within reach of it (sim/pacer.ControlPace).
+        pace = self._specs[topics.PACE] if getattr(component, "paces_clock", False) else None
+        self._pace = self.create_publisher(pace.msg_type, topics.PACE, pace.pub_qos) if pace is not None else None
         self._warned: set[tuple[str, str]] = set()
         self.create_timer(2.0, self._check_types, clock=Clock(clock_type=ClockType.STEADY_TIME))
+
+    def _tick_component(self, component: Component) -> None:
+        now = self.now()
+        self.publish(component.tick(now))
+        if self._pace is not None:
+            self._pace.publish(self._specs[topics.PACE].encode(now, now))
 
     def _check_types(self) -> None:
         """A publisher of another type on a topic we read never matches (DDS drops it without a
@@ -184,13 +195,16 @@ class ComponentNode(Node):
                     self.get_logger().warning(f"{name}: {info.node_name} publishes {info.topic_type}, this node reads {ours}; ignored{hint}")
 
     def _subscribe(self, topic: str, spec: TopicSpec, on_message: Callable[[Any], None]) -> Subscription:
-        """A reader with the spec's QoS; with a `late_qos`, in the node's first CATCH_UP_S also a
-        latched one, for what a latched publisher (our planner, `haven`'s e-stop) sent before the
-        readers matched. It exists only while a latched publisher is there and no volatile one, so
-        a volatile publisher (Nav2's planner_server, `ros2 topic pub`) never meets a reader it
-        cannot serve and nobody logs "incompatible QoS". A message both readers get is handled
-        once: the publisher's timestamp and sequence number say it is the same."""
-        if spec.late_qos is None:
+        """A reader with the spec's QoS. With `best_effort_too`, also a best-effort one, which
+        matches any publisher (a joystick's best-effort e-stop never matches a reliable reader);
+        the reliable reader keeps a reliable publisher's messages reliable. With a `late_qos`, in
+        the node's first CATCH_UP_S also a latched one, for what a latched publisher (our planner,
+        `haven`'s e-stop) sent before the readers matched. It exists only while a latched
+        publisher is there and no volatile one, so a volatile publisher (Nav2's planner_server,
+        `ros2 topic pub`) never meets a reader it cannot serve and nobody logs "incompatible QoS".
+        A message two readers get is handled once: the publisher's timestamp and sequence number
+        say it is the same."""
+        if spec.late_qos is None and not spec.best_effort_too:
             return self.create_subscription(spec.msg_type, topic, on_message, spec.sub_qos)
         seen: deque[tuple[int, int]] = deque(maxlen=64)
 
@@ -200,16 +214,26 @@ class ComponentNode(Node):
                 seen.append(key)
                 on_message(msg)
 
+        # A publisher that one of these readers cannot serve is served by another (the best-effort
+        # reader; the volatile one for the catch-up reader): they need not say so.
+        quiet = SubscriptionEventCallbacks(incompatible_qos=lambda _: None)
+        # (rclpy hands a two-argument callback the message info; its type hints do not say so)
+        reader = self.create_subscription(
+            spec.msg_type, topic, once, spec.sub_qos, event_callbacks=quiet if spec.best_effort_too else None  # type: ignore[arg-type]
+        )
+        if spec.best_effort_too:
+            self.create_subscription(spec.msg_type, topic, once, qos.best_effort(spec.sub_qos))  # type: ignore[arg-type]
+        if spec.late_qos is None:
+            return reader
+        late_qos = spec.late_qos
         name, started = self.resolve_topic_name(topic), time.monotonic()
         late: list[Subscription] = []  # the latched reader, while there is one
-        # (rclpy hands a two-argument callback the message info; its type hints do not say so)
-        reader = self.create_subscription(spec.msg_type, topic, once, spec.sub_qos)  # type: ignore[arg-type]
 
         def catch_up() -> None:
-            durabilities = {i.qos_profile.durability for i in self.get_publishers_info_by_topic(name)}
-            wanted = time.monotonic() - started < CATCH_UP_S and durabilities == {DurabilityPolicy.TRANSIENT_LOCAL}
+            offered = [(i.qos_profile.durability, i.qos_profile.reliability) for i in self.get_publishers_info_by_topic(name)]
+            wanted = time.monotonic() - started < CATCH_UP_S and set(offered) == {(DurabilityPolicy.TRANSIENT_LOCAL, ReliabilityPolicy.RELIABLE)}
             if wanted and not late:
-                late.append(self.create_subscription(spec.msg_type, topic, once, spec.late_qos))  # type: ignore[arg-type]
+                late.append(self.create_subscription(spec.msg_type, topic, once, late_qos, event_callbacks=quiet))  # type: ignore[arg-type]
             elif not wanted and late:
                 self.destroy_subscription(late.pop())
             if time.monotonic() - started >= CATCH_UP_S:

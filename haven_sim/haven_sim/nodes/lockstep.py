@@ -115,7 +115,7 @@ class LockstepParticipant:
         until the first tick)."""
         if self._ticked:
             return
-        waiting = unmatched(self.node, self.inbox.subs, self.outputs)
+        waiting = unmatched(self.node, self.inbox.readers, self.outputs)
         ready = not waiting
         if not ready and time.monotonic() - self._since > 5.0:
             self._since = time.monotonic()
@@ -212,7 +212,7 @@ class LockstepCoordinator:
                 readers = [i.node_name for i in self.node.get_subscriptions_info_by_topic(self.node.resolve_topic_name(topic))]
                 missing += [f"{name} on {topic}" for name in self.wait_for if name not in readers]
                 missing += [f"{node} matching the readers of {topic}"] if matched[topic] < len(readers) else []
-        missing += unmatched(self.node, self.inbox.subs, {**self.outputs, **{tick_topic(n): p for n, p in self.tick_pubs.items()}})
+        missing += unmatched(self.node, self.inbox.readers, {**self.outputs, **{tick_topic(n): p for n, p in self.tick_pubs.items()}})
         self._stable = 0 if missing else self._stable + 1
         if missing and time.monotonic() - self._since > 5.0:
             self._since = time.monotonic()

@@ -6,11 +6,12 @@ The clock itself is `nodes/lockstep.py`."""
 from __future__ import annotations
 
 import time
-from collections import Counter
+from collections import Counter, deque
 from collections.abc import Mapping, Sequence
 from typing import Any
 
 from rclpy.callback_groups import CallbackGroup
+from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.node import Node
 from rclpy.publisher import Publisher
 from rclpy.qos import HistoryPolicy, QoSProfile
@@ -19,6 +20,7 @@ from rclpy.subscription import Subscription
 
 from haven_sim.common import topics
 from haven_sim.common.events import EventKind, event
+from haven_sim.nodes.qos import best_effort
 from haven_sim.nodes.runner import refused, stop_requested
 from haven_sim.nodes.wire import TopicSpec
 from haven_sim.runtime.component import Message
@@ -78,13 +80,41 @@ class Inbox:
         self.queues = {t: Queue(t, settle) for t in inputs}
         self.lost: Counter[str] = Counter()  # announced messages that never came, per topic
         group = Deferred()
+        quiet = SubscriptionEventCallbacks(incompatible_qos=lambda _: None)  # (a best-effort publisher: the second reader's)
         self.subs = {
-            t: node.create_subscription(specs[t].msg_type, t, _never, keep_all(specs[t].sub_qos), callback_group=group, raw=True) for t in inputs
+            t: node.create_subscription(
+                specs[t].msg_type, t, _never, keep_all(specs[t].sub_qos), callback_group=group, raw=True,
+                event_callbacks=quiet if specs[t].best_effort_too else None,
+            )
+            for t in inputs
         }
+        # A topic read best effort too (the e-stop) has a second reader; a reliable publisher's
+        # message that both get is taken once (the publisher's timestamp and sequence number).
+        self.best_effort = {
+            t: node.create_subscription(specs[t].msg_type, t, _never, keep_all(best_effort(specs[t].sub_qos)), callback_group=group, raw=True)
+            for t in inputs
+            if specs[t].best_effort_too
+        }
+        self.seen: dict[str, deque[tuple[int, int]]] = {t: deque(maxlen=256) for t in self.best_effort}
+
+    @property
+    def readers(self) -> dict[str, Subscription]:
+        """A reader per topic that matches every publisher there is (the best-effort one where
+        there are two): what `unmatched` asks about."""
+        return {t: self.best_effort.get(t, sub) for t, sub in self.subs.items()}
 
     def take(self, only: Sequence[str] | None = None) -> None:
         for t in self.subs if only is None else only:
-            self.queues[t].add(take_all(self.subs[t]))
+            if t not in self.best_effort:
+                self.queues[t].add(take_all(self.subs[t]))
+                continue
+            new = []
+            for data, info in take_all_with_info(self.subs[t]) + take_all_with_info(self.best_effort[t]):
+                key = (info["source_timestamp"], info["publication_sequence_number"])
+                if key not in self.seen[t]:
+                    self.seen[t].append(key)
+                    new.append(data)
+            self.queues[t].add(new)
 
     def fill(self, expect: Mapping[str, Sequence[str]]) -> None:
         """Take from the readers until every announced message is in; give up after WAIT_S."""

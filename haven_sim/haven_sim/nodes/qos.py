@@ -31,6 +31,14 @@ LATEST = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=Reliab
 # there (our planner, `haven`'s e-stop), a LATCHED reader beside it picks up what they sent before
 # the readers matched (nodes/component_node.py).
 ANY_DURABILITY = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
+
+
+def best_effort(profile: QoSProfile) -> QoSProfile:
+    """`profile` read best effort and volatile: a reader that matches every publisher (reliable or
+    best effort, volatile or transient local); the e-stop's second reader."""
+    return QoSProfile(depth=profile.depth, history=profile.history, reliability=ReliabilityPolicy.BEST_EFFORT)
+
+
 # /clock: the rosgraph default (reliable, depth 10) so every use_sim_time node matches.
 CLOCK = RELIABLE
 # /scan

@@ -8,7 +8,10 @@ pause_physics; the web node pauses a trial a participant has dropped out of). It
 itself, and warns once about each publisher on /cmd_vel beside the velocity mux (such as
 teleop_twist_keyboard's default topic): it bypasses the mux's arbitration. The behaviour is
 `haven_sim.sim.simulator.SimulatorComponent`; this node adds the wall-clock pacing (it is the
-clock, so it must not wait on /clock itself).
+clock, so it must not wait on /clock itself). On the free-running clock it holds simulated time
+within `control_lag_s` of what the controller has acted at (/haven/_pace): a busy machine slows
+the clock (a `clock_held` event gives the factor achieved) instead of moving the robot on old
+commands.
 """
 
 from __future__ import annotations
@@ -26,7 +29,7 @@ from haven_sim.nodes.lockstep import LockstepCoordinator
 from haven_sim.nodes.runner import run_node
 from haven_sim.runtime.component import Message
 from haven_sim.runtime.lockstep import UNCAPPED_RTF
-from haven_sim.sim.pacer import Pacer, WallClock
+from haven_sim.sim.pacer import ControlPace, Pacer, WallClock
 from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig
 from haven_sim.sim.world import resolve_world_path
 from haven_sim.sim.world_file import load_world
@@ -69,6 +72,11 @@ class SimNode(ComponentNode):
             pace = f"lockstep with {', '.join(config.lockstep_participants) or 'no participants'}, {cap}"
         else:
             self.pacer = Pacer(config.sim.step_s, config.real_time_factor)
+            self.pace = ControlPace(config.control_lag_s)
+            pace_spec = self._specs[topics.PACE]
+            self.create_subscription(
+                pace_spec.msg_type, topics.PACE, lambda m: self.pace.report(pace_spec.decode(m), self.clock.now()), pace_spec.sub_qos
+            )
             self.publish(self.sim.sense())
             self.create_timer(self.pacer.tick_period_s, self._tick, clock=Clock(clock_type=ClockType.STEADY_TIME))
             pace = f"{config.real_time_factor:g}x real time"
@@ -84,9 +92,21 @@ class SimNode(ComponentNode):
     def _tick(self) -> None:
         if self.clock.paused:  # (not even the steps a busy machine still owes)
             return
-        for _ in range(self.pacer.due_steps(self.clock.now())):
+        wall, step_s = self.clock.now(), self.pacer.step_s
+        allowed = self.pace.allowed_steps(self.sim.sim.time, step_s, wall)
+        for _ in range(self.pacer.due_steps(wall, allowed)):
             self.sim.advance()
             self.publish(self.sim.sense())
+        achieved = self.pace.factor(self.sim.sim.time, wall, self.pacer.holding)
+        requested = self.pacer.real_time_factor
+        if achieved is not None and achieved < 0.9 * requested:
+            now = self.sim.sim.time
+            self.get_logger().warning(
+                f"sim time ran at {achieved:.2f}x real time over the last {self.pace.REPORT_S:g} s (asked: {requested:g}x): "
+                "held for the controller, which fell behind (a busy machine)"
+            )
+            held = event(EventKind.CLOCK_HELD, now, Source.SIM, real_time_factor=round(achieved, 3), requested=requested)
+            self.publish([Message(topics.EVENTS, held, now)])
 
     def _check_writers(self) -> None:
         topic = self.resolve_topic_name(topics.CMD_VEL)

@@ -39,6 +39,7 @@ class TopicSpec:
     pub_qos: QoSProfile
     sub_qos: QoSProfile
     late_qos: QoSProfile | None = None  # also read with this (a latched publisher's last message, for a late joiner)
+    best_effort_too: bool = False  # also read best effort, so a best-effort publisher (a joystick's e-stop) is heard
 
 
 @dataclass(frozen=True)
@@ -75,6 +76,7 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
     f = frames
     table = {
         topics.CLOCK: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.STREAM, qos.CLOCK),
+        topics.PACE: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.LATEST, qos.LATEST),
         topics.MAP: TopicSpec(OccupancyGrid, lambda g, t: conv.occupancy_msg(t, g, f.map), conv.occupancy_from_msg, qos.LATCHED, qos.LATCHED),
         topics.ODOM: TopicSpec(Odometry, lambda s, t: conv.odometry_msg(t, s, f.odom, f.base), conv.odometry_from_msg, qos.STREAM, qos.LATEST),
         topics.SCAN: TopicSpec(LaserScan, lambda s, t: conv.scan_msg(t, s, f.scan), _unsupported, qos.SENSOR, qos.SENSOR),
@@ -85,7 +87,9 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
         topics.CMD_VEL: _twist(),
         topics.CMD_VEL_NAV: _twist(),
         topics.CMD_VEL_TELEOP: _twist(),
-        topics.ESTOP: TopicSpec(Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.ANY_DURABILITY, qos.LATCHED),
+        topics.ESTOP: TopicSpec(
+            Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.ANY_DURABILITY, qos.LATCHED, best_effort_too=True
+        ),
         topics.GOAL: TopicSpec(PoseStamped, lambda g, t: conv.goal_msg(t, g), conv.goal_from_msg, qos.RELIABLE, qos.RELIABLE),
         topics.PLAN: TopicSpec(Path, lambda p, t: conv.path_msg(t, p, f.map), conv.path_from_msg, qos.CHANGES, qos.ANY_DURABILITY, qos.LATCHED),
         topics.WAIT: TopicSpec(Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.LATCHED),

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import ZERO_TWIST, FloatArray, Twist2D
-from haven_sim.common.params import POSITIVE, check_bounds, group, param
+from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, check_bounds, group, param
 from haven_sim.common.state import RobotState
 from haven_sim.nav.mux import ESTOP_HOLD_S, EStopLatch
 from haven_sim.robots.fields import RobotChoice, from_robot
@@ -51,6 +51,12 @@ class SimulatorConfig:
     reset_allowed: bool = param(True, "/haven/reset resets the world (haven run turns it off: a recorded trial refuses it, as an event)")
     estop_hold_s: float = param(
         ESTOP_HOLD_S, "as the mux's: a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE
+    )
+    control_lag_s: float = param(
+        0.1,
+        "free-running clock: sim time runs at most this far (and two control ticks) ahead of the sim time the controller has "
+        "acted at, slowing below real_time_factor when it falls behind (a clock_held event says how much); 0: never held",
+        NOT_NEGATIVE,
     )
 
     def __post_init__(self) -> None:
