@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import NamedTuple
 
 import numpy as np
@@ -80,6 +81,19 @@ def polygon_edges(polygon: list[Point]) -> FloatArray:
     pts = np.asarray(polygon, dtype=float)
     nxt = np.roll(pts, -1, axis=0)
     return np.hstack([pts, nxt])
+
+
+def polygons_edges(polygons: Sequence[Sequence[Point]]) -> FloatArray:
+    """Closed polygons -> one (N, 4) array of all their edges x0, y0, x1, y1, in one pass (a world
+    made from a map has thousands of wall boxes)."""
+    sizes = np.array([len(p) for p in polygons], dtype=np.intp)
+    if not sizes.sum():
+        return np.zeros((0, 4))
+    pts = np.array([xy for p in polygons for xy in p], dtype=float)
+    ends = np.cumsum(sizes)
+    nxt = np.arange(1, len(pts) + 1)
+    nxt[ends[sizes > 0] - 1] = (ends - sizes)[sizes > 0]  # each polygon's last point closes on its first
+    return np.hstack([pts, pts[nxt]])
 
 
 def points_in_polygon(xs: FloatArray, ys: FloatArray, polygon: list[Point]) -> npt.NDArray[np.bool_]:
