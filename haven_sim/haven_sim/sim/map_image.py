@@ -195,15 +195,19 @@ def check_settings(source: str, key: str, resolution: float, occupied_thresh: fl
 @contextmanager
 def open_image(data: BinaryIO, source: str, key: str) -> Iterator[Image.Image]:
     """An image opened from its header only (nothing decoded yet), held to `MAX_CELLS` pixels:
-    WorldError in one line for anything else, a decompression bomb included (PIL refuses one of
-    more than twice `Image.MAX_IMAGE_PIXELS` before we see its size)."""
+    WorldError in one line (`source: key: problem`, no key when it is "") for anything else, a
+    decompression bomb included (PIL refuses one of more than twice `Image.MAX_IMAGE_PIXELS`
+    before we see its size, and warns above that: we judge the size ourselves)."""
     from PIL import Image, UnidentifiedImageError
 
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)  # (the size is ours to judge, just below)
             img = Image.open(data)
-    except (OSError, UnidentifiedImageError, ValueError, Image.DecompressionBombError) as e:
+    except Image.DecompressionBombError:
+        bomb = f"has more than {2 * (Image.MAX_IMAGE_PIXELS or 0):,} pixels (a decompression bomb?); at most {MAX_CELLS:,} cells"
+        raise _fail(source, key, bomb) from None
+    except (OSError, UnidentifiedImageError, ValueError) as e:
         raise _fail(source, key, f"cannot be read as an image: {one_line(str(e))}") from None
     with img:
         if img.width * img.height > MAX_CELLS:
