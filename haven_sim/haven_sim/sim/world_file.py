@@ -44,7 +44,7 @@ from typing import Annotated, Any, Literal
 import yaml
 
 from haven_sim.common.bodies import HUMAN_BODY
-from haven_sim.common.geometry import Point, Pose2D, polygon_area, segment_to_polygon
+from haven_sim.common.geometry import MAX_POLYGON_VERTICES, Point, Pose2D, polygon_area, polygon_problem, segment_to_polygon
 from haven_sim.common.schema import FileModel, Line, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
 from haven_sim.robots.fields import DEFAULT
@@ -62,7 +62,7 @@ from haven_sim.sim.world import (
     World,
     WorldError,
 )
-from haven_sim.sim.world_checks import MAX_COORDINATE_M, MAX_EXTENT_M, MAX_POLYGON_VERTICES, overlapping_shape, polygon_problem, span_problem
+from haven_sim.sim.world_checks import MAX_COORDINATE_M, MAX_EXTENT_M, overlapping_shape, span_problem
 
 _ID_RE = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
 MAX_NAME_CHARS = 64
