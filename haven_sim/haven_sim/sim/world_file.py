@@ -105,6 +105,11 @@ def load_world(path: str | Path) -> World:
 def parse_world(data: Any, source: str = "<world>") -> World:
     if data is None:
         raise WorldError(f"{file_label(source)}: name: the world file is empty")
+    if isinstance(data, dict) and {"image", "resolution"} <= data.keys() and not data.keys() & WorldFile.model_fields.keys():
+        raise WorldError(
+            f"{file_label(source)}: this is a map_server map (image, resolution, origin), not a world: write a world file "
+            f"with `map: {Path(source).name}`, rooms and starts (docs/howto/own-building.md)"
+        )
     return _Parser(source).world(check(WorldFile, data, source, WorldError, "world file"))
 
 
