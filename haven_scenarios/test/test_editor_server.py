@@ -24,7 +24,7 @@ from haven_scenarios.study.scenario import load_scenario, parse_scenario
 from haven_scenarios.study.scenario_template import TemplateError, scenario_template
 from haven_scenarios.tools.commands.edit import world_tree
 from haven_scenarios.web.editor_server import MAX_WORLD_BYTES, EditorServer
-from haven_sim.sim.map_image import MAX_CELLS
+from haven_sim.sim.map_image import MAX_CELLS, MAX_WALL_BOXES
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import load_world
 
@@ -178,6 +178,14 @@ def test_an_image_too_large_to_be_a_map_is_refused_with_400_before_it_is_decoded
         assert code == 400 and "\n" not in answer["error"], answer
         assert answer["error"].startswith("the image") and f"at most {MAX_CELLS:,}" in answer["error"], answer
     assert post(server, "check", json.dumps(room_world()).encode())[1]["ok"] is True  # (and the server still answers)
+
+
+def test_an_image_too_fragmented_for_walls_is_refused_with_400_in_one_line(server: EditorServer) -> None:
+    rows, cols = np.indices((200, 200))
+    data = io.BytesIO()
+    Image.fromarray(np.where((rows + cols) % 2 == 0, 0, 255).astype(np.uint8)).save(data, format="PNG")  # 20,000 one-pixel walls
+    code, answer = post(server, "walls?resolution=0.05", data.getvalue(), kind="image/png")
+    assert code == 400 and answer["error"].startswith("the image: ") and f"more than {MAX_WALL_BOXES:,} wall boxes" in answer["error"], answer
 
 
 def test_the_template_makes_scenarios_that_load(tmp_path: Path) -> None:

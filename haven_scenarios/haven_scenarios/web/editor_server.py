@@ -235,6 +235,7 @@ def image_walls(image: bytes, query: Mapping[str, list[str]]) -> dict[str, Any]:
         f.flush()
         try:
             grid = read_image(f.name, number("resolution", "0.05"), (number("x", "0"), number("y", "0")), negate=query.get("negate", ["0"])[0] == "1")
+            boxes = wall_boxes(grid)
         except WorldError as e:
             raise ValueError(str(e).replace(f.name, "the image")) from None
-    return {"walls": [[[round(x, 4), round(y, 4)] for x, y in box] for box in wall_boxes(grid)]}
+    return {"walls": [[[round(x, 4), round(y, 4)] for x, y in box] for box in boxes]}

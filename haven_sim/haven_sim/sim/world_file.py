@@ -46,10 +46,10 @@ import yaml
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import MAX_POLYGON_VERTICES, Point, Pose2D, polygon_area, polygon_problem, segment_to_polygon
 from haven_sim.common.schema import FileModel, Line, check, checked, listing
-from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
+from haven_sim.common.yaml_file import file_label, finite, open_regular, read_yaml, short
 from haven_sim.robots.fields import DEFAULT
 from haven_sim.sim.map_file import load_map
-from haven_sim.sim.map_image import wall_boxes
+from haven_sim.sim.map_image import MAX_IMAGE_FILE_BYTES, wall_boxes
 from haven_sim.sim.world import (
     MAP_WALL_ID,
     ChargingBase,
@@ -85,7 +85,8 @@ def world_files(world: World, name: str) -> dict[str, bytes]:
         image = Path(world.map.source)
         image_name = f"{Path(name).stem}_map{image.suffix.lower()}"
         data["map"] = {"image": image_name, **world.map.settings}
-        files[image_name] = image.read_bytes()
+        with open_regular(image, "map image", MAX_IMAGE_FILE_BYTES) as f:  # (still a regular file, as when it was loaded)
+            files[image_name] = f.read()
     header = f"# {world.source} as run (its starts as the scenario gave them; its map image beside it)\n"
     return {name: (header + yaml.safe_dump(data, sort_keys=False)).encode(), **files}
 
