@@ -50,6 +50,13 @@ def test_a_fifo_as_the_map_image_is_refused_without_being_opened(tmp_path):
     refused(tmp_path / "world.yaml", "map.pgm: image: cannot be read as an image: a folder")
 
 
+def test_only_the_map_image_formats_are_decoded(tmp_path):
+    make_map_world(tmp_path)
+    Image.open(tmp_path / "map.pgm").save(tmp_path / "map.tif")
+    (tmp_path / "map.tif").rename(tmp_path / "map.pgm")  # a TIFF named .pgm: PIL would read it, a map is never one
+    refused(tmp_path / "world.yaml", "map.pgm: image: cannot be read as an image: cannot identify image file")
+
+
 def greedy(blocked):
     """The reference: the greedy maximal rectangles cell by cell (the loader's rule, written plainly)."""
     covered = np.zeros_like(blocked)

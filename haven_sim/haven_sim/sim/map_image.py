@@ -43,6 +43,7 @@ OCCUPIED_THRESH, FREE_THRESH = 0.65, 0.25  # map_saver's defaults (map_io.cpp ch
 MAX_CELLS = 4000 * 4000  # 16 M cells: a 100 m world (MAX_EXTENT_M) at 0.025 m/cell
 UNKNOWN, FREE, OCCUPIED = -1, 0, 100
 IMAGE_SUFFIXES = (".pgm", ".png", ".jpg", ".jpeg", ".bmp")
+IMAGE_FORMATS = ("PNG", "JPEG", "PPM", "BMP")  # PIL's decoders for them (PPM reads PGM): no other decoder sees the bytes
 MAX_IMAGE_FILE_BYTES = 100 << 20  # a 4000 x 4000 RGBA BMP, the largest map image, is 64 MB
 MAX_WALL_BOXES = 10_000  # see `wall_boxes`
 BAND_ROWS = 256  # rows converted at a time (about 30 MB of working arrays at 4,000 columns)
@@ -203,7 +204,7 @@ def open_image(data: BinaryIO, source: str, key: str) -> Iterator[Image.Image]:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)  # (the size is ours to judge, just below)
-            img = Image.open(data)
+            img = Image.open(data, formats=IMAGE_FORMATS)
     except Image.DecompressionBombError:
         bomb = f"has more than {2 * (Image.MAX_IMAGE_PIXELS or 0):,} pixels (a decompression bomb?); at most {MAX_CELLS:,} cells"
         raise _fail(source, key, bomb) from None
