@@ -2,7 +2,8 @@
 may be hostile: every refusal is one line naming the file (and, where there is one, the key).
 
 - only a regular file is opened (a FIFO, a device such as /dev/zero or a folder is refused before
-  it is read; the file is opened non-blocking and checked again, so a swap cannot make it hang);
+  it is read; the file is opened non-blocking and checked again, so a swap cannot make it hang:
+  `open_regular`, which map images are opened with too);
 - at most `MAX_FILE_BYTES` (1 MiB) are read;
 - the bytes must be UTF-8 (the refusal names the byte offset, and says so when it looks like UTF-16);
 - the YAML event stream is checked before anything is built from it: at most `MAX_DEPTH` levels

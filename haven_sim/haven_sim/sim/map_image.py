@@ -13,6 +13,11 @@ map_saver's (0.65 occupied, 0.25 free; `checkSaveParameters`).
 HAVEN walks on the free cells only: occupied and unknown cells become walls (`wall_boxes`: the
 cells merged into few axis-aligned rectangles, so physics, the scan, the planner and the pages
 stay fast), and /map is the source map itself (`MapImage.grid`).
+
+Bounded, as a map may come from anyone: the image is opened only when it is a regular file of at
+most `MAX_IMAGE_FILE_BYTES` (`yaml_file.open_regular`: a FIFO is refused, never opened blocking),
+decoded only by the PNG, JPEG, PGM and BMP decoders and only once its header says it has at most
+`MAX_CELLS` pixels; the merge is linear in the cells and stops at `MAX_WALL_BOXES` boxes.
 """
 
 from __future__ import annotations
