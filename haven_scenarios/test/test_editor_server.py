@@ -7,8 +7,10 @@ from __future__ import annotations
 import http.client
 import io
 import json
+import struct
 import urllib.error
 import urllib.request
+import zlib
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
@@ -22,6 +24,7 @@ from haven_scenarios.study.scenario import load_scenario, parse_scenario
 from haven_scenarios.study.scenario_template import TemplateError, scenario_template
 from haven_scenarios.tools.commands.edit import world_tree
 from haven_scenarios.web.editor_server import MAX_WORLD_BYTES, EditorServer
+from haven_sim.sim.map_image import MAX_CELLS, MAX_WALL_BOXES
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import load_world
 
@@ -154,6 +157,35 @@ def test_a_map_images_dark_cells_become_wall_polygons(server: EditorServer) -> N
     with urllib.request.urlopen(request, timeout=30) as r:
         assert r.headers["Content-Type"] == "image/png"
         assert np.array_equal(np.asarray(Image.open(io.BytesIO(r.read()))), pixels)
+
+
+def png_header_only(width: int, height: int) -> bytes:
+    """A PNG that says it is `width` x `height` grey pixels, with one compressed row of data: what a
+    decompression bomb shows before it is decoded (the size is judged from this header)."""
+
+    def chunk(kind: bytes, data: bytes) -> bytes:
+        return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
+
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 0, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(bytes(width + 1))) + chunk(b"IEND", b"")
+
+
+@pytest.mark.parametrize("side", [12_000, 20_000])  # 144 megapixels (PIL warns), 400 (PIL refuses)
+def test_an_image_too_large_to_be_a_map_is_refused_with_400_before_it_is_decoded(server: EditorServer, side: int) -> None:
+    bomb = png_header_only(side, side)
+    for action in ("image", "walls?resolution=0.05"):
+        code, answer = post(server, action, bomb, kind="image/png")
+        assert code == 400 and "\n" not in answer["error"], answer
+        assert answer["error"].startswith("the image") and f"at most {MAX_CELLS:,}" in answer["error"], answer
+    assert post(server, "check", json.dumps(room_world()).encode())[1]["ok"] is True  # (and the server still answers)
+
+
+def test_an_image_too_fragmented_for_walls_is_refused_with_400_in_one_line(server: EditorServer) -> None:
+    rows, cols = np.indices((200, 200))
+    data = io.BytesIO()
+    Image.fromarray(np.where((rows + cols) % 2 == 0, 0, 255).astype(np.uint8)).save(data, format="PNG")  # 20,000 one-pixel walls
+    code, answer = post(server, "walls?resolution=0.05", data.getvalue(), kind="image/png")
+    assert code == 400 and answer["error"].startswith("the image: ") and f"more than {MAX_WALL_BOXES:,} wall boxes" in answer["error"], answer
 
 
 def test_the_template_makes_scenarios_that_load(tmp_path: Path) -> None:

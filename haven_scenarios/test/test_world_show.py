@@ -40,3 +40,26 @@ def test_a_world_from_a_ros_map_is_drawn_with_the_maps_walls(capsys, tmp_path: P
     wall = np.array([round(255 * c) for c in COLORS["wall"][:3]])
     share = float((np.abs(pixels.astype(int) - wall).max(axis=2) <= 2).mean())
     assert 0.2 < share < 0.5, share
+
+
+def test_a_maps_own_yaml_or_a_fifo_as_its_image_is_one_line(capsys, tmp_path: Path) -> None:
+    import os
+    import threading
+
+    from map_maker import make_map_world
+
+    make_map_world(tmp_path)
+    for command in (["world", "show"], ["validate"]):
+        assert main([*command, str(tmp_path / "map.yaml")]) == 2
+        (line,) = capsys.readouterr().err.strip().splitlines()
+        assert line.startswith(f"haven: error: {tmp_path / 'map.yaml'}: this is a map_server map") and "`map: map.yaml`" in line, line
+    (tmp_path / "map.pgm").unlink()
+    os.mkfifo(tmp_path / "map.pgm")  # (refused before it is opened: opening it would wait for a writer)
+    guard = threading.Timer(20.0, lambda: os.close(os.open(tmp_path / "map.pgm", os.O_WRONLY | os.O_NONBLOCK)))  # (if it did)
+    guard.start()
+    try:
+        assert main(["world", "show", str(tmp_path / "world.yaml"), "--out", str(tmp_path / "w.png")]) == 2
+    finally:
+        guard.cancel()
+    (line,) = capsys.readouterr().err.strip().splitlines()
+    assert line == f"haven: error: {tmp_path / 'map.pgm'}: image: cannot be read as an image: not a regular file"

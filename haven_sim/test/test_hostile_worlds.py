@@ -9,10 +9,11 @@ import yaml
 from hostile import BOMB, refused
 
 from haven_sim.common.bodies import HUMAN_BODY
+from haven_sim.common.geometry import polygon_problem
 from haven_sim.common.yaml_file import MAX_DEPTH, MAX_FILE_BYTES, MAX_NODES, read_yaml, short
 from haven_sim.robots.fields import DEFAULT as ROBOT_BODY
 from haven_sim.sim.world import WorldError, packaged_world
-from haven_sim.sim.world_checks import MAX_COORDINATE_M, MAX_EXTENT_M, polygon_problem
+from haven_sim.sim.world_checks import MAX_COORDINATE_M, MAX_EXTENT_M
 from haven_sim.sim.world_file import load_world
 
 BASE = yaml.safe_load(packaged_world("small_test").read_text())

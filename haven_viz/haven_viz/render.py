@@ -16,6 +16,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.axes import Axes  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
 from matplotlib.patches import Circle, FancyArrow, Polygon, Rectangle  # noqa: E402
 from matplotlib.transforms import Affine2D  # noqa: E402
 
@@ -129,8 +130,8 @@ def render_scene(
     fig, ax = plt.subplots(figsize=(max(4.0, width * scale + 1.0), max(3.0, height * scale + 0.8)))
     ax.set_facecolor((0.97, 0.97, 0.95))
     for kind, shapes in (("wall", world.walls), ("obstacle", world.obstacles)):
-        for s in shapes:
-            ax.add_patch(Polygon(s.polygon, closed=True, facecolor=COLORS[kind], edgecolor="none", zorder=2))
+        if shapes:  # (one collection: a world made from a map has thousands of wall boxes)
+            ax.add_collection(PolyCollection([s.polygon for s in shapes], closed=True, facecolors=COLORS[kind], edgecolors="none", zorder=2))
     for o in world.obstructions:
         if o.id not in removed:
             ax.add_patch(Polygon(o.shape.polygon, closed=True, facecolor=COLORS["obstruction"], hatch="//", zorder=2))

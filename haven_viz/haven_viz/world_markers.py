@@ -70,9 +70,7 @@ def world_markers(world: World, collected: Collection[str] = (), removed: Collec
     """Static scene: re-sent only when a gem is collected or an obstruction removed."""
     out: list[MarkerSpec] = []
     for kind, shapes in (("wall", world.walls), ("obstacle", world.obstacles)):
-        tris: tuple[Point3, ...] = ()
-        for s in shapes:
-            tris += _prism(s.polygon, WALL_HEIGHT_M)
+        tris = tuple(p for s in shapes for p in _prism(s.polygon, WALL_HEIGHT_M))  # (one pass: a map world has thousands)
         if tris:
             out.append(MarkerSpec(f"{kind}s", 0, Shape.TRIANGLE_LIST, color=COLORS[kind], points=tris))
     for i, o in enumerate(world.obstructions):

@@ -39,8 +39,8 @@ from haven_scenarios.tools.commands.world import summary  # (the same words `hav
 from haven_scenarios.web.access import TOKEN_COOKIE, TOKEN_PARAM, new_token, role_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json, token_cookie
 from haven_sim.common import atomic
-from haven_sim.common.yaml_file import MAX_FILE_BYTES, YamlFileError, file_label
-from haven_sim.sim.map_image import read_image, wall_boxes
+from haven_sim.common.yaml_file import MAX_FILE_BYTES, YamlFileError, file_label, one_line
+from haven_sim.sim.map_image import open_image, read_image, wall_boxes
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import parse_world
 
@@ -205,16 +205,17 @@ def image_suffix(image: bytes) -> str:
 
 
 def as_png(image: bytes) -> bytes:
-    """The image (PNG, JPEG or PGM) as a PNG the page can draw."""
-    from PIL import Image, UnidentifiedImageError
-
+    """The image (PNG, JPEG or PGM) as a PNG the page can draw; held to what a world's map image
+    may be (`map_image.open_image`: its size read from its header before it is decoded)."""
     image_suffix(image)
+    out = io.BytesIO()
     try:
-        with Image.open(io.BytesIO(image)) as picture:
-            out = io.BytesIO()
+        with open_image(io.BytesIO(image), "the image", "") as picture:
             picture.save(out, "PNG")
-    except (UnidentifiedImageError, OSError, ValueError) as e:
-        raise ValueError(f"the image cannot be read: {e}") from None
+    except WorldError as e:
+        raise ValueError(str(e)) from None
+    except (OSError, ValueError) as e:
+        raise ValueError(f"the image: cannot be read as an image: {one_line(str(e))}") from None
     return out.getvalue()
 
 
@@ -234,6 +235,7 @@ def image_walls(image: bytes, query: Mapping[str, list[str]]) -> dict[str, Any]:
         f.flush()
         try:
             grid = read_image(f.name, number("resolution", "0.05"), (number("x", "0"), number("y", "0")), negate=query.get("negate", ["0"])[0] == "1")
+            boxes = wall_boxes(grid)
         except WorldError as e:
             raise ValueError(str(e).replace(f.name, "the image")) from None
-    return {"walls": [[[round(x, 4), round(y, 4)] for x, y in box] for box in wall_boxes(grid)]}
+    return {"walls": [[[round(x, 4), round(y, 4)] for x, y in box] for box in boxes]}

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from typing import NamedTuple
 
 import numpy as np
@@ -10,6 +11,7 @@ import numpy.typing as npt
 
 Point = tuple[float, float]
 FloatArray = npt.NDArray[np.float64]
+BoolArray = npt.NDArray[np.bool_]
 
 
 class Pose2D(NamedTuple):
@@ -82,6 +84,19 @@ def polygon_edges(polygon: list[Point]) -> FloatArray:
     return np.hstack([pts, nxt])
 
 
+def polygons_edges(polygons: Sequence[Sequence[Point]]) -> FloatArray:
+    """Closed polygons -> one (N, 4) array of all their edges x0, y0, x1, y1, in one pass (a world
+    made from a map has thousands of wall boxes)."""
+    sizes = np.array([len(p) for p in polygons], dtype=np.intp)
+    if not sizes.sum():
+        return np.zeros((0, 4))
+    pts = np.array([xy for p in polygons for xy in p], dtype=float)
+    ends = np.cumsum(sizes)
+    nxt = np.arange(1, len(pts) + 1)
+    nxt[ends[sizes > 0] - 1] = (ends - sizes)[sizes > 0]  # each polygon's last point closes on its first
+    return np.hstack([pts, pts[nxt]])
+
+
 def points_in_polygon(xs: FloatArray, ys: FloatArray, polygon: list[Point]) -> npt.NDArray[np.bool_]:
     """Even-odd rule, vectorised over the query points."""
     inside = np.zeros(xs.shape, dtype=bool)
@@ -132,3 +147,51 @@ def distance_point_to_edges(x: float, y: float, edges: FloatArray) -> float:
     t = np.clip(np.einsum("ij,ij->i", p - a, d) / np.where(ln2 > 0, ln2, 1.0), 0.0, 1.0)
     closest = a + d * t[:, None]
     return float(np.min(np.hypot(closest[:, 0] - x, closest[:, 1] - y)))
+
+
+MAX_POLYGON_VERTICES = 500  # a world polygon, a robot footprint
+
+
+def polygon_problem(points: list[Point]) -> str | None:
+    """Why `points` (at most `MAX_POLYGON_VERTICES` of them) is not a simple polygon, or None."""
+    n = len(points)
+    a = np.asarray(points, dtype=float)
+    b = np.roll(a, -1, axis=0)
+    same = np.flatnonzero(np.all(a == b, axis=1))
+    if len(same):
+        i = int(same[0])
+        return f"point {(i + 1) % n} repeats point {i}"
+    d = b - a
+    turn = d[:, 0] * np.roll(d, -1, axis=0)[:, 1] - d[:, 1] * np.roll(d, -1, axis=0)[:, 0]
+    back = np.flatnonzero((turn == 0) & (np.einsum("ij,ij->i", d, np.roll(d, -1, axis=0)) < 0))
+    if len(back):
+        return f"folds back on itself at point {(int(back[0]) + 1) % n}"
+    first, second = np.triu_indices(n, 2)
+    keep = ~((first == 0) & (second == n - 1))  # the last edge and the first are neighbours
+    first, second = first[keep], second[keep]
+    hit = _segments_meet(a[first], b[first], a[second], b[second])
+    if hit.any():
+        e, f = (int(x[int(np.argmax(hit))]) for x in (first, second))
+        return f"is not simple: its edges from point {e} to {e + 1} and from point {f} to {(f + 1) % n} cross or touch"
+    return None
+
+
+def _cross(o: FloatArray, p: FloatArray, q: FloatArray) -> FloatArray:
+    result: FloatArray = (p[:, 0] - o[:, 0]) * (q[:, 1] - o[:, 1]) - (p[:, 1] - o[:, 1]) * (q[:, 0] - o[:, 0])
+    return result
+
+
+def _within(p: FloatArray, q: FloatArray, r: FloatArray) -> BoolArray:
+    """Whether r (collinear with p-q) lies on the segment p-q."""
+    lo, hi = np.minimum(p, q), np.maximum(p, q)
+    inside: BoolArray = np.all((lo <= r) & (r <= hi), axis=1)
+    return inside
+
+
+def _segments_meet(p1: FloatArray, q1: FloatArray, p2: FloatArray, q2: FloatArray) -> BoolArray:
+    o1, o2 = _cross(p1, q1, p2), _cross(p1, q1, q2)
+    o3, o4 = _cross(p2, q2, p1), _cross(p2, q2, q1)
+    proper = (o1 * o2 < 0) & (o3 * o4 < 0)
+    touch = (o1 == 0) & _within(p1, q1, p2) | (o2 == 0) & _within(p1, q1, q2) | (o3 == 0) & _within(p2, q2, p1) | (o4 == 0) & _within(p2, q2, q1)
+    meet: BoolArray = proper | touch
+    return meet

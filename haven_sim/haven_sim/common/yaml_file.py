@@ -2,7 +2,8 @@
 may be hostile: every refusal is one line naming the file (and, where there is one, the key).
 
 - only a regular file is opened (a FIFO, a device such as /dev/zero or a folder is refused before
-  it is read; the file is opened non-blocking and checked again, so a swap cannot make it hang);
+  it is read; the file is opened non-blocking and checked again, so a swap cannot make it hang:
+  `open_regular`, which map images are opened with too);
 - at most `MAX_FILE_BYTES` (1 MiB) are read;
 - the bytes must be UTF-8 (the refusal names the byte offset, and says so when it looks like UTF-16);
 - the YAML event stream is checked before anything is built from it: at most `MAX_DEPTH` levels
@@ -21,7 +22,7 @@ import reprlib
 import stat
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, BinaryIO
 
 import yaml
 
@@ -88,29 +89,55 @@ def read_yaml(path: str | Path, what: str = "YAML file", error: type[ValueError]
         raise error(str(e)) from None
 
 
-def _read_bytes(path: Path, name: str, what: str) -> bytes:
+class NotReadable(YamlFileError):
+    """A file that is not opened (missing, not a regular file, too large); `reason` without the name."""
+
+    def __init__(self, name: str, what: str, reason: str) -> None:
+        super().__init__(f"{name}: cannot read {what}: {reason}")
+        self.reason = reason
+
+
+def open_regular(path: str | Path, what: str, max_bytes: int) -> BinaryIO:
+    """`path` opened for reading only when it is a regular file of at most `max_bytes`: a FIFO, a
+    device or a folder is refused (`NotReadable`, one line) before it is opened, and the file is
+    opened non-blocking and checked again, so a FIFO swapped in meanwhile cannot make us hang."""
+    name = file_label(path)
     try:
-        _check_stat(os.stat(path), name, what)
+        _check_stat(os.stat(path), name, what, max_bytes)
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0))
-        with os.fdopen(fd, "rb") as f:
-            _check_stat(os.fstat(f.fileno()), name, what)  # the same file still, not a FIFO swapped in
-            data = f.read(MAX_FILE_BYTES + 1)
-    except (OSError, ValueError) as e:
-        if isinstance(e, YamlFileError):
+        f = os.fdopen(fd, "rb")
+        try:
+            _check_stat(os.fstat(f.fileno()), name, what, max_bytes)  # the same file still, not a FIFO swapped in
+        except BaseException:
+            f.close()
             raise
-        reason = e.strerror if isinstance(e, OSError) and e.strerror else str(e)
-        raise YamlFileError(f"{name}: cannot read {what}: {one_line(reason)}") from None
+    except NotReadable:
+        raise
+    except (OSError, ValueError) as e:
+        raise NotReadable(name, what, one_line(e.strerror if isinstance(e, OSError) and e.strerror else str(e))) from None
+    return f
+
+
+def _read_bytes(path: Path, name: str, what: str) -> bytes:
+    with open_regular(path, what, MAX_FILE_BYTES) as f:
+        try:
+            data = f.read(MAX_FILE_BYTES + 1)
+        except OSError as e:
+            raise NotReadable(name, what, one_line(e.strerror or str(e))) from None
     if len(data) > MAX_FILE_BYTES:
-        raise YamlFileError(f"{name}: cannot read {what}: larger than {MAX_FILE_BYTES // (1 << 20)} MiB")
+        raise NotReadable(name, what, f"larger than {_mib(MAX_FILE_BYTES)}")
     return data
 
 
-def _check_stat(st: os.stat_result, name: str, what: str) -> None:
+def _mib(n: int) -> str:
+    return f"{n // (1 << 20)} MiB"
+
+
+def _check_stat(st: os.stat_result, name: str, what: str, max_bytes: int) -> None:
     if not stat.S_ISREG(st.st_mode):
-        kind = "a folder" if stat.S_ISDIR(st.st_mode) else "not a regular file"
-        raise YamlFileError(f"{name}: cannot read {what}: {kind}")
-    if st.st_size > MAX_FILE_BYTES:
-        raise YamlFileError(f"{name}: cannot read {what}: larger than {MAX_FILE_BYTES // (1 << 20)} MiB ({st.st_size} bytes)")
+        raise NotReadable(name, what, "a folder" if stat.S_ISDIR(st.st_mode) else "not a regular file")
+    if st.st_size > max_bytes:
+        raise NotReadable(name, what, f"larger than {_mib(max_bytes)} ({st.st_size} bytes)")
 
 
 def _decode(data: bytes, name: str) -> str:

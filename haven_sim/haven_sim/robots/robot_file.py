@@ -9,11 +9,13 @@ extends another keeps the sources of the figures it leaves as they were.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
 from pydantic import Field, model_validator
 
+from haven_sim.common.geometry import MAX_POLYGON_VERTICES, polygon_area, polygon_problem
 from haven_sim.common.schema import FileModel, Line, Positive, Whole, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
 from haven_sim.robots.description import (
@@ -69,23 +71,51 @@ def _colour(v: Any) -> Any:
     return v
 
 
+_FRAME_TOKEN = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+MAX_FRAME_CHARS = 60
+
+
+def _frame(v: Any) -> Any:
+    """A tf2 frame id by the ROS 2 name rules (design.ros2.org, "Topic and Service name mapping to
+    DDS": tokens of letters, digits and '_' not starting with a digit, separated by single '/', no
+    '__', no trailing '/'), without the leading '/' tf2 refuses in a frame id."""
+    if isinstance(v, str) and len(v) <= MAX_FRAME_CHARS and "__" not in v and all(_FRAME_TOKEN.fullmatch(t) for t in v.split("/")):
+        return v
+    raise ValueError(
+        f"must be a ROS frame name (at most {MAX_FRAME_CHARS} characters): letters, digits and single '_' in parts "
+        f"separated by '/', none starting with a digit, no leading '/', got {short(v)}"
+    )
+
+
+def _footprint_polygon(v: Any) -> Any:
+    """At least 3 and at most `MAX_POLYGON_VERTICES` points, a simple polygon of non-zero area."""
+    if not isinstance(v, list) or not 3 <= len(v) <= MAX_POLYGON_VERTICES:
+        raise ValueError(f"must be a list of 3..{MAX_POLYGON_VERTICES} points [x, y], got {short(v)}")
+    points = [_xy(p) for p in v]
+    if abs(polygon_area(points)) < 1e-9:
+        raise ValueError("has zero area")
+    problem = polygon_problem(points)
+    if problem:
+        raise ValueError(problem)
+    return v  # (its points are checked again as XY)
+
+
 NotNegative = Annotated[float, Field(ge=0), checked(_not_negative)]
 Fraction = Annotated[float, Field(ge=0, le=1), checked(_fraction)]
 XY = Annotated[tuple[float, float], checked(_xy)]
 Triple = Annotated[tuple[float, float, float], checked(_triple)]
 Colour = Annotated[str, checked(_colour)]
+Frame = Annotated[str, checked(_frame)]
 
 
 class FootprintFile(FileModel):
     radius_m: Positive(5.0) | None = None  # type: ignore[valid-type]
-    polygon: Annotated[list[XY], listing("a list of at least 3 points [x, y]")] | None = None
+    polygon: Annotated[list[XY], checked(_footprint_polygon)] | None = None
 
     @model_validator(mode="after")
     def one_shape(self) -> FootprintFile:
         if (self.radius_m is None) == (self.polygon is None):
             raise ValueError("give either radius_m (a circle) or polygon (points [x, y] about the base frame)")
-        if self.polygon is not None and len(self.polygon) < 3:
-            raise ValueError("a polygon needs at least 3 points")
         return self
 
 
@@ -115,12 +145,12 @@ class LidarFile(FileModel):
     range_max_m: Positive(100.0)  # type: ignore[valid-type]
     rate_hz: Positive(100.0)  # type: ignore[valid-type]
     height_m: NotNegative
-    frame: Line(60) = "base_scan"  # type: ignore[valid-type]
+    frame: Frame = "base_scan"
 
 
 class FramesFile(FileModel):
-    base: Line(60) = "base_footprint"  # type: ignore[valid-type]
-    base_link: Line(60) = "base_link"  # type: ignore[valid-type]
+    base: Frame = "base_footprint"
+    base_link: Frame = "base_link"
     base_link_height_m: NotNegative = 0.0
 
 
@@ -189,6 +219,11 @@ class RobotFileModel(FileModel):
             )
         if self.lidar.range_min_m >= self.lidar.range_max_m:
             raise ValueError("lidar.range_min_m: must be below range_max_m")
+        frames = {"frames.base": self.frames.base, "frames.base_link": self.frames.base_link, "lidar.frame": self.lidar.frame}
+        for key, name in frames.items():
+            other = next((k for k, n in frames.items() if n == name and k != key), None)
+            if other is not None:
+                raise ValueError(f"{key}: {name!r} is also {other} (each frame of the TF tree needs its own name)")
         return self
 
 

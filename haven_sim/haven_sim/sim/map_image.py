@@ -13,32 +13,48 @@ map_saver's (0.65 occupied, 0.25 free; `checkSaveParameters`).
 HAVEN walks on the free cells only: occupied and unknown cells become walls (`wall_boxes`: the
 cells merged into few axis-aligned rectangles, so physics, the scan, the planner and the pages
 stay fast), and /map is the source map itself (`MapImage.grid`).
+
+Bounded, as a map may come from anyone: the image is opened only when it is a regular file of at
+most `MAX_IMAGE_FILE_BYTES` (`yaml_file.open_regular`: a FIFO is refused, never opened blocking),
+decoded only by the PNG, JPEG, PGM and BMP decoders and only once its header says it has at most
+`MAX_CELLS` pixels; the merge is linear in the cells and stops at `MAX_WALL_BOXES` boxes.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping
+import warnings
+from collections.abc import Callable, Iterator, Mapping
+from contextlib import contextmanager
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any, BinaryIO
 
 import numpy as np
 import numpy.typing as npt
 
 from haven_sim.common.geometry import Point
-from haven_sim.common.yaml_file import file_label, one_line
+from haven_sim.common.yaml_file import NotReadable, file_label, one_line, open_regular
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_checks import MAX_EXTENT_M
+
+if TYPE_CHECKING:
+    from PIL import Image
 
 MODES = ("trinary", "scale", "raw")
 OCCUPIED_THRESH, FREE_THRESH = 0.65, 0.25  # map_saver's defaults (map_io.cpp checkSaveParameters)
 MAX_CELLS = 4000 * 4000  # 16 M cells: a 100 m world (MAX_EXTENT_M) at 0.025 m/cell
 UNKNOWN, FREE, OCCUPIED = -1, 0, 100
 IMAGE_SUFFIXES = (".pgm", ".png", ".jpg", ".jpeg", ".bmp")
+IMAGE_FORMATS = ("PNG", "JPEG", "PPM", "BMP")  # PIL's decoders for them (PPM reads PGM): no other decoder sees the bytes
+MAX_IMAGE_FILE_BYTES = 100 << 20  # a 4000 x 4000 RGBA BMP, the largest map image, is 64 MB
+MAX_WALL_BOXES = 10_000  # see `wall_boxes`
+BAND_ROWS = 256  # rows converted at a time (about 30 MB of working arrays at 4,000 columns)
 
 BoolArray = npt.NDArray[np.bool_]
+IntArray = npt.NDArray[np.int64]
 
 
 @dataclass(frozen=True)
@@ -100,14 +116,54 @@ def read_image(
     key: str = "map",
 ) -> MapImage:
     """An image (PGM, PNG, JPEG, BMP) read as map_server reads it; WorldError in one line naming
-    the setting under `key` (`map.resolution`, `map.image`) when it cannot be."""
+    the setting under `key` (`map.resolution`, `map.image`) when it cannot be. Only a regular file
+    is opened, its size is checked from its header before it is decoded, and it is converted
+    `BAND_ROWS` rows at a time (a 4,000 x 4,000 RGBA image: about 180 MB at its peak, 5 s)."""
     check_settings(str(path), key, resolution, occupied_thresh, free_thresh, mode)
-    pixels, matte = _pixels(Path(path), _key(key, "image"))
+    source, image_key = str(path), _key(key, "image")
+    if Path(path).suffix.lower() not in IMAGE_SUFFIXES:
+        raise _fail(source, image_key, f"is not a map image ({', '.join(IMAGE_SUFFIXES)})")
+    try:
+        data = open_regular(path, "map image", MAX_IMAGE_FILE_BYTES)
+    except NotReadable as e:
+        raise _fail(source, image_key, f"cannot be read as an image: {e.reason}") from None
+    with data, open_image(data, source, image_key) as img:
+        width, height = img.size
+        if width * resolution > MAX_EXTENT_M or height * resolution > MAX_EXTENT_M:
+            raise _fail(source, _key(key, "resolution"), f"{width} x {height} cells of {resolution:g} m exceed the {MAX_EXTENT_M:g} m a world spans")
+        try:
+            cells = _image_cells(img, partial(_cells, negate=negate, occupied_thresh=occupied_thresh, free_thresh=free_thresh, mode=mode))
+        except (OSError, ValueError) as e:
+            raise _fail(source, image_key, f"cannot be read as an image: {one_line(str(e))}") from None
+    settings = {"resolution": resolution, "origin": [origin[0], origin[1], 0.0], "negate": int(negate)}
+    settings |= {"occupied_thresh": occupied_thresh, "free_thresh": free_thresh, "mode": mode}
+    return MapImage(cells, float(resolution), (float(origin[0]), float(origin[1])), source, settings)
+
+
+def _image_cells(img: Image.Image, cells_of: Callable[[npt.NDArray[np.uint8], bool], npt.NDArray[np.int8]]) -> npt.NDArray[np.int8]:
+    """The decoded image's cells: an 8-bit grey image (a PGM, as map_saver writes) through a table
+    of its 256 shades, anything else as RGBA `BAND_ROWS` rows at a time (the same arithmetic)."""
+    width, height = img.size
+    matte = img.mode in ("RGBA", "LA", "PA", "RGBa", "La") or "transparency" in img.info
+    img.load()
+    if img.mode == "L" and not matte:
+        shades = np.repeat(np.arange(256, dtype=np.uint8), 4).reshape(1, 256, 4)
+        shades[..., 3] = 255
+        table = cells_of(shades, False)[0]
+        grey: npt.NDArray[np.int8] = table[np.asarray(img)]
+        return grey
+    cells = np.empty((height, width), dtype=np.int8)
+    for r0 in range(0, height, BAND_ROWS):
+        band = np.asarray(img.crop((0, r0, width, min(height, r0 + BAND_ROWS))).convert("RGBA"))  # (8-bit, as map_saver writes)
+        cells[r0 : r0 + BAND_ROWS] = cells_of(band, matte)
+    return cells
+
+
+def _cells(
+    pixels: npt.NDArray[np.uint8], matte: bool, *, negate: bool, occupied_thresh: float, free_thresh: float, mode: str
+) -> npt.NDArray[np.int8]:
+    """map_io's values for (rows, cols, RGBA) pixels (the module docstring)."""
     rgb, alpha = pixels[..., :3].astype(float) / 255.0, pixels[..., 3].astype(float) / 255.0
-    height, width = rgb.shape[:2]
-    if width * resolution > MAX_EXTENT_M or height * resolution > MAX_EXTENT_M:
-        raise _fail(str(path), _key(key, "resolution"), f"{width} x {height} cells of {resolution:g} m exceed the {MAX_EXTENT_M:g} m a world spans")
-    opaque = alpha >= 1.0
     channels = [rgb[..., 0], rgb[..., 1], rgb[..., 2]]
     if mode == "trinary" and matte:
         channels.append(alpha)  # map_io averages opacity in, in trinary mode, for images with an alpha channel
@@ -124,10 +180,8 @@ def read_image(
         if mode == "scale":
             between = (occ >= free_thresh) & (occ <= occupied_thresh)
             cells[between] = np.rint((occ[between] - free_thresh) / (occupied_thresh - free_thresh) * 100.0).astype(np.int8)
-            cells[~opaque] = UNKNOWN
-    settings = {"resolution": resolution, "origin": [origin[0], origin[1], 0.0], "negate": int(negate)}
-    settings |= {"occupied_thresh": occupied_thresh, "free_thresh": free_thresh, "mode": mode}
-    return MapImage(cells, float(resolution), (float(origin[0]), float(origin[1])), str(path), settings)
+            cells[alpha < 1.0] = UNKNOWN
+    return cells
 
 
 def _key(prefix: str, name: str) -> str:
@@ -144,55 +198,110 @@ def check_settings(source: str, key: str, resolution: float, occupied_thresh: fl
         raise _fail(source, _key(key, "free_thresh"), f"needs 0 <= free_thresh < occupied_thresh <= 1, got {free_thresh:g} and {occupied_thresh:g}")
 
 
-def _pixels(path: Path, key: str) -> tuple[npt.NDArray[np.uint8], bool]:
-    """The image as (rows, cols, RGBA) bytes, and whether it has an alpha channel."""
+@contextmanager
+def open_image(data: BinaryIO, source: str, key: str) -> Iterator[Image.Image]:
+    """An image opened from its header only (nothing decoded yet), held to `MAX_CELLS` pixels:
+    WorldError in one line (`source: key: problem`, no key when it is "") for anything else, a
+    decompression bomb included (PIL refuses one of more than twice `Image.MAX_IMAGE_PIXELS`
+    before we see its size, and warns above that: we judge the size ourselves)."""
     from PIL import Image, UnidentifiedImageError
 
-    if path.suffix.lower() not in IMAGE_SUFFIXES:
-        raise _fail(str(path), key, f"is not a map image ({', '.join(IMAGE_SUFFIXES)})")
     try:
-        with Image.open(path) as img:
-            if img.width * img.height > MAX_CELLS:
-                raise _fail(str(path), key, f"has {img.width} x {img.height} pixels; at most {MAX_CELLS:,} cells")
-            matte = img.mode in ("RGBA", "LA", "PA", "RGBa", "La") or "transparency" in img.info
-            arr = np.asarray(img.convert("RGBA"))  # (8-bit images, as map_saver writes them)
-    except WorldError:
-        raise
-    except (OSError, UnidentifiedImageError, ValueError, Image.DecompressionBombError) as e:
-        raise _fail(str(path), key, f"cannot be read as an image: {one_line(str(e))}") from None
-    return arr, matte
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", Image.DecompressionBombWarning)  # (the size is ours to judge, just below)
+            img = Image.open(data, formats=IMAGE_FORMATS)
+    except Image.DecompressionBombError:
+        bomb = f"has more than {2 * (Image.MAX_IMAGE_PIXELS or 0):,} pixels (a decompression bomb?); at most {MAX_CELLS:,} cells"
+        raise _fail(source, key, bomb) from None
+    except (OSError, UnidentifiedImageError, ValueError) as e:
+        raise _fail(source, key, f"cannot be read as an image: {one_line(str(e))}") from None
+    with img:
+        if img.width * img.height > MAX_CELLS:
+            raise _fail(source, key, f"has {img.width} x {img.height} pixels; at most {MAX_CELLS:,} cells")
+        yield img
 
 
-def wall_boxes(image: MapImage) -> list[tuple[Point, ...]]:
+def wall_boxes(image: MapImage, limit: int = MAX_WALL_BOXES) -> list[tuple[Point, ...]]:
     """The blocked cells (occupied and unknown: HAVEN walks on free cells only) as few axis-aligned
     rectangles (counter-clockwise polygons in frame `map`) that cover exactly those cells, none
-    overlapping: greedy maximal rectangles, top row first, each a row's run of cells not yet
-    covered, grown downwards while the rows below are blocked and uncovered across its width.
-    A wall is one box, and a cell a scan left stuck to its face one more (not a split wall)."""
-    blocked = image.blocked
-    height, _ = blocked.shape
-    covered = np.zeros_like(blocked)
+    overlapping (`wall_rectangles`); WorldError in one line when they would be more than `limit`.
+
+    The limit, `MAX_WALL_BOXES` (10,000), is what the simulator holds at the speed a trial needs:
+    each box is four pymunk segments, four edges the scan casts against, a prism of the 3D scene
+    and a patch of the pictures. At 10,000 boxes (bench/map_walls.py) loading the world, building
+    its physics and scan, and drawing it each take about 2-3 s; a building's SLAM map makes far
+    fewer (the 20 m W1 map with ragged walls: 254), while a dithered or noise-filled image makes
+    millions (a 4,000 x 4,000 checkerboard: 8 million), refused after its first rows."""
+    height = image.cells.shape[0]
     res, (ox, oy) = image.resolution, image.origin
-    boxes: list[tuple[int, int, int, int]] = []  # top row, end row (exclusive), first col, end col
-    for r in range(height):
-        for c0, c1 in _runs(blocked[r] & ~covered[r]):
-            r1 = r + 1
-            while r1 < height and blocked[r1, c0:c1].all() and not covered[r1, c0:c1].any():
-                r1 += 1
-            covered[r:r1, c0:c1] = True
-            boxes.append((r, r1, c0, c1))
+    try:
+        boxes = wall_rectangles(image.blocked, limit)
+    except TooManyBoxes as e:
+        raise _fail(
+            image.source,
+            "",
+            f"its occupied and unknown cells make more than {limit:,} wall boxes (by row {e.rows} of {height}): too fragmented "
+            "to simulate (a dithered or noisy image? clean it, or save it at a coarser resolution)",
+        ) from None
 
     def corner(row_edge: int, col: int) -> Point:
         return (ox + col * res, oy + (height - row_edge) * res)
 
-    return [(corner(r1, c0), corner(r1, c1), corner(r0, c1), corner(r0, c0)) for r0, r1, c0, c1 in boxes]
+    return [(corner(r1, c0), corner(r1, c1), corner(r0, c1), corner(r0, c0)) for r0, r1, c0, c1 in boxes.tolist()]
 
 
-def _runs(row: BoolArray) -> list[tuple[int, int]]:
+class TooManyBoxes(Exception):
+    """More rectangles than the limit; `rows` rows were merged when it was reached."""
+
+    def __init__(self, rows: int) -> None:
+        super().__init__(rows)
+        self.rows = rows
+
+
+def wall_rectangles(blocked: BoolArray, limit: int = MAX_WALL_BOXES) -> IntArray:
+    """Greedy maximal rectangles, top row first: each row's run of blocked cells not yet covered
+    is grown downwards while the rows below are blocked across its width (a wall is one box, and
+    a cell a scan left stuck to its face one more, not a split wall). Rows of (top row, end row,
+    first col, end col), ordered by top row then column; `TooManyBoxes` past `limit`.
+
+    Linear in the cells: a box growing down is never stopped by another (one started above that
+    reached its rows would cover its top row too), so each row needs only the boxes still open
+    (whether the row is blocked across each: one prefix sum) and the runs they leave uncovered,
+    a few numpy passes over the row."""
+    height, width = blocked.shape
+    growing = np.zeros((0, 3), dtype=np.int64)  # top row, first col, end col of the boxes still growing
+    done: list[IntArray] = []
+    made = 0
+    repeats = np.concatenate(([False], (blocked[1:] == blocked[:-1]).all(axis=1), [False]))
+    for r in range(height + 1):
+        if repeats[r]:
+            continue  # the boxes open cover the row above, the same as this one: they all grow, none starts
+        row = blocked[r] if r < height else np.zeros(width, dtype=bool)
+        gaps = np.concatenate(([0], np.cumsum(~row, dtype=np.int64)))  # free cells before each column
+        grows = gaps[growing[:, 2]] == gaps[growing[:, 1]]
+        ended = growing[~grows]
+        done.append(np.column_stack((ended[:, 0], np.full(len(ended), r), ended[:, 1], ended[:, 2])))
+        growing = growing[grows]
+        if r == height:
+            break
+        edges = np.zeros(width + 1, dtype=np.int64)
+        edges[growing[:, 1]] += 1
+        edges[growing[:, 2]] -= 1
+        starts, ends = _run_edges(row & ~(np.cumsum(edges[:-1]) > 0))
+        made += len(starts)
+        if made > limit:
+            raise TooManyBoxes(r + 1)
+        growing = np.vstack((growing, np.column_stack((np.full(len(starts), r), starts, ends))))
+    boxes = np.vstack(done)
+    ordered: IntArray = boxes[np.lexsort((boxes[:, 2], boxes[:, 0]))]
+    return ordered
+
+
+def _run_edges(row: BoolArray) -> tuple[IntArray, IntArray]:
     """[start, end) column spans of the True runs in one row."""
     padded = np.concatenate(([False], row, [False])).astype(np.int8)
-    edges = np.flatnonzero(np.diff(padded))
-    return [(int(a), int(b)) for a, b in zip(edges[::2], edges[1::2], strict=True)]
+    edges = np.flatnonzero(np.diff(padded)).astype(np.int64)
+    return edges[::2], edges[1::2]
 
 
 def image_path(value: Any, base: Path, source: str, key: str) -> Path:

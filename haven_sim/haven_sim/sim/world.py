@@ -11,7 +11,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from haven_sim.common.geometry import FloatArray, Point, Pose2D, polygon_edges
+from haven_sim.common.geometry import FloatArray, Point, Pose2D, polygon_edges, polygons_edges
 
 if TYPE_CHECKING:
     from haven_sim.sim.map_image import MapImage
@@ -110,9 +110,7 @@ class World:
         """Edges (N, 4) of every solid shape; without obstructions when `obstructions` is False,
         without obstacles lower than `below` (see `solid_shapes`)."""
         shapes = self.solid_shapes(removed, below) if obstructions else [*self.walls, *self.obstacles_at(below)]
-        if not shapes:
-            return np.zeros((0, 4))
-        return np.vstack([s.edges() for s in shapes])
+        return polygons_edges([s.polygon for s in shapes])
 
     def bounds(self) -> tuple[float, float, float, float]:
         """xmin, ymin, xmax, ymax over every shape and named point."""

@@ -4,68 +4,21 @@
   obstacles, start poses, gems, rooms, hallways, the charging base) within a `MAX_EXTENT_M` square:
   the simulator and the planner rasterise the world's bounding box into an occupancy grid (0.05 m
   cells by default), which stays at most about 2,000 x 2,000 cells;
-- polygons simple: at most `MAX_POLYGON_VERTICES` points, no point repeating the one before it,
-  no two edges crossing or touching (except neighbours at their shared point);
+- polygons simple (`common.geometry.polygon_problem`, the rule a robot's footprint is held to too):
+  at most `MAX_POLYGON_VERTICES` points, no point repeating the one before it, no two edges
+  crossing or touching (except neighbours at their shared point);
 - the robot's and each person's whole body (a disc of their radius) clear of solid geometry at start.
 """
 
 from __future__ import annotations
 
 import numpy as np
-import numpy.typing as npt
 
-from haven_sim.common.geometry import FloatArray, Point
+from haven_sim.common.geometry import Point, polygons_edges
 from haven_sim.sim.world import Shape
 
-BoolArray = npt.NDArray[np.bool_]
 MAX_COORDINATE_M = 1000.0
 MAX_EXTENT_M = 100.0
-MAX_POLYGON_VERTICES = 500
-
-
-def polygon_problem(points: list[Point]) -> str | None:
-    """Why `points` (at most `MAX_POLYGON_VERTICES` of them) is not a simple polygon, or None."""
-    n = len(points)
-    a = np.asarray(points, dtype=float)
-    b = np.roll(a, -1, axis=0)
-    same = np.flatnonzero(np.all(a == b, axis=1))
-    if len(same):
-        i = int(same[0])
-        return f"point {(i + 1) % n} repeats point {i}"
-    d = b - a
-    turn = d[:, 0] * np.roll(d, -1, axis=0)[:, 1] - d[:, 1] * np.roll(d, -1, axis=0)[:, 0]
-    back = np.flatnonzero((turn == 0) & (np.einsum("ij,ij->i", d, np.roll(d, -1, axis=0)) < 0))
-    if len(back):
-        return f"folds back on itself at point {(int(back[0]) + 1) % n}"
-    first, second = np.triu_indices(n, 2)
-    keep = ~((first == 0) & (second == n - 1))  # the last edge and the first are neighbours
-    first, second = first[keep], second[keep]
-    hit = _segments_meet(a[first], b[first], a[second], b[second])
-    if hit.any():
-        e, f = (int(x[int(np.argmax(hit))]) for x in (first, second))
-        return f"is not simple: its edges from point {e} to {e + 1} and from point {f} to {(f + 1) % n} cross or touch"
-    return None
-
-
-def _cross(o: FloatArray, p: FloatArray, q: FloatArray) -> FloatArray:
-    result: FloatArray = (p[:, 0] - o[:, 0]) * (q[:, 1] - o[:, 1]) - (p[:, 1] - o[:, 1]) * (q[:, 0] - o[:, 0])
-    return result
-
-
-def _within(p: FloatArray, q: FloatArray, r: FloatArray) -> BoolArray:
-    """Whether r (collinear with p-q) lies on the segment p-q."""
-    lo, hi = np.minimum(p, q), np.maximum(p, q)
-    inside: BoolArray = np.all((lo <= r) & (r <= hi), axis=1)
-    return inside
-
-
-def _segments_meet(p1: FloatArray, q1: FloatArray, p2: FloatArray, q2: FloatArray) -> BoolArray:
-    o1, o2 = _cross(p1, q1, p2), _cross(p1, q1, q2)
-    o3, o4 = _cross(p2, q2, p1), _cross(p2, q2, q1)
-    proper = (o1 * o2 < 0) & (o3 * o4 < 0)
-    touch = (o1 == 0) & _within(p1, q1, p2) | (o2 == 0) & _within(p1, q1, q2) | (o3 == 0) & _within(p2, q2, p1) | (o4 == 0) & _within(p2, q2, q1)
-    meet: BoolArray = proper | touch
-    return meet
 
 
 def span_problem(items: list[tuple[str, list[Point]]]) -> tuple[str, str] | None:
@@ -87,7 +40,7 @@ def overlapping_shape(shapes: list[Shape], x: float, y: float, radius: float) ->
     if not shapes:
         return None
     counts = [len(s.polygon) for s in shapes]
-    e = np.vstack([s.edges() for s in shapes])
+    e = polygons_edges([s.polygon for s in shapes])
     owner = np.repeat(np.arange(len(shapes)), counts)
     x0, y0, x1, y1 = e[:, 0], e[:, 1], e[:, 2], e[:, 3]
     spans = (y < y0) != (y < y1)  # even-odd rule, as points_in_polygon

@@ -44,12 +44,12 @@ from typing import Annotated, Any, Literal
 import yaml
 
 from haven_sim.common.bodies import HUMAN_BODY
-from haven_sim.common.geometry import Point, Pose2D, polygon_area, segment_to_polygon
+from haven_sim.common.geometry import MAX_POLYGON_VERTICES, Point, Pose2D, polygon_area, polygon_problem, segment_to_polygon
 from haven_sim.common.schema import FileModel, Line, check, checked, listing
-from haven_sim.common.yaml_file import file_label, finite, read_yaml, short
+from haven_sim.common.yaml_file import file_label, finite, open_regular, read_yaml, short
 from haven_sim.robots.fields import DEFAULT
 from haven_sim.sim.map_file import load_map
-from haven_sim.sim.map_image import wall_boxes
+from haven_sim.sim.map_image import MAX_IMAGE_FILE_BYTES, wall_boxes
 from haven_sim.sim.world import (
     MAP_WALL_ID,
     ChargingBase,
@@ -62,7 +62,7 @@ from haven_sim.sim.world import (
     World,
     WorldError,
 )
-from haven_sim.sim.world_checks import MAX_COORDINATE_M, MAX_EXTENT_M, MAX_POLYGON_VERTICES, overlapping_shape, polygon_problem, span_problem
+from haven_sim.sim.world_checks import MAX_COORDINATE_M, MAX_EXTENT_M, overlapping_shape, span_problem
 
 _ID_RE = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,63}")
 MAX_NAME_CHARS = 64
@@ -85,7 +85,8 @@ def world_files(world: World, name: str) -> dict[str, bytes]:
         image = Path(world.map.source)
         image_name = f"{Path(name).stem}_map{image.suffix.lower()}"
         data["map"] = {"image": image_name, **world.map.settings}
-        files[image_name] = image.read_bytes()
+        with open_regular(image, "map image", MAX_IMAGE_FILE_BYTES) as f:  # (still a regular file, as when it was loaded)
+            files[image_name] = f.read()
     header = f"# {world.source} as run (its starts as the scenario gave them; its map image beside it)\n"
     return {name: (header + yaml.safe_dump(data, sort_keys=False)).encode(), **files}
 
@@ -105,6 +106,11 @@ def load_world(path: str | Path) -> World:
 def parse_world(data: Any, source: str = "<world>") -> World:
     if data is None:
         raise WorldError(f"{file_label(source)}: name: the world file is empty")
+    if isinstance(data, dict) and {"image", "resolution"} <= data.keys() and not data.keys() & WorldFile.model_fields.keys():
+        raise WorldError(
+            f"{file_label(source)}: this is a map_server map (image, resolution, origin), not a world: write a world file "
+            f"with `map: {Path(source).name}`, rooms and starts (docs/howto/own-building.md)"
+        )
     return _Parser(source).world(check(WorldFile, data, source, WorldError, "world file"))
 
 

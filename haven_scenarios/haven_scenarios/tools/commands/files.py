@@ -100,8 +100,8 @@ def describe(path: Path) -> str:
         except ValueError as e:
             raise ScenarioError(str(e)) from None
         return f"scenario {name}"
-    if isinstance(data, dict) and ("walls" in data or "map" in data):
-        return f"world {parse_world(data, str(path)).name}"
+    if isinstance(data, dict) and ("walls" in data or "map" in data or {"image", "resolution"} <= data.keys()):
+        return f"world {parse_world(data, str(path)).name}"  # (a map_server map's YAML: the world loader says how to make a world)
     if isinstance(data, dict) and ("kinematics" in data or "extends" in data):
         return f"robot {resolve_robot(str(path)).name}"
     if isinstance(data, dict) and data and all(isinstance(v, dict) and "ros__parameters" in v for v in data.values()):
