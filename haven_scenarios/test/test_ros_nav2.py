@@ -100,7 +100,8 @@ def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(r
     assert sim.wait(timeout=30) == 0 and tracebacks((tmp_path / "sim.log").read_text()) == []
 
 
-def test_ten_goals_on_a_busy_machine_end_within_the_goal_checkers_tolerances_in_the_bag(ros, tmp_path):
+@pytest.mark.parametrize("which", list(clients()))
+def test_ten_goals_on_a_busy_machine_end_within_the_goal_checkers_tolerances_in_the_bag(ros, which, tmp_path):
     """Four busy processes beside the suite on the free-running clock: every navigate_to_pose goal
     that ends SUCCEEDED has the robot within 0.1 m and 0.1 rad of it in the recorded /odom, read
     with rosbags, when `goal_reached` is said and until the next goal (no overshoot, no over-turn).
@@ -119,7 +120,7 @@ def test_ten_goals_on_a_busy_machine_end_within_the_goal_checkers_tolerances_in_
     sim = subprocess.Popen(argv, env=ros.env, start_new_session=True, stderr=log)
     ros.procs.append(sim)
     ros.wait_for_messages(ros.collect(PoseWithCovarianceStamped, "/amcl_pose", qos.LATCHED), timeout_s=120)
-    done = ros.run([sys.executable, str(DRIVE.parent / "goals.py"), "--ours"], timeout_s=600)
+    done = ros.run([sys.executable, str(DRIVE.parent / "goals.py"), *([which] if which else [])], timeout_s=600)
     steps = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
     assert done.returncode == 0 and [s["result"] for s in steps[1:]] == ["SUCCEEDED"] * len(GOALS), (steps, done.stderr[-2000:])
     os.killpg(sim.pid, signal.SIGINT)

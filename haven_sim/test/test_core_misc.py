@@ -76,6 +76,12 @@ def test_a_control_loop_that_falls_behind_slows_the_clock_without_a_burst_after(
     assert sim - before == pytest.approx(1.0, abs=0.15)
     run(6.0, None)  # silent for longer than silence_s: no longer held
     assert pace.allowed_steps(sim, step, wall) is None
+    # A starved controller ticks late, its timer skipping the ticks it missed: a long gap between
+    # two reports is not its period, and does not let the clock run further ahead.
+    late = ControlPace(lag_s=0.1)
+    for t, w in ((1.0, 0.0), (1.05, 0.05), (1.55, 0.6)):
+        late.report(t, w)
+    assert late.allowed_steps(1.55, step, 0.6) == 5
 
 
 def test_mux_priorities_and_timeouts():

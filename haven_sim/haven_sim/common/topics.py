@@ -35,9 +35,11 @@ WORLD_MARKERS = "haven/world_markers"
 CUE_STATE = "haven/cue_state"
 TRIAL_STATUS = "haven/trial_status"
 TRIAL_CONTROL = "haven/trial_control"
-# (rosgraph_msgs/Clock) the sim time the controller has acted at, after each of its ticks: on the
-# free-running clock the simulator holds time within reach of it (sim/pacer.ControlPace). Hidden
-# (a leading `_`): not recorded, not listed by `ros2 topic list` without --include-hidden-topics.
+# (rosgraph_msgs/Clock) the sim time the controller has acted at, after each of its ticks, to the
+# velocity mux, which passes it on to the simulator once it has passed on the commands before it:
+# on the free-running clock the simulator holds time within reach of it (sim/pacer.ControlPace).
+# Hidden (a leading `_`): not recorded, not listed by `ros2 topic list` without --include-hidden-topics.
+PACE_NAV = "haven/_pace_nav"
 PACE = "haven/_pace"
 
 

@@ -101,6 +101,7 @@ class VelocityMux:
 class MuxComponent:
     name = nodes.MUX.name
     unread: frozenset[str] = frozenset()
+    relays_pace = True  # on the free-running clock, passes the controller's pace on to the simulator (topics.PACE)
 
     def __init__(self, config: MuxConfig | None = None) -> None:
         self.config = config or MuxConfig()

@@ -169,10 +169,18 @@ class ComponentNode(Node):
             self._subs[topic] = self._subscribe(topic, spec, on_message)
         if component.period_s is not None:
             self.create_timer(component.period_s, lambda: self._tick_component(component))
-        # A loop that paces the free-running clock (the controller) says after each tick which sim
-        # time it has acted at; the simulator holds time within reach of it (sim/pacer.ControlPace).
-        pace = self._specs[topics.PACE] if getattr(component, "paces_clock", False) else None
-        self._pace = self.create_publisher(pace.msg_type, topics.PACE, pace.pub_qos) if pace is not None else None
+        # The loop that paces the free-running clock (the controller) says after each tick which sim
+        # time it has acted at; the velocity mux passes that on once it has passed on the commands
+        # that came before it (its readers are served in the order they were made: these last), and
+        # the simulator holds time within reach of it (sim/pacer.ControlPace).
+        self._pace: Publisher | None = None
+        if getattr(component, "paces_clock", False):  # the controller
+            said = self._specs[topics.PACE_NAV]
+            self._pace = self.create_publisher(said.msg_type, topics.PACE_NAV, said.pub_qos)
+        if getattr(component, "relays_pace", False):  # the velocity mux
+            heard, said = self._specs[topics.PACE_NAV], self._specs[topics.PACE]
+            relay = self.create_publisher(said.msg_type, topics.PACE, said.pub_qos)
+            self.create_subscription(heard.msg_type, topics.PACE_NAV, relay.publish, heard.sub_qos)
         self._warned: set[tuple[str, str]] = set()
         self.create_timer(2.0, self._check_types, clock=Clock(clock_type=ClockType.STEADY_TIME))
 
@@ -180,7 +188,7 @@ class ComponentNode(Node):
         now = self.now()
         self.publish(component.tick(now))
         if self._pace is not None:
-            self._pace.publish(self._specs[topics.PACE].encode(now, now))
+            self._pace.publish(self._specs[topics.PACE_NAV].encode(now, now))
 
     def _check_types(self) -> None:
         """A publisher of another type on a topic we read never matches (DDS drops it without a

@@ -76,6 +76,7 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
     f = frames
     table = {
         topics.CLOCK: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.STREAM, qos.CLOCK),
+        topics.PACE_NAV: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.LATEST, qos.LATEST),
         topics.PACE: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.LATEST, qos.LATEST),
         topics.MAP: TopicSpec(OccupancyGrid, lambda g, t: conv.occupancy_msg(t, g, f.map), conv.occupancy_from_msg, qos.LATCHED, qos.LATCHED),
         topics.ODOM: TopicSpec(Odometry, lambda s, t: conv.odometry_msg(t, s, f.odom, f.base), conv.odometry_from_msg, qos.STREAM, qos.LATEST),

@@ -92,8 +92,8 @@ class ControlPace:
     """How far simulated time may run ahead of a control loop (free-running clock only).
 
     The controller says after each of its ticks which sim time it has acted at (`report`); the
-    clock goes at most `lag_s` (and never less than two of its tick intervals, so it can always
-    tick again) beyond it. A loop that stays silent for `silence_s` of wall time (stopped, or left
+    clock goes at most `lag_s` (and never less than two of its periods, the shortest interval seen
+    between reports, so it can always tick again) beyond it. A loop that stays silent for `silence_s` of wall time (stopped, or left
     out with `--without`) holds nothing. `factor` is the real-time factor achieved over each
     REPORT_S of wall time in which the clock was held: the price of an exact trial on a busy
     machine, which the simulator reports."""
@@ -104,20 +104,20 @@ class ControlPace:
         self.lag_s, self.silence_s = lag_s, silence_s
         self.acted_at: float | None = None
         self._heard = -math.inf  # wall time of the last report
-        self._interval = 0.0  # between the last two reports (sim time)
+        self._interval = math.inf  # the shortest between two reports (sim time): the loop's own period
         self._window: tuple[float, float] | None = None  # (wall, sim) when the report window began
         self.held = False  # held in the current window
 
     def report(self, acted_at: float, wall_now: float) -> None:
-        if self.acted_at is not None and acted_at > self.acted_at:
-            self._interval = acted_at - self.acted_at
+        if self.acted_at is not None and acted_at > self.acted_at:  # (a late loop's gaps are longer: not its period)
+            self._interval = min(self._interval, acted_at - self.acted_at)
         self.acted_at, self._heard = acted_at, wall_now
 
     def allowed_steps(self, sim_now: float, step_s: float, wall_now: float) -> int | None:
         """Steps the clock may take now; None: not held."""
         if self.lag_s <= 0 or self.acted_at is None or wall_now - self._heard > self.silence_s:
             return None
-        ahead = self.acted_at + max(self.lag_s, 2.0 * self._interval) - sim_now
+        ahead = self.acted_at + max(self.lag_s, 2.0 * self._interval if math.isfinite(self._interval) else 0.0) - sim_now
         return max(0, int(ahead / step_s + 1e-9))
 
     def factor(self, sim_now: float, wall_now: float, held: bool) -> float | None:
