@@ -222,7 +222,12 @@ def test_a_burst_of_get_and_post_joins_from_one_client_without_cookies_takes_at_
         assert join(server.base, "bot0c")[0] == 303  # an id that has a place is not limited: it takes no new one
         assert get(f"{server.base}/session/p01/state?key={json.loads(book.read_text())['bot0c']['key']}")[0] == 200
         assert server.sessions() and len(server.sessions()) == 2
-        for code, _, head in [*answers, get(f"{server.base}/nothing"), get(server.console_url), get(f"{server.base}/static/haven.css")]:
+        put = urllib.request.Request(f"{server.base}/", data=b"x", method="PUT")  # (the standard library's own error page)
+        with pytest.raises(urllib.error.HTTPError) as unsupported:
+            urllib.request.urlopen(put, timeout=10)
+        assert unsupported.value.code == 501
+        more = [get(f"{server.base}/nothing"), get(server.console_url), get(f"{server.base}/static/haven.css"), (501, "", unsupported.value.headers)]
+        for code, _, head in [*answers, *more]:
             assert all(h in head for h in HEADERS), (code, head)
         assert "frame-ancestors 'none'" in head["Content-Security-Policy"] and head["Referrer-Policy"] == "no-referrer"
     finally:
@@ -273,3 +278,20 @@ def test_the_online_keys_files_are_checked_when_the_study_is_loaded(tmp_path):
     ):
         with pytest.raises(StudyError, match=says):
             load_study(study_file(tmp_path, STUDY.split("online:")[0] + f"online: {online}\nconsent: {{text: x}}\n"))
+
+
+def test_the_limit_counts_an_address_in_a_window_and_an_ipv6_network_as_one():
+    from haven_scenarios.study.online import JoinLimit, Online
+    from haven_scenarios.web.online_gate import Gate
+
+    gate = Gate(Online(join_limit=JoinLimit(places=2, minutes=1.0)))
+    for now in (0.0, 10.0):
+        assert gate.may_take("2001:db8:1:2::1", now)
+        gate.took("2001:db8:1:2::1", now)
+    assert not gate.may_take("2001:db8:1:2:ffff::9", 20.0)  # the same /64: the same household
+    assert gate.may_take("2001:db8:1:3::1", 20.0) and gate.may_take("192.0.2.7", 20.0)
+    assert gate.may_take("2001:db8:1:2::1", 60.0)  # the first has left the minute
+    gate.took("::ffff:192.0.2.7", 0.0)
+    gate.took("192.0.2.7", 0.0)
+    assert not gate.may_take("192.0.2.7", 1.0)  # IPv4-mapped is the same address
+    assert Gate(Online(join_limit=JoinLimit(places=0))).may_take("192.0.2.7", 0.0)

@@ -7,6 +7,7 @@
   browser that has one is taken back to it, whatever id it sends.
 - One network address takes at most `online.join_limit.places` new places (default 2) within
   `online.join_limit.minutes` (default 60); a returning id takes no new place and is never limited.
+  An IPv6 address counts as its /64 network (what one home or device is given, RFC 6177).
 - Signed links (`online.link_secret_file`): the panel appends `sig`, the HMAC-SHA256 of the id
   under the study's secret (hex; RFC 2104), and an id without the right one is refused.
 - An allow-list (`online.allowed_ids`): only the ids in that file may join.
@@ -16,6 +17,7 @@ from __future__ import annotations
 
 import hashlib
 import hmac
+import ipaddress
 from collections import deque
 from dataclasses import dataclass
 from http.server import BaseHTTPRequestHandler
@@ -26,6 +28,19 @@ SIG_PARAM = "sig"  # the signed link's query key: /?participant=ID&sig=HEX
 PLACE_COOKIE = "haven_place"  # a browser's place: "<participant>.<key>"
 PLACE_COOKIE_DAYS = 30  # a participant may come back within this (a study's field time)
 MAX_ADDRESSES = 100_000  # addresses remembered at once (the oldest forgotten first: memory stays bounded)
+
+
+def address_key(address: str) -> str:
+    """Whom the limit counts: an IPv4 address (also when written IPv4-mapped), or an IPv6 /64."""
+    try:
+        ip = ipaddress.ip_address(address)
+    except ValueError:
+        return address
+    if isinstance(ip, ipaddress.IPv6Address):
+        if ip.ipv4_mapped is not None:
+            return str(ip.ipv4_mapped)
+        return str(ipaddress.ip_network(f"{ip}/64", strict=False))
+    return str(ip)
 
 
 def link_signature(secret: bytes, panel_id: str) -> str:
@@ -75,7 +90,7 @@ class Gate:
         """Whether `address` may take one more new place now."""
         if self.places == 0:
             return True
-        times = self.taken.get(address)
+        times = self.taken.get(address_key(address))
         while times and now - times[0] >= self.window_s:
             times.popleft()
         return not times or len(times) < self.places
@@ -83,7 +98,7 @@ class Gate:
     def took(self, address: str, now: float) -> None:
         if self.places == 0:
             return
-        self.taken.setdefault(address, deque()).append(now)
+        self.taken.setdefault(address_key(address), deque()).append(now)
         if len(self.taken) > MAX_ADDRESSES:
             del self.taken[next(iter(self.taken))]
 
