@@ -260,6 +260,8 @@ def test_one_place_per_browser_signed_links_and_an_allow_list(tmp_path):
         assert again[0] == 303 and again[2]["Location"] == head["Location"]  # back to its own place
         assert "Welcome back" in get(f"{s.base}/", headers=cookie)[1]
         assert [seat.panel_id for seat in s.seats.all()] == ["ANNA"]
+        assert s.gate.rules() == "no limit per address; signed links only; 3 listed ids only"
+        assert s.join_url.endswith("/?participant=ID&sig=SIG")
         assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": "http://elsewhere.example"})[0] == 403
         assert join(s.base, "BEN", sig=sig["BEN"])[2]["Location"].startswith("/session/p02?key=")
     finally:
@@ -295,3 +297,4 @@ def test_the_limit_counts_an_address_in_a_window_and_an_ipv6_network_as_one():
     gate.took("192.0.2.7", 0.0)
     assert not gate.may_take("192.0.2.7", 1.0)  # IPv4-mapped is the same address
     assert Gate(Online(join_limit=JoinLimit(places=0))).may_take("192.0.2.7", 0.0)
+    assert gate.rules() == "2 new places per address in 1 min" and Gate(Online(join_limit=JoinLimit(places=0))).rules() == "no limit per address"

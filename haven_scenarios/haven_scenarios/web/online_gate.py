@@ -78,6 +78,11 @@ class Gate:
         self.places, self.window_s = online.join_limit.places, online.join_limit.minutes * 60.0
         self.taken: dict[str, deque[float]] = {}  # address -> when it took new places (oldest first)
 
+    def rules(self) -> str:
+        """The rules in a few words, for the researcher's terminal."""
+        limit = f"{self.places} new places per address in {self.window_s / 60:g} min" if self.places else "no limit per address"
+        return "; ".join([limit, *(["signed links only"] if self.secret else []), *([f"{len(self.ids)} listed ids only"] if self.ids else [])])
+
     def refusal(self, panel_id: str, sig: str) -> Refusal | None:
         """None if this id may join (a signed link checked, the allow-list), else why not."""
         if self.secret is not None and not hmac.compare_digest(sig.strip().lower().encode(), link_signature(self.secret, panel_id).encode()):
