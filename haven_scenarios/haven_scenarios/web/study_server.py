@@ -4,13 +4,13 @@ A participant opens the study's link with the id their panel appends (`/?partici
 the welcome and the consent text, and joins (a POST from that page's button: opening the link only
 shows it): they take the next participant of the design (web/online_seats.py), as far as the
 study's rules for joining allow (web/online_gate.py: one place per browser and a few per network
-address, signed links, an allow-list), and land on their session page, which takes them from page to page as their
-own `haven study run --web` (web/online_runner.py: its own processes and ROS domain) opens them:
-consent and questionnaires, each trial (they press Start themselves), the questionnaires after it,
-and at the end the study's completion code or redirect (study/online.py). At most `capacity`
-runners at once; who arrives beyond that waits on their session page, first come first served.
-A reload, a closed tab or a return later finds the same place: a trial that did not finish runs
-again. The researcher's list (`/console`, its own token) shows every session.
+address, signed links, an allow-list), and land on their session page, which takes them from page
+to page as their own `haven study run --web` (web/online_runner.py: its own processes and ROS
+domain) opens them: consent and questionnaires, each trial (they press Start themselves), the
+questionnaires after it, and at the end the study's completion code or redirect (study/online.py).
+At most `capacity` runners at once; who arrives beyond that waits on their session page, first come
+first served. A reload, a closed tab or a return later finds the same place: a trial that did not
+finish runs again. The researcher's list (`/console`, its own token) shows every session.
 """
 
 from __future__ import annotations
