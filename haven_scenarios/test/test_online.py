@@ -55,6 +55,9 @@ def test_panel_ids_take_the_designs_participants_in_order_and_keep_them(tmp_path
         with pytest.raises(ValueError, match="participant: must be"):
             seats.join(bad)
     assert json.loads((tmp_path / "s" / "online.json").read_text())["PANEL_A"]["participant"] == "p01"
+    (tmp_path / "s" / "online.json").chmod(0o644)  # as an earlier version left it: made private again on opening
+    Seats(tmp_path / "s", ["p01", "p02"])
+    assert stat.S_IMODE((tmp_path / "s" / "online.json").stat().st_mode) == 0o600
 
 
 def test_a_study_files_online_key_is_checked(tmp_path):
