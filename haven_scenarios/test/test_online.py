@@ -232,7 +232,7 @@ def test_a_burst_of_get_and_post_joins_from_one_client_without_cookies_takes_at_
         more = [get(f"{server.base}/nothing"), get(server.console_url), get(f"{server.base}/static/haven.css"), (501, "", unsupported.value.headers)]
         for code, _, head in [*answers, *more]:
             assert all(h in head for h in HEADERS), (code, head)
-        assert "frame-ancestors 'none'" in head["Content-Security-Policy"] and head["Referrer-Policy"] == "no-referrer"
+        assert "frame-ancestors 'none'" in head["Content-Security-Policy"] and head["Referrer-Policy"] == "same-origin"
     finally:
         server.stop()
 
@@ -266,6 +266,7 @@ def test_one_place_per_browser_signed_links_and_an_allow_list(tmp_path):
         assert s.gate.rules() == "no limit per address; signed links only; 3 listed ids only"
         assert s.join_url.endswith("/?participant=ID&sig=SIG")
         assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": "http://elsewhere.example"})[0] == 403
+        assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": "null"})[0] == 403
         assert join(s.base, "BEN", sig=sig["BEN"])[2]["Location"].startswith("/session/p02?key=")
     finally:
         s.httpd.shutdown()

@@ -79,7 +79,7 @@ def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_
             with urllib.request.urlopen(url, context=trusting, timeout=30) as r:
                 assert r.status == 200
                 assert "Secure" in r.headers["Set-Cookie"] and "HttpOnly" in r.headers["Set-Cookie"]
-                assert r.headers["X-Content-Type-Options"] == "nosniff" and r.headers["Referrer-Policy"] == "no-referrer"
+                assert r.headers["X-Content-Type-Options"] == "nosniff" and r.headers["Referrer-Policy"] == "same-origin"
                 assert "script-src 'self';" in r.headers["Content-Security-Policy"]  # (the editor has no inline script)
         with pytest.raises(urllib.error.URLError, match="CERTIFICATE_VERIFY_FAILED"):  # nobody else trusts it
             urllib.request.urlopen(server.url, context=ssl.create_default_context(), timeout=30)

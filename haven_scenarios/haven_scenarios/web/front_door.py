@@ -80,7 +80,7 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
 SWEEP_PERIOD_S = 1.0  # how often connections that skipped the door are looked for (and on their first request)
 MAX_ANSWER_HEAD = 16384  # a role server's answer to the upgrade: its headers within this
 TLS_HANDSHAKE = b"\x16"  # the first byte of every TLS connection (a handshake record, RFC 8446 5.1)
-PLAIN_HEADERS = b"Content-Security-Policy: default-src 'none'\r\nX-Content-Type-Options: nosniff\r\nReferrer-Policy: no-referrer\r\n"
+PLAIN_HEADERS = b"Content-Security-Policy: default-src 'none'\r\nX-Content-Type-Options: nosniff\r\nReferrer-Policy: same-origin\r\n"
 REQUEST_TIMEOUT_S = 10.0  # a request's headers must come within this (a client that sends them slowly is cut off)
 
 
@@ -145,13 +145,15 @@ def content_policy(h: BaseHTTPRequestHandler, body: bytes) -> str:
 
 def send_common_headers(h: BaseHTTPRequestHandler, body: bytes, cookie: str = "") -> None:
     """What every answer of every page server says beside its content: never cached (the pages carry
-    tokens), its Content-Security-Policy, no MIME sniffing, and no Referer to anywhere (addresses
-    carry tokens and session keys: a completion redirect must not hand them to the panel)."""
+    tokens), its Content-Security-Policy, no MIME sniffing, and no Referer to any other site or port
+    (addresses carry tokens and session keys: a completion redirect must not hand them to the panel).
+    (`same-origin`, not `no-referrer`: under no-referrer a browser sends `Origin: null` with a form's
+    POST, and the study server checks a join's Origin.)"""
     h.send_header("Content-Length", str(len(body)))
     h.send_header("Cache-Control", "no-store")
     h.send_header("Content-Security-Policy", content_policy(h, body))
     h.send_header("X-Content-Type-Options", "nosniff")
-    h.send_header("Referrer-Policy", "no-referrer")
+    h.send_header("Referrer-Policy", "same-origin")
     if cookie:
         h.send_header("Set-Cookie", cookie)
 
