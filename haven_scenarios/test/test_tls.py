@@ -52,6 +52,24 @@ def test_haven_cert_makes_the_authority_once_and_keeps_the_keys_private(certs: P
     assert "is neither a host name" in capsys.readouterr().err
 
 
+def test_haven_cert_refuses_a_symlinked_key_path_leaving_its_target_untouched(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    victim = tmp_path / "victim.txt"
+    victim.write_text("the researcher's notes\n")
+    victim.chmod(0o644)
+    for key in (CA_KEY, SERVER_KEY):  # a new authority's key, and the server key beside a kept authority
+        folder = tmp_path / key
+        if key == SERVER_KEY:
+            assert main(["cert", "--dir", str(folder)]) == 0
+        (folder / key).unlink(missing_ok=True)
+        folder.mkdir(exist_ok=True)
+        (folder / key).symlink_to(victim)
+        assert main(["cert", "--dir", str(folder)]) == 2
+        err = capsys.readouterr().err.strip()
+        assert err.count("\n") == 0 and f"{key} is a symbolic link: refusing to write a secret through it" in err, err
+        assert victim.read_text() == "the researcher's notes\n" and stat.S_IMODE(victim.stat().st_mode) == 0o644
+        assert (folder / key).is_symlink()
+
+
 def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_is_secure(certs: Path, tmp_path: Path) -> None:
     server = served(certs, tmp_path)
     try:
@@ -61,6 +79,8 @@ def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_
             with urllib.request.urlopen(url, context=trusting, timeout=30) as r:
                 assert r.status == 200
                 assert "Secure" in r.headers["Set-Cookie"] and "HttpOnly" in r.headers["Set-Cookie"]
+                assert r.headers["X-Content-Type-Options"] == "nosniff" and r.headers["Referrer-Policy"] == "same-origin"
+                assert "script-src 'self';" in r.headers["Content-Security-Policy"]  # (the editor has no inline script)
         with pytest.raises(urllib.error.URLError, match="CERTIFICATE_VERIFY_FAILED"):  # nobody else trusts it
             urllib.request.urlopen(server.url, context=ssl.create_default_context(), timeout=30)
         plain = server.url.replace("https://", "http://")

@@ -33,7 +33,7 @@ questionnaires:
     anchors: [Strongly disagree, Strongly agree]
     items:
       - {{id: side, text: "I could tell which way the robot would pass me."}}
-online: {{welcome: "A ten-second walk in a hallway with a robot.", completion_code: {CODE}}}
+online: {{welcome: "A ten-second walk in a hallway with a robot.", completion_code: {CODE}, join_limit: {{places: 4}}}}
 """
 
 
@@ -85,6 +85,9 @@ def test_three_panel_participants_at_once_each_end_with_the_completion_code(ros,
     join = serve.printed(r"serve: participants join at (\S+)")
     console = serve.printed(r"serve: researcher's list: (\S+)")
     pages = [browser.new_context(viewport={"width": 480, "height": 320}).new_page() for _ in range(4)]
+    refused = []  # what the pages' Content-Security-Policy blocked (Chromium says it on the console)
+    for page in pages:
+        page.on("console", lambda m: refused.append(m.text) if "Content Security Policy" in m.text else None)
 
     for k, page in enumerate(pages[:3]):  # the panel's link, with each one's id
         page.goto(join.replace("=ID", f"=PANEL{k}"), timeout=PAGE_LOAD_MS)
@@ -116,6 +119,7 @@ def test_three_panel_participants_at_once_each_end_with_the_completion_code(ros,
     pages[0].goto(join.replace("=ID", "=PANEL0"), timeout=PAGE_LOAD_MS)
     pages[0].click("#join")
     pages[0].wait_for_url(trial_url, timeout=PAGE_TIMEOUT_MS)
+    assert len(sessions(console)) == 4  # (their browser's cookie: no second place)
 
     for page in pages[:3]:  # the trial times out: the questionnaire, then the completion code
         page.wait_for_function("havenState.questionnaire === 'legibility'", timeout=PAGE_TIMEOUT_MS)
@@ -136,5 +140,6 @@ def test_three_panel_participants_at_once_each_end_with_the_completion_code(ros,
         assert json.loads(next((tmp_path / "s" / p).rglob("questionnaires.json")).read_text())["h1"]["legibility"]["answers"] == {"side": 5}
         assert json.loads((tmp_path / "s" / p / "instruments.json").read_text())["consent"]["agreed"] is True
 
+    assert refused == []  # every page, its bundle and its WebSocket within the policy
     serve.proc.send_signal(signal.SIGINT)  # stops the fourth's runner too
     assert serve.proc.wait(60) == 0, "".join(serve.lines)[-3000:]

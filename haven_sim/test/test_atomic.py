@@ -37,3 +37,33 @@ def test_the_file_appears_only_when_the_block_ends(tmp_path):
         tmp.write_bytes(b"abc")
         assert not target.exists()
     assert target.read_bytes() == b"abc" and not tmp.exists()
+
+
+def test_a_secret_is_0600_from_its_first_byte_and_never_written_through_a_link(tmp_path, monkeypatch):
+    import os
+    import stat
+
+    import pytest
+
+    old = os.umask(0o000)
+    try:
+        seen = []
+        real_fsync = os.fsync
+        monkeypatch.setattr(os, "fsync", lambda fd: (seen.append(stat.S_IMODE(os.fstat(fd).st_mode)), real_fsync(fd)))
+        atomic.write_secret(tmp_path / "key.pem", b"one")
+        atomic.write_secret(tmp_path / "key.pem", b"two")  # over an existing one
+    finally:
+        os.umask(old)
+    assert seen == [0o600, 0o600] and stat.S_IMODE((tmp_path / "key.pem").stat().st_mode) == 0o600
+    assert (tmp_path / "key.pem").read_bytes() == b"two"
+    victim = tmp_path / "victim.txt"
+    victim.write_text("notes")
+    (tmp_path / "link.pem").symlink_to(victim)
+    with pytest.raises(atomic.SymlinkRefused, match="link.pem is a symbolic link: refusing"):
+        atomic.write_secret(tmp_path / "link.pem", b"secret")
+    with pytest.raises(atomic.SymlinkRefused):
+        atomic.open_secret_log(tmp_path / "link.pem")
+    assert victim.read_text() == "notes" and (tmp_path / "link.pem").is_symlink()
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["key.pem", "link.pem", "victim.txt"]  # no temporary file left
+    os.close(atomic.open_secret_log(tmp_path / "online.log"))
+    assert stat.S_IMODE((tmp_path / "online.log").stat().st_mode) == 0o600

@@ -40,7 +40,7 @@ from pydantic import Field
 from haven_scenarios.record.session import check_name
 from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference, read_consent
-from haven_scenarios.study.online import Online
+from haven_scenarios.study.online import Online, resolved
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_scenarios.study.study_robots import StudyRobot, parse_robots
@@ -281,7 +281,7 @@ class _StudyParser:
             after_study=self.instruments(f.after_study, "after_study", (PREFERENCE,)),
             robots=parse_robots(f.robots, self.source, StudyError),
             robot_design=f.robot_design,
-            online=f.online or Online(),
+            online=resolved(f.online, self.source, StudyError),
         )
 
     def scenario(self, value: Any, key: str) -> StudyScenario:

@@ -10,8 +10,11 @@ and each role's server knows who its clients are (a participant's can publish on
 
 from __future__ import annotations
 
+import base64
+import hashlib
 import json
 import mimetypes
+import re
 import selectors
 import socket
 import ssl
@@ -77,6 +80,7 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
 SWEEP_PERIOD_S = 1.0  # how often connections that skipped the door are looked for (and on their first request)
 MAX_ANSWER_HEAD = 16384  # a role server's answer to the upgrade: its headers within this
 TLS_HANDSHAKE = b"\x16"  # the first byte of every TLS connection (a handshake record, RFC 8446 5.1)
+PLAIN_HEADERS = b"Content-Security-Policy: default-src 'none'\r\nX-Content-Type-Options: nosniff\r\nReferrer-Policy: same-origin\r\n"
 REQUEST_TIMEOUT_S = 10.0  # a request's headers must come within this (a client that sends them slowly is cut off)
 
 
@@ -104,7 +108,7 @@ class _Server(ThreadingHTTPServer):
             request.settimeout(REQUEST_TIMEOUT_S)
             if request.recv(1, socket.MSG_PEEK)[:1] not in (TLS_HANDSHAKE, b""):
                 body = b"this address is served over HTTPS: open it with https://"
-                request.sendall(b"HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n")
+                request.sendall(b"HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n" + PLAIN_HEADERS)
                 request.sendall(b"Content-Length: %d\r\n\r\n%s" % (len(body), body))
                 return
             with self.tls.wrap_socket(request, server_side=True) as secure:  # (the handshake, under the timeout)
@@ -121,16 +125,54 @@ class _Server(ThreadingHTTPServer):
             print(f"web: a request from {client_address[0]} failed: {type(e).__name__}: {str(e)[:120]}", file=sys.stderr, flush=True)
 
 
-def reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = "") -> None:
-    """One whole HTTP answer, never cached (the pages carry tokens)."""
-    h.send_response(code)
-    h.send_header("Content-Type", kind)
+INLINE_SCRIPT = re.compile(rb"<script>(.*?)</script>", re.S)  # (a page's own code: `<script src>` and JSON data blocks are not it)
+_HOST = re.compile(r"^[A-Za-z0-9.:\[\]-]{1,300}$")
+
+
+def content_policy(h: BaseHTTPRequestHandler, body: bytes) -> str:
+    """The Content-Security-Policy of every answer: scripts, styles and fonts from this server only
+    (a page's own inline code by its hash), its WebSocket on the same host (named too, for browsers
+    before CSP 3's 'self' for ws:), images and glTF buffers also as data: and blob: URLs (three.js
+    decodes a model's textures that way), no plugins, no <base>, never inside another site's frame."""
+    hashes = "".join(f" 'sha256-{base64.b64encode(hashlib.sha256(m).digest()).decode()}'" for m in INLINE_SCRIPT.findall(body))
+    host = h.headers.get("Host") or ""
+    sockets = f" ws://{host} wss://{host}" if _HOST.match(host) else ""
+    return (
+        f"default-src 'self'; script-src 'self'{hashes}; style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:; "
+        f"connect-src 'self'{sockets} data: blob:; object-src 'none'; base-uri 'none'; form-action 'self'; frame-ancestors 'none'"
+    )
+
+
+def send_common_headers(h: BaseHTTPRequestHandler, body: bytes, cookie: str = "") -> None:
+    """What every answer of every page server says beside its content: never cached (the pages carry
+    tokens), its Content-Security-Policy, no MIME sniffing, and no Referer to any other site or port
+    (addresses carry tokens and session keys: a completion redirect must not hand them to the panel).
+    (`same-origin`, not `no-referrer`: under no-referrer a browser sends `Origin: null` with a form's
+    POST, and the study server checks a join's Origin.)"""
     h.send_header("Content-Length", str(len(body)))
     h.send_header("Cache-Control", "no-store")
+    h.send_header("Content-Security-Policy", content_policy(h, body))
+    h.send_header("X-Content-Type-Options", "nosniff")
+    h.send_header("Referrer-Policy", "same-origin")
     if cookie:
         h.send_header("Set-Cookie", cookie)
+
+
+def reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = "") -> None:
+    """One whole HTTP answer (send_common_headers)."""
+    h.send_response(code)
+    h.send_header("Content-Type", kind)
+    send_common_headers(h, body, cookie)
     h.end_headers()
     h.wfile.write(body)
+
+
+def redirect(h: BaseHTTPRequestHandler, location: str, cookie: str = "") -> None:
+    """303 See Other to `location` on this server (after a form's POST: a reload does not post again)."""
+    h.send_response(303)
+    h.send_header("Location", location)
+    send_common_headers(h, b"", cookie)
+    h.end_headers()
 
 
 def token_cookie(h: BaseHTTPRequestHandler, name: str, token: str) -> str:
@@ -155,19 +197,30 @@ def read_body(h: BaseHTTPRequestHandler, limit: int, what: str) -> bytes:
     return h.rfile.read(length)
 
 
+class QuietHandler(BaseHTTPRequestHandler):
+    """Every page server's request handler: nothing logged (the researcher's terminal stays quiet),
+    and the standard library's own error answers (a bad request line, a method not served) carry
+    the same headers as every page (send_common_headers)."""
+
+    server_version = "haven"
+    timeout = REQUEST_TIMEOUT_S
+
+    def log_message(self, format: str, *args: Any) -> None:
+        pass
+
+    def send_error(self, code: int, message: str | None = None, explain: str | None = None) -> None:
+        self.close_connection = True
+        text = message or self.responses.get(code, ("error",))[0]
+        reply(self, code, text.encode("latin-1", "replace") if code >= 200 and code not in (204, 304) else b"")
+
+
 def quiet_handler(
     on_get: Callable[[BaseHTTPRequestHandler], None], on_post: Callable[[BaseHTTPRequestHandler], None]
 ) -> type[BaseHTTPRequestHandler]:
     """A request handler class for a standalone page server (the instruments, the editor): GET and
     POST passed on, nothing logged (the researcher's terminal stays quiet)."""
 
-    class Handler(BaseHTTPRequestHandler):
-        server_version = "haven"
-        timeout = REQUEST_TIMEOUT_S
-
-        def log_message(self, format: str, *args: Any) -> None:
-            pass
-
+    class Handler(QuietHandler):
         def do_GET(self) -> None:
             on_get(self)
 
@@ -206,12 +259,8 @@ class FrontDoor:
         self.backends, self.config = dict(backends), config
         door = self
 
-        class Handler(BaseHTTPRequestHandler):
-            server_version = "haven"
+        class Handler(QuietHandler):
             timeout = request_timeout_s
-
-            def log_message(self, format: str, *args: Any) -> None:  # a study's terminal stays quiet
-                pass
 
             def do_GET(self) -> None:
                 door.handle(self)

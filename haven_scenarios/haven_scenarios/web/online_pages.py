@@ -25,9 +25,10 @@ def _page(title: str, body: str, script: str = "") -> bytes:
     ).encode()
 
 
-def landing(study: Study, panel_id: str, id_param: str, returning: bool = False) -> bytes:
-    """The study's welcome, its consent text to read, and the way in (the panel's id, or a field);
-    for a participant who has joined before, the way back to where they were."""
+def landing(study: Study, panel_id: str, id_param: str, returning: bool = False, sig: str = "") -> bytes:
+    """The study's welcome, its consent text to read, and the way in (a form that POSTs the panel's
+    id and its link's signature, or a field for the id); for a participant who has joined before,
+    the way back to where they were."""
     welcome = f"<p class=welcome>{escape(study.online.welcome)}</p>" if study.online.welcome else ""
     consent = f"<h2>Consent</h2><div class=consent>{escape(study.consent_text)}</div>" if study.consent_text else ""
     field = (
@@ -36,7 +37,8 @@ def landing(study: Study, panel_id: str, id_param: str, returning: bool = False)
         else f'<label>Your participant id <input name="{escape(id_param)}" required autocomplete=off></label>'
     )
     button = "Continue where you left off" if returning else "Start the study"
-    form = f'<form action="/join" method=get>{field}<button type=submit id=join>{button}</button></form>'
+    signed = f'<input type=hidden name=sig value="{escape(sig)}">' if sig else ""
+    form = f'<form action="/join" method=post>{field}{signed}<button type=submit id=join>{button}</button></form>'
     if returning:
         return _page(f"Study {study.name}", f"<h1>Welcome back</h1><p>You have joined this study before.</p>{form}")
     note = "<p class=small>You will be asked for your consent before anything is recorded.</p>" if study.consent_text else ""

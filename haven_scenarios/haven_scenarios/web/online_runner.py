@@ -4,8 +4,9 @@ own process group, whose printed page addresses say where the participant goes n
 The runner prints each page's address as it opens it (the consent and questionnaires before the
 first trial, each trial's participant page and researcher console, the questionnaires after the
 last: tools/commands/study_run.py); its output also goes to `online.log` in the participant's
-folder, for the researcher. A page the participant has finished (their browser came back from it)
-is never handed out again, though its server may linger for a moment.
+folder, for the researcher (readable by its owner only: the addresses in it carry tokens). A page
+the participant has finished (their browser came back from it) is never handed out again, though
+its server may linger for a moment.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from pathlib import Path
 from urllib.parse import parse_qs, urlsplit
 
 from haven_scenarios.web.access import TOKEN_PARAM
+from haven_sim.common.atomic import open_secret_log
 from haven_sim.runtime.process import die_with_parent
 
 PAGE_LINE = re.compile(r"web: participant (\S+)(?: \([^)]*\))?: (\S+)$")
@@ -47,7 +49,7 @@ class Runner:
         self.last = ""  # its last line of output (why it ended, when it fails)
         self._lock = threading.Lock()
         folder.mkdir(parents=True, exist_ok=True)
-        self.log = (folder / LOG).open("a", buffering=1)
+        self.log = os.fdopen(open_secret_log(folder / LOG), "a", buffering=1)  # (its page addresses carry tokens: 0600)
         self.proc = subprocess.Popen(
             list(argv),
             env=dict(env),

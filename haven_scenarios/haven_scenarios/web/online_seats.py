@@ -6,13 +6,13 @@ decides who of them takes which order) and keep it: a reload, a return the next 
 another server on the same study folder finds the same place. The book is `online.json` in the
 study's folder, each change made under an OS lock (tools/locks.py), so servers that share the
 folder never hand out one place twice. A key per place (in the participant's session address) keeps
-others out of it.
+others out of it: the book holds every key, so it is readable by its owner only (0600, written whole,
+never through a symbolic link: haven_sim/common/atomic.py).
 """
 
 from __future__ import annotations
 
 import json
-import os
 import secrets
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass
@@ -26,6 +26,7 @@ from haven_scenarios.study.progress import progress
 from haven_scenarios.study.protocol import Study
 from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.locks import FileLock
+from haven_sim.common.atomic import write_secret
 
 BOOK, BOOK_LOCK = "online.json", ".online.lock"  # in the study's folder
 
@@ -64,6 +65,9 @@ class Seats:
     def __init__(self, root: Path, participants: Sequence[str]) -> None:
         self.root, self.participants = root, tuple(participants)
         root.mkdir(parents=True, exist_ok=True)
+        book = root / BOOK
+        if book.is_file() and not book.is_symlink() and book.stat().st_mode & 0o077:  # (a book an earlier version left readable)
+            book.chmod(0o600)
 
     def _read(self) -> dict[str, Seat]:
         try:
@@ -73,9 +77,8 @@ class Seats:
         return {pid: Seat(**s) for pid, s in data.items()}
 
     def _write(self, seats: dict[str, Seat]) -> None:
-        tmp = self.root / f".{BOOK}.{os.getpid()}"
-        tmp.write_text(json.dumps({pid: asdict(s) for pid, s in seats.items()}, indent=1) + "\n")
-        os.replace(tmp, self.root / BOOK)  # (whole or not at all: a reader never sees half a book)
+        text = json.dumps({pid: asdict(s) for pid, s in seats.items()}, indent=1) + "\n"
+        write_secret(self.root / BOOK, text.encode())  # (whole or not at all: a reader never sees half a book)
 
     def join(self, panel_id: str) -> Seat:
         """Their place: the one they had, else the next free participant of the design. ValueError

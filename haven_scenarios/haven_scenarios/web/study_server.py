@@ -1,14 +1,16 @@
 """`haven serve`: one server that runs a study for remote participants.
 
 A participant opens the study's link with the id their panel appends (`/?participant=ID`), reads
-the welcome and the consent text, and joins: they take the next participant of the design
-(web/online_seats.py) and land on their session page, which takes them from page to page as their
-own `haven study run --web` (web/online_runner.py: its own processes and ROS domain) opens them:
-consent and questionnaires, each trial (they press Start themselves), the questionnaires after it,
-and at the end the study's completion code or redirect (study/online.py). At most `capacity`
-runners at once; who arrives beyond that waits on their session page, first come first served.
-A reload, a closed tab or a return later finds the same place: a trial that did not finish runs
-again. The researcher's list (`/console`, its own token) shows every session.
+the welcome and the consent text, and joins (a POST from that page's button: opening the link only
+shows it): they take the next participant of the design (web/online_seats.py), as far as the
+study's rules for joining allow (web/online_gate.py: one place per browser and a few per network
+address, signed links, an allow-list), and land on their session page, which takes them from page
+to page as their own `haven study run --web` (web/online_runner.py: its own processes and ROS
+domain) opens them: consent and questionnaires, each trial (they press Start themselves), the
+questionnaires after it, and at the end the study's completion code or redirect (study/online.py).
+At most `capacity` runners at once; who arrives beyond that waits on their session page, first come
+first served. A reload, a closed tab or a return later finds the same place: a trial that did not
+finish runs again. The researcher's list (`/console`, its own token) shows every session.
 """
 
 from __future__ import annotations
@@ -29,7 +31,8 @@ from haven_scenarios.study.protocol import Study
 from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.web import online_pages as pages
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
-from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, reply, reply_json, token_cookie
+from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, redirect, reply, reply_json, token_cookie
+from haven_scenarios.web.online_gate import SIG_PARAM, TOO_MANY, Gate, Refusal, cookie_place, place_cookie, same_origin
 from haven_scenarios.web.online_runner import LOG, Runner
 from haven_scenarios.web.online_seats import LIVE, Full, Seat, Seats, Standing, standing
 from haven_scenarios.web.presence import OnDisconnect
@@ -39,6 +42,8 @@ MAX_STARTS = 5  # a participant's runner starts again this often at most (their 
 GONE_S = 15.0  # a waiting participant whose page has not asked for this long has left the queue
 TICK_S = 0.5
 CONSOLE_COOKIE = "haven_serve_console"
+MAX_JOIN_BODY = 4096  # a join's form: the panel id and its signature
+HTML = "text/html; charset=utf-8"
 
 
 @dataclass(frozen=True)
@@ -65,6 +70,8 @@ class StudyServer:
 
         self.o, self.study, self.trials = options, study, list(trials)
         self.seats = Seats(options.root, study.participants)
+        self.gate = Gate(study.online)
+        self._joining = threading.Lock()  # (a new place and its count per address: one join at a time)
         self.runners: dict[str, Runner] = {}
         self.ports: dict[str, int] = {}  # each runner's port (0: any free one)
         self.starts: Counter[str] = Counter()
@@ -74,7 +81,7 @@ class StudyServer:
         self._stopping = threading.Event()
         tls = server_context(*options.tls) if options.tls else None
         try:
-            self.httpd = _Server((options.host, options.port), quiet_handler(self.get, lambda h: reply(h, 405, b"nothing here takes a POST")), tls)
+            self.httpd = _Server((options.host, options.port), quiet_handler(self.get, self.post), tls)
         except OSError as e:
             raise ValueError(f"cannot serve on {options.host}:{options.port}: {e.strerror}") from None
         self.threads = [
@@ -88,7 +95,8 @@ class StudyServer:
 
     @property
     def join_url(self) -> str:
-        return f"{self.base}/?{self.o.id_param}=ID"
+        signed = f"&{SIG_PARAM}=SIG" if self.gate.secret is not None else ""  # (SIG: the id's signature, web/online_gate.py)
+        return f"{self.base}/?{self.o.id_param}=ID{signed}"
 
     @property
     def console_url(self) -> str:
@@ -215,8 +223,8 @@ class StudyServer:
     def get(self, h: BaseHTTPRequestHandler) -> None:
         url = urlsplit(h.path)
         parts, query = [p for p in url.path.split("/") if p], {k: v[0] for k, v in parse_qs(url.query).items()}
-        if parts in ([], ["join"]):
-            return self._join(h, query.get(self.o.id_param, "").strip(), bool(parts))
+        if parts in ([], ["join"]):  # (a GET only shows the way in: a link preview takes no place)
+            return self._landing(h, query.get(self.o.id_param, "").strip(), query.get(SIG_PARAM, ""))
         if parts == ["static", "haven.css"]:
             return reply(h, 200, (STATIC / "haven.css").read_bytes(), "text/css")
         if parts and parts[0] == "console":
@@ -238,22 +246,56 @@ class StudyServer:
             return reply(h, 204, b"")
         return reply(h, 404, b"no such page")
 
-    def _join(self, h: BaseHTTPRequestHandler, panel_id: str, join: bool) -> None:
-        html = "text/html; charset=utf-8"
-        if not join:
-            returning = bool(panel_id) and self.seats.by_panel_id(panel_id) is not None
-            return reply(h, 200, pages.landing(self.study, panel_id, self.o.id_param, returning), html)
+    def post(self, h: BaseHTTPRequestHandler) -> None:
+        """A join: the landing page's form (the panel id and any signature), from this server's page."""
+        if [p for p in urlsplit(h.path).path.split("/") if p] != ["join"]:
+            return reply(h, 404, b"no such page")
+        if not same_origin(h):
+            return reply(h, 403, b"a join comes from the study's own page")
         try:
-            seat = self.seats.join(panel_id)
+            form = {k: v[0] for k, v in parse_qs(read_body(h, MAX_JOIN_BODY, "a join").decode("latin-1")).items()}
         except ValueError as e:
-            return reply(h, 400, pages.message("Cannot join", str(e).replace("participant: ", "Your participant id ")), html)
-        except Full:
-            return reply(h, 200, pages.message("The study is full", "Every place in this study has been taken. Thank you for your interest."), html)
-        h.send_response(303)
-        h.send_header("Location", f"/session/{seat.participant}?key={quote(seat.key)}")
-        h.send_header("Content-Length", "0")
-        h.send_header("Cache-Control", "no-store")
-        h.end_headers()
+            return reply(h, 400, str(e).encode())
+        self._join(h, form.get(self.o.id_param, "").strip(), form.get(SIG_PARAM, ""))
+
+    def _mine(self, h: BaseHTTPRequestHandler) -> Seat | None:
+        """The place this browser took (its cookie), if any."""
+        participant, key = cookie_place(h)
+        seat = self.seats.by_participant(participant) if participant else None
+        return seat if seat is not None and token_ok(key, seat.key) else None
+
+    def _landing(self, h: BaseHTTPRequestHandler, panel_id: str, sig: str) -> None:
+        mine = self._mine(h)
+        if mine is None and (panel_id or self.gate.secret is not None):  # (a typed id cannot be signed)
+            refused = self.gate.refusal(panel_id, sig)
+            if refused is not None:
+                return reply(h, refused.code, pages.message(refused.title, refused.text), HTML)
+        returning = mine is not None or (bool(panel_id) and self.seats.by_panel_id(panel_id) is not None)
+        return reply(h, 200, pages.landing(self.study, panel_id, self.o.id_param, returning, sig), HTML)
+
+    def _join(self, h: BaseHTTPRequestHandler, panel_id: str, sig: str) -> None:
+        seat = self._mine(h)  # (one place per browser: whatever id it sends now)
+        outcome = seat or self.gate.refusal(panel_id, sig) or self._take(panel_id, h.client_address[0])
+        if isinstance(outcome, Refusal):
+            return reply(h, outcome.code, pages.message(outcome.title, outcome.text), HTML)
+        redirect(h, f"/session/{outcome.participant}?key={quote(outcome.key)}", place_cookie(h, outcome.participant, outcome.key))
+
+    def _take(self, panel_id: str, address: str) -> Seat | Refusal:
+        """This id's place (the one it had, else a new one if `address` may take one more)."""
+        now = time.monotonic()
+        with self._joining:
+            new = self.seats.by_panel_id(panel_id) is None
+            if new and not self.gate.may_take(address, now):
+                return TOO_MANY
+            try:
+                seat = self.seats.join(panel_id)
+            except ValueError as e:
+                return Refusal(400, "Cannot join", str(e).replace("participant: ", "Your participant id "))
+            except Full:
+                return Refusal(200, "The study is full", "Every place in this study has been taken. Thank you for your interest.")
+            if new:
+                self.gate.took(address, now)
+            return seat
 
     def _console(self, h: BaseHTTPRequestHandler, parts: list[str]) -> None:
         given = token_of(h.path, None, "") or _cookie(h, CONSOLE_COOKIE)

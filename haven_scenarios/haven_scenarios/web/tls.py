@@ -28,6 +28,8 @@ from cryptography.hazmat.primitives import hashes, serialization
 from cryptography.hazmat.primitives.asymmetric import ec
 from cryptography.x509.oid import ExtendedKeyUsageOID, NameOID
 
+from haven_sim.common.atomic import refuse_link, write_secret
+
 CA_CERT, CA_KEY = "haven-ca.pem", "haven-ca-key.pem"
 SERVER_CERT, SERVER_KEY = "haven-server.pem", "haven-server-key.pem"  # (made again each time: the names may have changed)
 CA_DAYS = 3650  # the lab's authority: ten years (a headset trusts it once)
@@ -101,7 +103,9 @@ class Made:
 
 def make_certificates(folder: Path, names: Sequence[str], now: datetime.datetime | None = None) -> Made:
     """In `folder`: the authority (made once; kept if there) and a certificate for `names` (host
-    names or IP addresses) signed by it, with its key. Keys are written readable by their owner only."""
+        names or IP addresses) signed by it, with its key. Keys are written readable by their owner
+    only (haven_sim/common/atomic.py: write_secret); a symbolic link in place of any of the four
+    files is refused (OSError, one line) before anything is written, its target untouched."""
     from cryptography import x509
     from cryptography.hazmat.primitives import serialization
     from cryptography.hazmat.primitives.asymmetric import ec
@@ -112,6 +116,8 @@ def make_certificates(folder: Path, names: Sequence[str], now: datetime.datetime
     if bad:
         raise ValueError(f"haven cert: --name {bad[0]!r} is neither a host name (letters, digits, '-', dots) nor an IP address")
     folder.mkdir(parents=True, exist_ok=True)
+    for name in (CA_CERT, CA_KEY, SERVER_CERT, SERVER_KEY):  # (before anything is made: a link's target is never written)
+        refuse_link(folder / name)
     now = now or datetime.datetime.now(datetime.timezone.utc)
     ca_cert_path, ca_key_path = folder / CA_CERT, folder / CA_KEY
     new_ca = not (ca_cert_path.is_file() and ca_key_path.is_file())
@@ -119,7 +125,7 @@ def make_certificates(folder: Path, names: Sequence[str], now: datetime.datetime
         ca_key = ec.generate_private_key(ec.SECP256R1())
         ca_cert = _authority(ca_key, now)
         _write_key(ca_key_path, ca_key)
-        ca_cert_path.write_bytes(ca_cert.public_bytes(serialization.Encoding.PEM))
+        write_secret(ca_cert_path, ca_cert.public_bytes(serialization.Encoding.PEM), mode=0o644)
     else:
         try:
             loaded = serialization.load_pem_private_key(ca_key_path.read_bytes(), password=None)
@@ -133,9 +139,8 @@ def make_certificates(folder: Path, names: Sequence[str], now: datetime.datetime
     cert = _server(key, ca_key, ca_cert, names, now)
     cert_path, key_path = folder / SERVER_CERT, folder / SERVER_KEY
     _write_key(key_path, key)
-    cert_path.write_bytes(
-        cert.public_bytes(serialization.Encoding.PEM) + ca_cert.public_bytes(serialization.Encoding.PEM)
-    )  # the chain: a client that has the authority checks it either way
+    chain = cert.public_bytes(serialization.Encoding.PEM) + ca_cert.public_bytes(serialization.Encoding.PEM)
+    write_secret(cert_path, chain, mode=0o644)  # the chain: a client that has the authority checks it either way
     return Made(ca_cert_path, cert_path, key_path, new_ca)
 
 
@@ -197,11 +202,7 @@ def _server(
 
 
 def _write_key(path: Path, key: ec.EllipticCurvePrivateKey) -> None:
-    data = key.private_bytes(serialization.Encoding.PEM, serialization.PrivateFormat.PKCS8, serialization.NoEncryption())
-    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC, 0o600)
-    with os.fdopen(fd, "wb") as f:
-        f.write(data)
-    os.chmod(path, 0o600)  # (an existing file keeps its mode through O_CREAT)
+    write_secret(path, key.private_bytes(serialization.Encoding.PEM, serialization.PrivateFormat.PKCS8, serialization.NoEncryption()))
 
 
 _LABEL = re.compile(r"^(?!-)[A-Za-z0-9-]{1,63}(?<!-)$")

@@ -96,7 +96,7 @@ def serve_cmd(args: argparse.Namespace) -> int:
     try:
         with on_stop_signals(interrupted):
             print(f"serve: study {study.name} ({len(study.participants)} places, {args.capacity} at once; folder {root})", flush=True)
-            print(f"serve: participants join at {server.join_url}", flush=True)
+            print(f"serve: participants join at {server.join_url} ({server.gate.rules()}: docs/howto/online-study.md)", flush=True)
             print(f"serve: researcher's list: {server.console_url}", flush=True)
             server.threads[0].join()
     except KeyboardInterrupt:
