@@ -52,7 +52,7 @@ from haven_scenarios.tools.commands.after_trial import Asked
 from haven_scenarios.tools.commands.common import claim_ros_domain, port_free
 from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
 from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
-from haven_scenarios.tools.domains import DomainBusy
+from haven_scenarios.tools.domains import DomainBusy, DomainRange
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_environment
 from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.web.tls import tls_files
@@ -83,11 +83,12 @@ class TrialError(Exception):
 
 @dataclass(frozen=True)
 class RosOptions:
-    """Where the suite runs: `domain_id` None takes the inherited domain if free, else a free one;
-    `network` lets DDS discovery go beyond this machine."""
+    """Where the suite runs: `domain_id` None takes the inherited domain if free, else a free one
+    (inside `domains` where given); `network` lets DDS discovery go beyond this machine."""
 
     domain_id: int | None = None
     network: bool = False
+    domains: DomainRange | None = None  # the lab's range (None: $HAVEN_DOMAINS, if set): never a domain outside it
 
 
 @dataclass(frozen=True)
@@ -229,7 +230,7 @@ def record_trial(plan: SessionPlan, sessions: Path, ros: RosOptions = RosOptions
 
 def _record(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -> RecordedTrial:
     try:
-        domain = claim_ros_domain(ros.domain_id, ros.network, plan.without, say)
+        domain = claim_ros_domain(ros.domain_id, ros.network, plan.without, say, ros.domains)
     except DomainBusy as e:
         raise TrialError(str(e)) from None
     with domain.lock:

@@ -27,6 +27,7 @@ from urllib.parse import parse_qs, quote, urlsplit
 
 from haven_scenarios.study.protocol import Study
 from haven_scenarios.study.schedule import PlannedTrial
+from haven_scenarios.tools.domains import DomainRange
 from haven_scenarios.web import online_pages as pages
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, reply, reply_json, token_cookie
@@ -57,6 +58,7 @@ class ServeOptions:
     reconnect_timeout: float = 60.0
     params_file: str | None = None
     network: bool = False
+    domains: DomainRange | None = None  # each runner's ROS domain from these (None: $HAVEN_DOMAINS, if set, else any free one)
 
 
 class StudyServer:
@@ -150,6 +152,7 @@ class StudyServer:
         argv += ["--on-disconnect", o.on_disconnect, "--reconnect-timeout", str(o.reconnect_timeout)]
         argv += ["--tls-cert", o.tls[0], "--tls-key", o.tls[1]] if o.tls else []
         argv += ["--params-file", o.params_file] if o.params_file else []
+        argv += ["--domains", o.domains.text] if o.domains else []
         return argv + (["--network"] if o.network else [])
 
     # -- what a participant's session page is told --------------------------------------------

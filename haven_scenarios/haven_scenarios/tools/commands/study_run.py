@@ -32,6 +32,7 @@ from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.commands.common import fail
 from haven_scenarios.tools.commands.study import study_dir
 from haven_scenarios.tools.commands.study_instruments import ask_in_browser, order_key, run_instruments, say_declined, terminal_asker
+from haven_scenarios.tools.domains import DomainRange
 from haven_scenarios.tools.locks import FileLock, Locked
 from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
@@ -64,6 +65,7 @@ class StudyRun:
     no_pause: bool = True  # with a person: do not wait for Enter between trials
     params_file: str | None = None
     domain_id: int | None = None
+    domains: DomainRange | None = None  # the lab's ROS domains (None: $HAVEN_DOMAINS, if set)
     network: bool = False
 
     @staticmethod
@@ -116,7 +118,7 @@ def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, ques
     """The trial with the whole node suite; True if a stop signal (Ctrl-C) cut it short."""
     try:
         plan = plan_trial(trial_request(args, trial, questionnaires, study))
-        result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network))
+        result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network, args.domains))
     except TrialError as e:
         print(f"haven: error: {e}", file=sys.stderr)
         return False
