@@ -17,10 +17,9 @@ from haven_scenarios.study.progress import bind
 from haven_scenarios.study.protocol import load_study, study_names
 from haven_scenarios.tools.commands.common import PORT, add_domains_option, add_dropout_options, add_tls_options, bounded_int, existing_file, fail
 from haven_scenarios.tools.commands.study import study_dir
-from haven_scenarios.tools.commands.study_instruments import interrupted
 from haven_scenarios.tools.domains import DomainBusy, domains_of, parse_domains
 from haven_scenarios.web.presence import OnDisconnect
-from haven_sim.runtime.process import on_stop_signals
+from haven_sim.runtime.process import interrupted, on_stop_signals
 
 DEFAULT_PORT = 8080
 
