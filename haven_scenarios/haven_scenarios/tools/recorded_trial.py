@@ -22,6 +22,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.record import recorder_stop
 from haven_scenarios.record.bag import not_recorded
 from haven_scenarios.record.outsiders import allowable
 from haven_scenarios.record.session import (
@@ -263,6 +264,8 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
         repaired = repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else ""))
         if repaired is not None:
             info["bag_repaired"] = repair_record(repaired)
+        info.update({recorder_stop.KEY: stop} if (stop := ended.recorder_stop()) else {})  # (record/recorder_stop.py)
+        write_json(folder / SESSION_FILE, info)  # (analyse judges the bag by its recorder_stop)
         metrics = _finish(folder, plan, info, time.monotonic() - started)
     except OSError as e:  # a full disk while the session is completed: what was written stays
         raise TrialError(f"{folder}: {e.strerror or e}", code=1) from None
@@ -357,6 +360,8 @@ def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float) 
     metrics, world, rec = analyse(folder)
     write_json(folder / METRICS_FILE, metrics)
     info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
+    if recorder_stop.KEY in info:
+        info[recorder_stop.KEY] = recorder_stop.judged(info[recorder_stop.KEY], folder / "bag", rec)
     info["wall_clock"] = trial_wall_clock(folder)
     info.update({"not_recorded": skipped} if (skipped := not_recorded(folder / "bag")) else {})
     write_json(folder / SESSION_FILE, info)

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.record import recorder_stop
 from haven_scenarios.record.repair import Repaired, RepairError, needs_repair, repair
 from haven_scenarios.record.report import session_folders
 from haven_scenarios.record.session import METRICS_FILE, SESSION_FILE, analyse, session_info, write_json
@@ -43,6 +44,14 @@ class Ended:
     timed_out: bool = False  # the time limit passed
     recorder_code: int | None = None  # the recorder's exit code once everything stopped
     questionnaires: str | None = None  # how the questionnaires after it ended (tools/commands/after_trial.py)
+
+    def recorder_stop(self) -> dict[str, Any] | None:
+        """session.json's `recorder_stop`, not judged yet (record/recorder_stop.py); None if no recorder ran."""
+        code = self.recorder_code
+        if code is None:
+            return None
+        during = "during the trial" if self.died is not None and self.died.name == nodes.RECORDER.key else "while stopping"
+        return recorder_stop.record(exit_text("recorder", code), code, during)
 
     @property
     def died(self) -> Exited | None:
