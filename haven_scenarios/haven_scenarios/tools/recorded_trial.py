@@ -48,7 +48,7 @@ from haven_scenarios.run.trial import check_fit, check_seed, condition_name, par
 from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import TELEOP, ScenarioError, load_scenario
-from haven_scenarios.tools.commands import after_trial
+from haven_scenarios.tools.commands import after_trial, recordings
 from haven_scenarios.tools.commands.after_trial import Asked
 from haven_scenarios.tools.commands.common import claim_ros_domain, port_free
 from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
@@ -266,7 +266,7 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
             info["bag_repaired"] = repair_record(repaired)
         info.update({recorder_stop.KEY: stop} if (stop := ended.recorder_stop()) else {})  # (record/recorder_stop.py)
         write_json(folder / SESSION_FILE, info)  # (analyse judges the bag by its recorder_stop)
-        metrics = _finish(folder, plan, info, time.monotonic() - started)
+        metrics = _finish(folder, plan, info, time.monotonic() - started, picture=not ended.stopped)  # (stopped: no picture, out sooner)
     except OSError as e:  # a full disk while the session is completed: what was written stays
         raise TrialError(f"{folder}: {e.strerror or e}", code=1) from None
     finally:
@@ -276,7 +276,7 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
             info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
         write_outcome(folder, info)
     # (a stop signal that ended the questionnaires' wait stops a study too: no next trial starts)
-    stopped = (ended.exited is None and not ended.timed_out) or ended.questionnaires == "interrupted"
+    stopped = ended.stopped or ended.questionnaires == "interrupted"
     wall = float(info["wall_time_s"])  # (as session.json has it: the trial to its metrics)
     return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), wall, died, ended.timed_out, stopped)
 
@@ -312,7 +312,7 @@ def _supervise(ros: RosOptions, specs: list[ProcessSpec], folder: Path, timeout_
             questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
         sup.stop_some((nodes.SCENARIO.key,))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
         if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder says no end)
-            _wait_for_recorded_end(folder, end[0], 10.0)
+            _wait_for_recorded_end(folder, end[0], 10.0 if exited is not None or timed_out else recordings.STOPPED_END_WAIT_S)
         codes = sup.stop()
     return Ended(exited, timed_out, codes.get(nodes.RECORDER.key), questionnaires)
 
@@ -355,7 +355,7 @@ def _new_session(plan: SessionPlan, sessions: Path) -> tuple[Path, dict[str, Any
     return folder, info
 
 
-def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float) -> dict[str, Any]:
+def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float, picture: bool = True) -> dict[str, Any]:
     """Metrics from the bag, the session record completed, the trajectory picture."""
     metrics, world, rec = analyse(folder)
     write_json(folder / METRICS_FILE, metrics)
@@ -365,7 +365,7 @@ def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float) 
     info["wall_clock"] = trial_wall_clock(folder)
     info.update({"not_recorded": skipped} if (skipped := not_recorded(folder / "bag")) else {})
     write_json(folder / SESSION_FILE, info)
-    if world is not None:
+    if world is not None and picture:
         trajectory_picture(folder, world, rec, f"{plan.scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
     return metrics
 

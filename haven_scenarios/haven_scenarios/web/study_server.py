@@ -39,6 +39,7 @@ DEFAULT_CAPACITY = 2  # live trials at once: what a 2-core machine holds at a 10
 MAX_STARTS = 5  # a participant's runner starts again this often at most (their trial did not finish)
 GONE_S = 15.0  # a waiting participant whose page has not asked for this long has left the queue
 TICK_S = 0.5
+STOP_S = 4.5  # `haven serve` ends within 5 s of Ctrl-C or SIGTERM: what its runners have to end their trials cleanly
 CONSOLE_COOKIE = "haven_serve_console"
 
 
@@ -100,14 +101,20 @@ class StudyServer:
         for t in self.threads:
             t.start()
 
-    def stop(self) -> None:
-        """The pages first, then every runner as Ctrl-C (their trials end cleanly, to run again)."""
+    def stop(self, wait_s: float = STOP_S) -> None:
+        """The pages first, then every runner at once as Ctrl-C (their trials end cleanly, to run
+        again), waited for together: a runner not ended by `wait_s` from now is killed (its nodes
+        still stop cleanly: the kernel sends them SIGTERM; its session, not finished, runs again)."""
+        deadline = time.monotonic() + wait_s
         self._stopping.set()
         self.httpd.shutdown()
         self.httpd.server_close()
         self.threads[1].join()
-        for runner in list(self.runners.values()):
-            runner.stop()
+        runners = list(self.runners.values())
+        for runner in runners:
+            runner.interrupt()
+        for runner in runners:
+            runner.finish(deadline)
 
     # -- the runners: started and reaped by one long-lived thread ------------------------------
     def _tick_loop(self) -> None:

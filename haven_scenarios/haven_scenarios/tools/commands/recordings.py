@@ -24,6 +24,10 @@ from haven_scenarios.tools.supervisor import Exited
 from haven_sim.common import nodes
 
 NO_OUTCOME = "unknown: haven run ended before it wrote the outcome"
+# After a stop signal, how long the recorder may take to have the trial's end on every stream
+# (the trial is over and runs again: the stop must not wait for a simulator left without its
+# lockstep partner, which takes no further step).
+STOPPED_END_WAIT_S = 1.0
 
 
 def exit_text(name: str, code: int) -> str:
@@ -52,6 +56,11 @@ class Ended:
             return None
         during = "during the trial" if self.died is not None and self.died.name == nodes.RECORDER.key else "while stopping"
         return recorder_stop.record(exit_text("recorder", code), code, during)
+
+    @property
+    def stopped(self) -> bool:
+        """A stop signal (Ctrl-C, SIGTERM, ...) ended it."""
+        return self.exited is None and not self.timed_out
 
     @property
     def died(self) -> Exited | None:
