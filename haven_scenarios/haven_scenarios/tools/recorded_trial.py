@@ -261,7 +261,7 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
             ros, specs, folder, None if plan.web is not None else limit, asked, (end_read, end_write)
         )  # the researcher decides when it starts
         died = exit_text(ended.died.name, ended.died.code) if ended.died is not None else None
-        repaired = repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else ""))
+        repaired = repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else "")) if ended.recorder_code != 0 else None  # (0: closed)
         if repaired is not None:
             info["bag_repaired"] = repair_record(repaired)
         info.update({recorder_stop.KEY: stop} if (stop := ended.recorder_stop()) else {})  # (record/recorder_stop.py)

@@ -24,10 +24,11 @@ from haven_scenarios.tools.supervisor import Exited
 from haven_sim.common import nodes
 
 NO_OUTCOME = "unknown: haven run ended before it wrote the outcome"
-# After a stop signal, how long the recorder may take to have the trial's end on every stream
-# (the trial is over and runs again: the stop must not wait for a simulator left without its
-# lockstep partner, which takes no further step).
-STOPPED_END_WAIT_S = 1.0
+# After a stop signal, how long the recorder may take to have the trial's end on every stream: a
+# moment (the scenario node has made sure the recorder has trial_end before it exits; the trial is
+# over and runs again, and on the lockstep clock the simulator takes no further step without the
+# scenario, so the streams would never get there).
+STOPPED_END_WAIT_S = 0.25
 
 
 def exit_text(name: str, code: int) -> str:
