@@ -107,3 +107,25 @@ def test_haven_run_says_in_one_line_when_no_domain_of_the_range_is_free(lab, tmp
     said = "no free ROS domain in HAVEN_DOMAINS 40-41: each runs another HAVEN suite or other ROS nodes (widen the range, or stop one)"
     assert code == 2 and err == f"haven: error: {said}\n"
     assert not (tmp_path / "s").exists()  # nothing started, nothing written
+
+
+def test_serve_hands_the_range_to_every_participants_runner_and_refuses_one_smaller_than_its_capacity(tmp_path, monkeypatch):
+    from haven_scenarios import api
+    from haven_scenarios.tools.commands.serve import open_server
+    from haven_scenarios.tools.recorded_trial import TrialError
+
+    study = tmp_path / "study.yaml"
+    study.write_text("name: d\nscenarios: [hallway]\nconditions: {none: [none]}\nparticipants: 2\n")
+    server = open_server(str(study), tmp_path / "st", port=0, capacity=2, domains="30-39")
+    try:
+        argv = server.runner_argv(server.seats.join("PANEL_1"))
+        assert argv[argv.index("--domains") + 1] == "30-39"
+    finally:
+        server.httpd.server_close()
+    with pytest.raises(ValueError, match=r"^--domains 30-30: fewer ROS domains than --capacity 2 \(each participant's trial takes one\)$"):
+        open_server(str(study), tmp_path / "st", port=0, capacity=2, domains="30-30")
+    monkeypatch.setenv("HAVEN_DOMAINS", "39-30")
+    with pytest.raises(ValueError, match=r"^HAVEN_DOMAINS: 39-30: 39 is above 30 \(in the environment\)$"):
+        open_server(str(study), tmp_path / "st", port=0)
+    with pytest.raises(TrialError, match=r"^domains: expected A-B"):
+        api.recorded_trial("hallway", domains="all of them")
