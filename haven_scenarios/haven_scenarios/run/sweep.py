@@ -72,26 +72,20 @@ def _indexed(spec: TrialSpec, suite: SuiteConfig | None) -> tuple[int, Row]:
 
 
 def _ignore_interrupts() -> None:
-    """In a worker: Ctrl-C is the parent's to handle (it stops the pool), not each worker's traceback.
-    The worker started with SIGINT blocked (`_on_processes`): one sent meanwhile is dropped here."""
+    """In a worker: Ctrl-C is the parent's to handle (it stops the pool), not each worker's traceback."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
 
 
 def _on_processes(specs: Sequence[Item], task: Callable[[Item], Result], workers: int) -> Iterator[Result]:
-    """A pool of fresh worker processes. A failed trial or a stop signal (KeyboardInterrupt) stops
-    the sweep: the workers are terminated at once (the trials they were running are lost; the
-    finished ones have been yielded). SIGINT is blocked while the workers start, so they inherit
-    it blocked (a Ctrl-C to the whole terminal's group is the parent's, not a traceback per worker)
-    and one that comes meanwhile reaches the parent afterwards, never lost."""
-    main = threading.current_thread() is threading.main_thread()  # (only the main thread takes signals)
-    if main:
-        signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    """A pool of fresh worker processes. A failed trial or a Ctrl-C stops the sweep: the workers are
+    terminated (the trials they were running are lost; the finished ones have been yielded)."""
+    main = threading.current_thread() is threading.main_thread()  # (only the main thread may set handlers)
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None  # inherited: a Ctrl-C while they start is not theirs
     try:
         pool = multiprocessing.get_context("spawn").Pool(min(workers, len(specs)), initializer=_ignore_interrupts)
     finally:
         if main:
-            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
+            signal.signal(signal.SIGINT, previous)
     try:
         yield from pool.imap_unordered(task, specs, chunksize=1)
         pool.close()
