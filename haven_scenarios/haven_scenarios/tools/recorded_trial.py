@@ -370,25 +370,12 @@ def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float, 
     return metrics
 
 
-def summary(metrics: dict[str, Any], wall_s: float) -> str:
-    """The one line `haven run` prints about a trial's outcome."""
-    if metrics["duration_s"] is None:
-        return f"haven: {metrics['end_reason']} before the trial started ({wall_s:.0f} s wall)"
-    finished = metrics.get("robot_time_to_finish_s")
-    robot = f"robot finished at {finished} s" if finished is not None else "robot did not finish"
-    return (
-        f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall_s:.0f} s wall): {robot}, "
-        f"closest approach {metrics.get('min_human_centre_distance_m')} m, {metrics.get('waits')} wait(s), "
-        f"{metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)"
-    )
-
-
 def tell(result: RecordedTrial) -> None:
     """A recorded trial's last lines, as `haven run` ends: how it went, what is wrong with the
     recording if anything, the session folder and what it holds."""
     if result.died is not None:
         print(f"haven: {result.died}; the trial was cut short", file=sys.stderr, flush=True)
-    print(summary(result.metrics, result.wall_s))
+    print(recordings.summary(result.metrics, result.wall_s))
     if not result.valid:
         print(f"haven: the session is not valid: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
         if any("from outside the suite" in r for r in result.invalid_reasons):

@@ -90,6 +90,19 @@ def outcome(ended: Ended | None, end_reason: str | None, repaired: Repaired | No
     return text
 
 
+def summary(metrics: dict[str, Any], wall_s: float) -> str:
+    """The one line `haven run` prints about a trial's outcome."""
+    if metrics["duration_s"] is None:
+        return f"haven: {metrics['end_reason']} before the trial started ({wall_s:.0f} s wall)"
+    finished = metrics.get("robot_time_to_finish_s")
+    robot = f"robot finished at {finished} s" if finished is not None else "robot did not finish"
+    return (
+        f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall_s:.0f} s wall): {robot}, "
+        f"closest approach {metrics.get('min_human_centre_distance_m')} m, {metrics.get('waits')} wait(s), "
+        f"{metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)"
+    )
+
+
 def write_outcome(folder: Path, info: dict[str, Any]) -> None:
     """session.json with the run's outcome; a full disk is said in one line (the outcome with it)."""
     try:
