@@ -41,6 +41,7 @@ from haven_scenarios.study.schedule import PlannedTrial, participant_schedule, s
 from haven_scenarios.tools.commands.study import Report, study_dir, write_report
 from haven_scenarios.tools.commands.study_run import StudyRun
 from haven_scenarios.tools.commands.study_run import run_participant as _run_participant
+from haven_scenarios.tools.domains import DomainRange, parse_domains
 from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
 
 if TYPE_CHECKING:
@@ -84,6 +85,7 @@ def recorded_trial(
     *,
     sessions: str | Path = "sessions",
     domain_id: int | None = None,
+    domains: str | None = None,
     network: bool = False,
     quiet: bool = False,
     **options: Any,
@@ -91,7 +93,8 @@ def recorded_trial(
     """One recorded trial with the whole node suite, into a new session folder under `sessions`;
     blocks until its session is complete. `options` are TrialRequest's fields (participant,
     condition, seed, world, params_file, teleop, rtf, free_running, without, allow, web,
-    questionnaires). `quiet`: no progress lines."""
+    questionnaires). `domains`: "A-B", the only ROS domains it may take (as `--domains`; None:
+    $HAVEN_DOMAINS, if set). `quiet`: no progress lines."""
     known = [f for f in TrialRequest.__dataclass_fields__ if f not in ("scenario", "extra")]
     unknown = sorted(set(options) - set(known))
     if unknown:
@@ -100,7 +103,15 @@ def recorded_trial(
         if key in options:
             options[key] = _names(options[key])
     plan = plan_trial(TrialRequest(scenario, **options))
-    return record_trial(plan, Path(sessions), RosOptions(domain_id, network), say=(lambda _: None) if quiet else print)
+    return record_trial(plan, Path(sessions), RosOptions(domain_id, network, _domains(domains)), say=(lambda _: None) if quiet else print)
+
+
+def _domains(text: str | None) -> DomainRange | None:
+    """`domains` as the API takes it ("30-39"), checked as `--domains` is; TrialError (one line) if it is not a range."""
+    try:
+        return parse_domains(text) if text is not None else None
+    except ValueError as e:
+        raise TrialError(str(e).replace("--domains", "domains", 1)) from None
 
 
 def sweep(
@@ -142,6 +153,8 @@ def run_participant(study: str, participant: str, **options: Any) -> int:
         options["teleop"] = _names(options["teleop"])
     if options.get("dir") is not None:
         options["dir"] = Path(options["dir"])
+    if isinstance(options.get("domains"), str):
+        options["domains"] = _domains(options["domains"])
     return _run_participant(StudyRun(study, participant, **options))
 
 
@@ -170,6 +183,7 @@ SERVE_OPTIONS = (
     "tls_key",
     "params_file",
     "network",
+    "domains",
 )
 
 

@@ -4,6 +4,7 @@ stays its own (and equal to the same trial alone) or says in its session why it 
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import subprocess
@@ -153,3 +154,36 @@ def test_a_study_participant_already_being_run_is_refused_before_anything_starts
     assert r.returncode == 2 and r.stderr.count("\n") == 1
     assert f"participant p01 of study pilot is already being run (pid {os.getpid()}, haven study run pilot.yaml --participant p01" in r.stderr
     assert not list((tmp_path / "studies" / "pilot" / "p01").glob("*/*/session.json"))
+
+
+def test_with_a_range_of_domains_a_second_and_third_suite_stay_inside_it(ros, tmp_path):
+    """`--domains A-(A+2)` with A held by another suite (its lock) and the inherited domain outside
+    the range: two suites started at once take A+1 and A+2, say so, and every node of each runs
+    there (its ROS_DOMAIN_ID, read from /proc)."""
+    from haven_scenarios.tools.domains import lock_path
+    from haven_scenarios.tools.locks import FileLock
+
+    first = 200 + 3 * (ros.domain_id % 10)  # (a range no test harness hands out: they take 1..100)
+    lab = f"{first}-{first + 2}"
+    scenario = crossing(tmp_path)
+    with FileLock(lock_path(first), "haven run (the first suite)").acquire():
+        runs = [start(ros, [*HAVEN, "run", str(scenario), "--domains", lab, "--sessions", str(tmp_path / n)]) for n in ("a", "b")]
+        seen: dict[int, set[str]] = {}
+        for proc in runs:
+            nodes = lambda p=proc: [int(c) for t in Path(f"/proc/{p.pid}/task").glob("*/children") for c in t.read_text().split()]  # noqa: E731
+            assert ros.spin_until(lambda: len(nodes()) == 7 or proc.poll() is not None, 120), "the suite never started its nodes"
+            for pid in nodes():
+                with contextlib.suppress(OSError):
+                    if b"--ros-args" not in Path(f"/proc/{pid}/cmdline").read_bytes():
+                        continue  # (not a node: `git` asked for the commit, say)
+                    env = dict(v.split(b"=", 1) for v in Path(f"/proc/{pid}/environ").read_bytes().split(b"\0") if b"=" in v)
+                    seen.setdefault(proc.pid, set()).add(env[b"ROS_DOMAIN_ID"].decode())
+        said = [finish(p) for p in runs]
+    assert [code for code, _, _ in said] == [0, 0], said
+    taken = sorted(json.loads((only_session(tmp_path / n) / "session.json").read_text())["ros_domain_id"] for n in ("a", "b"))
+    assert taken == [first + 1, first + 2]
+    assert sorted(d for ds in seen.values() for d in ds) == [str(first + 1), str(first + 2)]  # one domain per suite, its nodes all there
+    for _, out, _ in said:
+        assert f"haven: ROS domain {ros.domain_id}: outside --domains {lab}; this suite runs on ROS domain {first + 1}" in out or (
+            f"outside --domains {lab}; this suite runs on ROS domain {first + 2}" in out
+        ), out

@@ -115,6 +115,14 @@ def test_a_recorder_killed_mid_trial_is_named_and_its_bag_repaired(ros, tmp_path
     assert f"haven: repaired {folder / 'bag'}: " in err and f"haven: session in {folder}" in out
     info = assert_repaired_and_readable(folder, kept)
     assert info["outcome"].startswith("cut short: recorder was killed by SIGKILL; bag repaired (") and info["valid"] is False
+    repaired = "rebuilt by a repair (what the recorder still held was lost)"  # (record/recorder_stop.py: never verified complete)
+    assert info["recorder_stop"] == {
+        "exit": "recorder was killed by SIGKILL",
+        "code": -9,
+        "during": "during the trial",
+        "bag_verified": False,
+        "why": repaired,
+    }
     assert_report_flags_it(folder, tmp_path)
 
 
@@ -133,4 +141,5 @@ def test_a_full_disk_stops_the_recorder_in_one_line_and_keeps_what_it_wrote(ros,
     assert (bag / "bag.mcap.damaged").stat().st_size <= limit
     info = assert_repaired_and_readable(folder, kept)
     assert info["outcome"].startswith("cut short: recorder exited with code 1; bag repaired (")
+    assert info["recorder_stop"]["code"] == 1 and info["recorder_stop"]["bag_verified"] is False
     assert_report_flags_it(folder, tmp_path)

@@ -104,7 +104,7 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     before = sessions(root)
     interrupted = [t for t, a in before.items() if t.startswith("p02/") and not a[-1][1] == "completed"]
     assert interrupted == [next(t for t in before if t.startswith("p02/02_"))]
-    assert before[interrupted[0]][0][1].startswith("unknown")
+    assert before[interrupted[0]][0][1] == "interrupted (stopped by a signal)"  # (written as the signal came)
 
     status = haven("study", "status", str(path), cwd=tmp_path)
     assert status.returncode == 0

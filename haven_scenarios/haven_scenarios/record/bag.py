@@ -347,9 +347,12 @@ def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording,
     """The recording, and a note when it had to be recovered from a damaged bag or was repaired
     ("" if neither: a bag its recorder closed)."""
     rec = Recording()
-    if readable(bag):
+    try:  # (opened once: rosbags parses metadata.yaml and the MCAP index each time, a second on a busy machine)
         for m in read_messages(bag, human_ids):
             rec.add(m)
+    except Exception:  # noqa: BLE001 - not a bag rosbags opens (it raises several kinds): recovered below
+        rec = Recording()
+    else:
         rec.lost = lost_messages(bag)
         logged = custom_data(bag).get(PUBLISHERS_KEY)
         rec.publishers = PublisherLog.from_json(logged) if logged is not None else None

@@ -36,6 +36,7 @@ from typing import Any
 import numpy as np
 import yaml
 
+from haven_scenarios.record import recorder_stop
 from haven_scenarios.record.bag import read_recording, to_wall_time, wall_clock
 from haven_scenarios.record.metrics import compute
 from haven_scenarios.record.outsiders import declared_of
@@ -226,7 +227,7 @@ def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
         rec, note = Recording(), f"bag unreadable: {str(e)[:120]}"
     end = rec.first(EventKind.TRIAL_END)
     name, reason = str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED
-    problems = [p for p in (note, problem) if p]
+    problems = [p for p in (note, problem, recorder_stop.problem(info, folder / "bag", rec)) if p]
     try:
         metrics = compute(rec, name, reason, world, declared_of(info), scenario.robot if scenario is not None else DEFAULT)
     except Exception as e:  # noqa: BLE001 - whatever a recording no check foresaw makes of the metrics, the row says so

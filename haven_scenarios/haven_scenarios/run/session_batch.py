@@ -2,7 +2,9 @@
 folder: session.json, metrics.json and events.jsonl as `haven run` writes them, without the bag.
 
 session.json is written first with the outcome unknown, so a trial stopped part-way leaves a
-folder that says so (a study then runs it again), and completed when the trial has ended.
+folder that says so (a study then runs it again), and completed when the trial has ended; a stop
+signal (KeyboardInterrupt) during the trial writes the outcome "interrupted" before it goes on up.
+Every file is written whole (atomically): a stop or a crash never leaves half a file.
 """
 
 from __future__ import annotations
@@ -17,6 +19,7 @@ from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import atomic
 
 NO_OUTCOME = "unknown: the batch trial ended before it wrote the outcome"
+INTERRUPTED = "interrupted (stopped by a signal)"  # as a recorded trial's (tools/commands/recordings.py)
 
 
 def run_batch_session(
@@ -29,7 +32,11 @@ def run_batch_session(
     folder = new_session_dir(sessions, scenario.name, participant)
     info: dict[str, Any] = {**trial_record(participant, toggles, seed, scenario), "clock": "batch", **extra, "outcome": NO_OUTCOME}
     write_json(folder / SESSION_FILE, info)
-    result = run_trial(scenario, seed, toggles, suite)
+    try:
+        result = run_trial(scenario, seed, toggles, suite)
+    except KeyboardInterrupt:
+        write_json(folder / SESSION_FILE, {**info, "outcome": INTERRUPTED})
+        raise
     atomic.write_text(folder / EVENTS_FILE, "".join(e.to_json() + "\n" for e in result.recording.events))
     metrics = {**result.metrics, "participant": participant, "session": folder.name}
     write_json(folder / METRICS_FILE, metrics)

@@ -22,6 +22,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.record import recorder_stop
 from haven_scenarios.record.bag import not_recorded
 from haven_scenarios.record.outsiders import allowable
 from haven_scenarios.record.session import (
@@ -47,12 +48,12 @@ from haven_scenarios.run.trial import check_fit, check_seed, condition_name, par
 from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import TELEOP, ScenarioError, load_scenario
-from haven_scenarios.tools.commands import after_trial
+from haven_scenarios.tools.commands import after_trial, recordings
 from haven_scenarios.tools.commands.after_trial import Asked
 from haven_scenarios.tools.commands.common import claim_ros_domain, port_free
 from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
 from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
-from haven_scenarios.tools.domains import DomainBusy
+from haven_scenarios.tools.domains import DomainBusy, DomainRange
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_environment
 from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.web.tls import tls_files
@@ -83,11 +84,12 @@ class TrialError(Exception):
 
 @dataclass(frozen=True)
 class RosOptions:
-    """Where the suite runs: `domain_id` None takes the inherited domain if free, else a free one;
-    `network` lets DDS discovery go beyond this machine."""
+    """Where the suite runs: `domain_id` None takes the inherited domain if free, else a free one
+    (inside `domains` where given); `network` lets DDS discovery go beyond this machine."""
 
     domain_id: int | None = None
     network: bool = False
+    domains: DomainRange | None = None  # the lab's range (None: $HAVEN_DOMAINS, if set): never a domain outside it
 
 
 @dataclass(frozen=True)
@@ -229,7 +231,7 @@ def record_trial(plan: SessionPlan, sessions: Path, ros: RosOptions = RosOptions
 
 def _record(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -> RecordedTrial:
     try:
-        domain = claim_ros_domain(ros.domain_id, ros.network, plan.without, say)
+        domain = claim_ros_domain(ros.domain_id, ros.network, plan.without, say, ros.domains)
     except DomainBusy as e:
         raise TrialError(str(e)) from None
     with domain.lock:
@@ -259,10 +261,12 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
             ros, specs, folder, None if plan.web is not None else limit, asked, (end_read, end_write)
         )  # the researcher decides when it starts
         died = exit_text(ended.died.name, ended.died.code) if ended.died is not None else None
-        repaired = repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else ""))
+        repaired = repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else "")) if ended.recorder_code != 0 else None  # (0: closed)
         if repaired is not None:
             info["bag_repaired"] = repair_record(repaired)
-        metrics = _finish(folder, plan, info, time.monotonic() - started)
+        info.update({recorder_stop.KEY: stop} if (stop := ended.recorder_stop()) else {})  # (record/recorder_stop.py)
+        write_json(folder / SESSION_FILE, info)  # (analyse judges the bag by its recorder_stop)
+        metrics = _finish(folder, plan, info, time.monotonic() - started, picture=not ended.stopped)  # (stopped: no picture, out sooner)
     except OSError as e:  # a full disk while the session is completed: what was written stays
         raise TrialError(f"{folder}: {e.strerror or e}", code=1) from None
     finally:
@@ -272,7 +276,7 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
             info.update(after_trial.summary(folder, *asked, ended.questionnaires if ended else None))
         write_outcome(folder, info)
     # (a stop signal that ended the questionnaires' wait stops a study too: no next trial starts)
-    stopped = (ended.exited is None and not ended.timed_out) or ended.questionnaires == "interrupted"
+    stopped = ended.stopped or ended.questionnaires == "interrupted"
     wall = float(info["wall_time_s"])  # (as session.json has it: the trial to its metrics)
     return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), wall, died, ended.timed_out, stopped)
 
@@ -308,7 +312,7 @@ def _supervise(ros: RosOptions, specs: list[ProcessSpec], folder: Path, timeout_
             questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
         sup.stop_some((nodes.SCENARIO.key,))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
         if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder says no end)
-            _wait_for_recorded_end(folder, end[0], 10.0)
+            _wait_for_recorded_end(folder, end[0], 10.0 if exited is not None or timed_out else recordings.STOPPED_END_WAIT_S)
         codes = sup.stop()
     return Ended(exited, timed_out, codes.get(nodes.RECORDER.key), questionnaires)
 
@@ -351,30 +355,19 @@ def _new_session(plan: SessionPlan, sessions: Path) -> tuple[Path, dict[str, Any
     return folder, info
 
 
-def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float) -> dict[str, Any]:
+def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float, picture: bool = True) -> dict[str, Any]:
     """Metrics from the bag, the session record completed, the trajectory picture."""
     metrics, world, rec = analyse(folder)
     write_json(folder / METRICS_FILE, metrics)
     info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
+    if recorder_stop.KEY in info:
+        info[recorder_stop.KEY] = recorder_stop.judged(info[recorder_stop.KEY], folder / "bag", rec)
     info["wall_clock"] = trial_wall_clock(folder)
     info.update({"not_recorded": skipped} if (skipped := not_recorded(folder / "bag")) else {})
     write_json(folder / SESSION_FILE, info)
-    if world is not None:
+    if world is not None and picture:
         trajectory_picture(folder, world, rec, f"{plan.scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
     return metrics
-
-
-def summary(metrics: dict[str, Any], wall_s: float) -> str:
-    """The one line `haven run` prints about a trial's outcome."""
-    if metrics["duration_s"] is None:
-        return f"haven: {metrics['end_reason']} before the trial started ({wall_s:.0f} s wall)"
-    finished = metrics.get("robot_time_to_finish_s")
-    robot = f"robot finished at {finished} s" if finished is not None else "robot did not finish"
-    return (
-        f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall_s:.0f} s wall): {robot}, "
-        f"closest approach {metrics.get('min_human_centre_distance_m')} m, {metrics.get('waits')} wait(s), "
-        f"{metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)"
-    )
 
 
 def tell(result: RecordedTrial) -> None:
@@ -382,7 +375,7 @@ def tell(result: RecordedTrial) -> None:
     recording if anything, the session folder and what it holds."""
     if result.died is not None:
         print(f"haven: {result.died}; the trial was cut short", file=sys.stderr, flush=True)
-    print(summary(result.metrics, result.wall_s))
+    print(recordings.summary(result.metrics, result.wall_s))
     if not result.valid:
         print(f"haven: the session is not valid: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
         if any("from outside the suite" in r for r in result.invalid_reasons):

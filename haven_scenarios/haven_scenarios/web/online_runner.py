@@ -11,11 +11,13 @@ its server may linger for a moment.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import re
 import signal
 import subprocess
 import threading
+import time
 from collections.abc import Mapping, Sequence
 from pathlib import Path
 from urllib.parse import parse_qs, urlsplit
@@ -93,16 +95,25 @@ class Runner:
     def code(self) -> int | None:
         return self.proc.poll()
 
-    def stop(self) -> None:
+    def stop(self, wait_s: float = STOP_WAIT_S) -> None:
         """As Ctrl-C: the trial ends cleanly ("interrupted": the same trial runs again on their
-        return); killed with its nodes if it has not ended within STOP_WAIT_S."""
-        if self.proc.poll() is None:
-            try:
+        return); killed if it has not ended within `wait_s` (its nodes then get SIGTERM from the
+        kernel, so the recorder still closes its bag; the session, not finished, runs again)."""
+        self.interrupt()
+        self.finish(time.monotonic() + wait_s)
+
+    def interrupt(self) -> None:
+        """Ctrl-C to the runner, returning at once (`haven serve` stops every runner together)."""
+        with contextlib.suppress(ProcessLookupError):
+            if self.proc.poll() is None:
                 os.killpg(self.proc.pid, signal.SIGINT)
-                self.proc.wait(STOP_WAIT_S)
-            except subprocess.TimeoutExpired:
+
+    def finish(self, deadline: float) -> None:
+        """Wait for the runner until `deadline` (time.monotonic()), then kill it."""
+        try:
+            self.proc.wait(max(0.0, deadline - time.monotonic()))
+        except subprocess.TimeoutExpired:
+            with contextlib.suppress(ProcessLookupError):
                 os.killpg(self.proc.pid, signal.SIGKILL)
-                self.proc.wait()
-            except ProcessLookupError:
-                pass
-        self.reader.join(5.0)
+            self.proc.wait()
+        self.reader.join(max(0.1, deadline - time.monotonic()))

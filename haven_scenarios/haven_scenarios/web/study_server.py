@@ -29,6 +29,7 @@ from urllib.parse import parse_qs, quote, urlsplit
 
 from haven_scenarios.study.protocol import Study
 from haven_scenarios.study.schedule import PlannedTrial
+from haven_scenarios.tools.domains import DomainRange
 from haven_scenarios.web import online_pages as pages
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, redirect, reply, reply_json, token_cookie
@@ -41,6 +42,7 @@ DEFAULT_CAPACITY = 2  # live trials at once: what a 2-core machine holds at a 10
 MAX_STARTS = 5  # a participant's runner starts again this often at most (their trial did not finish)
 GONE_S = 15.0  # a waiting participant whose page has not asked for this long has left the queue
 TICK_S = 0.5
+STOP_S = 4.5  # `haven serve` ends within 5 s of Ctrl-C or SIGTERM: what its runners have to end their trials cleanly
 CONSOLE_COOKIE = "haven_serve_console"
 MAX_JOIN_BODY = 4096  # a join's form: the panel id and its signature
 HTML = "text/html; charset=utf-8"
@@ -62,6 +64,7 @@ class ServeOptions:
     reconnect_timeout: float = 60.0
     params_file: str | None = None
     network: bool = False
+    domains: DomainRange | None = None  # each runner's ROS domain from these (None: $HAVEN_DOMAINS, if set, else any free one)
 
 
 class StudyServer:
@@ -106,14 +109,20 @@ class StudyServer:
         for t in self.threads:
             t.start()
 
-    def stop(self) -> None:
-        """The pages first, then every runner as Ctrl-C (their trials end cleanly, to run again)."""
+    def stop(self, wait_s: float = STOP_S) -> None:
+        """The pages first, then every runner at once as Ctrl-C (their trials end cleanly, to run
+        again), waited for together: a runner not ended by `wait_s` from now is killed (its nodes
+        still stop cleanly: the kernel sends them SIGTERM; its session, not finished, runs again)."""
+        deadline = time.monotonic() + wait_s
         self._stopping.set()
         self.httpd.shutdown()
         self.httpd.server_close()
         self.threads[1].join()
-        for runner in list(self.runners.values()):
-            runner.stop()
+        runners = list(self.runners.values())
+        for runner in runners:
+            runner.interrupt()
+        for runner in runners:
+            runner.finish(deadline)
 
     # -- the runners: started and reaped by one long-lived thread ------------------------------
     def _tick_loop(self) -> None:
@@ -158,6 +167,7 @@ class StudyServer:
         argv += ["--on-disconnect", o.on_disconnect, "--reconnect-timeout", str(o.reconnect_timeout)]
         argv += ["--tls-cert", o.tls[0], "--tls-key", o.tls[1]] if o.tls else []
         argv += ["--params-file", o.params_file] if o.params_file else []
+        argv += ["--domains", o.domains.text] if o.domains else []
         return argv + (["--network"] if o.network else [])
 
     # -- what a participant's session page is told --------------------------------------------

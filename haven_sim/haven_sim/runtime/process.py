@@ -32,6 +32,13 @@ def on_stop_signals(handler: Callable[[int, FrameType | None], None], but: tuple
             signal.signal(sig, old)
 
 
+def interrupted(signum: int, frame: FrameType | None) -> None:
+    """A stop signal as Ctrl-C (`on_stop_signals(interrupted)`): KeyboardInterrupt at once, a
+    BaseException, so no `except Exception` on the way (a plugin's containment) swallows it, and
+    the command's own `finally` blocks and KeyboardInterrupt handlers end it cleanly."""
+    raise KeyboardInterrupt
+
+
 def die_with_parent(sig: int = signal.SIGTERM) -> Callable[[], None] | None:
     """A `preexec_fn` that has the kernel send `sig` to the child when the process that started it
     ends, even by SIGKILL (SIGTERM: the child still stops cleanly); None where there is no prctl.

@@ -15,6 +15,7 @@ from haven_scenarios.run.sweep import LOCAL, cores
 from haven_scenarios.run.trial import condition_name, parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands.common import SEED, add_robot_option, bounded_int, existing_file, fail
+from haven_sim.runtime.process import interrupted, on_stop_signals
 from haven_viz.cues import CUES
 
 MAX_WORKERS = 1024
@@ -104,7 +105,8 @@ def batch_cmd(args: argparse.Namespace) -> int:
     workers = args.workers or cores()
     progress = Progress(len(specs))
     try:
-        rows = run_batch(specs, out, suite, workers, args.cluster, progress)
+        with on_stop_signals(interrupted):  # (SIGTERM, SIGHUP, ... as Ctrl-C: the workers stopped, the finished rows kept)
+            rows = run_batch(specs, out, suite, workers, args.cluster, progress)
     except OSError as e:  # a cluster that cannot be reached, a CSV that cannot be written
         progress.close(finished=False)
         return fail(f"{args.cluster or out}: {e}")

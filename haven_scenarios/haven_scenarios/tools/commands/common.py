@@ -13,7 +13,7 @@ from pathlib import Path
 
 from haven_scenarios.record.outsiders import WRITERS, allowable, watched
 from haven_scenarios.run.trial import SEED_MAX
-from haven_scenarios.tools.domains import MAX_DOMAIN_ID, Claim, claim_domain
+from haven_scenarios.tools.domains import DOMAINS_ENV, MAX_DOMAIN_ID, Claim, DomainRange, claim_domain, parse_domains
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 from haven_sim.common import nodes
 from haven_sim.common.params import load_params_file
@@ -125,7 +125,28 @@ def add_ros_options(p: argparse.ArgumentParser, suite: bool = False) -> None:
     own = "the inherited one if no other HAVEN suite runs there, else a free one (said); given: refused if another suite holds it"
     help = f"ROS_DOMAIN_ID for the nodes (default: {own if suite else 'inherited'})"
     p.add_argument("--domain-id", type=bounded_int(0, MAX_DOMAIN_ID), default=None, help=help)
+    if suite:
+        add_domains_option(p)
     p.add_argument("--network", action="store_true", help="allow DDS discovery beyond localhost")
+
+
+def domain_range(text: str) -> DomainRange:
+    """An argparse type: `--domains A-B` (tools/domains.py)."""
+    try:
+        return parse_domains(text)
+    except ValueError as e:
+        raise argparse.ArgumentTypeError(str(e).removeprefix("--domains: ")) from None
+
+
+def add_domains_option(p: argparse.ArgumentParser) -> None:
+    """`--domains A-B`: the ROS domains the lab lets its suites take (else the environment's HAVEN_DOMAINS)."""
+    p.add_argument(
+        "--domains",
+        type=domain_range,
+        default=None,
+        metavar="A-B",
+        help=f"take a ROS domain only from A..B (0..{MAX_DOMAIN_ID}), never another; default: ${DOMAINS_ENV} if set, else any as above",
+    )
 
 
 def add_suite_options(p: argparse.ArgumentParser, sim: bool = False) -> None:
@@ -158,11 +179,14 @@ def environment(args: argparse.Namespace) -> dict[str, str]:
     return ros_environment(network=args.network, domain_id=args.domain_id)
 
 
-def claim_ros_domain(domain_id: int | None, network: bool, ignore: Sequence[str] = (), say: Callable[[str], None] = print) -> Claim:
+def claim_ros_domain(
+    domain_id: int | None, network: bool, ignore: Sequence[str] = (), say: Callable[[str], None] = print, domains: DomainRange | None = None
+) -> Claim:
     """The ROS domain a suite runs on (`tools/domains.py`); DomainBusy (one line) when `domain_id`
-    names a domain another suite holds. Said when the inherited domain was taken and the suite
-    moved. `ignore`: our nodes left out (`--without`), whose names the user's own nodes may have."""
-    got = claim_domain(domain_id, ros_environment(network=network), [nodes.BY_KEY[n].name for n in ignore])
+    names a domain another suite holds or one outside `domains` (None: $HAVEN_DOMAINS, if set), or
+    when no domain is free. Said when the inherited domain was taken (or lies outside the range)
+    and the suite moved. `ignore`: our nodes left out (`--without`), whose names the user's own nodes may have."""
+    got = claim_domain(domain_id, ros_environment(network=network), [nodes.BY_KEY[n].name for n in ignore], domains)
     if got.moved_from is not None:
         home, why = got.moved_from
         here = got.domain_id
@@ -172,7 +196,7 @@ def claim_ros_domain(domain_id: int | None, network: bool, ignore: Sequence[str]
 
 def claim(args: argparse.Namespace, ignore: Sequence[str] = ()) -> Claim:
     """`claim_ros_domain` for a command's options, set as `args.domain_id` for its nodes."""
-    got = claim_ros_domain(args.domain_id, args.network, ignore, lambda line: print(line, flush=True))
+    got = claim_ros_domain(args.domain_id, args.network, ignore, lambda line: print(line, flush=True), args.domains)
     args.domain_id = got.domain_id
     return got
 

@@ -13,9 +13,8 @@ from typing import Any
 
 from haven_scenarios.study.scenario import resolve_world
 from haven_scenarios.tools.commands.common import add_tls_options, bounded_int, fail
-from haven_scenarios.tools.commands.study_instruments import interrupted
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
-from haven_sim.runtime.process import on_stop_signals
+from haven_sim.runtime.process import interrupted, on_stop_signals
 from haven_sim.sim.world import WorldError
 
 DEFAULT_HOST, DEFAULT_PORT = "127.0.0.1", 8090  # beside the study pages' 8088 (web/front_door.py), so both can run

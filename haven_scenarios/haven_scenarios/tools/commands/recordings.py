@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.record import recorder_stop
 from haven_scenarios.record.repair import Repaired, RepairError, needs_repair, repair
 from haven_scenarios.record.report import session_folders
 from haven_scenarios.record.session import METRICS_FILE, SESSION_FILE, analyse, session_info, write_json
@@ -23,6 +24,11 @@ from haven_scenarios.tools.supervisor import Exited
 from haven_sim.common import nodes
 
 NO_OUTCOME = "unknown: haven run ended before it wrote the outcome"
+# After a stop signal, how long the recorder may take to have the trial's end on every stream: a
+# moment (the scenario node has made sure the recorder has trial_end before it exits; the trial is
+# over and runs again, and on the lockstep clock the simulator takes no further step without the
+# scenario, so the streams would never get there).
+STOPPED_END_WAIT_S = 0.25
 
 
 def exit_text(name: str, code: int) -> str:
@@ -43,6 +49,19 @@ class Ended:
     timed_out: bool = False  # the time limit passed
     recorder_code: int | None = None  # the recorder's exit code once everything stopped
     questionnaires: str | None = None  # how the questionnaires after it ended (tools/commands/after_trial.py)
+
+    def recorder_stop(self) -> dict[str, Any] | None:
+        """session.json's `recorder_stop`, not judged yet (record/recorder_stop.py); None if no recorder ran."""
+        code = self.recorder_code
+        if code is None:
+            return None
+        during = "during the trial" if self.died is not None and self.died.name == nodes.RECORDER.key else "while stopping"
+        return recorder_stop.record(exit_text("recorder", code), code, during)
+
+    @property
+    def stopped(self) -> bool:
+        """A stop signal (Ctrl-C, SIGTERM, ...) ended it."""
+        return self.exited is None and not self.timed_out
 
     @property
     def died(self) -> Exited | None:
@@ -69,6 +88,19 @@ def outcome(ended: Ended | None, end_reason: str | None, repaired: Repaired | No
     if repaired is not None:
         text += f"; bag repaired ({repaired.messages} messages recovered)"
     return text
+
+
+def summary(metrics: dict[str, Any], wall_s: float) -> str:
+    """The one line `haven run` prints about a trial's outcome."""
+    if metrics["duration_s"] is None:
+        return f"haven: {metrics['end_reason']} before the trial started ({wall_s:.0f} s wall)"
+    finished = metrics.get("robot_time_to_finish_s")
+    robot = f"robot finished at {finished} s" if finished is not None else "robot did not finish"
+    return (
+        f"haven: {metrics['end_reason']} in {metrics['duration_s']} s of sim time ({wall_s:.0f} s wall): {robot}, "
+        f"closest approach {metrics.get('min_human_centre_distance_m')} m, {metrics.get('waits')} wait(s), "
+        f"{metrics.get('replans')} re-plan(s), {metrics.get('human_contacts')} contact(s)"
+    )
 
 
 def write_outcome(folder: Path, info: dict[str, Any]) -> None:

@@ -13,12 +13,11 @@ import sys
 from collections.abc import Callable, Sequence
 from datetime import datetime, timezone
 from pathlib import Path
-from types import FrameType
 from typing import Any, Protocol
 
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.study.questionnaires import CHOICE, TEXT, Item, Questionnaire, in_order, item_order
-from haven_sim.runtime.process import on_stop_signals
+from haven_sim.runtime.process import interrupted, on_stop_signals
 
 BATCH_REASON = "simulated participant (--batch pilot)"
 Read = Callable[[str], str]
@@ -130,11 +129,6 @@ def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, 
     finally:
         server.stop()
     return not book.declined()
-
-
-def interrupted(signum: int, frame: FrameType | None) -> None:
-    """A stop signal as Ctrl-C: the waiting command's own `finally` stops its server."""
-    raise KeyboardInterrupt
 
 
 def say_declined(participant: str, folder: Path) -> None:

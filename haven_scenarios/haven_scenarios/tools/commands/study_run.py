@@ -13,11 +13,9 @@ a second `haven study run` for them says who holds it and exits.
 from __future__ import annotations
 
 import argparse
-import signal
 import sys
 from dataclasses import dataclass, fields
 from pathlib import Path
-from types import FrameType
 from typing import Any
 
 from haven_scenarios.record.participants import InstrumentBook
@@ -32,12 +30,13 @@ from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.tools.commands.common import fail
 from haven_scenarios.tools.commands.study import study_dir
 from haven_scenarios.tools.commands.study_instruments import ask_in_browser, order_key, run_instruments, say_declined, terminal_asker
+from haven_scenarios.tools.domains import DomainRange
 from haven_scenarios.tools.locks import FileLock, Locked
 from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_sim.common.params import ParamsError
 from haven_sim.robots.robot_kind import resolve_robot
-from haven_sim.runtime.process import on_stop_signals
+from haven_sim.runtime.process import interrupted, on_stop_signals
 
 INTERRUPTED = 130
 RUNNER_LOCK = ".runner.lock"  # in the participant's folder, held while a `haven study run` works on it
@@ -64,6 +63,7 @@ class StudyRun:
     no_pause: bool = True  # with a person: do not wait for Enter between trials
     params_file: str | None = None
     domain_id: int | None = None
+    domains: DomainRange | None = None  # the lab's ROS domains (None: $HAVEN_DOMAINS, if set)
     network: bool = False
 
     @staticmethod
@@ -71,10 +71,6 @@ class StudyRun:
         values = {f.name: getattr(args, f.name) for f in fields(StudyRun)}
         values["teleop"] = tuple(args.teleop) if args.teleop is not None else None
         return StudyRun(**values)
-
-
-class Stopped(Exception):
-    """A stop signal arrived: the study stops after the current trial has ended cleanly."""
 
 
 def study_extra(study: str, trial: PlannedTrial) -> dict[str, Any]:
@@ -116,7 +112,7 @@ def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, ques
     """The trial with the whole node suite; True if a stop signal (Ctrl-C) cut it short."""
     try:
         plan = plan_trial(trial_request(args, trial, questionnaires, study))
-        result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network))
+        result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network, args.domains))
     except TrialError as e:
         print(f"haven: error: {e}", file=sys.stderr)
         return False
@@ -124,16 +120,15 @@ def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, ques
     return result.stopped
 
 
-def _raise_stopped(signum: int, frame: FrameType | None) -> None:
-    raise Stopped()
-
-
 def run_batch_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, study: Study) -> bool:
-    """The trial in this process; True if a stop signal (or Ctrl-C) cut it short."""
+    """The trial in this process; True if a stop signal (Ctrl-C, SIGTERM, ...) cut it short: its
+    session then says "interrupted" (run/session_batch.py), and the same command runs it again.
+    Every stop signal raises KeyboardInterrupt at once, a BaseException that no plugin's containment
+    (`except Exception`) swallows, also a SIGINT the shell had ignored (a background job)."""
     try:
-        with on_stop_signals(_raise_stopped, but=(signal.SIGINT,)):
+        with on_stop_signals(interrupted):
             batch_session(trial, sessions, study, args.params_file)
-    except (KeyboardInterrupt, Stopped):
+    except KeyboardInterrupt:
         return True
     return False
 
@@ -176,8 +171,12 @@ def _check(args: StudyRun, study: Study) -> str | None:
 
 
 def run_cmd(args: argparse.Namespace) -> int:
+    """Every stop signal is a Ctrl-C here (`interrupted`), between trials too: the command ends
+    within a moment, its files whole, exit code 130 (a recorded trial installs its own handlers
+    while it runs, which stop its nodes in order)."""
     try:
-        return run_participant(StudyRun.of(args))
+        with on_stop_signals(interrupted):
+            return run_participant(StudyRun.of(args))
     except TrialError as e:
         return fail(str(e))
 

@@ -104,7 +104,7 @@ def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> 
     """Run and record one trial into a new session folder under `sessions` (tools/recorded_trial.py);
     the exit code."""
     try:
-        result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network))
+        result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network, args.domains))
     except TrialError as e:
         if e.code == 2:
             return fail(str(e))
