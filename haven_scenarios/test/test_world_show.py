@@ -79,10 +79,16 @@ def test_a_world_past_the_planners_caps_is_refused_in_one_line_by_validate_and_s
     Image.fromarray(image).save(tmp_path / "dots.pgm")
     world = tmp_path / "dots.yaml"
     world.write_text("name: dots\nmap: {image: dots.pgm, resolution: 0.05}\nrobot: {start: [0.4, 0.4, 0.0]}\n")
-    for args in (["validate", str(world)], ["world", "show", str(world), "--out", str(tmp_path / "dots.png")]):
+    scenario = tmp_path / "trial.yaml"  # what `haven run`, `batch` and studies load
+    scenario.write_text("name: trial\nworld: dots.yaml\nkind: retrieval\ntimeout_s: 60\n")
+    for args, said in (
+        (["validate", str(world)], f"{world}: world dots: "),
+        (["world", "show", str(world), "--out", str(tmp_path / "dots.png")], f"{world}: world dots: "),
+        (["validate", str(scenario)], f"{scenario}: world: {world}: world dots: "),
+    ):
         assert main(args) == 2
         (line,) = capsys.readouterr().err.strip().splitlines()
-        assert line.startswith(f"haven: error: {world}: world dots: the map has ") and f"at most {MAX_PLANNER_NODES:,}" in line, line
+        assert line.startswith(f"haven: error: {said}the map has 2,916 corners") and f"at most {MAX_PLANNER_NODES:,}" in line, line
     assert not (tmp_path / "dots.png").exists()
     shipped = sorted(p.stem for p in (Path(__file__).parents[1] / "haven_scenarios" / "worlds").glob("*.yaml"))
     assert (
