@@ -66,6 +66,7 @@ def run(name: str, world: World, n: int, seed: int, pairs_file: str | None) -> d
     grid = rasterise(world, 0.05)
     t0 = time.perf_counter()
     planner = GridPlanner(grid, PARAMS)
+    planner.dist  # the graph (else built at the first plan that needs it)
     pre = time.perf_counter() - t0
     pairs = sample_pairs(world, planner, n, seed)
     if pairs_file:

@@ -63,3 +63,34 @@ def test_a_maps_own_yaml_or_a_fifo_as_its_image_is_one_line(capsys, tmp_path: Pa
         guard.cancel()
     (line,) = capsys.readouterr().err.strip().splitlines()
     assert line == f"haven: error: {tmp_path / 'map.pgm'}: image: cannot be read as an image: not a regular file"
+
+
+def test_a_world_past_the_planners_caps_is_refused_in_one_line_by_validate_and_show(capsys, tmp_path: Path) -> None:
+    """A map of 729 pillars (2,916 corners for the built-in planner on a 20 m map) loads, but the
+    planner's graph would pass its caps: refused naming the world and the cap; the shipped worlds pass."""
+    import numpy as np
+    from PIL import Image
+
+    from haven_sim.nav.planner import MAX_PLANNER_NODES
+
+    image = np.full((400, 400), 254, np.uint8)
+    image[:2], image[-2:], image[:, :2], image[:, -2:] = 0, 0, 0, 0
+    image[14:-14:14, 14:-14:14] = 0
+    Image.fromarray(image).save(tmp_path / "dots.pgm")
+    world = tmp_path / "dots.yaml"
+    world.write_text("name: dots\nmap: {image: dots.pgm, resolution: 0.05}\nrobot: {start: [0.4, 0.4, 0.0]}\n")
+    scenario = tmp_path / "trial.yaml"  # what `haven run`, `batch` and studies load
+    scenario.write_text("name: trial\nworld: dots.yaml\nkind: retrieval\ntimeout_s: 60\n")
+    for args, said in (
+        (["validate", str(world)], f"{world}: world dots: "),
+        (["world", "show", str(world), "--out", str(tmp_path / "dots.png")], f"{world}: world dots: "),
+        (["validate", str(scenario)], f"{scenario}: world: {world}: world dots: "),
+    ):
+        assert main(args) == 2
+        (line,) = capsys.readouterr().err.strip().splitlines()
+        assert line.startswith(f"haven: error: {said}the map has 2,916 corners") and f"at most {MAX_PLANNER_NODES:,}" in line, line
+    assert not (tmp_path / "dots.png").exists()
+    shipped = sorted(p.stem for p in (Path(__file__).parents[1] / "haven_scenarios" / "worlds").glob("*.yaml"))
+    assert (
+        len(shipped) >= 9 and main(["validate", *(str(Path(__file__).parents[1] / "haven_scenarios" / "worlds" / f"{n}.yaml") for n in shipped)]) == 0
+    )

@@ -46,6 +46,7 @@ from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import build
 from haven_sim.common.schema import FileModel, Line, Positive, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, one_line, read_yaml, short, shown_key
+from haven_sim.nav.planner import check_plannable
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import DEFAULT
 from haven_sim.robots.robot_file import RobotError
@@ -262,6 +263,7 @@ class _ScenarioParser:
         try:
             world_path = resolve_world(f.world, Path(self.source).parent)
             world = load_world(world_path)
+            check_plannable(world, file_label(world_path))
         except WorldError as e:
             raise self.fail("world", str(e)) from None
         robot = f.robot or RobotFile()

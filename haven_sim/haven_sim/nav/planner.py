@@ -5,6 +5,18 @@ plus a safety margin with a square kernel, which keeps axis-aligned walls axis-a
 corners of the inflated obstacles are the nodes of a visibility graph; line of sight is tested by
 sampling the inflated grid. All-pairs shortest paths between the nodes are computed once per map,
 so a query only tests what the start and the goal can see and picks the best pair of nodes.
+
+Bounded for any map the loader takes (up to 4,000 x 4,000 cells): the inflation and the corners are
+linear in the cells; the graph is built at the first plan that needs it, and only while the node
+pairs times the map's diagonal in half cells (`sight_work`, an upper bound on the grid samples the
+line-of-sight tests take) is at most `MAX_SIGHT_WORK` and the nodes at most `MAX_PLANNER_NODES`;
+past either, that plan is refused in one line (`graph_problem`), and `check_plannable` refuses such
+a world where it is validated. Line of sight is tested `MAX_SIGHT_SAMPLES` samples at a time.
+Measured (`bench/map_bounds.py`, 2026-12-01, 2 vCPUs at load ~4, each in its own process): at the
+cap, 100 corners on a 100 m map at 0.025 m took 2.3 s to the first plan, 236 MB peak; 297 corners
+on a 10 m one 1.9 s, 188 MB; the loader's largest pillar map (9,504 boxes, 38,000 corners) is
+refused by the world check in 0.5 s, and a plan on it in 2 ms after 0.5 s of inflation (211 MB).
+The shipped worlds have 4 to 36 corners (a few ms of sight work).
 """
 
 from __future__ import annotations
@@ -17,12 +29,18 @@ from typing import Protocol, overload
 import numpy as np
 import numpy.typing as npt
 
+from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import FloatArray, Point
 from haven_sim.common.params import NOT_NEGATIVE, Bounds, check_bounds, param
 from haven_sim.robots.fields import from_robot
-from haven_sim.sim.occupancy import OccupancyGridData
+from haven_sim.sim.occupancy import OccupancyGridData, rasterise
+from haven_sim.sim.world import World, WorldError
 
 BoolGrid = npt.NDArray[np.bool_]
+
+MAX_PLANNER_NODES = 1000  # convex corners (Floyd-Warshall: N steps over N x N; ~20 MB at the cap)
+MAX_SIGHT_WORK = 60_000_000  # corner pairs x the map's diagonal in half cells (`sight_work`): ~2 s, see above
+MAX_SIGHT_SAMPLES = 2_000_000  # grid samples tested at a time for line of sight (~100 MB of temporaries)
 
 
 @dataclass(frozen=True)
@@ -63,6 +81,24 @@ class PlanningError(Exception):
         self.failure = failure
 
 
+def sight_work(nodes: int, grid: OccupancyGridData) -> int:
+    """An upper bound on the grid samples the visibility graph tests: every pair of nodes, each
+    sampled every half cell over at most the map's diagonal."""
+    return nodes * (nodes - 1) // 2 * (int(math.ceil(2.0 * math.hypot(grid.width, grid.height))) + 1)
+
+
+def graph_problem(nodes: int, grid: OccupancyGridData, params: PlannerParams) -> str | None:
+    """Why the visibility graph of a map with `nodes` corners is not built (one line), or None."""
+    work = sight_work(nodes, grid)
+    if nodes <= MAX_PLANNER_NODES and work <= MAX_SIGHT_WORK:
+        return None
+    return (
+        f"the map has {nodes:,} corners for the built-in planner (obstacles inflated by {params.inflation_m:.2f} m), more than it "
+        f"takes on a {grid.width * grid.resolution_m:g} m x {grid.height * grid.resolution_m:g} m map (at most {MAX_PLANNER_NODES:,}, "
+        f"and corner pairs x the map's diagonal in half cells at most {MAX_SIGHT_WORK:,}): merge small obstacles or use a coarser map"
+    )
+
+
 def inflate_square(occupied: BoolGrid, cells: int) -> BoolGrid:
     """Every cell within `cells` (Chebyshev distance) of an occupied cell."""
     out = occupied.copy()
@@ -94,6 +130,26 @@ def convex_corners(blocked: BoolGrid) -> npt.NDArray[np.intp]:
     return np.argwhere(found)
 
 
+def inflated(grid: OccupancyGridData, params: PlannerParams) -> tuple[BoolGrid, int, BoolGrid]:
+    """The map's obstacle cells, the inflation in cells, and the inflated obstacles."""
+    occupied = grid.data >= params.occupied_threshold
+    if params.unknown_is_obstacle:
+        occupied |= grid.data < 0
+    cells = int(math.ceil(params.inflation_m / grid.resolution_m))
+    return occupied, cells, inflate_square(occupied, cells)
+
+
+def check_plannable(world: World, source: str) -> None:
+    """Refuse (WorldError, one line naming the world) a world whose map the built-in planner would
+    not take, for the default robot's body or a person's: checked where a world is validated to run
+    (`haven validate`, `world show`, `run`, `batch`, `sim`, scenario files), in linear time."""
+    grid = rasterise(world)
+    for params in (PlannerParams(), PlannerParams(body_radius_m=HUMAN_BODY.radius_m)):
+        problem = graph_problem(len(convex_corners(inflated(grid, params)[2])), grid, params)
+        if problem is not None:
+            raise WorldError(f"{source}: world {world.name}: {problem}")
+
+
 @dataclass(frozen=True)
 class Plan:
     points: list[Point]  # start, corners..., goal (start/goal possibly snapped onto free space)
@@ -122,19 +178,13 @@ class GridPlanner:
     def __init__(self, grid: OccupancyGridData, params: PlannerParams | None = None) -> None:
         self.grid = grid
         self.params = params or PlannerParams()
-        data = grid.data
-        occupied = data >= self.params.occupied_threshold
-        if self.params.unknown_is_obstacle:
-            occupied |= data < 0
-        self.occupied = occupied
-        self.cells = int(math.ceil(self.params.inflation_m / grid.resolution_m))
-        self.blocked = inflate_square(occupied, self.cells)
+        self.occupied, self.cells, self.blocked = inflated(grid, self.params)
         # Without the safety margin: what the robot's body itself must not touch (for arcs).
-        self.hard_blocked = inflate_square(occupied, int(math.ceil(self.params.body_radius_m / grid.resolution_m)))
+        self.hard_blocked = inflate_square(self.occupied, int(math.ceil(self.params.body_radius_m / grid.resolution_m)))
         rc = convex_corners(self.blocked)
         self.nodes = self._centres(rc)  # (N, 2) world coordinates
         self._step = grid.resolution_m / 2.0
-        self._all_pairs()
+        self._graph: tuple[FloatArray, npt.NDArray[np.intp]] | None = None  # (dist, next_hop), at the first plan
 
     # -- geometry helpers ------------------------------------------------------------------------
     def _centres(self, rc: npt.NDArray[np.intp]) -> FloatArray:
@@ -181,13 +231,20 @@ class GridPlanner:
         return runs if isinstance(direction, np.ndarray) else float(runs[0])
 
     def visible(self, a: FloatArray, b: FloatArray) -> npt.NDArray[np.bool_]:
-        """Line of sight for each segment a[i] -> b[i] (arrays (M, 2)) through the inflated grid."""
+        """Line of sight for each segment a[i] -> b[i] (arrays (M, 2)) through the inflated grid,
+        sampled every half cell, at most `MAX_SIGHT_SAMPLES` samples at a time (bounded memory)."""
         a = np.asarray(a, dtype=float).reshape(-1, 2)
         b = np.asarray(b, dtype=float).reshape(-1, 2)
-        if len(a) == 0:
-            return np.zeros(0, dtype=bool)
-        lengths = np.hypot(*(b - a).T)
-        counts = np.maximum(2, np.ceil(lengths / self._step).astype(np.intp) + 1)
+        counts = np.maximum(2, np.ceil(np.hypot(*(b - a).T) / self._step).astype(np.intp) + 1)
+        out = np.zeros(len(a), dtype=bool)
+        lo, ends = 0, np.cumsum(counts)
+        while lo < len(a):
+            hi = max(lo + 1, int(np.searchsorted(ends, ends[lo] - counts[lo] + MAX_SIGHT_SAMPLES, side="right")))
+            out[lo:hi] = self._visible(a[lo:hi], b[lo:hi], counts[lo:hi])
+            lo = hi
+        return out
+
+    def _visible(self, a: FloatArray, b: FloatArray, counts: npt.NDArray[np.intp]) -> npt.NDArray[np.bool_]:
         seg = np.repeat(np.arange(len(a)), counts)
         first = np.cumsum(counts) - counts
         frac = (np.arange(len(seg)) - np.repeat(first, counts)) / np.repeat(counts - 1, counts)
@@ -198,16 +255,17 @@ class GridPlanner:
         return ~np.logical_or.reduceat(hit, first)
 
     def _all_pairs(self) -> None:
-        """Visibility between every pair of nodes, then Floyd-Warshall with next-hop tracking."""
+        """Visibility between every pair of nodes, then Floyd-Warshall with next-hop tracking (in
+        place: row and column k do not change in step k)."""
         n = len(self.nodes)
+        problem = graph_problem(n, self.grid, self.params)
+        if problem is not None:
+            raise PlanningError(problem)
         dist = np.full((n, n), np.inf)
         np.fill_diagonal(dist, 0.0)
         if n > 1:
             i, j = np.triu_indices(n, 1)
-            ok = np.zeros(len(i), dtype=bool)
-            chunk = 20000
-            for s in range(0, len(i), chunk):
-                ok[s : s + chunk] = self.visible(self.nodes[i[s : s + chunk]], self.nodes[j[s : s + chunk]])
+            ok = self.visible(self.nodes[i], self.nodes[j])
             i, j = i[ok], j[ok]
             d = np.hypot(*(self.nodes[i] - self.nodes[j]).T)
             dist[i, j] = d
@@ -217,10 +275,24 @@ class GridPlanner:
             via = dist[:, k, None] + dist[None, k, :]
             better = via < dist
             if better.any():
-                dist = np.where(better, via, dist)
-                nxt = np.where(better, nxt[:, k, None], nxt)
-        self.dist = dist
-        self.next_hop = nxt
+                np.copyto(dist, via, where=better)
+                np.copyto(nxt, nxt[:, k, None].copy(), where=better)
+        self._graph = (dist, nxt)
+
+    @property
+    def dist(self) -> FloatArray:
+        """Shortest distances between the nodes (the graph is built at the first plan)."""
+        if self._graph is None:
+            self._all_pairs()
+        assert self._graph is not None
+        return self._graph[0]
+
+    @property
+    def next_hop(self) -> npt.NDArray[np.intp]:
+        if self._graph is None:
+            self._all_pairs()
+        assert self._graph is not None
+        return self._graph[1]
 
     def _snap(self, p: Point, what: str) -> Point:
         g = self.grid
@@ -252,6 +324,7 @@ class GridPlanner:
         n = len(self.nodes)
         if n == 0:
             raise PlanningError(f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is not reachable from the start")
+        dist = self.dist  # (built now, or refused past the caps before any sight is tested)
         vis = self.visible(np.vstack([np.repeat(sa, n, 0), np.repeat(ga, n, 0)]), np.vstack([self.nodes, self.nodes]))
         vs, vg = np.flatnonzero(vis[:n]), np.flatnonzero(vis[n:])
         if len(vs) == 0 or len(vg) == 0:
@@ -259,7 +332,7 @@ class GridPlanner:
             raise PlanningError(f"{who} ({(s if who == 'start' else g)[0]:.2f}, {(s if who == 'start' else g)[1]:.2f}) sees no way out")
         ds = np.hypot(*(self.nodes[vs] - sa).T)
         dg = np.hypot(*(self.nodes[vg] - ga).T)
-        total = ds[:, None] + self.dist[np.ix_(vs, vg)] + dg[None, :]
+        total = ds[:, None] + dist[np.ix_(vs, vg)] + dg[None, :]
         flat = int(np.argmin(total))
         if not np.isfinite(total.flat[flat]):
             raise PlanningError(f"goal ({goal[0]:.2f}, {goal[1]:.2f}) is not reachable from the start")

@@ -20,6 +20,7 @@ from haven_scenarios.tools.commands.common import fail
 from haven_sim.common import plugins
 from haven_sim.common.params import ParamsError, params_of
 from haven_sim.common.yaml_file import YamlFileError, file_label, read_yaml
+from haven_sim.nav.planner import check_plannable
 from haven_sim.robots.robot_file import RobotError, RobotFileModel
 from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.sim.world import WorldError
@@ -101,7 +102,9 @@ def describe(path: Path) -> str:
             raise ScenarioError(str(e)) from None
         return f"scenario {name}"
     if isinstance(data, dict) and ("walls" in data or "map" in data or {"image", "resolution"} <= data.keys()):
-        return f"world {parse_world(data, str(path)).name}"  # (a map_server map's YAML: the world loader says how to make a world)
+        world = parse_world(data, str(path))  # (a map_server map's YAML: the world loader says how to make a world)
+        check_plannable(world, file_label(path))
+        return f"world {world.name}"
     if isinstance(data, dict) and ("kinematics" in data or "extends" in data):
         return f"robot {resolve_robot(str(path)).name}"
     if isinstance(data, dict) and data and all(isinstance(v, dict) and "ros__parameters" in v for v in data.values()):

@@ -29,6 +29,8 @@ from haven_scenarios.tools.domains import DomainBusy
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
 from haven_sim.common import atomic, nodes
 from haven_sim.common.params import ParamsError
+from haven_sim.common.yaml_file import file_label
+from haven_sim.nav.planner import check_plannable
 from haven_sim.sim.world import WorldError, resolve_world_path
 from haven_sim.sim.world_file import load_world
 
@@ -77,7 +79,7 @@ def _ad_hoc_session(root: Path, world: str, args: argparse.Namespace) -> Path:
 def run_suite(args: argparse.Namespace) -> int:
     try:  # fail before starting anything
         world = str(resolve_world_path(args.world))
-        load_world(world)
+        check_plannable(load_world(world), file_label(world))
         load_suite_config(args.params_file, SIM_SETS)
         args.robot = robot_spec(args.robot) if args.robot is not None else None
     except (WorldError, ParamsError, ValueError) as e:

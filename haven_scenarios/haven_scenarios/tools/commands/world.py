@@ -11,6 +11,7 @@ from pathlib import Path
 from haven_scenarios.study.scenario import resolve_world
 from haven_scenarios.tools.commands.common import fail
 from haven_sim.common.yaml_file import YamlFileError, file_label
+from haven_sim.nav.planner import check_plannable
 from haven_sim.sim.world import World, WorldError
 from haven_sim.sim.world_file import load_world
 
@@ -31,6 +32,7 @@ def show_cmd(args: argparse.Namespace) -> int:
     try:
         path = resolve_world(args.world)
         world = load_world(path)
+        check_plannable(world, file_label(path))
     except (YamlFileError, WorldError) as e:
         return fail(str(e))
     out = draw(world, args.out or Path(f"{world.name}.png"))
