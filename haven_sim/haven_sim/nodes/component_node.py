@@ -25,7 +25,7 @@ from rclpy.qos import DurabilityPolicy
 from rclpy.serialization import serialize_message
 from rclpy.subscription import Subscription
 
-from haven_sim.common import topics
+from haven_sim.common import contain, topics
 from haven_sim.common.events import Event, EventKind, Sequencer, event
 from haven_sim.common.params import ParamsError, bounds_of, build, defaults, docs, ros_range
 from haven_sim.common.topics import WireParams
@@ -145,6 +145,7 @@ class ComponentNode(Node):
             if spec is not None:  # (no spec: TF where tf2_msgs is not installed)
                 self._pubs[topic] = self.create_publisher(spec.msg_type, topic, spec.pub_qos)
         self.lockstep_params = self.declare_config(LockstepParams)
+        contain.set_deadlines(self.declare_config(contain.PluginDeadlines))  # (for every plugin call in this process)
         self.lockstep_mode = self.lockstep_params.lockstep
         if self.lockstep_mode:  # (the simulator, which runs the clock, reads its inputs itself)
             if participant:
