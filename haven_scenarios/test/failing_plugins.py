@@ -12,7 +12,7 @@ import os
 from pathlib import Path
 
 FAIL_AFTER_S = 1.0
-MODULE = '''
+MODULE = """
 import os
 import time
 
@@ -53,7 +53,7 @@ def flaky(data):
         while True:
             pass
     return {{"flaky_ok": 1}}
-'''
+"""
 ENTRY_POINTS = """\
 [haven.participants]
 raiser = lab_failing:Raiser

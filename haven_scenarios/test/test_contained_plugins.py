@@ -26,9 +26,9 @@ def batch(tmp_path: Path, env: dict[str, str], grid: str, workers: int, name: st
     (tmp_path / "short.yaml").write_text(SCENARIO.format(model="walker"))
     (tmp_path / "params.yaml").write_text(PARAMS)
     out = tmp_path / f"{name}.csv"
-    argv = [*HAVEN, "batch", str(tmp_path / "short.yaml"), "--grid", grid, "--seeds", "0", "--workers", str(workers)]
+    argv = [*HAVEN, "batch", str(tmp_path / "short.yaml"), "--grid", grid, "--seeds", "0", "--workers", str(workers), "--out", str(out)]
     started = time.monotonic()
-    r = subprocess.run([*argv, "--params-file", str(tmp_path / "params.yaml"), "--out", str(out)], env=env, capture_output=True, text=True, timeout=300)
+    r = subprocess.run([*argv, "--params-file", str(tmp_path / "params.yaml")], env=env, capture_output=True, text=True, timeout=300)
     took = time.monotonic() - started
     assert r.returncode == 0 and "Traceback" not in r.stderr, r.stderr[-3000:]
     assert not (tmp_path / f"{name}.csv.rows.jsonl").exists()  # (the journal gave way to the CSV)

@@ -80,3 +80,18 @@ def test_the_deadlines_are_parameters_with_bounds_one_per_kind():
     assert set(contain.kinds()) == {"participants", "missions", "planners", "cues", "metrics", "load"}
     with pytest.raises(ParamsError, match="plugin_deadline_metrics_s must be positive"):
         build(contain.PluginDeadlines, {"plugin_deadline_metrics_s": 0.0}, where="/**: ")
+
+
+def test_a_plugin_whose_import_hangs_is_left_out_at_the_load_deadline_in_one_line():
+    from fake_plugins import Entry
+
+    from haven_sim.common import plugins
+
+    class Hangs(Entry):
+        def load(self):
+            sleeps()
+
+    with contain.use(contain.PluginDeadlines(plugin_deadline_load_s=0.2)):
+        reg = plugins.load("missions", [Hangs("stuck", "lab.m:Stuck", "lab_m")])
+    assert reg.names() == []
+    assert reg.problems == ["haven.missions stuck (lab.m:Stuck, from lab_m): does not load: took longer than its deadline of 0.2 s"]

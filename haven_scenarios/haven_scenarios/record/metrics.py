@@ -96,7 +96,8 @@ def compute(
     t0, t1 = window
     tl = Timeline.of(rec, t0, t1)
     events = sorted((replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp)
-    m["duration_s"], data, failed = _r(t1 - t0, 2), TrialData(tl, events, rec, t0, t1, world, robot), []
+    m["duration_s"], data = _r(t1 - t0, 2), TrialData(tl, events, rec, t0, t1, world, robot)
+    failed: list[str] = []
     registered = plugins.registry("metrics")
     for name in (*OURS, *(n for n in registered.names() if n not in OURS)):
         m.update(_one(name, registered.get(name), data, m, failed))

@@ -142,6 +142,7 @@ def call(kind: str, name: str, fn: Callable[..., T], *args: Any, expected: tuple
     PluginFailed from a call nested in it passes through unchanged (while a nested call runs, only
     its deadline is watched)."""
     limit = _deadlines.of(kind)
+    passing: tuple[type[Exception], ...] = (PluginFailed, *expected)
     tid = threading.get_ident()
     me, outer = _Call(kind, name, time.monotonic() + limit), _active.get(tid)
     _start_watchdog(tid)
@@ -159,7 +160,7 @@ def call(kind: str, name: str, fn: Callable[..., T], *args: Any, expected: tuple
                     ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(tid), None)  # (one sent but not yet raised: withdrawn)
     except Overrun:
         raise PluginFailed(kind, name, f"took longer than its deadline of {limit:g} s") from None
-    except (PluginFailed, *expected):
+    except passing:
         raise
     except Exception as e:  # noqa: BLE001 - a plugin may fail in any way; its trial says so
         from haven_sim.common.plugins import failure
