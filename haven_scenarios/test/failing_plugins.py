@@ -2,9 +2,10 @@
 into a folder put on PYTHONPATH: nothing is built or pip-installed), for the tests that every
 plugin call is contained (haven_sim/common/contain.py).
 
-Participant models `raiser` and `hanger` walk as HAVEN's walker for FAIL_AFTER_S of their trial,
-then raise or hang for good; the metric `flaky` raises or hangs as LAB_METRIC says (`raise`,
-`hang`; anything else: a column of its own), so one installation serves every case."""
+Participant models `raiser`, `hanger` and `stuck` walk as HAVEN's walker for FAIL_AFTER_S of their
+trial, then raise, hang for good, or hang where no exception can reach them (as C code would); the
+metric `flaky` raises or hangs as LAB_METRIC says (`raise`, `hang`; anything else: a column of its
+own), so one installation serves every case."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from pathlib import Path
 FAIL_AFTER_S = 1.0
 MODULE = """
 import os
+import signal
 import time
 
 from haven_scenarios.study.participants import Walker
@@ -45,6 +47,13 @@ class Hanger(_Failing):
                 pass
 
 
+class Stuck(_Failing):  # (stuck where no exception can land, signals blocked: as C code that never returns)
+
+    def fail(self):
+        signal.pthread_sigmask(signal.SIG_BLOCK, signal.valid_signals())
+        time.sleep(3600)
+
+
 def flaky(data):
     mode = os.environ.get("LAB_METRIC", "")
     if mode == "raise":
@@ -58,6 +67,7 @@ ENTRY_POINTS = """\
 [haven.participants]
 raiser = lab_failing:Raiser
 hanger = lab_failing:Hanger
+stuck = lab_failing:Stuck
 
 [haven.metrics]
 flaky = lab_failing:flaky

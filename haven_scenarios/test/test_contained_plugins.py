@@ -38,9 +38,13 @@ def batch(tmp_path: Path, env: dict[str, str], grid: str, workers: int, name: st
 
 def test_a_raising_and_a_hanging_participant_model_end_their_own_trials_not_the_sweep(tmp_path):
     env = install(tmp_path / "site")
-    rows, took = batch(tmp_path, env, "model=walker,raiser,hanger", 2, "people")
+    rows, took = batch(tmp_path, env, "model=walker,raiser,hanger,stuck", 2, "people")
     by_model = {row["model"]: row for row in rows}
-    assert list(by_model) == ["walker", "raiser", "hanger"] and took < 60.0
+    assert list(by_model) == ["walker", "raiser", "hanger", "stuck"] and took < 60.0
+    # One stuck where no deadline can interrupt it: its worker process is ended, the row says why.
+    stuck = by_model.pop("stuck")
+    assert stuck["valid"] == "False" and stuck["end_reason"] == "plugin_failed" and stuck["duration_s"] == ""
+    assert stuck["invalid_reasons"] == "participant model stuck failed (still running 4 s past its deadline of 0.5 s, where it cannot be interrupted)"
     assert by_model["walker"]["valid"] == "True" and by_model["walker"]["end_reason"] == "completed"
     assert by_model["raiser"]["invalid_reasons"] == "participant model raiser failed (RuntimeError: the lab's model broke)"
     assert by_model["hanger"]["invalid_reasons"] == f"participant model hanger failed ({HANG} 0.5 s)"

@@ -127,7 +127,11 @@ class _Call:
     kind: str
     name: str
     deadline: float
-    sent: bool = False
+    sent: int = 0  # how often Overrun was sent
+
+
+STUCK_SENDS = 5  # sent this often (a second apart) and still running: stuck where no exception lands (C code)
+on_stuck: Callable[[PluginFailed], None] | None = None  # then called once, from the watchdog (a batch worker: ends its process)
 
 
 _active: dict[int, _Call] = {}
@@ -198,7 +202,10 @@ def _watch() -> None:
             for tid, c in list(_active.items()):
                 if now <= c.deadline:
                     continue
-                c.sent, c.deadline = True, now + 1.0
+                c.sent, c.deadline = c.sent + 1, now + 1.0
+                if c.sent == STUCK_SENDS and on_stuck is not None:
+                    why = f"still running {c.sent - 1} s past its deadline of {_deadlines.of(c.kind):g} s, where it cannot be interrupted"
+                    on_stuck(PluginFailed(c.kind, c.name, why))
                 if tid == main and _SIGNAL is not None and _handler_pid == os.getpid():
                     signal.pthread_kill(tid, _SIGNAL)
                 else:
