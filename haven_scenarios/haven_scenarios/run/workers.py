@@ -26,7 +26,6 @@ from haven_sim.common import contain
 
 Item = TypeVar("Item")
 Result = TypeVar("Result")
-STUCK_EXIT = 70  # a worker's exit code after its watchdog found a plugin stuck
 Lost = Callable[[Any, str, bool], Any]  # (item, why, a plugin was stuck) -> its result
 
 
@@ -40,7 +39,7 @@ def _serve(conn: Connection, task: Callable[[Any], Any]) -> None:
 
     def stuck(failed: contain.PluginFailed) -> None:
         conn.send(("stuck", failed.reason))
-        os._exit(STUCK_EXIT)
+        os._exit(contain.STUCK_EXIT)
 
     contain.on_stuck = stuck
     while (item := conn.recv()) is not None:

@@ -131,6 +131,7 @@ class _Call:
 
 
 STUCK_SENDS = 5  # sent this often (a second apart) and still running: stuck where no exception lands (C code)
+STUCK_EXIT = 70  # the exit code of a process that ends itself for a stuck plugin (a batch worker, a node)
 on_stuck: Callable[[PluginFailed], None] | None = None  # then called once, from the watchdog (a batch worker: ends its process)
 
 
