@@ -4,6 +4,7 @@ sleep) and in any other (a busy plugin), also for a plugin that swallows every E
 
 from __future__ import annotations
 
+import pickle
 import threading
 import time
 
@@ -49,6 +50,7 @@ def test_a_raise_is_one_line_naming_kind_plugin_and_error():
     event = contain.failed_event(e, 2.0, "scenario")
     assert event.kind is EventKind.PLUGIN_FAILED and dict(event.data) == {"kind": "participants", "name": "shy", "error": "RuntimeError: broke"}
     assert contain.failures([event]) == [e.reason]
+    assert str(pickle.loads(pickle.dumps(e))) == e.reason  # (from a worker process to the sweep)
 
 
 @pytest.mark.parametrize("hang", [sleeps, spins])

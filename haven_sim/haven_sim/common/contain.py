@@ -7,12 +7,15 @@ looks at the calls under way every WATCH_S and, for one past its deadline, raise
 it: in the main thread by a real-time signal whose handler raises (this also breaks a `time.sleep`
 or a lock wait), in another thread by `PyThreadState_SetAsyncExc` (Python code only; a call blocked
 in C is interrupted when it comes back). `Overrun` is a BaseException, so a plugin's own `except
-Exception` cannot swallow it. What no watchdog can break (a C extension that never returns) is the
-batch sweep's to end (run/sweep.py: the worker process is killed and the trial's row written not
-valid).
+Exception` cannot swallow it. A call no exception reaches (C code that never returns, signals
+blocked) is found stuck after STUCK_SENDS tries and `on_stuck` is called: a sweep's worker process
+(haven_scenarios/run/workers.py) or a node (nodes/component_node.py) then says so and ends itself,
+and the sweep writes the trial's row not valid (the suite's supervisor ends the trial).
 
 The deadlines are parameters of every node (`PluginDeadlines`, the "/**" section of a parameter
-file), set for the process by the node or the batch trial (`use`).
+file), set for the process by the node or the batch trial (`use`). Their defaults are ours, far
+above what HAVEN's own items take (milliseconds a call; a metric group, a second at most), so that
+only a plugin that is stuck meets them on a loaded machine.
 """
 
 from __future__ import annotations
@@ -96,6 +99,9 @@ class PluginFailed(Exception):  # noqa: N818 - the project's word for it (`plugi
     @property
     def reason(self) -> str:
         return str(self)
+
+    def __reduce__(self) -> tuple[Any, ...]:  # (it crosses from a worker process to the sweep)
+        return PluginFailed, (self.kind, self.name, self.error)
 
 
 def failed_event(failed: PluginFailed, now: float, source: str) -> Event:
