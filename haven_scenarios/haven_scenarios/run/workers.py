@@ -92,8 +92,11 @@ def run_on_workers(items: Sequence[Item], task: Callable[[Item], Result], worker
     try:
         pool = [_start(task) for _ in range(min(workers, len(todo)))]
         while todo or any(w.busy for w in pool):
-            for w in pool:
+            for k, w in enumerate(pool):
                 if not w.busy and todo:
+                    if not w.process.is_alive():  # (ended while idle: replaced before it is given work)
+                        _end(w)
+                        pool[k] = w = _start(task)
                     w.item, w.busy = todo.popleft(), True
                     w.conn.send(w.item)
             ready = wait([w.conn for w in pool if w.busy] + [w.process.sentinel for w in pool if w.busy])
