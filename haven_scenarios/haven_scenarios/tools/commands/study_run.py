@@ -73,7 +73,8 @@ class StudyRun:
         return StudyRun(**values)
 
 
-class Stopped(Exception):
+class Stopped(BaseException):  # noqa: N818 - (as KeyboardInterrupt: raised wherever the trial is, a plugin's call included,
+    # which contains every Exception: common/contain.py)
     """A stop signal arrived: the study stops after the current trial has ended cleanly."""
 
 
