@@ -25,7 +25,8 @@ def test_a_hanging_participant_model_and_metric_end_a_recorded_trial_not_valid_w
     (session,) = (tmp_path / "s").iterdir()
     info = json.loads((session / "session.json").read_text())
     reasons = [f"participant model hanger failed ({HANG} 1 s)", f"metric flaky failed ({HANG} 10 s)"]
-    assert info["valid"] is False and info["end_reason"] == "plugin_failed" and info["invalid_reasons"] == reasons
+    assert info["valid"] is False and info["end_reason"] == "plugin_failed"
+    assert [r for r in info["invalid_reasons"] if " failed (" in r] == reasons  # (a loaded machine may add its own: a bag repaired)
     events = [json.loads(line) for line in (session / "events.jsonl").read_text().splitlines()]
     (failed,) = [e for e in events if e["type"] == "plugin_failed"]
     assert (failed["source"], failed["kind"], failed["name"]) == ("scenario", "participants", "hanger")
