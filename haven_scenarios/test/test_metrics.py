@@ -13,7 +13,7 @@ from haven_scenarios.record.outsiders import Declared, PublisherLog, open_topics
 from haven_scenarios.record.timeline import Recording
 from haven_scenarios.record.validity import _stream
 from haven_sim.common import topics
-from haven_sim.common.events import EventKind, Source, event
+from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.common.state import Goal, RobotState
 from haven_sim.runtime.component import Message
@@ -245,12 +245,14 @@ def test_a_plan_or_a_goal_the_log_names_but_the_recording_lacks_is_flagged_and_p
     assert any(r.startswith("events: ") and "scenario's missing" in r for r in compute(early)["invalid_reasons"])
 
 
-def test_a_cue_that_failed_makes_a_session_not_valid():
+def test_a_plugin_that_failed_makes_a_session_not_valid_by_one_rule_and_so_does_an_older_recordings_cue_failed():
     rec = straight()
     assert compute(rec)["valid"]
-    events(rec, event(EventKind.CUE_FAILED, 2.0, "viz", cue="floor_arrows", error="ValueError: broke"))
-    reasons = compute(rec)["invalid_reasons"]
-    assert reasons == ["cue floor_arrows failed (ValueError: broke): the condition was not shown as designed"]
+    events(rec, Event(EventKind.PLUGIN_FAILED, 2.0, "scenario", {"kind": "participants", "name": "shy", "error": "ValueError: broke"}))
+    assert compute(rec)["invalid_reasons"] == ["participant model shy failed (ValueError: broke)"]
+    old = straight()
+    events(old, event(EventKind.CUE_FAILED, 2.0, "viz", cue="floor_arrows", error="ValueError: broke"))
+    assert compute(old)["invalid_reasons"] == ["cue floor_arrows failed (ValueError: broke)"]
 
 
 def test_a_message_the_lockstep_clock_never_got_and_an_outside_publisher_make_a_session_not_valid():
@@ -348,4 +350,5 @@ def test_a_metric_plugin_adds_its_columns_and_a_failing_one_says_why_in_its_own(
     keys = list(before)
     assert keys[: len(alone) - 3] == list(alone)[: len(alone) - 3]  # ours first, in our order (validity last)
     assert before["broken_error"] == "RuntimeError: no data" and before["thief_error"] == "would overwrite duration_s"
+    assert before["valid"] is False and before["invalid_reasons"] == ["metric broken failed (RuntimeError: no data)"]  # (the thief: its column only)
     assert before["seconds_within_2m"] >= 0 and before["duration_s"] == alone["duration_s"]

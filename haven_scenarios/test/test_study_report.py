@@ -31,6 +31,7 @@ def test_per_person_metrics_become_human_and_measure_and_strings_are_not_measure
         ("completed", True),
         ("timeout", True),
         ("stopped", True),
+        ("plugin_failed", True),  # it ended, not valid with the reason: the study goes on (a plugin fails again)
         ("contact; bag repaired (120 messages recovered)", True),
         ("aborted", False),  # the researcher called it off: it runs again
         ("interrupted (stopped by a signal)", False),

@@ -19,7 +19,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from haven_sim.common import plugins
+from haven_sim.common import contain, plugins
 from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import param
 from haven_sim.robots.description import Kinematics, RobotDescription
@@ -194,8 +194,9 @@ class CueFrame:
 
 class ArCues:
     """The cues of one robot: the path it follows and one object per cue (`names`: all registered)
-    that serves the robot's kind (the others it does not have). A cue whose code raises (a lab's,
-    being written) is in `failed` and shows nothing from then on; the others and the trial go on, and the viz says so (a `cue_failed` event)."""
+    that serves the robot's kind (the others it does not have). A cue whose code raises or overruns its
+    deadline (common/contain.py) is in `failed` and shows nothing from then on; the viz says so (a
+    `plugin_failed` event), which ends the trial, not valid."""
 
     def __init__(self, params: CueParams | None = None, names: Sequence[str] | None = None, robot: RobotDescription = DEFAULT) -> None:
         self.params = params or CueParams()
@@ -207,9 +208,9 @@ class ArCues:
         self.flight_z_m = flight.cruise_height_m if flight is not None and robot.kinematics is Kinematics.AERIAL else 0.0
         for n in self.names:
             try:
-                self.cues[n] = CUE_CLASSES[n](self.params)
-            except Exception as e:  # noqa: BLE001 - a lab's cue may fail in any way; the trial and the other cues go on
-                self.failed[n] = plugins.failure(e)
+                self.cues[n] = contain.call("cues", n, CUE_CLASSES[n], self.params)
+            except contain.PluginFailed as e:
+                self.failed[n] = e.error
         self.set_path([])
         self.manoeuvre = NO_MANOEUVRE  # the navigator's pass under way (the viz reads it from its events)
 
@@ -259,9 +260,9 @@ class ArCues:
             if name in self.failed or not toggles.on(name):
                 continue
             try:
-                shown = cue.show(ctx, markers)
-            except Exception as e:  # noqa: BLE001 - as above
-                self.failed[name] = plugins.failure(e)
+                shown = contain.call("cues", name, cue.show, ctx, markers)
+            except contain.PluginFailed as e:
+                self.failed[name] = e.error
                 continue
             if shown is None:
                 continue

@@ -14,7 +14,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
-from haven_sim.common import nodes, topics
+from haven_sim.common import contain, nodes, topics
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
@@ -155,13 +155,13 @@ class VizComponent:
         return out + self.tick(now)
 
     def _failures(self, now: float) -> list[Message]:
-        """A `cue_failed` event (and a warning) for each cue whose code raised since the last tick."""
+        """A `plugin_failed` event (and a warning) for each cue whose code failed since the last tick."""
         out = []
         for cue, error in self.cues.failed.items():
             if cue not in self.told:
                 self.told.add(cue)
                 self.warnings.append(f"cue {cue} failed and is not shown from now on: {error}")
-                out.append(Message(topics.EVENTS, event(EventKind.CUE_FAILED, now, Source.VIZ, cue=cue, error=error), now))
+                out.append(Message(topics.EVENTS, contain.failed_event(contain.PluginFailed("cues", cue, error), now, Source.VIZ), now))
         return out
 
     def viewer_joined(self) -> None:

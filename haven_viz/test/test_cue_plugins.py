@@ -97,9 +97,9 @@ def test_a_cue_that_raises_shows_nothing_from_then_on_and_is_said_once(monkeypat
     for k, x in enumerate((0.0, 1.0, 1.5, 2.0)):
         viz.on_odom(RobotState(Pose2D(x, 0.0, 0.0)), 0.1 * k)
         out = viz.tick(0.1 * k)
-        failed += [m.data for m in out if m.topic == topics.EVENTS and m.data.kind is EventKind.CUE_FAILED]
+        failed += [m.data for m in out if m.topic == topics.EVENTS and m.data.kind is EventKind.PLUGIN_FAILED]
         state = [m.data for m in out if m.topic == topics.CUE_STATE]
         if x > 0.5 and state:
             assert not state[-1].shown("flaky") and state[-1].path_markers > 0  # (the others go on)
-    assert [(e["cue"], e["error"]) for e in failed] == [("flaky", "ValueError: flaky cue broke")]
+    assert [(e["kind"], e["name"], e["error"]) for e in failed] == [("cues", "flaky", "ValueError: flaky cue broke")]
     assert viz.warnings == ["cue flaky failed and is not shown from now on: ValueError: flaky cue broke"]

@@ -22,7 +22,7 @@ from haven_scenarios.record.outsiders import Declared
 from haven_scenarios.record.timeline import Recording, Timeline
 from haven_scenarios.record.validity import check
 from haven_scenarios.study.participants import HUMAN_PLANNER
-from haven_sim.common import plugins
+from haven_sim.common import contain, plugins
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import FloatArray, wrap_angle
@@ -96,26 +96,26 @@ def compute(
     t0, t1 = window
     tl = Timeline.of(rec, t0, t1)
     events = sorted((replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp)
-    m["duration_s"] = _r(t1 - t0, 2)
-    data = TrialData(tl, events, rec, t0, t1, world, robot)
+    m["duration_s"], data = _r(t1 - t0, 2), TrialData(tl, events, rec, t0, t1, world, robot)
+    failed: list[str] = []
     registered = plugins.registry("metrics")
     for name in (*OURS, *(n for n in registered.names() if n not in OURS)):
-        m.update(_one(name, registered.get(name), data, m))
+        m.update(_one(name, registered.get(name), data, m, failed))
     m.update(check(rec, window, declared))
+    m.update(valid=m["valid"] and not failed, invalid_reasons=[*m["invalid_reasons"], *failed])  # (as for any plugin that failed)
     return m
 
 
-def _one(name: str, metric: Any, data: TrialData, have: Mapping[str, Any]) -> dict[str, Any]:
-    """One metric plugin's columns; a plugin that fails, or would overwrite a column, gets a
-    `<name>_error` column saying why (one line) instead: the other metrics stand."""
+def _one(name: str, metric: Any, data: TrialData, have: Mapping[str, Any], failed: list[str]) -> dict[str, Any]:
+    """One metric plugin's columns, called as every plugin is (common/contain.py); one that fails (its
+    reason in `failed`) or would overwrite a column gets a `<name>_error` column instead: the others stand."""
     try:
-        got = dict(metric(data))
-    except Exception as e:  # noqa: BLE001 - a lab's metric may fail in any way; the trial's metrics stand
-        return {f"{name}_error": plugins.failure(e)}
+        got = dict(contain.call("metrics", name, metric, data))
+    except contain.PluginFailed as e:
+        failed.append(e.reason)
+        return {f"{name}_error": e.error}
     taken = sorted(k for k in got if k in have)
-    if taken:
-        return {f"{name}_error": f"would overwrite {', '.join(taken[:3])}"}
-    return got
+    return {f"{name}_error": f"would overwrite {', '.join(taken[:3])}"} if taken else got
 
 
 def robot(d: TrialData) -> dict[str, Any]:

@@ -6,8 +6,8 @@ source (`seq`), so a missing one shows too, and the planner's and the scenario's
 /goal_pose they publish, so a missing plan or goal shows; the recorder notes every message DDS reports lost,
 and a loss on a topic the metrics read counts; a trial must have ended with `trial_end`; and no
 publisher from outside the suite may have been there before it ended (`record/outsiders.py`), nor
-the planner have planned before it began (for an outside goal); and no cue may have failed (its code
-raised: the condition was not shown as designed); and no participant may have been away (their
+the planner have planned before it began (for an outside goal); and no plugin may have failed (its code
+raised or overran its deadline: `plugin_failed`, common/contain.py); and no participant may have been away (their
 page disconnected) for longer than MAX_AWAY_S while it ran on without them (`web/presence.py`: with
 `on_disconnect: pause` it stood still instead, and a participant not back in time aborts it).
 """
@@ -24,6 +24,7 @@ from haven_scenarios.record.outsiders import METRIC_TOPICS, Declared, judge
 from haven_scenarios.record.timeline import Recording
 from haven_scenarios.web.presence import MAX_AWAY_S
 from haven_sim.common import topics
+from haven_sim.common.contain import failures
 from haven_sim.common.events import PLAN_POSES, EventKind, Source
 
 MIN_COVERAGE = 0.99
@@ -142,11 +143,7 @@ def check(rec: Recording, window: tuple[float, float] | None, declared: Declared
         early, early_noted = _planned_before_start(rec, window, declared)
         reasons, noted = reasons + early, noted + early_noted
     reasons += _missing_events(rec, window)
-    reasons += [
-        f"cue {e['cue']} failed ({e['error']}): the condition was not shown as designed"
-        for e in rec.events
-        if e.kind is EventKind.CUE_FAILED and (window is None or e.stamp <= window[1] + 1e-6)
-    ]
+    reasons += failures(e for e in rec.events if window is None or e.stamp <= window[1] + 1e-6)
     reasons += [
         f"{e['topic']}: {e['messages']} of the suite's message(s) never reached {e.source} on the lockstep clock"
         for e in rec.events

@@ -101,12 +101,15 @@ def run_batch(
 def summary(rows: Sequence[dict[str, Any]]) -> str:
     n = len(rows)
     done = sum(1 for r in rows if r["end_reason"] == EndReason.COMPLETED)
-    times = [r["robot_time_to_finish_s"] for r in rows if r["robot_time_to_finish_s"] is not None]
+    # (.get: a trial a plugin ended before it began has none of these)
+    times = [r["robot_time_to_finish_s"] for r in rows if r.get("robot_time_to_finish_s") is not None]
     finish = f"robot finishes in {sum(times) / len(times):.1f} s on average" if times else "the robot finished in no trial"
-    contacts = sum(r["human_contacts"] for r in rows)
-    distances = [r["min_human_centre_distance_m"] for r in rows if r["min_human_centre_distance_m"] is not None]
+    contacts = sum(r.get("human_contacts") or 0 for r in rows)
+    distances = [r["min_human_centre_distance_m"] for r in rows if r.get("min_human_centre_distance_m") is not None]
     closest = f"closest approach {min(distances):.2f} m (the least of any trial)" if distances else "no person in any trial"
-    return f"{done}/{n} completed, {finish}, {contacts} human contact(s), {closest}{_people(rows)}{_exposure(rows)}"
+    failed = sum(1 for r in rows if r["end_reason"] == EndReason.PLUGIN_FAILED)
+    plugins = f", {failed} ended by a plugin that failed (see invalid_reasons)" if failed else ""
+    return f"{done}/{n} completed{plugins}, {finish}, {contacts} human contact(s), {closest}{_people(rows)}{_exposure(rows)}"
 
 
 def _exposure(rows: Sequence[dict[str, Any]]) -> str:

@@ -41,5 +41,6 @@ def run_batch_session(
     metrics = {**result.metrics, "participant": participant, "session": folder.name}
     write_json(folder / METRICS_FILE, metrics)
     info.update(end_reason=str(result.end_reason), duration_s=metrics["duration_s"], valid=metrics["valid"], outcome=str(result.end_reason))
+    info.update(invalid_reasons=metrics.get("invalid_reasons", []))  # (as a recorded trial's session.json says them)
     write_json(folder / SESSION_FILE, info)
     return folder, metrics

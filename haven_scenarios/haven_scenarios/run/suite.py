@@ -12,6 +12,7 @@ from typing import Any
 
 from haven_scenarios.study.director import ScenarioNodeConfig
 from haven_sim.common import nodes
+from haven_sim.common.contain import PluginDeadlines
 from haven_sim.common.params import WILDCARD, ParamsError, build, check_names, defaults, flatten, load_params_file, node_values, render_params_file
 from haven_sim.common.topics import WireParams
 from haven_sim.common.yaml_file import file_label, short
@@ -39,7 +40,8 @@ SHARED = (
     MotionStyle,
     LockstepParams,
     WireParams,
-)  # one section: the robot, HAVEN's turning rule, the lockstep switch, the velocity topics' type
+    PluginDeadlines,
+)  # one section: the robot, HAVEN's turning rule, the lockstep switch, the velocity topics' type, plugin deadlines
 HEADER = """Parameters of every HAVEN node, with their defaults (pass with --params-file to `haven sim`,
 `haven run` or `haven batch`, or to any node). Generated from the config dataclasses by
 `python -m haven_scenarios.run.suite`: edit those, not this file. The "/**" section applies to
@@ -59,6 +61,7 @@ class SuiteConfig:
     viz: VizConfig = field(default_factory=VizConfig)
     scenario: ScenarioNodeConfig = field(default_factory=ScenarioNodeConfig)
     lockstep: LockstepParams = field(default_factory=LockstepParams)  # every node's
+    deadlines: PluginDeadlines = field(default_factory=PluginDeadlines)  # every node's (and batch mode's)
 
     def by_node(self) -> dict[str, Any]:
         """Node name -> its config."""
@@ -70,7 +73,7 @@ def render(config: SuiteConfig | None = None, header: str = HEADER) -> str:
     if config is None:
         return render_params_file(NODES, SHARED, header)
     values: dict[str, Any] = {name: flatten(c) for name, c in config.by_node().items()}
-    values[WILDCARD] = flatten(config.sim.robot) | flatten(config.planner.style) | flatten(config.lockstep)
+    values[WILDCARD] = flatten(config.sim.robot) | flatten(config.planner.style) | flatten(config.lockstep) | flatten(config.deadlines)
     return render_params_file(NODES, SHARED, header, values)
 
 
@@ -80,13 +83,15 @@ def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None, label: s
     p = params or {}
     where = f"{label}: " if label else ""
     made = {f.name: build(cls, node_values(p, name), where=f"{where}{name}: ") for (name, cls), f in zip(NODES, fields(SuiteConfig))}
-    return SuiteConfig(**made, lockstep=build(LockstepParams, node_values(p, nodes.SIM.name), where=f"{where}sim_node: "))
+    shared = node_values(p, nodes.SIM.name)  # (the "/**" section's values, as every node reads them)
+    lockstep = build(LockstepParams, shared, where=f"{where}sim_node: ")
+    return SuiteConfig(**made, lockstep=lockstep, deadlines=build(PluginDeadlines, shared, where=f"{where}sim_node: "))
 
 
 # Parameters every node has beside its config: rclpy's own (a node declares them itself) and what
 # every component node declares (the velocity topics' type, the lockstep switch).
 ROS_BUILTIN = {"use_sim_time": False, "start_type_description_service": True}
-EVERY_NODE = (WireParams, LockstepParams)
+EVERY_NODE = (WireParams, LockstepParams, PluginDeadlines)
 
 
 def known_parameters() -> dict[str, dict[str, Any]]:

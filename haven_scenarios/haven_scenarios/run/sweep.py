@@ -14,10 +14,7 @@ dependencies add about 37 MB), a `LocalCluster` needs no daemon, and a lab's mac
 from __future__ import annotations
 
 import functools
-import multiprocessing
 import os
-import signal
-import threading
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any, TypeVar
 
@@ -25,6 +22,8 @@ from haven_scenarios.record.report import csv_row
 from haven_scenarios.run.grid import TrialSpec
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.trial import run_trial
+from haven_scenarios.run.workers import Lost, run_on_workers
+from haven_scenarios.study.rules import EndReason
 
 Row = dict[str, Any]
 Done = tuple[int, Row]  # a trial's index and metrics
@@ -52,46 +51,33 @@ def row_of(spec: TrialSpec, metrics: Row) -> Row:
 
 def run_rows(specs: Sequence[TrialSpec], suite: SuiteConfig | None = None, workers: int = 1, cluster: str | None = None) -> Iterator[Row]:
     """Every spec's row, in the order the trials finish."""
-    done = farm(specs, functools.partial(_indexed, suite=suite), workers, cluster)
+    done = farm(specs, functools.partial(_indexed, suite=suite), workers, cluster, _lost)
     by_index = {s.index: s for s in specs}
     return (row_of(by_index[i], metrics) for i, metrics in done)
 
 
-def farm(items: Sequence[Item], task: Callable[[Item], Result], workers: int = 1, cluster: str | None = None) -> Iterator[Result]:
+def farm(
+    items: Sequence[Item], task: Callable[[Item], Result], workers: int = 1, cluster: str | None = None, lost: Lost | None = None
+) -> Iterator[Result]:
     """`task` of every item (a picklable, module-level function), in the order they finish: here,
-    on `workers` processes or on the Dask `cluster`. Trials use it; so does `haven study power`."""
+    on `workers` processes (run/workers.py: one whose worker ends without a result gives `lost`'s)
+    or on the Dask `cluster`. Trials use it; so does `haven study power`."""
     if cluster is not None:
         return _on_dask(items, task, cluster, workers)
     if workers <= 1 or len(items) <= 1:
         return map(task, items)
-    return _on_processes(items, task, workers)
+    return run_on_workers(items, task, workers, lost)
 
 
 def _indexed(spec: TrialSpec, suite: SuiteConfig | None) -> tuple[int, Row]:
     return spec.index, run_spec(spec, suite)
 
 
-def _ignore_interrupts() -> None:
-    """In a worker: Ctrl-C is the parent's to handle (it stops the pool), not each worker's traceback."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-
-
-def _on_processes(specs: Sequence[Item], task: Callable[[Item], Result], workers: int) -> Iterator[Result]:
-    """A pool of fresh worker processes. A failed trial or a Ctrl-C stops the sweep: the workers are
-    terminated (the trials they were running are lost; the finished ones have been yielded)."""
-    main = threading.current_thread() is threading.main_thread()  # (only the main thread may set handlers)
-    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None  # inherited: a Ctrl-C while they start is not theirs
-    try:
-        pool = multiprocessing.get_context("spawn").Pool(min(workers, len(specs)), initializer=_ignore_interrupts)
-    finally:
-        if main:
-            signal.signal(signal.SIGINT, previous)
-    try:
-        yield from pool.imap_unordered(task, specs, chunksize=1)
-        pool.close()
-    finally:
-        pool.terminate()
-        pool.join()
+def _lost(spec: TrialSpec, why: str, stuck: bool) -> Done:
+    """A trial whose worker process was ended without its row (a plugin stuck where its deadline
+    cannot interrupt it, or a crash): its row, not valid with the reason."""
+    reason = EndReason.PLUGIN_FAILED if stuck else EndReason.INTERRUPTED
+    return spec.index, {"scenario": spec.scenario.name, "end_reason": str(reason), "duration_s": None, "valid": False, "invalid_reasons": [why]}
 
 
 def _on_dask(specs: Sequence[Item], task: Callable[[Item], Result], cluster: str, workers: int) -> Iterator[Result]:

@@ -21,6 +21,7 @@ from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.study.director import TrialDirector
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario
+from haven_sim.common import contain
 from haven_sim.nav.controller import ControllerComponent
 from haven_sim.nav.mux import MuxComponent
 from haven_sim.nav.planning import PlannerComponent, world_lanes
@@ -127,4 +128,6 @@ class Trial:
 
 
 def run_trial(scenario: Scenario, seed: int = 0, toggles: CueToggles | None = None, suite: SuiteConfig | None = None) -> TrialResult:
-    return Trial(scenario, seed, toggles, suite).run()
+    """The trial with the suite's plugin deadlines (common/contain.py): a plugin that fails ends it not valid."""
+    with contain.use(suite.deadlines if suite is not None else None):
+        return Trial(scenario, seed, toggles, suite).run()

@@ -17,12 +17,13 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from haven_scenarios.study.mission import Mission, MissionOutput, Phase, Target
-from haven_scenarios.study.participants import HUMAN_PLANNER, Participant, Stop, make_walker, shuffled_nearest
+from haven_scenarios.study.cast import make_participants, robot_targets
+from haven_scenarios.study.mission import Mission, MissionOutput, Phase
+from haven_scenarios.study.participants import Participant
 from haven_scenarios.study.perception import BY_FIELD, Percept, Sight, cue_ways, perceive
 from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules, TrialCommand, TrialState
 from haven_scenarios.study.scenario import Scenario
-from haven_sim.common import topics
+from haven_sim.common import contain, topics
 from haven_sim.common.events import GOAL_POSE, Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
@@ -63,44 +64,6 @@ class ScenarioNodeConfig:
     hold_start: bool = param(False, "the trial starts only on a `start` on /haven/trial_control (the researcher console's Start)")
 
 
-def robot_targets(scenario: Scenario) -> list[Target]:
-    w = scenario.world
-    if scenario.kind == "hallway":
-        return [Target(r, *w.room(r).centre, f"room {r}") for r in scenario.robot_route]
-    return [Target(g.id, g.position[0], g.position[1], f"gem {g.id}") for g in w.gems if g.owner == "robot"]
-
-
-def _aside(planner: GridPlanner, stop: Stop, offset_m: float = 1.2) -> Stop:
-    """A free spot diagonally off a room centre, for a participant who has finished."""
-    for dx, dy in ((1, 1), (-1, 1), (1, -1), (-1, -1)):
-        x, y = stop.x + dx * offset_m, stop.y + dy * offset_m
-        if planner.is_free(x, y):
-            return Stop(x, y, 0.0, 0.2)
-    return stop
-
-
-def make_participants(scenario: Scenario, grid: OccupancyGridData, seed: int) -> dict[str, Participant]:
-    """The simulated participants (teleoperated ones are driven by a person, not here)."""
-    planner = GridPlanner(grid, HUMAN_PLANNER)
-    w = scenario.world
-    starts = {h.id: h.start for h in w.humans}
-    out: dict[str, Participant] = {}
-    for k, task in enumerate(scenario.humans):
-        if task.teleoperated:
-            continue
-        s = seed * 101 + k
-        if scenario.kind == "hallway":
-            stops = [Stop(*w.room(r).centre, dwell_s=0.0, reach_m=0.3) for r in task.route]
-            if stops:  # done, a person steps out of the way instead of standing on the room's centre
-                stops.append(_aside(planner, stops[-1]))
-        else:
-            gems = [Stop(g.position[0], g.position[1], dwell_s=scenario.dwell_time_s + 0.5, reach_m=0.12) for g in w.gems if g.owner == "human"]
-            start = starts[task.id]
-            stops = shuffled_nearest(gems, (start.x, start.y), s)
-        out[task.id] = make_walker(task.model, task.id, stops, planner, task.speed_mps, s, task.params)
-    return out
-
-
 class TrialDirector:
     name = "scenario"
     unread: frozenset[str] = frozenset()
@@ -114,6 +77,7 @@ class TrialDirector:
         self._status = ""
         self.planner: GridPlanner | None = None
         self.participants: dict[str, Participant] = {}
+        self.models = {h.id: h.model for h in scenario.humans}  # (each one's plugin, named when it fails)
         w = scenario.world
         self.gems = GemRules(w.gems, scenario.dwell_time_s)
         routes: dict[str, Sequence[str]] = {}
@@ -170,20 +134,23 @@ class TrialDirector:
         first = self.planner is None
         self.planner = GridPlanner(grid)
         self.sight = Sight(grid)
-        if first:
-            self.participants = make_participants(self.scenario, grid, self.seed)
-            kind = self.scenario
-            self.mission = Mission(
-                robot_targets(kind),
-                self.path_length,
-                "fixed" if kind.kind == "hallway" else kind.robot_order,
-                kind.battery,
-                kind.world.charging_base.position if kind.world.charging_base else None,
-                self.seed,
-            )
-            return []
-        # The world changed (an obstruction went away): plan the current goal again.
-        return self._mission_messages(self.mission.resend() if self.mission else MissionOutput(), now)
+        try:
+            if first:
+                self.participants = make_participants(self.scenario, grid, self.seed)
+                kind = self.scenario
+                self.mission = Mission(
+                    robot_targets(kind),
+                    self.path_length,
+                    "fixed" if kind.kind == "hallway" else kind.robot_order,
+                    kind.battery,
+                    kind.world.charging_base.position if kind.world.charging_base else None,
+                    self.seed,
+                )
+                return []
+            # The world changed (an obstruction went away): plan the current goal again.
+            return self._mission_messages(self.mission.resend() if self.mission else MissionOutput(), now)
+        except contain.PluginFailed as e:
+            return self._failed(e, now)
 
     def on_odom(self, state: RobotState, now: float) -> list[Message]:
         self.robot = state
@@ -216,6 +183,9 @@ class TrialDirector:
         away on someone else's errand (`diverted`: the mission asks again once it stands still)."""
         if e.kind is EventKind.CONTACT_BEGIN and str(e["other"]).startswith("human"):
             self.contact = True
+        if e.kind in (EventKind.PLUGIN_FAILED, EventKind.CUE_FAILED) and self.ended is None:  # (another node's plugin: the trial ends)
+            self.ended = EndReason.PLUGIN_FAILED
+            return [self._event(EventKind.TRIAL_END, now, reason=self.ended)] + self._status_messages(now)
         goal = e.get("goal")
         if e.kind in (EventKind.PLAN_MADE, EventKind.PLAN_REFUSED) and self.sent_goal is not None and isinstance(goal, list) and len(goal) == 2:
             self.diverted = math.dist(goal, (self.sent_goal.x, self.sent_goal.y)) > GOAL_MATCH_M
@@ -310,8 +280,17 @@ class TrialDirector:
 
     def tick(self, now: float) -> list[Message]:
         self.last_tick = now
-        out = self._tick(now) if self.ended is None and self._ready() else []
+        try:
+            out = self._tick(now) if self.ended is None and self._ready() else []
+        except contain.PluginFailed as e:  # (a participant model or the mission behaviour: what this tick made is dropped)
+            return self._failed(e, now)
         return out + self._status_messages(now)
+
+    def _failed(self, e: contain.PluginFailed, now: float) -> list[Message]:
+        """A plugin of this node failed (raised or overran its deadline): the trial ends, not valid."""
+        self.ended = EndReason.PLUGIN_FAILED
+        failed = Message(topics.EVENTS, contain.failed_event(e, now, Source.SCENARIO), now)
+        return [failed, self._event(EventKind.TRIAL_END, now, reason=self.ended)] + self._status_messages(now)
 
     def _tick(self, now: float) -> list[Message]:
         mission, robot, level = self.mission, self.robot, self.level
@@ -353,7 +332,8 @@ class TrialDirector:
                 me = self.humans[hid]
                 others = [pose for other, pose in self.humans.items() if other != hid]
                 self.percepts[hid] = seen = perceive(walker.params, sight, now, me, robot, cues, markers, ways, self.scenario.robot.radius_m)
-                out.append(Message(topics.human_cmd_vel(hid), walker.command(now, me, robot, seen, others), now))
+                cmd = contain.call("participants", self.models[hid], walker.command, now, me, robot, seen, others)
+                out.append(Message(topics.human_cmd_vel(hid), cmd, now))
         fired = self.gems.update(now, robot, self.humans) + self.routes.update(now, {"robot": robot, **self.humans})
         fired += self.obstructions.update(now, self.humans)
         out += [Message(topics.EVENTS, e, now) for e in fired]

@@ -32,7 +32,7 @@ from typing import Any
 
 from haven_scenarios.study.mission_orders import MissionBehaviour, PathLength
 from haven_scenarios.study.scenario import BatteryPlan
-from haven_sim.common import plugins
+from haven_sim.common import contain, plugins
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
 
@@ -85,9 +85,9 @@ class Mission:
             raise ValueError("a battery mode other than 'off' needs a charging base")
         self.path_length = path_length
         self.order = order
-        self.behaviour: MissionBehaviour = plugins.registry("missions").get(order)()
+        self.behaviour: MissionBehaviour = contain.call("missions", order, plugins.registry("missions").get(order))
         self.base = base
-        self.pending = self.behaviour.arrange(targets, seed)
+        self.pending = contain.call("missions", order, self.behaviour.arrange, targets, seed)
         self.phase = Phase.IDLE
         self.current: Target | None = None
         self.done_ids: list[str] = []
@@ -112,7 +112,7 @@ class Mission:
         candidates = [t for t in self.pending if t.id not in self.last_only] or self.pending
         if not candidates:
             return None
-        picked: Target = self.behaviour.pick(candidates, robot, self.path_length)
+        picked: Target = contain.call("missions", self.order, self.behaviour.pick, candidates, robot, self.path_length)
         return picked
 
     def _say(self, out: MissionOutput, text: str) -> None:

@@ -34,7 +34,7 @@ from haven_scenarios.study.perception import Percept, ahead_of
 from haven_scenarios.study.person import PersonParams, individual
 from haven_scenarios.study.scenario import HumanTask, Scenario
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
-from haven_sim.common import plugins
+from haven_sim.common import contain, plugins
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, Twist2D, wrap_angle
 from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
@@ -377,12 +377,10 @@ def make_walker(
 ) -> Participant:
     """A simulated participant of the named model (the names a scenario file uses): a plugin of
     kind `participants` (ours: walker, blocker and yielder, in setup.py), a class or factory that
-    takes these arguments and returns a `Participant`."""
+    takes these arguments and returns a `Participant`. One that raises or overruns its deadline:
+    `contain.PluginFailed` (its trial ends, not valid)."""
     factory = plugins.registry("participants").get(model)
-    try:
-        made: Participant = factory(human_id, stops, planner, speed_mps, seed, params or PersonParams())
-    except Exception as e:  # noqa: BLE001 - a lab's model may fail in any way: one line naming it
-        raise plugins.PluginError(f"participant model {model!r} could not be made for {human_id}: {plugins.failure(e)}") from None
+    made: Participant = contain.call("participants", model, factory, human_id, stops, planner, speed_mps, seed, params or PersonParams())
     return made
 
 

@@ -8,7 +8,8 @@
             <scenario>_<participant>_<time>/   session.json, metrics.json, events.jsonl, ...
 
 A trial is done when one of its attempts has a finished outcome (the trial ended: completed,
-timeout, contact, battery_empty, or stopped by the researcher) and ran as the schedule says
+timeout, contact, battery_empty, stopped by the researcher, or plugin_failed: a plugin's code
+failed, the trial is not valid with the reason and the study goes on, as a sweep does) and ran as the schedule says
 (scenario, cues and seed, as its session.json records them), and is never run again; an attempt
 that was interrupted, cut short, or aborted by the researcher is kept, and the trial runs again; so
 is a finished attempt that ran otherwise (the study was re-planned with another seed or condition
@@ -33,7 +34,7 @@ from haven_scenarios.study.schedule import PlannedTrial, assignment, schedule
 from haven_sim.common import atomic
 
 STORED = "study.json"
-FINISHED = (EndReason.COMPLETED, EndReason.TIMEOUT, EndReason.CONTACT, EndReason.BATTERY_EMPTY, EndReason.STOPPED)
+FINISHED = (EndReason.COMPLETED, EndReason.TIMEOUT, EndReason.CONTACT, EndReason.BATTERY_EMPTY, EndReason.STOPPED, EndReason.PLUGIN_FAILED)
 
 
 def finished(outcome: Any) -> bool:

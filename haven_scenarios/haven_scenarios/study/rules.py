@@ -142,6 +142,7 @@ class EndReason(StrEnum):
     INTERRUPTED = "interrupted"  # stopped before a `trial_end` (Ctrl-C, a node died)
     STOPPED = "stopped"  # the researcher ended the trial early (the console's stop)
     ABORTED = "aborted"  # the researcher called the trial off (the console's abort): not for analysis
+    PLUGIN_FAILED = "plugin_failed"  # a plugin's code raised or overran its deadline (a `plugin_failed` event says which): not valid
 
 
 class TrialState(StrEnum):

@@ -57,7 +57,7 @@ from haven_scenarios.tools.domains import DomainBusy, DomainRange
 from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_environment
 from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.web.tls import tls_files
-from haven_sim.common import nodes
+from haven_sim.common import contain, nodes
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import ParamsError
 from haven_sim.robots.robot_kind import resolve_robot
@@ -356,10 +356,13 @@ def _new_session(plan: SessionPlan, sessions: Path) -> tuple[Path, dict[str, Any
 
 
 def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float, picture: bool = True) -> dict[str, Any]:
-    """Metrics from the bag, the session record completed, the trajectory picture."""
-    metrics, world, rec = analyse(folder)
+    """Metrics from the bag (metric plugins within the parameter file's deadline), the session record
+    completed (valid, and why not), the trajectory picture."""
+    with contain.use(plan.base.deadlines):
+        metrics, world, rec = analyse(folder)
     write_json(folder / METRICS_FILE, metrics)
     info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
+    info.update(invalid_reasons=metrics.get("invalid_reasons", []))
     if recorder_stop.KEY in info:
         info[recorder_stop.KEY] = recorder_stop.judged(info[recorder_stop.KEY], folder / "bag", rec)
     info["wall_clock"] = trial_wall_clock(folder)

@@ -47,7 +47,7 @@ class EventKind(StrEnum):
     GOAL_REACHED = "goal_reached"  # goal, pose
     # viz
     CUE_TOGGLED = "cue_toggled"  # cue, on
-    CUE_FAILED = "cue_failed"  # cue, error: a cue's code raised; it shows nothing from then on (the session is not valid)
+    CUE_FAILED = "cue_failed"  # cue, error: what recordings before plugin_failed said of a cue that raised (read as plugin_failed)
     # scenario and mission executive
     TRIAL_START = "trial_start"
     TARGET_SELECTED = "target_selected"
@@ -65,6 +65,7 @@ class EventKind(StrEnum):
     TASK_DONE = "task_done"  # by
     TRIAL_END = "trial_end"  # reason
     # any node
+    PLUGIN_FAILED = "plugin_failed"  # kind, name, error: a plugin raised or overran its deadline (common/contain.py): the trial ends, not valid
     REQUEST_REFUSED = "request_refused"  # request (parameter | service), name, reason: somebody asked what a running trial does not allow
     # any node on the lockstep clock (nodes/lockstep.py)
     OUTSIDE_INPUT = "outside_input"  # topic, ignored, taken, dropped: messages from outside the suite since the last one
@@ -98,6 +99,7 @@ REQUIRED: dict[EventKind, tuple[str, ...]] = {
     EventKind.OBSTRUCTION_REMOVED: ("id",),
     EventKind.CUE_TOGGLED: ("cue", "on"),
     EventKind.CUE_FAILED: ("cue", "error"),
+    EventKind.PLUGIN_FAILED: ("kind", "name", "error"),
     EventKind.GEM_COLLECTED: ("gem", "by"),
     EventKind.ROOM_REACHED: ("room", "by"),
     EventKind.OBSTRUCTION_CLEARED: ("id",),

@@ -8,8 +8,9 @@ HAVEN's own items register exactly as a lab's package does, in its setup.py::
 
 A scenario file, a study file, a `--grid` axis or a command-line option names an item; batch mode
 and every node look it up here, so both run the same code. A broken plugin (it does not import, it
-is not what its kind needs, its name is taken) is left out with one line naming it
-(`Registry.problems`, shown by `haven plugins`); it never breaks the others.
+is not what its kind needs, its name is taken, its import outlasts `plugin_deadline_load_s`) is left
+out with one line naming it (`Registry.problems`, shown by `haven plugins`); it never breaks the
+others. Every call into a plugin's code during a trial is contained the same way (common/contain.py).
 """
 
 from __future__ import annotations
@@ -21,6 +22,8 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import cache
 from typing import Any
+
+from haven_sim.common import contain
 
 GROUP_PREFIX = "haven."
 NAME = re.compile(r"^[a-z][a-z0-9_]{0,39}$")  # what a scenario or study file can write unquoted
@@ -114,10 +117,10 @@ def _take(entry: importlib.metadata.EntryPoint, reg: Registry, accept: Callable[
         return "a name must be lower-case letters, digits and _ (at most 40), starting with a letter"
     if entry.name in reg.items:
         return f"the name is taken by {reg.items[entry.name].package}"
-    try:
-        value = entry.load()
-    except Exception as e:  # noqa: BLE001 - a plugin's import may fail in any way; the others go on
-        return f"does not load: {failure(e)}"
+    try:  # (within the load deadline: an import that hangs is left out as one that raises)
+        value = contain.call("load", entry.name, entry.load)
+    except contain.PluginFailed as e:
+        return f"does not load: {e.error}"
     try:
         value = accept(entry.name, value)
     except ValueError as e:

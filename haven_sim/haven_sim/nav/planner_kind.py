@@ -15,9 +15,9 @@ from __future__ import annotations
 import inspect
 from typing import Any, Protocol
 
-from haven_sim.common import plugins
+from haven_sim.common import contain, plugins
 from haven_sim.common.geometry import Point
-from haven_sim.nav.planner import Plan
+from haven_sim.nav.planner import GridPlanner, Plan, PlanFailure, PlanningError
 
 DEFAULT = "visibility"
 
@@ -34,5 +34,39 @@ def accept_plugin(name: str, value: Any) -> Any:
 
 
 def planner_class(name: str) -> Any:
-    """The planner registered as `name` (PluginError naming the known ones otherwise)."""
-    return plugins.registry("planners").get(name)
+    """The planner registered as `name` (PluginError naming the known ones otherwise); a lab's
+    `Contained` (ours, HAVEN's `visibility`, is trusted: the navigator asks it things beyond plans)."""
+    found = plugins.registry("planners").get(name)
+    return found if found is GridPlanner else Contained(name, found)
+
+
+class Contained:
+    """A lab's planner called as every plugin is (common/contain.py): made like its class, it makes
+    searches whose failures (a raise other than PlanningError, or an overrun of the deadline) are a
+    PlanningError for the navigator (the goal refused) and kept in `failed` for the trial to end on."""
+
+    def __init__(self, name: str, made_by: Any) -> None:
+        self.name, self.made_by = name, made_by
+        self.failed: list[contain.PluginFailed] = []
+
+    def __call__(self, grid: Any, params: Any) -> PathSearch:
+        try:
+            return _Search(self, contain.call("planners", self.name, self.made_by, grid, params))
+        except contain.PluginFailed as e:
+            self.failed.append(e)
+            return _Search(self, None)
+
+
+class _Search:
+    def __init__(self, owner: Contained, inner: Any) -> None:
+        self.owner, self.inner = owner, inner
+
+    def plan(self, start: Point, goal: Point) -> Plan:
+        if self.inner is None:
+            raise PlanningError("the planner could not be made", PlanFailure.UNKNOWN)
+        try:
+            made: Plan = contain.call("planners", self.owner.name, self.inner.plan, start, goal, expected=(PlanningError,))
+        except contain.PluginFailed as e:
+            self.owner.failed.append(e)
+            raise PlanningError(f"the planner failed: {e.error}", PlanFailure.UNKNOWN) from None
+        return made

@@ -14,7 +14,7 @@ import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
-from haven_sim.common import nodes, plugins, topics
+from haven_sim.common import contain, nodes, plugins, topics
 from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import POSITIVE, Bounds, check_bounds, group, param
@@ -25,7 +25,7 @@ from haven_sim.nav.navigator import Navigator, NavOutput
 from haven_sim.nav.navigator_params import NavigatorParams
 from haven_sim.nav.path_style import ShapeParams
 from haven_sim.nav.planner import PlannerParams
-from haven_sim.nav.planner_kind import planner_class
+from haven_sim.nav.planner_kind import Contained, planner_class
 from haven_sim.robots.fields import RobotChoice
 from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.occupancy import OccupancyGridData
@@ -90,6 +90,7 @@ class PlannerComponent:
         self.burst, self.burst_start = 0, 0.0  # goals since the last STORM_QUIET_S without one, and when the first came
         self.notes: list[str] = []  # for the node's log
         self.warnings: list[str] = []
+        self.told_failure = False  # the lab's planner failed and a `plugin_failed` event said so
 
     @property
     def period_s(self) -> float:
@@ -175,7 +176,16 @@ class PlannerComponent:
         if self.nav is None or self.robot is None:
             return []
         out = self._try_pending(now) + self._storm_over(now)
-        return out + self._messages(self.nav.update(self.robot, self.humans, now), now)
+        return self._failures(now) + out + self._messages(self.nav.update(self.robot, self.humans, now), now)
+
+    def _failures(self, now: float) -> list[Message]:
+        """A `plugin_failed` event for the lab's planner's first failure (common/contain.py): the trial ends, not valid."""
+        search = self.nav.search_class if self.nav is not None else None
+        if not isinstance(search, Contained) or not search.failed or self.told_failure:
+            return []
+        self.told_failure = True
+        self.warnings.append(search.failed[0].reason)
+        return [Message(topics.EVENTS, contain.failed_event(search.failed[0], now, Source.PLANNER), now)]
 
     def _storm_over(self, now: float) -> list[Message]:
         """A goal storm ends after STORM_QUIET_S without a goal: one event with how many it brought."""

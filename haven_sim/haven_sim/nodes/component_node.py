@@ -9,6 +9,7 @@ warning naming the topic, and the node keeps running.
 
 from __future__ import annotations
 
+import os
 import time
 from collections import deque
 from collections.abc import Callable, Mapping, Sequence
@@ -26,7 +27,7 @@ from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
 from rclpy.serialization import serialize_message
 from rclpy.subscription import Subscription
 
-from haven_sim.common import topics
+from haven_sim.common import contain, topics
 from haven_sim.common.events import Event, EventKind, Sequencer, event
 from haven_sim.common.params import ParamsError, bounds_of, build, defaults, docs, ros_range
 from haven_sim.common.topics import WireParams
@@ -41,6 +42,7 @@ from haven_sim.runtime.suite_messages import InputLimit
 C = TypeVar("C")
 CATCH_UP_S = 10.0  # wall time after start-up in which a latched reader picks up what latched publishers sent
 CATCH_UP_POLL_S = 0.2  # how often the graph is read for it
+STUCK_DELIVERY_S = 1.0  # wall time a node whose plugin is stuck gives DDS to deliver the event that says so
 CLOCK_LEAP_S = 60.0  # a jump of the clock this large either way is no simulator's step
 FLOOD_RATE_HZ, FLOOD_BURST = 200.0, 200  # per input topic, sim time: 4x the fastest the suite sends (/odom: 50 Hz)
 
@@ -146,6 +148,8 @@ class ComponentNode(Node):
             if spec is not None:  # (no spec: TF where tf2_msgs is not installed)
                 self._pubs[topic] = self.create_publisher(spec.msg_type, topic, spec.pub_qos)
         self.lockstep_params = self.declare_config(LockstepParams)
+        contain.set_deadlines(self.declare_config(contain.PluginDeadlines))  # (for every plugin call in this process)
+        contain.on_stuck = self._plugin_stuck
         self.lockstep_mode = self.lockstep_params.lockstep
         if self.lockstep_mode:  # (the simulator, which runs the clock, reads its inputs itself)
             if participant:
@@ -189,6 +193,16 @@ class ComponentNode(Node):
         self.publish(component.tick(now))
         if self._pace is not None:
             self._pace.publish(self._specs[topics.PACE_NAV].encode(now, now))
+
+    def _plugin_stuck(self, failed: contain.PluginFailed) -> None:
+        """A plugin's call stuck where its deadline cannot interrupt it (common/contain.py; called from
+        the watchdog's thread): said on the study log and in the log, then this process ends (the
+        suite's supervisor ends the trial; the recording has the reason)."""
+        now = self.now()
+        self.get_logger().error(f"{failed.reason}: this node ends")
+        self.publish([Message(topics.EVENTS, contain.failed_event(failed, now, getattr(self.component, "name", self.get_name())), now)])
+        time.sleep(STUCK_DELIVERY_S)
+        os._exit(contain.STUCK_EXIT)
 
     def _check_types(self) -> None:
         """A publisher of another type on a topic we read never matches (DDS drops it without a
