@@ -128,9 +128,10 @@ class StudyInstruments:
         return bool(self.first or self.after)
 
 
-def read_consent(path: Path, max_bytes: int) -> str:
-    """A consent file's text, read when the study is loaded (so a study runs with what it said);
-    ValueError (one line) when it is not a readable regular file of UTF-8 within `max_bytes`."""
+def read_text(path: Path, max_bytes: int) -> str:
+    """A small text file a study names (a consent text, an allow-list of ids, a link secret), read
+    when the study is loaded (so a study runs with what it said); ValueError (one line) when it is
+    not a readable regular file of UTF-8 within `max_bytes`."""
     if not path.is_file():  # (not a FIFO or a device, which would block or never end)
         raise ValueError(f"{path} is not a readable regular file")
     try:

@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Annotated, TypeVar
 
 from haven_scenarios.record.session import check_name
+from haven_scenarios.study.instruments import read_text
 from haven_sim.common.schema import FileModel, Positive, Whole, checked
 from haven_sim.common.yaml_file import file_label, short
 
@@ -79,24 +80,11 @@ class Online(FileModel):
     link_secret_file: Annotated[str, checked(_file)] = ""  # signed links: the secret the panel signs each id with
 
 
-def _read(path: Path, limit: int) -> str:
-    if not path.is_file():  # (not a FIFO or a device, which would block or never end)
-        raise ValueError(f"{path} is not a readable regular file")
-    try:
-        with path.open("rb") as f:
-            raw = f.read(limit + 1)
-        if len(raw) > limit:
-            raise ValueError(f"{path} is longer than {limit} bytes")
-        return raw.decode("utf-8")
-    except (OSError, UnicodeDecodeError) as e:
-        raise ValueError(f"cannot read {path}: {getattr(e, 'strerror', None) or e}") from None
-
-
 def read_ids(path: str) -> frozenset[str]:
     """An allow-list file's ids (one a line; blank lines and '#' comments left out); ValueError
     (one line) for a file that cannot be read, an id that is not one, or no id at all."""
     ids = []
-    for n, line in enumerate(_read(Path(path), MAX_LIST_BYTES).splitlines(), 1):
+    for n, line in enumerate(read_text(Path(path), MAX_LIST_BYTES).splitlines(), 1):
         text = line.split("#", 1)[0].strip()
         if text:
             ids.append(check_name(text, f"{path} line {n}"))
@@ -108,7 +96,7 @@ def read_ids(path: str) -> frozenset[str]:
 def read_secret(path: str) -> bytes:
     """A link secret file's secret (its text without the line end); ValueError (one line) when
     shorter than MIN_SECRET_BYTES."""
-    secret = _read(Path(path), 4096).strip().encode()
+    secret = read_text(Path(path), 4096).strip().encode()
     if len(secret) < MIN_SECRET_BYTES:
         raise ValueError(f"{path}: a link secret of at least {MIN_SECRET_BYTES} characters is needed, got {len(secret)}")
     return secret

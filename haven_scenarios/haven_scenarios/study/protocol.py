@@ -39,7 +39,7 @@ from pydantic import Field
 
 from haven_scenarios.record.session import check_name
 from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
-from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference, read_consent
+from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference, read_text
 from haven_scenarios.study.online import Online, resolved
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
@@ -377,7 +377,7 @@ class _StudyParser:
         if value.file is not None:
             path = Path(value.file)
             try:
-                text = read_consent(path if path.is_absolute() else Path(self.source).parent / path, 4 * MAX_CONSENT_CHARS)
+                text = read_text(path if path.is_absolute() else Path(self.source).parent / path, 4 * MAX_CONSENT_CHARS)
             except ValueError as e:
                 raise self.fail("consent.file", str(e)) from None
         text = (text or "").strip()
