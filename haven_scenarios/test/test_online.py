@@ -86,9 +86,12 @@ class NoRedirect(urllib.request.HTTPRedirectHandler):
 
 
 def get(url: str, form: dict | None = None, headers: dict | None = None) -> tuple[int, str, dict]:
-    """A request as a client that keeps no cookies (unless `headers` has them); a POST with `form`."""
+    """A request as a client that keeps no cookies (unless `headers` has them); a POST with `form`,
+    with the Origin a browser sends (a header given as "" is left out)."""
     data = urllib.parse.urlencode(form).encode() if form is not None else None
-    request = urllib.request.Request(url, data=data, headers=headers or {})
+    parts = urllib.parse.urlsplit(url)
+    sent = {**({"Origin": f"{parts.scheme}://{parts.netloc}"} if form is not None else {}), **(headers or {})}
+    request = urllib.request.Request(url, data=data, headers={k: v for k, v in sent.items() if v != ""})
     try:
         with urllib.request.build_opener(NoRedirect).open(request, timeout=10) as r:
             return r.status, r.read().decode(), dict(r.headers)
@@ -240,6 +243,7 @@ def test_a_burst_of_get_and_post_joins_from_one_client_without_cookies_takes_at_
 def gated(tmp_path: Path) -> StudyServer:
     (tmp_path / "ids.txt").write_text("# the panel's ids\nANNA\nBEN  # a comment\n\nCARL\n")
     (tmp_path / "secret.txt").write_text("s3cret-s3cret-s3cret-s3cret\n")
+    (tmp_path / "secret.txt").chmod(0o600)
     online = "online:\n  allowed_ids: ids.txt\n  link_secret_file: secret.txt\n  join_limit: {places: 0}\n"
     return server(tmp_path, text=STUDY.replace("participants: 2", "participants: 4").replace("online:\n", online))
 
@@ -267,6 +271,7 @@ def test_one_place_per_browser_signed_links_and_an_allow_list(tmp_path):
         assert s.join_url.endswith("/?participant=ID&sig=SIG")
         assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": "http://elsewhere.example"})[0] == 403
         assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": "null"})[0] == 403
+        assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": ""})[0] == 403  # not from a browser's page
         assert join(s.base, "BEN", sig=sig["BEN"])[2]["Location"].startswith("/session/p02?key=")
     finally:
         s.httpd.shutdown()
@@ -275,11 +280,15 @@ def test_one_place_per_browser_signed_links_and_an_allow_list(tmp_path):
 
 def test_the_online_keys_files_are_checked_when_the_study_is_loaded(tmp_path):
     (tmp_path / "short.txt").write_text("abc\n")
+    (tmp_path / "short.txt").chmod(0o600)
+    (tmp_path / "shared.txt").write_text("s3cret-s3cret-s3cret-s3cret\n")
+    (tmp_path / "shared.txt").chmod(0o644)
     (tmp_path / "bad_ids.txt").write_text("ok_id\nnot an id\n")
     for online, says in (
         ("{allowed_ids: missing.txt}", r"online.allowed_ids: .*missing.txt is not a readable regular file"),
         ("{allowed_ids: bad_ids.txt}", r"online.allowed_ids: .*bad_ids.txt line 2: must be"),
         ("{link_secret_file: short.txt}", "online.link_secret_file: .*at least 16 characters"),
+        ("{link_secret_file: shared.txt}", "online.link_secret_file: .*others can read this link secret: chmod 600"),
         ("{join_limit: {places: -1}}", r"online.join_limit.places: must be a whole number 0..999"),
     ):
         with pytest.raises(StudyError, match=says):

@@ -95,6 +95,8 @@ BURGER = yaml.safe_load((Path(catalogue.__file__).parent / "turtlebot3_burger.ya
         ({"frames": {"base_link": "robot/2nd_link"}}, "frames.base_link: must be a ROS frame name"),
         ({"lidar": {**BURGER["lidar"], "frame": "base__scan"}}, "lidar.frame: must be a ROS frame name"),
         ({"lidar": {**BURGER["lidar"], "frame": "base_link"}}, "frames.base_link: 'base_link' is also lidar.frame"),
+        ({"frames": {"base_link": "odom"}}, "frames.base_link: 'odom' is a frame of the world"),
+        ({"frames": {"base": "map"}}, "frames.base: 'map' is a frame of the world"),
     ],
 )
 def test_a_bad_robot_file_is_one_line_naming_the_key(change, key, tmp_path):

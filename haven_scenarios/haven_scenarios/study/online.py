@@ -95,7 +95,9 @@ def read_ids(path: str) -> frozenset[str]:
 
 def read_secret(path: str) -> bytes:
     """A link secret file's secret (its text without the line end); ValueError (one line) when
-    shorter than MIN_SECRET_BYTES."""
+    others than its owner may read it or it is shorter than MIN_SECRET_BYTES."""
+    if Path(path).exists() and Path(path).stat().st_mode & 0o077:
+        raise ValueError(f"{path}: others can read this link secret: chmod 600 {path}")
     secret = read_text(Path(path), 4096).strip().encode()
     if len(secret) < MIN_SECRET_BYTES:
         raise ValueError(f"{path}: a link secret of at least {MIN_SECRET_BYTES} characters is needed, got {len(secret)}")
@@ -104,7 +106,7 @@ def read_secret(path: str) -> bytes:
 
 def resolved(online: Online | None, source: str, error: type[E]) -> Online:
     """A study file's `online` key with its files found (relative to the study file) and read
-    once, so `haven study check` names a bad one; `error` (one line: file, key, problem) if not."""
+    once, so `haven validate` names a bad one; `error` (one line: file, key, problem) if not."""
     online = online or Online()
     paths = {}
     for key, read in (("allowed_ids", read_ids), ("link_secret_file", read_secret)):

@@ -126,9 +126,7 @@ def cookie_place(h: BaseHTTPRequestHandler) -> tuple[str, str]:
 
 
 def same_origin(h: BaseHTTPRequestHandler) -> bool:
-    """A POST from our own page: its Origin (which browsers send with every POST) names the host it
-    was sent to; a request without one (not from a browser) passes."""
+    """A POST from our own page: its Origin (which browsers send with every POST form) names the
+    host it was sent to; a request without one is not from a page of ours, and takes no place."""
     origin = h.headers.get("Origin")
-    if origin is None:
-        return True
-    return origin.split("://", 1)[-1].rstrip("/") == (h.headers.get("Host") or "")
+    return origin is not None and origin.split("://", 1)[-1].rstrip("/") == (h.headers.get("Host") or "")

@@ -32,6 +32,7 @@ NEXT_LINE = re.compile(r"haven study: next: (.+)$")
 PAGE_GONE = ("haven: session in ", "haven study: next: ")  # the page printed before is over
 STOP_WAIT_S = 30.0  # a stopped runner ends its trial cleanly within this, else it is killed
 LOG = "online.log"  # in the participant's folder
+NEXT_URL_ENV = "HAVEN_NEXT_URL"  # the runner's next page (it holds the session key): in its environment, not its command line
 
 
 def token(url: str) -> str:

@@ -34,7 +34,7 @@ from haven_scenarios.web import online_pages as pages
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, redirect, reply, reply_json, token_cookie
 from haven_scenarios.web.online_gate import SIG_PARAM, TOO_MANY, Gate, Refusal, cookie_place, place_cookie, same_origin
-from haven_scenarios.web.online_runner import LOG, Runner
+from haven_scenarios.web.online_runner import LOG, NEXT_URL_ENV, Runner
 from haven_scenarios.web.online_seats import LIVE, Full, Seat, Seats, Standing, standing
 from haven_scenarios.web.presence import OnDisconnect
 
@@ -143,7 +143,10 @@ class StudyServer:
                 del self.waiting[p]
                 if seat is not None:
                     self.starts[p] += 1
-                    self.runners[p] = Runner(p, self.runner_argv(seat), os.environ, self.o.root / p)
+                    # (the next page's address holds the session key: in the environment, which only
+                    # its owner can read, not on the command line, which `ps` shows anyone)
+                    env = {**os.environ, NEXT_URL_ENV: f"{self.base}/session/{seat.participant}?key={seat.key}"}
+                    self.runners[p] = Runner(p, self.runner_argv(seat), env, self.o.root / p)
                     print(f"serve: {seat.panel_id} ({p}): session started (pid {self.runners[p].proc.pid})", flush=True)
 
     def _ended_runner(self, p: str, runner: Runner) -> None:
@@ -161,9 +164,8 @@ class StudyServer:
         o = self.o
         port = next((q for q in range(o.trial_ports[0], o.trial_ports[1] + 1) if q not in self.ports.values()), 0) if o.trial_ports else 0
         self.ports[seat.participant] = port
-        next_url = f"{self.base}/session/{seat.participant}?key={seat.key}"
         argv = [sys.executable, "-m", "haven_scenarios", "study", "run", o.study, "--participant", seat.participant, "--dir", str(o.root)]
-        argv += ["--web", "--no-pause", "--host", o.host, "--port", str(port), "--next-url", next_url]
+        argv += ["--web", "--no-pause", "--host", o.host, "--port", str(port)]
         argv += ["--on-disconnect", o.on_disconnect, "--reconnect-timeout", str(o.reconnect_timeout)]
         argv += ["--tls-cert", o.tls[0], "--tls-key", o.tls[1]] if o.tls else []
         argv += ["--params-file", o.params_file] if o.params_file else []

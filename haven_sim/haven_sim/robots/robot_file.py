@@ -106,6 +106,7 @@ XY = Annotated[tuple[float, float], checked(_xy)]
 Triple = Annotated[tuple[float, float, float], checked(_triple)]
 Colour = Annotated[str, checked(_colour)]
 Frame = Annotated[str, checked(_frame)]
+WORLD_FRAMES = ("map", "odom")  # REP-105's fixed frames, the simulator's map_frame and odom_frame defaults
 
 
 class FootprintFile(FileModel):
@@ -221,6 +222,8 @@ class RobotFileModel(FileModel):
             raise ValueError("lidar.range_min_m: must be below range_max_m")
         frames = {"frames.base": self.frames.base, "frames.base_link": self.frames.base_link, "lidar.frame": self.lidar.frame}
         for key, name in frames.items():
+            if name in WORLD_FRAMES:
+                raise ValueError(f"{key}: {name!r} is a frame of the world the simulator publishes (REP-105), not of the robot")
             other = next((k for k, n in frames.items() if n == name and k != key), None)
             if other is not None:
                 raise ValueError(f"{key}: {name!r} is also {other} (each frame of the TF tree needs its own name)")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -28,6 +29,7 @@ from haven_scenarios.study.schedule import (
 )
 from haven_scenarios.tools.commands import power as power_step
 from haven_scenarios.tools.commands.common import PORT, add_dropout_options, add_ros_options, add_tls_options, existing_file, fail
+from haven_scenarios.web.online_runner import NEXT_URL_ENV
 
 SHOWN_SEQUENCES = 24  # `plan` lists the design's sequences up to this many
 
@@ -51,7 +53,12 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run.add_argument("--port", type=PORT, default=8088, help="with --web: port of the pages")
     add_tls_options(run)
     add_dropout_options(run)
-    run.add_argument("--next-url", default=None, metavar="URL", help="with --web: the participant's browser goes here after each page (haven serve)")
+    run.add_argument(
+        "--next-url",
+        default=os.environ.get(NEXT_URL_ENV),
+        metavar="URL",
+        help=f"with --web: the participant's browser goes here after each page (default: ${NEXT_URL_ENV}, where haven serve puts it)",
+    )
     run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN", help="these humans (default: all) are driven by the participant")
     run.add_argument("--no-pause", action="store_true", help="with a person: do not wait for Enter between trials")
     run.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every trial")
