@@ -118,8 +118,10 @@ def test_serve_hands_the_range_to_every_participants_runner_and_refuses_one_smal
     study.write_text("name: d\nscenarios: [hallway]\nconditions: {none: [none]}\nparticipants: 2\n")
     server = open_server(str(study), tmp_path / "st", port=0, capacity=2, domains="30-39")
     try:
-        argv = server.runner_argv(server.seats.join("PANEL_1"))
+        seat = server.seats.join("PANEL_1")
+        argv = server.runner_argv(seat)
         assert argv[argv.index("--domains") + 1] == "30-39"
+        assert not any(seat.key in a for a in argv)  # the session key is not on the command line (`ps` shows it to anyone)
     finally:
         server.httpd.server_close()
     with pytest.raises(ValueError, match=r"^--domains 30-30: fewer ROS domains than --capacity 2 \(each participant's trial takes one\)$"):
