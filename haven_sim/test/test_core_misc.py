@@ -5,6 +5,7 @@ import math
 import pytest
 
 from haven_sim.common.geometry import Pose2D, Twist2D
+from haven_sim.common.topics import PACE_IDLE
 from haven_sim.nav.mux import ESTOP, IDLE, NAV, TELEOP, VelocityMux
 from haven_sim.sim.odometry import Odometry, OdometryNoise
 from haven_sim.sim.pacer import ControlPace, Pacer
@@ -82,6 +83,8 @@ def test_a_control_loop_that_falls_behind_slows_the_clock_without_a_burst_after(
     for t, w in ((1.0, 0.0), (1.05, 0.05), (1.55, 0.6)):
         late.report(t, w)
     assert late.allowed_steps(1.55, step, 0.6) == 5
+    late.report(PACE_IDLE, 0.7)  # the controller drives nothing now: nothing is held
+    assert late.allowed_steps(9.0, step, 0.7) is None
 
 
 def test_mux_priorities_and_timeouts():

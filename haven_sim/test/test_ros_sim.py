@@ -221,7 +221,7 @@ def test_estop_from_default_qos_publishers_several_at_once_and_a_latched_one_bef
     ros.start(MUX, {"estop_hold_s": 4.0})
     ros.wait_matched(out)
     ros.wait_matched(nav)
-    assert ros.spin_until(lambda: latched.get_subscription_count() >= 2)  # the mux's volatile and latched readers
+    assert ros.spin_until(lambda: latched.get_subscription_count() >= 3)  # the mux's volatile (reliable, best effort) and latched readers
     assert latched.wait_for_all_acked(Duration(seconds=5.0))  # the stop has reached both
 
     def drives(seconds):

@@ -41,6 +41,7 @@ TRIAL_CONTROL = "haven/trial_control"
 # Hidden (a leading `_`): not recorded, not listed by `ros2 topic list` without --include-hidden-topics.
 PACE_NAV = "haven/_pace_nav"
 PACE = "haven/_pace"
+PACE_IDLE = float(2**31 - 1)  # said on them while the controller drives nothing (the latest time a Clock holds): hold nothing
 
 
 # The simulator's state streams: a reader needs only the newest message (a node that handles them

@@ -48,7 +48,7 @@ class ControllerConfig:
 class ControllerComponent:
     name = nodes.CONTROLLER.name
     unread: frozenset[str] = frozenset()
-    paces_clock = True  # on the free-running clock, sim time waits for this loop (topics.PACE)
+    paces_clock = True  # on the free-running clock, sim time waits for this loop (topics.PACE) while `pacing`
 
     def __init__(self, config: ControllerConfig | None = None) -> None:
         self.config = config or ControllerConfig()
@@ -59,6 +59,7 @@ class ControllerComponent:
         self._active = False  # the last tick drove or rotated the robot
         self._plan: list[Pose2D] = []
         self.corrections = 0  # times the robot came to rest off its goal and went back to it
+        self.pacing = False  # the last tick drove the robot, or stopped it: the clock waits for its command
         self.notes: list[str] = []  # logged by the node
 
     @property
@@ -101,6 +102,7 @@ class ControllerComponent:
         # Publish while moving, once more when it stops (a zero), and while told to wait.
         if moving or self._active or status is Status.WAITING:
             out.append(Message(topics.CMD_VEL_NAV, cmd, now))
+        self.pacing = moving or self._active
         self._active = moving
         goal = self.follower.goal
         if status is Status.ARRIVED and before is not Status.ARRIVED and goal is not None:

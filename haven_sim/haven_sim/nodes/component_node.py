@@ -192,7 +192,8 @@ class ComponentNode(Node):
         now = self.now()
         self.publish(component.tick(now))
         if self._pace is not None:
-            self._pace.publish(self._specs[topics.PACE_NAV].encode(now, now))
+            acted_at = now if getattr(component, "pacing", True) else topics.PACE_IDLE
+            self._pace.publish(self._specs[topics.PACE_NAV].encode(acted_at, now))
 
     def _plugin_stuck(self, failed: contain.PluginFailed) -> None:
         """A plugin's call stuck where its deadline cannot interrupt it (common/contain.py; called from

@@ -16,6 +16,8 @@ import math
 import time
 from collections.abc import Callable
 
+from haven_sim.common.topics import PACE_IDLE
+
 
 class WallClock:
     """Wall time with the pauses taken out: pacing against it neither steps while paused nor
@@ -109,6 +111,11 @@ class ControlPace:
         self.held = False  # held in the current window
 
     def report(self, acted_at: float, wall_now: float) -> None:
+        """`acted_at`: the sim time the loop has acted at, or topics.PACE_IDLE: it drives nothing
+        now (no path, or waiting), and holds nothing."""
+        if acted_at >= PACE_IDLE:
+            self.acted_at = None
+            return
         if self.acted_at is not None and acted_at > self.acted_at:  # (a late loop's gaps are longer: not its period)
             self._interval = min(self._interval, acted_at - self.acted_at)
         self.acted_at, self._heard = acted_at, wall_now
