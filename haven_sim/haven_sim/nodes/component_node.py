@@ -27,7 +27,7 @@ from rclpy.qos import DurabilityPolicy, ReliabilityPolicy
 from rclpy.serialization import serialize_message
 from rclpy.subscription import Subscription
 
-from haven_sim.common import contain, topics
+from haven_sim.common import contain, nodes, topics
 from haven_sim.common.events import Event, EventKind, Sequencer, event
 from haven_sim.common.params import ParamsError, bounds_of, build, defaults, docs, ros_range
 from haven_sim.common.topics import WireParams
@@ -184,7 +184,8 @@ class ComponentNode(Node):
         if getattr(component, "relays_pace", False):  # the velocity mux
             heard, said = self._specs[topics.PACE_NAV], self._specs[topics.PACE]
             relay = self.create_publisher(said.msg_type, topics.PACE, said.pub_qos)
-            self.create_subscription(heard.msg_type, topics.PACE_NAV, relay.publish, heard.sub_qos)
+            ours = self.sole_writer(topics.PACE_NAV, nodes.CONTROLLER.name)
+            self.create_subscription(heard.msg_type, topics.PACE_NAV, lambda m: relay.publish(m) if ours() else None, heard.sub_qos)
         self._warned: set[tuple[str, str]] = set()
         self.create_timer(2.0, self._check_types, clock=Clock(clock_type=ClockType.STEADY_TIME))
 
@@ -204,6 +205,18 @@ class ComponentNode(Node):
         self.publish([Message(topics.EVENTS, contain.failed_event(failed, now, getattr(self.component, "name", self.get_name())), now)])
         time.sleep(STUCK_DELIVERY_S)
         os._exit(contain.STUCK_EXIT)
+
+    def sole_writer(self, topic: str, writer: str) -> Callable[[], bool]:
+        """Whether `writer` (a node name) is the only publisher on `topic`, looked at once a second:
+        the pace is taken from our own node only, so nobody else can hold (or free) the clock."""
+        name, alone = self.resolve_topic_name(topic), [False]
+
+        def look() -> None:
+            infos = self.get_publishers_info_by_topic(name)
+            alone[0] = bool(infos) and all(i.node_name == writer for i in infos)
+
+        self.create_timer(1.0, look, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        return lambda: alone[0]
 
     def _check_types(self) -> None:
         """A publisher of another type on a topic we read never matches (DDS drops it without a

@@ -73,10 +73,8 @@ class SimNode(ComponentNode):
         else:
             self.pacer = Pacer(config.sim.step_s, config.real_time_factor)
             self.pace = ControlPace(config.control_lag_s)
-            pace_spec = self._specs[topics.PACE]
-            self.create_subscription(
-                pace_spec.msg_type, topics.PACE, lambda m: self.pace.report(pace_spec.decode(m), self.clock.now()), pace_spec.sub_qos
-            )
+            pace_spec, ours = self._specs[topics.PACE], self.sole_writer(topics.PACE, nodes.MUX.name)
+            self.create_subscription(pace_spec.msg_type, topics.PACE, lambda m: self._on_pace(pace_spec.decode(m), ours()), pace_spec.sub_qos)
             self.publish(self.sim.sense())
             self.create_timer(self.pacer.tick_period_s, self._tick, clock=Clock(clock_type=ClockType.STEADY_TIME))
             pace = f"{config.real_time_factor:g}x real time"
@@ -107,6 +105,11 @@ class SimNode(ComponentNode):
             )
             held = event(EventKind.CLOCK_HELD, now, Source.SIM, real_time_factor=round(achieved, 3), requested=requested)
             self.publish([Message(topics.EVENTS, held, now)])
+
+    def _on_pace(self, acted_at: float, ours: bool) -> None:
+        """The controller's pace, passed on by our mux; while anybody else publishes there too, the
+        clock is held by nobody (an outside node must not stand simulated time still)."""
+        self.pace.report(acted_at if ours else topics.PACE_IDLE, self.clock.now())
 
     def _check_writers(self) -> None:
         topic = self.resolve_topic_name(topics.CMD_VEL)
