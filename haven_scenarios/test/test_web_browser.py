@@ -227,10 +227,10 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     assert console.evaluate("havenState.toggles.thought_bubble") is True and page.evaluate("havenState.trial.state") == "held"
 
     page.click("#start")  # read the instructions, ready: the trial starts
-    page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
     # The lab's cue (the example's floor arrows) is drawn with no page code of its own, and is a console toggle.
-    page.wait_for_function("(havenState.markers.floor_arrows || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
-    console.wait_for_function("(t => t && t.checked)(document.getElementById('cue-floor_arrows'))", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => (havenState.markers.floor_arrows || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("() => (t => t && t.checked)(document.getElementById('cue-floor_arrows'))", timeout=PAGE_TIMEOUT_MS)
 
     # Before: 6 m apart, no bubble where it would be drawn.
     robot = page.evaluate("havenState.robot")
@@ -244,10 +244,10 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     start_x = humans[-1].poses[0].position.x
     page.keyboard.down("KeyW")
     assert ros.spin_until(lambda: start_x - humans[-1].poses[0].position.x > 0.5, timeout_s=60), "the avatar did not walk"
-    page.wait_for_function("(havenState.markers.thought_bubble || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => (havenState.markers.thought_bubble || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
     page.keyboard.up("KeyW")
     frames = page.evaluate("havenState.frames")
-    page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(f"() => havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
     bubble = page.evaluate("havenMarker('thought_bubble', 0)")
     spot = page.evaluate(f"havenProject({bubble['x']}, {bubble['y']}, {bubble['z']})")
     after = page.screenshot()
@@ -259,21 +259,21 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
 
     # The researcher switches the thought bubble off: it leaves the participant's view at once.
     console.uncheck("#cue-thought_bubble")
-    page.wait_for_function("!havenState.markers.thought_bubble", timeout=PAGE_TIMEOUT_MS)
-    console.wait_for_function("havenState.toggles.thought_bubble === false", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => !havenState.markers.thought_bubble", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("() => havenState.toggles.thought_bubble === false", timeout=PAGE_TIMEOUT_MS)
 
     screenshot("web_console.png", console.screenshot())
 
     # A console opened mid-trial has the whole study log, each event once.
     late = browser.new_page(viewport={"width": 1100, "height": 600})
     late.goto(console_url, timeout=PAGE_LOAD_MS)
-    late.wait_for_function("havenState.events.some(e => e.type === 'participant_ready')", timeout=PAGE_TIMEOUT_MS)
+    late.wait_for_function("() => havenState.events.some(e => e.type === 'participant_ready')", timeout=PAGE_TIMEOUT_MS)
     keys = late.evaluate("havenState.events.map(e => e.source + '/' + e.seq)")
     assert len(keys) == len(set(keys)) and "scenario/1" in keys
 
     # ... and stops the trial: the participant is told, the session is complete.
     console.click("#stop")
-    page.wait_for_function("havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
     events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
@@ -315,7 +315,7 @@ def test_a_participant_sees_the_flying_drone_with_its_navpoints_arrow_and_gaze(r
     assert countdown is not None and countdown["z"] > 1.2
     x0 = page.evaluate("havenState.pose.x")
     page.keyboard.down("KeyW")
-    page.wait_for_function(f"havenState.pose.x > {x0} + 0.3", timeout=PAGE_TIMEOUT_MS)  # walks toward the pad
+    page.wait_for_function(f"() => havenState.pose.x > {x0} + 0.3", timeout=PAGE_TIMEOUT_MS)  # walks toward the pad
     page.keyboard.up("KeyW")
     os.killpg(trial.proc.pid, signal.SIGINT)  # the researcher's Ctrl-C: the session is kept
     trial.ended()
@@ -342,14 +342,14 @@ def test_a_participant_sees_the_library_cues_in_a_world_made_from_a_ros_map_whos
         "s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held' && s.frames > 2", timeout=PAGE_TIMEOUT_MS
     )
     page.click("#start")
-    page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
     drawn = " && ".join(f"(havenState.markers.{ns} || 0) >= 1" for ns in LIBRARY_CUES)
-    page.wait_for_function(f"{drawn} && havenState.robot && havenState.robot.x > 2.0", timeout=PAGE_TIMEOUT_MS)  # on its way to the door
+    page.wait_for_function(f"() => {drawn} && havenState.robot && havenState.robot.x > 2.0", timeout=PAGE_TIMEOUT_MS)  # on its way to the door
     screenshot("web_map_world.png", page.screenshot())  # the dividing wall ahead, the robot coming through its door with the library cues
     page.keyboard.down("KeyW")  # from (5.5, 3.0) facing west: the dividing wall's east face is at x = 3.65
-    page.wait_for_function("havenState.pose.x < 4.0", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.pose.x < 4.0", timeout=PAGE_TIMEOUT_MS)
     frames = page.evaluate("havenState.frames")
-    page.wait_for_function(f"havenState.frames > {frames} + 20", timeout=PAGE_TIMEOUT_MS)  # still pressing on
+    page.wait_for_function(f"() => havenState.frames > {frames} + 20", timeout=PAGE_TIMEOUT_MS)  # still pressing on
     page.keyboard.up("KeyW")
     assert page.evaluate("havenState.pose.x") > 3.65 + 0.25 - 0.05  # the body (0.25 m) against the wall, not through it
     os.killpg(trial.proc.pid, signal.SIGINT)
@@ -397,11 +397,11 @@ def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_
     assert pages["h2"].evaluate("havenState.trial.state") == "held"  # the trial waits for everyone
     pages["h2"].click("#start")
     for page in pages.values():
-        page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
     # h2 walks; h1 sees h2's avatar move.
     seen = pages["h1"].evaluate("havenOthers().h2")
     pages["h2"].keyboard.down("KeyW")
-    pages["h1"].wait_for_function(f"havenOthers().h2.x > {seen['x'] + 0.5}", timeout=PAGE_TIMEOUT_MS)
+    pages["h1"].wait_for_function(f"() => havenOthers().h2.x > {seen['x'] + 0.5}", timeout=PAGE_TIMEOUT_MS)
     pages["h2"].keyboard.up("KeyW")
 
 
@@ -429,20 +429,20 @@ def test_a_gamepad_walks_and_enter_vr_works_with_an_emulated_headset(ros, browse
         "s => (s = window.havenState) && s.world > 0 && s.pose && s.xrOffered && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
     )
     page.click("#start")
-    page.wait_for_function("havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
     # A gamepad's left stick walks the avatar (the Gamepad API's standard mapping: up is -1).
     x0 = page.evaluate("havenState.pose.x")
     page.evaluate("window.testPad.axes[1] = -1")
-    page.wait_for_function(f"havenState.pose.x < {x0} - 0.3", timeout=PAGE_TIMEOUT_MS)  # facing -x
+    page.wait_for_function(f"() => havenState.pose.x < {x0} - 0.3", timeout=PAGE_TIMEOUT_MS)  # facing -x
     page.evaluate("window.testPad.axes[1] = 0")
     page.click("#enter-vr")
-    page.wait_for_function("havenState.xr === true", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.xr === true", timeout=PAGE_TIMEOUT_MS)
     frames = page.evaluate("havenState.frames")
-    page.wait_for_function(f"havenState.frames > {frames + 3}", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(f"() => havenState.frames > {frames + 3}", timeout=PAGE_TIMEOUT_MS)
     ahead = page.evaluate("havenState.view")
     # The participant faces -x (yaw pi); the headset turns 90 deg to the left about its up axis.
     page.evaluate("havenXrDevice.quaternion.set(0, Math.SQRT1_2, 0, Math.SQRT1_2)")
-    page.wait_for_function("havenState.view.y < -0.9", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.view.y < -0.9", timeout=PAGE_TIMEOUT_MS)
     assert ahead["x"] < -0.9, ahead  # before: straight down the hallway
 
 
@@ -460,7 +460,7 @@ def stopped_trial(ros, browser, tmp_path, questionnaires, viewport, argv=None):
     console.wait_for_function("s => (s = window.havenState) && s.trial", timeout=PAGE_TIMEOUT_MS)
     console.evaluate("havenState.before = document.getElementById('questionnaires').textContent")
     page.click("#start")
-    page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
     console.click("#stop")
     return trial, page, console
 
@@ -472,7 +472,7 @@ def answer_with_clicks(page, q, values):
 
 def submit_and_wait(page, q, answered):
     page.click("#questionnaire button[type=submit]")
-    page.wait_for_function(f"havenState.answered.length === {answered} && havenState.questionnaire !== '{q}'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(f"() => havenState.answered.length === {answered} && havenState.questionnaire !== '{q}'", timeout=PAGE_TIMEOUT_MS)
 
 
 STUDY_YAML = """name: browser_study
@@ -509,8 +509,8 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     assert console.evaluate("havenState.before") == "after the trial: nasa_tlx, godspeed, legibility"
 
     # The trial is over: the first questionnaire instead of "Thank you"; haven run waits.
-    page.wait_for_function("havenState.questionnaire === 'nasa_tlx' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
-    console.wait_for_function("document.getElementById('questionnaires').textContent === 'h1: questionnaire 1 of 3'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.questionnaire === 'nasa_tlx' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("() => document.getElementById('questionnaires').textContent === 'h1: questionnaire 1 of 3'", timeout=PAGE_TIMEOUT_MS)
     assert console.is_visible("#skip-questionnaires")
     assert page.locator("#questionnaire input:checked").count() == 0  # nothing preselected
     assert page.locator("#questionnaire fieldset").count() == 6 and page.locator("#questionnaire input[name='nasa_tlx.mental']").count() == 21
@@ -536,9 +536,9 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     page.keyboard.press("ArrowRight")  # frustration: 5
     assert page.inner_text("#questionnaire .missing") == ""  # every item answered: the refusal is gone
     submit_and_wait(page, "nasa_tlx", 1)
-    console.wait_for_function("document.getElementById('questionnaires').textContent === 'h1: questionnaire 2 of 3'", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("() => document.getElementById('questionnaires').textContent === 'h1: questionnaire 2 of 3'", timeout=PAGE_TIMEOUT_MS)
 
-    page.wait_for_function("havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
     godspeed = {item.id: 1 + k % 5 for k, item in enumerate(BUILTINS["godspeed"].items)}
     assert page.locator("#questionnaire fieldset.differential").count() == len(godspeed)
     # Asked as published: the robot's impression, then perceived safety about the participant's own state.
@@ -554,11 +554,11 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     page.locator("#questionnaire p.prompt").last.scroll_into_view_if_needed()
     screenshot("web_godspeed.png", page.screenshot())
     submit_and_wait(page, "godspeed", 2)
-    page.wait_for_function("havenState.questionnaire === 'legibility'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.questionnaire === 'legibility'", timeout=PAGE_TIMEOUT_MS)
     assert page.locator("#questionnaire input[name='legibility.side']").count() == 7
     answer_with_clicks(page, "legibility", {"side": 6, "surprise": 2})
     submit_and_wait(page, "legibility", 3)
-    page.wait_for_function("havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)
     assert "Thank you for your answers" in page.inner_text("#prompt")
 
     # Every answer in: haven run stops by itself.
@@ -599,11 +599,11 @@ def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros
     """Nobody answers: the console's Skip questionnaires ends the wait; the session is complete and
     valid, session.json says nothing was answered and that the researcher skipped."""
     trial, page, console = stopped_trial(ros, browser, tmp_path, ["godspeed", "nasa_tlx"], {"width": 640, "height": 480})
-    page.wait_for_function("havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
-    console.wait_for_function("havenState.questionnaires.join() === 'h1: questionnaire 1 of 2'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("() => havenState.questionnaires.join() === 'h1: questionnaire 1 of 2'", timeout=PAGE_TIMEOUT_MS)
     assert trial.proc.poll() is None  # haven run waits for the answers
     console.click("#skip-questionnaires")
-    page.wait_for_function("havenState.prompt === 'Trial over' && havenState.questionnaire === null", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.prompt === 'Trial over' && havenState.questionnaire === null", timeout=PAGE_TIMEOUT_MS)
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
     session = json.load(open(os.path.join(folder, "session.json")))

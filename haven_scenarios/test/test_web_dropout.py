@@ -34,12 +34,12 @@ def test_a_closed_tab_shows_on_the_console_is_recorded_and_the_pause_stands_the_
     page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
     page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
     page.click("#start")
-    page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
     page.keyboard.down("KeyW")  # an input the page reports
-    page.wait_for_function("havenState.latencies.length > 0", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => havenState.latencies.length > 0", timeout=PAGE_TIMEOUT_MS)
     page.keyboard.up("KeyW")
     console.wait_for_function(
-        "(r => r && r.state === 'connected' && r.fps > 0 && r.latency_ms > 0 && r.input_age_s !== null)"
+        "() => (r => r && r.state === 'connected' && r.fps > 0 && r.latency_ms > 0 && r.input_age_s !== null)"
         "((havenState.participants || {participants: {}}).participants.h1)",
         timeout=PAGE_TIMEOUT_MS,
     )
@@ -48,9 +48,9 @@ def test_a_closed_tab_shows_on_the_console_is_recorded_and_the_pause_stands_the_
     assert ros.spin_until(lambda: len(clock) > 2, timeout_s=60)
     context.close()  # the participant's tab closes
     closed_at = time.monotonic()
-    console.wait_for_function("havenState.participants.participants.h1.state === 'away'", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("() => havenState.participants.participants.h1.state === 'away'", timeout=PAGE_TIMEOUT_MS)
     assert time.monotonic() - closed_at < SHOWN_WITHIN_S
-    console.wait_for_function("havenState.participants.paused === true", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("() => havenState.participants.paused === true", timeout=PAGE_TIMEOUT_MS)
     assert "paused: waiting for h1" in console.inner_text("#participants")
     screenshot("web_console_dropout.png", console.screenshot())
     # Simulated time stands still: once the pause has taken hold, no /clock moves on for 2 s.
@@ -61,10 +61,10 @@ def test_a_closed_tab_shows_on_the_console_is_recorded_and_the_pause_stands_the_
 
     back = browser.new_context(viewport={"width": 480, "height": 270}).new_page()
     back.goto(urls["participant h1"] + "&quality=low", timeout=PAGE_LOAD_MS)  # the same address: back in the trial (on a slow machine's setting)
-    console.wait_for_function("havenState.participants.participants.h1.state === 'connected'", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function("() => havenState.participants.participants.h1.state === 'connected'", timeout=PAGE_TIMEOUT_MS)
     seconds = frozen[1].sec + frozen[1].nanosec * 1e-9
     assert ros.spin_until(lambda: clock[-1].clock.sec + clock[-1].clock.nanosec * 1e-9 > seconds + 0.5, timeout_s=60), "time did not run on"
-    back.wait_for_function("(t => t && t.state === 'running')(havenState.trial)", timeout=PAGE_TIMEOUT_MS)
+    back.wait_for_function("() => (t => t && t.state === 'running')(havenState.trial)", timeout=PAGE_TIMEOUT_MS)
     assert back.evaluate("havenState.quality") == "low"
 
     console.click("#stop")

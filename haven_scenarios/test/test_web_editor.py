@@ -38,7 +38,7 @@ class Editor:
     def verdict_after(self, checks: int) -> dict:  # type: ignore[type-arg]
         """The loader's verdict on the world as it is now (a check newer than `checks`)."""
         self.page.wait_for_function(
-            f"havenEditor.checks > {checks} && JSON.stringify(havenEditor.world()) === havenEditor.checkedWorld", timeout=PAGE_TIMEOUT_MS
+            f"() => havenEditor.checks > {checks} && JSON.stringify(havenEditor.world()) === havenEditor.checkedWorld", timeout=PAGE_TIMEOUT_MS
         )
         return self.page.evaluate("havenEditor.verdict")  # type: ignore[no-any-return]
 
@@ -75,7 +75,7 @@ def test_haven_edit_draws_a_room_that_haven_batch_runs(browser, tmp_path: Path) 
         page = browser.new_page(viewport={"width": 1280, "height": 760})
         assert page.goto(url.replace("token=", "token=x")).status == 403
         page.goto(url)
-        page.wait_for_function("havenEditor.checks >= 1", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenEditor.checks >= 1", timeout=PAGE_TIMEOUT_MS)
         editor = Editor(page)
         assert "needs at least one wall" in page.inner_text("#status")  # a new world: the loader says what is missing
         page.evaluate("havenEditor.fit(-1, -1, 7, 5)")
@@ -98,7 +98,7 @@ def test_haven_edit_draws_a_room_that_haven_batch_runs(browser, tmp_path: Path) 
         screenshot("editor_room.png", page.screenshot())
         page.select_option("#task", "visit_rooms")
         page.click("#save")
-        page.wait_for_function("havenEditor.saved.length === 2", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenEditor.saved.length === 2", timeout=PAGE_TIMEOUT_MS)
         assert "Saved" in page.inner_text("#status")
     finally:
         proc.terminate()
@@ -126,7 +126,7 @@ def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_u
     try:
         page = browser.new_page(viewport={"width": 1280, "height": 760})
         page.goto(server.url)
-        page.wait_for_function("havenEditor.checks >= 1", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenEditor.checks >= 1", timeout=PAGE_TIMEOUT_MS)
         page.evaluate("havenEditor.fit(-1, -1, 7, 5)")
         editor = Editor(page)
         pixels = np.full((80, 120), 255, dtype=np.uint8)  # 6 x 4 m at 0.05 m per pixel
@@ -135,10 +135,10 @@ def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_u
         Image.fromarray(pixels).save(pgm, format="PPM")
         page.set_input_files("#image", files=[{"name": "map.pgm", "mimeType": "image/x-portable-graymap", "buffer": pgm.getvalue()}])
         page.click("#as-background")
-        page.wait_for_function("havenEditor.background !== null", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenEditor.background !== null", timeout=PAGE_TIMEOUT_MS)
         assert page.evaluate("havenEditor.background") == {"width": 120, "height": 80, "resolution": 0.05, "x": 0, "y": 0}
         page.click("#as-walls")
-        page.wait_for_function("havenEditor.world().walls.length === 4", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenEditor.world().walls.length === 4", timeout=PAGE_TIMEOUT_MS)
         assert all("polygon" in w for w in page.evaluate("havenEditor.world().walls"))
         editor.tool("obstacle")
         a, b = page.evaluate("havenEditor.toPage(2, 1)"), page.evaluate("havenEditor.toPage(3, 1.5)")

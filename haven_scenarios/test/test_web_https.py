@@ -80,11 +80,11 @@ def test_over_https_a_browser_that_trusts_the_lab_authority_is_offered_enter_vr(
             "s => (s = window.havenState) && s.world > 0 && s.pose && s.xrOffered && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
         )  # the scene and the trial over wss:// through the front door
         page.click("#start")
-        page.wait_for_function("havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
         page.click("#enter-vr")
-        page.wait_for_function("havenState.xr === true", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.xr === true", timeout=PAGE_TIMEOUT_MS)
         frames = page.evaluate("havenState.frames")
-        page.wait_for_function(f"havenState.frames > {frames + 3}", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function(f"() => havenState.frames > {frames + 3}", timeout=PAGE_TIMEOUT_MS)
     finally:
         headset.close()
         plain.shutdown()

@@ -43,7 +43,7 @@ def screenshot(name: str, png: bytes) -> None:
 
 def submit(page, name: str) -> None:  # type: ignore[no-untyped-def]
     page.click("#questionnaire button[type=submit]")
-    page.wait_for_function(f"havenState.answered.includes('{name}')", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(f"() => havenState.answered.includes('{name}')", timeout=PAGE_TIMEOUT_MS)
 
 
 def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores_them(browser, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
@@ -56,7 +56,7 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         bad = page.goto(server.url.replace("token=", "token=x"))
         assert bad is not None and bad.status == 403  # another token: refused
         page.goto(server.url)
-        page.wait_for_function("havenState.questionnaire === 'consent'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.questionnaire === 'consent'", timeout=PAGE_TIMEOUT_MS)
         assert page.inner_text("#questionnaire .instructions") == CONSENT  # the study's text, paragraphs kept
         assert page.locator("#questionnaire input[name='consent.agree']").count() == 2
         assert (
@@ -68,7 +68,7 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         page.check("input[name='consent.agree'][value='1']")
         submit(page, "consent")
 
-        page.wait_for_function("havenState.questionnaire === 'demographics'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.questionnaire === 'demographics'", timeout=PAGE_TIMEOUT_MS)
         assert "Prefer not to say" in page.inner_text("#questionnaire fieldset[data-item='gender']")
         for item, value in {"age": 2, "gender": 4, "robots": 1, "vr": 3, "games": 5}.items():
             page.check(f"input[name='demographics.{item}'][value='{value}']")
@@ -76,7 +76,7 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         assert page.locator("input[name='demographics.gender_self']").bounding_box()["width"] > 150
         submit(page, "demographics")
 
-        page.wait_for_function("havenState.questionnaire === 'nars'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.questionnaire === 'nars'", timeout=PAGE_TIMEOUT_MS)
         assert "Nomura, Kanda, Suzuki & Kato (2006)" in page.inner_text("#questionnaire .source")
         shown = page.eval_on_selector_all("#questionnaire fieldset", "sets => sets.map(s => s.dataset.item)")
         assert sorted(shown) == sorted(i.id for i in NARS.items) and shown != [i.id for i in NARS.items]  # mixed
@@ -86,7 +86,7 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         page.evaluate("document.getElementById('questionnaire').scrollTop = 0")
         screenshot("web_nars.png", page.screenshot())
         submit(page, "nars")
-        page.wait_for_function("havenState.done", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.done", timeout=PAGE_TIMEOUT_MS)
         assert "Please wait" in page.inner_text("#prompt")
         assert server.finished.is_set()
     finally:
@@ -101,7 +101,7 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
     after.start()
     try:
         page.goto(after.url)
-        page.wait_for_function("havenState.questionnaire === 'preference'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.questionnaire === 'preference'", timeout=PAGE_TIMEOUT_MS)
         for item, rank in {"none": 3, "signals": 3, "all": 1}.items():
             page.check(f"input[name='preference.{item}'][value='{rank}']")
         page.click("#questionnaire button[type=submit]")
@@ -109,7 +109,7 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         assert "preference" not in json.loads(book.path.read_text())
         page.check("input[name='preference.signals'][value='2']")
         submit(page, "preference")
-        page.wait_for_function("havenState.done", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.done", timeout=PAGE_TIMEOUT_MS)
     finally:
         after.stop()
     assert json.loads(book.path.read_text())["preference"]["scores"] == {"preference_none": 3.0, "preference_signals": 2.0, "preference_all": 1.0}
@@ -144,10 +144,10 @@ def test_haven_study_run_web_a_participant_who_declines_in_the_page_runs_no_tria
             time.sleep(0.05)
         page = browser.new_page()
         page.goto(found[0])
-        page.wait_for_function("havenState.questionnaire === 'consent'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.questionnaire === 'consent'", timeout=PAGE_TIMEOUT_MS)
         page.check("input[name='consent.agree'][value='2']")
         page.click("#questionnaire button[type=submit]")
-        page.wait_for_function("havenState.done && havenState.declined", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.done && havenState.declined", timeout=PAGE_TIMEOUT_MS)
         assert "You chose not to take part" in page.inner_text("#prompt")
         assert proc.wait(timeout=60) == 0
     finally:

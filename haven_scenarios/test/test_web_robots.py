@@ -131,9 +131,9 @@ def drawn(page, desc: dict[str, Any], z: float) -> tuple[int, bytes, bytes, byte
     for shown in ({**desc, "primitives": [SPECK], "model_url": None}, desc):
         meshes = page.evaluate(f"havenShowRobot({json.dumps(shown)}, {json.dumps(at)}, {json.dumps(eye)}, {pitch})")
         if shown.get("model_url"):  # its glTF model replaces the primitives once loaded
-            page.wait_for_function("havenState.robotModel === true", timeout=PAGE_TIMEOUT_MS)
+            page.wait_for_function("() => havenState.robotModel === true", timeout=PAGE_TIMEOUT_MS)
         frames = page.evaluate("havenState.frames")
-        page.wait_for_function(f"havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function(f"() => havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
         pictures.append(page.screenshot())
     spot = page.evaluate(f"havenProject({at['x']}, {at['y']}, {z + desc['height_m'] / 2})")
     left = min(max(0, int(spot["x"]) - CROP["width"] // 2), VIEW["width"] - CROP["width"])
@@ -161,7 +161,7 @@ def test_every_robot_is_drawn_from_its_description_at_real_size(browser, tmp_pat
         page = browser.new_page(viewport=VIEW)
         page.goto(urls(f"http://127.0.0.1:{door.port}", "secret", ["h1"])["h1"], timeout=PAGE_TIMEOUT_MS)
         page.add_style_tag(content="#prompt, #inset, #hud, #lost { display: none !important; }")
-        page.wait_for_function("window.havenState && havenState.frames > 1 && typeof window.havenShowRobot === 'function'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => window.havenState && havenState.frames > 1 && typeof window.havenShowRobot === 'function'", timeout=PAGE_TIMEOUT_MS)
         out = os.environ.get("HAVEN_ROBOT_PICTURES")
         shown = []
         for robot in robots(tmp_path):

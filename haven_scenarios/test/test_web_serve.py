@@ -65,13 +65,13 @@ def sessions(console_url):
 
 def wait_state(page, state):
     page.wait_for_url("**/session/**", timeout=PAGE_TIMEOUT_MS)
-    page.wait_for_function(f"window.havenSession && havenSession.state === '{state}'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(f"() => window.havenSession && havenSession.state === '{state}'", timeout=PAGE_TIMEOUT_MS)
 
 
 def consent(page):
     """Their browser has gone on from the session page to the consent page."""
     page.wait_for_url("**/instruments/**", timeout=PAGE_TIMEOUT_MS)
-    page.wait_for_function("window.havenState && havenState.questionnaire === 'consent'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function("() => window.havenState && havenState.questionnaire === 'consent'", timeout=PAGE_TIMEOUT_MS)
 
 
 def test_three_panel_participants_at_once_each_end_with_the_completion_code(ros, browser, tmp_path):
@@ -109,7 +109,7 @@ def test_three_panel_participants_at_once_each_end_with_the_completion_code(ros,
         page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
         page.click("#start")
     for page in pages[:3]:
-        page.wait_for_function("havenState.trial.state === 'running' || havenState.trial.state === 'ended'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.trial.state === 'running' || havenState.trial.state === 'ended'", timeout=PAGE_TIMEOUT_MS)
     live = sessions(console)
     assert {live[f"PANEL{k}"]["participant"] for k in range(3)} == {"p01", "p02", "p03"}
     assert all(live[f"PANEL{k}"]["console"] for k in range(3)) and live["PANEL3"]["state"] == "waiting"
@@ -122,7 +122,7 @@ def test_three_panel_participants_at_once_each_end_with_the_completion_code(ros,
     assert len(sessions(console)) == 4  # (their browser's cookie: no second place)
 
     for page in pages[:3]:  # the trial times out: the questionnaire, then the completion code
-        page.wait_for_function("havenState.questionnaire === 'legibility'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function("() => havenState.questionnaire === 'legibility'", timeout=PAGE_TIMEOUT_MS)
         page.check("input[name='legibility.side'][value='5']")
         page.click("#questionnaire button[type=submit]")
     for page in pages[:3]:

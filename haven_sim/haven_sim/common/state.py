@@ -29,6 +29,9 @@ HumanPoses = dict[str, Pose2D]  # /humans: every person's pose by id
 
 
 def name_humans(poses: Sequence[Pose2D], ids: Sequence[str]) -> HumanPoses:
-    """The one place that pairs /humans poses (world-file order) with their ids; poses beyond the
-    known ids are named by their index (h0, h1, ...)."""
+    """The one place that pairs /humans poses (world-file order) with their ids. With no ids known
+    (another simulator's data) they are named by their index (h0, h1, ...); with ids known, a message
+    of another length is not the simulator's (ValueError: the message is skipped)."""
+    if ids and len(poses) != len(ids):
+        raise ValueError(f"{len(poses)} poses for {len(ids)} people")
     return {(ids[i] if i < len(ids) else f"h{i}"): p for i, p in enumerate(poses)}
