@@ -5,7 +5,8 @@ The tiers (markers; `make test-unit` and the others select one):
 - unit: everything not marked otherwise (given the marker here): in one process, without ROS 2
   installed, in seconds;
 - integration: several parts together, through processes, sockets, whole batch trials, the ROS
-  Python libraries in-process or the colcon build;
+  Python libraries in-process or the colcon build; and Monte Carlo checks of a statistic (hundreds
+  of model fits);
 - ros: starts ROS 2 node processes;
 - browser: drives headless Chromium.
 Where rclpy cannot be imported, a test file that imports ROS at its top is not collected (one line

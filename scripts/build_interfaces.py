@@ -7,7 +7,12 @@ files rewritten to this machine's. Installs with --merge-install into the venv p
 already finds messages; only packages that do not import yet are built. Exits non-zero with one
 line if anything is missing; setup.sh then carries on without them.
 
-usage: .venv/bin/python scripts/build_interfaces.py
+The build is not load-limited: colcon's default MAKEFLAGS (`-jN -lN`) makes make wait while the
+machine's load is above N, which on a shared machine serialised nav2_msgs to 26-52 minutes; here
+make runs N jobs whatever the load, and independent packages build side by side. A line is printed
+as each package starts and ends.
+
+usage: .venv/bin/python scripts/build_interfaces.py [PACKAGE ...]   (default: all of them)
 """
 
 from __future__ import annotations
@@ -51,10 +56,17 @@ def imports(package: str) -> bool:
     return subprocess.run([sys.executable, "-c", PACKAGES[package][0]], capture_output=True).returncode == 0
 
 
-def main() -> int:
-    wanted = [p for p in PACKAGES if not imports(p)]
+def main(asked: list[str]) -> int:
+    unknown = [p for p in asked if p not in PACKAGES]
+    if unknown:
+        print(f"build_interfaces: unknown package {unknown[0]} (known: {', '.join(PACKAGES)})", file=sys.stderr)
+        return 2
+    asked = asked or list(PACKAGES)
+    if "nav2_msgs" in asked and "geographic_msgs" not in asked:
+        asked.insert(0, "geographic_msgs")  # (nav2_msgs needs it)
+    wanted = [p for p in asked if not imports(p)]
     if not wanted:
-        print("build_interfaces: " + ", ".join(PACKAGES) + " already built")
+        print("build_interfaces: " + ", ".join(asked) + " already built")
         return 0
     missing = "; ".join(f"{p}: {PACKAGES[p][1]}" for p in wanted)
     for tool in ("cmake", "make", "cc"):
@@ -62,6 +74,7 @@ def main() -> int:
             print(f"build_interfaces: {tool} not found; not available: {missing}", file=sys.stderr)
             return 1
     fixed = fix_export_paths()
+    jobs = os.cpu_count() or 2
     started = time.monotonic()
     with tempfile.TemporaryDirectory() as tmp:
         cmd = [
@@ -81,14 +94,24 @@ def main() -> int:
             "--cmake-args",
             f"-DPython3_EXECUTABLE={sys.executable}",
             "-DBUILD_TESTING=OFF",
+            "--parallel-workers",
+            str(jobs),
             "--event-handlers",
             "console_direct-",
+            "console_start_end+",
         ]
         env = {**os.environ, "AMENT_PREFIX_PATH": str(PREFIX), "CMAKE_PREFIX_PATH": str(PREFIX)}
-        r = subprocess.run(cmd, capture_output=True, text=True, env=env)
-        if r.returncode != 0:
-            tail = (r.stdout + r.stderr).strip().splitlines()[-15:]
-            print(f"build_interfaces: colcon build of {', '.join(wanted)} failed:\n" + "\n".join(tail), file=sys.stderr)
+        env.setdefault("MAKEFLAGS", f"-j{jobs}")  # (no -l: see the module docstring)
+        print(f"build_interfaces: building {', '.join(wanted)} with {jobs} jobs (nav2_msgs takes a few minutes)", flush=True)
+        said: list[str] = []
+        with subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env) as colcon:
+            assert colcon.stdout is not None
+            for line in colcon.stdout:
+                said.append(line.rstrip())
+                if line.startswith(("Starting >>>", "Finished <<<", "Failed")):
+                    print(f"build_interfaces: {line.strip()}", flush=True)
+        if colcon.returncode != 0:
+            print(f"build_interfaces: colcon build of {', '.join(wanted)} failed:\n" + "\n".join(said[-15:]), file=sys.stderr)
             return 1
     broken = [p for p in wanted if not imports(p)]
     if broken:
@@ -100,4 +123,4 @@ def main() -> int:
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(main(sys.argv[1:]))

@@ -47,8 +47,19 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
 fi
 
 # tf2_msgs and nav2_msgs are not on PyPI: build them into the venv once (needs cmake and a C
-# compiler; about 2 minutes). Without them everything works except TF (/tf, /tf_static), which the
-# simulator then skips with a warning, and Nav2's action servers (navigate_to_pose, ...).
+# compiler; tf2_msgs about 1 minute, nav2_msgs a few more). Without them everything works except TF
+# (/tf, /tf_static), which the simulator then skips with a warning, and Nav2's action servers
+# (navigate_to_pose, ...). `make demo` (HAVEN_SETUP_FOR=demo) needs no Nav2: it builds tf2_msgs only
+# and leaves nav2_msgs, and the browser pieces, to `make setup` or `make test`.
+if [ "${HAVEN_SETUP_FOR:-}" = demo ]; then
+  if ! "$VENV/bin/python" -c "import tf2_msgs.msg" >/dev/null 2>&1; then
+    "$VENV/bin/python" scripts/build_interfaces.py tf2_msgs || echo "setup: continuing without it" >&2
+  fi
+  if ! "$VENV/bin/python" -c "import nav2_msgs.action" >/dev/null 2>&1; then
+    echo "setup: nav2_msgs not built yet (the demo does not need it; Nav2's action servers need it): make setup builds it"
+  fi
+  exit 0
+fi
 if ! "$VENV/bin/python" -c "import tf2_msgs.msg, nav2_msgs.action" >/dev/null 2>&1; then
   "$VENV/bin/python" scripts/build_interfaces.py || echo "setup: continuing without them" >&2
 fi

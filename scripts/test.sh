@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The whole test suite: setup (idempotent), lint (ruff), strict type checks of the core and the nodes
-# (mypy), the docs site, the unit tier in a venv without ROS 2, then pytest: every tier (conftest.py says which).
+# (mypy), the docs site, then every test tier (conftest.py says which).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
@@ -10,7 +10,12 @@ echo "== mypy (core and nodes, strict)"
 .venv/bin/mypy haven_sim/haven_sim haven_viz/haven_viz haven_scenarios/haven_scenarios
 echo "== docs (Sphinx, warnings as errors)"
 .venv/bin/sphinx-build -W --keep-going -q -b html docs docs/_build/html
-echo "== unit tier in a venv without ROS 2"
-./scripts/test_unit_without_ros.sh --timeout 60
-echo "== pytest (every tier: unit, integration, ros, browser)"
-exec .venv/bin/pytest -q --timeout 300 --durations=25 "$@"
+# Each test runs once: the unit tier only in the venv without ROS 2. The unit and integration tiers
+# run on every core (pytest-xdist; each test has its own tmp_path, ports and ROS domain); the ros and
+# browser tiers one test at a time, since each starts a whole suite of processes.
+echo "== unit tier in a venv without ROS 2 (parallel)"
+./scripts/test_unit_without_ros.sh --timeout 60 -n auto --durations=10 "$@"
+echo "== integration tier (parallel)"
+.venv/bin/pytest -q --timeout 300 -n auto --durations=25 -m "integration and not ros and not browser" "$@"
+echo "== ros and browser tiers"
+exec .venv/bin/pytest -q --timeout 300 --durations=25 -m "ros or browser" "$@"

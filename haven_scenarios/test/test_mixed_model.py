@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 import numpy as np
+import pytest
 
 from haven_scenarios.record.mixed_model import Observation, fit, fit_counts, model_rows
 from haven_scenarios.record.study_table import Measure, TrialResults
@@ -40,6 +41,7 @@ def test_recovers_the_participant_variance_and_the_effects() -> None:
     assert zero is not None and zero.p is not None and zero.p > 0.001
 
 
+@pytest.mark.integration  # (a singular or 240-trial fit: seconds of optimisation)
 def test_a_robot_that_varies_between_participants_is_a_fixed_effect() -> None:
     # Half the participants with each robot (robot_design: between); the TIAGo adds 2.0 to every value.
     obs = [
@@ -55,6 +57,7 @@ def test_a_robot_that_varies_between_participants_is_a_fixed_effect() -> None:
     assert "robot" not in same.formula and same.term("robot:turtlebot2") is None
 
 
+@pytest.mark.integration  # (a singular or 240-trial fit: seconds of optimisation)
 def test_identical_participants_give_a_singular_fit_said_plainly() -> None:
     f = fit(synthetic(12, participant_sd=0.0, residual_sd=0.5), CONDITIONS, "none")
     assert f.singular and f.terms

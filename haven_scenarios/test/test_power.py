@@ -51,6 +51,7 @@ def test_the_pool_is_shifted_to_the_effect_asked_keeping_its_spread() -> None:
     assert np.std([o.value for o in shifted if o.condition == "all"]) == pytest.approx(np.std([o.value for o in raw if o.condition == "all"]))
 
 
+@pytest.mark.integration  # (a Monte Carlo of hundreds of model fits)
 def test_no_effect_is_detected_about_alpha_of_the_time_and_a_huge_one_always() -> None:
     raw = pool(48, effect=0.0)
     null = estimate(cell(question(0.0, reps=100), "s", 12, slots(12), raw))
@@ -65,6 +66,7 @@ def test_no_effect_is_detected_about_alpha_of_the_time_and_a_huge_one_always() -
     assert small_n.power < large_n.power
 
 
+@pytest.mark.integration  # (a Monte Carlo of hundreds of model fits)
 def test_deterministic_participants_give_singular_fits_counted() -> None:
     raw = pool(16, effect=1.0, participant_sd=0.0)
     got = estimate(cell(question(1.0, reps=20), "s", 8, slots(8), raw))
@@ -101,6 +103,7 @@ def test_power_on_the_shipped_study_prints_four_participant_counts(tmp_path: Pat
     assert again.stdout.split("pool:")[1] == out.split("pool:")[1].replace("(16 trial(s) simulated now)", "(0 trial(s) simulated now)")
 
 
+@pytest.mark.integration  # (a Monte Carlo of hundreds of model fits)
 def test_a_test_that_finds_absent_effects_too_often_is_flagged() -> None:
     # The effect of `all` varies between people (sd 3) far beyond the trial-to-trial spread (0.2): a
     # random-intercept model's one residual understates the C - R contrast's spread.

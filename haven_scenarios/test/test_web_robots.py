@@ -161,7 +161,9 @@ def test_every_robot_is_drawn_from_its_description_at_real_size(browser, tmp_pat
         page = browser.new_page(viewport=VIEW)
         page.goto(urls(f"http://127.0.0.1:{door.port}", "secret", ["h1"])["h1"], timeout=PAGE_TIMEOUT_MS)
         page.add_style_tag(content="#prompt, #inset, #hud, #lost { display: none !important; }")
-        page.wait_for_function("() => window.havenState && havenState.frames > 1 && typeof window.havenShowRobot === 'function'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function(
+            "() => window.havenState && havenState.frames > 1 && typeof window.havenShowRobot === 'function'", timeout=PAGE_TIMEOUT_MS
+        )
         out = os.environ.get("HAVEN_ROBOT_PICTURES")
         shown = []
         for robot in robots(tmp_path):

@@ -224,7 +224,7 @@ def nav2_specs(params: Mapping[str, Mapping[str, object]], pfile: str | None) ->
     planner section and the command's (its planner_server plans as our planner does), or nothing,
     said in one line, where nav2_msgs is not installed."""
     if importlib.util.find_spec("nav2_msgs") is None:
-        print("haven: nav2_msgs is not installed: no Nav2 action servers (scripts/build_interfaces.py builds it)", flush=True)
+        print("haven: nav2_msgs is not installed: no Nav2 action servers (`make setup` builds it)", flush=True)
         return []
     from_file = load_params_file(pfile).get(nodes.PLANNER.name, {}) if pfile else {}
     own = {"use_sim_time": True, **from_file, **params.get(nodes.PLANNER.key, {})}
