@@ -1,6 +1,6 @@
 # HAVEN for ROS 2. `make demo` sets everything up and runs the main job (one recorded hallway trial);
 # `make test` runs every test; `make docs` builds the documentation site.
-.PHONY: setup demo docs test test-unit test-integration test-ros test-browser bench lock clean
+.PHONY: setup demo docs test test-core test-unit test-integration test-ros test-browser bench lock clean
 
 setup:
 	@./scripts/setup.sh
@@ -16,12 +16,13 @@ test: setup
 docs: setup
 	.venv/bin/sphinx-build -W --keep-going -q -b html docs docs/_build/html
 
-# One tier at a time (conftest.py says what each holds); `make test` runs them all.
-test-unit: setup
-	.venv/bin/pytest -q -m unit
+# One tier at a time (conftest.py says what each holds); `make test` runs them all. test-core: the
+# unit tier (the core, no ROS process), on every core.
+test-core test-unit: setup
+	.venv/bin/pytest -q -n auto -m unit
 
 test-integration: setup
-	.venv/bin/pytest -q -m integration
+	.venv/bin/pytest -q -n auto -m "integration and not ros and not browser"
 
 test-ros: setup
 	.venv/bin/pytest -q -m "ros and not browser"
