@@ -39,8 +39,7 @@ from haven_scenarios.study.protocol import load_study
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.study.schedule import PlannedTrial, participant_schedule, schedule
 from haven_scenarios.tools.commands.study import Report, study_dir, write_report
-from haven_scenarios.tools.commands.study_run import StudyRun
-from haven_scenarios.tools.commands.study_run import run_participant as _run_participant
+from haven_scenarios.tools.commands.study_run import StudyRun, run_participant as _run_participant
 from haven_scenarios.tools.domains import DomainRange, parse_domains
 from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
 

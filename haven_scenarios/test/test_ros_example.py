@@ -19,8 +19,7 @@ from visualization_msgs.msg import Marker, MarkerArray
 
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.state import Goal
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
+from haven_sim.nodes import conversions as conv, qos
 
 pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]

@@ -15,8 +15,7 @@ from ros_harness import tracebacks
 from std_msgs.msg import String
 from test_cli import start_haven
 
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
+from haven_sim.nodes import conversions as conv, qos
 from haven_viz.cues import CUES
 
 pytestmark = pytest.mark.ros

@@ -22,8 +22,7 @@ from nav_msgs.msg import Odometry
 from ros_harness import tracebacks
 from visualization_msgs.msg import Marker, MarkerArray
 
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
+from haven_sim.nodes import conversions as conv, qos
 
 pytestmark = pytest.mark.ros
 nav2_actions = pytest.importorskip("nav2_msgs.action", reason="nav2_msgs is not built here (scripts/build_interfaces.py)")

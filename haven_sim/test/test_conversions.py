@@ -58,3 +58,25 @@ def test_battery_and_map():
     g = conv.occupancy_from_msg(conv.occupancy_msg(0.0, grid))
     assert (g.width, g.height, g.origin_x, g.origin_y) == (grid.width, grid.height, grid.origin_x, grid.origin_y)
     assert np.array_equal(g.data, grid.data) and g.resolution_m == pytest.approx(grid.resolution_m)
+
+
+def test_the_shared_decoder_reads_rclpy_and_rosbags_messages_alike_with_sensor_msgs_own_status_codes():
+    from rclpy.serialization import serialize_message
+    from rosbags.typesys import Stores, get_typestore
+    from sensor_msgs.msg import BatteryState
+
+    from haven_sim.runtime import decode
+
+    assert decode.BATTERY_STATUS == {
+        PowerStatus.CHARGING: BatteryState.POWER_SUPPLY_STATUS_CHARGING,
+        PowerStatus.DISCHARGING: BatteryState.POWER_SUPPLY_STATUS_DISCHARGING,
+        PowerStatus.FULL: BatteryState.POWER_SUPPLY_STATUS_FULL,
+    }
+    store = get_typestore(Stores.ROS2_JAZZY)
+    for msg in (conv.battery_msg(2.0, BatteryReading(0.5, PowerStatus.CHARGING, 12.0, 2.0, 4.0, math.nan)),
+                conv.odometry_msg(2.0, RobotState(Pose2D(1.0, 2.0, 0.5), Twist2D(0.3, 0.0, 0.1))),
+                conv.goal_msg(2.0, Goal(Pose2D(3.0, 4.0, 1.0), "map"))):  # fmt: skip
+        name = type(msg).__module__.split(".")[0] + "/msg/" + type(msg).__name__
+        bag_msg = store.deserialize_cdr(serialize_message(msg), name)  # (what the bag reader gets)
+        read = {BatteryState: decode.battery_from_msg, conv.Odometry: decode.odometry_from_msg, conv.PoseStamped: decode.goal_from_msg}[type(msg)]
+        assert read(bag_msg) == read(msg) and decode.stamp_of(bag_msg) == decode.stamp_of(msg) == 2.0

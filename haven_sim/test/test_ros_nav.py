@@ -13,8 +13,7 @@ from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.nav.navigator import Navigator
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
+from haven_sim.nodes import conversions as conv, qos
 from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.world import packaged_world
 from haven_sim.sim.world_file import load_world

@@ -17,8 +17,7 @@ from std_msgs.msg import Bool, String
 from std_srvs.srv import Trigger
 
 from haven_sim.common.events import EventKind
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
+from haven_sim.nodes import conversions as conv, qos
 from haven_sim.sim.world import packaged_world
 from haven_sim.sim.world_file import load_world
 

@@ -4,16 +4,14 @@ import math
 
 import pytest
 from geometry_msgs.msg import PoseStamped
-from rcl_interfaces.msg import Parameter as ParameterMsg
-from rcl_interfaces.msg import ParameterType, ParameterValue
+from rcl_interfaces.msg import Parameter as ParameterMsg, ParameterType, ParameterValue
 from rcl_interfaces.srv import DescribeParameters, SetParameters
 from std_msgs.msg import String
 from visualization_msgs.msg import Marker, MarkerArray
 
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
+from haven_sim.nodes import conversions as conv, qos
 from haven_viz.markers import MarkerSpec, Shape
 from haven_viz.nodes.conversions import marker_msg, spec_from_msg
 

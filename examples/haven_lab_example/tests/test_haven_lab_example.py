@@ -9,13 +9,11 @@ from haven_lab_example.trust import TRUST
 
 from haven_scenarios.record.metrics import accept_plugin as accept_metric
 from haven_scenarios.run.trial import run_trial
-from haven_scenarios.study.participants import Walker
-from haven_scenarios.study.participants import accept_plugin as accept_participant
+from haven_scenarios.study.participants import Walker, accept_plugin as accept_participant
 from haven_scenarios.study.questionnaires import accept_plugin as accept_questionnaire
 from haven_scenarios.study.scenario import load_scenario
 from haven_sim.common.geometry import Pose2D
-from haven_viz.cue_kind import CueContext, TrackedPath
-from haven_viz.cue_kind import accept_plugin as accept_cue
+from haven_viz.cue_kind import CueContext, TrackedPath, accept_plugin as accept_cue
 from haven_viz.cues import CueParams
 
 

@@ -16,8 +16,7 @@ from std_msgs.msg import String
 
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
+from haven_sim.nodes import conversions as conv, qos
 from haven_sim.nodes.runner import run_node
 
 SHOWN = {

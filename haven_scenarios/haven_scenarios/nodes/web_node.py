@@ -61,8 +61,7 @@ from haven_scenarios.web.tls import address_notes, server_context
 from haven_scenarios.web.wizard import StartGate, Wizard
 from haven_sim.common import nodes, topics
 from haven_sim.common.events import Event, EventKind, Sequencer, Source, event
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import wire
+from haven_sim.nodes import conversions as conv, wire
 from haven_sim.nodes.runner import declare, refuse_changes, refused, run_node
 
 STATUS_TOPIC = absolute(topics.TRIAL_STATUS)

@@ -24,10 +24,7 @@ from typing import Any, BinaryIO, TypeVar
 import numpy as np
 import yaml
 from mcap.exceptions import McapError
-from mcap.records import Channel as McapChannel
-from mcap.records import McapRecord
-from mcap.records import Message as McapMessage
-from mcap.records import Schema as McapSchema
+from mcap.records import Channel as McapChannel, McapRecord, Message as McapMessage, Schema as McapSchema
 from mcap.stream_reader import StreamReader
 from rosbags.highlevel import AnyReader
 from rosbags.interfaces import Connection, Qos
@@ -39,11 +36,9 @@ from haven_scenarios.record.message_types import why_not
 from haven_scenarios.record.outsiders import PublisherLog
 from haven_scenarios.record.timeline import RECORDED, Recording
 from haven_sim.common import topics
-from haven_sim.common.events import Event, EventError
-from haven_sim.common.geometry import Pose2D, Twist2D, checked_pose
-from haven_sim.common.state import Goal, RobotState, name_humans
+from haven_sim.common.events import EventError
+from haven_sim.runtime import decode
 from haven_sim.runtime.component import Message
-from haven_sim.sim.battery import BatteryReading, PowerStatus, checked_percentage
 from haven_viz.cues import CueState
 
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)
@@ -147,36 +142,24 @@ def own_stamp(cdr: bytes) -> int:
     return max(0, sec * 1_000_000_000 + nsec) if nsec < 1_000_000_000 else 0
 
 
-def _pose(p: Any) -> Pose2D:
-    """(ValueError, so the message is skipped, for a pose no node should have sent.)"""
-    q = p.orientation
-    return checked_pose(p.position.x, p.position.y, q.x, q.y, q.z, q.w)
-
-
-def _stamp(msg: Any) -> float:
-    return float(msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9)
-
-
 def _message(topic: str, msg: Any, human_ids: Sequence[str]) -> Message:
-    """A recorded message as the core payload the components and metrics use, with its own stamp
-    (the header's, or the event's or cue state's)."""
+    """A recorded message as the core payload the components and metrics use (the nodes' own
+    decoder, haven_sim.runtime.decode), with its own stamp (the header's, or the event's or cue
+    state's)."""
     if topic == topics.ODOM:
-        t = msg.twist.twist
-        return Message(topic, RobotState(_pose(msg.pose.pose), Twist2D(t.linear.x, t.linear.y, t.angular.z), msg.pose.pose.position.z), _stamp(msg))
+        return Message(topic, decode.odometry_from_msg(msg), decode.stamp_of(msg))
     if topic == topics.HUMANS:
-        return Message(topic, name_humans([_pose(p) for p in msg.poses], human_ids), _stamp(msg))
+        return Message(topic, decode.humans_from_msg(msg, human_ids), decode.stamp_of(msg))
     if topic == topics.BATTERY:
-        level = checked_percentage(msg.percentage)
-        reading = BatteryReading(level, PowerStatus.DISCHARGING, float(msg.voltage), float(msg.charge), float(msg.capacity), float("nan"))
-        return Message(topic, reading, _stamp(msg))
+        return Message(topic, decode.battery_from_msg(msg), decode.stamp_of(msg))
     if topic == topics.PLAN:
-        return Message(topic, [_pose(ps.pose) for ps in msg.poses], _stamp(msg))
+        return Message(topic, decode.path_from_msg(msg), decode.stamp_of(msg))
+    if topic == topics.GOAL:
+        return Message(topic, decode.goal_from_msg(msg), decode.stamp_of(msg))
     if topic == topics.CUE_STATE:
         stamp, state = CueState.from_json(msg.data)
         return Message(topic, state, stamp)
-    if topic == topics.GOAL:
-        return Message(topic, Goal(_pose(msg.pose), str(msg.header.frame_id)), _stamp(msg))
-    e = Event.from_json(msg.data)
+    e = decode.event_from_msg(msg)
     return Message(topic, e, e.stamp)
 
 

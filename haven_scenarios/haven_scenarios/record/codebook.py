@@ -13,8 +13,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 
 from haven_scenarios.record import metric_table
-from haven_scenarios.record.participants import PARTICIPANTS_CSV
-from haven_scenarios.record.participants import codebook_rows as participant_rows
+from haven_scenarios.record.participants import PARTICIPANTS_CSV, codebook_rows as participant_rows
 from haven_scenarios.record.report import write_table
 from haven_scenarios.study.instruments import StudyInstruments
 from haven_scenarios.study.questionnaires import Questionnaire, codebook_rows, registered

@@ -23,8 +23,7 @@ from typing import Any
 from haven_scenarios.record.report import write_table
 from haven_scenarios.record.session import write_json
 from haven_scenarios.study.instruments import CONSENT, StudyInstruments, agreed
-from haven_scenarios.study.questionnaires import CHOICE, Questionnaire, answers_record
-from haven_scenarios.study.questionnaires import codebook_rows as questionnaire_rows
+from haven_scenarios.study.questionnaires import CHOICE, Questionnaire, answers_record, codebook_rows as questionnaire_rows
 
 INSTRUMENTS_FILE = "instruments.json"
 PARTICIPANTS_CSV = "participants.csv"

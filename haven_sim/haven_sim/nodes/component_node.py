@@ -254,9 +254,8 @@ class ComponentNode(Node):
         # reader; the volatile one for the catch-up reader): they need not say so.
         quiet = SubscriptionEventCallbacks(incompatible_qos=lambda _: None)
         # (rclpy hands a two-argument callback the message info; its type hints do not say so)
-        reader = self.create_subscription(
-            spec.msg_type, topic, once, spec.sub_qos, event_callbacks=quiet if spec.best_effort_too else None  # type: ignore[arg-type]
-        )
+        events = quiet if spec.best_effort_too else None
+        reader = self.create_subscription(spec.msg_type, topic, once, spec.sub_qos, event_callbacks=events)  # type: ignore[arg-type]
         if spec.best_effort_too:
             self.create_subscription(spec.msg_type, topic, once, qos.best_effort(spec.sub_qos))  # type: ignore[arg-type]
         if spec.late_qos is None:

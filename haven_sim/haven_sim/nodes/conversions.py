@@ -1,8 +1,6 @@
-"""Core types <-> ROS messages. The only place in haven_sim that builds or reads messages.
-
-Every reader treats its message as untrusted (it may come from any node on the graph): a value
-the core cannot use (a NaN or 1e308 coordinate, a map whose size disagrees with its data) raises
-ValueError naming the field, which the nodes turn into a throttled warning.
+"""Core types <-> ROS messages: the nodes' one place for them. It builds the messages here and
+reads them with the shared decoder (`haven_sim.runtime.decode`, re-exported here), which the bag
+reader uses too.
 """
 
 from __future__ import annotations
@@ -20,9 +18,24 @@ from sensor_msgs.msg import BatteryState, LaserScan
 from std_msgs.msg import String
 
 from haven_sim.common.events import Event
-from haven_sim.common.geometry import MAX_WIRE_COORDINATE_M, Pose2D, Twist2D, checked_pose, stamp_parts, yaw_to_quaternion
-from haven_sim.common.state import Goal, HumanPoses, RobotState, name_humans
-from haven_sim.sim.battery import BatteryReading, PowerStatus, checked_percentage
+from haven_sim.common.geometry import Pose2D, Twist2D, stamp_parts, yaw_to_quaternion
+from haven_sim.common.state import Goal, HumanPoses, RobotState
+from haven_sim.runtime.decode import (  # (the readers, re-exported for the nodes)
+    BATTERY_STATUS as BATTERY_STATUS,
+    MAX_MAP_CELLS as MAX_MAP_CELLS,
+    battery_from_msg as battery_from_msg,
+    event_from_msg as event_from_msg,
+    goal_from_msg as goal_from_msg,
+    humans_from_msg as humans_from_msg,
+    occupancy_from_msg as occupancy_from_msg,
+    odometry_from_msg as odometry_from_msg,
+    path_from_msg as path_from_msg,
+    pose_from_msg as pose_from_msg,
+    pose_from_stamped as pose_from_stamped,
+    time_from_msg as time_from_msg,
+    twist_from_msg as twist_from_msg,
+)
+from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.frames import Frame
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.simulator import ScanData
@@ -37,19 +50,6 @@ def duration_msg(seconds: float) -> Duration:
     """A span of time (never negative) as builtin_interfaces/Duration."""
     sec, nanosec = stamp_parts(max(0.0, seconds))
     return Duration(sec=sec, nanosec=nanosec)
-
-
-MAX_MAP_CELLS = 100_000_000  # 5 km x 5 km at 0.5 m, or 500 m x 500 m at 5 cm
-
-
-def _finite(value: float, name: str, bound: float = math.inf) -> float:
-    if not math.isfinite(value) or abs(value) > bound:
-        raise ValueError(f"{name} must be finite{'' if bound == math.inf else f' and within +-{bound:g}'}, got {value!r}")
-    return float(value)
-
-
-def time_from_msg(msg: Time) -> float:
-    return msg.sec + msg.nanosec * 1e-9
 
 
 def clock_msg(t: float) -> Clock:
@@ -69,16 +69,6 @@ def pose_msg(p: Pose2D) -> Pose:
     msg.position.x, msg.position.y = p.x, p.y
     msg.orientation = quaternion_msg(p.yaw)
     return msg
-
-
-def pose_from_msg(msg: Pose) -> Pose2D:
-    p, q = msg.position, msg.orientation
-    return checked_pose(p.x, p.y, q.x, q.y, q.z, q.w)
-
-
-def twist_from_msg(msg: Twist) -> Twist2D:
-    """Non-finite values pass: the mux and the simulator refuse them (and say so) themselves."""
-    return Twist2D(msg.linear.x, msg.linear.y, msg.angular.z)
 
 
 def twist_msg(t: Twist2D) -> Twist:
@@ -115,10 +105,6 @@ def odometry_msg(stamp: float, state: RobotState, frame_id: str = "odom", child_
     return msg
 
 
-def odometry_from_msg(msg: Odometry) -> RobotState:
-    return RobotState(pose_from_msg(msg.pose.pose), twist_from_msg(msg.twist.twist), msg.pose.pose.position.z)
-
-
 def scan_msg(stamp: float, scan: ScanData, frame_id: str = "base_scan") -> LaserScan:
     msg = LaserScan()
     msg.header.stamp = time_msg(stamp)
@@ -135,13 +121,6 @@ def scan_msg(stamp: float, scan: ScanData, frame_id: str = "base_scan") -> Laser
     return msg
 
 
-_STATUS = {
-    PowerStatus.CHARGING: BatteryState.POWER_SUPPLY_STATUS_CHARGING,
-    PowerStatus.DISCHARGING: BatteryState.POWER_SUPPLY_STATUS_DISCHARGING,
-    PowerStatus.FULL: BatteryState.POWER_SUPPLY_STATUS_FULL,
-}
-
-
 def battery_msg(stamp: float, r: BatteryReading, frame_id: str = "base_link") -> BatteryState:
     msg = BatteryState()
     msg.header.stamp = time_msg(stamp)
@@ -153,16 +132,11 @@ def battery_msg(stamp: float, r: BatteryReading, frame_id: str = "base_link") ->
     msg.capacity = r.capacity_ah
     msg.design_capacity = r.capacity_ah
     msg.percentage = r.level
-    msg.power_supply_status = _STATUS[r.status]
+    msg.power_supply_status = BATTERY_STATUS[r.status]
     msg.power_supply_health = BatteryState.POWER_SUPPLY_HEALTH_GOOD
     msg.power_supply_technology = BatteryState.POWER_SUPPLY_TECHNOLOGY_LION
     msg.present = True
     return msg
-
-
-def battery_from_msg(msg: BatteryState) -> BatteryReading:
-    status = {v: k for k, v in _STATUS.items()}.get(msg.power_supply_status, PowerStatus.DISCHARGING)
-    return BatteryReading(checked_percentage(msg.percentage), status, float(msg.voltage), float(msg.charge), float(msg.capacity), math.nan)
 
 
 def humans_msg(stamp: float, poses: HumanPoses, frame_id: str = "map") -> PoseArray:
@@ -189,31 +163,8 @@ def occupancy_msg(stamp: float, grid: OccupancyGridData, frame_id: str = "map") 
     return msg
 
 
-def occupancy_from_msg(msg: OccupancyGrid) -> OccupancyGridData:
-    info = msg.info
-    if not (math.isfinite(info.resolution) and 1e-3 <= info.resolution <= 100.0):
-        raise ValueError(f"resolution must be within 0.001..100 m, got {info.resolution!r}")
-    if not 0 < info.width * info.height <= MAX_MAP_CELLS:
-        raise ValueError(f"a map of {info.width} x {info.height} cells (at most {MAX_MAP_CELLS} and at least one)")
-    if len(msg.data) != info.width * info.height:
-        raise ValueError(f"{len(msg.data)} cells of data for a map of {info.width} x {info.height}")
-    return OccupancyGridData(
-        resolution_m=info.resolution,
-        width=info.width,
-        height=info.height,
-        origin_x=_finite(info.origin.position.x, "origin.position.x", MAX_WIRE_COORDINATE_M),
-        origin_y=_finite(info.origin.position.y, "origin.position.y", MAX_WIRE_COORDINATE_M),
-        data=np.asarray(msg.data, dtype=np.int8).reshape(info.height, info.width),
-    )
-
-
 def event_msg(event: Event) -> String:
     return String(data=event.to_json())
-
-
-def event_from_msg(msg: String) -> Event:
-    """Raises EventError (a ValueError) on anything that is not a valid event."""
-    return Event.from_json(msg.data)
 
 
 def pose_stamped_msg(stamp: float, pose: Pose2D, frame_id: str = "map") -> PoseStamped:
@@ -224,16 +175,8 @@ def pose_stamped_msg(stamp: float, pose: Pose2D, frame_id: str = "map") -> PoseS
     return msg
 
 
-def pose_from_stamped(msg: PoseStamped) -> Pose2D:
-    return pose_from_msg(msg.pose)
-
-
 def goal_msg(stamp: float, goal: Goal) -> PoseStamped:
     return pose_stamped_msg(stamp, goal.pose, goal.frame)
-
-
-def goal_from_msg(msg: PoseStamped) -> Goal:
-    return Goal(pose_from_stamped(msg), msg.header.frame_id)
 
 
 def path_msg(stamp: float, poses: Sequence[Pose2D], frame_id: str = "map") -> Path:
@@ -246,14 +189,6 @@ def path_msg(stamp: float, poses: Sequence[Pose2D], frame_id: str = "map") -> Pa
         ps.pose = pose_msg(p)
         msg.poses.append(ps)
     return msg
-
-
-def path_from_msg(msg: Path) -> list[Pose2D]:
-    return [pose_from_msg(ps.pose) for ps in msg.poses]
-
-
-def humans_from_msg(msg: PoseArray, ids: Sequence[str] = ()) -> HumanPoses:
-    return name_humans([pose_from_msg(p) for p in msg.poses], ids)
 
 
 def transform_msg(stamp: float, f: Frame) -> TransformStamped:

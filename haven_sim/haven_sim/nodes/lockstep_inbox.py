@@ -83,7 +83,12 @@ class Inbox:
         quiet = SubscriptionEventCallbacks(incompatible_qos=lambda _: None)  # (a best-effort publisher: the second reader's)
         self.subs = {
             t: node.create_subscription(
-                specs[t].msg_type, t, _never, keep_all(specs[t].sub_qos), callback_group=group, raw=True,
+                specs[t].msg_type,
+                t,
+                _never,
+                keep_all(specs[t].sub_qos),
+                callback_group=group,
+                raw=True,
                 event_callbacks=quiet if specs[t].best_effort_too else None,
             )
             for t in inputs

@@ -36,8 +36,7 @@ from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.nav2_tasks import NavTask, TaskKind
 from haven_sim.nav.planner import PlanFailure
 from haven_sim.nav.planning import PlannerConfig
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import wire
+from haven_sim.nodes import conversions as conv, wire
 from haven_sim.nodes.component_node import declare_config
 from haven_sim.nodes.nav2_planner import PathPlanner
 from haven_sim.nodes.runner import run_node

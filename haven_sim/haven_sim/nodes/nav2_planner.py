@@ -22,8 +22,7 @@ from haven_sim.nav.navigator import Navigator
 from haven_sim.nav.planner import PlanFailure
 from haven_sim.nav.planner_kind import planner_class
 from haven_sim.nav.planning import PlannerConfig, world_lanes
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import wire
+from haven_sim.nodes import conversions as conv, wire
 from haven_sim.nodes.task_runner import TaskRunner, failure_code, unusable
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import resolve_world_path

@@ -17,8 +17,7 @@ from std_msgs.msg import Bool, String
 
 from haven_sim.common import topics
 from haven_sim.common.topics import ROBOT_CMD_VEL, WireParams
-from haven_sim.nodes import conversions as conv
-from haven_sim.nodes import qos
+from haven_sim.nodes import conversions as conv, qos
 
 try:  # not on PyPI: the pip setup builds it with colcon (scripts/build_interfaces.py)
     from tf2_msgs.msg import TFMessage
