@@ -73,7 +73,7 @@ def main(asked: list[str]) -> int:
         if shutil.which(tool) is None:
             print(f"build_interfaces: {tool} not found; not available: {missing}", file=sys.stderr)
             return 1
-    fixed = fix_export_paths()
+    fix_export_paths()
     jobs = os.cpu_count() or 2
     started = time.monotonic()
     with tempfile.TemporaryDirectory() as tmp:
@@ -102,7 +102,8 @@ def main(asked: list[str]) -> int:
         ]
         env = {**os.environ, "AMENT_PREFIX_PATH": str(PREFIX), "CMAKE_PREFIX_PATH": str(PREFIX)}
         env.setdefault("MAKEFLAGS", f"-j{jobs}")  # (no -l: see the module docstring)
-        print(f"build_interfaces: building {', '.join(wanted)} with {jobs} jobs (nav2_msgs takes a few minutes)", flush=True)
+        slow = " (nav2_msgs takes a few minutes)" if "nav2_msgs" in wanted else ""
+        print(f"build_interfaces: building {', '.join(wanted)} with {jobs} jobs{slow}", flush=True)
         said: list[str] = []
         with subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env) as colcon:
             assert colcon.stdout is not None
@@ -118,7 +119,7 @@ def main(asked: list[str]) -> int:
         print(f"build_interfaces: built but does not import: {', '.join(broken)}", file=sys.stderr)
         return 1
     took = time.monotonic() - started
-    print(f"build_interfaces: {', '.join(wanted)} built into {PREFIX} in {took:.0f} s ({fixed} cmake files had their paths fixed)")
+    print(f"build_interfaces: {', '.join(wanted)} built into {PREFIX} in {took:.0f} s")
     return 0
 
 

@@ -37,6 +37,7 @@ stamp="$VENV/.haven-installed"
 want=$(cat requirements.lock haven_sim/setup.py haven_viz/setup.py haven_scenarios/setup.py | cksum)
 if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   export PIP_DISABLE_PIP_VERSION_CHECK=1
+  echo "setup: installing the locked packages into $VENV (ROS 2 Jazzy's wheels among them: a few minutes the first time)"
   "$VENV/bin/python" -m pip install --quiet -r requirements.lock
   # compat mode puts each package folder on sys.path, so `python -m haven_sim...` also works from the
   # repository root (where the outer haven_sim/ folder would otherwise shadow the package).
