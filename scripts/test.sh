@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The whole test suite: setup (idempotent), lint (ruff), strict type checks of the core and the nodes
+# The whole test suite: setup (idempotent), lint (ruff), the import layers, strict type checks of the core and the nodes
 # (mypy), the docs site, then every test tier (conftest.py says which).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
 echo "== ruff"
 .venv/bin/ruff check .
+echo "== import layers (import-linter: .importlinter)"
+.venv/bin/lint-imports
 echo "== mypy (core and nodes, strict)"
 .venv/bin/mypy haven_sim/haven_sim haven_viz/haven_viz haven_scenarios/haven_scenarios
 echo "== docs (Sphinx, warnings as errors)"
