@@ -44,6 +44,20 @@ def _generated(_app: object) -> None:
     helps = {c.dest: c.help for c in sub._choices_actions}
     rows = ["| command | what it does |", "|---|---|"] + [f"| `haven {name}` | {helps.get(name, '')} |" for name in sub.choices]
     (out / "commands.part.md").write_text("\n".join(rows) + "\n\nEvery command's options: `haven COMMAND --help`.\n")
+    (out / "plugin_kinds.part.md").write_text(_plugin_kinds())
+
+
+def _plugin_kinds() -> str:
+    """Each plugin kind with HAVEN's own items, from the registries (a lab's name must not be one of
+    these); plugins from other packages this venv has installed are left out."""
+    from haven_sim.common import plugins
+
+    ours = {"haven_sim", "haven_viz", "haven_scenarios", "haven-sim", "haven-viz", "haven-scenarios"}
+    rows = ["| kind (entry point group) | HAVEN's own (names a lab's plugin cannot take) |", "|---|---|"]
+    for reg in plugins.every():
+        names = [f"`{p.name}`" for p in reg if p.package in ours]
+        rows.append(f"| `haven.{reg.kind}` | {', '.join(names)} |")
+    return "\n".join(rows) + "\n"
 
 
 def setup(app: object) -> None:

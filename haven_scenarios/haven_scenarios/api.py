@@ -91,8 +91,8 @@ def recorded_trial(
 ) -> RecordedTrial:
     """One recorded trial with the whole node suite, into a new session folder under `sessions`;
     blocks until its session is complete. `options` are TrialRequest's fields (participant,
-    condition, seed, world, params_file, teleop, rtf, free_running, without, allow, web,
-    questionnaires). `domains`: "A-B", the only ROS domains it may take (as `--domains`; None:
+    condition, seed, world, robot, person, params_file, teleop, rtf, free_running, without, allow,
+    web, questionnaires). `domains`: "A-B", the only ROS domains it may take (as `--domains`; None:
     $HAVEN_DOMAINS, if set). `quiet`: no progress lines."""
     known = [f for f in TrialRequest.__dataclass_fields__ if f not in ("scenario", "extra")]
     unknown = sorted(set(options) - set(known))
