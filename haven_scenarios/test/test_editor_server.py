@@ -28,6 +28,8 @@ from haven_sim.sim.map_image import MAX_CELLS, MAX_WALL_BOXES
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import load_world
 
+pytestmark = pytest.mark.integration  # (the editor's HTTP server on a socket)
+
 
 def room_world(name: str = "lab") -> dict[str, Any]:
     """A 6 x 4 m room as the editor's walls draw it, two rooms, the robot and a person."""

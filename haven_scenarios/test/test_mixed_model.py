@@ -26,6 +26,7 @@ def synthetic(people: int, participant_sd: float, residual_sd: float, seed: int 
     return out
 
 
+@pytest.mark.integration  # (a 240-trial fit: seconds of optimisation)
 def test_recovers_the_participant_variance_and_the_effects() -> None:
     f = fit(synthetic(200, participant_sd=1.0, residual_sd=0.5), CONDITIONS, "none")
     assert f.converged and not f.singular

@@ -23,7 +23,7 @@ from haven_scenarios.web.online_gate import link_signature
 from haven_scenarios.web.online_seats import Full, Seats
 from haven_scenarios.web.study_server import ServeOptions, StudyServer
 
-pytestmark = pytest.mark.unit
+pytestmark = pytest.mark.integration  # (HTTP servers on sockets)
 
 STUDY = """name: online_pilot
 scenarios: [hallway]

@@ -132,6 +132,7 @@ def test_a_metric_is_checked_before_any_trial_is_simulated() -> None:
         check_metric("godspeed_safety", paper)
 
 
+@pytest.mark.integration  # (a Monte Carlo of model fits)
 def test_a_power_of_one_is_drawn(tmp_path: Path) -> None:
     # (60 replicates all detecting: the Wilson interval's top is 1 less a rounding error, below the power)
     sure = estimate(cell(question(5.0, reps=60), "s", 8, slots(8), pool(16, effect=0.0)))

@@ -23,6 +23,8 @@ from haven_scenarios.web.editor_server import EditorServer
 from haven_scenarios.web.front_door import FrontDoor
 from haven_scenarios.web.tls import CA_CERT, CA_KEY, SERVER_CERT, SERVER_KEY, address_notes, make_certificates, names_of, server_context, tls_files
 
+pytestmark = pytest.mark.integration  # (TLS servers and clients on sockets)
+
 
 @pytest.fixture(scope="module")
 def certs(tmp_path_factory: pytest.TempPathFactory) -> Path:

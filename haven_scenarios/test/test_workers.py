@@ -10,6 +10,8 @@ import pytest
 
 from haven_scenarios.run.workers import WorkerLost, run_on_workers
 
+pytestmark = pytest.mark.integration  # (worker processes)
+
 
 def square_or_die(x: int) -> int:
     if x == 2:
