@@ -140,3 +140,30 @@ def test_a_model_whose_plugin_is_broken_is_named_as_such_not_as_unknown(monkeypa
     data["humans"][0]["model"] = ["shy"]
     with pytest.raises(ScenarioError, match="model: must be one of"):
         parse_scenario(data, "lab.yaml")
+
+
+def documented_model(name: str):
+    """A class defined by a Python block of docs/howto/plugins.md (the block that defines `name`)."""
+    import re
+
+    text = (Path(__file__).resolve().parents[2] / "docs" / "howto" / "plugins.md").read_text()
+    (block,) = [b for b in re.findall(r"```python\n(.*?)```", text, re.S) if f"class {name}(" in b]
+    scope: dict = {}
+    exec(compile(block, "plugins.md", "exec"), scope)  # (our own documentation)
+    return scope[name]
+
+
+def test_the_documented_participant_model_runs_and_does_what_its_docstring_says():
+    wary = documented_model("Wary")
+    world = parse_world(ROOM)
+    grid = rasterise(world)
+    planner, sight = GridPlanner(grid, HUMAN_PLANNER), Sight(grid)
+    person = wary("h1", [Stop(9.0, 1.0)], planner, 1.0, seed=3)
+    cues = CueState(Toggles(), {})
+    me = Pose2D(1.0, 1.0, 0.0)
+    far = perceive(person.params, sight, 0.0, me, Pose2D(8.0, 5.0, 0.0), cues, [])
+    near = perceive(person.params, sight, 0.0, me, Pose2D(2.5, 1.0, math.pi), cues, [])
+    walking = [person.command(k * 0.1, me, Pose2D(8.0, 5.0, 0.0), far) for k in range(20)]
+    assert walking[-1].vx > 0.3  # the robot far off: walks its task
+    standing = [person.command(2.0 + k * 0.1, me, Pose2D(2.5, 1.0, math.pi), near) for k in range(20)]
+    assert standing[-1] == (0.0, 0.0, 0.0)  # seen within 2 m: stands still
