@@ -12,6 +12,9 @@ layer over the same functions. For example::
 
     rows = api.sweep(["hallway"], seeds=range(10), grid={"condition": ["all", "none"]})
 
+    sim = api.Simulation("hallway", seed=3)                                # stepped by hand, to debug a model
+    sim.step(500); print(sim.state().humans["h1"]); sim.render("now.png")
+
     trials = api.study_plan("haven_paper")                                 # a whole study
     api.run_participant("haven_paper", "p01", batch=True)
     api.study_status("haven_paper"); api.study_report("haven_paper")
@@ -31,6 +34,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from haven_scenarios.run.grid import TrialSpec, parse_grid, plan_sweep
+from haven_scenarios.run.stepped import SimState, Simulation
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.sweep import run_rows
 from haven_scenarios.run.trial import TrialResult, check_seed, parse_condition, run_trial
@@ -49,6 +53,8 @@ if TYPE_CHECKING:
 __all__ = [
     "RecordedTrial",
     "Report",
+    "SimState",
+    "Simulation",
     "StudyRun",
     "TrialError",
     "TrialRequest",

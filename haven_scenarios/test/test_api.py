@@ -95,3 +95,18 @@ def test_seeds_and_conditions_as_a_script_writes_them():
             api.batch_trial("hallway", seed=bad)
     with pytest.raises(ValueError, match=r"^seeds: must be an integer"):
         api.sweep(["hallway"], seeds=[0, -2])
+
+
+def test_a_simulation_stepped_by_hand_is_the_batch_trial(tmp_path):
+    sim = api.Simulation("hallway", seed=3)
+    start = sim.state()
+    assert start.time == 0.0 and start.ended is None and set(start.humans) == {"h1"}
+    now = sim.step(500)  # 10 s of the 50 Hz physics
+    assert now.time == pytest.approx(500 * sim.step_s) and now.ended is None
+    assert now.robot.x > start.robot.x + 1.0 and now.battery < start.battery  # on its way, drawing power
+    picture = sim.render(tmp_path / "now.png")
+    assert picture.stat().st_size > 10_000 and sim.markers  # the AR cues shown now, drawn
+    assert sim.result().end_reason == "interrupted"  # (scored so far: not ended yet)
+    stepped = sim.run()
+    assert stepped.end_reason == "completed" and sim.step(10).ended == "completed"  # (nothing past the end)
+    assert stepped.metrics == api.batch_trial("hallway", seed=3).metrics  # the very trial `haven batch` runs

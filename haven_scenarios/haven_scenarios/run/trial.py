@@ -28,7 +28,7 @@ from haven_sim.nav.planning import PlannerComponent, world_lanes
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import with_robot
 from haven_sim.runtime.component import Component
-from haven_sim.runtime.loop import DelayFn, InProcessLoop
+from haven_sim.runtime.loop import DelayFn, InProcessLoop, Observer
 from haven_sim.sim.simulator import SimulatorComponent
 from haven_viz.cues import CUES, DEFAULT_ON, CueParams, CueToggles, Toggles, unfit, unknown_cue
 from haven_viz.viz import VizComponent
@@ -97,8 +97,17 @@ class TrialResult:
 
 
 class Trial:
+    """The trial's components in the in-process loop. `watch`: more observers of more topics (a
+    stepped simulation's view of the AR markers), beside the recording."""
+
     def __init__(
-        self, scenario: Scenario, seed: int = 0, toggles: CueToggles | None = None, suite: SuiteConfig | None = None, delay: DelayFn | None = None
+        self,
+        scenario: Scenario,
+        seed: int = 0,
+        toggles: CueToggles | None = None,
+        suite: SuiteConfig | None = None,
+        delay: DelayFn | None = None,
+        watch: tuple[Sequence[Observer], Sequence[str]] = ((), ()),
     ) -> None:
         self.scenario = scenario
         self.seed = seed
@@ -115,12 +124,16 @@ class Trial:
             self.director,
         ]
         self.recording = Recording()
-        self.loop = InProcessLoop(self.sim, components, [self.recording.add], RECORDED, delay)
+        observers, watched = watch
+        self.loop = InProcessLoop(self.sim, components, [self.recording.add, *observers], {*RECORDED, *watched}, delay)
+        self.limit = math.ceil((scenario.timeout_s + GRACE_S) / self.sim.config.sim.step_s)  # steps at most
 
     def run(self) -> TrialResult:
-        step_s = self.sim.config.sim.step_s
-        limit = math.ceil((self.scenario.timeout_s + GRACE_S) / step_s)
-        self.loop.run_until(lambda: self.director.ended is not None, limit)
+        self.loop.run_until(lambda: self.director.ended is not None, self.limit - self.sim.sim.steps)
+        return self.result()
+
+    def result(self) -> TrialResult:
+        """The metrics of the trial so far (end reason `interrupted` while it has not ended)."""
         reason = self.director.ended or EndReason.INTERRUPTED
         metrics = compute(self.recording, self.scenario.name, reason, self.scenario.world, robot=self.scenario.robot)
         metrics.update(seed=self.seed, condition=condition_name(self.toggles), robot=self.scenario.robot.name)
