@@ -90,5 +90,29 @@ def browser():  # type: ignore[no-untyped-def]
     playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
     with playwright.sync_playwright() as p:
         b = p.chromium.launch(executable_path=path, args=CHROMIUM_ARGS)
-        yield b
+        yield _PatientBrowser(b)
         b.close()
+
+
+ACTION_TIMEOUT_MS = 90_000  # a limit, not a wait: on a loaded 2-core machine a page's button took over 30 s to settle
+
+
+class _PatientBrowser:
+    """The browser, with every page's actions (a click, a fill) given as long as the tests' own
+    waits for page state, instead of Playwright's 30 s default."""
+
+    def __init__(self, browser):  # type: ignore[no-untyped-def]
+        self._browser = browser
+
+    def new_page(self, **options):  # type: ignore[no-untyped-def]
+        page = self._browser.new_page(**options)
+        page.set_default_timeout(ACTION_TIMEOUT_MS)
+        return page
+
+    def new_context(self, **options):  # type: ignore[no-untyped-def]
+        context = self._browser.new_context(**options)
+        context.set_default_timeout(ACTION_TIMEOUT_MS)
+        return context
+
+    def __getattr__(self, name):  # type: ignore[no-untyped-def]
+        return getattr(self._browser, name)
