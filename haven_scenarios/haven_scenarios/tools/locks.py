@@ -1,17 +1,15 @@
 """Exclusive OS file locks that say who holds them: one runner per study participant, one HAVEN
 suite per ROS domain on this machine.
 
-A lock is `flock(2)` on a small file: the kernel drops it when the holder's process ends in any way
-(a crash, SIGKILL), so a lock is never left stale. The holder writes who it is into the file (pid,
-command, when), and a refused taker reads that back to say who is in the way. Lock files are
-only ever opened, never deleted (deleting one while another process waits on it would let two
-holders in at once).
+The lock is the `filelock` library's (`flock(2)` on a small file: the kernel drops it when the
+holder's process ends in any way, a crash or SIGKILL, so a lock is never left stale). The file is
+kept on release (deleting one while another process waits on it would let two holders in at once),
+and the holder writes who it is into it (pid, command, when), which a refused taker reads back to
+say who is in the way.
 """
 
 from __future__ import annotations
 
-import errno
-import fcntl
 import json
 import os
 import sys
@@ -19,6 +17,8 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 from types import TracebackType
+
+import filelock
 
 
 @dataclass(frozen=True)
@@ -48,34 +48,35 @@ class FileLock:
 
     def __init__(self, path: Path, what: str = "") -> None:
         self.path, self.what = Path(path), what or command_line()
-        self.fd: int | None = None
+        self._lock = filelock.FileLock(self.path, thread_local=False, preserve_lock_file=True, on_acquired=self._say_who)
 
-    def acquire(self, wait: bool = False) -> FileLock:
-        """Take the lock (`wait`: block until the holder lets go, for short critical sections)."""
-        fd = _open(self.path)
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | (0 if wait else fcntl.LOCK_NB))
-        except OSError as e:
-            os.close(fd)
-            if e.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):
-                raise Locked(self.path, read_holder(self.path)) from None
-            raise
-        self.fd = fd
+    def _say_who(self, fd: int) -> None:
         info = {"pid": os.getpid(), "command": self.what[:200], "since": time.strftime("%Y-%m-%d %H:%M:%S")}
         try:  # (a lock file another user made may not be writable: the lock holds all the same)
             os.ftruncate(fd, 0)
             os.pwrite(fd, (json.dumps(info) + "\n").encode(), 0)
         except OSError:
             pass
+
+    @property
+    def held(self) -> bool:
+        return self._lock.is_locked
+
+    def acquire(self, wait: bool = False) -> FileLock:
+        """Take the lock (`wait`: block until the holder lets go, for short critical sections)."""
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        try:
+            self._lock.acquire(timeout=-1, blocking=wait)
+        except filelock.Timeout:
+            raise Locked(self.path, read_holder(self.path)) from None
         return self
 
     def release(self) -> None:
-        if self.fd is not None:
-            os.close(self.fd)  # (closing the descriptor drops the flock)
-            self.fd = None
+        if self._lock.is_locked:
+            self._lock.release(force=True)
 
     def __enter__(self) -> FileLock:
-        return self if self.fd is not None else self.acquire()
+        return self if self.held else self.acquire()
 
     def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
         self.release()
@@ -86,23 +87,6 @@ def command_line() -> str:
     program = Path(sys.argv[0]).name if sys.argv and sys.argv[0] else "python"
     program = "haven" if program in ("__main__.py", "cli.py", "haven") else program
     return " ".join([program, *sys.argv[1:]])
-
-
-def _open(path: Path) -> int:
-    """The lock file's descriptor, made if missing. Opened for reading and writing where allowed,
-    else read-only (flock works on either). Not inherited by children (os.open's default)."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    for flags in (os.O_RDWR, os.O_RDONLY):
-        try:
-            return os.open(path, flags)
-        except FileNotFoundError:
-            try:
-                return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL, 0o666)
-            except FileExistsError:
-                continue  # made by another process just now: open it
-        except PermissionError:
-            continue
-    return os.open(path, os.O_RDONLY)
 
 
 HOLDER_WAIT_S = 0.5  # a holder writes who it is just after it takes the lock: a taker that finds the file empty waits this long for it
