@@ -20,12 +20,12 @@ from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
+from common import OUT, save
 
-from haven_scenarios.run.batch import run_batch  # noqa: E402
-from haven_scenarios.run.grid import plan_sweep  # noqa: E402
-from haven_scenarios.run.sweep import LOCAL, cores  # noqa: E402
-from haven_scenarios.study.scenario import load_scenario  # noqa: E402
+from haven_scenarios.run.batch import run_batch
+from haven_scenarios.run.grid import plan_sweep
+from haven_scenarios.run.sweep import LOCAL, cores
+from haven_scenarios.study.scenario import load_scenario
 
 
 def sweep(trials: int, workers: int, cluster: str | None, folder: Path) -> dict[str, Any]:

@@ -19,10 +19,10 @@ from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
+from common import OUT, save
 
-from haven_scenarios.run.trial import run_trial  # noqa: E402
-from haven_scenarios.study.scenario import Scenario, load_scenario, scenario_names  # noqa: E402
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.scenario import Scenario, load_scenario, scenario_names
 
 MODELS = ("walker", "blocker", "yielder")
 BATTERY = [(mode, order) for mode in ("on_arrival", "continuous") for order in ("nearest", "random")]

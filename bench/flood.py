@@ -20,7 +20,7 @@ from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
+from common import OUT, save
 
 FLOOD = Path(__file__).resolve().parents[1] / "haven_scenarios" / "test" / "flood.py"
 SAME = ("robot_time_to_finish_s", "min_human_centre_distance_m", "robot_path_length_m", "replans", "waits", "duration_s")

@@ -21,15 +21,15 @@ import yaml
 from PIL import Image
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
-from planner_latency import run as plan_run  # noqa: E402
-from sim_speed import run_case  # noqa: E402
-from w1_map import ROOMS, human_rooms, w1_world  # noqa: E402
+from common import OUT, save
+from planner_latency import run as plan_run
+from sim_speed import run_case
+from w1_map import ROOMS, human_rooms, w1_world
 
-from haven_sim.sim.map_image import read_image, wall_boxes  # noqa: E402
-from haven_sim.sim.occupancy import rasterise  # noqa: E402
-from haven_sim.sim.world import World  # noqa: E402
-from haven_sim.sim.world_file import load_world  # noqa: E402
+from haven_sim.sim.map_image import read_image, wall_boxes
+from haven_sim.sim.occupancy import rasterise
+from haven_sim.sim.world import World
+from haven_sim.sim.world_file import load_world
 
 RESOLUTION = 0.05  # m/cell: map_saver's usual (slam_toolbox's default `resolution`)
 RAGGED_FRACTION = 0.05  # of the free cells along a wall's face made occupied

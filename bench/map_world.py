@@ -20,12 +20,12 @@ import yaml
 from PIL import Image
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
+from common import OUT, save
 
-from haven_scenarios.run.trial import run_trial  # noqa: E402
-from haven_scenarios.study.scenario import load_scenario  # noqa: E402
-from haven_sim.sim.occupancy import rasterise  # noqa: E402
-from haven_sim.sim.world_file import load_world  # noqa: E402
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.scenario import load_scenario
+from haven_sim.sim.occupancy import rasterise
+from haven_sim.sim.world_file import load_world
 
 
 def map_version(folder: Path) -> Path:

@@ -20,8 +20,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "haven_sim" / "test"))
-from common import OUT, save  # noqa: E402
-from ros_harness import RosHarness  # noqa: E402
+from common import OUT, save
+from ros_harness import RosHarness
 
 
 def cpu_seconds(pid: int) -> float:

@@ -22,15 +22,15 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
-from w1_map import w1_world  # noqa: E402
+from common import OUT, save
+from w1_map import w1_world
 
-from haven_sim.common.geometry import Pose2D, distance_point_to_edges  # noqa: E402
-from haven_sim.nav.navigator import Navigator  # noqa: E402
-from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError  # noqa: E402
-from haven_sim.sim.occupancy import rasterise  # noqa: E402
-from haven_sim.sim.world import World, packaged_world  # noqa: E402
-from haven_sim.sim.world_file import load_world  # noqa: E402
+from haven_sim.common.geometry import Pose2D, distance_point_to_edges
+from haven_sim.nav.navigator import Navigator
+from haven_sim.nav.planner import GridPlanner, PlannerParams, PlanningError
+from haven_sim.sim.occupancy import rasterise
+from haven_sim.sim.world import World, packaged_world
+from haven_sim.sim.world_file import load_world
 
 PARAMS = PlannerParams(safety_margin_m=0.05, body_radius_m=0.18)  # the peers' robot: 0.23 m inflation
 

@@ -19,11 +19,11 @@ from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
+from common import OUT, save
 
-from haven_scenarios.run.trial import run_trial  # noqa: E402
-from haven_scenarios.study.scenario import load_scenario  # noqa: E402
-from haven_sim.robots.robot_kind import resolve_robot, robot_names  # noqa: E402
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.scenario import load_scenario
+from haven_sim.robots.robot_kind import resolve_robot, robot_names
 
 SCENARIOS = ("hallway", "shared_room")
 MODELS = ("walker", "blocker", "yielder")

@@ -26,13 +26,13 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from w1_map import human_rooms, room_box, w1_world  # noqa: E402
+from w1_map import human_rooms, room_box, w1_world
 
-from haven_sim.common.events import EventKind  # noqa: E402
-from haven_sim.common.geometry import Twist2D  # noqa: E402
-from haven_sim.sim.simulation import Simulation  # noqa: E402
-from haven_sim.sim.world import World, packaged_world  # noqa: E402
-from haven_sim.sim.world_file import load_world  # noqa: E402
+from haven_sim.common.events import EventKind
+from haven_sim.common.geometry import Twist2D
+from haven_sim.sim.simulation import Simulation
+from haven_sim.sim.world import World, packaged_world
+from haven_sim.sim.world_file import load_world
 
 
 class Wanderers:

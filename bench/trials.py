@@ -17,11 +17,11 @@ from pathlib import Path
 from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
+from common import OUT, save
 
-from haven_scenarios.run.trial import run_trial  # noqa: E402
-from haven_scenarios.study.scenario import load_scenario, scenario_names  # noqa: E402
-from haven_sim.common.events import Event, EventKind  # noqa: E402
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.scenario import load_scenario, scenario_names
+from haven_sim.common.events import Event, EventKind
 
 
 def batch(name: str, trials: int) -> dict[str, Any]:

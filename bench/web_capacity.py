@@ -22,8 +22,8 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
-from web_wire import HAVEN, measure  # noqa: E402
+from common import OUT, save
+from web_wire import HAVEN, measure
 
 GOAL_P95_MS = 100.0  # the bar for a live trial
 

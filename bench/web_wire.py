@@ -26,7 +26,7 @@ import websockets
 from haven_scenarios.record.bag import TYPESTORE
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from common import OUT, save  # noqa: E402
+from common import OUT, save
 
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 # Messages are built and read with rosbags' CDR codec (no rclpy: this is a client from outside ROS).

@@ -26,10 +26,10 @@ from rclpy.node import Node
 from rclpy.qos import QoSProfile
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))  # examples/: the path, without ROS
-from nav2_style_path import turn_then_straight  # noqa: E402
+from nav2_style_path import turn_then_straight
 
 
-def yaw_of(q) -> float:  # noqa: ANN001 - a geometry_msgs/Quaternion
+def yaw_of(q) -> float:
     return math.atan2(2.0 * (q.w * q.z + q.x * q.y), 1.0 - 2.0 * (q.y * q.y + q.z * q.z))
 
 

@@ -10,7 +10,7 @@ from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.nav.motion_style import MotionStyle
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
-from nav2_style_path import STEP_M, turn_then_straight  # noqa: E402
+from nav2_style_path import STEP_M, turn_then_straight
 
 
 def test_the_example_path_turns_toward_the_goal_then_runs_straight_to_it():

@@ -33,7 +33,7 @@ async def frames(ws, timeout_s, done):
     while loop.time() < deadline and not done():
         try:
             yield await asyncio.wait_for(ws.recv(), timeout=1.0)
-        except asyncio.TimeoutError:
+        except TimeoutError:
             continue
 
 

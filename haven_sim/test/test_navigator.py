@@ -68,7 +68,7 @@ def test_waiting_robot_passes_once_the_person_makes_room():
     sim, nav, follower = setup((5.0, 0.8), width=1.6)
 
     def step_to_the_wall(sim, t):
-        if 8.0 <= sim.time and sim.human_poses()["h"].y > 0.45:
+        if sim.time >= 8.0 and sim.human_poses()["h"].y > 0.45:
             sim.command_human("h", Twist2D(0.0, -0.3, 0.0))
         else:
             sim.command_human("h", Twist2D())

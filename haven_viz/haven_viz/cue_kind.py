@@ -190,11 +190,11 @@ def accept_plugin(name: str, value: Any) -> Any:
     ):
         if not hasattr(value, attr):
             setattr(value, attr, default)
-    kinds = getattr(value, "kinematics")  # noqa: B009 - (set just above)
+    kinds = getattr(value, "kinematics")
     if isinstance(kinds, str) or not isinstance(kinds, tuple) or not kinds or any(k not in KINDS for k in kinds):
         raise ValueError(f"is not a cue: its kinematics must be a tuple of robot kinds ({', '.join(KINDS)}), got {str(kinds)[:50]}")
-    key, exposure, rank = getattr(value, "key"), getattr(value, "exposure"), getattr(value, "rank")  # noqa: B009 - (set just above)
-    if not isinstance(getattr(value, "default_on"), bool):  # noqa: B009 - (set just above)
+    key, exposure, rank = getattr(value, "key"), getattr(value, "exposure"), getattr(value, "rank")
+    if not isinstance(getattr(value, "default_on"), bool):
         raise ValueError("is not a cue: its default_on must be true or false")
     if not isinstance(key, str) or not key or not isinstance(exposure, str) or not isinstance(rank, int):
         raise ValueError("is not a cue: its key and exposure must be names, its rank a whole number")

@@ -14,18 +14,18 @@ from pathlib import Path
 import matplotlib
 
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.axes import Axes  # noqa: E402
-from matplotlib.collections import PolyCollection  # noqa: E402
-from matplotlib.patches import Circle, FancyArrow, Polygon, Rectangle  # noqa: E402
-from matplotlib.transforms import Affine2D  # noqa: E402
+import matplotlib.pyplot as plt
+from matplotlib.axes import Axes
+from matplotlib.collections import PolyCollection
+from matplotlib.patches import Circle, FancyArrow, Polygon, Rectangle
+from matplotlib.transforms import Affine2D
 
-from haven_sim.common import atomic  # noqa: E402
-from haven_sim.common.geometry import FloatArray  # noqa: E402
-from haven_sim.sim.world import World  # noqa: E402
-from haven_viz.cues import BATTERY_NS, THOUGHT_NS  # noqa: E402
-from haven_viz.markers import MarkerSpec, Shape  # noqa: E402
-from haven_viz.world_markers import COLORS  # noqa: E402
+from haven_sim.common import atomic
+from haven_sim.common.geometry import FloatArray
+from haven_sim.sim.world import World
+from haven_viz.cues import BATTERY_NS, THOUGHT_NS
+from haven_viz.markers import MarkerSpec, Shape
+from haven_viz.world_markers import COLORS
 
 # Drawing order: floor items, then path, then bodies, then what floats above.
 _LAYER = {

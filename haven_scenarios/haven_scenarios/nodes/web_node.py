@@ -23,7 +23,7 @@ import os
 import sys
 import threading
 import time
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from pathlib import Path
 
 from foxglove.websocket import StatusLevel
@@ -190,7 +190,7 @@ class WebNode(Node):
             if role.is_console:
                 try:
                     msg = deserialize_message(data, pub.msg_type)
-                except Exception:  # noqa: BLE001 - bad bytes from a page: drop them, say so
+                except Exception:
                     self.get_logger().warning(f"console: undecodable message on {topic}", throttle_duration_sec=5.0)
                     return
                 if topic == absolute(topics.TRIAL_CONTROL) and str(msg.data) in (TrialCommand.STOP, TrialCommand.ABORT):
@@ -213,14 +213,14 @@ class WebNode(Node):
         """A participant's answers to one questionnaire (checked, written), or the console's skip."""
         try:
             text = str(deserialize_message(data, String).data)
-        except Exception:  # noqa: BLE001 - bad bytes from a page: refused, said in one line
+        except Exception:
             refused(self, topic, f"undecodable message from page {role.name}")
             return
         if topic == SKIP_QUESTIONNAIRES:
             self._log(self.wizard.skip_questionnaires(self.now()))
             return
         try:
-            self._log([self.answers.take(role.name, text, self.now(), datetime.now(timezone.utc).isoformat(timespec="seconds"))])
+            self._log([self.answers.take(role.name, text, self.now(), datetime.now(UTC).isoformat(timespec="seconds"))])
         except ValueError as e:
             refused(self, topic, e)
         except OSError as e:  # (a full disk: the page's answers stay unsent, it can send them again)
@@ -238,7 +238,7 @@ def _text(data: bytes) -> str:
     """A page's std_msgs/String as text ('' if it is not one)."""
     try:
         return str(deserialize_message(data, String).data)
-    except Exception:  # noqa: BLE001 - bad bytes from a page
+    except Exception:
         return ""
 
 

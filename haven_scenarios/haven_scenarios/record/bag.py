@@ -257,7 +257,7 @@ def readable(bag: Path) -> bool:
     try:
         with AnyReader([bag], default_typestore=TYPESTORE):
             return True
-    except Exception:  # noqa: BLE001 - rosbags raises several kinds for a damaged bag
+    except Exception:
         return False
 
 
@@ -333,7 +333,7 @@ def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording,
     try:  # (opened once: rosbags parses metadata.yaml and the MCAP index each time, a second on a busy machine)
         for m in read_messages(bag, human_ids):
             rec.add(m)
-    except Exception:  # noqa: BLE001 - not a bag rosbags opens (it raises several kinds): recovered below
+    except Exception:
         rec = Recording()
     else:
         rec.lost = lost_messages(bag)
@@ -350,6 +350,6 @@ def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording,
         try:
             rec.add(_message(name, TYPESTORE.deserialize_cdr(data, msgtype), human_ids))
             n += 1
-        except Exception:  # noqa: BLE001 - a message cut short by the truncation
+        except Exception:
             continue
     return rec, f"bag recovered from its MCAP data ({n} messages read; metadata or footer missing: `haven repair` rebuilds it)"

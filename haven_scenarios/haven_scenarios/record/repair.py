@@ -57,7 +57,7 @@ def _has_summary(path: Path) -> bool:
     try:
         with path.open("rb") as f:
             return make_reader(f).get_summary() is not None
-    except Exception:  # noqa: BLE001 - the mcap reader raises several kinds for a cut file
+    except Exception:
         return False
 
 
@@ -115,7 +115,7 @@ def _rewrite(sources: Sequence[Path], out: Path, kept_custom: dict[str, str], ho
                 if channel not in connections:
                     try:
                         connections[channel] = _connection(writer, channel)
-                    except Exception:  # noqa: BLE001 - a definition rosbags cannot parse: the topic is left out, and said so
+                    except Exception:
                         connections[channel] = None
                 conn = connections[channel]
                 if conn is None:

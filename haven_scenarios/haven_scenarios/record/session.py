@@ -28,7 +28,7 @@ import sys
 import time
 from collections.abc import Mapping
 from dataclasses import fields
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from importlib import metadata
 from pathlib import Path
 from typing import Any
@@ -223,14 +223,14 @@ def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
     ids = [h.id for h in world.humans] if world is not None else [str(i) for i in info.get("humans", [])]
     try:
         rec, note = read_recording(folder / "bag", ids)
-    except Exception as e:  # noqa: BLE001 - whatever a damaged bag raises, the row says so
+    except Exception as e:
         rec, note = Recording(), f"bag unreadable: {str(e)[:120]}"
     end = rec.first(EventKind.TRIAL_END)
     name, reason = str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED
     problems = [p for p in (note, problem, recorder_stop.problem(info, folder / "bag", rec)) if p]
     try:
         metrics = compute(rec, name, reason, world, declared_of(info), scenario.robot if scenario is not None else DEFAULT)
-    except Exception as e:  # noqa: BLE001 - whatever a recording no check foresaw makes of the metrics, the row says so
+    except Exception as e:
         metrics = {"scenario": name, "end_reason": reason, "duration_s": None, "valid": False, "invalid_reasons": []}
         problems.append(f"metrics could not be computed: {type(e).__name__}: {str(e)[:120]}")
     if problems:
@@ -307,5 +307,5 @@ def trial_wall_clock(folder: Path) -> dict[str, str]:
         if isinstance(e, dict) and e.get("type") in kinds and isinstance(e.get("stamp"), (int, float)):
             t = to_wall_time(pairs, float(e["stamp"]))
             if t is not None:
-                out[e["type"]] = datetime.fromtimestamp(t, tz=timezone.utc).isoformat(timespec="milliseconds")
+                out[e["type"]] = datetime.fromtimestamp(t, tz=UTC).isoformat(timespec="milliseconds")
     return out

@@ -171,7 +171,7 @@ def _panel(ax: Any, panel: Panel, scenario: str, values: Values, conditions: Seq
     ]
     ax.set_xticks(range(len(conditions)), ticks, fontsize=7)
     ax.set_xlim(-0.5, len(conditions) - 0.3)
-    if all(float(v).is_integer() for v in data) or panel.limits is None and panel.measure == "hesitations":
+    if all(float(v).is_integer() for v in data) or (panel.limits is None and panel.measure == "hesitations"):
         from matplotlib.ticker import MaxNLocator
 
         ax.yaxis.set_major_locator(MaxNLocator(integer=True))

@@ -45,10 +45,10 @@ def _serve(conn: Connection, task: Callable[[Any], Any]) -> None:
     while (item := conn.recv()) is not None:
         try:
             conn.send(("ok", task(item)))
-        except Exception as e:  # noqa: BLE001 - the parent raises it, as a pool would
+        except Exception as e:
             try:
                 conn.send(("error", e))
-            except Exception:  # noqa: BLE001 - (an exception that does not pickle)
+            except Exception:
                 conn.send(("error", RuntimeError(f"{type(e).__name__}: {e}")))
 
 

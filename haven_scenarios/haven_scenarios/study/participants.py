@@ -202,7 +202,7 @@ class Walker:
             return (0.0, 0.0)
         stop = self.stops[0]
         d = math.hypot(stop.x - me.x, stop.y - me.y)
-        if d <= stop.reach_m or self._arrived_at is not None and d <= self._close_enough(stop):
+        if d <= stop.reach_m or (self._arrived_at is not None and d <= self._close_enough(stop)):
             if self._arrived_at is None:
                 self._arrived_at = now
             if now - self._arrived_at >= stop.dwell_s:
@@ -345,7 +345,7 @@ class Yielder(Walker):
             self._yielding = (now, robot)
         since, robot_then = self._yielding
         waits = seen is not None and waits_for_me(seen.percept)  # it says so in its thought bubble
-        if waits or now - since >= self.patience_s and robot.distance_to(robot_then) < 0.1:
+        if waits or (now - since >= self.patience_s and robot.distance_to(robot_then) < 0.1):
             self._walk_on_until, self._yielding = now + self.walk_on_s, None  # the robot waits for us: go on
             return self._task(now, me)
         side = -1.0  # right, unless the shown way lies to the right

@@ -17,7 +17,7 @@ import json
 import ssl
 import threading
 from collections.abc import Sequence
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from http.server import BaseHTTPRequestHandler
 from typing import Any
 from urllib.parse import urlsplit
@@ -121,7 +121,7 @@ class InstrumentServer:
                 raise ValueError(f"answers must name one of {', '.join(self.qs)}")
             name = msg["questionnaire"]
             with self._lock:
-                self.book.take(self.qs[name], msg["answers"], datetime.now(timezone.utc).isoformat(timespec="seconds"), self.order[name])
+                self.book.take(self.qs[name], msg["answers"], datetime.now(UTC).isoformat(timespec="seconds"), self.order[name])
                 self._check_done()
                 answer = {"answered": [n for n in self.qs if n in self.book.data], "declined": self.book.declined()}
         except (ValueError, RecursionError) as e:

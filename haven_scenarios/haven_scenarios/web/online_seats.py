@@ -16,7 +16,7 @@ import json
 import secrets
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass
-from datetime import datetime, timezone
+from datetime import UTC, datetime
 from enum import StrEnum
 from pathlib import Path
 
@@ -92,7 +92,7 @@ class Seats:
             free = [p for p in self.participants if p not in taken]
             if not free:
                 raise Full(f"all {len(self.participants)} participants of the study have taken part or are taking part")
-            seat = Seat(panel_id, free[0], secrets.token_urlsafe(16), datetime.now(timezone.utc).isoformat(timespec="seconds"))
+            seat = Seat(panel_id, free[0], secrets.token_urlsafe(16), datetime.now(UTC).isoformat(timespec="seconds"))
             seats[panel_id] = seat
             self._write(seats)
             return seat

@@ -118,7 +118,7 @@ def make_certificates(folder: Path, names: Sequence[str], now: datetime.datetime
     folder.mkdir(parents=True, exist_ok=True)
     for name in (CA_CERT, CA_KEY, SERVER_CERT, SERVER_KEY):  # (before anything is made: a link's target is never written)
         refuse_link(folder / name)
-    now = now or datetime.datetime.now(datetime.timezone.utc)
+    now = now or datetime.datetime.now(datetime.UTC)
     ca_cert_path, ca_key_path = folder / CA_CERT, folder / CA_KEY
     new_ca = not (ca_cert_path.is_file() and ca_key_path.is_file())
     if new_ca:

@@ -85,11 +85,11 @@ def kinds() -> list[str]:
     return [f.name.removeprefix("plugin_deadline_").removesuffix("_s") for f in fields(PluginDeadlines)]
 
 
-class Overrun(BaseException):  # noqa: N818 - raised inside the plugin's code: not an error of its own, and not an Exception it could catch
+class Overrun(BaseException):
     """Raised inside a call that is past its deadline."""
 
 
-class PluginFailed(Exception):  # noqa: N818 - the project's word for it (`plugin_failed` events)
+class PluginFailed(Exception):
     """A plugin's call raised or overran its deadline: `reason` is the trial's invalid reason."""
 
     def __init__(self, kind: str, name: str, error: str) -> None:
@@ -173,7 +173,7 @@ def call(kind: str, name: str, fn: Callable[..., T], *args: Any, expected: tuple
         raise PluginFailed(kind, name, f"took longer than its deadline of {limit:g} s") from None
     except passing:
         raise
-    except Exception as e:  # noqa: BLE001 - a plugin may fail in any way; its trial says so
+    except Exception as e:
         from haven_sim.common.plugins import failure
 
         raise PluginFailed(kind, name, failure(e)) from None

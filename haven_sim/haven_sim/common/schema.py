@@ -29,7 +29,7 @@ class FileModel(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True, frozen=True)
 
 
-def Whole(low: int, high: int) -> Any:  # noqa: N802 - (a type)
+def Whole(low: int, high: int) -> Any:
     """A whole number within [low, high] (not a bool, not 2.0)."""
 
     def check(v: Any) -> Any:
@@ -40,7 +40,7 @@ def Whole(low: int, high: int) -> Any:  # noqa: N802 - (a type)
     return Annotated[int, Field(ge=low, le=high), BeforeValidator(check)]  # (this order: the JSON Schema has the range)
 
 
-def Positive(limit: float = math.inf) -> Any:  # noqa: N802 - (a type)
+def Positive(limit: float = math.inf) -> Any:
     """A finite number above 0 and at most `limit` (an int is taken as a float; not a bool)."""
 
     def check(v: Any) -> float:
@@ -54,7 +54,7 @@ def Positive(limit: float = math.inf) -> Any:  # noqa: N802 - (a type)
     return Annotated[float, Field(gt=0, le=limit) if math.isfinite(limit) else Field(gt=0), BeforeValidator(check)]
 
 
-def Line(limit: int) -> Any:  # noqa: N802 - (a type)
+def Line(limit: int) -> Any:
     """A non-empty line of printable text of at most `limit` characters."""
 
     def check(v: Any) -> str:

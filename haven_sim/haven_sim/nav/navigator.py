@@ -134,7 +134,7 @@ class Navigator:
             return search.plan(start, goal)
         except PlanningError:
             raise
-        except Exception as e:  # noqa: BLE001 - a lab's planner may fail in any way
+        except Exception as e:
             raise PlanningError(f"the planner failed: {plugins.failure(e)}", PlanFailure.UNKNOWN) from None
 
     @property
@@ -243,7 +243,7 @@ class Navigator:
             out.events.append(self._event(EventKind.REPLANNED, now, reason="human on the path", **data))
             return out
         wait_gap = self.params.wait_distance_m  # (beyond the arm's length below, where re-planning is not tried)
-        if (gap <= wait_gap or at_stop and gap <= wait_gap + 1.0) and self.state is not NavState.WAITING:
+        if (gap <= wait_gap or (at_stop and gap <= wait_gap + 1.0)) and self.state is not NavState.WAITING:
             reason = "human at the robot's next stop" if at_stop else "human on the path and no room to pass"
             self.state = NavState.WAITING
             out.waiting = True

@@ -70,7 +70,7 @@ class PathPlanner:
         if name not in self.navigators:
             try:
                 search = planner_class(name)
-            except Exception as e:  # noqa: BLE001 - a PluginError naming the registered planners
+            except Exception as e:
                 return str(e)
             c = self.config
             self.navigators[name] = Navigator(self.grid, c.planner, c.shape, c.navigator, c.style, self.lanes, search)

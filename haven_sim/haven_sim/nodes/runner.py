@@ -67,7 +67,7 @@ def handle(node: Node, topic: str, handler: Callable[[Any, float], Sequence[Mess
         return handler(data, now)
     except ValueError as e:
         refused(node, topic, e)
-    except Exception as e:  # noqa: BLE001 - see callback_failed
+    except Exception as e:
         callback_failed(node, e)
     return []
 
@@ -150,7 +150,7 @@ def run_node(factory: Callable[[], Node | Sequence[Node]], args: Sequence[str] |
                 executor.spin_once(timeout_sec=POLL_S)
             except ExternalShutdownException:
                 raise
-            except Exception as e:  # noqa: BLE001 - see callback_failed
+            except Exception as e:
                 callback_failed(made[0], e)
         _drain(executor)
         executor.shutdown(timeout_sec=1.0)
