@@ -53,6 +53,13 @@ setup(
             "web_node = haven_scenarios.nodes.web_node:main",
             "player = haven_scenarios.nodes.player:main",
         ],
+        # The plugin kinds this package owns: what an item of each must be (haven_sim/common/plugins.py).
+        "haven.kinds": [
+            "participants = haven_scenarios.study.participants:accept_plugin",
+            "questionnaires = haven_scenarios.study.questionnaires:accept_plugin",
+            "metrics = haven_scenarios.record.metrics:accept_plugin",
+            "missions = haven_scenarios.study.mission_orders:accept_plugin",
+        ],
         # HAVEN's own plugins, registered as a lab's package registers its own (haven_sim/common/plugins.py)
         "haven.participants": [
             "walker = haven_scenarios.study.participants:Walker",

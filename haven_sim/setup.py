@@ -34,6 +34,8 @@ setup(
             "haven-planner = haven_sim.nodes.planner_node:main",
             "haven-controller = haven_sim.nodes.controller_node:main",
         ],
+        # The plugin kinds this package owns: what an item of each must be (haven_sim/common/plugins.py).
+        "haven.kinds": ["planners = haven_sim.nav.planner_kind:accept_plugin", "robots = haven_sim.robots.robot_kind:accept_plugin"],
         # HAVEN's path planner registers as a lab's does (haven_sim/nav/planner_kind.py).
         "haven.planners": ["visibility = haven_sim.nav.planner:GridPlanner"],
         # HAVEN's robot catalogue registers as a lab's robot does (haven_sim/robots/robot_kind.py): each a robot file.

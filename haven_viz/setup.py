@@ -27,6 +27,8 @@ setup(
             "haven-viz = haven_viz.nodes.viz_node:main",
             "snapshot = haven_viz.nodes.snapshot:main",
         ],
+        # The plugin kinds this package owns: what an item of each must be (haven_sim/common/plugins.py).
+        "haven.kinds": ["cues = haven_viz.cue_kind:accept_plugin"],
         # HAVEN's cues register as a lab's do (haven_viz/cue_kind.py).
         "haven.cues": [
             "path_projection = haven_viz.builtin_cues:PathProjection",

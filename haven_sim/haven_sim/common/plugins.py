@@ -15,7 +15,6 @@ others. Every call into a plugin's code during a trial is contained the same way
 
 from __future__ import annotations
 
-import importlib
 import importlib.metadata
 import re
 from collections.abc import Callable, Iterable, Iterator
@@ -42,18 +41,19 @@ class Plugin:
     value: Any
 
 
-# Each kind and the module that says what an item of it must be: its `accept_plugin(name, value)`
-# returns the item to use, or raises ValueError saying in one line why it cannot be one. (Named, not
-# imported: the kinds' modules live in the packages above this one.)
-KINDS: dict[str, str] = {
-    "participants": "haven_scenarios.study.participants",
-    "questionnaires": "haven_scenarios.study.questionnaires",
-    "metrics": "haven_scenarios.record.metrics",
-    "cues": "haven_viz.cue_kind",
-    "planners": "haven_sim.nav.planner_kind",
-    "missions": "haven_scenarios.study.mission_orders",
-    "robots": "haven_sim.robots.robot_kind",
-}
+KINDS_GROUP = "haven.kinds"  # each HAVEN package registers the kinds it owns here: kind = module:accept_plugin
+
+
+@cache
+def kinds() -> dict[str, importlib.metadata.EntryPoint]:
+    """Each plugin kind and where its `accept_plugin(name, value)` is (it returns the item to use,
+    or raises ValueError saying in one line why it cannot be one; loaded when the kind's registry
+    is). Each of HAVEN's packages registers the kinds it owns (entry point group `haven.kinds`), so
+    this, the lowest package, names none of the packages above it; in package order (sim, viz,
+    scenarios)."""
+    rank = {name: i for i, name in enumerate(("haven-sim", "haven-viz", "haven-scenarios"))}
+    entries = [e for e in importlib.metadata.entry_points(group=KINDS_GROUP) if _normal(_package(e)) in rank]
+    return {e.name: e for e in sorted(entries, key=lambda e: (rank[_normal(_package(e))], e.name))}
 
 
 @dataclass
@@ -96,10 +96,11 @@ OURS = frozenset({"haven-sim", "haven-viz", "haven-scenarios"})  # HAVEN's packa
 def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registry:
     """A registry of `kind` from entry points: HAVEN's own packages first (their names cannot be
     taken over), then the others in name order; each problem is one line."""
-    if kind not in KINDS:
-        raise PluginError(f"unknown plugin kind {kind!r} (known: {', '.join(KINDS)})")
+    known = kinds()
+    if kind not in known:
+        raise PluginError(f"unknown plugin kind {kind!r} (known: {', '.join(known)})")
     reg = Registry(kind)
-    accept: Callable[[str, Any], Any] = importlib.import_module(KINDS[kind]).accept_plugin
+    accept: Callable[[str, Any], Any] = known[kind].load()
     ordered = sorted(entries, key=lambda e: (_normal(_package(e)) not in OURS, _package(e), e.name))
     for entry in ordered:
         taken = _take(entry, reg, accept)
@@ -154,4 +155,4 @@ def registry(kind: str) -> Registry:
 
 
 def every() -> list[Registry]:
-    return [registry(kind) for kind in KINDS]
+    return [registry(kind) for kind in kinds()]
