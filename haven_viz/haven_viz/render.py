@@ -43,6 +43,9 @@ _LAYER = {
 }
 
 
+PERSON_TRAILS = ("tab:red", "tab:orange", "tab:purple", "tab:brown")  # the people's tracks, in turn (the robot's: black)
+
+
 def _rgb(c: Sequence[float]) -> tuple[float, float, float, float]:
     return (c[0], c[1], c[2], c[3])
 

@@ -248,6 +248,8 @@ def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
 def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -> Path:
     """The tracks from their starts, the gems still there at the end and where and when the others
     were collected, and marks where the robot waited, detoured, went to charge or touched someone."""
+    from haven_viz.render import PERSON_TRAILS, render_scene  # matplotlib: imported when a picture is drawn
+
     info = session_info(folder)
     window = rec.window()
     trails: dict[str, tuple[Any, str]] = {}
@@ -256,9 +258,8 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
     if window is not None:
         tl = Timeline.of(rec, *window, step=5 * GRID_S)
         trails["robot"] = (tl.robot_xy, "black")
-        colors = ["tab:red", "tab:orange", "tab:purple", "tab:brown"]
         for i, (hid, xy) in enumerate(tl.humans.items()):
-            trails[hid] = (xy, colors[i % len(colors)])
+            trails[hid] = (xy, PERSON_TRAILS[i % len(PERSON_TRAILS)])
         labels = {EventKind.WAITING: "wait", EventKind.REPLANNED: "detour", EventKind.CONTACT_BEGIN: "contact", EventKind.CHARGE_TRIP: "to charge"}
         for e in rec.events:
             if e.kind in labels and window[0] <= e.stamp <= window[1]:
@@ -277,7 +278,6 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
     removed = {str(e["id"]) for e in rec.events if e.kind is EventKind.OBSTRUCTION_REMOVED}
     markers = [m for m in world_markers(world, collected, removed) if m.ns in ("gems", "gem_areas", "charging_base", "rooms")]
     subtitle = f"participant {info.get('participant', '?')}, condition {info.get('condition', '?')}"
-    from haven_viz.render import render_scene  # matplotlib: imported when a picture is drawn
 
     out = folder / "trajectory.png"
     return render_scene(world, markers, out, title=f"{title}\n{subtitle}", trails=trails, points=marks, removed=sorted(removed), events=happened)

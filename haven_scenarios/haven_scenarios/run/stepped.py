@@ -24,7 +24,7 @@ from haven_sim.common import topics
 from haven_sim.common.geometry import Pose2D
 from haven_sim.runtime.component import Message
 from haven_viz.markers import MarkerSpec
-from haven_viz.render import render_scene
+from haven_viz.render import PERSON_TRAILS, render_scene
 
 
 @dataclass(frozen=True)
@@ -93,7 +93,7 @@ class Simulation:
             trails["robot"] = (np.array([(s.pose.x, s.pose.y) for _, s in rec.odom]), "black")
         for i, hid in enumerate(sorted({h for _, poses in rec.humans for h in poses})):
             xy = np.array([(poses[hid].x, poses[hid].y) for _, poses in rec.humans if hid in poses])
-            trails[hid] = (xy, ("tab:red", "tab:orange", "tab:purple", "tab:brown")[i % 4])
+            trails[hid] = (xy, PERSON_TRAILS[i % len(PERSON_TRAILS)])
         world = self.trial.scenario.world
         title = f"{self.trial.scenario.name}, seed {self.trial.seed}, t = {self.state().time:.1f} s"
         return render_scene(world, list(self.markers.values()), out, title=title, trails=trails)
