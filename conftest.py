@@ -81,17 +81,27 @@ def chromium_path() -> str | None:
 
 
 @pytest.fixture(scope="module")
-def browser():  # type: ignore[no-untyped-def]
-    """Headless Chromium for a test module's pages (closed with the module: pages left open would
-    go on rendering); skipped, with one line, where no Chromium or playwright can be had."""
+def chromium():  # type: ignore[no-untyped-def]
+    """Headless Chromium, launched once for a test module; skipped, with one line, where no
+    Chromium or playwright can be had."""
     path = chromium_path()
     if path is None:
         pytest.skip("no Chromium here (Debian's chromium package; scripts/setup.sh installs it when run as root): browser tests skipped")
     playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
     with playwright.sync_playwright() as p:
         b = p.chromium.launch(executable_path=path, args=CHROMIUM_ARGS)
-        yield _PatientBrowser(b)
+        yield b
         b.close()
+
+
+@pytest.fixture
+def browser(chromium):  # type: ignore[no-untyped-def]
+    """The module's Chromium for one test; every page and context the test opened is closed when it
+    ends (a page left open goes on rendering, in software, through the module's later tests)."""
+    patient = _PatientBrowser(chromium)
+    yield patient
+    for opened in reversed(patient.opened):
+        opened.close()
 
 
 ACTION_TIMEOUT_MS = 90_000  # a limit, not a wait: on a loaded 2-core machine a page's button took over 30 s to settle
@@ -99,19 +109,22 @@ ACTION_TIMEOUT_MS = 90_000  # a limit, not a wait: on a loaded 2-core machine a 
 
 class _PatientBrowser:
     """The browser, with every page's actions (a click, a fill) given as long as the tests' own
-    waits for page state, instead of Playwright's 30 s default."""
+    waits for page state, instead of Playwright's 30 s default; it keeps what it opened."""
 
     def __init__(self, browser):  # type: ignore[no-untyped-def]
         self._browser = browser
+        self.opened: list = []  # type: ignore[type-arg]
 
     def new_page(self, **options):  # type: ignore[no-untyped-def]
         page = self._browser.new_page(**options)
         page.set_default_timeout(ACTION_TIMEOUT_MS)
+        self.opened.append(page)
         return page
 
     def new_context(self, **options):  # type: ignore[no-untyped-def]
         context = self._browser.new_context(**options)
         context.set_default_timeout(ACTION_TIMEOUT_MS)
+        self.opened.append(context)
         return context
 
     def __getattr__(self, name):  # type: ignore[no-untyped-def]
