@@ -39,12 +39,14 @@ def test_the_researchers_held_thought_shows_far_away_and_the_participant_looks_d
     page.wait_for_function("() => (havenState.markers.thought_bubble || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
     frames = page.evaluate("havenState.frames")
     page.wait_for_function(f"() => havenState.frames > {frames + 1}", timeout=PAGE_TIMEOUT_MS)
-    page.wait_for_function("() => (havenMarker('thought_bubble', 0) || {}).pull != null", timeout=PAGE_TIMEOUT_MS)  # (placed at its next frame)
     # Drawn 1 m from the eye, as large as it looks 6 m away: before every wall beyond 1 m, never clipped by one.
-    # (The robot drives on meanwhile, towards the participant: the pull is judged against the distance the page has now.)
-    pull, far = page.evaluate(
-        "() => { const s = havenState; return [havenMarker('thought_bubble', 0).pull, Math.hypot(s.robot.x - s.pose.x, s.robot.y - s.pose.y)]; }"
-    )
+    # (The robot drives on meanwhile, towards the participant: the pull is judged against the distance the page has
+    # at the same moment; a marker message that comes again is placed at its next frame, its pull unset until then.)
+    pull, far = page.wait_for_function(
+        "() => { const s = havenState, m = havenMarker('thought_bubble', 0);"
+        " return m && m.pull != null && [m.pull, Math.hypot(s.robot.x - s.pose.x, s.robot.y - s.pose.y)]; }",
+        timeout=PAGE_TIMEOUT_MS,
+    ).json_value()
     assert far > 1.0 and pull == pytest.approx(1 / far, rel=0.25), (pull, far)
     console.wait_for_function(f"() => document.getElementById('thought-now').textContent.includes({json.dumps(TEXT)})", timeout=PAGE_TIMEOUT_MS)
     screenshot("web_wizard_far.png", page.screenshot())
