@@ -15,11 +15,11 @@ from haven_scenarios.record.metrics import _heading_change, compute
 from haven_scenarios.record.timeline import Recording
 from haven_sim.common import topics
 from haven_sim.common.bodies import HUMAN_BODY
+from haven_sim.common.component import Message
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.common.state import RobotState
 from haven_sim.robots.fields import DEFAULT as ROBOT_BODY
-from haven_sim.runtime.component import Message
 
 RADII = ROBOT_BODY.radius_m + HUMAN_BODY.radius_m
 

@@ -13,10 +13,10 @@ from haven_scenarios.record.outsiders import Declared, PublisherLog, open_topics
 from haven_scenarios.record.timeline import Recording
 from haven_scenarios.record.validity import _stream
 from haven_sim.common import topics
+from haven_sim.common.component import Message
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D, Twist2D
 from haven_sim.common.state import Goal, RobotState
-from haven_sim.runtime.component import Message
 from haven_viz.cues import CueState, Toggles
 
 ALL = Toggles()

@@ -12,7 +12,8 @@ import pytest
 
 from haven_sim.common import contain
 from haven_sim.common.events import EventKind
-from haven_sim.common.params import ParamsError, build
+from haven_sim.common.params import ParamsError
+from haven_sim.robots.fields import build_config
 
 SHORT = contain.PluginDeadlines(plugin_deadline_participants_s=0.2, plugin_deadline_metrics_s=0.3)
 
@@ -81,7 +82,7 @@ def test_the_deadlines_are_parameters_with_bounds_one_per_kind():
     assert contain.PluginDeadlines().of("robots") == contain.PluginDeadlines().plugin_deadline_load_s  # (data: only loaded)
     assert set(contain.kinds()) == {"participants", "missions", "planners", "cues", "metrics", "load"}
     with pytest.raises(ParamsError, match="plugin_deadline_metrics_s must be positive"):
-        build(contain.PluginDeadlines, {"plugin_deadline_metrics_s": 0.0}, where="/**: ")
+        build_config(contain.PluginDeadlines, {"plugin_deadline_metrics_s": 0.0}, where="/**: ")
 
 
 def test_a_plugin_whose_import_hangs_is_left_out_at_the_load_deadline_in_one_line():

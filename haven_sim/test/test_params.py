@@ -22,6 +22,7 @@ from haven_sim.common.params import (
 )
 from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.planning import PlannerConfig
+from haven_sim.robots.fields import build_config
 from haven_sim.sim.simulator import SimulatorConfig
 
 
@@ -63,19 +64,19 @@ def test_wrong_types_are_refused_in_one_line(name, value, expected):
 
 def test_validation_of_the_core_configs_names_the_parameter():
     with pytest.raises(ParamsError, match="rate_hz must be positive"):
-        build(ControllerConfig, {"rate_hz": 0.0})
+        build_config(ControllerConfig, {"rate_hz": 0.0})
     with pytest.raises(ParamsError, match="battery_pack_m must not be negative"):
-        build(SimulatorConfig, {"battery_pack_m": -1.0})
+        build_config(SimulatorConfig, {"battery_pack_m": -1.0})
     with pytest.raises(ParamsError, match="unknown robot 'no_such_bot'"):
-        build(SimulatorConfig, {"robot": "no_such_bot"})
+        build_config(SimulatorConfig, {"robot": "no_such_bot"})
 
 
 def test_shared_motion_style_has_the_same_names_in_planner_and_controller():
     shared = {"arc_max_angle_deg", "too_close_distance_m", "facing_tolerance_deg", "rotate_speed_deg_s"}
     assert shared <= set(defaults(PlannerConfig)) and shared <= set(defaults(ControllerConfig))
-    built = build(PlannerConfig, {"arc_max_angle_deg": 45.0})
+    built = build_config(PlannerConfig, {"arc_max_angle_deg": 45.0})
     assert built.style.arc_max_angle_deg == 45.0
-    assert build(ControllerConfig, {"arc_max_angle_deg": 45.0}).style == built.style
+    assert build_config(ControllerConfig, {"arc_max_angle_deg": 45.0}).style == built.style
 
 
 def test_params_files_wildcard_then_node(tmp_path):
@@ -104,4 +105,4 @@ def test_bounds_are_declared_with_the_parameter_and_say_what_is_allowed():
     assert Bounds(0.0, 360.0, low_open=True).problem(0.0) == "must be within (0, 360]"
     assert Bounds(high=5.0).problem(6) == "must be at most 5" and POSITIVE.problem(math.nan) == "must be a finite number"
     with pytest.raises(ParamsError, match=r"^sim: battery_initial_level must be within 0\.\.1, got 2\.0$"):
-        build(SimulatorConfig, {"battery_initial_level": 2.0}, where="sim: ")
+        build_config(SimulatorConfig, {"battery_initial_level": 2.0}, where="sim: ")

@@ -10,10 +10,11 @@ from helpers import box_world
 from haven_sim.common import plugins, topics
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Point, Pose2D
-from haven_sim.common.params import ParamsError, build
+from haven_sim.common.params import ParamsError
 from haven_sim.common.state import Goal, RobotState
 from haven_sim.nav.planner import Plan, PlannerParams
 from haven_sim.nav.planning import PlannerComponent, PlannerConfig
+from haven_sim.robots.fields import build_config
 from haven_sim.sim.occupancy import OccupancyGridData, rasterise
 
 
@@ -65,7 +66,7 @@ def test_ours_is_a_registered_plugin():
 
 
 def test_the_algorithm_parameter_picks_a_labs_planner_whose_points_are_shaped(with_corner):
-    ours, lab = plan_of(PlannerConfig()), plan_of(build(PlannerConfig, {"algorithm": "corner"}))
+    ours, lab = plan_of(PlannerConfig()), plan_of(build_config(PlannerConfig, {"algorithm": "corner"}))
 
     def by_the_corner(path: list[Pose2D]) -> bool:
         return any(p.x > 7.5 and p.y < 2.5 for p in path)
@@ -77,11 +78,11 @@ def test_the_algorithm_parameter_picks_a_labs_planner_whose_points_are_shaped(wi
 
 def test_an_unknown_algorithm_is_one_line_naming_the_known_ones(with_corner):
     with pytest.raises(ParamsError, match=r"^planner: parameter algorithm: unknown planner 'astar' \(known: corner, crashing, visibility\)$"):
-        build(PlannerConfig, {"algorithm": "astar"}, where="planner: parameter ")
+        build_config(PlannerConfig, {"algorithm": "astar"}, where="planner: parameter ")
 
 
 def test_a_labs_planner_that_raises_refuses_the_goal_in_one_line_and_the_trial_goes_on(with_corner):
-    planner = PlannerComponent(build(PlannerConfig, {"algorithm": "crashing"}))
+    planner = PlannerComponent(build_config(PlannerConfig, {"algorithm": "crashing"}))
     planner.on_map(rasterise(box_world(10.0)), 0.0)
     planner.on_odom(RobotState(Pose2D(2.0, 2.0, 0.0)), 0.0)
     (refused,) = [m.data for m in planner.on_goal(Goal(Pose2D(8.0, 8.0, 0.0)), 0.1) if m.topic == topics.EVENTS]

@@ -5,9 +5,9 @@ from dataclasses import dataclass, field
 from helpers import box_world
 
 from haven_sim.common import topics
+from haven_sim.common.component import Message, due, period_ns
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import Twist2D
-from haven_sim.runtime.component import Message, due, period_ns
 from haven_sim.runtime.lockstep import ParticipantInfo, Schedule, inbox_order
 from haven_sim.runtime.loop import InProcessLoop
 from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig

@@ -15,13 +15,13 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from haven_sim.common import contain, nodes, topics
+from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import HumanPoses, RobotState
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import RobotChoice, from_robot
-from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.world import World
 from haven_viz.cue_kind import NO_MANOEUVRE, Manoeuvre

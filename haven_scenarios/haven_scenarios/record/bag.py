@@ -36,9 +36,9 @@ from haven_scenarios.record.message_types import why_not
 from haven_scenarios.record.outsiders import PublisherLog
 from haven_scenarios.record.timeline import RECORDED, Recording
 from haven_sim.common import topics
+from haven_sim.common.component import Message
 from haven_sim.common.events import EventError
 from haven_sim.runtime import decode
-from haven_sim.runtime.component import Message
 from haven_viz.cues import CueState
 
 TYPESTORE = get_typestore(Stores.ROS2_JAZZY)

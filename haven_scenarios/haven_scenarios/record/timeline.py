@@ -15,10 +15,10 @@ import numpy as np
 
 from haven_scenarios.record.outsiders import PublisherLog
 from haven_sim.common import topics
+from haven_sim.common.component import Message
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import FloatArray, Pose2D
 from haven_sim.common.state import Goal, HumanPoses, RobotState
-from haven_sim.runtime.component import Message
 from haven_viz.cues import CueState, Toggles
 
 GRID_S = 0.02  # the physics step: /odom comes every step

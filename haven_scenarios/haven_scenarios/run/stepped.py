@@ -21,8 +21,8 @@ from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.trial import Trial, TrialResult, check_seed, parse_condition
 from haven_scenarios.study.scenario import Scenario, load_scenario
 from haven_sim.common import topics
+from haven_sim.common.component import Message
 from haven_sim.common.geometry import Pose2D
-from haven_sim.runtime.component import Message
 from haven_viz.markers import MarkerSpec
 from haven_viz.render import PERSON_TRAILS, render_scene
 

@@ -13,14 +13,14 @@ from typing import Any
 from haven_scenarios.study.director import ScenarioNodeConfig
 from haven_sim.common import nodes
 from haven_sim.common.contain import PluginDeadlines
-from haven_sim.common.params import WILDCARD, ParamsError, build, check_names, defaults, flatten, load_params_file, node_values, render_params_file
+from haven_sim.common.params import WILDCARD, ParamsError, check_names, defaults, flatten, load_params_file, node_values, render_params_file
 from haven_sim.common.topics import WireParams
 from haven_sim.common.yaml_file import file_label, short
 from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.mux import MuxConfig
 from haven_sim.nav.planning import PlannerConfig
-from haven_sim.robots.fields import RobotChoice
+from haven_sim.robots.fields import RobotChoice, build_config
 from haven_sim.runtime.lockstep import LockstepParams
 from haven_sim.sim.simulator import SimulatorConfig
 from haven_viz.cues import CUES
@@ -82,10 +82,10 @@ def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None, label: s
     file in refusals."""
     p = params or {}
     where = f"{label}: " if label else ""
-    made = {f.name: build(cls, node_values(p, name), where=f"{where}{name}: ") for (name, cls), f in zip(NODES, fields(SuiteConfig))}
+    made = {f.name: build_config(cls, node_values(p, name), where=f"{where}{name}: ") for (name, cls), f in zip(NODES, fields(SuiteConfig))}
     shared = node_values(p, nodes.SIM.name)  # (the "/**" section's values, as every node reads them)
-    lockstep = build(LockstepParams, shared, where=f"{where}sim_node: ")
-    return SuiteConfig(**made, lockstep=lockstep, deadlines=build(PluginDeadlines, shared, where=f"{where}sim_node: "))
+    lockstep = build_config(LockstepParams, shared, where=f"{where}sim_node: ")
+    return SuiteConfig(**made, lockstep=lockstep, deadlines=build_config(PluginDeadlines, shared, where=f"{where}sim_node: "))
 
 
 # Parameters every node has beside its config: rclpy's own (a node declares them itself) and what

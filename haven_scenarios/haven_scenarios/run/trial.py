@@ -22,12 +22,12 @@ from haven_scenarios.study.director import TrialDirector
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import contain
+from haven_sim.common.component import Component
 from haven_sim.nav.controller import ControllerComponent
 from haven_sim.nav.mux import MuxComponent
 from haven_sim.nav.planning import PlannerComponent, world_lanes
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import with_robot
-from haven_sim.runtime.component import Component
 from haven_sim.runtime.loop import DelayFn, InProcessLoop, Observer
 from haven_sim.sim.simulator import SimulatorComponent
 from haven_viz.cues import CUES, DEFAULT_ON, CueParams, CueToggles, Toggles, unfit, unknown_cue

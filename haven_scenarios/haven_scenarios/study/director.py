@@ -24,13 +24,13 @@ from haven_scenarios.study.perception import BY_FIELD, Percept, Sight, cue_ways,
 from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules, TrialCommand, TrialState
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import contain, topics
+from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import GOAL_POSE, Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.nav.planner import GridPlanner, PlanningError
 from haven_sim.robots.fields import RobotChoice
-from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.flight import clear_height
 from haven_sim.sim.occupancy import OccupancyGridData, on_the_floor

@@ -202,12 +202,7 @@ def build(cls: type[T], values: Mapping[str, Any], where: str = "", prefix: str 
             if problem is not None:
                 raise ParamsError(f"{where}{name} {problem}, got {kwargs[f.name]!r}")
     try:
-        made = cls(**kwargs)
-        if not prefix:  # a whole config: the fields from its robot (robots/fields.py)
-            from haven_sim.robots.fields import apply_chosen_robot  # (the robots package builds on this module)
-
-            made = apply_chosen_robot(made)
-        return made
+        return cls(**kwargs)
     except ParamsError:
         raise
     except ValueError as e:

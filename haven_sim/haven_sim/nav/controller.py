@@ -16,6 +16,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from haven_sim.common import nodes, topics
+from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import ZERO_TWIST, Pose2D, Twist2D
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
@@ -23,7 +24,6 @@ from haven_sim.common.state import RobotState
 from haven_sim.nav.follower import FollowerParams, PathFollower, Status
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.robots.fields import RobotChoice
-from haven_sim.runtime.component import Handler, Message
 
 AT_REST_MPS, AT_REST_RPS = 0.01, 0.02  # the robot is at rest below these (odometry's speeds)
 REST_WAIT_S = 3.0  # arrived but not at rest after this long (odometry gone quiet): checked all the same

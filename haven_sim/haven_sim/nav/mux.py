@@ -21,32 +21,13 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from haven_sim.common import nodes, topics
+from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
 from haven_sim.common.params import POSITIVE, check_bounds, param
-from haven_sim.runtime.component import Handler, Message
+from haven_sim.sim.estop import ESTOP_HOLD_S, EStopLatch
 
 NAV, TELEOP, ESTOP, IDLE = "nav", "teleop", "estop", "idle"
-ESTOP_HOLD_S = 2.0  # longer than `ros2 topic pub`'s 1 s repeat (the module docstring says why)
-
-
-class EStopLatch:
-    """The e-stop as each of its readers keeps it (the mux, and the simulator, which nothing
-    bypasses): a true from anyone stops at once; a false releases only when no true has come for
-    `hold_s`. Time is an argument."""
-
-    def __init__(self, hold_s: float = ESTOP_HOLD_S) -> None:
-        self.hold_s = hold_s
-        self._said = False  # the latest e-stop message
-        self._true_at = -math.inf  # when a true last came
-
-    def said(self, engaged: bool, now: float) -> None:
-        self._said = engaged
-        if engaged:
-            self._true_at = now
-
-    def engaged(self, now: float) -> bool:
-        return self._said or now - self._true_at < self.hold_s
 
 
 @dataclass(frozen=True)

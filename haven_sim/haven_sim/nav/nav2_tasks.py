@@ -22,13 +22,13 @@ from dataclasses import dataclass, field
 from enum import Enum, StrEnum
 
 from haven_sim.common import topics
+from haven_sim.common.component import Message
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import POSITIVE, check_bounds, param
 from haven_sim.common.polyline import Polyline
 from haven_sim.common.state import Goal, RobotState
 from haven_sim.nav.planner import PlanFailure
-from haven_sim.runtime.component import Message
 
 # A goal_reached counts for the pose being visited this close to it: the planner moves a goal up
 # to its snap radius (PlannerParams.snap_radius_m, 0.3 m) off an obstacle, the follower stops

@@ -15,6 +15,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, replace
 
 from haven_sim.common import contain, nodes, plugins, topics
+from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import POSITIVE, Bounds, check_bounds, group, param
@@ -27,7 +28,6 @@ from haven_sim.nav.path_style import ShapeParams
 from haven_sim.nav.planner import PlannerParams
 from haven_sim.nav.planner_kind import Contained, planner_class
 from haven_sim.robots.fields import RobotChoice
-from haven_sim.runtime.component import Handler, Message
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import World
 

@@ -28,14 +28,15 @@ from rclpy.serialization import serialize_message
 from rclpy.subscription import Subscription
 
 from haven_sim.common import contain, nodes, topics
+from haven_sim.common.component import Component, Message
 from haven_sim.common.events import Event, EventKind, Sequencer, event
-from haven_sim.common.params import ParamsError, bounds_of, build, defaults, docs, ros_range
+from haven_sim.common.params import ParamsError, bounds_of, defaults, docs, ros_range
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import qos, wire
 from haven_sim.nodes.lockstep import LockstepParticipant
 from haven_sim.nodes.runner import declare, handle, refused, start_up_only
 from haven_sim.nodes.wire import TopicSpec, type_name
-from haven_sim.runtime.component import Component, Message
+from haven_sim.robots.fields import build_config
 from haven_sim.runtime.lockstep import LockstepParams
 from haven_sim.runtime.suite_messages import InputLimit
 
@@ -64,9 +65,9 @@ def declare_config(node: Node, cls: type[C], runtime: frozenset[str] = frozenset
             descriptor.integer_range = [IntegerRange(from_value=int(span[0]), to_value=int(span[1]), step=0)]
         try:
             values[name] = declare(node, name, default, descriptor)
-        except InvalidParameterValueException:  # (out of its range: said as build() says it)
+        except InvalidParameterValueException:  # (out of its range: said as build_config() says it)
             raise ParamsError(f"{node.get_name()}: parameter {name} {bounded[name].rule()}") from None
-    return build(cls, values, where=f"{node.get_name()}: parameter ")
+    return build_config(cls, values, where=f"{node.get_name()}: parameter ")
 
 
 class ComponentNode(Node):

@@ -39,11 +39,11 @@ from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPo
 from rclpy.serialization import serialize_message
 from std_msgs.msg import String
 
+from haven_sim.common.component import NS_PER_S, Component, Message, due
 from haven_sim.common.events import Event, Sequencer
 from haven_sim.nodes.lockstep_inbox import Inbox, OutsideReport, unmatched
 from haven_sim.nodes.runner import THROTTLE_S, handle
 from haven_sim.nodes.wire import TopicSpec
-from haven_sim.runtime.component import NS_PER_S, Component, Message, due
 from haven_sim.runtime.lockstep import Ack, Hello, LockstepParams, ParticipantInfo, Schedule, Tick, inbox_order
 from haven_sim.runtime.suite_messages import Expected, OutsideInputs, absolute, digest
 from haven_sim.sim.pacer import WallClock

@@ -19,11 +19,11 @@ from rclpy.serialization import deserialize_message
 from rclpy.subscription import Subscription
 
 from haven_sim.common import topics
+from haven_sim.common.component import Message
 from haven_sim.common.events import EventKind, event
 from haven_sim.nodes.qos import best_effort
 from haven_sim.nodes.runner import refused, stop_requested
 from haven_sim.nodes.wire import TopicSpec
-from haven_sim.runtime.component import Message
 from haven_sim.runtime.suite_messages import OutsideInputs, Queue
 
 WAIT_S = 5.0  # longest wait for an announced message before going on without it

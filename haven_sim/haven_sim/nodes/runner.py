@@ -25,8 +25,8 @@ from rclpy.node import Node
 from rclpy.parameter import Parameter
 from rclpy.signals import SignalHandlerOptions
 
+from haven_sim.common.component import Message
 from haven_sim.common.params import ParamsError
-from haven_sim.runtime.component import Message
 from haven_sim.runtime.process import STOP_SIGNALS
 from haven_sim.sim.world import WorldError
 

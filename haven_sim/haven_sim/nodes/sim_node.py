@@ -22,12 +22,12 @@ from rclpy.clock import Clock, ClockType
 from std_srvs.srv import SetBool, Trigger
 
 from haven_sim.common import nodes, topics
+from haven_sim.common.component import Message
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.nodes import wire
 from haven_sim.nodes.component_node import ComponentNode
 from haven_sim.nodes.lockstep import LockstepCoordinator
 from haven_sim.nodes.runner import run_node
-from haven_sim.runtime.component import Message
 from haven_sim.runtime.lockstep import UNCAPPED_RTF
 from haven_sim.sim.pacer import ControlPace, Pacer, WallClock
 from haven_sim.sim.simulator import SimulatorComponent, SimulatorConfig

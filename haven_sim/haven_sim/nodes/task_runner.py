@@ -20,13 +20,13 @@ from nav2_msgs.msg import MissedWaypoint
 from rclpy.node import Node
 
 from haven_sim.common import topics
+from haven_sim.common.component import Message
 from haven_sim.common.state import RobotState
 from haven_sim.nav.nav2_tasks import Nav2TaskParams, NavTask, Outcome, Progress, TaskKind
 from haven_sim.nav.planner import PlanFailure
 from haven_sim.nodes import conversions as conv, wire
 from haven_sim.nodes.component_node import declare_config
 from haven_sim.nodes.runner import refused, stop_requested
-from haven_sim.runtime.component import Message
 
 FEEDBACK_PERIOD_S = 0.1  # wall time between feedback messages (bt_navigator sends one each tree tick)
 _P = ComputePathToPose.Result

@@ -3,17 +3,18 @@ node, like the motion style) and fields filled from its description, never param
 
 A config field made with `from_robot("limits.max_linear_speed_mps")` holds that figure, and one
 made with `from_robot()` the whole description; their defaults are the default robot's (TurtleBot2),
-so a config made in code is a TurtleBot2's. `with_robot` fills them from another robot: `build`
-does it for every config read from parameters (nodes and batch mode alike), and batch mode again
-when a trial names its own robot.
+so a config made in code is a TurtleBot2's. `with_robot` fills them from another robot:
+`build_config` does it for every config read from parameters (nodes and batch mode alike), and
+batch mode again when a trial names its own robot.
 """
 
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Mapping
 from typing import Any, TypeVar
 
-from haven_sim.common.params import Bounds, param
+from haven_sim.common.params import Bounds, ParamsError, build, param
 from haven_sim.robots.catalogue import path_of
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.robot_file import read_robot_file
@@ -78,3 +79,15 @@ def apply_chosen_robot(config: T) -> T:
     if choice is None or not uses_robot(type(config)):
         return config
     return with_robot(config, resolve_robot(choice), choice)
+
+
+def build_config(cls: type[T], values: Mapping[str, Any], where: str = "") -> T:
+    """A config read from parameters (`params.build`), with the fields of the robot its own `robot`
+    parameter names: how every node's and batch trial's config is made."""
+    made = build(cls, values, where)
+    try:
+        return apply_chosen_robot(made)
+    except ParamsError:
+        raise
+    except ValueError as e:
+        raise ParamsError(f"{where}{e}") from None

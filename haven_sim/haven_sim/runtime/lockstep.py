@@ -25,9 +25,9 @@ from dataclasses import asdict, dataclass, field
 from typing import Any
 
 from haven_sim.common import topics
+from haven_sim.common.component import Component, Message, due, period_ns
 from haven_sim.common.events import Event
 from haven_sim.common.params import param
-from haven_sim.runtime.component import Component, Message, due, period_ns
 
 UNCAPPED_RTF = 1e6  # a lockstep real-time factor this high means "as fast as the participants go"
 MAX_DIGESTS = 100_000  # more messages announced in one tick or ack than any step makes: refused as forged

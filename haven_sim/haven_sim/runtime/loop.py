@@ -11,8 +11,8 @@ import heapq
 import itertools
 from collections.abc import Callable, Collection, Sequence
 
+from haven_sim.common.component import Component, Message
 from haven_sim.common.events import Event, Sequencer
-from haven_sim.runtime.component import Component, Message
 from haven_sim.runtime.lockstep import ParticipantInfo, Schedule, inbox_order
 from haven_sim.runtime.wire import on_the_wire
 from haven_sim.sim.simulator import SimulatorComponent

@@ -12,12 +12,12 @@ from dataclasses import dataclass, replace
 from typing import Any
 
 from haven_sim.common.bodies import HUMAN_BODY
+from haven_sim.common.component import NS_PER_S
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, wrap_angle
 from haven_sim.common.params import POSITIVE, check_bounds, group, param
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import from_robot
-from haven_sim.runtime.component import NS_PER_S
 from haven_sim.sim.battery import Battery, BatteryParams, BatteryReading
 from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits
 from haven_sim.sim.flight import Altitude, FlightPhase, clear_height, pad_of, start_pose

@@ -17,14 +17,14 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 from haven_sim.common import nodes, topics
+from haven_sim.common.component import Handler, Message, due, period_ns
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import ZERO_TWIST, FloatArray, Twist2D
 from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, check_bounds, group, param
 from haven_sim.common.state import RobotState
-from haven_sim.nav.mux import ESTOP_HOLD_S, EStopLatch
 from haven_sim.robots.fields import RobotChoice, from_robot
-from haven_sim.runtime.component import Handler, Message, due, period_ns
 from haven_sim.sim.commands import CommandStatus
+from haven_sim.sim.estop import ESTOP_HOLD_S, EStopLatch
 from haven_sim.sim.frames import human_frames, robot_frame, static_frames
 from haven_sim.sim.scan import ScanParams
 from haven_sim.sim.simulation import SimConfig, Simulation
