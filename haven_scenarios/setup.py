@@ -32,7 +32,7 @@ setup(
         "statsmodels",
         "pillow",  # haven edit: a map image as a PNG for the page
         "cryptography",  # `haven cert`: the lab's certificate authority for HTTPS (web/tls.py)
-        "filelock>=4",  # OS file locks (tools/locks.py): one runner per participant, one suite per ROS domain
+        "filelock>=4",  # OS file locks (run/locks.py): one runner per participant, one suite per ROS domain
     ],
     # `haven batch --cluster`: sweeps on a Dask cluster (a LocalCluster or a lab's scheduler)
     extras_require={"cluster": ["dask", "distributed"]},

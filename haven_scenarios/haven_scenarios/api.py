@@ -33,19 +33,21 @@ from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
+from haven_scenarios.conduct.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
+from haven_scenarios.conduct.study_run import StudyRun, run_participant as _run_participant
+from haven_scenarios.record.progress import TrialProgress, progress
+from haven_scenarios.record.study_report import Report, write_report
+from haven_scenarios.run.domains import DomainRange, parse_domains
 from haven_scenarios.run.grid import TrialSpec, parse_grid, plan_sweep
 from haven_scenarios.run.stepped import SimState, Simulation
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.sweep import run_rows
-from haven_scenarios.run.trial import TrialResult, check_seed, parse_condition, run_trial
-from haven_scenarios.study.progress import TrialProgress, progress
+from haven_scenarios.run.trial import TrialResult, run_trial
+from haven_scenarios.study.conditions import check_seed, parse_condition
+from haven_scenarios.study.names import study_dir
 from haven_scenarios.study.protocol import load_study
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.study.schedule import PlannedTrial, participant_schedule, schedule
-from haven_scenarios.tools.commands.study import Report, study_dir, write_report
-from haven_scenarios.tools.commands.study_run import StudyRun, run_participant as _run_participant
-from haven_scenarios.tools.domains import DomainRange, parse_domains
-from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
 
 if TYPE_CHECKING:
     from haven_scenarios.web.study_server import StudyServer
@@ -197,7 +199,7 @@ def serve_study(study: str, **options: Any) -> StudyServer:
     `join_url` is the panel's link, `console_url` the researcher's list, `sessions()` every
     session now; `stop()` ends it (each participant's trial stops cleanly, to run again). Options:
     SERVE_OPTIONS, as `haven serve`'s. ValueError (one line) for a bad study or option."""
-    from haven_scenarios.tools.commands.serve import open_server
+    from haven_scenarios.conduct.online_study import open_server
 
     unknown = sorted(set(options) - set(SERVE_OPTIONS))
     if unknown:

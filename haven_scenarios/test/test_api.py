@@ -9,7 +9,8 @@ import pytest
 import yaml
 
 from haven_scenarios import api
-from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.cli import main
 

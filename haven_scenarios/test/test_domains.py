@@ -1,5 +1,5 @@
 """The lab's range of ROS domains (`--domains A-B`, HAVEN_DOMAINS): a suite never takes a domain
-outside it, whichever suites already run; checked at the layer that chooses (tools/domains.py),
+outside it, whichever suites already run; checked at the layer that chooses (run/domains.py),
 with the domains' locks held by other processes, as other suites hold them. The graph probe (a
 subprocess with rclpy) is replaced by one that sees no node: the locks alone decide here."""
 
@@ -8,14 +8,14 @@ import sys
 
 import pytest
 
-from haven_scenarios.tools import domains
+from haven_scenarios.run import domains
+from haven_scenarios.run.domains import DomainBusy, DomainRange, claim_domain, parse_domains
 from haven_scenarios.tools.cli import main
-from haven_scenarios.tools.domains import DomainBusy, DomainRange, claim_domain, parse_domains
 
 HOLD = """
 import sys
-from haven_scenarios.tools.domains import lock_path
-from haven_scenarios.tools.locks import FileLock
+from haven_scenarios.run.domains import lock_path
+from haven_scenarios.run.locks import FileLock
 held = [FileLock(lock_path(int(d)), "haven run (another suite)").acquire() for d in sys.argv[1:]]
 print("held", flush=True)
 sys.stdin.read()
@@ -111,8 +111,8 @@ def test_haven_run_says_in_one_line_when_no_domain_of_the_range_is_free(lab, tmp
 
 def test_serve_hands_the_range_to_every_participants_runner_and_refuses_one_smaller_than_its_capacity(tmp_path, monkeypatch):
     from haven_scenarios import api
-    from haven_scenarios.tools.commands.serve import open_server
-    from haven_scenarios.tools.recorded_trial import TrialError
+    from haven_scenarios.conduct.online_study import open_server
+    from haven_scenarios.conduct.recorded_trial import TrialError
 
     study = tmp_path / "study.yaml"
     study.write_text("name: d\nscenarios: [hallway]\nconditions: {none: [none]}\nparticipants: 2\n")

@@ -16,8 +16,8 @@ import pytest
 from processes import alive
 from rosbags.highlevel import AnyReader
 
+from haven_scenarios.run.supervisor import ros_environment
 from haven_scenarios.tools.cli import main
-from haven_scenarios.tools.supervisor import ros_environment
 
 pytestmark = pytest.mark.integration
 
@@ -26,7 +26,7 @@ HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 SUPERVISED = """
 import sys, time
 from pathlib import Path
-from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor
+from haven_scenarios.run.supervisor import ProcessSpec, Supervisor
 sup = Supervisor(env={})
 child = sup.start(ProcessSpec("sleeper", [sys.executable, "-c", "import time; time.sleep(120)"]))
 Path(sys.argv[1]).write_text(str(child.pid))

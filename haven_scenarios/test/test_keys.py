@@ -1,5 +1,5 @@
-from haven_scenarios.tools.keys import KeyMapper
-from haven_scenarios.tools.teleop_status import announce, joined
+from haven_scenarios.teleop.keys import KeyMapper
+from haven_scenarios.teleop.status import announce, joined
 from haven_sim.common.events import EventKind, event
 from haven_sim.common.geometry import Twist2D
 

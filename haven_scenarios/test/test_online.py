@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from haven_scenarios.study.progress import bind
+from haven_scenarios.record.progress import bind
 from haven_scenarios.study.protocol import StudyError, load_study
 from haven_scenarios.web.online_gate import link_signature
 from haven_scenarios.web.online_seats import Full, Seats
@@ -208,7 +208,7 @@ HEADERS = ("Content-Security-Policy", "X-Content-Type-Options", "Referrer-Policy
 
 
 def test_a_burst_of_get_and_post_joins_from_one_client_without_cookies_takes_at_most_two_places(tmp_path):
-    from haven_scenarios.tools.commands.serve import open_server
+    from haven_scenarios.conduct.online_study import open_server
 
     study = study_file(tmp_path, STUDY.replace("participants: 2", "participants: 10"))
     server = open_server(str(study), tmp_path / "s", host="127.0.0.1", port=0)  # `haven serve`'s own server

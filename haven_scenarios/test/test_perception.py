@@ -8,8 +8,9 @@ import numpy as np
 import pytest
 
 from haven_scenarios.record.hesitation import hesitations
-from haven_scenarios.run.trial import Trial, parse_condition
+from haven_scenarios.run.trial import Trial
 from haven_scenarios.study.anticipation import DelayLine, intent_ways
+from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.perception import Percept, Sight, perceive
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, parse_scenario

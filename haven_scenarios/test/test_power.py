@@ -120,8 +120,8 @@ def test_a_pool_too_thin_for_the_orders_a_study_needs_is_said() -> None:
 
 
 def test_a_metric_is_checked_before_any_trial_is_simulated() -> None:
+    from haven_scenarios.conduct.power_pool import check_metric
     from haven_scenarios.study.protocol import load_study
-    from haven_scenarios.tools.commands.power import check_metric
 
     paper = load_study("haven_paper")
     for fine in ("time_to_finish_s", "hunav_avg_distance_to_closest_person_m", "intimate_centre_intrusion_s", "path_length_m"):

@@ -7,7 +7,8 @@ import dataclasses
 
 import pytest
 
-from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.scenario import load_scenario
 
 pytestmark = pytest.mark.integration

@@ -1,11 +1,11 @@
-"""Who is on the pages and what a drop-out does (web/presence.py), the simulator's pausable wall
+"""Who is on the pages and what a drop-out does (study/presence.py), the simulator's pausable wall
 clock (sim/pacer.py), and a drop-out in the session's validity (record/validity.py)."""
 
 from __future__ import annotations
 
 import json
 
-from haven_scenarios.web.presence import MAX_AWAY_S, Act, Attendance, OnDisconnect
+from haven_scenarios.study.presence import MAX_AWAY_S, Act, Attendance, OnDisconnect
 from haven_sim.common.events import EventKind
 from haven_sim.sim.pacer import Pacer, WallClock
 

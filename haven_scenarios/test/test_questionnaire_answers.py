@@ -9,10 +9,10 @@ from pathlib import Path
 
 import pytest
 
+from haven_scenarios.conduct.after_trial import as_parameter
 from haven_scenarios.record.answers import AnswerBook, answered, from_parameter, over, wanted
 from haven_scenarios.study.questionnaires import ANSWERS_FILE, BUILTINS, likert, registered, score
 from haven_scenarios.tools.cli import main
-from haven_scenarios.tools.commands.after_trial import as_parameter
 from haven_scenarios.web.access import ANSWERS, CONSOLE, SKIP_QUESTIONNAIRES, roles
 from haven_scenarios.web.page_config import PageSettings, page_config
 from haven_scenarios.web.wizard import Wizard

@@ -1,6 +1,6 @@
 import pytest
 
-from haven_scenarios.tools.rates import rate_stats
+from haven_scenarios.record.rates import rate_stats
 
 
 def test_rate_statistics_of_arrival_times():

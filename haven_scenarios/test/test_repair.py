@@ -293,8 +293,8 @@ def test_haven_repair_rebuilds_a_session_and_report_includes_it_flagged(killed_s
 
 
 def test_session_json_says_how_the_run_ended():
-    from haven_scenarios.tools.commands.recordings import Ended, exit_text, outcome
-    from haven_scenarios.tools.supervisor import Exited
+    from haven_scenarios.conduct.outcomes import Ended, exit_text, outcome
+    from haven_scenarios.run.supervisor import Exited
 
     assert exit_text("recorder", -signal.SIGKILL) == "recorder was killed by SIGKILL"
     assert exit_text("planner", 1) == "planner exited with code 1" and exit_text("sim", -99) == "sim was killed by signal 99"

@@ -11,15 +11,15 @@ from pathlib import Path
 import pytest
 import yaml
 
+from haven_scenarios.conduct.recorded_trial import TrialError, TrialRequest, plan_trial
+from haven_scenarios.record.progress import ran_otherwise
 from haven_scenarios.record.session import ROBOT_FILE, session_scenario, write_inputs
 from haven_scenarios.run.grid import parse_grid, plan_sweep
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
-from haven_scenarios.study.progress import ran_otherwise
 from haven_scenarios.study.protocol import StudyError, load_study
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.study.schedule import schedule
 from haven_scenarios.tools.cli import main
-from haven_scenarios.tools.recorded_trial import TrialError, TrialRequest, plan_trial
 from haven_sim.common.params import ParamsError
 
 SLOW_BOT = "name: slow_bot\ntitle: a slower TurtleBot2\nextends: turtlebot2\nmotion: {cruise_speed_mps: 0.25}\n"

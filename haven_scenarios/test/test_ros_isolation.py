@@ -143,8 +143,8 @@ def test_an_outside_publisher_on_a_free_running_trial_makes_it_not_valid_unless_
 
 def test_a_study_participant_already_being_run_is_refused_before_anything_starts(ros, tmp_path):
     """`haven study run` (ROS mode) on a participant another runner holds: one line naming it."""
-    from haven_scenarios.tools.commands.study_run import RUNNER_LOCK
-    from haven_scenarios.tools.locks import FileLock
+    from haven_scenarios.conduct.study_run import RUNNER_LOCK
+    from haven_scenarios.run.locks import FileLock
 
     study = tmp_path / "pilot.yaml"
     study.write_text("name: pilot\nscenarios: [shared_room]\nconditions: {all: [all]}\nparticipants: 1\n")
@@ -160,8 +160,8 @@ def test_with_a_range_of_domains_a_second_and_third_suite_stay_inside_it(ros, tm
     """`--domains A-(A+2)` with A held by another suite (its lock) and the inherited domain outside
     the range: two suites started at once take A+1 and A+2, say so, and every node of each runs
     there (its ROS_DOMAIN_ID, read from /proc)."""
-    from haven_scenarios.tools.domains import lock_path
-    from haven_scenarios.tools.locks import FileLock
+    from haven_scenarios.run.domains import lock_path
+    from haven_scenarios.run.locks import FileLock
 
     first = 200 + 3 * (ros.domain_id % 10)  # (a range no test harness hands out: they take 1..100)
     lab = f"{first}-{first + 2}"

@@ -9,7 +9,8 @@ import pytest
 import yaml
 from ros_harness import tracebacks
 
-from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.scenario import load_scenario
 

@@ -21,7 +21,8 @@ from rclpy.qos import QoSProfile, ReliabilityPolicy
 from ros_harness import tracebacks
 from rosgraph_msgs.msg import Clock
 
-from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.scenario import load_scenario
 from haven_sim.robots.robot_kind import resolve_robot
 

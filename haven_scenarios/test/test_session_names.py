@@ -18,7 +18,8 @@ import sys
 
 import pytest
 
-from haven_scenarios.record.session import check_name, new_session_dir, write_inputs
+from haven_scenarios.record.session import new_session_dir, write_inputs
+from haven_scenarios.study.names import check_name
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.tools.cli import main
 

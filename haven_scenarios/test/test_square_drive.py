@@ -2,7 +2,7 @@
 
 import pytest
 
-from haven_scenarios.tools.square_drive import SquareDriver
+from haven_scenarios.teleop.square_drive import SquareDriver
 from haven_sim.sim.simulation import Simulation
 from haven_sim.sim.world import packaged_world
 from haven_sim.sim.world_file import load_world

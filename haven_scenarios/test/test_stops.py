@@ -96,15 +96,15 @@ print("haven study: next: trial 1/1 t1: hallway, condition none (none), seed 0",
 try:
     time.sleep(120)
 except KeyboardInterrupt:
-    time.sleep(1.0)  # (ending its trial cleanly)
+    time.sleep(0.3)  # (ending its trial cleanly)
     sys.exit(130)
 """
 
 
 def test_serve_stops_every_participants_runner_together_within_5_s(tmp_path):
-    """Two participants' runners, one that ends its trial in a second and one that does not end:
+    """Two participants' runners, one that takes a moment to end its trial and one that does not end:
     stopped together, the server is done within 5 s; the one that hung is killed."""
-    from haven_scenarios.study.progress import bind
+    from haven_scenarios.record.progress import bind
     from haven_scenarios.study.protocol import load_study
     from haven_scenarios.web.online_runner import Runner
     from haven_scenarios.web.study_server import ServeOptions, StudyServer
@@ -120,5 +120,6 @@ def test_serve_stops_every_participants_runner_together_within_5_s(tmp_path):
     wait_until(lambda: all(r.trial for r in runners.values()), 30, "the runners never started")
     sent = time.monotonic()
     server.stop()
-    assert time.monotonic() - sent < LIMIT_S
-    assert runners["p01"].code == 130 and runners["p02"].code == -signal.SIGKILL
+    took = time.monotonic() - sent
+    assert took < LIMIT_S
+    assert runners["p01"].code == 130 and runners["p02"].code == -signal.SIGKILL, (took, runners["p01"].last)

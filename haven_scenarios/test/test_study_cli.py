@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 import yaml
 
-from haven_scenarios.run.trial import parse_condition
+from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.questionnaires import ANSWERS_FILE, BUILTINS, answers_record, likert
 from haven_scenarios.tools.cli import main
 
@@ -235,12 +235,12 @@ def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, 
 def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(tmp_path: Path) -> None:
     """Each trial is asked for as `haven run` would be (no command line in between): in the browser,
     every human teleoperated, the study's questionnaires (its own Likert one as a file)."""
-    from haven_scenarios.study.progress import questionnaire_specs
+    from haven_scenarios.conduct.recorded_trial import plan_trial
+    from haven_scenarios.conduct.study_run import trial_request
+    from haven_scenarios.record.progress import questionnaire_specs
     from haven_scenarios.study.protocol import load_study
     from haven_scenarios.study.schedule import participant_schedule
     from haven_scenarios.tools.cli import build_parser
-    from haven_scenarios.tools.commands.study_run import trial_request
-    from haven_scenarios.tools.recorded_trial import plan_trial
 
     path = study_file(tmp_path)
     args = build_parser().parse_args(["study", "run", str(path), "--participant", "p02", "--web", "--port", "0", "--domain-id", "7"])

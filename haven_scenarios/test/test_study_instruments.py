@@ -10,11 +10,11 @@ from pathlib import Path
 import pytest
 import yaml
 
+from haven_scenarios.conduct.instruments import BATCH_REASON, run_instruments, terminal_asker
 from haven_scenarios.record.participants import InstrumentBook, codebook_rows, participant_rows, write_participants
 from haven_scenarios.study.instruments import DEMOGRAPHICS, NARS, consent, preference
 from haven_scenarios.study.protocol import StudyError, load_study, parse_study
 from haven_scenarios.study.questionnaires import BUILTINS, check_answers, in_order, item_order, resolve, score
-from haven_scenarios.tools.commands.study_instruments import BATCH_REASON, run_instruments, terminal_asker
 
 CONDITIONS = [("none", ["none"]), ("signals", ["turn_signals"]), ("all", ["all"])]
 
@@ -182,8 +182,8 @@ def test_haven_study_run_asks_at_the_terminal_before_the_first_trial_and_after_t
     for batch trials to keep it fast): p01 declines and runs no trial; p02 agrees, answers
     demographics and NARS, does both trials, then ranks the conditions; the report has
     participants.csv. A `--batch` pilot's p03 is asked nothing and stored as not asked."""
+    from haven_scenarios.conduct import study_run
     from haven_scenarios.tools.cli import main
-    from haven_scenarios.tools.commands import study_run
 
     data = {
         "name": "s", "scenarios": ["shared_room"], "conditions": {"none": ["none"], "all": ["all"]}, "participants": 3,

@@ -13,8 +13,8 @@ import pytest
 import yaml
 
 from haven_scenarios.record.order_table import FIRST, order_rows
+from haven_scenarios.record.progress import STORED, bind, differences
 from haven_scenarios.record.study_table import Measure, TrialResults
-from haven_scenarios.study.progress import STORED, bind, differences
 from haven_scenarios.study.protocol import StudyError, load_study
 from haven_scenarios.study.schedule import PlannedTrial, assignment, design_note, practice_note, schedule, sequence_count, sequences
 

@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
+from haven_scenarios.record.progress import finished
 from haven_scenarios.record.study_summary import summary_rows
 from haven_scenarios.record.study_table import Measure, TrialResults, long_rows, split_measures, wide_rows
-from haven_scenarios.study.progress import finished
 
 
 def test_per_person_metrics_become_human_and_measure_and_strings_are_not_measures() -> None:

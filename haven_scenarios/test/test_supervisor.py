@@ -4,7 +4,7 @@ import time
 
 import pytest
 
-from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
+from haven_scenarios.run.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
 
 pytestmark = pytest.mark.integration
 

@@ -7,7 +7,8 @@ import pytest
 
 from haven_scenarios.run.batch import run_batch
 from haven_scenarios.run.grid import plan_sweep
-from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_sim.common.events import EventKind
 from haven_viz.cues import Toggles

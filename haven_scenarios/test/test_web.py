@@ -263,7 +263,7 @@ def test_a_client_advertising_thousands_of_channels_is_cut_off_after_a_few_and_s
     another client of the same role is served as before."""
     from types import SimpleNamespace
 
-    from haven_scenarios.tools.foxglove_relay import MAX_CHANNELS_PER_CLIENT, FoxgloveRelay, _Listener
+    from haven_scenarios.web.foxglove_relay import MAX_CHANNELS_PER_CLIENT, FoxgloveRelay, _Listener
 
     asked, said, statuses = [], [], []
 
@@ -382,8 +382,8 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
     from websockets.exceptions import ConnectionClosed, InvalidHandshake
     from websockets.sync.client import connect
 
-    from haven_scenarios.tools.foxglove_relay import DoorCheck, FoxgloveRelay
     from haven_scenarios.web.door_hello import BackendGuard
+    from haven_scenarios.web.foxglove_relay import DoorCheck, FoxgloveRelay
 
     relay, guard, sink = FoxgloveRelay(), BackendGuard(), _RoleSink()
     server = relay.serve("127.0.0.1", 0, "haven console", sink, parameters=True, door=DoorCheck(door_key(SECRET, CONSOLE), guard.sweep))

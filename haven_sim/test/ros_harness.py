@@ -36,7 +36,7 @@ class Collected(list[Any]):
 
 def next_domain_id() -> int:
     """A domain id in 1..100 unlikely to collide with parallel test workers, and not one a HAVEN
-    suite holds now (its lock, tools/domains.py: a `haven run` the user started on this machine)."""
+    suite holds now (its lock, run/domains.py: a `haven run` the user started on this machine)."""
     for _ in range(100):
         candidate = 1 + (os.getpid() * 13 + next(_counter)) % 100
         if not _held(candidate):
@@ -46,8 +46,8 @@ def next_domain_id() -> int:
 
 def _held(domain_id: int) -> bool:
     try:
-        from haven_scenarios.tools.domains import lock_path
-        from haven_scenarios.tools.locks import FileLock, Locked
+        from haven_scenarios.run.domains import lock_path
+        from haven_scenarios.run.locks import FileLock, Locked
     except ImportError:  # (haven_sim's tests alone)
         return False
     lock = FileLock(lock_path(domain_id))

@@ -7,7 +7,7 @@ import math
 
 import pytest
 
-from haven_scenarios.run.trial import check_fit, condition_name, parse_condition
+from haven_scenarios.study.conditions import check_fit, condition_name, parse_condition
 from haven_sim.common.geometry import Pose2D
 from haven_sim.robots.fields import DEFAULT
 from haven_sim.robots.robot_kind import resolve_robot

@@ -20,8 +20,8 @@ from rosgraph_msgs.msg import Clock
 from haven_scenarios.nodes.cue_parameters import CueParameters
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.nodes.role_sink import RoleSink, TablePublishers
-from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_scenarios.web.access import Role, absolute
+from haven_scenarios.web.foxglove_relay import FoxgloveRelay
 from haven_sim.common import nodes, topics
 from haven_sim.common.params import build, defaults
 from haven_sim.common.topics import WireParams

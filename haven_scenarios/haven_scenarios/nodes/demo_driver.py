@@ -16,7 +16,7 @@ from rclpy.node import Node
 from sensor_msgs.msg import BatteryState
 from std_msgs.msg import String
 
-from haven_scenarios.tools.square_drive import SquareDriver
+from haven_scenarios.teleop.square_drive import SquareDriver
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nodes import conversions as conv, qos

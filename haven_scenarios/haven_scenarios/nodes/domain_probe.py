@@ -1,5 +1,5 @@
 """Which HAVEN suite nodes are on a ROS domain: `haven run` and `haven sim` ask before they start
-theirs (`tools/domains.py`), so that two suites never share a graph unknowingly.
+theirs (`run/domains.py`), so that two suites never share a graph unknowingly.
 
 Run as `python -m haven_scenarios.nodes.domain_probe SECONDS NAME...` with ROS_DOMAIN_ID set; it
 watches the graph for up to SECONDS of wall time (discovery of a running suite takes 0.4-0.9 s

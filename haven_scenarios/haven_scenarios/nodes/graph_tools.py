@@ -14,7 +14,7 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 
 from haven_scenarios.nodes.raw_topics import matching_qos, message_class
-from haven_scenarios.tools.rates import rate_stats
+from haven_scenarios.record.rates import rate_stats
 
 
 def to_plain(msg: Any) -> Any:

@@ -17,8 +17,8 @@ from geometry_msgs.msg import Twist
 from rclpy.node import Node
 from std_msgs.msg import String
 
-from haven_scenarios.tools.keys import HELP, KeyMapper
-from haven_scenarios.tools.teleop_status import announce, joined
+from haven_scenarios.teleop.keys import HELP, KeyMapper
+from haven_scenarios.teleop.status import announce, joined
 from haven_sim.common.events import EventError, EventKind
 from haven_sim.nodes import conversions as conv, qos
 from haven_sim.nodes.runner import declare, run_node

@@ -1,4 +1,4 @@
-"""The web node's side of `web/presence.py`: the door's socket news and the pages' reports in, the
+"""The web node's side of `study/presence.py`: the door's socket news and the pages' reports in, the
 study log's events, the simulator's pause (/haven/pause, std_srvs/SetBool), the console's Abort,
 and `/haven/participants` (a JSON table for the pages, every second and on each change) out."""
 
@@ -15,10 +15,10 @@ from rclpy.serialization import serialize_message
 from std_msgs.msg import String
 from std_srvs.srv import SetBool
 
+from haven_scenarios.study.presence import Act, Attendance
 from haven_scenarios.study.rules import TrialCommand, TrialState
-from haven_scenarios.tools.foxglove_relay import FoxgloveRelay
 from haven_scenarios.web.access import PARTICIPANTS
-from haven_scenarios.web.presence import Act, Attendance
+from haven_scenarios.web.foxglove_relay import FoxgloveRelay
 from haven_sim.common.events import Event, EventKind
 
 TABLE_PERIOD_S = 1.0

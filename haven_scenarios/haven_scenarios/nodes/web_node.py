@@ -36,9 +36,9 @@ from haven_scenarios.nodes.presence_desk import PresenceDesk
 from haven_scenarios.nodes.raw_topics import RawTopics
 from haven_scenarios.nodes.role_sink import RoleSink, TablePublishers
 from haven_scenarios.record.answers import AnswerBook, from_parameter
+from haven_scenarios.study.presence import DEFAULT_RECONNECT_TIMEOUT_S, Attendance, OnDisconnect
 from haven_scenarios.study.rules import TrialCommand
 from haven_scenarios.study.scenario import load_scenario
-from haven_scenarios.tools.foxglove_relay import DoorCheck, FoxgloveRelay
 from haven_scenarios.web.access import (
     ANSWERS,
     CONSOLE,
@@ -54,9 +54,9 @@ from haven_scenarios.web.access import (
     urls,
 )
 from haven_scenarios.web.door_hello import BackendGuard
+from haven_scenarios.web.foxglove_relay import DoorCheck, FoxgloveRelay
 from haven_scenarios.web.front_door import FrontDoor, address_for_others
 from haven_scenarios.web.page_config import PageSettings, page_config
-from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, Attendance, OnDisconnect
 from haven_scenarios.web.tls import address_notes, server_context
 from haven_scenarios.web.wizard import StartGate, Wizard
 from haven_sim.common import nodes, topics

@@ -1,7 +1,7 @@
 """The rule for a recorder that did not end cleanly while a recorded trial stopped.
 
 When a trial ends, `haven run` stops the nodes with SIGTERM and, after a grace of 5 s, SIGKILL
-(tools/supervisor.py). The recorder exits with code 0 only after it has closed its bag (the last
+(run/supervisor.py). The recorder exits with code 0 only after it has closed its bag (the last
 messages written, the MCAP summary and footer, metadata.yaml: nodes/recorder.py), so a clean exit
 is its own evidence. A recorder that did not exit cleanly (killed by SIGKILL on a loaded machine
 while it was still closing, or ended by an error) may or may not have finished its bag, so:

@@ -22,7 +22,6 @@ from __future__ import annotations
 import json
 import os
 import platform
-import re
 import subprocess
 import sys
 import time
@@ -41,7 +40,8 @@ from haven_scenarios.record.bag import read_recording, to_wall_time, wall_clock
 from haven_scenarios.record.metrics import compute
 from haven_scenarios.record.outsiders import declared_of
 from haven_scenarios.record.timeline import GRID_S, Recording, Timeline
-from haven_scenarios.run.trial import condition_name
+from haven_scenarios.study.conditions import condition_name
+from haven_scenarios.study.names import check_name
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario, ScenarioError, load_scenario
@@ -61,21 +61,8 @@ SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = "scenario.y
 ROBOT_FILE = "robot.yaml"
 EVENTS_FILE = "events.jsonl"
 # The write end of a pipe on which the recorder says it has the trial's end on every state stream
-# (nodes/recorder.py); `haven run` reads the other end (tools/recorded_trial.py).
+# (nodes/recorder.py); `haven run` reads the other end (conduct/recorded_trial.py).
 END_FD_ENV = "HAVEN_TRIAL_END_FD"
-
-
-NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}")  # participant ids and scenario names: part of a folder name
-NAME_RULE = "1 to 64 ASCII letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
-
-
-def check_name(value: object, what: str) -> str:
-    """`value` if it is a safe name for a session folder (NAME, no '..': never a path); else
-    ValueError naming `what` (the option or the key it came from), in one line."""
-    if isinstance(value, str) and NAME.fullmatch(value) and ".." not in value:
-        return value
-    shown = repr(value) if len(repr(value)) <= 40 else repr(value)[:37] + "..."
-    raise ValueError(f"{what}: must be {NAME_RULE}, got {shown}")
 
 
 def new_session_dir(root: Path, scenario: str, participant: str) -> Path:

@@ -18,8 +18,8 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.codebook import Codebook
+from haven_scenarios.record.progress import TrialProgress
 from haven_scenarios.record.session import METRICS_FILE, analyse, session_info
-from haven_scenarios.study.progress import TrialProgress
 from haven_scenarios.study.questionnaires import ANSWERS_FILE
 from haven_sim.robots.robot_kind import DEFAULT_ROBOT
 

@@ -8,7 +8,7 @@ and a loss on a topic the metrics read counts; a trial must have ended with `tri
 publisher from outside the suite may have been there before it ended (`record/outsiders.py`), nor
 the planner have planned before it began (for an outside goal); and no plugin may have failed (its code
 raised or overran its deadline: `plugin_failed`, common/contain.py); and no participant may have been away (their
-page disconnected) for longer than MAX_AWAY_S while it ran on without them (`web/presence.py`: with
+page disconnected) for longer than MAX_AWAY_S while it ran on without them (`study/presence.py`: with
 `on_disconnect: pause` it stood still instead, and a participant not back in time aborts it).
 """
 
@@ -22,7 +22,7 @@ import numpy as np
 
 from haven_scenarios.record.outsiders import METRIC_TOPICS, Declared, judge
 from haven_scenarios.record.timeline import Recording
-from haven_scenarios.web.presence import MAX_AWAY_S
+from haven_scenarios.study.presence import MAX_AWAY_S
 from haven_sim.common import topics
 from haven_sim.common.contain import failures
 from haven_sim.common.events import PLAN_POSES, EventKind, Source

@@ -18,7 +18,7 @@ from dataclasses import dataclass, fields, replace
 from pathlib import Path
 from typing import Any
 
-from haven_scenarios.run.trial import check_fit, condition_name, parse_condition
+from haven_scenarios.study.conditions import check_fit, condition_name, parse_condition
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.scenario import MAX_WALKING_SPEED_MPS, HumanTask, Scenario
 from haven_sim.common import plugins

@@ -14,12 +14,13 @@ from typing import Any
 
 from haven_scenarios.record.session import EVENTS_FILE, METRICS_FILE, SESSION_FILE, new_session_dir, trial_record, write_json
 from haven_scenarios.run.suite import SuiteConfig
-from haven_scenarios.run.trial import parse_condition, run_trial
+from haven_scenarios.run.trial import run_trial
+from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import atomic
 
 NO_OUTCOME = "unknown: the batch trial ended before it wrote the outcome"
-INTERRUPTED = "interrupted (stopped by a signal)"  # as a recorded trial's (tools/commands/recordings.py)
+INTERRUPTED = "interrupted (stopped by a signal)"  # as a recorded trial's (conduct/outcomes.py)
 
 
 def run_batch_session(

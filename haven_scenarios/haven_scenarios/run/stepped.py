@@ -18,7 +18,8 @@ from pathlib import Path
 import numpy as np
 
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
-from haven_scenarios.run.trial import Trial, TrialResult, check_seed, parse_condition
+from haven_scenarios.run.trial import Trial, TrialResult
+from haven_scenarios.study.conditions import check_seed, parse_condition
 from haven_scenarios.study.scenario import Scenario, load_scenario
 from haven_sim.common import topics
 from haven_sim.common.component import Message

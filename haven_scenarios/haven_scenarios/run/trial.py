@@ -10,7 +10,6 @@ their stamps), so the metrics come out of the same code for both modes.
 from __future__ import annotations
 
 import math
-import operator
 from collections.abc import Sequence
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
@@ -18,6 +17,7 @@ from typing import Any
 from haven_scenarios.record.metrics import compute
 from haven_scenarios.record.timeline import RECORDED, Recording
 from haven_scenarios.run.suite import SuiteConfig
+from haven_scenarios.study.conditions import condition_name, parse_condition
 from haven_scenarios.study.director import TrialDirector
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import Scenario
@@ -26,50 +26,13 @@ from haven_sim.common.component import Component
 from haven_sim.nav.controller import ControllerComponent
 from haven_sim.nav.mux import MuxComponent
 from haven_sim.nav.planning import PlannerComponent, world_lanes
-from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.fields import with_robot
 from haven_sim.runtime.loop import DelayFn, InProcessLoop, Observer
 from haven_sim.sim.simulator import SimulatorComponent
-from haven_viz.cues import CUES, DEFAULT_ON, CueParams, CueToggles, Toggles, unfit, unknown_cue
+from haven_viz.cues import CueParams, CueToggles
 from haven_viz.viz import VizComponent
 
-SEED_MAX = 2**31 - 1  # a trial's seed: 0..this (a ROS integer parameter of the nodes, numpy's seed)
 GRACE_S = 60.0  # the loop stops this long after the scenario's timeout even if nothing ended it
-
-
-def check_seed(value: Any, where: str = "seed") -> int:
-    """A trial's seed as an int (a numpy integer too); ValueError in one line for anything else."""
-    try:
-        seed = operator.index(value) if not isinstance(value, bool) else None
-    except TypeError:
-        seed = None
-    if seed is None or not 0 <= seed <= SEED_MAX:
-        raise ValueError(f"{where}: must be an integer 0..{SEED_MAX}, got {repr(value)[:40]}")
-    return seed
-
-
-def parse_condition(names: Sequence[str]) -> CueToggles:
-    """`all`, `none`, or the cues to show (the others are off)."""
-    if not names or list(names) == ["all"]:
-        return Toggles()
-    if list(names) == ["none"]:
-        return Toggles.none()
-    unknown = [n for n in names if n not in CUES]
-    if unknown:
-        raise ValueError(unknown_cue(unknown[0]))
-    return Toggles(**{c: c in names for c in CUES})
-
-
-def condition_name(t: CueToggles) -> str:
-    on = t.names_on()
-    return "all" if tuple(on) == DEFAULT_ON else ("none" if not on else "+".join(on))
-
-
-def check_fit(toggles: CueToggles, robot: RobotDescription) -> None:
-    """ValueError (one line) when the condition names a cue the robot cannot show."""
-    why = unfit(toggles.names_on(), robot)
-    if why is not None:
-        raise ValueError(why)
 
 
 def scenario_suite(scenario: Scenario, seed: int, toggles: CueToggles, suite: SuiteConfig | None = None) -> SuiteConfig:

@@ -23,8 +23,8 @@ import re
 from pathlib import Path
 from typing import Annotated, TypeVar
 
-from haven_scenarios.record.session import check_name
 from haven_scenarios.study.instruments import read_text
+from haven_scenarios.study.names import check_name
 from haven_sim.common.schema import FileModel, Positive, Whole, checked
 from haven_sim.common.yaml_file import file_label, short
 

@@ -37,9 +37,9 @@ from typing import Annotated, Any, Literal
 
 from pydantic import Field
 
-from haven_scenarios.record.session import check_name
-from haven_scenarios.run.trial import SEED_MAX, condition_name, parse_condition
+from haven_scenarios.study.conditions import SEED_MAX, condition_name, parse_condition
 from haven_scenarios.study.instruments import PREFERENCE, StudyInstruments, consent, preference, read_text
+from haven_scenarios.study.names import check_name
 from haven_scenarios.study.online import Online, resolved
 from haven_scenarios.study.questionnaires import Questionnaire, resolve
 from haven_scenarios.study.scenario import ScenarioError, load_scenario

@@ -60,7 +60,7 @@ class Role:
 READY = "/haven/ready"  # a participant's Start (String: their id)
 ANSWERS = "/haven/questionnaire"  # a participant's answers to one questionnaire (String: JSON, record/answers.py)
 SKIP_QUESTIONNAIRES = "/haven/skip_questionnaires"  # the console ends the wait for answers (String, any)
-PAGE_REPORT = "/haven/page_report"  # a participant page's frame rate, latency, input age (String: JSON, web/presence.py)
+PAGE_REPORT = "/haven/page_report"  # a participant page's frame rate, latency, input age (String: JSON, study/presence.py)
 NOT_ROS = (READY, ANSWERS, SKIP_QUESTIONNAIRES, PAGE_REPORT)  # what pages send that the web node handles itself
 PARTICIPANTS = "/haven/participants"  # to the pages: who is connected, what their pages report (String: JSON)
 

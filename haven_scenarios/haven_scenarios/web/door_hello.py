@@ -8,7 +8,7 @@ connect to it and skip the tokens. So:
 - right after the WebSocket upgrade, before a byte of the page's, the door sends a hello: a client
   channel advertised on DOOR_TOPIC and one message carrying the role's door key (`access.door_key`,
   from the session's secret; a page never sees it), as RFC 6455 client frames (masked). The relay
-  (tools/foxglove_relay.py) lets a client publish, subscribe or touch parameters only after that
+  (web/foxglove_relay.py) lets a client publish, subscribe or touch parameters only after that
   hello, so a connection that skipped the door can do nothing whatever its timing;
 - `BackendGuard.sweep` (on a stranger's first request, and every second) shuts every connection to
   a role server's port whose other end is not one of the door's sockets, so it is refused, not

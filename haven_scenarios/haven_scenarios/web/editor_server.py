@@ -35,13 +35,12 @@ import yaml
 
 from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.study.scenario_template import TASKS, TemplateError, scenario_template
-from haven_scenarios.tools.commands.world import summary  # (the same words `haven world show` prints)
 from haven_scenarios.web.access import TOKEN_COOKIE, TOKEN_PARAM, new_token, role_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json, token_cookie
 from haven_sim.common import atomic
 from haven_sim.common.yaml_file import MAX_FILE_BYTES, YamlFileError, file_label, one_line
 from haven_sim.sim.map_image import open_image, read_image, wall_boxes
-from haven_sim.sim.world import WorldError
+from haven_sim.sim.world import WorldError, summary
 from haven_sim.sim.world_file import parse_world
 
 PAGE = ROLE = "edit"

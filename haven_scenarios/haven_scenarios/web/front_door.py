@@ -248,7 +248,7 @@ class FrontDoor:
         Foxglove server's port on 127.0.0.1; `config(role)`: the page's settings; `robot_model`:
         the trial robot's glTF file (its look.model), served at ROBOT_MODEL_PATH; `tls`: serve HTTPS
         (web/tls.py); `guard`: the one the role servers call on a stranger (web/door_hello.py);
-        `on_socket(role, open)`: a page's WebSocket opened or closed (web/presence.py)."""
+        `on_socket(role, open)`: a page's WebSocket opened or closed (study/presence.py)."""
         self.robot_model = Path(robot_model) if robot_model else None
         self.tokens = {role: role_token(secret, role) for role in backends}
         self.door_keys = {role: door_key(secret, role) for role in backends}

@@ -3,7 +3,7 @@ own process group, whose printed page addresses say where the participant goes n
 
 The runner prints each page's address as it opens it (the consent and questionnaires before the
 first trial, each trial's participant page and researcher console, the questionnaires after the
-last: tools/commands/study_run.py); its output also goes to `online.log` in the participant's
+last: conduct/study_run.py); its output also goes to `online.log` in the participant's
 folder, for the researcher (readable by its owner only: the addresses in it carry tokens). A page
 the participant has finished (their browser came back from it) is never handed out again, though
 its server may linger for a moment.

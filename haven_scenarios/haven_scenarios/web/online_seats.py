@@ -4,7 +4,7 @@ A participant arrives with the id their recruitment panel appends to the link; t
 free participant of the study's design (p01, p02, ... in order: the design's `assignment` already
 decides who of them takes which order) and keep it: a reload, a return the next day or a visit to
 another server on the same study folder finds the same place. The book is `online.json` in the
-study's folder, each change made under an OS lock (tools/locks.py), so servers that share the
+study's folder, each change made under an OS lock (run/locks.py), so servers that share the
 folder never hand out one place twice. A key per place (in the participant's session address) keeps
 others out of it: the book holds every key, so it is readable by its owner only (0600, written whole,
 never through a symbolic link: haven_sim/common/atomic.py).
@@ -21,11 +21,11 @@ from enum import StrEnum
 from pathlib import Path
 
 from haven_scenarios.record.participants import InstrumentBook
-from haven_scenarios.record.session import check_name
-from haven_scenarios.study.progress import progress
+from haven_scenarios.record.progress import progress
+from haven_scenarios.run.locks import FileLock
+from haven_scenarios.study.names import check_name
 from haven_scenarios.study.protocol import Study
 from haven_scenarios.study.schedule import PlannedTrial
-from haven_scenarios.tools.locks import FileLock
 from haven_sim.common.atomic import write_secret
 
 BOOK, BOOK_LOCK = "online.json", ".online.lock"  # in the study's folder

@@ -14,8 +14,8 @@ from typing import Any
 
 from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order, trial_key
 from haven_scenarios.study.scenario import Scenario
-from haven_scenarios.tools.foxglove_relay import msgdef
 from haven_scenarios.web.access import ROBOT_MODEL_PATH, Role
+from haven_scenarios.web.foxglove_relay import msgdef
 from haven_scenarios.web.wizard import MAX_THOUGHT_CHARS
 from haven_sim.common.bodies import EYE_HEIGHT_M, HUMAN_BODY
 from haven_sim.robots.description import RobotDescription

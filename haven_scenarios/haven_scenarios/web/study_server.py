@@ -27,16 +27,16 @@ from pathlib import Path
 from typing import Any
 from urllib.parse import parse_qs, quote, urlsplit
 
+from haven_scenarios.run.domains import DomainRange
+from haven_scenarios.study.presence import OnDisconnect
 from haven_scenarios.study.protocol import Study
 from haven_scenarios.study.schedule import PlannedTrial
-from haven_scenarios.tools.domains import DomainRange
 from haven_scenarios.web import online_pages as pages
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
 from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, redirect, reply, reply_json, token_cookie
 from haven_scenarios.web.online_gate import SIG_PARAM, TOO_MANY, Gate, Refusal, cookie_place, place_cookie, same_origin
 from haven_scenarios.web.online_runner import LOG, NEXT_URL_ENV, Runner
 from haven_scenarios.web.online_seats import LIVE, Full, Seat, Seats, Standing, standing
-from haven_scenarios.web.presence import OnDisconnect
 
 DEFAULT_CAPACITY = 2  # live trials at once: what a 2-core machine holds at a 100 ms p95 (bench/RESULTS.md)
 MAX_STARTS = 5  # a participant's runner starts again this often at most (their trial did not finish)

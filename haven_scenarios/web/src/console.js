@@ -98,7 +98,7 @@ function showStatus() {
   showQuestionnaires();
 }
 
-// -- who is connected: each participant's page, what it reports (web/presence.py) -------------------------
+// -- who is connected: each participant's page, what it reports (study/presence.py) -------------------------
 function showParticipants() {
   const p = state.participants;
   const table = document.getElementById("participants");

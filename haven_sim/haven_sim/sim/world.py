@@ -144,3 +144,16 @@ def resolve_world_path(spec: str) -> Path:
     if p.suffix in (".yaml", ".yml") or p.exists():
         return p
     return packaged_world(spec)
+
+
+def summary(world: World) -> str:
+    """What a world holds, in words (`haven world show` and the world editor say it)."""
+    counts = {
+        "wall(s)": len(world.walls),
+        "obstacle(s)": len(world.obstacles),
+        "room(s)": len(world.rooms),
+        "hallway(s)": len(world.hallways),
+        "gem(s)": len(world.gems),
+        "person start(s)": len(world.humans),
+    }
+    return ", ".join(f"{n} {what}" for what, n in counts.items())

@@ -12,7 +12,7 @@ from haven_scenarios.run.batch import Progress, group_summaries, journal_path, r
 from haven_scenarios.run.grid import TrialSpec, param_keys, parse_grid, parse_seeds, plan_sweep, robot_spec
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.sweep import LOCAL, cores
-from haven_scenarios.run.trial import condition_name, parse_condition
+from haven_scenarios.study.conditions import condition_name, parse_condition
 from haven_scenarios.study.scenario import ScenarioError, load_scenario, scenario_names
 from haven_scenarios.tools.commands.common import SEED, add_robot_option, bounded_int, existing_file, fail
 from haven_sim.runtime.process import interrupted, on_stop_signals

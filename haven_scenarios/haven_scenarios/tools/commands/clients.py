@@ -8,9 +8,10 @@ import subprocess
 import sys
 from pathlib import Path
 
-from haven_scenarios.tools.commands.common import PORT, add_ros_options, bounded_int, environment, fail, finite, port_free, positive, run_client
-from haven_scenarios.tools.domains import DomainBusy, inherited_domain, take_domain
-from haven_scenarios.tools.supervisor import node_argv
+from haven_scenarios.conduct.suite_processes import port_free
+from haven_scenarios.run.domains import DomainBusy, inherited_domain, take_domain
+from haven_scenarios.run.supervisor import node_argv
+from haven_scenarios.tools.commands.common import PORT, add_ros_options, bounded_int, environment, fail, finite, positive, run_client
 from haven_sim.runtime.process import die_with_parent
 from haven_sim.sim.world import WorldError, resolve_world_path
 from haven_sim.sim.world_file import load_world

@@ -4,24 +4,23 @@ from __future__ import annotations
 
 import argparse
 import difflib
-import importlib.util
 import math
-import socket
 import sys
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 
+from haven_scenarios.conduct.suite_processes import claim_ros_domain
 from haven_scenarios.record.outsiders import WRITERS, allowable, watched
-from haven_scenarios.run.trial import SEED_MAX
-from haven_scenarios.tools.domains import DOMAINS_ENV, MAX_DOMAIN_ID, Claim, DomainRange, claim_domain, parse_domains
-from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
+from haven_scenarios.run.domains import DOMAINS_ENV, MAX_DOMAIN_ID, Claim, DomainRange, parse_domains
+from haven_scenarios.run.supervisor import ProcessSpec, Supervisor, node_argv, ros_environment
+from haven_scenarios.study.conditions import SEED_MAX
+from haven_scenarios.study.questionnaires import registered
 from haven_sim.common import nodes
-from haven_sim.common.params import load_params_file
 
 
 def add_dropout_options(group: argparse._ActionsContainer, default: str = "keep") -> None:
-    """What a participant's drop-out during a trial does (web/presence.py)."""
-    from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
+    """What a participant's drop-out during a trial does (study/presence.py)."""
+    from haven_scenarios.study.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 
     group.add_argument(
         "--on-disconnect",
@@ -108,20 +107,8 @@ PORT = bounded_int(0, 65535)
 SEED = bounded_int(0, SEED_MAX)
 
 
-def port_free(host: str, port: int) -> str | None:
-    """None if the port can be bound on `host` (0: any free one), else why not: checked before
-    anything starts, so a busy port is one line, not a server's traceback."""
-    try:
-        with socket.socket() as s:
-            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
-            s.bind((host, port))
-    except (OSError, OverflowError) as e:
-        return f"--host {host} --port {port}: {getattr(e, 'strerror', None) or e}"
-    return None
-
-
 def add_ros_options(p: argparse.ArgumentParser, suite: bool = False) -> None:
-    """`suite`: the command starts a suite, which takes a domain of its own (tools/domains.py)."""
+    """`suite`: the command starts a suite, which takes a domain of its own (run/domains.py)."""
     own = "the inherited one if no other HAVEN suite runs there, else a free one (said); given: refused if another suite holds it"
     help = f"ROS_DOMAIN_ID for the nodes (default: {own if suite else 'inherited'})"
     p.add_argument("--domain-id", type=bounded_int(0, MAX_DOMAIN_ID), default=None, help=help)
@@ -131,7 +118,7 @@ def add_ros_options(p: argparse.ArgumentParser, suite: bool = False) -> None:
 
 
 def domain_range(text: str) -> DomainRange:
-    """An argparse type: `--domains A-B` (tools/domains.py)."""
+    """An argparse type: `--domains A-B` (run/domains.py)."""
     try:
         return parse_domains(text)
     except ValueError as e:
@@ -179,21 +166,6 @@ def environment(args: argparse.Namespace) -> dict[str, str]:
     return ros_environment(network=args.network, domain_id=args.domain_id)
 
 
-def claim_ros_domain(
-    domain_id: int | None, network: bool, ignore: Sequence[str] = (), say: Callable[[str], None] = print, domains: DomainRange | None = None
-) -> Claim:
-    """The ROS domain a suite runs on (`tools/domains.py`); DomainBusy (one line) when `domain_id`
-    names a domain another suite holds or one outside `domains` (None: $HAVEN_DOMAINS, if set), or
-    when no domain is free. Said when the inherited domain was taken (or lies outside the range)
-    and the suite moved. `ignore`: our nodes left out (`--without`), whose names the user's own nodes may have."""
-    got = claim_domain(domain_id, ros_environment(network=network), [nodes.BY_KEY[n].name for n in ignore], domains)
-    if got.moved_from is not None:
-        home, why = got.moved_from
-        here = got.domain_id
-        say(f"haven: ROS domain {home}: {why}; this suite runs on ROS domain {here} (ROS_DOMAIN_ID={here} to join it)")
-    return got
-
-
 def claim(args: argparse.Namespace, ignore: Sequence[str] = ()) -> Claim:
     """`claim_ros_domain` for a command's options, set as `args.domain_id` for its nodes."""
     got = claim_ros_domain(args.domain_id, args.network, ignore, lambda line: print(line, flush=True), args.domains)
@@ -205,32 +177,6 @@ def params_file(args: argparse.Namespace) -> str | None:
     return str(Path(args.params_file).resolve()) if getattr(args, "params_file", None) else None
 
 
-def suite_specs(params: Mapping[str, Mapping[str, object]], pfile: str | None, without: Sequence[str] = ()) -> list[ProcessSpec]:
-    """Our nodes (less `without`), each with the parameter file and its own -p overrides; every node
-    but the simulator runs on sim time."""
-    specs = []
-    for node in nodes.COMPONENTS:
-        if node.key in without:
-            continue
-        own = dict(params.get(node.key, {}))
-        if node is not nodes.SIM:
-            own = {"use_sim_time": True, **own}
-        specs.append(ProcessSpec(node.key, node_argv(node.module, own, params_file=pfile)))
-    return specs
-
-
-def nav2_specs(params: Mapping[str, Mapping[str, object]], pfile: str | None) -> list[ProcessSpec]:
-    """Nav2's action servers (nodes.NAV2) with the planner's parameters, from the parameter file's
-    planner section and the command's (its planner_server plans as our planner does), or nothing,
-    said in one line, where nav2_msgs is not installed."""
-    if importlib.util.find_spec("nav2_msgs") is None:
-        print("haven: nav2_msgs is not installed: no Nav2 action servers (`make setup` builds it)", flush=True)
-        return []
-    from_file = load_params_file(pfile).get(nodes.PLANNER.name, {}) if pfile else {}
-    own = {"use_sim_time": True, **from_file, **params.get(nodes.PLANNER.key, {})}
-    return [ProcessSpec(nodes.NAV2.key, node_argv(nodes.NAV2.module, own, params_file=pfile))]
-
-
 def run_client(args: argparse.Namespace, name: str, module: str, params: dict[str, object], extra: Sequence[str] = ()) -> int:
     """Run one client node against a running suite until it exits (or Ctrl-C); its exit code is ours."""
     with Supervisor(environment(args)) as sup:
@@ -239,3 +185,14 @@ def run_client(args: argparse.Namespace, name: str, module: str, params: dict[st
         exited = sup.wait()
         sup.stop()
     return 1 if exited is None else exited.code
+
+
+def add_questionnaire_option(group: argparse._ArgumentGroup) -> None:
+    group.add_argument(
+        "--questionnaire",
+        nargs="+",
+        default=None,
+        metavar="SPEC",
+        help=f"after the trial, each teleoperated participant's page asks these questionnaires in order: registered ones ({', '.join(registered())}) "
+        "or YAML files of Likert items; haven run waits for the answers (or the console's Skip questionnaires, or Ctrl-C)",
+    )

@@ -10,8 +10,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from haven_scenarios.record.session import check_name
 from haven_scenarios.run.suite import checked_suite_config
+from haven_scenarios.study.names import check_name
 from haven_scenarios.study.protocol import StudyError, StudyFile, parse_study
 from haven_scenarios.study.questionnaires import LikertFile
 from haven_scenarios.study.scenario import ScenarioError, ScenarioFile, parse_scenario

@@ -7,24 +7,15 @@ participant's trial cleanly (each runs again when they come back)."""
 from __future__ import annotations
 
 import argparse
-import os
 import re
-from dataclasses import replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
 
-from haven_scenarios.study.progress import bind
-from haven_scenarios.study.protocol import load_study, study_names
+from haven_scenarios.study.presence import OnDisconnect
+from haven_scenarios.study.protocol import study_names
 from haven_scenarios.tools.commands.common import PORT, add_domains_option, add_dropout_options, add_tls_options, bounded_int, existing_file, fail
-from haven_scenarios.tools.commands.study import study_dir
-from haven_scenarios.tools.domains import DomainBusy, domains_of, parse_domains
-from haven_scenarios.web.presence import OnDisconnect
 from haven_sim.runtime.process import interrupted, on_stop_signals
 
 DEFAULT_PORT = 8080
-
-if TYPE_CHECKING:
-    from haven_scenarios.web.study_server import StudyServer
 
 
 def port_range(text: str) -> tuple[int, int]:
@@ -61,39 +52,9 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     serve.set_defaults(func=serve_cmd)
 
 
-def open_server(
-    study: str,
-    dir: Path | None = None,
-    tls_cert: str | None = None,
-    tls_key: str | None = None,
-    params_file: str | None = None,
-    **options: Any,
-) -> StudyServer:
-    """`haven serve`'s server for a study file or a shipped study, not started yet (`options`:
-    ServeOptions' host, port, capacity, trial_ports, id_param, on_disconnect, reconnect_timeout,
-    network, domains). ValueError (one line) for a bad study or option; OSError when its folder cannot be written."""
-    from haven_scenarios.web.study_server import ServeOptions, StudyServer
-    from haven_scenarios.web.tls import tls_files
-
-    s = load_study(study)
-    root = study_dir(dir, s).resolve()
-    trials = bind(s, root)
-    if isinstance(options.get("domains"), str):  # (the Python API's "30-39")
-        options["domains"] = parse_domains(options["domains"])
-    o = ServeOptions(str(Path(s.source).resolve()), root, **options)
-    if o.trial_ports and o.trial_ports[1] - o.trial_ports[0] + 1 < o.capacity:
-        raise ValueError(f"--trial-ports: {o.trial_ports[0]}-{o.trial_ports[1]} has fewer ports than --capacity {o.capacity}")
-    try:  # (each participant's runner takes a domain of its own in the range: checked once, here)
-        domains = o.domains or domains_of(os.environ)
-    except DomainBusy as e:
-        raise ValueError(str(e)) from None
-    if domains is not None and len(domains.ids) < o.capacity:
-        raise ValueError(f"{domains}: fewer ROS domains than --capacity {o.capacity} (each participant's trial takes one)")
-    o = replace(o, tls=tls_files(tls_cert, tls_key), params_file=str(Path(params_file).resolve()) if params_file else None)
-    return StudyServer(o, s, trials)
-
-
 def serve_cmd(args: argparse.Namespace) -> int:
+    from haven_scenarios.conduct.online_study import open_server  # (the server loads only for this command)
+
     names = ("host", "port", "capacity", "trial_ports", "id_param", "on_disconnect", "reconnect_timeout", "network", "domains")
     try:
         server = open_server(args.study, args.dir, args.tls_cert, args.tls_key, args.params_file, **{n: getattr(args, n) for n in names})

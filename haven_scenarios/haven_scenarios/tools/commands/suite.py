@@ -7,10 +7,15 @@ import json
 import sys
 from pathlib import Path
 
+from haven_scenarios.conduct.outcomes import repair_bag
+from haven_scenarios.conduct.suite_processes import nav2_specs, suite_specs
 from haven_scenarios.record.bag import not_recorded
-from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, check_name, new_session_dir, provenance, write_json
+from haven_scenarios.record.session import SESSION_FILE, WORLD_FILE, new_session_dir, provenance, write_json
+from haven_scenarios.run.domains import DomainBusy
 from haven_scenarios.run.grid import robot_spec
 from haven_scenarios.run.suite import SIM_SETS, load_suite_config
+from haven_scenarios.run.supervisor import ProcessSpec, Supervisor, node_argv
+from haven_scenarios.study.names import check_name
 from haven_scenarios.tools.commands.common import (
     add_robot_option,
     add_ros_options,
@@ -19,14 +24,9 @@ from haven_scenarios.tools.commands.common import (
     claim,
     environment,
     fail,
-    nav2_specs,
     params_file,
     positive,
-    suite_specs,
 )
-from haven_scenarios.tools.commands.recordings import repair_bag
-from haven_scenarios.tools.domains import DomainBusy
-from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, node_argv
 from haven_sim.common import atomic, nodes
 from haven_sim.common.params import ParamsError
 from haven_sim.common.yaml_file import file_label

@@ -7,24 +7,20 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
-from haven_scenarios.record.session import (
-    PARAMS_FILE,
-    SCENARIO_FILE,
-    SESSION_FILE,
-    check_name,
-    session_info,
-    session_scenario,
-)
+from haven_scenarios.conduct.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
+from haven_scenarios.conduct.session_plan import SessionPlan
+from haven_scenarios.record.session import PARAMS_FILE, SCENARIO_FILE, SESSION_FILE, session_info, session_scenario
 from haven_scenarios.run.suite import SuiteConfig, checked_suite_config, load_suite_config
-from haven_scenarios.run.trial import check_seed
+from haven_scenarios.study.conditions import check_seed
+from haven_scenarios.study.names import check_name
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import scenario_names
-from haven_scenarios.tools.commands import after_trial
 from haven_scenarios.tools.commands.batch_report import CONDITION_HELP
 from haven_scenarios.tools.commands.common import (
     PORT,
     SEED,
     add_dropout_options,
+    add_questionnaire_option,
     add_robot_option,
     add_ros_options,
     add_suite_options,
@@ -33,8 +29,6 @@ from haven_scenarios.tools.commands.common import (
     fail,
     positive,
 )
-from haven_scenarios.tools.commands.session_plan import SessionPlan
-from haven_scenarios.tools.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_sim.common.params import load_params_file
 from haven_sim.common.yaml_file import file_label
 from haven_sim.robots.robot_kind import is_file_spec
@@ -89,7 +83,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     add_dropout_options(web)
     web.add_argument("--researcher-start", action="store_true", help="the trial starts on the console's Start, not when the participants are ready")
     web.add_argument("--no-map-inset", action="store_true", help="no map inset on the participants' pages")
-    after_trial.add_option(web)
+    add_questionnaire_option(web)
     add_ros_options(run, suite=True)
     run.set_defaults(func=run_cmd)
     rerun = sub.add_parser("rerun", help="run a recorded session again from its folder (same scenario, world, parameters, seed, condition)")
@@ -101,7 +95,7 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
 
 
 def run_session(args: argparse.Namespace, plan: SessionPlan, sessions: Path) -> int:
-    """Run and record one trial into a new session folder under `sessions` (tools/recorded_trial.py);
+    """Run and record one trial into a new session folder under `sessions` (conduct/recorded_trial.py);
     the exit code."""
     try:
         result = record_trial(plan, sessions, RosOptions(args.domain_id, args.network, args.domains))

@@ -12,7 +12,7 @@ from haven_scenarios.study.scenario import resolve_world
 from haven_scenarios.tools.commands.common import fail
 from haven_sim.common.yaml_file import YamlFileError, file_label
 from haven_sim.nav.planner import check_plannable
-from haven_sim.sim.world import World, WorldError
+from haven_sim.sim.world import World, WorldError, summary
 from haven_sim.sim.world_file import load_world
 
 HALLWAY_COLOURS = ("tab:purple", "tab:green", "tab:orange", "tab:pink", "tab:olive", "tab:cyan", "tab:brown", "tab:gray")  # one each
@@ -38,18 +38,6 @@ def show_cmd(args: argparse.Namespace) -> int:
     out = draw(world, args.out or Path(f"{world.name}.png"))
     print(f"ok: {file_label(path)} (world {world.name}: {summary(world)}) -> {out}")
     return 0
-
-
-def summary(world: World) -> str:
-    counts = {
-        "wall(s)": len(world.walls),
-        "obstacle(s)": len(world.obstacles),
-        "room(s)": len(world.rooms),
-        "hallway(s)": len(world.hallways),
-        "gem(s)": len(world.gems),
-        "person start(s)": len(world.humans),
-    }
-    return ", ".join(f"{n} {what}" for what, n in counts.items())
 
 
 def draw(world: World, out: Path) -> Path:

@@ -32,7 +32,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from haven_scenarios.tools.locks import FileLock, Locked
+from haven_scenarios.run.locks import FileLock, Locked
 from haven_sim.common import nodes
 
 FREE_DOMAINS = range(1, 102)

@@ -27,7 +27,7 @@ from typing import Any
 import yaml
 
 from haven_scenarios.record.session import SESSION_FILE, session_info, write_json
-from haven_scenarios.run.trial import condition_name, parse_condition
+from haven_scenarios.study.conditions import condition_name, parse_condition
 from haven_scenarios.study.protocol import Study, StudyError
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.schedule import PlannedTrial, assignment, schedule

@@ -8,17 +8,17 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.conduct import after_trial
+from haven_scenarios.conduct.suite_processes import suite_specs
 from haven_scenarios.record.outsiders import Declared, open_topics, suite_nodes
 from haven_scenarios.record.session import PARAMS_FILE, ROBOT_FILE, SCENARIO_FILE, WORLD_FILE
 from haven_scenarios.run.suite import SuiteConfig
+from haven_scenarios.run.supervisor import ProcessSpec, node_argv
 from haven_scenarios.run.trial import scenario_suite
 from haven_scenarios.study.director import any_reader
+from haven_scenarios.study.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.study.scenario import Scenario
-from haven_scenarios.tools.commands import after_trial
-from haven_scenarios.tools.commands.common import suite_specs
-from haven_scenarios.tools.supervisor import ProcessSpec, node_argv
 from haven_scenarios.web.access import TOKEN_ENV, new_token
-from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_sim.common import nodes, topics
 from haven_sim.runtime.lockstep import UNCAPPED_RTF, LockstepParams
 from haven_viz.cues import CueToggles

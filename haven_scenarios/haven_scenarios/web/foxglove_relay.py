@@ -40,7 +40,7 @@ MAX_CHANNELS_PER_CLIENT = 16  # a page advertises at most 4
 
 # foxglove-sdk logs (through Python's logging) every client that leaves without a WebSocket close
 # frame: each closed tab, lost network and connection the front door's guard cuts. Those are the
-# participants' business, said by the web node where it matters (web/presence.py), not an error.
+# participants' business, said by the web node where it matters (study/presence.py), not an error.
 logging.getLogger("foxglove.websocket.connected_client.poller").setLevel(logging.CRITICAL)
 
 

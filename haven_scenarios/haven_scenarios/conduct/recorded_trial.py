@@ -1,7 +1,7 @@
 """One recorded trial with the whole node suite, into a new session folder: what `haven run`,
 `haven rerun`, `haven study run` and the Python API (`haven_scenarios.api`) call.
 
-The suite takes its ROS domain (tools/domains.py), the nodes run as supervised processes, the
+The suite takes its ROS domain (run/domains.py), the nodes run as supervised processes, the
 trial ends when the scenario node exits (or a node dies, or the time limit passes), and the result
 comes back typed: the session folder, how the run ended, the metrics and whether the recording is
 valid. session.json gets the run's outcome however it ends.
@@ -22,6 +22,11 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.conduct import after_trial, outcomes
+from haven_scenarios.conduct.after_trial import Asked
+from haven_scenarios.conduct.outcomes import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
+from haven_scenarios.conduct.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
+from haven_scenarios.conduct.suite_processes import claim_ros_domain, port_free
 from haven_scenarios.record import recorder_stop
 from haven_scenarios.record.bag import not_recorded
 from haven_scenarios.record.outsiders import allowable
@@ -34,7 +39,6 @@ from haven_scenarios.record.session import (
     SESSION_FILE,
     WORLD_FILE,
     analyse,
-    check_name,
     new_session_dir,
     trajectory_picture,
     trial_record,
@@ -42,20 +46,16 @@ from haven_scenarios.record.session import (
     write_inputs,
     write_json,
 )
+from haven_scenarios.run.domains import DomainBusy, DomainRange
 from haven_scenarios.run.grid import robot_spec
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
-from haven_scenarios.run.trial import check_fit, check_seed, condition_name, parse_condition
+from haven_scenarios.run.supervisor import ProcessSpec, Supervisor, ros_environment
+from haven_scenarios.study.conditions import check_fit, check_seed, condition_name, parse_condition
+from haven_scenarios.study.names import check_name
 from haven_scenarios.study.participants import in_session
+from haven_scenarios.study.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import TELEOP, ScenarioError, load_scenario
-from haven_scenarios.tools.commands import after_trial, recordings
-from haven_scenarios.tools.commands.after_trial import Asked
-from haven_scenarios.tools.commands.common import claim_ros_domain, port_free
-from haven_scenarios.tools.commands.recordings import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
-from haven_scenarios.tools.commands.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
-from haven_scenarios.tools.domains import DomainBusy, DomainRange
-from haven_scenarios.tools.supervisor import ProcessSpec, Supervisor, ros_environment
-from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.web.tls import tls_files
 from haven_sim.common import contain, nodes
 from haven_sim.common.events import EventKind
@@ -312,7 +312,7 @@ def _supervise(ros: RosOptions, specs: list[ProcessSpec], folder: Path, timeout_
             questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
         sup.stop_some((nodes.SCENARIO.key,))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
         if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder says no end)
-            _wait_for_recorded_end(folder, end[0], 10.0 if exited is not None or timed_out else recordings.STOPPED_END_WAIT_S)
+            _wait_for_recorded_end(folder, end[0], 10.0 if exited is not None or timed_out else outcomes.STOPPED_END_WAIT_S)
         codes = sup.stop()
     return Ended(exited, timed_out, codes.get(nodes.RECORDER.key), questionnaires)
 
@@ -378,7 +378,7 @@ def tell(result: RecordedTrial) -> None:
     recording if anything, the session folder and what it holds."""
     if result.died is not None:
         print(f"haven: {result.died}; the trial was cut short", file=sys.stderr, flush=True)
-    print(recordings.summary(result.metrics, result.wall_s))
+    print(outcomes.summary(result.metrics, result.wall_s))
     if not result.valid:
         print(f"haven: the session is not valid: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
         if any("from outside the suite" in r for r in result.invalid_reasons):

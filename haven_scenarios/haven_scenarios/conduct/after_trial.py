@@ -11,17 +11,16 @@ the wait ended; unanswered ones do not make the session invalid.
 
 from __future__ import annotations
 
-import argparse
 import json
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any, Protocol
 
+from haven_scenarios.conduct.outcomes import exit_text
 from haven_scenarios.record.answers import answered, over, wanted
+from haven_scenarios.run.supervisor import Supervisor
 from haven_scenarios.study.questionnaires import from_mapping, registered, resolve
 from haven_scenarios.study.scenario import Scenario
-from haven_scenarios.tools.commands.recordings import exit_text
-from haven_scenarios.tools.supervisor import Supervisor
 from haven_sim.common import nodes, plugins
 from haven_sim.common.yaml_file import file_label, read_yaml
 
@@ -39,17 +38,6 @@ def asked(scenario: Scenario, web: HasQuestionnaires | None) -> Asked | None:
     if web is None or not web.questionnaires:
         return None
     return [h.id for h in scenario.humans if h.teleoperated], names(web.questionnaires)
-
-
-def add_option(group: argparse._ArgumentGroup) -> None:
-    group.add_argument(
-        "--questionnaire",
-        nargs="+",
-        default=None,
-        metavar="SPEC",
-        help=f"after the trial, each teleoperated participant's page asks these questionnaires in order: registered ones ({', '.join(registered())}) "
-        "or YAML files of Likert items; haven run waits for the answers (or the console's Skip questionnaires, or Ctrl-C)",
-    )
 
 
 def spec(text: str) -> str | dict[str, Any]:

@@ -1,6 +1,6 @@
 """`haven study run`: one participant's trials in order, each into its own trial folder.
 
-Each trial is a recorded trial as `haven run` makes it (tools/recorded_trial.py, called here: its
+Each trial is a recorded trial as `haven run` makes it (conduct/recorded_trial.py, called here: its
 nodes are this process's children; with `--web` the participant plays in the browser and answers
 the study's questionnaires after it), or with `--batch` a batch trial. A stop signal (Ctrl-C) ends
 the current trial cleanly (its session folder says "interrupted") and stops the study; the nodes
@@ -12,28 +12,26 @@ a second `haven study run` for them says who holds it and exits.
 
 from __future__ import annotations
 
-import argparse
 import sys
-from dataclasses import dataclass, fields
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.conduct.instruments import ask_in_browser, order_key, run_instruments, say_declined, terminal_asker
+from haven_scenarios.conduct.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
 from haven_scenarios.record.participants import InstrumentBook
+from haven_scenarios.record.progress import TrialProgress, attempts, bind, progress, questionnaire_specs, trial_dir
+from haven_scenarios.run.domains import DomainRange
+from haven_scenarios.run.locks import FileLock, Locked
 from haven_scenarios.run.session_batch import run_batch_session
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
+from haven_scenarios.study.names import study_dir
 from haven_scenarios.study.participants import in_session
-from haven_scenarios.study.progress import TrialProgress, attempts, bind, progress, questionnaire_specs, trial_dir
+from haven_scenarios.study.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.study.protocol import Study, StudyError, load_study
 from haven_scenarios.study.questionnaires import Questionnaire
 from haven_scenarios.study.scenario import ScenarioError, load_scenario
 from haven_scenarios.study.schedule import PlannedTrial
-from haven_scenarios.tools.commands.common import fail
-from haven_scenarios.tools.commands.study import study_dir
-from haven_scenarios.tools.commands.study_instruments import ask_in_browser, order_key, run_instruments, say_declined, terminal_asker
-from haven_scenarios.tools.domains import DomainRange
-from haven_scenarios.tools.locks import FileLock, Locked
-from haven_scenarios.tools.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
-from haven_scenarios.web.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_sim.common.params import ParamsError
 from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.runtime.process import interrupted, on_stop_signals
@@ -65,12 +63,6 @@ class StudyRun:
     domain_id: int | None = None
     domains: DomainRange | None = None  # the lab's ROS domains (None: $HAVEN_DOMAINS, if set)
     network: bool = False
-
-    @staticmethod
-    def of(args: argparse.Namespace) -> StudyRun:
-        values = {f.name: getattr(args, f.name) for f in fields(StudyRun)}
-        values["teleop"] = tuple(args.teleop) if args.teleop is not None else None
-        return StudyRun(**values)
 
 
 def study_extra(study: str, trial: PlannedTrial) -> dict[str, Any]:
@@ -168,17 +160,6 @@ def _check(args: StudyRun, study: Study) -> str | None:
             if any(h.teleoperated for h in load_scenario(s).humans):
                 return f"--batch: scenario {s} has a teleoperated participant (run it without --batch)"
     return None
-
-
-def run_cmd(args: argparse.Namespace) -> int:
-    """Every stop signal is a Ctrl-C here (`interrupted`), between trials too: the command ends
-    within a moment, its files whole, exit code 130 (a recorded trial installs its own handlers
-    while it runs, which stop its nodes in order)."""
-    try:
-        with on_stop_signals(interrupted):
-            return run_participant(StudyRun.of(args))
-    except TrialError as e:
-        return fail(str(e))
 
 
 def run_participant(args: StudyRun) -> int:
