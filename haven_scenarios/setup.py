@@ -55,9 +55,9 @@ setup(
         ],
         # The plugin kinds this package owns: what an item of each must be (haven_sim/common/plugins.py).
         "haven.kinds": [
-            "participants = haven_scenarios.study.participants:accept_plugin",
+            "participants = haven_scenarios.study.participant_kind:accept_plugin",
             "questionnaires = haven_scenarios.study.questionnaires:accept_plugin",
-            "metrics = haven_scenarios.record.metrics:accept_plugin",
+            "metrics = haven_scenarios.record.metric_kind:accept_plugin",
             "missions = haven_scenarios.study.mission_orders:accept_plugin",
         ],
         # HAVEN's own plugins, registered as a lab's package registers its own (haven_sim/common/plugins.py)

@@ -9,7 +9,7 @@ import sys
 import pytest
 
 from haven_sim.robots.fields import DEFAULT
-from haven_viz.cues import CUE_CLASSES, cues_for
+from haven_viz.cues import CUE_SPECS, cues_for
 
 pytestmark = pytest.mark.integration
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
@@ -24,7 +24,7 @@ def test_a_sweep_over_every_cue_condition_reports_each_conditions_exposure(tmp_p
     rows = {row["condition"]: row for row in csv.DictReader(out.open())}
     assert set(rows) == {"none", *cues}
     for condition, row in rows.items():
-        shown = {c for c in cues if float(row[CUE_CLASSES[c].exposure]) > 0}
+        shown = {c for c in cues if float(row[CUE_SPECS[c].exposure]) > 0}
         assert shown == ({condition} - {"none"}), (condition, shown)
         assert row["end_reason"] == "completed" and int(row["human_contacts"]) == 0
     said = {line.split("condition ")[1].split(",")[0]: line for line in r.stderr.splitlines() + r.stdout.splitlines() if "condition " in line}

@@ -10,8 +10,9 @@ from test_metrics import drive, events, stand
 
 from haven_scenarios.record import hunav
 from haven_scenarios.record.hunav import Samples, columns, sample
+from haven_scenarios.record.metric_kind import compute
 from haven_scenarios.record.metric_table import HUNAV_METRICS, documented
-from haven_scenarios.record.metrics import _heading_change, compute
+from haven_scenarios.record.metrics import _heading_change
 from haven_scenarios.record.timeline import Recording
 from haven_sim.common import topics
 from haven_sim.common.bodies import HUMAN_BODY

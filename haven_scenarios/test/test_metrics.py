@@ -7,8 +7,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from haven_scenarios.record.metric_kind import compute
 from haven_scenarios.record.metric_table import METRICS, documented, markdown
-from haven_scenarios.record.metrics import compute, signal_lead_times
+from haven_scenarios.record.metrics import signal_lead_times
 from haven_scenarios.record.outsiders import Declared, PublisherLog, open_topics
 from haven_scenarios.record.timeline import Recording
 from haven_scenarios.record.validity import _stream
@@ -330,7 +331,7 @@ def test_a_metric_plugin_adds_its_columns_and_a_failing_one_says_why_in_its_own(
     def broken(d):
         raise RuntimeError("no data\nmore")
 
-    ours = [Entry(p.name, p.target, p.package, p.value) for p in plugins.registry("metrics") if p.package == "haven_scenarios"]
+    ours = [Entry(p.name, p.target, p.package, p.value.compute) for p in plugins.registry("metrics") if p.package == "haven_scenarios"]
     lab = plugins.load(
         "metrics",
         [

@@ -6,7 +6,8 @@ from pathlib import Path
 import pytest
 import yaml
 
-from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, make_walker, shuffled_nearest
+from haven_scenarios.study.participant_kind import make_walker
+from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, shuffled_nearest
 from haven_scenarios.study.perception import Sight, perceive
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.planner import GridPlanner

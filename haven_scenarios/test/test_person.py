@@ -7,7 +7,8 @@ from dataclasses import replace
 import pytest
 
 from haven_scenarios.record.hesitation import SLOW_FRACTION
-from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, in_session, make_walker
+from haven_scenarios.study.participant_kind import make_walker
+from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, in_session
 from haven_scenarios.study.perception import Percept
 from haven_scenarios.study.person import HESITATE_LIMITS, NEW_PERSON, PersonParams, individual
 from haven_scenarios.study.scenario import load_scenario

@@ -177,8 +177,10 @@ def test_free_running_recordings_are_complete_and_score_independently(ros, tmp_p
     # When the trial ran by the wall clock, to align it with other recordings of the study.
     start, end = (datetime.fromisoformat(session["wall_clock"][k]).timestamp() for k in ("trial_start", "trial_end"))
     assert before < start < end < time.time()
-    if rtf == "1":
-        assert end - start == pytest.approx(session["duration_s"], abs=0.5)
+    if rtf == "1":  # real time, unless the machine was too busy for it: then the clock was held, and says so
+        held = [e for e in map(json.loads, (folder / "events.jsonl").read_text().splitlines()) if e["type"] == "clock_held"]
+        assert end - start > session["duration_s"] - 0.5
+        assert held or end - start == pytest.approx(session["duration_s"], abs=0.5), (end - start, session["duration_s"])
 
 
 def test_ctrl_c_mid_trial_leaves_a_readable_bag(ros, tmp_path):

@@ -5,7 +5,8 @@ import math
 
 import numpy as np
 
-from haven_scenarios.study.participants import HUMAN_PLANNER, Stop, make_walker
+from haven_scenarios.study.participant_kind import make_walker
+from haven_scenarios.study.participants import HUMAN_PLANNER, Stop
 from haven_scenarios.study.perception import Sight, perceive
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
 from haven_sim.common.bodies import HUMAN_BODY

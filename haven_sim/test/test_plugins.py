@@ -40,3 +40,26 @@ def test_a_broken_plugin_is_one_line_and_the_others_still_work():
         reg.get("sly")
     with pytest.raises(plugins.PluginError, match="unknown plugin kind"):
         plugins.load("gadgets", [])
+
+
+class Later(Model):
+    haven_plugin_api = plugins.PLUGIN_API + 1  # written for a plugin API this HAVEN does not have yet
+
+
+class Today(Model):
+    haven_plugin_api = plugins.PLUGIN_API
+
+
+def test_a_plugin_written_for_a_newer_plugin_api_is_left_out_saying_so():
+    reg = plugins.load(
+        "participants",
+        [
+            Entry("later", "lab.people:Later", "lab_people", Later),
+            Entry("today", "lab.people:Today", "lab_people", Today),
+            Entry("odd", "lab.people:Odd", "lab_people", type("Odd", (Model,), {"haven_plugin_api": "1"})),
+        ],
+    )
+    assert reg.names() == ["today"]
+    now, later = plugins.PLUGIN_API, plugins.PLUGIN_API + 1
+    assert reg.left_out["later"] == f"written for HAVEN's plugin API {later}; this HAVEN has version {now} (upgrade HAVEN, or the plugin)"
+    assert "plugin API 1;" in reg.left_out["odd"]  # (a version is a whole number)

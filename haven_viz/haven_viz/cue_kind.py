@@ -32,9 +32,9 @@ it shows the robot's way ahead (`way`, nearest the robot first) and whether it i
 from __future__ import annotations
 
 import inspect
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Any, Protocol, cast
 
 from haven_sim.common.geometry import FloatArray, Point, Pose2D
 from haven_sim.common.paths import SegmentKind, read_path
@@ -156,46 +156,55 @@ class Shown:
 
 
 class Cue(Protocol):
-    key: str
-    hidden: Any
-    exposure: str
-    rank: int
-    kinematics: tuple[str, ...]
-    default_on: bool
+    """A cue's object, made per robot from its class: what it shows now (None: nothing)."""
 
     def show(self, ctx: CueContext, markers: bool) -> Shown | None: ...
+
+
+@dataclass(frozen=True)
+class CueSpec:
+    """A registered cue: its class and what the class declares, read once with the defaults (the
+    lab's class itself is never changed)."""
+
+    name: str
+    make: Callable[[Any], Cue]  # the class, called with the shared CueParams
+    key: str  # its key in /haven/cue_state
+    hidden: Any  # its value there while it shows nothing
+    exposure: str  # its exposure metric
+    rank: int  # where it comes among the cues
+    kinematics: tuple[str, ...]  # the robot kinds it serves
+    default_on: bool  # on in condition `all`
 
 
 KINDS: tuple[str, ...] = tuple(k.value for k in Kinematics)
 
 
-def serves(cue: type[Any], kind: Kinematics | str) -> bool:
-    """Whether a cue class serves a robot of this kind."""
-    return Kinematics(kind).value in getattr(cue, "kinematics", KINDS)
+def serves(cue: CueSpec, kind: Kinematics | str) -> bool:
+    """Whether a cue serves a robot of this kind."""
+    return Kinematics(kind).value in cue.kinematics
 
 
-def accept_plugin(name: str, value: Any) -> Any:
+def accept_plugin(name: str, value: Any) -> CueSpec:
     """A `haven.cues` plugin: a class taking `(params: CueParams)` whose objects `show(ctx, markers)`;
-    `key`, `hidden`, `exposure`, `rank`, `kinematics` and `default_on` default to the name, None,
+    its `key`, `hidden`, `exposure`, `rank`, `kinematics` and `default_on` default to the name, None,
     `<name>_shown_s`, 100, every kind and True."""
     if not inspect.isclass(value) or not callable(getattr(value, "show", None)):
         raise ValueError("is not a cue: a class taking (params) with a show(ctx, markers) method")
-    for attr, default in (
-        ("key", name),
-        ("hidden", None),
-        ("exposure", f"{name}_shown_s"),
-        ("rank", 100),
-        ("kinematics", KINDS),
-        ("default_on", True),
-    ):
-        if not hasattr(value, attr):
-            setattr(value, attr, default)
-    kinds = getattr(value, "kinematics")
+    spec = CueSpec(
+        name,
+        cast(Callable[[Any], Cue], value),
+        key=getattr(value, "key", name),
+        hidden=getattr(value, "hidden", None),
+        exposure=getattr(value, "exposure", f"{name}_shown_s"),
+        rank=getattr(value, "rank", 100),
+        kinematics=getattr(value, "kinematics", KINDS),
+        default_on=getattr(value, "default_on", True),
+    )
+    kinds = spec.kinematics
     if isinstance(kinds, str) or not isinstance(kinds, tuple) or not kinds or any(k not in KINDS for k in kinds):
         raise ValueError(f"is not a cue: its kinematics must be a tuple of robot kinds ({', '.join(KINDS)}), got {str(kinds)[:50]}")
-    key, exposure, rank = getattr(value, "key"), getattr(value, "exposure"), getattr(value, "rank")
-    if not isinstance(getattr(value, "default_on"), bool):
+    if not isinstance(spec.default_on, bool):
         raise ValueError("is not a cue: its default_on must be true or false")
-    if not isinstance(key, str) or not key or not isinstance(exposure, str) or not isinstance(rank, int):
+    if not isinstance(spec.key, str) or not spec.key or not isinstance(spec.exposure, str) or not isinstance(spec.rank, int):
         raise ValueError("is not a cue: its key and exposure must be names, its rank a whole number")
-    return value
+    return spec

@@ -35,7 +35,7 @@ from haven_viz.builtin_cues import (
     TurnSignals,
     battery_color,
 )
-from haven_viz.cue_kind import NO_MANOEUVRE, Cue, CueContext, TrackedPath, serves
+from haven_viz.cue_kind import NO_MANOEUVRE, Cue, CueContext, CueSpec, TrackedPath, serves
 from haven_viz.markers import MarkerSpec
 
 __all__ = ["BATTERY_NS", "CUES", "PATH_NS", "SCHEMES", "SIGNAL_NS", "THOUGHT_NS", "ArCues", "CueParams", "CueState", "Toggles", "battery_color"]
@@ -44,10 +44,10 @@ RESERVED_KEYS = frozenset({"stamp", "toggles"})
 CASTS: dict[str, Any] = {"path_markers": int, "turn_signal": int, "thought": str, "battery_level": float}
 
 
-def cue_classes(reg: plugins.Registry) -> dict[str, type[Any]]:
-    """name -> class of every cue in the registry, by rank (HAVEN's four: 0 to 3); a cue whose state
+def cue_specs(reg: plugins.Registry) -> dict[str, CueSpec]:
+    """name -> spec of every cue in the registry, by rank (HAVEN's four: 0 to 3); a cue whose state
     key another cue already has is left out, with one line in the registry's problems."""
-    out: dict[str, type[Any]] = {}
+    out: dict[str, CueSpec] = {}
     keys: dict[str, str] = {}
     for name, item in sorted(reg.items.items(), key=lambda kv: kv[1].value.rank):  # (stable: ours first, then by name)
         key = item.value.key
@@ -62,14 +62,14 @@ def cue_classes(reg: plugins.Registry) -> dict[str, type[Any]]:
     return out
 
 
-CUE_CLASSES = cue_classes(plugins.registry("cues"))
-CUES: tuple[str, ...] = tuple(CUE_CLASSES)
-DEFAULT_ON: tuple[str, ...] = tuple(c for c in CUES if CUE_CLASSES[c].default_on)  # condition `all` (library cues are named)
+CUE_SPECS = cue_specs(plugins.registry("cues"))
+CUES: tuple[str, ...] = tuple(CUE_SPECS)
+DEFAULT_ON: tuple[str, ...] = tuple(c for c in CUES if CUE_SPECS[c].default_on)  # condition `all` (library cues are named)
 
 
 def cues_for(kind: Kinematics | str) -> tuple[str, ...]:
     """The registered cues a robot of this kind has, in order."""
-    return tuple(c for c in CUES if serves(CUE_CLASSES[c], kind))
+    return tuple(c for c in CUES if serves(CUE_SPECS[c], kind))
 
 
 def unknown_cue(name: object) -> str:
@@ -87,9 +87,9 @@ def unfit(on: Sequence[str], robot: RobotDescription) -> str | None:
     if tuple(on) == DEFAULT_ON:
         return None
     for name in on:
-        cls = CUE_CLASSES[name]
-        if not serves(cls, robot.kinematics):
-            return f"cue {name} does not fit robot {robot.name} ({robot.kinematics.value}): it serves {', '.join(cls.kinematics)} robots"
+        spec = CUE_SPECS[name]
+        if not serves(spec, robot.kinematics):
+            return f"cue {name} does not fit robot {robot.name} ({robot.kinematics.value}): it serves {', '.join(spec.kinematics)} robots"
     return None
 
 
@@ -117,7 +117,7 @@ class CueToggles:
 
 Toggles: type[CueToggles] = dataclasses.make_dataclass(
     "Toggles",
-    [(c, bool, param(CUE_CLASSES[c].default_on, "cue toggle (study condition), settable at run time")) for c in CUES],
+    [(c, bool, param(CUE_SPECS[c].default_on, "cue toggle (study condition), settable at run time")) for c in CUES],
     bases=(CueToggles,),
     frozen=True,
     module=__name__,
@@ -134,16 +134,16 @@ class CueState:
     cues: tuple[str, ...] = CUES  # the cues the robot has
 
     def __post_init__(self) -> None:  # every cue's value, hidden ones too (so equal states compare equal)
-        classes = [CUE_CLASSES[c] for c in self.cues if c in CUE_CLASSES]
-        object.__setattr__(self, "values", {cls.key: self.values.get(cls.key, cls.hidden) for cls in classes})
+        specs = [CUE_SPECS[c] for c in self.cues if c in CUE_SPECS]
+        object.__setattr__(self, "values", {spec.key: self.values.get(spec.key, spec.hidden) for spec in specs})
 
     def value(self, cue: str) -> Any:
-        cls = CUE_CLASSES[cue]
-        return self.values.get(cls.key, cls.hidden)
+        spec = CUE_SPECS[cue]
+        return self.values.get(spec.key, spec.hidden)
 
     def shown(self, cue: str) -> bool:
         """The cue shows something now."""
-        return bool(self.value(cue) != CUE_CLASSES[cue].hidden)
+        return bool(self.value(cue) != CUE_SPECS[cue].hidden)
 
     @property
     def path_markers(self) -> int:
@@ -175,8 +175,8 @@ class CueState:
                 raise ValueError(f"{len(text)} characters")
             d = json.loads(text)
             toggles = Toggles(**{k: bool(v) for k, v in d["toggles"].items() if k in CUES})
-            cues = tuple(c for c in CUE_CLASSES if CUE_CLASSES[c].key in d)  # (the robot's: each has its value, hidden or not)
-            values = {CUE_CLASSES[c].key: d[CUE_CLASSES[c].key] for c in cues}
+            cues = tuple(c for c in CUE_SPECS if CUE_SPECS[c].key in d)  # (the robot's: each has its value, hidden or not)
+            values = {CUE_SPECS[c].key: d[CUE_SPECS[c].key] for c in cues}
             for key, cast in CASTS.items():  # (HAVEN's values, checked; a lab's cue's are its JSON)
                 if values.get(key) is not None:
                     values[key] = cast(values[key])
@@ -203,12 +203,12 @@ class ArCues:
         self.robot = robot
         self.failed: dict[str, str] = {}  # cue -> its error, for a cue whose code raised (it shows nothing from then on)
         self.cues: dict[str, Cue] = {}
-        self.names = tuple(n for n in (CUES if names is None else names) if n not in CUE_CLASSES or serves(CUE_CLASSES[n], robot.kinematics))
+        self.names = tuple(n for n in (CUES if names is None else names) if n not in CUE_SPECS or serves(CUE_SPECS[n], robot.kinematics))
         flight = robot.flight
         self.flight_z_m = flight.cruise_height_m if flight is not None and robot.kinematics is Kinematics.AERIAL else 0.0
         for n in self.names:
             try:
-                self.cues[n] = contain.call("cues", n, CUE_CLASSES[n], self.params)
+                self.cues[n] = contain.call("cues", n, CUE_SPECS[n].make, self.params)
             except contain.PluginFailed as e:
                 self.failed[n] = e.error
         self.set_path([])
@@ -266,7 +266,7 @@ class ArCues:
                 continue
             if shown is None:
                 continue
-            values[cue.key] = shown.value
+            values[CUE_SPECS[name].key] = shown.value
             out += shown.markers
             if shown.way:
                 ways[name] = (shown.way, shown.on_robot)

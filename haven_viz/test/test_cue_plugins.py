@@ -10,7 +10,7 @@ from fake_plugins import Entry
 from haven_sim.common import plugins
 from haven_sim.common.geometry import Pose2D
 from haven_viz.cue_kind import CueContext, Shown, accept_plugin
-from haven_viz.cues import CUE_CLASSES, CUES, ArCues, CueParams, CueState, CueToggles, cue_classes
+from haven_viz.cues import CUE_SPECS, CUES, ArCues, CueParams, CueState, CueToggles, cue_specs
 from haven_viz.markers import MarkerSpec, Shape
 
 
@@ -40,15 +40,23 @@ def test_a_broken_or_clashing_cue_is_one_line_and_the_others_stay():
     reg = plugins.load(
         "cues",
         [
-            Entry("thought_bubble", "haven_viz.builtin_cues:ThoughtBubble", "haven_viz", CUE_CLASSES["thought_bubble"]),
+            Entry("thought_bubble", "haven_viz.builtin_cues:ThoughtBubble", "haven_viz", CUE_SPECS["thought_bubble"].make),
             Entry("beacon", "lab.cues:Beacon", "lab_cues", Beacon),
             Entry("thinks", "lab.cues:Thinks", "lab_cues", Thinks),
             Entry("text", "lab.cues:TEXT", "lab_cues", "not a class"),
         ],
     )
-    classes = cue_classes(reg)
-    assert list(classes) == ["thought_bubble", "beacon"]
-    assert (Beacon.key, Beacon.hidden, Beacon.exposure, Beacon.rank) == ("beacon", None, "beacon_shown_s", 100)  # (the defaults)
+    specs = cue_specs(reg)
+    assert list(specs) == ["thought_bubble", "beacon"]
+    beacon = specs["beacon"]
+    assert (beacon.key, beacon.hidden, beacon.exposure, beacon.rank, beacon.default_on) == (
+        "beacon",
+        None,
+        "beacon_shown_s",
+        100,
+        True,
+    )  # (the defaults)
+    assert not hasattr(Beacon, "key") and beacon.make is Beacon  # (read, never written onto the lab's class)
     said = "\n".join(reg.problems)
     assert len(reg.problems) == 2 and "haven.cues text (lab.cues:TEXT, from lab_cues): is not a cue" in said
     assert "haven.cues thinks (lab.cues:Thinks, from lab_cues): its state key 'thought' is taken by cue thought_bubble" in said
@@ -58,7 +66,7 @@ def test_a_broken_or_clashing_cue_is_one_line_and_the_others_stay():
 def test_a_labs_cue_is_drawn_said_and_read_back_like_havens(monkeypatch):
     import haven_viz.cues as cues
 
-    monkeypatch.setitem(cues.CUE_CLASSES, "beacon", accept_plugin("beacon", Beacon))  # (as if installed)
+    monkeypatch.setitem(cues.CUE_SPECS, "beacon", accept_plugin("beacon", Beacon))  # (as if installed)
     both = dataclasses.make_dataclass("Both", [("path_projection", bool, True), ("beacon", bool, True)], bases=(CueToggles,), frozen=True)
     arcues = ArCues(CueParams(), names=["path_projection", "beacon"])
     arcues.set_path([Pose2D(0.0, 0.0, 0.0), Pose2D(2.0, 0.0, 0.0)])
@@ -87,7 +95,7 @@ def test_a_cue_that_raises_shows_nothing_from_then_on_and_is_said_once(monkeypat
     from haven_sim.common.state import RobotState
     from haven_viz.viz import VizComponent
 
-    monkeypatch.setitem(cues.CUE_CLASSES, "flaky", accept_plugin("flaky", Flaky))
+    monkeypatch.setitem(cues.CUE_SPECS, "flaky", accept_plugin("flaky", Flaky))
     monkeypatch.setattr(cues, "CUES", (*cues.CUES, "flaky"))
     both = dataclasses.make_dataclass("Both", [("path_projection", bool, True), ("flaky", bool, True)], bases=(CueToggles,), frozen=True)
     viz = VizComponent()

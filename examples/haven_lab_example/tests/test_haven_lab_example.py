@@ -7,9 +7,10 @@ from haven_lab_example.near import seconds_near
 from haven_lab_example.people import HURRY, Hurried
 from haven_lab_example.trust import TRUST
 
-from haven_scenarios.record.metrics import accept_plugin as accept_metric
+from haven_scenarios.record.metric_kind import accept_plugin as accept_metric
 from haven_scenarios.run.trial import run_trial
-from haven_scenarios.study.participants import Walker, accept_plugin as accept_participant
+from haven_scenarios.study.participant_kind import accept_plugin as accept_participant
+from haven_scenarios.study.participants import Walker
 from haven_scenarios.study.questionnaires import accept_plugin as accept_questionnaire
 from haven_scenarios.study.scenario import load_scenario
 from haven_sim.common.geometry import Pose2D
@@ -47,7 +48,7 @@ def test_the_metric_counts_time_near_the_robot_in_a_real_trial():
 
 
 def seconds_near_of(result):
-    from haven_scenarios.record.metrics import TrialData
+    from haven_scenarios.record.metric_kind import TrialData
     from haven_scenarios.record.timeline import Timeline
 
     t0, t1 = result.recording.window()

@@ -41,7 +41,7 @@ from haven_sim.common.geometry import FloatArray
 from haven_sim.robots.fields import DEFAULT
 
 if TYPE_CHECKING:
-    from haven_scenarios.record.metrics import TrialData
+    from haven_scenarios.record.metric_kind import TrialData
 
 # 20 Hz: the rate /humans is published at by default, so a sample holds a fresh person pose (and
 # the 50 Hz /odom); fixed, because per-sample counts (collisions) scale with the rate and /humans

@@ -146,7 +146,7 @@ HUNAV_METRICS: tuple[Row, ...] = (
 METRICS: tuple[Row, ...] = (
     ("scenario", "", "scenario name", OURS, ""),
     ("end_reason", "", "completed, timeout, contact, battery_empty, stopped / aborted (researcher), interrupted (Ctrl-C, no trial_end)", OURS, ""),
-    ("duration_s", "s", "trial_end - trial_start", OURS, f"{CODE}:compute"),
+    ("duration_s", "s", "trial_end - trial_start", OURS, "haven_scenarios/record/metric_kind.py:compute"),
     ("robot_time_to_finish_s", "s", "when the robot's task was done (task_done by robot)", OURS, f"{CODE}:_robot"),
     ("robot_path_length_m", "m", "length of the robot's track on the 0.02 s grid", cf("HuNavSim path_length"), f"{CODE}:_robot"),
     (
@@ -350,7 +350,7 @@ def plugin_rows() -> list[Row]:
     (name, unit, definition, source) rows: the formula is the plugin's), and of the installed cues' exposure."""
     from haven_sim.common import plugins  # (the registry loads the metrics module, which imports this one)
 
-    rows = [(*c, f"{p.package}:{p.name}") for p in plugins.registry("metrics") for c in getattr(p.value, "columns", ())]
+    rows = [(*c, f"{p.package}:{p.name}") for p in plugins.registry("metrics") for c in p.value.columns]
     ours = {m[0] for m in METRICS}
     cues = [p for p in plugins.registry("cues") if p.value.exposure not in ours]  # (a lab's cue's exposure column)
     return [r for r in rows if r[0] not in ours] + [

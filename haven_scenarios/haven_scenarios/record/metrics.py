@@ -9,29 +9,24 @@ trial_end]; HuNavSim's (`hunav`, record/hunav.py) on its own samples, as its eva
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, replace
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
 from haven_scenarios.record.contacts import PERSON_ON_ROBOT, ROBOT_ON_PERSON, attribute, episodes
 from haven_scenarios.record.hesitation import hesitations
+from haven_scenarios.record.metric_kind import TrialData, rounded
 from haven_scenarios.record.metric_table import ZONES
-from haven_scenarios.record.outsiders import Declared
 from haven_scenarios.record.timeline import Recording, Timeline
-from haven_scenarios.record.validity import check
 from haven_scenarios.study.participants import HUMAN_PLANNER
-from haven_sim.common import contain, plugins
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import FloatArray, wrap_angle
 from haven_sim.nav.planner import GridPlanner, PlanningError
-from haven_sim.robots.description import RobotDescription
-from haven_sim.robots.fields import DEFAULT
 from haven_sim.sim.occupancy import rasterise
 from haven_sim.sim.world import World
-from haven_viz.cues import CUE_CLASSES, cues_for
+from haven_viz.cues import CUE_SPECS, cues_for
 
 TURN_RATE_RPS = 0.3  # |angular velocity| above this is a turn
 # The robot is not moving: |v| and |w| below these (ours; HuNavSim's time_not_moving compares the
@@ -40,82 +35,8 @@ STILL_MPS, STILL_RPS = 0.01, 0.01
 PERSON_STILL_MPS = 0.05
 
 
-def _r(x: float | None, digits: int = 3) -> float | None:
-    return None if x is None or not math.isfinite(x) else round(float(x), digits)
-
-
 def _length(xy: FloatArray) -> float:
     return float(np.sum(np.hypot(*np.diff(xy, axis=0).T))) if len(xy) > 1 else 0.0
-
-
-@dataclass(frozen=True)
-class TrialData:
-    """What a metric reads: the trial on one time grid (`tl`, seconds since trial_start), its
-    events (stamps from trial_start too), the recording itself (header stamps), and the world."""
-
-    tl: Timeline
-    events: Sequence[Event]
-    rec: Recording
-    t0: float  # trial_start and trial_end, in the recording's stamps
-    t1: float
-    world: World | None
-    robot: RobotDescription = DEFAULT  # the robot of the trial (its footprint for distances and contacts)
-
-
-# The groups HAVEN ships (`hunav`: HuNavSim's evaluator), in metrics.json's order; each registered
-# as a plugin of kind `metrics` (setup.py), as a lab's own metric is: a function of TrialData giving
-# its columns. A lab's follow in name order.
-OURS = ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people", "hunav")
-
-
-def accept_plugin(name: str, value: Any) -> Any:
-    """A `haven.metrics` plugin (haven_sim/common/plugins.py): a function of TrialData returning a
-    mapping of column -> value; its `columns` attribute, if any, documents them in the codebook as
-    (name, unit, definition, source) rows."""
-    if not callable(value):
-        raise ValueError("is not a metric: a function taking TrialData and returning {column: value}")
-    columns = getattr(value, "columns", ())
-    if not all(isinstance(c, tuple) and len(c) == 4 and all(isinstance(x, str) for x in c) for c in columns):
-        raise ValueError("columns: must be (name, unit, definition, source) rows of text")
-    return value
-
-
-def compute(
-    rec: Recording,
-    scenario: str = "",
-    end_reason: str = "",
-    world: World | None = None,
-    declared: Declared | None = None,
-    robot: RobotDescription = DEFAULT,
-) -> dict[str, Any]:
-    """`declared`: what a recorded run said of itself, for its validity (record/validity.py)."""
-    window = rec.window()
-    m: dict[str, Any] = {"scenario": scenario, "end_reason": end_reason}
-    if window is None:
-        return {**m, "duration_s": None, **check(rec, None, declared)}
-    t0, t1 = window
-    tl = Timeline.of(rec, t0, t1)
-    events = sorted((replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp)
-    m["duration_s"], data = _r(t1 - t0, 2), TrialData(tl, events, rec, t0, t1, world, robot)
-    failed: list[str] = []
-    registered = plugins.registry("metrics")
-    for name in (*OURS, *(n for n in registered.names() if n not in OURS)):
-        m.update(_one(name, registered.get(name), data, m, failed))
-    m.update(check(rec, window, declared))
-    m.update(valid=m["valid"] and not failed, invalid_reasons=[*m["invalid_reasons"], *failed])  # (as for any plugin that failed)
-    return m
-
-
-def _one(name: str, metric: Any, data: TrialData, have: Mapping[str, Any], failed: list[str]) -> dict[str, Any]:
-    """One metric plugin's columns, called as every plugin is (common/contain.py); one that fails (its
-    reason in `failed`) or would overwrite a column gets a `<name>_error` column instead: the others stand."""
-    try:
-        got = dict(contain.call("metrics", name, metric, data))
-    except contain.PluginFailed as e:
-        failed.append(e.reason)
-        return {f"{name}_error": e.error}
-    taken = sorted(k for k in got if k in have)
-    return {f"{name}_error": f"would overwrite {', '.join(taken[:3])}"} if taken else got
 
 
 def robot(d: TrialData) -> dict[str, Any]:
@@ -169,15 +90,15 @@ def _robot(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
     jerk = np.diff(accel) / step[1:] if len(accel) > 1 else np.zeros(0)
     still = (np.abs(v) < STILL_MPS) & (np.abs(w) < STILL_RPS)
     return {
-        "robot_time_to_finish_s": _r(_first(events, EventKind.TASK_DONE, by="robot"), 2),
-        "robot_path_length_m": _r(_length(tl.robot_xy)),
-        "robot_time_not_moving_s": _r(float(np.sum(dt[still])), 2),
-        "robot_speed_mean_mps": _r(float(np.mean(np.abs(v))) if len(v) else None),
-        "robot_speed_max_mps": _r(float(np.max(np.abs(v))) if len(v) else None),
-        "robot_accel_mean_mps2": _r(float(np.mean(np.abs(accel))) if len(accel) else None),
-        "robot_accel_max_mps2": _r(float(np.max(np.abs(accel))) if len(accel) else None),
-        "robot_jerk_mean_mps3": _r(float(np.mean(np.abs(jerk))) if len(jerk) else None, 2),
-        "cumulative_heading_change_rad": _r(_heading_change(tl.robot_yaw)),
+        "robot_time_to_finish_s": rounded(_first(events, EventKind.TASK_DONE, by="robot"), 2),
+        "robot_path_length_m": rounded(_length(tl.robot_xy)),
+        "robot_time_not_moving_s": rounded(float(np.sum(dt[still])), 2),
+        "robot_speed_mean_mps": rounded(float(np.mean(np.abs(v))) if len(v) else None),
+        "robot_speed_max_mps": rounded(float(np.max(np.abs(v))) if len(v) else None),
+        "robot_accel_mean_mps2": rounded(float(np.mean(np.abs(accel))) if len(accel) else None),
+        "robot_accel_max_mps2": rounded(float(np.max(np.abs(accel))) if len(accel) else None),
+        "robot_jerk_mean_mps3": rounded(float(np.mean(np.abs(jerk))) if len(jerk) else None, 2),
+        "cumulative_heading_change_rad": rounded(_heading_change(tl.robot_yaw)),
     }
 
 
@@ -213,12 +134,12 @@ def _navigation(tl: Timeline, events: Sequence[Event], rec: Recording, t0: float
     turning = _heading_change(tl.robot_yaw)
     return {
         "waits": len(waits),
-        "wait_time_s": _r(sum(b - a for a, b in waits), 2),
+        "wait_time_s": rounded(sum(b - a for a, b in waits), 2),
         "replans": _count(events, EventKind.REPLANNED),
         "reverts": _count(events, EventKind.REVERTED),
         "plans_refused": _count(events, EventKind.PLAN_REFUSED),
-        "path_efficiency": _r(planned / driven if driven > 0 else None),
-        "path_irregularity_rad": _r(turning - plan_turning if made else None),
+        "path_efficiency": rounded(planned / driven if driven > 0 else None),
+        "path_irregularity_rad": rounded(turning - plan_turning if made else None),
     }
 
 
@@ -239,12 +160,12 @@ def _proximity(tl: Timeline, robot_radius_m: float) -> dict[str, Any]:
         "public": (ZONES["social"], math.inf),
     }
     out: dict[str, Any] = {
-        "min_human_centre_distance_m": _r(float(np.nanmin(closest))),
-        "min_human_surface_distance_m": _r(float(np.nanmin(closest)) - robot_radius_m - HUMAN_BODY.radius_m),
-        "avg_closest_human_centre_distance_m": _r(float(np.nanmean(closest))),
+        "min_human_centre_distance_m": rounded(float(np.nanmin(closest))),
+        "min_human_surface_distance_m": rounded(float(np.nanmin(closest)) - robot_radius_m - HUMAN_BODY.radius_m),
+        "avg_closest_human_centre_distance_m": rounded(float(np.nanmean(closest))),
     }
     for name, (lo, hi) in bands.items():
-        out[f"closest_{name}_centre_pct"] = _r(100.0 * float(np.sum(tl.dt[(closest >= lo) & (closest < hi)])) / total, 1)
+        out[f"closest_{name}_centre_pct"] = rounded(100.0 * float(np.sum(tl.dt[(closest >= lo) & (closest < hi)])) / total, 1)
     return out
 
 
@@ -269,8 +190,8 @@ def _mission(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
     levels = tl.battery[np.isfinite(tl.battery)]
     collected = [e for e in events if e.kind is EventKind.GEM_COLLECTED]
     return {
-        "battery_used": _r(float(np.sum(np.clip(-np.diff(levels), 0, None))), 4) if len(levels) > 1 else 0.0,
-        "battery_final": _r(float(levels[-1]), 4) if len(levels) else None,
+        "battery_used": rounded(float(np.sum(np.clip(-np.diff(levels), 0, None))), 4) if len(levels) > 1 else 0.0,
+        "battery_final": rounded(float(levels[-1]), 4) if len(levels) else None,
         "charge_trips": _count(events, EventKind.CHARGE_TRIP),
         "gems_robot": sum(1 for e in collected if e["by"] == "robot"),
         "gems_human": sum(1 for e in collected if e["by"] != "robot"),
@@ -280,7 +201,7 @@ def _mission(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
 
 def _exposure(tl: Timeline, names: Sequence[str], sel: Any = slice(None)) -> dict[str, float]:
     dt, cues = tl.dt[sel], tl.cues[sel] if isinstance(sel, slice) else [c for c, keep in zip(tl.cues, sel) if keep]
-    shown = {CUE_CLASSES[name].exposure: [c.shown(name) for c in cues] for name in names}  # every registered cue the robot has
+    shown = {CUE_SPECS[name].exposure: [c.shown(name) for c in cues] for name in names}  # every registered cue the robot has
     return {k: round(float(np.sum(dt[np.asarray(v, dtype=bool)])), 2) for k, v in shown.items()}
 
 
@@ -330,14 +251,15 @@ def _passes(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
     return {
         "passes": len(passes),
         "passes_signalled": sum(1 for x in leads if x > 0),
-        "pass_signal_lead_s_median": _r(float(np.median(leads)) if leads else None),
+        "pass_signal_lead_s_median": rounded(float(np.median(leads)) if leads else None),
     }
 
 
 def _cues(tl: Timeline, names: Sequence[str]) -> dict[str, Any]:
     out: dict[str, Any] = dict(_exposure(tl, names))
     leads = signal_lead_times(tl.t, tl.robot_w, [c.turn_signal for c in tl.cues])
-    out.update(turns=len(leads), turns_signalled=sum(1 for x in leads if x > 0), turn_signal_lead_s_mean=_r(float(np.mean(leads)) if leads else None))
+    mean = rounded(float(np.mean(leads))) if leads else None
+    out.update(turns=len(leads), turns_signalled=sum(1 for x in leads if x > 0), turn_signal_lead_s_mean=mean)
     segments, start = [], 0
     for i in range(1, len(tl.t) + 1):
         if i == len(tl.t) or tl.cues[i].toggles != tl.cues[start].toggles:
@@ -360,16 +282,16 @@ def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None
     done = _first(events, EventKind.TASK_DONE, by=hid)
     working = tl.t[:-1] < (done if done is not None else math.inf)  # standing counts until their task is done
     out: dict[str, Any] = {
-        f"{hid}_time_to_finish_s": _r(max([e.stamp for e in own], default=done) if done is not None else None, 2),
-        f"{hid}_path_length_m": _r(_length(xy)),
-        f"{hid}_time_not_moving_s": _r(float(np.sum(dt[:-1][(speed < PERSON_STILL_MPS) & working])) if len(speed) else 0.0, 2),
-        f"{hid}_detour_m": _r(_detour(tl.t, xy, own, world)),
+        f"{hid}_time_to_finish_s": rounded(max([e.stamp for e in own], default=done) if done is not None else None, 2),
+        f"{hid}_path_length_m": rounded(_length(xy)),
+        f"{hid}_time_not_moving_s": rounded(float(np.sum(dt[:-1][(speed < PERSON_STILL_MPS) & working])) if len(speed) else 0.0, 2),
+        f"{hid}_detour_m": rounded(_detour(tl.t, xy, own, world)),
         f"{hid}_gems": sum(1 for e in own if e.kind is EventKind.GEM_COLLECTED),
-        f"{hid}_min_centre_distance_m": _r(float(np.min(d)) if len(d) else None),
+        f"{hid}_min_centre_distance_m": rounded(float(np.min(d)) if len(d) else None),
     }
     at = [min(int(np.searchsorted(tl.t, e.stamp - 1e-9)), len(xy) - 1) for e in own]
     count, seconds = hesitations(tl.t, xy, xy[at] if at else np.zeros((0, 2)), done)
-    out[f"{hid}_hesitations"], out[f"{hid}_hesitation_s"] = count, _r(seconds, 2)
+    out[f"{hid}_hesitations"], out[f"{hid}_hesitation_s"] = count, rounded(seconds, 2)
     previous = 0.0
     for zone, r in ZONES.items():
         inside = d < r

@@ -37,7 +37,7 @@ import yaml
 
 from haven_scenarios.record import recorder_stop
 from haven_scenarios.record.bag import read_recording, to_wall_time, wall_clock
-from haven_scenarios.record.metrics import compute
+from haven_scenarios.record.metric_kind import compute
 from haven_scenarios.record.outsiders import declared_of
 from haven_scenarios.record.timeline import GRID_S, Recording, Timeline
 from haven_scenarios.study.conditions import condition_name

@@ -22,7 +22,7 @@ from haven_scenarios.run.grid import TrialSpec
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.sweep import Row, run_rows
 from haven_scenarios.study.rules import EndReason
-from haven_viz.cues import CUE_CLASSES, CUES
+from haven_viz.cues import CUE_SPECS, CUES
 
 NOT_DESIGN = ("trial", "seed")  # design columns that do not make a group of the summary
 MAX_SUMMARY_LINES = 24
@@ -116,7 +116,7 @@ def _exposure(rows: Sequence[dict[str, Any]]) -> str:
     """How long each cue was shown, averaged over the trials (the cues shown at all)."""
     said = []
     for name in CUES:
-        values = [r.get(CUE_CLASSES[name].exposure) for r in rows]
+        values = [r.get(CUE_SPECS[name].exposure) for r in rows]
         mean = sum(v for v in values if isinstance(v, (int, float))) / len(values) if values else 0.0
         if mean > 0:
             said.append(f"{name} {mean:.1f} s")

@@ -14,7 +14,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
-from haven_scenarios.record.metrics import compute
+from haven_scenarios.record.metric_kind import compute
 from haven_scenarios.record.timeline import RECORDED, Recording
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.study.conditions import condition_name, parse_condition

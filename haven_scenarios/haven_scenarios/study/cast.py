@@ -4,7 +4,8 @@
 from __future__ import annotations
 
 from haven_scenarios.study.mission import Target
-from haven_scenarios.study.participants import HUMAN_PLANNER, Participant, Stop, make_walker, shuffled_nearest
+from haven_scenarios.study.participant_kind import make_walker
+from haven_scenarios.study.participants import HUMAN_PLANNER, Participant, Stop, shuffled_nearest
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.nav.planner import GridPlanner
 from haven_sim.sim.occupancy import OccupancyGridData

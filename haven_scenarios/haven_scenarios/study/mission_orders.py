@@ -22,7 +22,7 @@ from __future__ import annotations
 import inspect
 import random
 from collections.abc import Callable, Sequence
-from typing import Any, Protocol
+from typing import Any, Protocol, cast
 
 from haven_sim.common.geometry import Point, Pose2D
 
@@ -61,8 +61,11 @@ class Random(Fixed):
         return out
 
 
-def accept_plugin(name: str, value: Any) -> Any:
+MissionFactory = Callable[[], MissionBehaviour]  # a `haven.missions` plugin: the class
+
+
+def accept_plugin(name: str, value: Any) -> MissionFactory:
     """A `haven.missions` plugin: a class whose objects arrange(targets, seed) and pick(candidates, robot, path_length)."""
     if not inspect.isclass(value) or not all(callable(getattr(value, m, None)) for m in ("arrange", "pick")):
         raise ValueError("is not a mission behaviour: a class with arrange(targets, seed) and pick(candidates, robot, path_length)")
-    return value
+    return cast(MissionFactory, value)

@@ -22,19 +22,17 @@ the robot (that rule uses where the robot really is: a robot at arm's length is 
 
 from __future__ import annotations
 
-import inspect
 import math
 import random
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
-from typing import Any, Protocol
+from typing import Protocol
 
 from haven_scenarios.study.anticipation import DelayLine, Seen, hesitant, intent_ways, keep_clear, waits_for_me
 from haven_scenarios.study.perception import Percept, ahead_of
 from haven_scenarios.study.person import PersonParams, individual
 from haven_scenarios.study.scenario import HumanTask, Scenario
 from haven_scenarios.study.social_force import Body, SocialForce, robot_body
-from haven_sim.common import contain, plugins
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import Point, Pose2D, Twist2D, wrap_angle
 from haven_sim.nav.planner import Planner, PlannerParams, PlanningError
@@ -356,32 +354,6 @@ class Yielder(Walker):
         room = self.planner.free_run((me.x, me.y), away, 1.0) - HUMAN_BODY.radius_m - 0.05  # to the wall, body and margin off
         step = min(0.4, max(0.0, 2.0 * room))
         return (away[0] * step, away[1] * step)
-
-
-def accept_plugin(name: str, value: Any) -> Any:
-    """A `haven.participants` plugin (haven_sim/common/plugins.py): a class or factory."""
-    wanted = "a class or function taking (human_id, stops, planner, speed_mps, seed, params)"
-    if not callable(value):
-        raise ValueError(f"is not a participant model: {wanted}")
-    try:
-        inspect.signature(value).bind("h1", [], None, 1.0, 0, None)
-    except TypeError as e:
-        raise ValueError(f"is not a participant model: {wanted} ({e})") from None
-    except ValueError:  # (no signature to read: a builtin; it is tried when a trial makes one)
-        pass
-    return value
-
-
-def make_walker(
-    model: str, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int, params: PersonParams | None = None
-) -> Participant:
-    """A simulated participant of the named model (the names a scenario file uses): a plugin of
-    kind `participants` (ours: walker, blocker and yielder, in setup.py), a class or factory that
-    takes these arguments and returns a `Participant`. One that raises or overruns its deadline:
-    `contain.PluginFailed` (its trial ends, not valid)."""
-    factory = plugins.registry("participants").get(model)
-    made: Participant = contain.call("participants", model, factory, human_id, stops, planner, speed_mps, seed, params or PersonParams())
-    return made
 
 
 def in_session(scenario: Scenario, person_seed: int, session_trial: int) -> Scenario:

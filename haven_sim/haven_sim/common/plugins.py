@@ -11,6 +11,12 @@ and every node look it up here, so both run the same code. A broken plugin (it d
 is not what its kind needs, its name is taken, its import outlasts `plugin_deadline_load_s`) is left
 out with one line naming it (`Registry.problems`, shown by `haven plugins`); it never breaks the
 others. Every call into a plugin's code during a trial is contained the same way (common/contain.py).
+
+Each kind's `accept_plugin` returns a typed item (a Protocol or a spec dataclass read from the
+plugin), never changing the plugin itself. A plugin may say which version of this API it was written
+for (`haven_plugin_api = 1`, an attribute of what its entry point names); one written for a newer
+version than this HAVEN's (`PLUGIN_API`) is left out, saying so. CONTRIBUTING.md says when the
+version changes and how long an old form keeps working.
 """
 
 from __future__ import annotations
@@ -24,6 +30,8 @@ from typing import Any
 
 from haven_sim.common import contain
 
+PLUGIN_API = 1  # the plugin API's version: a change that breaks a plugin written for it makes it 2
+API_ATTRIBUTE = "haven_plugin_api"  # where a plugin says the version it was written for (default: this one)
 GROUP_PREFIX = "haven."
 NAME = re.compile(r"^[a-z][a-z0-9_]{0,39}$")  # what a scenario or study file can write unquoted
 
@@ -122,6 +130,9 @@ def _take(entry: importlib.metadata.EntryPoint, reg: Registry, accept: Callable[
         value = contain.call("load", entry.name, entry.load)
     except contain.PluginFailed as e:
         return f"does not load: {e.error}"
+    wanted = getattr(value, API_ATTRIBUTE, PLUGIN_API)
+    if not isinstance(wanted, int) or isinstance(wanted, bool) or not 1 <= wanted <= PLUGIN_API:
+        return f"written for HAVEN's plugin API {str(wanted)[:20]}; this HAVEN has version {PLUGIN_API} (upgrade HAVEN, or the plugin)"
     try:
         value = accept(entry.name, value)
     except ValueError as e:

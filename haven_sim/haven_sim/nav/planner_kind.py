@@ -13,7 +13,7 @@ cues, the controller and the metrics work the same with any planner. HAVEN's `vi
 from __future__ import annotations
 
 import inspect
-from typing import Any, Protocol
+from typing import Any, Protocol, cast
 
 from haven_sim.common import contain, plugins
 from haven_sim.common.geometry import Point
@@ -26,11 +26,17 @@ class PathSearch(Protocol):
     def plan(self, start: Point, goal: Point) -> Plan: ...
 
 
-def accept_plugin(name: str, value: Any) -> Any:
+class PlannerFactory(Protocol):
+    """A `haven.planners` plugin: a class or function that makes a search on the occupancy grid."""
+
+    def __call__(self, grid: Any, params: Any) -> PathSearch: ...
+
+
+def accept_plugin(name: str, value: Any) -> PlannerFactory:
     """A `haven.planners` plugin: a class or factory taking (grid, params) whose objects plan(start, goal)."""
     if not callable(value) or (inspect.isclass(value) and not callable(getattr(value, "plan", None))):
         raise ValueError("is not a planner: a class taking (grid, params) with a plan(start, goal) method")
-    return value
+    return cast(PlannerFactory, value)
 
 
 def planner_class(name: str) -> Any:

@@ -37,7 +37,9 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
     validate.set_defaults(func=validate_cmd)
     said = "every registered plugin, one per line: KIND NAME PACKAGE; each one left out on stderr, and then exit code 1"
-    listing = sub.add_parser("plugins", help=said, description=said + " (docs: Your own plugins)")
+    listing = sub.add_parser(
+        "plugins", help=said, description=f"{said}. This HAVEN's plugin API is version {plugins.PLUGIN_API} (docs: Your own plugins)"
+    )
     listing.set_defaults(func=plugins_cmd)
     schema = sub.add_parser(
         "schema",
