@@ -4,6 +4,7 @@ docstrings (autodoc); the metric codebook from the metric table in the code."""
 
 from __future__ import annotations
 
+import importlib.metadata
 import sys
 from pathlib import Path
 
@@ -14,7 +15,7 @@ for package in ("haven_sim", "haven_viz", "haven_scenarios"):
 project = "HAVEN for ROS 2"
 author = "HAVEN maintainers"
 copyright = "2026, HAVEN maintainers (Apache-2.0)"
-release = "0.1.0"
+release = importlib.metadata.version("haven_scenarios")  # (package.xml, through setup.py)
 
 extensions = ["myst_parser", "sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.viewcode"]
 myst_enable_extensions = ["colon_fence", "deflist"]

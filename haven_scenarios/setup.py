@@ -1,12 +1,15 @@
+import xml.etree.ElementTree as ET
 from glob import glob
+from pathlib import Path
 
 from setuptools import find_packages, setup
 
 package_name = "haven_scenarios"
+VERSION = ET.parse(Path(__file__).with_name("package.xml")).getroot().findtext("version")  # (the one source: package.xml, as ROS tools bump it)
 
 setup(
     name=package_name,
-    version="0.1.0",
+    version=VERSION,
     packages=find_packages(exclude=["test"]),
     package_data={package_name: ["py.typed", "worlds/*.yaml", "scenarios/*.yaml", "studies/*.yaml", "web/static/*"]},
     data_files=[

@@ -1,3 +1,5 @@
 """HAVEN study scenarios, participants, sessions and the `haven` command."""
 
-__version__ = "0.1.0"
+from importlib.metadata import version as _version
+
+__version__ = _version("haven_scenarios")  # (from package.xml, through setup.py)

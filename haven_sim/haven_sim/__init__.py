@@ -1,3 +1,5 @@
 """HAVEN simulator core (rclpy-free) and its ROS 2 nodes (in `haven_sim.nodes`)."""
 
-__version__ = "0.1.0"
+from importlib.metadata import version as _version
+
+__version__ = _version("haven_sim")  # (from package.xml, through setup.py)

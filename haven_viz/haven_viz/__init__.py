@@ -1,4 +1,6 @@
 """HAVEN's AR cues as marker data (rclpy-free), the top-down renderer, and the visualization node
 (in `haven_viz.nodes`), with RViz and Foxglove configurations as package data."""
 
-__version__ = "0.1.0"
+from importlib.metadata import version as _version
+
+__version__ = _version("haven_viz")  # (from package.xml, through setup.py)
