@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -96,6 +97,7 @@ print("haven study: next: trial 1/1 t1: hallway, condition none (none), seed 0",
 try:
     time.sleep(120)
 except KeyboardInterrupt:
+    print(f"told at {time.monotonic()}", flush=True)  # (the machine's one monotonic clock)
     time.sleep(0.3)  # (ending its trial cleanly)
     sys.exit(130)
 """
@@ -103,11 +105,12 @@ except KeyboardInterrupt:
 
 def test_serve_stops_every_participants_runner_together_within_5_s(tmp_path):
     """Two participants' runners, one that takes a moment to end its trial and one that does not end:
-    stopped together, the server is done within 5 s; the one that hung is killed."""
+    both told at once, the server is done within 5 s; the one that hung is killed, the other ends
+    cleanly (unless the machine was so busy that it had not ended by the deadline either)."""
     from haven_scenarios.record.progress import bind
     from haven_scenarios.study.protocol import load_study
     from haven_scenarios.web.online_runner import Runner
-    from haven_scenarios.web.study_server import ServeOptions, StudyServer
+    from haven_scenarios.web.study_server import STOP_S, ServeOptions, StudyServer
 
     (tmp_path / "study.yaml").write_text(yaml.safe_dump(STUDY | {"participants": 2}))
     study = load_study(tmp_path / "study.yaml")
@@ -122,4 +125,7 @@ def test_serve_stops_every_participants_runner_together_within_5_s(tmp_path):
     server.stop()
     took = time.monotonic() - sent
     assert took < LIMIT_S
-    assert runners["p01"].code == 130 and runners["p02"].code == -signal.SIGKILL, (took, runners["p01"].last)
+    told = re.fullmatch(r"told at (\S+)", runners["p01"].last)
+    assert told and float(told.group(1)) - sent < 1.0, runners["p01"].last  # Ctrl-C at once, before the pages close
+    assert runners["p02"].code == -signal.SIGKILL
+    assert runners["p01"].code == 130 or took > STOP_S - 0.1, (runners["p01"].code, took)

@@ -20,10 +20,12 @@ from haven_viz.cues import CueParams
 
 def test_each_item_is_what_its_plugin_kind_needs():
     assert accept_participant("hurried", Hurried) is Hurried
-    assert accept_metric("near", seconds_near) is seconds_near
+    near = accept_metric("near", seconds_near)
+    assert near.compute is seconds_near and [c[0] for c in near.columns] == ["seconds_within_2m"]
     q = accept_questionnaire("trust", TRUST)
     assert (q.name, q.maximum, [i.reverse for i in q.items]) == ("trust", 7, [False, False, True])
-    assert accept_cue("floor_arrows", FloorArrows) is FloorArrows
+    arrows = accept_cue("floor_arrows", FloorArrows)
+    assert arrows.make is FloorArrows and (arrows.key, arrows.rank, arrows.default_on) == ("floor_arrows", 10, True)
 
 
 def test_the_floor_arrows_lie_ahead_on_the_path_pointing_along_it():
