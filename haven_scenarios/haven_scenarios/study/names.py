@@ -5,10 +5,7 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
-from typing import TYPE_CHECKING
-
-if TYPE_CHECKING:
-    from haven_scenarios.study.protocol import Study
+from typing import Protocol
 
 NAME = re.compile(r"[A-Za-z0-9][A-Za-z0-9_.-]{0,63}")  # participant ids and scenario names: part of a folder name
 NAME_RULE = "1 to 64 ASCII letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
@@ -23,6 +20,11 @@ def check_name(value: object, what: str) -> str:
     raise ValueError(f"{what}: must be {NAME_RULE}, got {shown}")
 
 
-def study_dir(folder: Path | None, study: Study) -> Path:
+class Named(Protocol):
+    @property
+    def name(self) -> str: ...
+
+
+def study_dir(folder: Path | None, study: Named) -> Path:
     """The study's folder: `folder` if given, else studies/<name> here."""
     return folder if folder is not None else Path("studies") / study.name

@@ -41,7 +41,7 @@ from pathlib import Path
 from typing import Annotated, Any, Literal
 
 from haven_scenarios.study.person import PersonParams
-from haven_sim.common import plugins
+from haven_sim.common import contain, plugins
 from haven_sim.common.geometry import Pose2D
 from haven_sim.common.params import build
 from haven_sim.common.schema import FileModel, Line, Positive, check, checked, listing
@@ -237,7 +237,7 @@ class _ScenarioParser:
         """The name of a registered plugin of `kind`."""
         reg = plugins.registry(kind)
         if not isinstance(value, str):
-            raise self.fail(key, f"must be the name of a {plugins.singular(kind)} ({', '.join(reg.names())}), got {short(value)}")
+            raise self.fail(key, f"must be the name of a {contain.singular(kind)} ({', '.join(reg.names())}), got {short(value)}")
         if value not in reg:
             raise self.fail(key, reg.unknown(value))
         return value

@@ -123,8 +123,6 @@ def failures(events: Iterable[Event]) -> list[str]:
 
 def reason(kind: str, name: str, error: str) -> str:
     """The one line a failed plugin gives its trial (validity, batch rows and session.json say it so)."""
-    from haven_sim.common.plugins import singular
-
     return f"{singular(kind)} {name} failed ({error})"
 
 
@@ -174,8 +172,6 @@ def call(kind: str, name: str, fn: Callable[..., T], *args: Any, expected: tuple
     except passing:
         raise
     except Exception as e:
-        from haven_sim.common.plugins import failure
-
         raise PluginFailed(kind, name, failure(e)) from None
 
 
@@ -217,3 +213,18 @@ def _watch() -> None:
                     signal.pthread_kill(tid, _SIGNAL)
                 else:
                     ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(tid), ctypes.py_object(Overrun))
+
+
+def singular(kind: str) -> str:
+    return {"participants": "participant model", "missions": "mission behaviour"}.get(kind, kind.rstrip("s"))
+
+
+def failure(e: BaseException) -> str:
+    """What a plugin's code raised, in one line (`ValueError: what it said`, at most 200 characters):
+    every place that contains a failing plugin says it so."""
+    return f"{type(e).__name__}: {first_line(e)}"[:200].rstrip(": ")
+
+
+def first_line(e: BaseException) -> str:
+    """What an exception says, its first line only."""
+    return str(e).splitlines()[0] if str(e) else ""

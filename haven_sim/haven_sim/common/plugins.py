@@ -29,6 +29,7 @@ from functools import cache
 from typing import Any
 
 from haven_sim.common import contain
+from haven_sim.common.contain import first_line, singular
 
 PLUGIN_API = 1  # the plugin API's version: a change that breaks a plugin written for it makes it 2
 API_ATTRIBUTE = "haven_plugin_api"  # where a plugin says the version it was written for (default: this one)
@@ -94,10 +95,6 @@ class Registry:
         return f"unknown {singular(self.kind)} {name!r} (known: {', '.join(self.names()) or 'none'})"
 
 
-def singular(kind: str) -> str:
-    return {"participants": "participant model", "missions": "mission behaviour"}.get(kind, kind.rstrip("s"))
-
-
 OURS = frozenset({"haven-sim", "haven-viz", "haven-scenarios"})  # HAVEN's packages (normalised names): their items come first
 
 
@@ -136,18 +133,8 @@ def _take(entry: importlib.metadata.EntryPoint, reg: Registry, accept: Callable[
     try:
         value = accept(entry.name, value)
     except ValueError as e:
-        return _line(e) or "refused"
+        return first_line(e) or "refused"
     return Plugin(reg.kind, entry.name, _package(entry), entry.value, value)
-
-
-def failure(e: BaseException) -> str:
-    """What a plugin's code raised, in one line (`ValueError: what it said`, at most 200 characters):
-    every place that contains a failing plugin says it so."""
-    return f"{type(e).__name__}: {_line(e)}"[:200].rstrip(": ")
-
-
-def _line(e: BaseException) -> str:
-    return str(e).splitlines()[0] if str(e) else ""
 
 
 def _normal(name: str) -> str:

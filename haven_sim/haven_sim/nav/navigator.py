@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 
-from haven_sim.common import plugins
+from haven_sim.common import contain
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
@@ -135,7 +135,7 @@ class Navigator:
         except PlanningError:
             raise
         except Exception as e:
-            raise PlanningError(f"the planner failed: {plugins.failure(e)}", PlanFailure.UNKNOWN) from None
+            raise PlanningError(f"the planner failed: {contain.failure(e)}", PlanFailure.UNKNOWN) from None
 
     @property
     def block_distance_m(self) -> float:

@@ -196,3 +196,9 @@ def add_questionnaire_option(group: argparse._ArgumentGroup) -> None:
         help=f"after the trial, each teleoperated participant's page asks these questionnaires in order: registered ones ({', '.join(registered())}) "
         "or YAML files of Likert items; haven run waits for the answers (or the console's Skip questionnaires, or Ctrl-C)",
     )
+
+
+def table(rows: list[list[str]]) -> str:
+    """Rows of text as aligned columns, for the terminal."""
+    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
+    return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows)

@@ -21,7 +21,7 @@ from haven_scenarios.run.sweep import LOCAL, cores, farm
 from haven_scenarios.study.protocol import Study, StudyError, load_study
 from haven_scenarios.study.scenario import ScenarioError
 from haven_scenarios.study.schedule import sequence_count
-from haven_scenarios.tools.commands.common import bounded_int, existing_file, fail
+from haven_scenarios.tools.commands.common import bounded_int, existing_file, fail, table as text
 
 DEFAULT_COUNTS = "8,12,16,24"
 MAX_PARTICIPANTS = 1000  # per replicate study, and in the pool: more is a typo, not a study
@@ -117,8 +117,6 @@ def file_stem(q: Question) -> str:
 
 
 def _say(study: Study, q: Question, estimated: list[Power], out: Path, size: int, ran: int) -> int:
-    from haven_scenarios.tools.commands.study import table as text
-
     name = file_stem(q)
     write_table(out / f"{name}.csv", [r.row() for r in estimated], POWER)
     title = f"{study.name}: {q.metric}, {q.condition} - {q.reference} = {q.effect:g}, alpha {q.alpha:g}, {q.reps} simulated studies per count"

@@ -22,7 +22,7 @@ from haven_scenarios.study.schedule import (
     trials_per_participant,
 )
 from haven_scenarios.tools.commands import power as power_step
-from haven_scenarios.tools.commands.common import PORT, add_dropout_options, add_ros_options, add_tls_options, existing_file, fail
+from haven_scenarios.tools.commands.common import PORT, add_dropout_options, add_ros_options, add_tls_options, existing_file, fail, table
 from haven_scenarios.web.online_runner import NEXT_URL_ENV
 from haven_sim.runtime.process import interrupted, on_stop_signals
 
@@ -86,11 +86,6 @@ def _run(args: argparse.Namespace) -> int:
             return run_participant(StudyRun(**values))
     except TrialError as e:
         return fail(str(e))
-
-
-def table(rows: list[list[str]]) -> str:
-    widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-    return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows)
 
 
 def plan_rows(trials: list[PlannedTrial]) -> list[list[str]]:
