@@ -53,6 +53,8 @@ def pytest_ignore_collect(collection_path: Path) -> bool | None:
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     for item in items:
+        if item.path.suffix == ".md":  # the docs' examples (docs/conftest.py): they run trials
+            item.add_marker(pytest.mark.integration)
         if not any(item.get_closest_marker(t) for t in TIERS):
             item.add_marker(pytest.mark.unit)
 
