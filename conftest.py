@@ -11,6 +11,12 @@ The tiers (markers; `make test-unit` and the others select one):
 - browser: drives headless Chromium.
 Where rclpy cannot be imported, a test file that imports ROS at its top is not collected (one line
 says how many), so the unit tier runs in a venv without ROS.
+
+The docs' Python examples run as tests too (Sybil): each ```python block of a page, in order, in one
+namespace per page, in a folder of its own. Hidden check blocks (`% invisible-code-block: python`,
+a MyST comment) hold each plugin example to its kind's contract; an example that needs what a test
+here cannot have (a ROS suite, a lab's own scenario file, a finished study) is marked `% skip: next`
+where it stands. They are integration tests.
 """
 
 import ast
@@ -21,6 +27,8 @@ import sys
 from pathlib import Path
 
 import pytest
+from sybil import Sybil
+from sybil.parsers.myst import PythonCodeBlockParser, SkipParser
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "haven_sim" / "test"))
 
@@ -51,9 +59,25 @@ def pytest_ignore_collect(collection_path: Path) -> bool | None:
     return None
 
 
+@pytest.fixture
+def in_tmp(tmp_path, monkeypatch):  # type: ignore[no-untyped-def]
+    """A docs page's examples run in an empty folder of their own (a picture they draw lands there)."""
+    monkeypatch.chdir(tmp_path)
+    return tmp_path
+
+
+pytest_collect_file = Sybil(
+    parsers=[PythonCodeBlockParser(), SkipParser()],
+    path=str(Path(__file__).resolve().parent / "docs"),
+    patterns=["*.md"],
+    excludes=["_build/*", "_generated/*"],
+    fixtures=["in_tmp"],
+).pytest()
+
+
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     for item in items:
-        if item.path.suffix == ".md":  # the docs' examples (docs/conftest.py): they run trials
+        if item.path.suffix == ".md":  # the docs' examples: they run trials
             item.add_marker(pytest.mark.integration)
         if not any(item.get_closest_marker(t) for t in TIERS):
             item.add_marker(pytest.mark.unit)
