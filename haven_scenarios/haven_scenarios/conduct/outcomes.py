@@ -1,4 +1,5 @@
-"""How a recorded trial ended, in words and in its session folder; and a bag its recorder never closed, repaired."""
+"""How a recorded trial ended, in words and in its session folder; and a bag its recorder never
+closed, repaired."""
 
 from __future__ import annotations
 

@@ -1,4 +1,5 @@
-"""A trial's condition (which AR cues it shows) and its seed, as a study, a scenario's command line and a recording name them."""
+"""A trial's condition (which AR cues it shows) and its seed, as a study, a scenario's command line
+and a recording name them."""
 
 from __future__ import annotations
 
