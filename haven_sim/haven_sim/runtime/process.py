@@ -17,6 +17,7 @@ from types import FrameType
 # a node cleanly (the recorder closes its bag) and the supervisor with all its children.
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM, signal.SIGXCPU)
 PR_SET_PDEATHSIG = 1
+SIG_DFL = 0  # the C value of a default disposition (signal.h)
 
 
 @contextmanager
@@ -42,13 +43,19 @@ def interrupted(signum: int, frame: FrameType | None) -> None:
 def die_with_parent(sig: int = signal.SIGTERM) -> Callable[[], None] | None:
     """A `preexec_fn` that has the kernel send `sig` to the child when the process that started it
     ends, even by SIGKILL (SIGTERM: the child still stops cleanly); None where there is no prctl.
-    libc is loaded here, before the fork, so the child only makes two system calls."""
+    The child also gets every stop signal at its default: an ignored one is inherited across exec,
+    and a parent may be ignoring Ctrl-C (a background job of a script; run/workers.py while it
+    starts a worker), yet its children must stop when they are told. libc is loaded here, before
+    the fork, so the child only makes system calls."""
     if not sys.platform.startswith("linux"):
         return None
-    prctl = ctypes.CDLL(ctypes.util.find_library("c"), use_errno=True).prctl
+    libc = ctypes.CDLL(ctypes.util.find_library("c"), use_errno=True)
+    prctl, set_handler = libc.prctl, libc.signal
     parent = os.getpid()
 
     def preexec() -> None:
+        for stop in STOP_SIGNALS:
+            set_handler(stop, SIG_DFL)
         prctl(PR_SET_PDEATHSIG, sig, 0, 0, 0)
         if os.getppid() != parent:  # the parent ended before the prctl: nobody would send it
             os.kill(os.getpid(), sig)
