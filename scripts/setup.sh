@@ -37,18 +37,27 @@ stamp="$VENV/.haven-installed"
 want=$(cat requirements.lock haven_sim/setup.py haven_viz/setup.py haven_scenarios/setup.py | cksum)
 if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   export PIP_DISABLE_PIP_VERSION_CHECK=1
-  echo "setup: installing the locked packages into $VENV (ROS 2 Jazzy's wheels among them: a few minutes the first time)"
-  "$VENV/bin/python" -m pip install --quiet -r requirements.lock
+  # uv installs the lock in ~15 s where pip took ~3 min on a fresh 2-core machine (pip then compiled
+  # every module of every package; Python compiles the ones HAVEN imports on first use instead).
+  install=("$VENV/bin/python" -m pip install --quiet)
+  uv_pin=$(grep '^uv==' requirements.lock)
+  if "$VENV/bin/python" -m pip install --quiet "$uv_pin" >/dev/null 2>&1; then
+    install=("$VENV/bin/uv" pip install --quiet --python "$VENV/bin/python")
+  else
+    echo "setup: could not install $uv_pin; installing with pip (a few minutes)" >&2
+  fi
+  echo "setup: installing the locked packages into $VENV (ROS 2 Jazzy's wheels among them)"
+  "${install[@]}" -r requirements.lock
   # compat mode puts each package folder on sys.path, so `python -m haven_sim...` also works from the
   # repository root (where the outer haven_sim/ folder would otherwise shadow the package).
-  "$VENV/bin/python" -m pip install --quiet --no-deps --no-build-isolation --config-settings editable_mode=compat \
+  "${install[@]}" --no-deps --no-build-isolation --config-settings editable_mode=compat \
     -e haven_sim -e haven_viz -e haven_scenarios
   echo "$want" > "$stamp"
   echo "setup: installed the locked dependencies and the HAVEN packages into $VENV"
 fi
 
 # tf2_msgs and nav2_msgs are not on PyPI: build them into the venv once (needs cmake and a C
-# compiler; tf2_msgs about 1 minute, nav2_msgs a few more). Without them everything works except TF
+# compiler; tf2_msgs about 20 s, nav2_msgs about 2 minutes). Without them everything works except TF
 # (/tf, /tf_static), which the simulator then skips with a warning, and Nav2's action servers
 # (navigate_to_pose, ...). `make demo` (HAVEN_SETUP_FOR=demo) needs no Nav2: it builds tf2_msgs only
 # and leaves nav2_msgs, and the browser pieces, to `make setup` or `make test`.
