@@ -13,9 +13,11 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   "$BASE" -m venv "$VENV"
   grep -v '^ros-' requirements.lock | sed 's/\[[a-z]*\]==/==/' > "$VENV/constraints.txt"
   export PIP_DISABLE_PIP_VERSION_CHECK=1
-  "$VENV/bin/python" -m pip install --quiet -c "$VENV/constraints.txt" \
+  install=("$VENV/bin/python" -m pip install --quiet)  # (uv, where setup.sh installed it: seconds)
+  [ -x .venv/bin/uv ] && install=(.venv/bin/uv pip install --quiet --python "$VENV/bin/python")
+  "${install[@]}" -c "$VENV/constraints.txt" \
     setuptools numpy pymunk PyYAML pydantic pillow matplotlib rosbags mcap foxglove-sdk cryptography filelock tqdm statsmodels pytest pytest-timeout pytest-xdist sybil
-  "$VENV/bin/python" -m pip install --quiet --no-deps --no-build-isolation --config-settings editable_mode=compat \
+  "${install[@]}" --no-deps --no-build-isolation --config-settings editable_mode=compat \
     -e haven_sim -e haven_viz -e haven_scenarios
   echo "$want" > "$stamp"
 fi
