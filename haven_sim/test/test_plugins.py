@@ -63,3 +63,16 @@ def test_a_plugin_written_for_a_newer_plugin_api_is_left_out_saying_so():
     now, later = plugins.PLUGIN_API, plugins.PLUGIN_API + 1
     assert reg.left_out["later"] == f"written for HAVEN's plugin API {later}; this HAVEN has version {now} (upgrade HAVEN, or the plugin)"
     assert "plugin API 1;" in reg.left_out["odd"]  # (a version is a whole number)
+
+
+def test_an_item_can_build_on_one_registered_before_it_while_the_registry_loads(tmp_path):
+    """A lab's robot file that extends a catalogue robot: accepting it reads the robots registry,
+    which is the one being loaded (the items so far), not a second load of it."""
+    ours = plugins.registry("robots")
+    mine = tmp_path / "slow_bot.yaml"
+    mine.write_text("extends: turtlebot2\nname: slow_bot\nmotion: {cruise_speed_mps: 0.3}\nsources: {motion.cruise_speed_mps: ours}\n")
+    entries = [*(Entry(p.name, p.target, p.package, p.value) for p in ours), Entry("slow_bot", "lab:SLOW", "lab_robots", str(mine))]
+    reg = plugins.load("robots", entries)
+    assert reg.problems == []
+    assert reg.get("slow_bot").motion.cruise_speed_mps == 0.3
+    assert reg.get("slow_bot").limits == reg.get("turtlebot2").limits

@@ -18,6 +18,7 @@
     haven validate FILE...                            check world and scenario files without starting anything
     haven schema world|scenario|study|questionnaire|robot   a file kind's JSON Schema, for YAML editors
     haven plugins                                     the registered plugins: KIND NAME PACKAGE
+    haven plugins new KIND NAME [--into DIR]          a plugin package to start from, with its test
     haven robots [NAME|FILE]                          the robots to choose from; one robot's figures and sources
     haven world show WORLD [--out PNG]                check a world file and draw it from above
     haven edit [WORLD] [--out DIR] [--host H] [--port P]   the world editor in the browser

@@ -65,6 +65,16 @@ def kinds() -> dict[str, importlib.metadata.EntryPoint]:
     return {e.name: e for e in sorted(entries, key=lambda e: (rank[_normal(_package(e))], e.name))}
 
 
+def kind_named(text: str) -> str:
+    """A plugin kind from its name, plural as its entry point group has it or singular (`cue` or
+    `cues`); PluginError naming the known kinds otherwise."""
+    known = kinds()
+    found = text if text in known else f"{text}s"
+    if found not in known:
+        raise PluginError(f"unknown plugin kind {text!r} (known: {', '.join(known)})")
+    return found
+
+
 @dataclass
 class Registry:
     kind: str
@@ -107,14 +117,23 @@ def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registr
     reg = Registry(kind)
     accept: Callable[[str, Any], Any] = known[kind].load()
     ordered = sorted(entries, key=lambda e: (_normal(_package(e)) not in OURS, _package(e), e.name))
-    for entry in ordered:
-        taken = _take(entry, reg, accept)
-        if isinstance(taken, Plugin):
-            reg.items[entry.name] = taken
-        else:
-            reg.problems.append(f"{GROUP_PREFIX}{kind} {entry.name} ({entry.value}, from {_package(entry)}): {taken}")
-            reg.left_out.setdefault(entry.name, taken)
+    _loading[kind] = reg
+    try:
+        for entry in ordered:
+            taken = _take(entry, reg, accept)
+            if isinstance(taken, Plugin):
+                reg.items[entry.name] = taken
+            else:
+                reg.problems.append(f"{GROUP_PREFIX}{kind} {entry.name} ({entry.value}, from {_package(entry)}): {taken}")
+                reg.left_out.setdefault(entry.name, taken)
+    finally:
+        del _loading[kind]
     return reg
+
+
+# A registry being loaded, by kind: what `registry` gives an item that builds on the ones before it
+# while it is accepted (a lab's robot file that `extends: turtlebot2`), instead of loading it again.
+_loading: dict[str, Registry] = {}
 
 
 def _take(entry: importlib.metadata.EntryPoint, reg: Registry, accept: Callable[[str, Any], Any]) -> Plugin | str:
@@ -146,9 +165,15 @@ def _package(entry: importlib.metadata.EntryPoint) -> str:
     return dist.metadata["Name"] if dist is not None else "?"
 
 
-@cache
 def registry(kind: str) -> Registry:
-    """The registry of `kind`, from the installed distributions' entry points (loaded once)."""
+    """The registry of `kind`, from the installed distributions' entry points (loaded once). While
+    it loads, the items accepted so far (HAVEN's own first)."""
+    loading = _loading.get(kind)
+    return loading if loading is not None else _registry(kind)
+
+
+@cache
+def _registry(kind: str) -> Registry:
     return load(kind, importlib.metadata.entry_points(group=GROUP_PREFIX + kind))
 
 

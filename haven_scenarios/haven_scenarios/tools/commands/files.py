@@ -10,6 +10,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
+from haven_scenarios.conduct.plugin_package import write_package
 from haven_scenarios.run.suite import checked_suite_config
 from haven_scenarios.study.names import check_name
 from haven_scenarios.study.protocol import StudyError, StudyFile, parse_study
@@ -41,6 +42,16 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         "plugins", help=said, description=f"{said}. This HAVEN's plugin API is version {plugins.PLUGIN_API} (docs: Your own plugins)"
     )
     listing.set_defaults(func=plugins_cmd)
+    new = listing.add_subparsers(title="to start a plugin of your own", metavar="new").add_parser(
+        "new",
+        help="write a plugin package to start from (haven_NAME/ with its test: one batch trial with it)",
+        description="Write haven_NAME/, a package holding a working plugin of KIND named NAME, its entry point, and a test that "
+        "loads it as HAVEN does and runs one batch trial with it (haven_scenarios.testing's fixtures).",
+    )
+    new.add_argument("kind", metavar="KIND", help=f"{', '.join(plugins.kinds())} (or the singular)")
+    new.add_argument("name", metavar="NAME", help="the plugin's name: lower-case letters, digits and _")
+    new.add_argument("--into", type=Path, default=Path("."), metavar="DIR", help="where to write haven_NAME/ (default: here)")
+    new.set_defaults(func=plugins_new_cmd)
     schema = sub.add_parser(
         "schema",
         help="a file kind's JSON Schema (for YAML editors: `# yaml-language-server: $schema=scenario.schema.json` at a file's top)",
@@ -71,6 +82,17 @@ def plugins_cmd(args: argparse.Namespace) -> int:
     for line in problems:
         print(f"haven: plugin left out: {line}", file=sys.stderr)
     return 1 if problems else 0
+
+
+def plugins_new_cmd(args: argparse.Namespace) -> int:
+    """The package written, and how to install and test it; exit 2 with one line if refused."""
+    try:
+        folder = write_package(args.kind, args.name, args.into, python=sys.executable)
+    except (ValueError, OSError) as e:
+        return fail(str(e))
+    print(f"haven: wrote {folder}/ (pyproject.toml, README.md, its module and tests/)")
+    print(f"next: {sys.executable} -m pip install -e {folder} && {sys.executable} -m pytest {folder}")
+    return 0
 
 
 def validate_cmd(args: argparse.Namespace) -> int:
