@@ -20,6 +20,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "haven_sim" / "test"))
+import itertools
+
 from common import OUT, save
 from ros_harness import RosHarness
 
@@ -43,8 +45,8 @@ def measure(rtf: float, seconds: float) -> dict[str, float]:
         window = [s for _, s in received[n0:n1]]
         wall = arrivals[-1] - arrivals[0]
         sim = window[-1] - window[0]
-        gaps = [b - a for a, b in zip(window, window[1:])]
-        arrived = sorted(b - a for a, b in zip(arrivals, arrivals[1:]))
+        gaps = [b - a for a, b in itertools.pairwise(window)]
+        arrived = sorted(b - a for a, b in itertools.pairwise(arrivals))
         return {
             "rtf_requested": rtf,
             "messages": len(window),

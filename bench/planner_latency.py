@@ -22,6 +22,8 @@ from pathlib import Path
 import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import itertools
+
 from common import OUT, save
 from w1_map import w1_world
 
@@ -50,7 +52,7 @@ def sample_pairs(world: World, planner: GridPlanner, n: int, seed: int) -> list[
 def clearance(world: World, path: list[tuple[float, float]]) -> float:
     edges = world.edges()
     worst = np.inf
-    for a, b in zip(path, path[1:]):
+    for a, b in itertools.pairwise(path):
         n = max(2, int(np.hypot(b[0] - a[0], b[1] - a[1]) / 0.02) + 1)
         for t in np.linspace(0.0, 1.0, n):
             worst = min(worst, distance_point_to_edges(a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, edges))
@@ -66,7 +68,7 @@ def run(name: str, world: World, n: int, seed: int, pairs_file: str | None) -> d
     grid = rasterise(world, 0.05)
     t0 = time.perf_counter()
     planner = GridPlanner(grid, PARAMS)
-    planner.dist  # the graph (else built at the first plan that needs it)
+    _ = planner.dist  # the graph (else built at the first plan that needs it)
     pre = time.perf_counter() - t0
     pairs = sample_pairs(world, planner, n, seed)
     if pairs_file:

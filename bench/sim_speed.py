@@ -88,7 +88,7 @@ def run_case(world: World, rooms: list[str] | None, scan_every: int, steps: int)
     loop(steps)
     wall = time.perf_counter() - t0
     hits = int(np.isfinite(sim.scan()).sum())
-    moved = sum(1 for h, p in zip(walkers.ids, start) if sim.human_poses()[h].distance_to(p) > 0.05)
+    moved = sum(1 for h, p in zip(walkers.ids, start, strict=True) if sim.human_poses()[h].distance_to(p) > 0.05)
     sim_s = steps * sim.config.step_s
     return {
         "wall_s": wall,

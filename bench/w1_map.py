@@ -47,7 +47,7 @@ def w1_world(n_humans: int, seed: int = 0) -> World:
     per = [n_humans // 4 + (1 if i < n_humans % 4 else 0) for i in range(4)] if n_humans != 1 else [1, 0, 0, 0]
     humans: list[dict[str, Any]] = []
     placed: list[tuple[float, float]] = []
-    for room, k in zip(AGENT_ROOMS, per):
+    for room, k in zip(AGENT_ROOMS, per, strict=True):
         x0, y0, x1, y1 = room_box(room)
         while k > 0:
             x, y = float(rng.uniform(x0, x1)), float(rng.uniform(y0, y1))
@@ -67,4 +67,4 @@ def w1_world(n_humans: int, seed: int = 0) -> World:
 
 def human_rooms(n_humans: int) -> list[str]:
     per = [n_humans // 4 + (1 if i < n_humans % 4 else 0) for i in range(4)] if n_humans != 1 else [1, 0, 0, 0]
-    return [room for room, k in zip(AGENT_ROOMS, per) for _ in range(k)]
+    return [room for room, k in zip(AGENT_ROOMS, per, strict=True) for _ in range(k)]

@@ -34,7 +34,8 @@ def tree(pid: int) -> list[int]:
     for entry in os.listdir("/proc"):
         if entry.isdigit():
             try:
-                ppid = int(open(f"/proc/{entry}/stat").read().rsplit(")", 1)[1].split()[1])
+                with open(f"/proc/{entry}/stat") as f:
+                    ppid = int(f.read().rsplit(")", 1)[1].split()[1])
             except (OSError, IndexError, ValueError):
                 continue
             children.setdefault(ppid, []).append(int(entry))
@@ -50,9 +51,10 @@ def pss_mb(pids: list[int]) -> float:
     total = 0
     for p in pids:
         try:
-            for line in open(f"/proc/{p}/smaps_rollup"):
-                if line.startswith("Pss:"):
-                    total += int(line.split()[1])
+            with open(f"/proc/{p}/smaps_rollup") as f:
+                for line in f:
+                    if line.startswith("Pss:"):
+                        total += int(line.split()[1])
         except OSError:
             continue
     return total / 1024
@@ -80,8 +82,7 @@ async def all_of(urls: list[dict[str, str]], presses: int) -> list[list[float]]:
 def run(n: int, presses: int) -> dict[str, object]:
     trials = []
     try:
-        for k in range(n):
-            trials.append(start(k))
+        trials.extend(start(k) for k in range(n))  # one at a time: those started before a failure are still stopped below
         lat = asyncio.run(all_of([u for _, u in trials], presses))
         memory = [pss_mb(tree(p.pid)) for p, _ in trials]
     finally:

@@ -34,7 +34,7 @@ if [ ! -x "$VENV/bin/python" ] || ! works "$VENV/bin/python"; then
 fi
 
 stamp="$VENV/.haven-installed"
-want=$(cat requirements.lock haven_sim/setup.py haven_viz/setup.py haven_scenarios/setup.py | cksum)
+want=$(cat requirements.lock haven_*/setup.py haven_*/pyproject.toml | cksum)
 if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   export PIP_DISABLE_PIP_VERSION_CHECK=1
   # uv installs the lock in ~15 s where pip took ~3 min on a fresh 2-core machine (pip then compiled

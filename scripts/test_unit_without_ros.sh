@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 VENV=.venv-noros
 BASE=$(.venv/bin/python -c 'import sys; print(sys._base_executable)')
-want=$(cat requirements.lock haven_sim/setup.py haven_viz/setup.py haven_scenarios/setup.py "$0" | cksum)
+want=$(cat requirements.lock haven_*/setup.py haven_*/pyproject.toml "$0" | cksum)
 stamp="$VENV/.haven-installed"
 if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   rm -rf "$VENV"

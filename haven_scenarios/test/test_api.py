@@ -43,7 +43,7 @@ def test_a_pilot_study_through_the_api(tmp_path):
         )
     )
     assert len(api.study_plan(str(study))) == 6 and len(api.study_plan(str(study), "p02")) == 2
-    with pytest.raises(ValueError, match="^study_plan: 'p99' is not a participant of study pilot$"):
+    with pytest.raises(ValueError, match=r"^study_plan: 'p99' is not a participant of study pilot$"):
         api.study_plan(str(study), "p99")
     for p in ("p01", "p02", "p03"):
         assert api.run_participant(str(study), p, batch=True, dir=tmp_path / "study") == 0
@@ -51,7 +51,7 @@ def test_a_pilot_study_through_the_api(tmp_path):
     assert [t.status for t in api.study_status(str(study), dir=tmp_path / "study")] == ["done"] * 6
     report = api.study_report(str(study), dir=tmp_path / "study")
     assert report.trials_done == 6 and (report.folder / "study_long.csv").exists() and not report.study_changed
-    with pytest.raises(ValueError, match="^no finished trials of study pilot in "):
+    with pytest.raises(ValueError, match=r"^no finished trials of study pilot in "):
         api.study_report(str(study), dir=tmp_path / "empty")
     for options, said in (
         ({"participant": "p99"}, "--participant: 'p99' is not a participant of study pilot"),

@@ -8,6 +8,7 @@ import subprocess
 import sys
 import time
 from importlib import resources
+from pathlib import Path
 
 import pytest
 from nav_msgs.msg import Odometry
@@ -56,7 +57,7 @@ def test_a_node_that_dies_takes_the_suite_down_with_a_message(ros):
     proc = start_haven(ros, "sim")
     ros.wait_for_messages(odom, 1)
     kids = children_of(proc.pid)
-    sim_pid = max(kids, key=lambda k: "sim_node" in open(f"/proc/{k}/cmdline").read())
+    sim_pid = max(kids, key=lambda k: "sim_node" in Path(f"/proc/{k}/cmdline").read_text())
     os.kill(sim_pid, signal.SIGKILL)
     code = proc.wait(timeout=20)
     assert code != 0

@@ -1,5 +1,5 @@
 """Every third-party module a package's code imports is declared where each way of installing it
-looks: setup.py (pip) and, as a rosdep key, package.xml (colcon and rosdep, as the Docker image
+looks: pyproject.toml (pip) and, as a rosdep key, package.xml (colcon and rosdep, as the Docker image
 installs). Derived from the code itself, so a new import without a declaration fails here."""
 
 from __future__ import annotations
@@ -8,6 +8,7 @@ import ast
 import importlib.metadata
 import re
 import sys
+import tomllib
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -59,13 +60,11 @@ def imported_modules(package: str) -> dict[str, str]:
 
 
 def setup_requirements(package: str) -> tuple[set[str], set[str]]:
-    """(install_requires, every extra's requirements) of the package's setup.py, normalised."""
-    tree = ast.parse((ROOT / package / "setup.py").read_text())
-    call = next(n for n in ast.walk(tree) if isinstance(n, ast.Call) and getattr(n.func, "id", "") == "setup")
-    kw = {k.arg: ast.literal_eval(k.value) for k in call.keywords if k.arg in ("install_requires", "extras_require")}
+    """(dependencies, every extra's requirements) of the package's pyproject.toml, normalised."""
+    project = tomllib.loads((ROOT / package / "pyproject.toml").read_text())["project"]
     names = lambda reqs: {normal(re.split(r"[<>=!~\[;\s]", r, maxsplit=1)[0]) for r in reqs}  # noqa: E731
-    extras = set().union(*(names(v) for v in kw.get("extras_require", {}).values()))
-    return names(kw.get("install_requires", [])), extras
+    extras = set().union(*(names(v) for v in project.get("optional-dependencies", {}).values()))
+    return names(project.get("dependencies", [])), extras
 
 
 def exec_depends(package: str) -> set[str]:
@@ -87,7 +86,7 @@ def is_ros_package(module: str, dists: list[str]) -> bool:
 
 
 @pytest.mark.parametrize("package", PACKAGES)
-def test_every_runtime_import_is_declared_in_setup_py_and_package_xml(package):
+def test_every_runtime_import_is_declared_in_pyproject_and_package_xml(package):
     distributions = importlib.metadata.packages_distributions()
     required, extras = setup_requirements(package)
     depends = exec_depends(package)
@@ -107,7 +106,7 @@ def test_every_runtime_import_is_declared_in_setup_py_and_package_xml(package):
         if dist in extras:
             continue  # optional: the code says which extra to install when it is missing
         if dist not in required:
-            problems.append(f"{where}: imports {module} ({dist}), not in {package}/setup.py install_requires")
+            problems.append(f"{where}: imports {module} ({dist}), not in {package}/pyproject.toml dependencies")
         if dist not in by_key:
             problems.append(f"{where}: imports {module} ({dist}), no rosdep key for it in {package}/package.xml")
     assert problems == [], "\n".join(problems)

@@ -24,7 +24,11 @@ def battery(level):
     return BatteryReading(level, PowerStatus.DISCHARGING, 15.0, 1.0, 2.2, 10.0)
 
 
-def ready(director, robot=Pose2D(2.0, 2.0, 0.0), human=Pose2D(16.0, 16.0, 3.14), level=1.0):
+ROBOT_AT = Pose2D(2.0, 2.0, 0.0)  # where ready() puts the robot and the human unless told
+HUMAN_AT = Pose2D(16.0, 16.0, 3.14)
+
+
+def ready(director, robot=ROBOT_AT, human=HUMAN_AT, level=1.0):
     world = director.scenario.world
     director.on_map(rasterise(world), 0.0)
     director.on_odom(RobotState(robot), 0.0)

@@ -2,6 +2,7 @@
 every command they run must exist in the project."""
 
 import re
+import tomllib
 from pathlib import Path
 
 import yaml
@@ -13,9 +14,8 @@ def entry_points():
     """(package, executable) pairs that `ros2 run` finds after colcon build."""
     pairs = set()
     for pkg in ("haven_sim", "haven_viz", "haven_scenarios"):
-        text = (ROOT / pkg / "setup.py").read_text()
-        for name in re.findall(r'"([a-z_]+) = [a-z_.]+:main"', text):
-            pairs.add((pkg, name))
+        scripts = tomllib.loads((ROOT / pkg / "pyproject.toml").read_text())["project"]["scripts"]
+        pairs |= {(pkg, name) for name in scripts if re.fullmatch(r"[a-z_]+", name)}
     return pairs
 
 

@@ -206,7 +206,7 @@ def test_haven_edit_starts_from_a_shipped_world_or_a_new_one_but_not_from_a_map(
     assert world_tree("hallway")["name"] == "hallway"
     assert world_tree(None)["walls"] == []
     (tmp_path / "m.yaml").write_text("name: m\nmap: building.yaml\nrobot: {start: [1, 1]}\n")
-    with pytest.raises(WorldError, match="m.yaml: map: the editor draws walls itself"):
+    with pytest.raises(WorldError, match=r"m\.yaml: map: the editor draws walls itself"):
         world_tree(str(tmp_path / "m.yaml"))
 
 

@@ -218,8 +218,7 @@ def _fuzz(files, load, error, seeds, tmp_path):
         source = rng.choice(files)
         tree = copy.deepcopy(parsed[source])
         what = [source.name]
-        for _ in range(rng.randint(1, 3)):
-            what.append(_tree_mutation(tree, rng) if _slots(tree) else "nothing")
+        what.extend(_tree_mutation(tree, rng) if _slots(tree) else "nothing" for _ in range(rng.randint(1, 3)))  # (in turn: each mutates the tree)
         data, op = (_dump(tree, allow_unicode=True).encode(), "") if rng.random() < 0.6 else _text_mutation(_dump(tree), rng)
         what.append(op)
         path = tmp_path / f"case{seed}.yaml"

@@ -25,7 +25,7 @@ ALL = Toggles()
 
 def drive(rec, t0, t1, x0=0.0, v=1.0, dt=0.02, y=0.0):
     """/odom every dt: the robot along x at speed v from x0 at t0."""
-    n = int(round((t1 - t0) / dt))
+    n = round((t1 - t0) / dt)
     for i in range(n + 1):
         t = t0 + i * dt
         rec.add(Message(topics.ODOM, RobotState(Pose2D(x0 + v * (t - t0), y, 0.0), Twist2D(v, 0.0, 0.0)), t))
@@ -33,7 +33,7 @@ def drive(rec, t0, t1, x0=0.0, v=1.0, dt=0.02, y=0.0):
 
 def stand(rec, t0, t1, poses, dt=0.05):
     """/humans every dt with fixed positions {id: (x, y)}."""
-    n = int(round((t1 - t0) / dt))
+    n = round((t1 - t0) / dt)
     for i in range(n + 1):
         rec.add(Message(topics.HUMANS, {h: Pose2D(x, y, 0.0) for h, (x, y) in poses.items()}, t0 + i * dt))
 

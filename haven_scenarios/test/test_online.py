@@ -178,7 +178,7 @@ def test_a_runner_hands_out_the_page_it_opened_until_the_participant_has_finishe
         "web: participant h1: http://h:2/participant/h1?token=BBB",
         "web: researcher console: http://h:2/console?token=CCC",
     ]
-    script = "import time\nfor line in %r:\n    print(line, flush=True)\ntime.sleep(60)\n" % lines
+    script = f"import time\nfor line in {lines!r}:\n    print(line, flush=True)\ntime.sleep(60)\n"
     runner = Runner("p01", [sys.executable, "-c", script], os.environ, tmp_path / "p01")
     deadline = time.monotonic() + 20
     while runner.console is None and time.monotonic() < deadline:

@@ -74,7 +74,7 @@ def test_deterministic_participants_give_singular_fits_counted() -> None:
 
 
 def test_an_order_missing_from_the_pool_is_a_one_line_error() -> None:
-    with pytest.raises(ValueError, match="no pool participant ran the order .* use a larger --pool"):
+    with pytest.raises(ValueError, match=r"no pool participant ran the order .* use a larger --pool"):
         cell(question(1.0), "s", 4, slots(4), pool(3, effect=1.0))
     with pytest.raises(ValueError, match="no valid trial of x_m in condition all"):
         pool_effect([o for o in pool(4, 1.0) if o.condition != "all"], question(1.0))
@@ -128,7 +128,7 @@ def test_a_metric_is_checked_before_any_trial_is_simulated() -> None:
         check_metric(fine, paper)
     with pytest.raises(ValueError, match=r"^--metric: no measure 'time_to_finsh_s': did you mean time_to_finish_s\?$"):
         check_metric("time_to_finsh_s", paper)
-    with pytest.raises(ValueError, match="^--metric: godspeed_safety is a questionnaire score: simulated participants answer no questionnaire$"):
+    with pytest.raises(ValueError, match=r"^--metric: godspeed_safety is a questionnaire score: simulated participants answer no questionnaire$"):
         check_metric("godspeed_safety", paper)
 
 

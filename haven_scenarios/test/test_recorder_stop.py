@@ -49,7 +49,7 @@ def write_trial(bag, end_s=4.0, odom_until_s=None):
         w.add_topic("/odom", "nav_msgs/msg/Odometry")
         w.add_topic("/haven/events", "std_msgs/msg/String")
         w.write("/haven/events", 0, text(event(EventKind.TRIAL_START, 0.0, Source.SCENARIO, seq=1, scenario="s").to_json()))
-        for i in range(int(round(until / 0.02)) + 1):
+        for i in range(round(until / 0.02) + 1):
             w.write("/odom", i * 20_000_000, odometry(i * 0.02, 0.01 * i))
             if i % 50 == 49:
                 w.flush()

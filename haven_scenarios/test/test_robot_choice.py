@@ -66,7 +66,7 @@ def test_a_robot_on_the_grid_is_a_design_column_and_replaces_the_scenarios_robot
     assert [s.columns()["robot"] for s in specs] == ["turtlebot2", "slow_bot"]
     assert list(specs[1].columns())[:6] == ["trial", "scenario", "condition", "model", "robot", "seed"]
     assert specs[1].scenario.robot.motion.cruise_speed_mps == 0.25
-    with pytest.raises(ValueError, match="^--grid robot: unknown robot 'r2d2'"):
+    with pytest.raises(ValueError, match=r"^--grid robot: unknown robot 'r2d2'"):
         parse_grid(["robot=r2d2"])
     assert main(["batch", "hallway", "--robot", "turtlebot2", "--grid", "robot=turtlebot2", "--seeds", "0"]) == 2
 
@@ -86,7 +86,7 @@ def test_robot_wins_over_the_scenarios_and_the_session_keeps_the_robot_as_run(
     assert yaml.safe_load((folder / "params.yaml").read_text())["/**"]["ros__parameters"]["robot"] == ROBOT_FILE
     scenario, problem = session_scenario(folder)  # (what the scenario node, the web node, report and rerun read)
     assert problem == "" and scenario is not None and scenario.robot.name == "slow_bot"
-    with pytest.raises(TrialError, match="^--robot: unknown robot 'nope'"):
+    with pytest.raises(TrialError, match=r"^--robot: unknown robot 'nope'"):
         plan_trial(TrialRequest("hallway", robot="nope"))
 
 

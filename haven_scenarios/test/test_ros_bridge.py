@@ -177,7 +177,7 @@ def test_start_up_parameters_are_read_only_and_lists_are_string_arrays_even_when
         client = AsyncParameterClient(ros.node, node)
         assert ros.spin_until(client.services_are_ready, 30), node
         described, got = client.describe_parameters(names), client.get_parameters(names[:1])
-        assert ros.spin_until(lambda: described.done() and got.done(), 10)
+        assert ros.spin_until(lambda described=described, got=got: described.done() and got.done(), 10)
         assert [d.read_only for d in described.result().descriptors] == [True, True], node
         assert described.result().descriptors[0].type == ParameterType.PARAMETER_STRING_ARRAY, node
         value = got.result().values[0]

@@ -127,7 +127,7 @@ def test_an_outside_publisher_on_a_free_running_trial_makes_it_not_valid_unless_
         flood = start(ros, [sys.executable, FLOOD, "200", "2"])
         trial = start(ros, [*HAVEN, "run", str(scenario), "--free-running", "--rtf", "8", "--domain-id", str(ros.domain_id), *allow,
                             "--sessions", str(tmp_path / sessions)])  # fmt: skip
-        code, out, err = finish(trial)
+        _code, _out, err = finish(trial)
         finish(flood)
         m = metrics_of(only_session(tmp_path / sessions))
         events = (only_session(tmp_path / sessions) / "events.jsonl").read_text()
@@ -171,7 +171,8 @@ def test_with_a_range_of_domains_a_second_and_third_suite_stay_inside_it(ros, tm
         seen: dict[int, set[str]] = {}
         for proc in runs:
             nodes = lambda p=proc: [int(c) for t in Path(f"/proc/{p.pid}/task").glob("*/children") for c in t.read_text().split()]  # noqa: E731
-            assert ros.spin_until(lambda: len(nodes()) == 7 or proc.poll() is not None, 120), "the suite never started its nodes"
+            started = ros.spin_until(lambda nodes=nodes, proc=proc: len(nodes()) == 7 or proc.poll() is not None, 120)
+            assert started, "the suite never started its nodes"
             for pid in nodes():
                 with contextlib.suppress(OSError):
                     if b"--ros-args" not in Path(f"/proc/{pid}/cmdline").read_bytes():

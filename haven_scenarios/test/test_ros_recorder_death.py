@@ -133,7 +133,7 @@ def test_a_full_disk_stops_the_recorder_in_one_line_and_keeps_what_it_wrote(ros,
     limit = (bag / "bag.mcap").stat().st_size + 64_000
     resource.prlimit(pid, resource.RLIMIT_FSIZE, (limit, limit))
     kept = snapshot(bag, tmp_path)  # (after the limit: the file never grows past it)
-    code, out, err = finished(proc, tmp_path)
+    code, _out, err = finished(proc, tmp_path)
     assert code == 1 and tracebacks(err) == [], err[-3000:]
     said = [line for line in err.splitlines() if line.startswith("recorder: error:")]
     assert len(said) == 1 and said[0].startswith(f"recorder: error: cannot write {bag.resolve() / 'bag.mcap'}: File too large"), err[-3000:]

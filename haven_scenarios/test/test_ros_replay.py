@@ -41,7 +41,7 @@ def test_a_replayed_session_relatches_static_tf_the_map_and_the_world(ros, tmp_p
         topic: ros.collect(t, topic, rviz)
         for topic, t in (("/tf_static", tf2.TFMessage), ("/map", OccupancyGrid), ("/haven/world_markers", MarkerArray))
     }
-    for topic, got in late.items():
+    for got in late.values():
         ros.wait_for_messages(got, 1, timeout_s=30)
     assert {(t.header.frame_id, t.child_frame_id) for t in late["/tf_static"][0].transforms} >= {("map", "odom"), ("base_footprint", "base_link")}
     assert late["/map"][0].info.width > 0 and len(late["/haven/world_markers"][0].markers) > 4

@@ -56,7 +56,7 @@ def session(tmp_path_factory):
 def test_metrics_from_a_late_jittered_bag_equal_the_batch_trials(session):
     """Defect: metrics sampled on the recorder's receive stamps (up to 0.4 s late under load)."""
     folder, batch = session
-    metrics, world, rec = analyse(folder)
+    metrics, world, _rec = analyse(folder)
     assert world is not None and metrics["valid"], metrics["invalid_reasons"]
     for key, value in batch.metrics.items():
         if key not in ("condition", "session", "condition_segments"):

@@ -51,9 +51,9 @@ def test_keeps_right_of_an_oncoming_robot_and_never_closes_in_on_it():
 
     track = glide(SocialForce(open_space), (0.0, 0.0), (1.0, 0.0), robot, 8.0)
     robot_x = [6.0 - 0.4 * (k + 1) * 0.1 for k in range(len(track))]
-    passing = [y for (x, y), rx in zip(track, robot_x) if abs(x - rx) < 0.5]
+    passing = [y for (x, y), rx in zip(track, robot_x, strict=True) if abs(x - rx) < 0.5]
     assert passing and max(passing) < -0.3  # to the walker's right (heading +x: right is -y)
-    gaps = [math.hypot(x - rx, y) for (x, y), rx in zip(track, robot_x)]
+    gaps = [math.hypot(x - rx, y) for (x, y), rx in zip(track, robot_x, strict=True)]
     assert min(gaps) > ROBOT_BODY.radius_m + HUMAN_BODY.radius_m + 0.1
 
 

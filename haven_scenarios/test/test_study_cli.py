@@ -98,11 +98,11 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
                             cwd=tmp_path, start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)  # fmt: skip
     wait_for(held.exists, 120.0)
     os.killpg(proc.pid, signal.SIGINT)
-    out, err = proc.communicate(timeout=60)
+    _out, err = proc.communicate(timeout=60)
     assert proc.returncode == 130, err
     assert "stopped during 02_" in err and "Traceback" not in err
     before = sessions(root)
-    interrupted = [t for t, a in before.items() if t.startswith("p02/") and not a[-1][1] == "completed"]
+    interrupted = [t for t, a in before.items() if t.startswith("p02/") and a[-1][1] != "completed"]
     assert interrupted == [next(t for t in before if t.startswith("p02/02_"))]
     assert before[interrupted[0]][0][1] == "interrupted (stopped by a signal)"  # (written as the signal came)
 

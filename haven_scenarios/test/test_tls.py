@@ -98,7 +98,7 @@ def test_a_certificate_for_other_names_fails_the_host_name_check(certs: Path, tm
     server = EditorServer("127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(made.cert, made.key))
     server.start()
     try:
-        with pytest.raises(urllib.error.URLError, match="match|mismatch"):
+        with pytest.raises(urllib.error.URLError, match=r"match|mismatch"):
             urllib.request.urlopen(server.url, context=ssl.create_default_context(cafile=made.ca_cert), timeout=30)
     finally:
         server.stop()
@@ -163,7 +163,7 @@ def test_tls_files_that_are_wrong_are_one_line(certs: Path, tmp_path: Path, caps
     assert tls_files(None, None) is None
     with pytest.raises(ValueError, match="go together"):
         tls_files(str(certs / SERVER_CERT), None)
-    with pytest.raises(ValueError, match="--tls-key .*: no such file"):
+    with pytest.raises(ValueError, match=r"--tls-key .*: no such file"):
         tls_files(str(certs / SERVER_CERT), str(tmp_path / "missing.pem"))
     with pytest.raises(ValueError, match="not a certificate and its key"):  # another certificate's key
         server_context(certs / SERVER_CERT, certs / CA_KEY)

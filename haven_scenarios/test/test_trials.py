@@ -160,7 +160,7 @@ def test_control_stays_smooth_with_the_delays_of_a_loaded_machine():
     sig = np.array([c.turn_signal for c in tl.cues])
     onsets = [i for i in range(1, len(sig)) if sig[i] != 0 and sig[i] != sig[i - 1]]
     ends = [next((j for j in range(i, len(sig)) if sig[j] != sig[i]), len(sig) - 1) for i in onsets]
-    assert all(tl.t[j] - tl.t[i] >= 0.5 for i, j in zip(onsets, ends)), "a turn signal flickered"
+    assert all(tl.t[j] - tl.t[i] >= 0.5 for i, j in zip(onsets, ends, strict=True)), "a turn signal flickered"
     assert r.metrics["passes_signalled"] == r.metrics["passes"] >= 1
 
 

@@ -392,11 +392,13 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
     try:
         # Closed by the server (a limit, not a wait): after its first requests, or during its handshake
         # already where the periodic sweep comes first (a busy machine).
-        with pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)):
-            with connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as direct:
-                _publish_and_set(direct, b"direct")
-                while True:
-                    direct.recv(timeout=60)
+        with (
+            pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)),
+            connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as direct,
+        ):
+            _publish_and_set(direct, b"direct")
+            while True:
+                direct.recv(timeout=60)
         deadline = time.monotonic() + 60
         while guard.cut < 1 and time.monotonic() < deadline:  # (the sweeping thread counts just after the shutdown)
             time.sleep(0.01)
@@ -408,10 +410,12 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
                 time.sleep(0.01)
         assert sink.messages == [("/cmd_vel_teleop", b"through the door")]  # the direct client's never arrived
         assert len(sink.parameter_sets) == 1
-        with pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)):  # the periodic sweep closes it too
-            with connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as lurker:  # asks for nothing
-                while True:
-                    lurker.recv(timeout=60)
+        with (
+            pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)),  # the periodic sweep closes it too
+            connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as lurker,  # asks for nothing
+        ):
+            while True:
+                lurker.recv(timeout=60)
     finally:
         d.stop()
         relay.stop()

@@ -101,7 +101,8 @@ def descendants(pid):
     children = {}
     for p in (p for p in os.listdir("/proc") if p.isdigit()):
         try:
-            children.setdefault(int(open(f"/proc/{p}/stat").read().rsplit(")", 1)[1].split()[1]), []).append(int(p))
+            with open(f"/proc/{p}/stat") as f:
+                children.setdefault(int(f.read().rsplit(")", 1)[1].split()[1]), []).append(int(p))
         except (OSError, IndexError, ValueError):
             continue
     out, todo = [], list(children.get(pid, []))
@@ -119,8 +120,9 @@ def listening_ports(parent, module):
     pids = []
     for p in descendants(parent):
         try:
-            if module in open(f"/proc/{p}/cmdline", "rb").read().decode(errors="replace"):
-                pids.append(p)
+            with open(f"/proc/{p}/cmdline", "rb") as f:
+                if module in f.read().decode(errors="replace"):
+                    pids.append(p)
         except OSError:
             continue
     ports = set()
@@ -131,11 +133,25 @@ def listening_ports(parent, module):
                 inodes.add(os.readlink(f"/proc/{pid}/fd/{fd}"))
             except OSError:
                 continue
-        for row in open(f"/proc/{pid}/net/tcp").read().splitlines()[1:]:
+        with open(f"/proc/{pid}/net/tcp") as tcp:
+            rows = tcp.read().splitlines()[1:]
+        for row in rows:
             f = row.split()
             if f[3] == "0A" and f[1].startswith("0100007F:") and f"socket:[{f[9]}]" in inodes:  # LISTEN on 127.0.0.1
                 ports.add(int(f[1].split(":")[1], 16))
     return ports
+
+
+def read_json(path):
+    """A session file's JSON (session.json, metrics.json, questionnaires.json)."""
+    with open(path) as f:
+        return json.load(f)
+
+
+def read_events(path):
+    """An events.jsonl file's events, in order."""
+    with open(path) as f:
+        return [json.loads(line) for line in f]
 
 
 def cdr_string(text):
@@ -152,14 +168,16 @@ def try_the_backends_directly(ports):
     from websockets.sync.client import connect
 
     for port in ports:
-        with pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)):  # (not a recv timeout: the server closes it)
-            with connect(f"ws://127.0.0.1:{port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as ws:
-                channel = {"id": 1, "topic": "/haven/trial_control", "encoding": "cdr", "schemaName": "std_msgs/msg/String"}
-                ws.send(json.dumps({"op": "advertise", "channels": [channel]}))
-                ws.send(struct.pack("<BI", 1, 1) + cdr_string("stop"))
-                ws.send(json.dumps({"op": "setParameters", "parameters": [{"name": "/viz.thought_bubble", "value": False}]}))
-                while True:
-                    ws.recv(timeout=60)
+        with (
+            pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)),  # (not a recv timeout: the server closes it)
+            connect(f"ws://127.0.0.1:{port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as ws,
+        ):
+            channel = {"id": 1, "topic": "/haven/trial_control", "encoding": "cdr", "schemaName": "std_msgs/msg/String"}
+            ws.send(json.dumps({"op": "advertise", "channels": [channel]}))
+            ws.send(struct.pack("<BI", 1, 1) + cdr_string("stop"))
+            ws.send(json.dumps({"op": "setParameters", "parameters": [{"name": "/viz.thought_bubble", "value": False}]}))
+            while True:
+                ws.recv(timeout=60)
 
 
 def status_of(url):
@@ -279,7 +297,7 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     page.wait_for_function("() => havenState.prompt === 'Trial over'", timeout=PAGE_TIMEOUT_MS)
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
-    events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
+    events = read_events(os.path.join(folder, "events.jsonl"))
     kinds = [(e["type"], e.get("cue"), e.get("on"), e.get("reason"), e.get("by")) for e in events]
     assert ("participant_ready", None, None, None, "h1") in kinds
     assert ("cue_toggled", "thought_bubble", False, None, None) in kinds
@@ -290,7 +308,7 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
         ("trial_end", None, None, "stopped", "researcher"),
     ]
     assert "did not come through the front door" in "".join(trial.lines)
-    assert json.load(open(os.path.join(folder, "metrics.json")))["end_reason"] == "stopped"
+    assert read_json(os.path.join(folder, "metrics.json"))["end_reason"] == "stopped"
     assert tracebacks("".join(trial.lines)) == []
 
 
@@ -324,7 +342,7 @@ def test_a_participant_sees_the_flying_drone_with_its_navpoints_arrow_and_gaze(r
     trial.ended()
     out = "".join(trial.lines)
     assert "haven: interrupted" in out and tracebacks(out) == [], out[-3000:]
-    assert json.load(open(os.path.join(trial.session(), "metrics.json")))["robot"] == "quadrotor"
+    assert read_json(os.path.join(trial.session(), "metrics.json"))["robot"] == "quadrotor"
 
 
 LIBRARY_CUES = ("path_line", "projected_arrows", "light_ring")
@@ -392,7 +410,7 @@ def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_
     for who, url in (("h1", local), ("h2", remote)):
         pages[who] = browser.new_page(viewport={"width": 480, "height": 270})
         pages[who].goto(url, timeout=PAGE_LOAD_MS)
-    for who, page in pages.items():
+    for page in pages.values():
         page.wait_for_function(
             "s => (s = window.havenState) && s.pose && s.others === 1 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
         )
@@ -567,7 +585,7 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     # Every answer in: haven run stops by itself.
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
-    data = json.load(open(os.path.join(folder, "questionnaires.json")))
+    data = read_json(os.path.join(folder, "questionnaires.json"))
     assert set(data) == {"h1"} and list(data["h1"]) == ["godspeed", "legibility", "nasa_tlx"]
     tlx_answers = {item: 5 * (k + 1) for k, item in enumerate(tlx[:-1])} | {tlx[-1]: 5}
     assert data["h1"]["nasa_tlx"]["answers"] == tlx_answers
@@ -576,11 +594,11 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     assert data["h1"]["godspeed"]["scores"] == score(BUILTINS["godspeed"], godspeed)  # (the order does not change them)
     assert data["h1"]["godspeed"]["order"] == godspeed_shown and data["h1"]["nasa_tlx"]["order"] == tlx  # the order shown, stored
     assert data["h1"]["legibility"]["scores"] == {"legibility": 6.0}  # (6 + (8 - 2)) / 2: "surprised" reversed
-    events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
+    events = read_events(os.path.join(folder, "events.jsonl"))
     answered = [(e["by"], e["questionnaire"], e["scores"]) for e in events if e["type"] == "questionnaire_answered"]
     assert [(b, q) for b, q, _ in answered] == [("h1", "nasa_tlx"), ("h1", "godspeed"), ("h1", "legibility")]
     assert [s for *_, s in answered] == [data["h1"][q]["scores"] for q in ("nasa_tlx", "godspeed", "legibility")]
-    session = json.load(open(os.path.join(folder, "session.json")))
+    session = read_json(os.path.join(folder, "session.json"))
     assert session["questionnaires"] == ["nasa_tlx", "godspeed", "legibility"]
     assert session["questionnaires_answered"] == {"h1": ["nasa_tlx", "godspeed", "legibility"]}
     assert session["questionnaires_end"] == "answered" and session["valid"] and session["end_reason"] == "stopped"
@@ -609,11 +627,11 @@ def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros
     page.wait_for_function("() => havenState.prompt === 'Trial over' && havenState.questionnaire === null", timeout=PAGE_TIMEOUT_MS)
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
-    session = json.load(open(os.path.join(folder, "session.json")))
+    session = read_json(os.path.join(folder, "session.json"))
     assert session["questionnaires_answered"] == {"h1": []} and session["questionnaires_end"] == "skipped"
     assert session["valid"] and session["end_reason"] == "stopped" and session["outcome"] == "stopped"
     assert not os.path.exists(os.path.join(folder, "questionnaires.json"))
-    events = [json.loads(line) for line in open(os.path.join(folder, "events.jsonl"))]
+    events = read_events(os.path.join(folder, "events.jsonl"))
     assert [(e.get("action"), e.get("by")) for e in events if e["type"] == "intervention"] == [("skip_questionnaires", "researcher")]
     assert tracebacks("".join(trial.lines)) == []
 
@@ -646,7 +664,7 @@ def test_ctrl_c_while_waiting_for_answers_keeps_the_session_and_says_what_was_an
         time.sleep(0.05)
     trial.proc.send_signal(signal.SIGINT)
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
-    session = json.load(open(os.path.join(trial.session(), "session.json")))
+    session = read_json(os.path.join(trial.session(), "session.json"))
     assert session["questionnaires"] == ["nasa_tlx"] and session["questionnaires_answered"] == {"h1": []}
     assert session["questionnaires_end"] == "interrupted" and session["valid"] and session["outcome"] == "stopped"
     assert tracebacks("".join(trial.lines)) == []

@@ -4,12 +4,11 @@ as away within 5 s and is a `participant_disconnected` event, simulated time (/c
 until they open their page again, then runs on; the log has the pause and the reconnection.
 Skipped, with one line, where no Chromium can be had."""
 
-import json
 import os
 import time
 
 import pytest
-from test_web_browser import PAGE_LOAD_MS, PAGE_TIMEOUT_MS, WebTrial, head_on_scenario, screenshot
+from test_web_browser import PAGE_LOAD_MS, PAGE_TIMEOUT_MS, WebTrial, head_on_scenario, read_events, read_json, screenshot
 
 pytestmark = [pytest.mark.ros, pytest.mark.browser]
 
@@ -69,11 +68,11 @@ def test_a_closed_tab_shows_on_the_console_is_recorded_and_the_pause_stands_the_
 
     console.click("#stop")
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
-    events = [json.loads(line) for line in open(os.path.join(trial.session(), "events.jsonl"))]
+    events = read_events(os.path.join(trial.session(), "events.jsonl"))
     order = [e["type"] for e in events if e["type"] in ("participant_disconnected", "trial_paused", "participant_reconnected", "trial_resumed")]
     assert order == ["participant_disconnected", "trial_paused", "participant_reconnected", "trial_resumed"], order
     (left,) = [e for e in events if e["type"] == "participant_disconnected"]
     (returned,) = [e for e in events if e["type"] == "participant_reconnected"]
     assert left["by"] == returned["by"] == "h1" and left["policy"] == "pause" and returned["away_s"] >= 3.0
-    metrics = json.load(open(os.path.join(trial.session(), "metrics.json")))
+    metrics = read_json(os.path.join(trial.session(), "metrics.json"))
     assert metrics["end_reason"] == "stopped" and metrics["valid"], metrics["invalid_reasons"]  # paused: nothing missed

@@ -8,7 +8,7 @@ import math
 import os
 
 import pytest
-from test_web_browser import PAGE_LOAD_MS, PAGE_TIMEOUT_MS, WebTrial, head_on_scenario, screenshot
+from test_web_browser import PAGE_LOAD_MS, PAGE_TIMEOUT_MS, WebTrial, head_on_scenario, read_events, screenshot
 
 pytestmark = [pytest.mark.ros, pytest.mark.browser]
 
@@ -69,6 +69,6 @@ def test_the_researchers_held_thought_shows_far_away_and_the_participant_looks_d
 
     console.click("#stop")
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
-    events = [json.loads(line) for line in open(os.path.join(trial.session(), "events.jsonl"))]
+    events = read_events(os.path.join(trial.session(), "events.jsonl"))
     (said,) = [e for e in events if e["type"] == "intervention" and e.get("action") == "thought"]
     assert (said["text"], said["hold_s"], said["everywhere"]) == (TEXT, 600.0, True)

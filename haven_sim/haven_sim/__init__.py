@@ -2,4 +2,4 @@
 
 from importlib.metadata import version as _version
 
-__version__ = _version("haven_sim")  # (from package.xml, through setup.py)
+__version__ = _version("haven_sim")  # (from package.xml, through setup.py; the rest of the metadata in pyproject.toml)

@@ -54,6 +54,6 @@ def corner_path(turn_deg: float, spacing_m: float | None = 0.05, leg_m: float = 
     if spacing_m is None:
         points = [(0.0, 0.0), corner, end]
     else:
-        n = int(round(leg_m / spacing_m))
+        n = round(leg_m / spacing_m)
         points = [(leg_m * k / n, 0.0) for k in range(n)] + [(corner[0] + (end[0] - corner[0]) * k / n, (end[1]) * k / n) for k in range(n + 1)]
     return [Pose2D(x, y, 0.0) for x, y in points]

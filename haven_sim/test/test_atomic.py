@@ -59,7 +59,7 @@ def test_a_secret_is_0600_from_its_first_byte_and_never_written_through_a_link(t
     victim = tmp_path / "victim.txt"
     victim.write_text("notes")
     (tmp_path / "link.pem").symlink_to(victim)
-    with pytest.raises(atomic.SymlinkRefused, match="link.pem is a symbolic link: refusing"):
+    with pytest.raises(atomic.SymlinkRefused, match=r"link\.pem is a symbolic link: refusing"):
         atomic.write_secret(tmp_path / "link.pem", b"secret")
     with pytest.raises(atomic.SymlinkRefused):
         atomic.open_secret_log(tmp_path / "link.pem")

@@ -4,6 +4,7 @@ sleep) and in any other (a busy plugin), also for a plugin that swallows every E
 
 from __future__ import annotations
 
+import contextlib
 import pickle
 import threading
 import time
@@ -20,17 +21,13 @@ SHORT = contain.PluginDeadlines(plugin_deadline_participants_s=0.2, plugin_deadl
 
 def sleeps() -> None:
     while True:
-        try:
+        with contextlib.suppress(Exception):
             time.sleep(3600)
-        except Exception:
-            pass
 
 
 def spins() -> None:
     while True:
-        try:
-            pass
-        except Exception:
+        with contextlib.suppress(Exception):
             pass
 
 

@@ -33,7 +33,7 @@ def test_poses_twists_odometry_goals_and_paths():
     goal = conv.goal_from_msg(conv.goal_msg(1.0, Goal(p, "odom")))
     assert close(goal.pose, p) and goal.frame == "odom"
     path = [Pose2D(0, 0, 0), Pose2D(0, 0, 1.0), Pose2D(1, 1, 1.0)]
-    assert all(close(a, b) for a, b in zip(conv.path_from_msg(conv.path_msg(2.0, path)), path))
+    assert all(close(a, b) for a, b in zip(conv.path_from_msg(conv.path_msg(2.0, path)), path, strict=True))
 
 
 def test_time_stamps_humans_and_events():

@@ -45,12 +45,12 @@ def test_no_event_kind_is_spelt_as_a_string_outside_the_events_module():
     root = Path(__file__).resolve().parents[2]
     kinds = {k.value for k in EventKind}
     pattern = re.compile(r"""["']([a-z_]+)["']""")
-    offenders = []
-    for path in root.glob("haven_*/haven_*/**/*.py"):
-        if path.name == "events.py":
-            continue
-        for n, line in enumerate(path.read_text().splitlines(), 1):
-            for word in pattern.findall(line):
-                if word in kinds and not line.lstrip().startswith("#") and not ENUM_MEMBER.match(line):
-                    offenders.append(f"{path.relative_to(root)}:{n}: {word}")
+    offenders = [
+        f"{path.relative_to(root)}:{n}: {word}"
+        for path in root.glob("haven_*/haven_*/**/*.py")
+        if path.name != "events.py"
+        for n, line in enumerate(path.read_text().splitlines(), 1)
+        for word in pattern.findall(line)
+        if word in kinds and not line.lstrip().startswith("#") and not ENUM_MEMBER.match(line)
+    ]
     assert offenders == []

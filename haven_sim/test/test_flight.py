@@ -43,7 +43,7 @@ def sim_for(world, robot=DRONE, **battery):
 
 
 def fly(sim, cmd, seconds):
-    for _ in range(int(round(seconds / sim.config.step_s))):
+    for _ in range(round(seconds / sim.config.step_s)):
         if cmd is not None:
             sim.command_robot(cmd)
         sim.step()

@@ -93,7 +93,7 @@ def test_passes_a_human_on_the_side_with_more_room_on_an_arc(human_y, side):
 
 
 def test_the_pass_is_a_curve_out_held_past_the_person_and_back_to_the_route():
-    sim, nav, follower = setup((6.0, 1.5))
+    _sim, nav, _follower = setup((6.0, 1.5))
     out = nav.update(Pose2D(2.5, 1.5, 0.0), [(6.0, 1.5)], 1.0)
     assert nav.state is NavState.DETOUR and out.path is not None
     kinds = {seg.kind for seg in read_path(out.path, *STYLE).segments}
@@ -116,7 +116,7 @@ def test_human_leaving_before_the_detour_sends_the_robot_back_to_the_original_pa
 def test_a_revert_goes_on_from_where_the_robot_is_not_from_the_routes_start():
     """Defect: a revert republished the whole original route, and the robot drove 10 m back to
     where that route began (hallway_hard, blocker: 8 of 30 seeds)."""
-    sim, nav, follower = setup((9.0, 1.5))
+    _sim, nav, _follower = setup((9.0, 1.5))
     side = nav.update(Pose2D(5.5, 1.5, 0.0), [(9.0, 1.5)], 1.0).events[0]["side"]
     assert nav.state is NavState.DETOUR
     aside = (9.0, 0.4 if side == "left" else 2.6)  # they stepped away from the detour before the curve
@@ -126,7 +126,7 @@ def test_a_revert_goes_on_from_where_the_robot_is_not_from_the_routes_start():
 
 
 def test_unreachable_goal_is_refused_with_a_reason():
-    sim, nav, follower = setup((6.0, 2.5))
+    sim, nav, _follower = setup((6.0, 2.5))
     out = nav.set_goal(sim.robot_pose(), Pose2D(30.0, 1.5, 0.0), 0.0)
     assert out.path == [] and out.events[0].kind is EventKind.PLAN_REFUSED
     assert "outside the map" in out.events[0]["reason"]

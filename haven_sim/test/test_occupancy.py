@@ -10,7 +10,7 @@ from haven_sim.sim.world_file import load_world
 def test_grid_covers_world_with_padding_and_marks_walls():
     g = rasterise(box_world(4.0, thickness=0.1), resolution_m=0.05, padding_m=0.5)
     assert g.origin_x == pytest.approx(-0.55) and g.origin_y == pytest.approx(-0.55)
-    assert g.width == g.height == int(round((4.05 + 0.5 + 0.55) / 0.05))
+    assert g.width == g.height == round((4.05 + 0.5 + 0.55) / 0.05)
     assert g.is_occupied(0.0, 2.0) and g.is_occupied(4.02, 2.0) and g.is_occupied(2.0, 3.98)
     assert not g.is_occupied(2.0, 2.0) and not g.is_occupied(0.2, 0.2)
     assert g.is_occupied(-10, 0)  # outside the grid counts as occupied

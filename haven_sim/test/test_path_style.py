@@ -1,6 +1,7 @@
 """HAVEN's segmentation: rotate vs arc by the thresholds, spacing, collision checks; and reading any
 planner's path (ours, NavFn, Smac, ThetaStar shapes) back into segments."""
 
+import itertools
 import math
 
 import numpy as np
@@ -50,7 +51,7 @@ def test_arc_is_tangent_smooth_and_removes_the_heading_change():
     pts = poses[arc.start : arc.end + 1]
     assert pts[0].yaw == pytest.approx(0.0) and pts[-1].yaw == pytest.approx(math.radians(40.0))
     radii = []
-    for a, b, c in zip(pts, pts[1:], pts[2:]):  # circumradius of consecutive triples: constant on a circle
+    for a, b, c in zip(pts, pts[1:], pts[2:], strict=False):  # circumradius of consecutive triples: constant on a circle
         ab, bc, ca = math.dist(a[:2], b[:2]), math.dist(b[:2], c[:2]), math.dist(c[:2], a[:2])
         area = abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)) / 2
         radii.append(ab * bc * ca / (4 * area))
@@ -60,13 +61,13 @@ def test_arc_is_tangent_smooth_and_removes_the_heading_change():
 def test_spacing_goal_yaw_and_endpoints():
     p = ShapeParams(marker_spacing_m=0.25)
     poses = shape_path([(0.0, 0.0), (2.0, 0.0), (2.0, 3.0)], 0.0, params=p, goal_yaw=math.pi)
-    steps = [math.dist(a[:2], b[:2]) for a, b in zip(poses, poses[1:])]
+    steps = [math.dist(a[:2], b[:2]) for a, b in itertools.pairwise(poses)]
     assert max(steps) <= 0.25 + 1e-9
     assert kinds(poses) == [S, R, S, R]
     assert tuple(poses[-1][:2]) == pytest.approx((2.0, 3.0)) and abs(wrap_angle(poses[-1].yaw - math.pi)) < 1e-9
     rot = read_path(poses, *STYLE).segments[1]
     yaws = [poses[i].yaw for i in range(rot.start, rot.end + 1)]
-    assert all(abs(wrap_angle(b - a)) <= math.radians(15.0) + 1e-9 for a, b in zip(yaws, yaws[1:]))
+    assert all(abs(wrap_angle(b - a)) <= math.radians(15.0) + 1e-9 for a, b in itertools.pairwise(yaws))
 
 
 def test_arc_that_would_hit_something_shrinks_or_becomes_a_rotation():
@@ -103,7 +104,7 @@ def test_classify_round_trips_shape_path():
     segs = read_path(poses, *STYLE).segments
     assert [s.kind for s in segs] == [A, S, R, S, R, S]
     assert segs[0].start == 0 and segs[-1].end == len(poses) - 1
-    assert all(a.end == b.start for a, b in zip(segs, segs[1:]))
+    assert all(a.end == b.start for a, b in itertools.pairwise(segs))
 
 
 def test_invalid_style_is_refused():
@@ -166,7 +167,7 @@ def test_our_planners_paths_read_as_written():
             pts.append((pts[-1][0] + rng.uniform(-4, 4), pts[-1][1] + rng.uniform(-4, 4)))
         poses = shape_path(pts, rng.uniform(-3, 3))
         for seg in read_path(poses, *STYLE).segments:
-            for a, b in zip(poses[seg.start : seg.end], poses[seg.start + 1 : seg.end + 1]):
+            for a, b in zip(poses[seg.start : seg.end], poses[seg.start + 1 : seg.end + 1], strict=False):
                 moved, turned = math.hypot(b.x - a.x, b.y - a.y) > 1e-3, abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) > math.radians(0.5)
                 small = abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) < math.radians(2.0)
                 assert seg.kind is (A if moved and turned else S if moved else R) or (small and seg.kind is S)

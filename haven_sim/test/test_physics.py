@@ -14,7 +14,7 @@ INSTANT = robot_with(max_linear_accel_mps2=1e6, max_angular_accel_rps2=1e6)
 
 
 def drive(sim, cmd, seconds, human=None, human_cmd=None):
-    for _ in range(int(round(seconds / sim.config.step_s))):
+    for _ in range(round(seconds / sim.config.step_s)):
         sim.command_robot(cmd)
         if human:
             sim.command_human(human, human_cmd)

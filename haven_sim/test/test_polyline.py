@@ -28,7 +28,7 @@ def test_projection_matches_the_array_form_bit_for_bit(seed):
     pts[10] = pts[9]  # a rotation in place: a zero-length segment
     pts = np.round(pts, 1) if seed % 2 else pts  # grid-aligned paths make exact ties between segments
     line = Polyline(pts)
-    for x, y, s in zip(rng.uniform(-2, 12, 300), rng.uniform(-2, 12, 300), rng.uniform(0, line.length, 300)):
+    for x, y, s in zip(rng.uniform(-2, 12, 300), rng.uniform(-2, 12, 300), rng.uniform(0, line.length, 300), strict=True):
         for s_from, s_to in ((0.0, math.inf), (s, s + 2.0)):
             p = line.project(float(x), float(y), s_from, s_to)
             lo = line._segment_at(s_from)

@@ -73,7 +73,7 @@ def test_goal_pose_to_plan_to_arrival_without_touching_walls(ros):
     # The node publishes exactly what the planner core makes of the same map, start and goal.
     world = load_world(packaged_world("small_test"))
     expected = Navigator(rasterise(world)).set_goal(world.robot_start, Pose2D(7.2, 4.5, math.pi / 2), 0.0).path
-    assert len(path) == len(expected) and all(a.distance_to(b) < 1e-6 and abs(a.yaw - b.yaw) < 1e-6 for a, b in zip(path, expected))
+    assert len(path) == len(expected) and all(a.distance_to(b) < 1e-6 and abs(a.yaw - b.yaw) < 1e-6 for a, b in zip(path, expected, strict=True))
     assert {s.kind for s in read_path(path, *STYLE).segments} >= {SegmentKind.STRAIGHT, SegmentKind.ROTATE}  # a door to go through, a yaw to end on
     p = rest_pose(ros, odom, events_of(events, EventKind.GOAL_REACHED)[0].stamp)
     assert math.hypot(p.x - 7.2, p.y - 4.5) <= 0.1

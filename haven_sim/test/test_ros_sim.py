@@ -1,5 +1,7 @@
 """Cross-process tests: the simulator and mux nodes as separate processes, driven from this test."""
 
+import contextlib
+import itertools
 import math
 import os
 import signal
@@ -36,10 +38,8 @@ def stderr_of(proc):
     text = []
 
     def said():
-        try:
+        with contextlib.suppress(BlockingIOError):
             text.append(os.read(proc.stderr.fileno(), 1 << 16).decode(errors="replace"))
-        except BlockingIOError:
-            pass
         return "".join(text)
 
     return said
@@ -74,7 +74,7 @@ def test_odom_rate_pose_scan_and_topics(ros):
     ros.wait_for_messages(humans, 2)
     ros.wait_for_messages(h1, 2)
     stamps = [conv.time_from_msg(m.header.stamp) for m in odom[-50:]]
-    gaps = [b - a for a, b in zip(stamps, stamps[1:])]
+    gaps = [b - a for a, b in itertools.pairwise(stamps)]
     assert all(g == pytest.approx(0.02, abs=1e-6) for g in gaps)  # 50 Hz in sim time, none lost
     assert clock and conv.time_from_msg(clock[-1].clock) >= stamps[0]
     m = odom[-1]
@@ -106,7 +106,7 @@ def test_cmd_vel_drives_and_watchdog_stops(ros):
     n = len(odom)
     assert ros.spin_until(lambda: pub.publish(twist(0.4, 0.0)) or odom[-1].twist.twist.linear.x == pytest.approx(0.4, abs=1e-6), 30)
     speeds = [(conv.time_from_msg(m.header.stamp), m.twist.twist.linear.x) for m in odom[n:]]
-    rises = [(v1 - v0) / (t1 - t0) for (t0, v0), (t1, v1) in zip(speeds, speeds[1:]) if v1 > v0]
+    rises = [(v1 - v0) / (t1 - t0) for (t0, v0), (t1, v1) in itertools.pairwise(speeds) if v1 > v0]
     assert rises and max(rises) == pytest.approx(0.5, abs=1e-3)  # the ramp, never steeper
 
     assert ros.spin_until(lambda: abs(odom[-1].twist.twist.linear.x) < 1e-6, 30)  # the watchdog stops it
@@ -411,7 +411,7 @@ def test_an_estop_of_any_qos_stops_teleop_in_the_mux_and_the_simulator(ros):
     transient_best_effort = QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT, durability=DurabilityPolicy.TRANSIENT_LOCAL)
     for name, profile in (("best effort", best_effort), ("reliable", 10), ("latched", qos.LATCHED), ("best effort latched", transient_best_effort)):
         estop = ros.node.create_publisher(Bool, "/haven/estop", profile)
-        assert ros.spin_until(lambda: estop.get_subscription_count() >= 2, 15.0), name  # the mux and the simulator
+        assert ros.spin_until(lambda estop=estop: estop.get_subscription_count() >= 2, 15.0), name  # the mux and the simulator
         del events[:]
 
         def send(stop: bool, estop=estop):

@@ -16,7 +16,7 @@ from haven_sim.sim.world_file import load_world
 
 
 def beam(params, angle):
-    return int(round((angle - params.angle_min) / params.angle_increment)) % params.beams
+    return round((angle - params.angle_min) / params.angle_increment) % params.beams
 
 
 def test_ranges_in_a_square_room():

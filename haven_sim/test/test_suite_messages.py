@@ -24,7 +24,7 @@ def test_expected_names_each_readers_messages_and_only_the_newest_of_a_state_str
 def test_a_flood_on_the_same_topic_neither_delays_nor_displaces_the_suites_goal():
     q = Queue("goal_pose")
     flood = [raw(f"outside {k}") for k in range(1000)]
-    q.add(flood[:500] + [raw("ours")] + flood[500:])
+    q.add([*flood[:500], raw("ours"), *flood[500:]])
     assert not q.missing([digest(raw("ours"))])
     ours, outside = q.split([digest(raw("ours"))])
     assert ours == [raw("ours")] and outside == []  # the rest waits one act: it may be another participant's of this step

@@ -3,4 +3,4 @@
 
 from importlib.metadata import version as _version
 
-__version__ = _version("haven_viz")  # (from package.xml, through setup.py)
+__version__ = _version("haven_viz")  # (from package.xml, through setup.py; the rest of the metadata in pyproject.toml)

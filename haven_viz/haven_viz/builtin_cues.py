@@ -1,4 +1,4 @@
-"""HAVEN's four AR cues, as `haven.cues` plugins (registered in haven_viz's setup.py, as a lab's are):
+"""HAVEN's four AR cues, as `haven.cues` plugins (registered in haven_viz's pyproject.toml, as a lab's are):
 
   * path projection: markers every `marker_spacing_m` along the remaining path, spheres on straight
     parts and cubes on arcs (the shared classifier of haven_sim), `steps_ahead` of them (0 = all),

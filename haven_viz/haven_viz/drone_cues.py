@@ -58,7 +58,7 @@ def corners(path: TrackedPath) -> list[float]:
         _simplify(xy, 0, len(xy) - 1, kept)
     idx = [0, *kept, len(xy) - 1]
     out = []
-    for a, b, c in zip(idx, idx[1:], idx[2:]):
+    for a, b, c in zip(idx, idx[1:], idx[2:], strict=False):
         turn = math.atan2(xy[c][1] - xy[b][1], xy[c][0] - xy[b][0]) - math.atan2(xy[b][1] - xy[a][1], xy[b][0] - xy[a][0])
         if abs(math.remainder(turn, math.tau)) >= math.radians(CORNER_DEG):
             out.append(cum[b])

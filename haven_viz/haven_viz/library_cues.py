@@ -1,5 +1,5 @@
 """A cue library: designs from the HRI literature beside HAVEN's four, as `haven.cues` plugins
-registered as a lab's are (haven_viz/setup.py). They are library cues (`default_on = False`): off
+registered as a lab's are (haven_viz/pyproject.toml). They are library cues (`default_on = False`): off
 in condition `all`, shown in a condition that names them, so HAVEN's own conditions stay what the
 paper had.
 
@@ -26,6 +26,7 @@ paper had.
 
 from __future__ import annotations
 
+import itertools
 import math
 
 from haven_sim.common.geometry import wrap_angle
@@ -55,7 +56,7 @@ def _band(points: list[tuple[float, float]], width: float, z: float) -> tuple[tu
     """A flat band along a polyline, as triangles (TRIANGLE_LIST points)."""
     tris: list[tuple[float, float, float]] = []
     half = width / 2.0
-    for (x0, y0), (x1, y1) in zip(points, points[1:]):
+    for (x0, y0), (x1, y1) in itertools.pairwise(points):
         length = math.hypot(x1 - x0, y1 - y0)
         if length < 1e-9:
             continue
@@ -107,9 +108,10 @@ class ProjectedArrows:
         points = _stations(ctx, HAN_SPACING_M, self.params)
         if len(points) < 2:
             return None
-        pairs = list(zip(points[::2], points[1::2]))[:MAX_ARROWS]  # (arrow_projection pairs them from the destination; we from the robot)
+        # (arrow_projection pairs them from the destination; we from the robot)
+        pairs = list(zip(points[::2], points[1::2], strict=False))[:MAX_ARROWS]
         goal = points[-1]
-        way = tuple(b for _, b in pairs) + (goal,)
+        way = (*tuple(b for _, b in pairs), goal)
         if not markers:
             return Shown(len(pairs), [], way, on_robot=False)
         specs = [

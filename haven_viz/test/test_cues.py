@@ -20,9 +20,8 @@ def of(markers, ns):
 def test_path_markers_every_spacing_and_consumed_as_the_robot_passes():
     cues = ArCues(CueParams(marker_spacing_m=0.4, consume_distance_m=0.2))
     cues.set_path(STRAIGHT)
-    counts = []
-    for x in (0.0, 0.5, 1.0, 2.0, 3.0, 3.9, 1.0):  # the last one: backing up does not bring markers back
-        counts.append(len(of(cues.markers(Pose2D(x, 0.05, 0.0)), PATH_NS)))
+    # (in turn: each call consumes the markers passed; the last one: backing up does not bring markers back)
+    counts = [len(of(cues.markers(Pose2D(x, 0.05, 0.0)), PATH_NS)) for x in (0.0, 0.5, 1.0, 2.0, 3.0, 3.9, 1.0)]
     assert counts[0] == 10  # at 0.4, 0.8, ..., 4.0 (none at the start)
     assert counts == sorted(counts, reverse=True) and counts[-1] == counts[-2] == 0
     ids = [m.id for m in of(cues.markers(Pose2D(3.0, 0.0, 0.0)), PATH_NS)]

@@ -1,7 +1,7 @@
 """haven_viz is installed, importable, and depends on nothing of ours but haven_sim (DESIGN.md)."""
 
 import json
-import re
+import tomllib
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
@@ -19,8 +19,8 @@ def test_depends_only_on_haven_sim_among_our_packages():
     xml = ET.parse(ROOT / "package.xml").getroot()
     ours = {e.text for e in xml.iter("exec_depend") if e.text and e.text.startswith("haven_")}
     assert ours == {"haven_sim"}
-    requires = re.search(r"install_requires=\[([^\]]*)\]", (ROOT / "setup.py").read_text()).group(1)
-    assert "haven_scenarios" not in requires
+    requires = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]["dependencies"]
+    assert "haven_sim" in requires and "haven_scenarios" not in requires
 
 
 def test_shipped_foxglove_layout_is_what_the_generator_makes():

@@ -258,10 +258,7 @@ def _one(args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path,
         return INTERRUPTED
     sessions = trial_dir(root, trial)
     try:
-        if args.batch:
-            stopped = run_batch_trial(args, trial, sessions, study)
-        else:
-            stopped = run_recorded_trial(args, trial, sessions, questionnaires, study)
+        stopped = run_batch_trial(args, trial, sessions, study) if args.batch else run_recorded_trial(args, trial, sessions, questionnaires, study)
     except KeyboardInterrupt:
         stopped = True
     except (OSError, ValueError) as e:

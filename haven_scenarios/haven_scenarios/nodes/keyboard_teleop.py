@@ -7,6 +7,7 @@ their progress from the study log, and the client ends with the trial.
 
 from __future__ import annotations
 
+import contextlib
 import select
 import sys
 import termios
@@ -74,10 +75,8 @@ class KeyboardTeleop(Node):
         self.pub.publish(conv.twist_msg(self.keys.command(now)))
 
     def destroy_node(self) -> None:
-        try:
+        with contextlib.suppress(termios.error, OSError):  # the terminal is gone: nothing to restore
             termios.tcsetattr(sys.stdin, termios.TCSADRAIN, self._saved)
-        except (termios.error, OSError):
-            pass  # the terminal is gone: nothing to restore
         super().destroy_node()
 
 

@@ -4,6 +4,7 @@ and `/haven/participants` (a JSON table for the pages, every second and on each 
 
 from __future__ import annotations
 
+import contextlib
 import json
 import threading
 import time
@@ -70,10 +71,8 @@ class PresenceDesk:
         """/haven/trial_status as relayed (raw CDR): where the trial is."""
         from rclpy.serialization import deserialize_message
 
-        try:
+        with contextlib.suppress(ValueError, AttributeError):
             self.state = str(json.loads(deserialize_message(data, String).data).get("state", self.state))
-        except (ValueError, AttributeError):
-            pass
 
     def ending(self) -> None:
         """The console stops or aborts the trial: a paused one must run again to end (caller holds the lock)."""

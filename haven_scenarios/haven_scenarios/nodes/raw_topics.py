@@ -34,8 +34,10 @@ from haven_sim.nodes.lockstep_inbox import take_all, take_all_with_info
 from haven_sim.nodes.wire import type_name
 from haven_viz.nodes.conversions import viz_specs
 
+DEFAULT_WIRE_PARAMS = WireParams()  # the topic table's defaults (frozen, so one instance serves every call)
 
-def known_topics(params: WireParams = WireParams()) -> list[tuple[str, str, QoSProfile, bool]]:
+
+def known_topics(params: WireParams = DEFAULT_WIRE_PARAMS) -> list[tuple[str, str, QoSProfile, bool]]:
     """The suite's own topics from the topic table (type name, the QoS to read them with: what our
     publishers offer, or, where other nodes may publish with either durability (/plan from Nav2),
     volatile like our own readers, which matches both), and whether our publishers latch it."""
@@ -119,7 +121,7 @@ class RawTopics:
         on_lost: Callable[[str, int, bool], None] | None = None,
         batched: bool = False,
         held: tuple[str, ...] = (),
-        params: WireParams = WireParams(),
+        params: WireParams = DEFAULT_WIRE_PARAMS,
         on_matched: Callable[[str], None] | None = None,
         catch_up: bool = False,
         on_unreadable: Callable[[str, str, str], None] | None = None,

@@ -12,6 +12,7 @@ logged at the recorder's sim time when they arrived, as `ros2 bag record --use-s
 
 from __future__ import annotations
 
+import contextlib
 import json
 import struct
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -100,10 +101,8 @@ class BagWriter:
         closed as far as it was written; `record.repair` rebuilds a bag from it."""
         if self._writer is not None:
             writer, self._writer = self._writer, None  # type: ignore[assignment]
-            try:
+            with contextlib.suppress(OSError):  # (the buffered rest could not be written either; the file is closed)
                 writer.abort()
-            except OSError:
-                pass  # (the buffered rest could not be written either; the file is closed)
 
     def has_topic(self, topic: str) -> bool:
         return topic in self._connections

@@ -37,7 +37,7 @@ def smoothed_speed(t: FloatArray, xy: FloatArray, window_s: float = SMOOTH_S) ->
     n = len(t)
     if n < 2:
         return np.zeros(n)
-    half = max(1, int(round(window_s / 2.0 / max(float(np.median(np.diff(t))), 1e-9))))
+    half = max(1, round(window_s / 2.0 / max(float(np.median(np.diff(t))), 1e-9)))
     lo, hi = np.clip(np.arange(n) - half, 0, n - 1), np.clip(np.arange(n) + half, 0, n - 1)
     return np.asarray(np.hypot(*(xy[hi] - xy[lo]).T) / np.maximum(t[hi] - t[lo], 1e-9))
 

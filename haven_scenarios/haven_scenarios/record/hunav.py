@@ -28,6 +28,7 @@ publishes it) is the held message's distance from the previous /humans message o
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
@@ -74,7 +75,7 @@ def sample(rec: Recording, t0: float, t1: float, rate_hz: float = SAMPLE_HZ) -> 
     it; ticks before either topic's first message are not samples (HuNavSim waits for both)."""
     odom = sorted(rec.odom, key=lambda s: s[0])
     humans = sorted(rec.humans, key=lambda s: s[0])
-    ticks = t0 + np.arange(int(math.floor((t1 - t0) * rate_hz + 1e-9)) + 1) / rate_hz
+    ticks = t0 + np.arange(math.floor((t1 - t0) * rate_hz + 1e-9) + 1) / rate_hz
     ots, hts = np.array([s for s, _ in odom]), np.array([s for s, _ in humans])
     oi, hi = _held(ots, ticks), _held(hts, ticks)
     keep = (oi >= 0) & (hi >= 0)
@@ -128,7 +129,7 @@ def normalize_angle(a: float) -> float:
 
 def cumulative_heading_changes(s: Samples) -> float:
     yaw = s.robot[:, 2]
-    return float(sum(abs(normalize_angle(float(a - b))) for a, b in zip(yaw[:-1], yaw[1:])))
+    return float(sum(abs(normalize_angle(float(a - b))) for a, b in itertools.pairwise(yaw)))
 
 
 def avg_closest_person(s: Samples) -> float | None:

@@ -20,7 +20,7 @@ from rosbags.typesys.store import Typestore
 
 def _used(field: Any) -> list[str]:
     """The message types a field's rosbags descriptor names (nested in sequences and arrays)."""
-    kind, detail = field
+    _kind, detail = field
     if isinstance(detail, str):
         return [detail] if "/" in detail else []
     if isinstance(detail, tuple) and detail and isinstance(detail[0], tuple):

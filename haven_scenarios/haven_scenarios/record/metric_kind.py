@@ -38,7 +38,7 @@ class TrialData:
 
 
 # The groups HAVEN ships (`hunav`: HuNavSim's evaluator), in metrics.json's order; each registered
-# as a plugin of kind `metrics` (setup.py), as a lab's own metric is: a function of TrialData giving
+# as a plugin of kind `metrics` (pyproject.toml), as a lab's own metric is: a function of TrialData giving
 # its columns. A lab's follow in name order.
 OURS = ("robot", "navigation", "proximity", "contacts", "mission", "cues", "passes", "people", "hunav")
 

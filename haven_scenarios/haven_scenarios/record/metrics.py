@@ -8,6 +8,7 @@ trial_end]; HuNavSim's (`hunav`, record/hunav.py) on its own samples, as its eva
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from typing import Any
@@ -108,7 +109,7 @@ def _heading_change(yaw: FloatArray) -> float:
 
 
 def _turning(poses: Sequence[Any]) -> float:
-    return sum(abs(wrap_angle(b.yaw - a.yaw)) for a, b in zip(poses, poses[1:]) if math.isfinite(a.yaw) and math.isfinite(b.yaw))
+    return sum(abs(wrap_angle(b.yaw - a.yaw)) for a, b in itertools.pairwise(poses) if math.isfinite(a.yaw) and math.isfinite(b.yaw))
 
 
 def _navigation(tl: Timeline, events: Sequence[Event], rec: Recording, t0: float, t1: float) -> dict[str, Any]:
@@ -126,7 +127,7 @@ def _navigation(tl: Timeline, events: Sequence[Event], rec: Recording, t0: float
     made = [e.stamp for e in events if e.kind is EventKind.PLAN_MADE]
     planned = sum(float(e["length_m"]) for e in events if e.kind is EventKind.PLAN_MADE and "length_m" in e.data)
     driven = 0.0
-    for a, b in zip(made, [*made[1:], float(tl.t[-1])]):
+    for a, b in zip(made, [*made[1:], float(tl.t[-1])], strict=False):  # (no plan made: nothing driven)
         sel = (tl.t >= a - 1e-9) & (tl.t <= b + 1e-9)
         driven += _length(tl.robot_xy[sel])
     plans = {round(s - t0, 4): p for s, p in rec.plans if t0 - 1e-9 <= s <= t1 + 1e-9}
@@ -200,7 +201,7 @@ def _mission(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
 
 
 def _exposure(tl: Timeline, names: Sequence[str], sel: Any = slice(None)) -> dict[str, float]:
-    dt, cues = tl.dt[sel], tl.cues[sel] if isinstance(sel, slice) else [c for c, keep in zip(tl.cues, sel) if keep]
+    dt, cues = tl.dt[sel], tl.cues[sel] if isinstance(sel, slice) else [c for c, keep in zip(tl.cues, sel, strict=True) if keep]
     shown = {CUE_SPECS[name].exposure: [c.shown(name) for c in cues] for name in names}  # every registered cue the robot has
     return {k: round(float(np.sum(dt[np.asarray(v, dtype=bool)])), 2) for k, v in shown.items()}
 
@@ -208,13 +209,9 @@ def _exposure(tl: Timeline, names: Sequence[str], sel: Any = slice(None)) -> dic
 def signal_lead_times(t: FloatArray, wz: FloatArray, signal: Sequence[int]) -> list[float]:
     """For each turn (|wz| rising above TURN_RATE_RPS), how long the matching turn signal had been
     lit when it began (0 if it was not lit)."""
-    leads = []
     turning = np.abs(wz) > TURN_RATE_RPS
     sig = np.asarray(signal)
-    for i in range(1, len(t)):
-        if turning[i] and not turning[i - 1]:
-            leads.append(_lit_for(t, sig, i, 1 if wz[i] > 0 else -1))
-    return leads
+    return [_lit_for(t, sig, i, 1 if wz[i] > 0 else -1) for i in range(1, len(t)) if turning[i] and not turning[i - 1]]
 
 
 def _lit_for(t: FloatArray, sig: Any, i: int, side: int) -> float:
@@ -314,7 +311,7 @@ def _detour(t: FloatArray, xy: FloatArray, own: Sequence[Event], world: World | 
     points = [(float(xy[0, 0]), float(xy[0, 1]))] + [(float(xy[i, 0]), float(xy[i, 1])) for i in at]
     planner = GridPlanner(rasterise(world), HUMAN_PLANNER)
     try:
-        shortest = sum(planner.plan(a, b).length_m for a, b in zip(points, points[1:]) if math.dist(a, b) > 1e-6)
+        shortest = sum(planner.plan(a, b).length_m for a, b in itertools.pairwise(points) if math.dist(a, b) > 1e-6)
     except PlanningError:
         return None
     return _length(walked) - shortest

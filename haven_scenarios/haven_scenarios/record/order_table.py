@@ -62,5 +62,5 @@ def order_rows(results: Sequence[TrialResults], conditions: Sequence[str]) -> li
     for c in sorted(cells, key=key):
         values = cells[c]
         sd = statistics.stdev(values) if len(values) > 1 else None
-        rows.append(dict(zip(ORDER_EFFECTS, (*c, len(values), statistics.fmean(values), sd))))
+        rows.append(dict(zip(ORDER_EFFECTS, (*c, len(values), statistics.fmean(values), sd), strict=True)))
     return rows

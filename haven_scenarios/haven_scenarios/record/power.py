@@ -119,7 +119,7 @@ class Power:
             "mean_estimate": round(self.mean_estimate, 6) if self.mean_estimate is not None else None,
             "pool": self.cell.pool_size, "pool_effect": round(self.cell.pool_effect, 6), "false_positives": self.false_positives,
             "false_positive_rate": round(self.false_positive_rate, 4),
-            **dict(zip(("fp_ci_low", "fp_ci_high"), (round(x, 4) for x in wilson(self.false_positives, q.reps)))),
+            **dict(zip(("fp_ci_low", "fp_ci_high"), (round(x, 4) for x in wilson(self.false_positives, q.reps)), strict=True)),
         }  # fmt: skip
 
 

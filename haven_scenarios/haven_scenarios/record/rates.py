@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import statistics
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -23,6 +24,6 @@ def rate_stats(arrivals: Sequence[float]) -> RateStats | None:
     """Statistics of the gaps between consecutive arrival times (seconds); None below 2 messages."""
     if len(arrivals) < 2:
         return None
-    gaps = [b - a for a, b in zip(arrivals, arrivals[1:])]
+    gaps = [b - a for a, b in itertools.pairwise(arrivals)]
     mean = sum(gaps) / len(gaps)
     return RateStats(1.0 / mean if mean > 0 else float("inf"), min(gaps), max(gaps), statistics.pstdev(gaps), len(arrivals))

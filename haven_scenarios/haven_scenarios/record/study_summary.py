@@ -89,7 +89,7 @@ def summary_rows(results: Sequence[TrialResults], conditions: Sequence[str]) -> 
         m = mean_interval(participant_means(values.get(key, [])).values())
         rows.append(
             {
-                **dict(zip(SUMMARY[:4], key)),
+                **dict(zip(SUMMARY[:4], key, strict=True)),
                 "n": len(v),
                 "n_invalid": invalid.get(key, 0),
                 "mean": round(statistics.fmean(v), 4) if v else None,
@@ -196,7 +196,7 @@ def draw(results: Sequence[TrialResults], conditions: Sequence[str], questionnai
     cols = min(len(cells), len(scenarios) * max(1, 4 // len(scenarios)))
     rows = math.ceil(len(cells) / cols)
     fig, axes = plt.subplots(rows, cols, figsize=(4.6 * cols, 4.4 * rows), squeeze=False)
-    for ax, (panel, scenario) in zip(axes.flat, cells):
+    for ax, (panel, scenario) in zip(axes.flat, cells, strict=False):
         _panel(ax, panel, scenario, values, conditions)
     for ax in list(axes.flat)[len(cells) :]:
         ax.axis("off")

@@ -93,7 +93,7 @@ def questionnaire_measures(folder: Path) -> tuple[list[Measure], str]:
     if not isinstance(data, dict):
         return [], f"{ANSWERS_FILE} is not a mapping of person to questionnaires"
     for human, sheets in sorted(data.items()):
-        for q, record in sorted(sheets.items()) if isinstance(sheets, dict) else []:
+        for _q, record in sorted(sheets.items()) if isinstance(sheets, dict) else []:
             scores = record.get("scores") if isinstance(record, dict) else None
             for name, v in sorted(scores.items()) if isinstance(scores, dict) else []:
                 if _number(v) is not None:

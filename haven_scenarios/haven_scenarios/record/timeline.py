@@ -90,7 +90,7 @@ class Timeline:
 
     @staticmethod
     def of(rec: Recording, start: float, end: float, step: float = GRID_S) -> Timeline:
-        n = max(1, int(math.floor((end - start) / step + 1e-9)) + 1)
+        n = max(1, math.floor((end - start) / step + 1e-9) + 1)
         grid: FloatArray = start + step * np.arange(n, dtype=float)
         if grid[-1] < end - 1e-9:
             grid = np.append(grid, end)

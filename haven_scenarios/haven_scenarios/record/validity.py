@@ -64,7 +64,7 @@ def _missing_events(rec: Recording, window: tuple[float, float] | None) -> list[
     out = []
     for source, stamps in sorted(by_source.items()):
         seqs = sorted(stamps)
-        missing = sum(b - a - 1 for a, b in zip([0, *seqs], seqs) if b - a > 1 and stamps[b] > start)
+        missing = sum(b - a - 1 for a, b in zip([0, *seqs], seqs, strict=False) if b - a > 1 and stamps[b] > start)
         if missing:
             out.append(f"events: {missing} of {source}'s missing")
     return out

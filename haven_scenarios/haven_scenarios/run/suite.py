@@ -26,7 +26,7 @@ from haven_sim.sim.simulator import SimulatorConfig
 from haven_viz.cues import CUES
 from haven_viz.viz import VizConfig
 
-# (node name, its config class): the order of haven.yaml; SuiteConfig's fields in the same order.
+# (node name, its config class): the order of haven.yaml; SuiteConfig's first fields in the same order.
 NODES: tuple[tuple[str, type[Any]], ...] = (
     (nodes.SIM.name, SimulatorConfig),
     (nodes.MUX.name, MuxConfig),
@@ -65,7 +65,7 @@ class SuiteConfig:
 
     def by_node(self) -> dict[str, Any]:
         """Node name -> its config."""
-        return {name: getattr(self, f.name) for (name, _), f in zip(NODES, fields(self))}
+        return {name: getattr(self, f.name) for (name, _), f in zip(NODES, fields(self)[: len(NODES)], strict=True)}
 
 
 def render(config: SuiteConfig | None = None, header: str = HEADER) -> str:
@@ -82,7 +82,10 @@ def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None, label: s
     file in refusals."""
     p = params or {}
     where = f"{label}: " if label else ""
-    made = {f.name: build_config(cls, node_values(p, name), where=f"{where}{name}: ") for (name, cls), f in zip(NODES, fields(SuiteConfig))}
+    made = {
+        f.name: build_config(cls, node_values(p, name), where=f"{where}{name}: ")
+        for (name, cls), f in zip(NODES, fields(SuiteConfig)[: len(NODES)], strict=True)
+    }
     shared = node_values(p, nodes.SIM.name)  # (the "/**" section's values, as every node reads them)
     lockstep = build_config(LockstepParams, shared, where=f"{where}sim_node: ")
     return SuiteConfig(**made, lockstep=lockstep, deadlines=build_config(PluginDeadlines, shared, where=f"{where}sim_node: "))

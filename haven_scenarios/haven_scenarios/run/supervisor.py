@@ -11,6 +11,7 @@ supervisor dies of anything else (SIGKILL, a crash): PR_SET_PDEATHSIG.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import subprocess
@@ -86,10 +87,8 @@ class Forgiving:
             return len(text)
 
     def flush(self) -> None:
-        try:
+        with contextlib.suppress(OSError):
             self._stream.flush()
-        except OSError:
-            pass
 
 
 @dataclass
@@ -171,10 +170,8 @@ class Supervisor:
             if not alive:
                 break
             for p in alive:
-                try:
+                with contextlib.suppress(ProcessLookupError):
                     os.killpg(p.pid, sig)
-                except ProcessLookupError:
-                    pass
             deadline = time.monotonic() + wait_s
             while time.monotonic() < deadline and any(p.poll() is None for p in alive):
                 time.sleep(0.02)

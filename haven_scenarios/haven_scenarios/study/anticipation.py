@@ -15,6 +15,7 @@ adjusting the walk they want.
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections import deque
 from collections.abc import Callable, Sequence
@@ -159,9 +160,9 @@ def _give_way(task: Point, crossing: tuple[float, int], points: Sequence[Point],
     robot = seen.percept.robot
     if robot is None:
         return None
-    ahead, i = crossing
+    ahead, _i = crossing
     along = math.hypot(points[0][0] - robot.x, points[0][1] - robot.y)
-    along += sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(points[:i], points[1 : i + 1]))
+    along += sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in itertools.pairwise(points))
     robot_speed = max(math.hypot(*seen.robot_v), ROBOT_MIN_MPS)
     mine = ahead / max(math.hypot(*task), 1e-9)
     theirs = along / robot_speed

@@ -185,7 +185,7 @@ class TrialDirector:
             self.contact = True
         if e.kind in (EventKind.PLUGIN_FAILED, EventKind.CUE_FAILED) and self.ended is None:  # (another node's plugin: the trial ends)
             self.ended = EndReason.PLUGIN_FAILED
-            return [self._event(EventKind.TRIAL_END, now, reason=self.ended)] + self._status_messages(now)
+            return [self._event(EventKind.TRIAL_END, now, reason=self.ended), *self._status_messages(now)]
         goal = e.get("goal")
         if e.kind in (EventKind.PLAN_MADE, EventKind.PLAN_REFUSED) and self.sent_goal is not None and isinstance(goal, list) and len(goal) == 2:
             self.diverted = math.dist(goal, (self.sent_goal.x, self.sent_goal.y)) > GOAL_MATCH_M
@@ -203,7 +203,7 @@ class TrialDirector:
             return []
         started = self.start_time is not None
         self.ended = EndReason.STOPPED if command is TrialCommand.STOP and started else EndReason.ABORTED
-        return [self._event(EventKind.TRIAL_END, now, reason=self.ended, by=by)] + self._status_messages(now)
+        return [self._event(EventKind.TRIAL_END, now, reason=self.ended, by=by), *self._status_messages(now)]
 
     def status(self, now: float) -> dict[str, Any]:
         """The trial as a participant's page and the researcher console show it (data, not text):
@@ -276,7 +276,7 @@ class TrialDirector:
         if self.start_time is None or self.ended is not None or self.last_tick is None:
             return []
         self.ended = EndReason.INTERRUPTED
-        return [self._event(EventKind.TRIAL_END, self.last_tick, reason=self.ended)] + self._status_messages(self.last_tick)
+        return [self._event(EventKind.TRIAL_END, self.last_tick, reason=self.ended), *self._status_messages(self.last_tick)]
 
     def tick(self, now: float) -> list[Message]:
         self.last_tick = now
@@ -290,7 +290,7 @@ class TrialDirector:
         """A plugin of this node failed (raised or overran its deadline): the trial ends, not valid."""
         self.ended = EndReason.PLUGIN_FAILED
         failed = Message(topics.EVENTS, contain.failed_event(e, now, Source.SCENARIO), now)
-        return [failed, self._event(EventKind.TRIAL_END, now, reason=self.ended)] + self._status_messages(now)
+        return [failed, self._event(EventKind.TRIAL_END, now, reason=self.ended), *self._status_messages(now)]
 
     def _tick(self, now: float) -> list[Message]:
         mission, robot, level = self.mission, self.robot, self.level
@@ -300,9 +300,10 @@ class TrialDirector:
             if not self.start_allowed or self.held:
                 return []
             self.start_time = now
-            return [self._event(EventKind.TRIAL_START, now, scenario=self.scenario.name)] + self._mission_messages(
-                mission.start(now, robot.pose, level), now
-            )
+            return [
+                self._event(EventKind.TRIAL_START, now, scenario=self.scenario.name),
+                *self._mission_messages(mission.start(now, robot.pose, level), now),
+            ]
         return self._step(now, mission, robot.pose, level)
 
     def _observe(self, now: float, state: RobotState, level: float) -> None:

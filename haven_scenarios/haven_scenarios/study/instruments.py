@@ -82,7 +82,7 @@ def _demographics() -> Questionnaire:
     return Questionnaire("demographics", "About you", "Please answer a few questions about yourself.", 1, 1, 1, items, (), source=GENDER_SOURCE)
 
 
-NARS, DEMOGRAPHICS = _nars(), _demographics()  # registered as plugins in setup.py, beside nasa_tlx and godspeed
+NARS, DEMOGRAPHICS = _nars(), _demographics()  # registered as plugins in pyproject.toml, beside nasa_tlx and godspeed
 
 CONSENT = "consent"
 AGREE, DECLINE = "Yes, I agree to take part", "No, I do not agree"

@@ -37,7 +37,7 @@ def make_walker(
     model: str, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int, params: PersonParams | None = None
 ) -> Participant:
     """A simulated participant of the named model (the names a scenario file uses): a plugin of
-    kind `participants` (ours: walker, blocker and yielder, in setup.py), a class or factory that
+    kind `participants` (ours: walker, blocker and yielder, in pyproject.toml), a class or factory that
     takes these arguments and returns a `Participant`. One that raises or overruns its deadline:
     `contain.PluginFailed` (its trial ends, not valid)."""
     factory = plugins.registry("participants").get(model)

@@ -22,6 +22,7 @@ the robot (that rule uses where the robot really is: a robot at arm's length is 
 
 from __future__ import annotations
 
+import itertools
 import math
 import random
 from collections.abc import Sequence
@@ -270,7 +271,7 @@ class Blocker(Walker):
         robot = seen.percept.robot
         ref = (robot.x, robot.y) if robot is not None else path[0]
         walked = math.hypot(path[0][0] - ref[0], path[0][1] - ref[1])
-        for a, b in zip(path, path[1:]):
+        for a, b in itertools.pairwise(path):
             walked += math.hypot(b[0] - a[0], b[1] - a[1])
             if walked >= self.ahead_m and math.hypot(b[0] - ref[0], b[1] - ref[1]) >= self.ahead_m * 0.8:
                 return b

@@ -77,7 +77,7 @@ class Sight:
         g = self.grid
         delta = targets - np.asarray(eye, dtype=float)
         lengths = np.hypot(delta[:, 0], delta[:, 1])
-        k = max(2, int(math.ceil(float(lengths.max()) / g.resolution_m)) + 1)
+        k = max(2, math.ceil(float(lengths.max()) / g.resolution_m) + 1)
         frac = _fractions(k)
         xs = eye[0] + delta[:, :1] * frac  # (N, k)
         ys = eye[1] + delta[:, 1:] * frac
@@ -140,15 +140,12 @@ def perceive(
     shown = list(markers[: cues.path_markers]) if cues.toggles.on(PATH_NS) else []
     if shown:
         visible = seen(params, sight, me, np.array(shown))
-        path = tuple(p for p, v in zip(shown, visible) if v)
+        path = tuple(p for p, v in zip(shown, visible, strict=True) if v)
     seen_ways, values = [], {}
     for cue, (way, on_robot) in (ways or {}).items():
         if not (cues.toggles.on(cue) and cues.shown(cue)):
             continue
-        if on_robot:
-            part = way if robot_seen else ()
-        else:
-            part = tuple(p for p, v in zip(way, seen(params, sight, me, np.array(way)), strict=True) if v)
+        part = (way if robot_seen else ()) if on_robot else tuple(p for p, v in zip(way, seen(params, sight, me, np.array(way)), strict=True) if v)
         if part:
             seen_ways.append(part)
             values[cue] = cues.value(cue)

@@ -221,17 +221,17 @@ class StudyFile(FileModel):
         listing("{scenario: S, cues: [C, ...]} or a list of them (or of {scenario: S, condition: C})", non_empty=False),
         checked(_practice),  # (runs first: before-validators run last to first)
         Field(json_schema_extra=_one_or_list),
-    ] = []
+    ] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     seeds: Seeds | None = None
-    questionnaires: Annotated[list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)] = []
+    questionnaires: Annotated[list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     # The protocol against order confounds (study/schedule.py).
     blocks: Literal["williams", "latin", "full", "none"] = "williams"
     assignment: Assignment | None = None
     # before and after the whole study (study/instruments.py)
     consent: Consent | None = None
-    before_study: Annotated[list[Any], listing("a list of questionnaires (demographics, nars, ...)", non_empty=False)] = []
-    after_study: Annotated[list[Any], listing("a list of questionnaires (preference, ...)", non_empty=False)] = []
-    robots: Annotated[list[Any], listing("a list of robots: names (haven robots) or robot files", non_empty=False)] = []
+    before_study: Annotated[list[Any], listing("a list of questionnaires (demographics, nars, ...)", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
+    after_study: Annotated[list[Any], listing("a list of questionnaires (preference, ...)", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
+    robots: Annotated[list[Any], listing("a list of robots: names (haven robots) or robot files", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     robot_design: Literal["between", "within"] = "between"
     online: Online | None = None
 

@@ -145,14 +145,14 @@ def _godspeed() -> Questionnaire:
     for series, pairs in GODSPEED_SERIES.items():
         ids = tuple(f"{series}_{k + 1}" for k in range(len(pairs)))
         prompt = GODSPEED_PROMPTS.get(series, GODSPEED_IMPRESSION)
-        items += [Item(i, f"{low} - {high}", low, high, prompt=prompt) for i, (low, high) in zip(ids, pairs)]
+        items += [Item(i, f"{low} - {high}", low, high, prompt=prompt) for i, (low, high) in zip(ids, pairs, strict=True)]
         scales.append((series, ids))
     text = "Rate each pair on the scale between its two words."
     return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales), differential=True, source=GODSPEED_SOURCE)
 
 
 NASA_TLX, GODSPEED = _tlx(), _godspeed()
-BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (NASA_TLX, GODSPEED)}  # ours, registered as plugins in setup.py
+BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (NASA_TLX, GODSPEED)}  # ours, registered as plugins in pyproject.toml
 
 
 def accept_plugin(name: str, value: Any) -> Questionnaire:
@@ -212,7 +212,7 @@ class LikertFile(FileModel):
     title: _text(80) | None = None  # type: ignore[valid-type]
     instructions: _text(MAX_TEXT) = "How much do you agree with each statement?"  # type: ignore[valid-type]
     points: Whole(2, 11) = 7  # type: ignore[valid-type]
-    anchors: Annotated[list[_text(60)], checked(_anchors)] = ["Strongly disagree", "Strongly agree"]  # type: ignore[valid-type]
+    anchors: Annotated[list[_text(60)], checked(_anchors)] = ["Strongly disagree", "Strongly agree"]  # type: ignore[valid-type]  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     items: Annotated[list[LikertItem], listing(f"a list of 1..{MAX_ITEMS} items"), Field(max_length=MAX_ITEMS)]
     shuffle: bool = False  # items in a seeded order per participant and trial
 

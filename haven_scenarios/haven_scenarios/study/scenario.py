@@ -216,7 +216,7 @@ class ScenarioFile(FileModel):
     kind: Literal["hallway", "retrieval"]
     timeout_s: Positive(MAX_TIMEOUT_S) = 300.0  # type: ignore[valid-type]
     end_on_contact: bool = False
-    condition: Annotated[list[Any], listing("a list of cue names (or [all] / [none])")] = ["all"]
+    condition: Annotated[list[Any], listing("a list of cue names (or [all] / [none])")] = ["all"]  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     cues: dict[Any, Any] | None = None  # CueParams fields
     robot: RobotFile | None = None
     humans: Annotated[list[HumanFile], listing("a list", non_empty=False)] | None = None

@@ -269,4 +269,4 @@ def schedule(study: Study) -> list[PlannedTrial]:
 
 def assignment(study: Study) -> dict[str, int]:
     """Participant -> sequence (1..L): what the stored schedule records of the assignment."""
-    return {p: s + 1 for p, s in zip(study.participants, sequences(study))}
+    return {p: s + 1 for p, s in zip(study.participants, sequences(study), strict=True)}

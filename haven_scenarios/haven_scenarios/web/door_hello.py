@@ -18,6 +18,7 @@ connect to it and skip the tokens. So:
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import socket
@@ -85,11 +86,8 @@ class BackendGuard:
         return s
 
     def release(self, s: socket.socket) -> None:
-        with self._lock:
-            try:
-                self._door.discard(s.getsockname()[1])
-            except OSError:
-                pass
+        with self._lock, contextlib.suppress(OSError):
+            self._door.discard(s.getsockname()[1])
         s.close()
 
     def sweep(self) -> int:

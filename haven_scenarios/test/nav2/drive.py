@@ -80,7 +80,7 @@ def main() -> None:
     finish(nav, "followPath")
     nav.goToPose(pose(nav, *WAYPOINTS[0]))
     finish(nav, "goToPose")
-    nav.followWaypoints([pose(nav, *w) for w in WAYPOINTS[1:] + [GOAL]])
+    nav.followWaypoints([pose(nav, *w) for w in [*WAYPOINTS[1:], GOAL]])
     finish(nav, "followWaypoints")
     nav.goThroughPoses([pose(nav, *p) for p in THROUGH])
     finish(nav, "goThroughPoses")

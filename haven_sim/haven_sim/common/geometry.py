@@ -41,8 +41,8 @@ ZERO_TWIST = Twist2D()
 
 def stamp_parts(t: float) -> tuple[int, int]:
     """Seconds as (sec, nanosec) for a builtin_interfaces/Time."""
-    sec = int(math.floor(t))
-    return sec, min(int(round((t - sec) * 1e9)), 999_999_999)
+    sec = math.floor(t)
+    return sec, min(round((t - sec) * 1e9), 999_999_999)
 
 
 def wrap_angle(a: float) -> float:

@@ -138,9 +138,9 @@ def _read_run(xy: FloatArray, offset: int, rotate_above: float, headings: FloatA
     arcs (from, to along the run; a corner driven as an arc spans the chords around it)."""
     cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(xy, axis=0).T))])
     length = float(cum[-1])
-    s = np.linspace(0.0, length, max(2, int(math.ceil(length / SAMPLE_M)) + 1))
+    s = np.linspace(0.0, length, max(2, math.ceil(length / SAMPLE_M) + 1))
     pts = np.column_stack([np.interp(s, cum, xy[:, 0]), np.interp(s, cum, xy[:, 1])])
-    w = max(1, int(round(SMOOTHING_M / (s[1] - s[0]))))  # the chord length, in samples
+    w = max(1, round(SMOOTHING_M / (s[1] - s[0])))  # the chord length, in samples
     i = np.arange(len(s))
 
     def chord(a: np.ndarray, b: np.ndarray) -> FloatArray:

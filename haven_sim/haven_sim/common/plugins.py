@@ -2,9 +2,10 @@
 metrics, cues, path planners, mission behaviours and robots), filled from Python entry
 points (groups `haven.<kind>`).
 
-HAVEN's own items register exactly as a lab's package does, in its setup.py::
+HAVEN's own items register exactly as a lab's package does, in its pyproject.toml::
 
-    entry_points={"haven.participants": ["hesitant = my_lab.people:Hesitant"]}
+    [project.entry-points."haven.participants"]
+    hesitant = "my_lab.people:Hesitant"
 
 A scenario file, a study file, a `--grid` axis or a command-line option names an item; batch mode
 and every node look it up here, so both run the same code. A broken plugin (it does not import, it

@@ -8,6 +8,7 @@ line, entered and left at its ends (the rooms' doorways), wherever the new legs 
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -76,15 +77,15 @@ def _onto(route: list[Point], lane: Lane, visible: VisibleFn) -> list[Point]:
     leave = lane_len if run[-1] < len(s) - 1 else max(a_out - JOIN_M, join)
     middle = (
         [centre.point_at(join)]
-        + [(float(p[0]), float(p[1])) for p, c in zip(centre.points, centre.cumulative) if join < c < leave]
+        + [(float(p[0]), float(p[1])) for p, c in zip(centre.points, centre.cumulative, strict=True) if join < c < leave]
         + [centre.point_at(leave)]
     )
     s_in, s_out = s[run[0]], s[run[-1]]
-    before = [p for p, c in zip(route, line.cumulative) if c < s_in - 1e-9] or [route[0]]
-    after = [p for p, c in zip(route, line.cumulative) if c > s_out + 1e-9] or [route[-1]]
+    before = [p for p, c in zip(route, line.cumulative, strict=True) if c < s_in - 1e-9] or [route[0]]
+    after = [p for p, c in zip(route, line.cumulative, strict=True) if c > s_out + 1e-9] or [route[-1]]
     new = before + middle + after
     new = [p for i, p in enumerate(new) if i == 0 or math.hypot(p[0] - new[i - 1][0], p[1] - new[i - 1][1]) > 1e-6]
-    for a, b in zip(new, new[1:]):
+    for a, b in itertools.pairwise(new):
         if not visible((a[0], a[1]), (b[0], b[1])):
             return route
     return new

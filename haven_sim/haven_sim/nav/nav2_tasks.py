@@ -16,6 +16,7 @@ to get round people so far (each wait and each detour).
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -228,5 +229,5 @@ class NavTask:
             left = math.hypot(target.x - here.x, target.y - here.y)
         if self.kind is not TaskKind.FOLLOW_PATH:
             later = self.poses[self.index :]
-            left += sum(math.hypot(b.x - a.x, b.y - a.y) for a, b in zip(later, later[1:], strict=False))
+            left += sum(math.hypot(b.x - a.x, b.y - a.y) for a, b in itertools.pairwise(later))
         return left

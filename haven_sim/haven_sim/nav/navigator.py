@@ -335,7 +335,7 @@ class Navigator:
         """The route from arc length s (where a detour meets it again) to its end."""
         route, end = self.route, self.route.length - 0.05
         back = [route.point_at(s)] if s < end else []
-        return back + [(float(x), float(y)) for (x, y), c in zip(route.points, route.cumulative) if c > min(s, end) + 1e-6]
+        return back + [(float(x), float(y)) for (x, y), c in zip(route.points, route.cumulative, strict=True) if c > min(s, end) + 1e-6]
 
     def _clear(self, pts: Sequence[Point], humans: Sequence[Point], by: float | None = None) -> bool:
         """Every leg free of walls, and every person further than `by` (default: the "on the path"

@@ -9,6 +9,7 @@ until it is collision-free, or dropped for a rotation if it cannot be. The poses
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -126,7 +127,7 @@ def shape_path(
     m = style or MotionStyle()
     p = params or ShapeParams()
     clear = is_clear or (lambda pts: True)
-    pts = [points[0]] + [q for a, q in zip(points, points[1:]) if _dist(a, q) > 1e-9]
+    pts = [points[0]] + [q for a, q in itertools.pairwise(points) if _dist(a, q) > 1e-9]
     if len(pts) >= 2 and not m.rotate_in_place and abs(wrap_angle(_heading(pts[0], pts[1]) - start_yaw)) > m.arc_max_angle_rad:
         # A holonomic robot sets off straight where a differential drive would rotate first (an
         # arc from its heading would swing it away from the way, up to a loop).

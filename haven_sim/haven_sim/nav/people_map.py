@@ -20,14 +20,14 @@ def with_people(
     g = grid
     data = g.data.copy()
     res = g.resolution_m
-    r_cells = int(math.ceil(radius_m / res))
+    r_cells = math.ceil(radius_m / res)
     rr, cc = np.mgrid[-r_cells : r_cells + 1, -r_cells : r_cells + 1]
     disk = rr**2 + cc**2 <= (radius_m / res) ** 2
     marks: list[tuple[int, int]] = []
     for hx, hy in people:
         r0, c0 = g.cell_of(hx, hy)
-        marks += [(r0 + int(dr), c0 + int(dc)) for dr, dc in zip(rr[disk], cc[disk])]
-    for i in range(int(math.ceil(closed_len_m / (res / 2.0))) + 1):
+        marks += [(r0 + int(dr), c0 + int(dc)) for dr, dc in zip(rr[disk], cc[disk], strict=True)]
+    for i in range(math.ceil(closed_len_m / (res / 2.0)) + 1):
         s = i * res / 2.0
         marks.append(g.cell_of(blocker[0] + closed[0] * s, blocker[1] + closed[1] * s))
     for r, c in marks:

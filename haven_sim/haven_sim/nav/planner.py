@@ -21,6 +21,7 @@ The shipped worlds have 4 to 36 corners (a few ms of sight work).
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 from enum import StrEnum
@@ -84,7 +85,7 @@ class PlanningError(Exception):
 def sight_work(nodes: int, grid: OccupancyGridData) -> int:
     """An upper bound on the grid samples the visibility graph tests: every pair of nodes, each
     sampled every half cell over at most the map's diagonal."""
-    return nodes * (nodes - 1) // 2 * (int(math.ceil(2.0 * math.hypot(grid.width, grid.height))) + 1)
+    return nodes * (nodes - 1) // 2 * (math.ceil(2.0 * math.hypot(grid.width, grid.height)) + 1)
 
 
 def graph_problem(nodes: int, grid: OccupancyGridData, params: PlannerParams) -> str | None:
@@ -135,7 +136,7 @@ def inflated(grid: OccupancyGridData, params: PlannerParams) -> tuple[BoolGrid, 
     occupied = grid.data >= params.occupied_threshold
     if params.unknown_is_obstacle:
         occupied |= grid.data < 0
-    cells = int(math.ceil(params.inflation_m / grid.resolution_m))
+    cells = math.ceil(params.inflation_m / grid.resolution_m)
     return occupied, cells, inflate_square(occupied, cells)
 
 
@@ -180,7 +181,7 @@ class GridPlanner:
         self.params = params or PlannerParams()
         self.occupied, self.cells, self.blocked = inflated(grid, self.params)
         # Without the safety margin: what the robot's body itself must not touch (for arcs).
-        self.hard_blocked = inflate_square(self.occupied, int(math.ceil(self.params.body_radius_m / grid.resolution_m)))
+        self.hard_blocked = inflate_square(self.occupied, math.ceil(self.params.body_radius_m / grid.resolution_m))
         rc = convex_corners(self.blocked)
         self.nodes = self._centres(rc)  # (N, 2) world coordinates
         self._step = grid.resolution_m / 2.0
@@ -302,11 +303,11 @@ class GridPlanner:
             raise PlanningError(f"{what} ({x:.2f}, {y:.2f}) is outside the map", PlanFailure(f"{what}_outside_map"))
         if not self.blocked[r, c]:
             return p
-        k = int(math.ceil(self.params.snap_radius_m / g.resolution_m))
+        k = math.ceil(self.params.snap_radius_m / g.resolution_m)
         r0, r1, c0, c1 = max(0, r - k), min(g.height, r + k + 1), max(0, c - k), min(g.width, c + k + 1)
         free = np.argwhere(~self.blocked[r0:r1, c0:c1])
         if len(free):
-            pts = self._centres(free + (r0, c0))
+            pts = self._centres(free + np.array((r0, c0)))  # (the window's cells, back in the grid's rows and columns)
             d = np.hypot(pts[:, 0] - x, pts[:, 1] - y)
             best = int(np.argmin(d))
             if d[best] <= self.params.snap_radius_m:
@@ -352,5 +353,5 @@ class GridPlanner:
         for p in pts:
             if math.hypot(p[0] - out[-1][0], p[1] - out[-1][1]) > 1e-9:
                 out.append(p)
-        length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(out, out[1:]))
+        length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in itertools.pairwise(out))
         return Plan(out, length)

@@ -151,7 +151,7 @@ class PlannerComponent:
         if self.nav is None or not had:
             return []
         cancelled = event(EventKind.GOAL_CANCELLED, now, Source.PLANNER, by=by or "unknown")
-        return self._messages(self.nav.cancel(), now) + [Message(topics.EVENTS, cancelled, now)]
+        return [*self._messages(self.nav.cancel(), now), Message(topics.EVENTS, cancelled, now)]
 
     def refusal(self, goal: Goal) -> str | None:
         """Why a goal cannot even be planned for, or None."""

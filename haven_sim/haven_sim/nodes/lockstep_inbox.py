@@ -165,7 +165,7 @@ class OutsideReport:
             when, *before = self.said.get(topic, (-OUTSIDE_REPORT_S, 0, 0, 0))
             if counts != tuple(before) and (topic not in self.said or now - when >= OUTSIDE_REPORT_S):
                 self.said[topic] = (now, *counts)
-                new = dict(zip(("ignored", "taken", "dropped"), (c - b for c, b in zip(counts, before))))
+                new = dict(zip(("ignored", "taken", "dropped"), (c - b for c, b in zip(counts, before, strict=True)), strict=True))
                 out.append(Message(topics.EVENTS, event(EventKind.OUTSIDE_INPUT, now, self.source, topic=topic, **new), now))
         for topic, n in (inbox.lost - self.lost_said).items():
             out.append(Message(topics.EVENTS, event(EventKind.INPUT_LOST, now, self.source, topic="/" + topic.lstrip("/"), messages=n), now))

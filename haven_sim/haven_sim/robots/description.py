@@ -12,14 +12,14 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from enum import Enum
+from enum import StrEnum
 from typing import Any
 
 from haven_sim.common.bodies import HUMAN_BODY, BodySpec
 from haven_sim.common.geometry import Point
 
 
-class Kinematics(str, Enum):
+class Kinematics(StrEnum):
     DIFF_DRIVE = "diff_drive"  # drives forward and turns; rotates in place for sharp turns (HAVEN's TurtleBot2)
     OMNI = "omni"  # moves in any direction and turns while it moves: never rotates in place
     AERIAL = "aerial"  # flies holonomically at its cruise height; takes off from and lands on its pad

@@ -172,7 +172,7 @@ class PrimitiveFile(FileModel):
 
 
 class LookFile(FileModel):
-    primitives: Annotated[list[PrimitiveFile], listing("a list of primitives", non_empty=False)] = []
+    primitives: Annotated[list[PrimitiveFile], listing("a list of primitives", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     model: Line(200) | None = None  # type: ignore[valid-type]
 
 
@@ -206,7 +206,7 @@ class RobotFileModel(FileModel):
     cues: CuesFile = CuesFile()
     look: LookFile = LookFile()
     flight: FlightFile | None = None
-    sources: dict[str, Line(300)] = {}  # type: ignore[valid-type]
+    sources: dict[str, Line(300)] = {}  # type: ignore[valid-type]  # noqa: RUF012 (a pydantic field: the default is copied per instance)
 
     @model_validator(mode="after")
     def consistent(self) -> RobotFileModel:

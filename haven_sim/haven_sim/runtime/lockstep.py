@@ -63,9 +63,12 @@ def _int(d: Mapping[str, Any], key: str, what: str, optional: bool = False) -> i
 
 def _digests(d: Mapping[str, Any], key: str, what: str) -> dict[str, list[str]]:
     v = d.get(key)
-    if isinstance(v, dict) and all(isinstance(t, str) and isinstance(ds, list) and all(isinstance(x, str) for x in ds) for t, ds in v.items()):
-        if sum(len(ds) for ds in v.values()) <= MAX_DIGESTS:
-            return {t: list(ds) for t, ds in v.items()}
+    if (
+        isinstance(v, dict)
+        and all(isinstance(t, str) and isinstance(ds, list) and all(isinstance(x, str) for x in ds) for t, ds in v.items())
+        and sum(len(ds) for ds in v.values()) <= MAX_DIGESTS
+    ):
+        return {t: list(ds) for t, ds in v.items()}
     raise ValueError(f"lockstep {what}: {key} must map topics to message digests, got {str(v)[:40]}")
 
 

@@ -47,7 +47,7 @@ class MapFile(FileModel):
 
     image: str
     resolution: Positive()  # type: ignore[valid-type]  # (checked here, so the error names the file that sets it)
-    origin: Annotated[list[float], checked(_origin)] = [0.0, 0.0, 0.0]
+    origin: Annotated[list[float], checked(_origin)] = [0.0, 0.0, 0.0]  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     negate: Annotated[bool, checked(_negate)] = False
     occupied_thresh: float = OCCUPIED_THRESH
     free_thresh: float = FREE_THRESH

@@ -28,8 +28,8 @@ class OccupancyGridData:
     def cell_of(self, x: float, y: float) -> tuple[int, int]:
         """(row, col) of a point, possibly outside the grid."""
         return (
-            int(math.floor((y - self.origin_y) / self.resolution_m)),
-            int(math.floor((x - self.origin_x) / self.resolution_m)),
+            math.floor((y - self.origin_y) / self.resolution_m),
+            math.floor((x - self.origin_x) / self.resolution_m),
         )
 
     def is_occupied(self, x: float, y: float) -> bool:
@@ -58,8 +58,8 @@ def rasterise(
     xmin, ymin, xmax, ymax = world.bounds()
     ox = math.floor((xmin - padding_m) / resolution_m) * resolution_m
     oy = math.floor((ymin - padding_m) / resolution_m) * resolution_m
-    width = int(math.ceil((xmax + padding_m - ox) / resolution_m))
-    height = int(math.ceil((ymax + padding_m - oy) / resolution_m))
+    width = math.ceil((xmax + padding_m - ox) / resolution_m)
+    height = math.ceil((ymax + padding_m - oy) / resolution_m)
     grid = np.zeros((height, width), dtype=np.int8)
     out = OccupancyGridData(resolution_m, width, height, ox, oy, grid)
     for shape in world.solid_shapes(removed, below):

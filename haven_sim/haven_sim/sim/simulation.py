@@ -162,7 +162,7 @@ class Simulation:
         self._battery_was_empty = self.battery.empty
 
     def run(self, duration_s: float) -> None:
-        for _ in range(int(round(duration_s / self.config.step_s))):
+        for _ in range(round(duration_s / self.config.step_s)):
             self.step()
 
     def _emit(self, kind: EventKind, **data: Any) -> None:

@@ -201,4 +201,4 @@ def add_questionnaire_option(group: argparse._ArgumentGroup) -> None:
 def table(rows: list[list[str]]) -> str:
     """Rows of text as aligned columns, for the terminal."""
     widths = [max(len(r[i]) for r in rows) for i in range(len(rows[0]))]
-    return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths)).rstrip() for r in rows)
+    return "\n".join("  ".join(c.ljust(w) for c, w in zip(r, widths, strict=True)).rstrip() for r in rows)

@@ -103,7 +103,7 @@ def plan_rows(trials: list[PlannedTrial]) -> list[list[str]]:
             t.previous_condition or "-",
             str(t.seed),
             "yes" if t.practice else "",
-        ]  # fmt: skip
+        ]
         for t in trials
     ]
     if any(t.robot_name for t in trials):  # (the robot as a design factor: after the condition)

@@ -1,6 +1,6 @@
 """HAVEN's robot catalogue: one robot file per robot in this folder, each figure with its source.
 
-Each is registered in haven_sim's setup.py as a lab's robot is (`turtlebot2 =
+Each is registered in haven_sim's pyproject.toml as a lab's robot is (`turtlebot2 =
 haven_sim.robots.catalogue:turtlebot2`): the attribute is the file's path.
 """
 
