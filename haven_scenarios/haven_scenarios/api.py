@@ -38,12 +38,12 @@ from haven_scenarios.conduct.study_run import StudyRun, run_participant as _run_
 from haven_scenarios.record.progress import TrialProgress, progress
 from haven_scenarios.record.study_report import Report, write_report
 from haven_scenarios.run.domains import DomainRange, parse_domains
-from haven_scenarios.run.grid import TrialSpec, parse_grid, plan_sweep
+from haven_scenarios.run.grid import TrialSpec, for_trial, parse_grid, plan_sweep
 from haven_scenarios.run.stepped import SimState, Simulation
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.sweep import run_rows
 from haven_scenarios.run.trial import TrialResult, run_trial
-from haven_scenarios.study.conditions import check_seed, parse_condition
+from haven_scenarios.study.conditions import check_fit, check_seed, parse_condition
 from haven_scenarios.study.names import study_dir
 from haven_scenarios.study.protocol import load_study
 from haven_scenarios.study.scenario import load_scenario
@@ -73,13 +73,23 @@ __all__ = [
 
 
 def batch_trial(
-    scenario: str = "hallway", seed: int = 0, condition: str | Sequence[str] | None = None, world: str | None = None, params_file: str | None = None
+    scenario: str = "hallway",
+    seed: int = 0,
+    condition: str | Sequence[str] | None = None,
+    world: str | None = None,
+    params_file: str | None = None,
+    robot: str | None = None,
+    person: tuple[int, int] | None = None,
 ) -> TrialResult:
     """One trial without ROS, in this process (the components the nodes run, at their rates):
-    `scenario` a shipped name or a YAML; `condition` the cues shown (None: the scenario's)."""
+    `scenario` a shipped name or a YAML; `condition` the cues shown (None: the scenario's); `robot`
+    a robot's name or a robot file (None: the scenario's); `person` the simulated people as one
+    study participant, (person seed, position in the session)."""
     checked = check_seed(seed)
-    s = load_scenario(scenario, world)
-    return run_trial(s, checked, parse_condition(list(_names(condition) or s.condition)), load_suite_config(params_file, TRIAL_SETS))
+    s = for_trial(load_scenario(scenario, world), robot, person)
+    toggles = parse_condition(list(_names(condition) or s.condition))
+    check_fit(toggles, s.robot)
+    return run_trial(s, checked, toggles, load_suite_config(params_file, TRIAL_SETS))
 
 
 def _names(value: str | Iterable[str] | None) -> tuple[str, ...] | None:
@@ -128,10 +138,17 @@ def sweep(
     workers: int = 1,
     cluster: str | None = None,
     params_file: str | None = None,
+    robot: str | None = None,
 ) -> list[dict[str, Any]]:
-    """Batch trials over scenarios x the grid's axes (condition, model, speed_mps, a participant
-    parameter) x seeds, as `haven batch` runs them; one row per trial, in trial order."""
-    axes = parse_grid([f"{k}={','.join(str(v) for v in _names(values) or ())}" for k, values in (grid or {}).items()])
+    """Batch trials over scenarios x the grid's axes (condition, model, speed_mps, robot, a
+    participant parameter) x seeds, as `haven batch` runs them; one row per trial, in trial order.
+    `robot`: every trial's robot (a grid's `robot` axis gives several)."""
+    grid = dict(grid or {})
+    if robot is not None:
+        if "robot" in grid:
+            raise ValueError("sweep: give the robot once: robot= or a grid's robot axis")
+        grid["robot"] = robot
+    axes = parse_grid([f"{k}={','.join(str(v) for v in _names(values) or ())}" for k, values in grid.items()])
     checked = tuple(check_seed(s, "seeds") for s in seeds)
     specs: list[TrialSpec] = plan_sweep([load_scenario(s) for s in dict.fromkeys(_names(scenarios) or ())], axes, checked)
     rows = list(run_rows(specs, load_suite_config(params_file, TRIAL_SETS), workers, cluster))

@@ -111,3 +111,23 @@ def test_a_simulation_stepped_by_hand_is_the_batch_trial(tmp_path):
     stepped = sim.run()
     assert stepped.end_reason == "completed" and sim.step(10).ended == "completed"  # (nothing past the end)
     assert stepped.metrics == api.batch_trial("hallway", seed=3).metrics  # the very trial `haven batch` runs
+
+
+def test_a_trial_of_another_robot_and_of_one_study_participant_is_the_commands_trial():
+    """`robot=` and `person=` wherever the API runs a trial, as `haven run --robot` and a study give them."""
+    from haven_scenarios.run.grid import for_trial
+
+    r = api.batch_trial("hallway", seed=1, robot="turtlebot4", person=(7, 2))
+    scenario = for_trial(load_scenario("hallway"), "turtlebot4", (7, 2))
+    assert scenario.robot.name == "turtlebot4" and {h.params.person_seed for h in scenario.humans} == {7}
+    assert r.metrics == run_trial(scenario, 1, parse_condition(list(scenario.condition))).metrics
+    assert r.metrics != api.batch_trial("hallway", seed=1).metrics
+    (row,) = api.sweep("hallway", seeds=[1], robot="turtlebot4")
+    assert row["robot"] == "turtlebot4"
+    assert row["duration_s"] == api.batch_trial("hallway", seed=1, robot="turtlebot4").metrics["duration_s"]
+    sim = api.Simulation("hallway", seed=1, robot="turtlebot4", person=(7, 2))
+    assert sim.run().metrics == r.metrics
+    with pytest.raises(ValueError, match=r"^--robot: unknown robot 'r2d2'"):
+        api.batch_trial("hallway", robot="r2d2")
+    with pytest.raises(ValueError, match=r"^sweep: give the robot once"):
+        api.sweep("hallway", seeds=[0], robot="turtlebot4", grid={"robot": "turtlebot2"})

@@ -47,12 +47,11 @@ from haven_scenarios.record.session import (
     write_json,
 )
 from haven_scenarios.run.domains import DomainBusy, DomainRange
-from haven_scenarios.run.grid import robot_spec
+from haven_scenarios.run.grid import for_trial
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config, render
 from haven_scenarios.run.supervisor import ProcessSpec, Supervisor, ros_environment
 from haven_scenarios.study.conditions import check_fit, check_seed, condition_name, parse_condition
 from haven_scenarios.study.names import check_name
-from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.presence import DEFAULT_RECONNECT_TIMEOUT_S, OnDisconnect
 from haven_scenarios.study.rules import EndReason
 from haven_scenarios.study.scenario import TELEOP, ScenarioError, load_scenario
@@ -60,7 +59,6 @@ from haven_scenarios.web.tls import tls_files
 from haven_sim.common import contain, nodes
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import ParamsError
-from haven_sim.robots.robot_kind import resolve_robot
 from haven_sim.runtime.lockstep import UNCAPPED_RTF
 from haven_sim.runtime.process import STOP_SIGNALS
 
@@ -175,14 +173,9 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
             why = allowable("/" + topic.lstrip("/"))
             if why is not None:
                 raise ValueError(f"--allow {topic[:60]}: {why}")
-        scenario = load_scenario(r.scenario, r.world)
-        if r.robot is not None:
-            spec = robot_spec(r.robot)
-            scenario = scenario.for_robot(resolve_robot(spec), spec)
+        scenario = for_trial(load_scenario(r.scenario, r.world), r.robot, r.person)
         toggles = parse_condition(list(r.condition or scenario.condition))
         check_fit(toggles, scenario.robot)
-        if r.person is not None:
-            scenario = in_session(scenario, *r.person)
         if r.teleop is not None:
             ids = list(r.teleop) or [h.id for h in scenario.humans]
             missing = [i for i in ids if i not in {h.id for h in scenario.humans}]

@@ -19,6 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.study.conditions import check_fit, condition_name, parse_condition
+from haven_scenarios.study.participants import in_session
 from haven_scenarios.study.person import PersonParams
 from haven_scenarios.study.scenario import MAX_WALKING_SPEED_MPS, HumanTask, Scenario
 from haven_sim.common import plugins
@@ -44,6 +45,17 @@ def robot_spec(spec: str, option: str = "--robot") -> str:
     except RobotError as e:
         raise ValueError(f"{option}: {e}") from None
     return str(Path(spec).expanduser().resolve()) if is_file_spec(spec) else spec
+
+
+def for_trial(scenario: Scenario, robot: str | None = None, person: tuple[int, int] | None = None) -> Scenario:
+    """`scenario` with `robot` (a registered name or a robot file; None: its own) and its simulated
+    people as one study participant (`person`: (person seed, position in the session); None: as
+    the file has them), as `haven run --robot`, the API and a study run give them. ValueError (one
+    line) for a robot that does not exist or does not fit."""
+    if robot is not None:
+        spec = robot_spec(robot)
+        scenario = scenario.for_robot(resolve_robot(spec), spec)
+    return in_session(scenario, *person) if person is not None else scenario
 
 
 def _number(key: str, text: str) -> float:

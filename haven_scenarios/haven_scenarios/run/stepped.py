@@ -17,9 +17,10 @@ from pathlib import Path
 
 import numpy as np
 
+from haven_scenarios.run.grid import for_trial
 from haven_scenarios.run.suite import TRIAL_SETS, load_suite_config
 from haven_scenarios.run.trial import Trial, TrialResult
-from haven_scenarios.study.conditions import check_seed, parse_condition
+from haven_scenarios.study.conditions import check_fit, check_seed, parse_condition
 from haven_scenarios.study.scenario import Scenario, load_scenario
 from haven_sim.common import topics
 from haven_sim.common.component import Message
@@ -44,7 +45,8 @@ class Simulation:
     """One trial of `scenario` (a shipped name, a scenario YAML or a Scenario), stepped by hand:
     `step(n)` advances n physics steps (`step_s` each), `state()` says where everyone is, `render()`
     draws it, `result()` scores it so far. `condition`: the cues shown (None: the scenario's);
-    `params_file`: a parameter file as `haven batch --params-file` takes."""
+    `params_file`: a parameter file as `haven batch --params-file` takes; `robot` and `person` as
+    `api.batch_trial` takes them."""
 
     def __init__(
         self,
@@ -53,10 +55,13 @@ class Simulation:
         condition: Sequence[str] | None = None,
         world: str | None = None,
         params_file: str | None = None,
+        robot: str | None = None,
+        person: tuple[int, int] | None = None,
     ) -> None:
-        s = scenario if isinstance(scenario, Scenario) else load_scenario(scenario, world)
+        s = for_trial(scenario if isinstance(scenario, Scenario) else load_scenario(scenario, world), robot, person)
         self.markers: dict[tuple[str, int], MarkerSpec] = {}  # the AR markers shown now
         toggles = parse_condition(list(condition if condition is not None else s.condition))
+        check_fit(toggles, s.robot)
         self.trial = Trial(s, check_seed(seed), toggles, load_suite_config(params_file, TRIAL_SETS), watch=([self._marker], [topics.AR_MARKERS]))
         self.step_s = self.trial.sim.config.sim.step_s
 
