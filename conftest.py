@@ -41,7 +41,13 @@ def needs_ros(path: Path) -> bool:
     """Whether a test file imports ROS at its top: rclpy, message packages, the harness, our nodes,
     or another test file beside it that does."""
     for node in ast.parse(path.read_text(), str(path)).body:
-        names = [a.name for a in node.names] if isinstance(node, ast.Import) else [node.module or ""] if isinstance(node, ast.ImportFrom) else []
+        names = (
+            [a.name for a in node.names]
+            if isinstance(node, ast.Import)
+            else [node.module or ""]
+            if isinstance(node, ast.ImportFrom)
+            else []
+        )
         for name in names:
             top = name.partition(".")[0]
             if top in ("rclpy", "ros_harness") or top.endswith(("_msgs", "_srvs")) or ".nodes" in name:
@@ -53,7 +59,12 @@ def needs_ros(path: Path) -> bool:
 
 
 def pytest_ignore_collect(collection_path: Path) -> bool | None:
-    if not ROS_AVAILABLE and collection_path.suffix == ".py" and collection_path.name.startswith("test_") and needs_ros(collection_path):
+    if (
+        not ROS_AVAILABLE
+        and collection_path.suffix == ".py"
+        and collection_path.name.startswith("test_")
+        and needs_ros(collection_path)
+    ):
         _left_out.append(collection_path.name)
         return True
     return None
@@ -86,7 +97,8 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
 def pytest_terminal_summary(terminalreporter: pytest.TerminalReporter) -> None:
     if _left_out:
         terminalreporter.write_line(
-            f"rclpy not installed: {len(_left_out)} test files that need ROS 2 not collected ({', '.join(sorted(_left_out))})"
+            f"rclpy not installed: {len(_left_out)} test files that "
+            f"need ROS 2 not collected ({', '.join(sorted(_left_out))})"
         )
 
 
@@ -112,7 +124,10 @@ def chromium():  # type: ignore[no-untyped-def]
     Chromium or playwright can be had."""
     path = chromium_path()
     if path is None:
-        pytest.skip("no Chromium here (Debian's chromium package; scripts/setup.sh installs it when run as root): browser tests skipped")
+        pytest.skip(
+            "no Chromium here (Debian's chromium package; "
+            "scripts/setup.sh installs it when run as root): browser tests skipped"
+        )
     playwright = pytest.importorskip("playwright.sync_api", reason="playwright is not installed: browser tests skipped")
     with playwright.sync_playwright() as p:
         b = p.chromium.launch(executable_path=path, args=CHROMIUM_ARGS)

@@ -67,10 +67,13 @@ def main() -> None:
     for r in runs:
         r["rows_identical_to_1_worker"] = r.pop("csv") == reference
         print(
-            f"{r['workers']} worker(s), {r['where']:18} {r['trials']} trials in {r['wall_s']:6.1f} s = {r['trials_per_min']:6.1f} trials/min "
-            f"({r['s_per_trial']:.3f} s each), rows identical: {r['rows_identical_to_1_worker']}, load {r['load_before']} -> {r['load_after']}"
+            f"{r['workers']} worker(s), {r['where']:18} {r['trials']} trials in {r['wall_s']:6.1f} s "
+            f"= {r['trials_per_min']:6.1f} trials/min ({r['s_per_trial']:.3f} s each), rows identical: "
+            f"{r['rows_identical_to_1_worker']}, load {r['load_before']} -> {r['load_after']}"
         )
-    rates = {w: sorted(r["trials_per_min"] for r in runs if r["where"] == w) for w in dict.fromkeys(r["where"] for r in runs)}
+    rates = {
+        w: sorted(r["trials_per_min"] for r in runs if r["where"] == w) for w in dict.fromkeys(r["where"] for r in runs)
+    }
     one = rates["this process"]
     for where, rs in rates.items():
         best, median = rs[-1], rs[len(rs) // 2]

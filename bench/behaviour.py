@@ -75,13 +75,16 @@ def summary(rows: list[dict[str, Any]]) -> str:
     leads = [r["pass_signal_lead_s_median"] for r in rows if r["pass_signal_lead_s_median"] is not None]
     dmin = [r["min_human_centre_distance_m"] for r in rows if r["min_human_centre_distance_m"] is not None]
     return (
-        f"completed {ends['completed']}/{n} ({', '.join(f'{k} {v}' for k, v in ends.items() if k != 'completed') or 'no other end'}); "
+        f"completed {ends['completed']}/{n} "
+        f"({', '.join(f'{k} {v}' for k, v in ends.items() if k != 'completed') or 'no other end'}); "
         f"re-plans {sum(r['replans'] for r in rows)}, waits {sum(r['waits'] for r in rows)}; "
-        f"contacts {sum(r['human_contacts'] for r in rows)} (robot on person {sum(r['human_contacts_robot_on_person'] for r in rows)}, "
+        f"contacts {sum(r['human_contacts'] for r in rows)} (robot on person "
+        f"{sum(r['human_contacts_robot_on_person'] for r in rows)}, "
         f"person on robot {sum(r['human_contacts_person_on_robot'] for r in rows)}); "
         f"passes {sum(r['passes'] for r in rows)}, signalled first {sum(r['passes_signalled'] for r in rows)} "
         f"(lead median {statistics.median(leads) if leads else float('nan'):.2f} s); "
-        f"min distance {min(dmin) if dmin else float('nan'):.2f} m (median {statistics.median(dmin) if dmin else float('nan'):.2f})"
+        f"min distance {min(dmin) if dmin else float('nan'):.2f} m (median "
+        f"{statistics.median(dmin) if dmin else float('nan'):.2f})"
     )
 
 

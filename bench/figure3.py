@@ -35,10 +35,18 @@ def main() -> None:
     while trial.director.ended is None and trial.sim.sim.time < 400.0:
         trial.loop.step()
         passed = rec.first(EventKind.REPLANNED)
-        if moment is None and passed is not None and viz.state is not None and viz.state.turn_signal != 0 and viz.robot is not None:
+        if (
+            moment is None
+            and passed is not None
+            and viz.state is not None
+            and viz.state.turn_signal != 0
+            and viz.robot is not None
+        ):
             side = passed["side"]
             humans = {h: p for h, p in viz.humans.items()}
-            markers = viz.cues.frame(viz.robot, [(p.x, p.y) for p in humans.values()], viz.battery, viz.thought, viz.toggles).markers
+            markers = viz.cues.frame(
+                viz.robot, [(p.x, p.y) for p in humans.values()], viz.battery, viz.thought, viz.toggles
+            ).markers
             moment = (trial.sim.sim.time, side, markers + body_markers(viz.robot, humans), passed)
     result = trial.run()
     assert moment is not None, "no pass in this trial"
@@ -51,14 +59,21 @@ def main() -> None:
     x = float(np.mean(tl.robot_xy[span, 0]))
     lead, closest = m["pass_signal_lead_s_median"], m["min_human_centre_distance_m"]
     title = (
-        f"Figure 3: an oncoming person {passed['gap_m']:.1f} m ahead (who has seen the projected path and keeps to their side);\n"
-        f"the robot lights its {side} signal, curves {side} {lead:.1f} s later, and passes {closest:.2f} m from them (centre to centre)"
+        f"Figure 3: an oncoming person {passed['gap_m']:.1f} m ahead "
+        "(who has seen the projected path and keeps to their side);\n"
+        f"the robot lights its {side} signal, curves {side} {lead:.1f} s later, "
+        f"and passes {closest:.2f} m from them (centre to centre)"
     )
     k = int(np.argmin(np.hypot(*(tl.humans["h1"] - tl.robot_xy).T)))
     points = [(*tl.humans["h1"][k], "h1 when passed", "tab:red"), (*tl.robot_xy[k], "robot then", "tab:blue")]
     view = (x - 5.5, -0.2, x + 5.5, 4.2)
-    out = render_scene(trial.scenario.world, world_markers(trial.scenario.world) + markers, args.out, title, trails, points, view=view)
-    print(f"pass at t={passed.stamp - t0:.1f} s, side {side}, signal lead {lead} s, planned clearance {passed['clearance_m']} m")
+    out = render_scene(
+        trial.scenario.world, world_markers(trial.scenario.world) + markers, args.out, title, trails, points, view=view
+    )
+    print(
+        f"pass at t={passed.stamp - t0:.1f} s, side {side}, "
+        f"signal lead {lead} s, planned clearance {passed['clearance_m']} m"
+    )
     print(f"closest approach {closest} m centre to centre; picture at t={when - t0:.1f} s: {out}")
 
 

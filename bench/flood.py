@@ -23,7 +23,14 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from common import OUT, save
 
 FLOOD = Path(__file__).resolve().parents[1] / "haven_scenarios" / "test" / "flood.py"
-SAME = ("robot_time_to_finish_s", "min_human_centre_distance_m", "robot_path_length_m", "replans", "waits", "duration_s")
+SAME = (
+    "robot_time_to_finish_s",
+    "min_human_centre_distance_m",
+    "robot_path_length_m",
+    "replans",
+    "waits",
+    "duration_s",
+)
 
 
 def trial(scenario: str, domain: int, flood: tuple[float, float] | None) -> dict[str, Any]:
@@ -31,9 +38,12 @@ def trial(scenario: str, domain: int, flood: tuple[float, float] | None) -> dict
     with tempfile.TemporaryDirectory() as tmp:
         flooder = None
         if flood is not None:
-            flooder = subprocess.Popen([sys.executable, str(FLOOD), str(flood[0]), str(flood[1])], env=env, stdout=subprocess.PIPE, text=True)
+            flooder = subprocess.Popen(
+                [sys.executable, str(FLOOD), str(flood[0]), str(flood[1])], env=env, stdout=subprocess.PIPE, text=True
+            )
         start = time.monotonic()
-        r = subprocess.run([sys.executable, "-m", "haven_scenarios", "run", scenario, "--domain-id", str(domain), "--sessions", tmp],
+        r = subprocess.run([sys.executable, "-m", "haven_scenarios", "run", scenario,
+                            "--domain-id", str(domain), "--sessions", tmp],
                            env=env, capture_output=True, text=True, timeout=1800)  # fmt: skip
         wall = time.monotonic() - start
         sent = flooder.communicate(timeout=120)[0].strip() if flooder is not None else ""
@@ -41,7 +51,14 @@ def trial(scenario: str, domain: int, flood: tuple[float, float] | None) -> dict
         m = json.loads((folder / "metrics.json").read_text())
         events = [json.loads(line) for line in (folder / "events.jsonl").read_text().splitlines()]
     ignored = sum(e.get("ignored", 0) for e in events if e["type"] == "outside_input")
-    return {"exit": r.returncode, "wall_s": wall, "valid": m["valid"], "ignored": ignored, "sent": sent, **{k: m.get(k) for k in SAME}}
+    return {
+        "exit": r.returncode,
+        "wall_s": wall,
+        "valid": m["valid"],
+        "ignored": ignored,
+        "sent": sent,
+        **{k: m.get(k) for k in SAME},
+    }
 
 
 def main() -> None:
@@ -54,14 +71,20 @@ def main() -> None:
     rows = []
     for k in range(args.runs):
         for flood in (None, (args.hz, args.seconds)):
-            row = {"run": k, "flood": "alone" if flood is None else f"{args.hz:g} Hz x {args.seconds:g} s", **trial(args.scenario, 150 + k, flood)}
+            row = {
+                "run": k,
+                "flood": "alone" if flood is None else f"{args.hz:g} Hz x {args.seconds:g} s",
+                **trial(args.scenario, 150 + k, flood),
+            }
             rows.append(row)
             print(json.dumps(row), flush=True)
     alone = [r for r in rows if r["flood"] == "alone"]
     flooded = [r for r in rows if r["flood"] != "alone"]
     same = all(all(f[key] == alone[0][key] for key in SAME) for f in flooded + alone)
-    print(f"\n{args.scenario}, {args.runs} runs each: alone median {statistics.median(r['wall_s'] for r in alone):.1f} s wall, "
-          f"flooded median {statistics.median(r['wall_s'] for r in flooded):.1f} s (max {max(r['wall_s'] for r in flooded):.1f} s); "
+    print(f"\n{args.scenario}, {args.runs} runs each: "
+          f"alone median {statistics.median(r['wall_s'] for r in alone):.1f} s wall, "
+          f"flooded median {statistics.median(r['wall_s'] for r in flooded):.1f} s "
+          f"(max {max(r['wall_s'] for r in flooded):.1f} s); "
           f"every trial the same: {same}; all valid: {all(r['valid'] for r in rows)}; "
           f"goals ignored per flooded trial: {[r['ignored'] for r in flooded]}")  # fmt: skip
     save(rows, OUT / "flood.json")

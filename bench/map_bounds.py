@@ -65,7 +65,8 @@ CHILD = textwrap.dedent(
                 sim.scan()
         out["steps_500_s"] = time.perf_counter() - t
         t = time.perf_counter(); rasterise(world); out["map_grid_s"] = time.perf_counter() - t
-        t = time.perf_counter(); draw(world, Path(sys.argv[1]).with_suffix(".png")); out["world_show_picture_s"] = time.perf_counter() - t
+        t = time.perf_counter(); draw(world, Path(sys.argv[1]).with_suffix(".png")); \
+out["world_show_picture_s"] = time.perf_counter() - t
         out["total_peak_mb"] = peak_mb()
     print(json.dumps(out))
     """

@@ -115,7 +115,8 @@ def main() -> None:
             print(f"read {r['read_ms']:.0f} ms, merge {r['merge_ms']:.0f} ms, load {r['load_world_ms']:.0f} ms")
         print(f"{r['map']}: sim RTF best {r['sim_rtf_best']:.0f} median {r['sim_rtf_median']:.0f}")
         print(
-            f"{r['map']}: planner preprocess {p['preprocess_ms']:.0f} ms ({p['corner_nodes']} nodes), plan median {p['median_ms']:.2f} ms "  # type: ignore[index]
+            f"{r['map']}: planner preprocess {p['preprocess_ms']:.0f} ms "  # type: ignore[index]
+            f"({p['corner_nodes']} nodes), plan median {p['median_ms']:.2f} ms "  # type: ignore[index]
             f"p99 {p['p99_ms']:.2f} ms, refused {p['refused']}, min clearance {p['min_wall_clearance_m']:.3f} m"  # type: ignore[index]
         )
     save(rows, args.json)

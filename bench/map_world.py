@@ -34,7 +34,12 @@ def map_version(folder: Path) -> Path:
     grid = rasterise(scenario.world)
     pixels = np.where(grid.data[::-1] >= 50, 0, 254).astype(np.uint8)  # image row 0 is the top
     Image.fromarray(pixels).save(folder / "hallway_map.pgm")
-    meta = {"image": "hallway_map.pgm", "mode": "trinary", "resolution": grid.resolution_m, "origin": [grid.origin_x, grid.origin_y, 0.0]}
+    meta = {
+        "image": "hallway_map.pgm",
+        "mode": "trinary",
+        "resolution": grid.resolution_m,
+        "origin": [grid.origin_x, grid.origin_y, 0.0],
+    }
     meta |= {"negate": 0, "occupied_thresh": 0.65, "free_thresh": 0.25}
     (folder / "hallway_map.yaml").write_text(yaml.safe_dump(meta))
     world = yaml.safe_load(Path(scenario.world_path).read_text())
@@ -56,7 +61,9 @@ def trials(spec: str, n: int) -> dict[str, Any]:
         c0 = time.process_time()
         m = run_trial(scenario, seed).metrics
         cpu.append(time.process_time() - c0)
-        outcomes.append((m["end_reason"], m["human_contacts"], m["min_human_centre_distance_m"], m["robot_time_to_finish_s"]))
+        outcomes.append(
+            (m["end_reason"], m["human_contacts"], m["min_human_centre_distance_m"], m["robot_time_to_finish_s"])
+        )
     return {
         "walls": len(scenario.world.walls),
         "load_s": round(load_s, 3),
@@ -73,13 +80,19 @@ def main() -> None:
     ap.add_argument("--trials", type=int, default=10)
     args = ap.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
-        rows = {"hand-written": trials("hallway", args.trials), "from a map": trials(str(map_version(Path(tmp))), args.trials)}
+        rows = {
+            "hand-written": trials("hallway", args.trials),
+            "from a map": trials(str(map_version(Path(tmp))), args.trials),
+        }
         load_world(Path(tmp) / "world.yaml")
-    print(f"{'hallway world':<14} {'walls':>6} {'load s':>7} {'CPU/trial s':>12} {'completed':>10} {'contacts':>9} {'closest m':>10} {'robot s':>8}")
+    print(
+        f"{'hallway world':<14} {'walls':>6} {'load s':>7} {'CPU/trial s':>12} "
+        f"{'completed':>10} {'contacts':>9} {'closest m':>10} {'robot s':>8}"
+    )
     for name, r in rows.items():
         print(
-            f"{name:<14} {r['walls']:>6} {r['load_s']:>7} {r['cpu_per_trial_s']:>12} {r['completed']:>7}/{args.trials:<2} {r['contacts']:>9} "
-            f"{r['closest_m']:>10} {r['robot_time_s']:>8}"
+            f"{name:<14} {r['walls']:>6} {r['load_s']:>7} {r['cpu_per_trial_s']:>12} "
+            f"{r['completed']:>7}/{args.trials:<2} {r['contacts']:>9} {r['closest_m']:>10} {r['robot_time_s']:>8}"
         )
     save(rows, OUT / "map_world.json")
 

@@ -37,7 +37,9 @@ from haven_sim.sim.world_file import load_world
 PARAMS = PlannerParams(safety_margin_m=0.05, body_radius_m=0.18)  # the peers' robot: 0.23 m inflation
 
 
-def sample_pairs(world: World, planner: GridPlanner, n: int, seed: int) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+def sample_pairs(
+    world: World, planner: GridPlanner, n: int, seed: int
+) -> list[tuple[tuple[float, float], tuple[float, float]]]:
     """Uniform over the free space inside the world's walls (the grid also has free padding outside)."""
     rng = np.random.default_rng(seed)
     x0, y0, x1, y1 = world.bounds()
@@ -61,7 +63,12 @@ def clearance(world: World, path: list[tuple[float, float]]) -> float:
 
 def stats(ms: list[float]) -> dict[str, float]:
     a = np.asarray(ms)
-    return {"median_ms": float(np.median(a)), "p90_ms": float(np.percentile(a, 90)), "p99_ms": float(np.percentile(a, 99)), "max_ms": float(a.max())}
+    return {
+        "median_ms": float(np.median(a)),
+        "p90_ms": float(np.percentile(a, 90)),
+        "p99_ms": float(np.percentile(a, 99)),
+        "max_ms": float(a.max()),
+    }
 
 
 def run(name: str, world: World, n: int, seed: int, pairs_file: str | None) -> dict[str, object]:
@@ -117,9 +124,10 @@ def main() -> None:
     for r in rows:
         st = r["with_path_style"]
         print(
-            f"{r['map']:18} pairs {r['pairs']} refused {r['refused']}  preprocess {r['preprocess_ms']:.1f} ms "
-            f"({r['corner_nodes']} nodes)  plan median {r['median_ms']:.2f} ms p90 {r['p90_ms']:.2f} p99 {r['p99_ms']:.2f} "
-            f"max {r['max_ms']:.2f}  mean length {r['mean_length_m']:.2f} m  min clearance {r['min_wall_clearance_m']:.3f} m  "
+            f"{r['map']:18} pairs {r['pairs']} refused {r['refused']}  "
+            f"preprocess {r['preprocess_ms']:.1f} ms ({r['corner_nodes']} nodes)  "
+            f"plan median {r['median_ms']:.2f} ms p90 {r['p90_ms']:.2f} p99 {r['p99_ms']:.2f} max {r['max_ms']:.2f}  "
+            f"mean length {r['mean_length_m']:.2f} m  min clearance {r['min_wall_clearance_m']:.3f} m  "
             f"| plan+style median {st['median_ms']:.2f} p99 {st['p99_ms']:.2f} ms"
         )  # type: ignore[index]
     save(rows, args.json)

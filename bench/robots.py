@@ -46,7 +46,14 @@ def one(job: tuple[str, str, str, int]) -> dict[str, Any]:
         "robot_time_to_finish_s",
         "charge_trips",
     )
-    return {"robot": robot, "scenario": name, "model": model, "seed": seed, "cpu_s": time.process_time() - cpu, **{k: m.get(k) for k in keys}}
+    return {
+        "robot": robot,
+        "scenario": name,
+        "model": model,
+        "seed": seed,
+        "cpu_s": time.process_time() - cpu,
+        **{k: m.get(k) for k in keys},
+    }
 
 
 def line(rows: list[dict[str, Any]]) -> str:
@@ -57,7 +64,8 @@ def line(rows: list[dict[str, Any]]) -> str:
     other = ", ".join(f"{k} {v}" for k, v in ends.items() if k != "completed")
     return (
         f"| {ends['completed']}/{n}{f' ({other})' if other else ''} "
-        f"| {sum(r['human_contacts'] or 0 for r in rows)} ({sum(r['human_contacts_robot_on_person'] or 0 for r in rows)}/"
+        f"| {sum(r['human_contacts'] or 0 for r in rows)} "
+        f"({sum(r['human_contacts_robot_on_person'] or 0 for r in rows)}/"
         f"{sum(r['human_contacts_person_on_robot'] or 0 for r in rows)}) "
         f"| {sum(r['passes'] or 0 for r in rows)} | {sum(r['waits'] or 0 for r in rows)} "
         f"| {min(gaps):.2f} m | {statistics.median(times) if times else float('nan'):.1f} s "
@@ -84,7 +92,10 @@ def main() -> None:
     for r in robots:
         for s in SCENARIOS:
             for m in MODELS:
-                print(f"| {r} | {s} | {m} " + line([x for x in rows if (x["robot"], x["scenario"], x["model"]) == (r, s, m)]))
+                print(
+                    f"| {r} | {s} | {m} "
+                    + line([x for x in rows if (x["robot"], x["scenario"], x["model"]) == (r, s, m)])
+                )
     save(rows, args.json)
 
 

@@ -116,7 +116,10 @@ def main() -> None:
         ("W1 map", w1_world(20), human_rooms(20), 20, 1),
     ]
     results = []
-    print(f"{'workload':18} {'humans':>6} {'scan Hz':>7} {'ms/step':>8} {'RTF best':>8} {'median':>7}  ({args.repeats} runs)")
+    print(
+        f"{'workload':18} {'humans':>6} {'scan Hz':>7} {'ms/step':>8} "
+        f"{'RTF best':>8} {'median':>7}  ({args.repeats} runs)"
+    )
     for name, world, rooms, n, scan_every in cases:
         runs = [run_case(world, rooms, scan_every, args.steps) for _ in range(args.repeats)]
         ranked = sorted(runs, key=lambda r: float(r["rtf"]))  # type: ignore[arg-type]
@@ -135,8 +138,8 @@ def main() -> None:
         }
         results.append(row)
         print(
-            f"{name:18} {n:>6} {50 / scan_every:>7.0f} {best['ms_per_step']:>8.3f} {best['rtf']:>8.0f} {med['rtf']:>7.0f}"
-            f"   humans moved {best['humans_moved']}, lidar hits {best['lidar_hits']}"
+            f"{name:18} {n:>6} {50 / scan_every:>7.0f} {best['ms_per_step']:>8.3f} {best['rtf']:>8.0f} "
+            f"{med['rtf']:>7.0f}   humans moved {best['humans_moved']}, lidar hits {best['lidar_hits']}"
         )
     out = Path(args.json)
     out.parent.mkdir(parents=True, exist_ok=True)

@@ -96,8 +96,9 @@ def main() -> None:
         row = batch(name, args.trials)
         rows.append(row)
         print(
-            f"batch {name:13} {row['trials_per_s']:5.2f} trials/s  CPU per trial median {row['cpu_s_median']:.2f} s "
-            f"(max {row['cpu_s_max']:.2f})  {row['sim_s_mean']:.0f} s simulated each, {row['speedup_vs_real_time']:.0f}x real time"
+            f"batch {name:13} {row['trials_per_s']:5.2f} trials/s  CPU per trial "
+            f"median {row['cpu_s_median']:.2f} s (max {row['cpu_s_max']:.2f})  "
+            f"{row['sim_s_mean']:.0f} s simulated each, {row['speedup_vs_real_time']:.0f}x real time"
         )
     if not args.skip_ros:
         for name in ("hallway", "shared_room"):
@@ -107,8 +108,9 @@ def main() -> None:
                 pace = "lockstep, uncapped" if rtf is None else f"free-running, requested {rtf:g}x"
                 unlike = f"{len(row['metrics_unlike_batch'])} of {row['metrics']}"
                 print(
-                    f"ros   {name:13} {pace}: trial of {row['sim_s']} s simulated in {row['wall_s']} s of wall time "
-                    f"= {row['rtf_achieved']}x, {row['end_reason']}, valid {row['valid']}, metrics unlike batch mode's: {unlike}"
+                    f"ros   {name:13} {pace}: trial of {row['sim_s']} s simulated in "
+                    f"{row['wall_s']} s of wall time = {row['rtf_achieved']}x, {row['end_reason']}, "
+                    f"valid {row['valid']}, metrics unlike batch mode's: {unlike}"
                 )
     save(rows, args.json)
 

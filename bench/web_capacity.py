@@ -82,7 +82,8 @@ async def all_of(urls: list[dict[str, str]], presses: int) -> list[list[float]]:
 def run(n: int, presses: int) -> dict[str, object]:
     trials = []
     try:
-        trials.extend(start(k) for k in range(n))  # one at a time: those started before a failure are still stopped below
+        # one at a time: those started before a failure are still stopped below
+        trials.extend(start(k) for k in range(n))
         lat = asyncio.run(all_of([u for _, u in trials], presses))
         memory = [pss_mb(tree(p.pid)) for p, _ in trials]
     finally:
@@ -92,7 +93,13 @@ def run(n: int, presses: int) -> dict[str, object]:
             p.communicate(timeout=90)
     every = [x for trial in lat for x in trial]
     p95 = statistics.quantiles(every, n=20)[18]
-    return {"trials": n, "median_ms": statistics.median(every), "p95_ms": p95, "pss_mb_per_trial": memory, "latencies_ms": lat}
+    return {
+        "trials": n,
+        "median_ms": statistics.median(every),
+        "p95_ms": p95,
+        "pss_mb_per_trial": memory,
+        "latencies_ms": lat,
+    }
 
 
 def main() -> None:
@@ -107,7 +114,8 @@ def main() -> None:
         mem = row["pss_mb_per_trial"]
         verdict = "holds" if row["p95_ms"] <= GOAL_P95_MS else "misses"
         print(
-            f"{n} live trial(s): velocity -> pose back median {row['median_ms']:.0f} ms, p95 {row['p95_ms']:.0f} ms ({verdict} {GOAL_P95_MS:g} ms); "
+            f"{n} live trial(s): velocity -> pose back median {row['median_ms']:.0f} ms, "
+            f"p95 {row['p95_ms']:.0f} ms ({verdict} {GOAL_P95_MS:g} ms); "
             f"memory per trial (PSS) {', '.join(f'{m:.0f}' for m in mem)} MB"
         )
     save(rows, OUT / "web_capacity.json")

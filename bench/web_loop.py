@@ -72,7 +72,10 @@ def main() -> None:
             browser = p.chromium.launch(executable_path="/usr/bin/chromium", args=ARGS)
             page = browser.new_page(viewport={"width": width, "height": height})
             page.goto(url + f"&quality={a.quality}")
-            page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held'", timeout=120_000)
+            page.wait_for_function(
+                "s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held'",
+                timeout=120_000,
+            )
             page.click("#start")
             page.wait_for_function("havenState.trial.state === 'running'", timeout=60_000)
             for i in range(a.presses):

@@ -40,10 +40,13 @@ def _generated(_app: object) -> None:
 
     out = Path(__file__).parent / "_generated"
     out.mkdir(exist_ok=True)
-    (out / "metric_table.part.md").write_text(markdown(plugins=False) + "\n")  # (HAVEN's own: not whatever this venv has installed)
+    # (HAVEN's own: not whatever this venv has installed)
+    (out / "metric_table.part.md").write_text(markdown(plugins=False) + "\n")
     sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
     helps = {c.dest: c.help for c in sub._choices_actions}
-    rows = ["| command | what it does |", "|---|---|"] + [f"| `haven {name}` | {helps.get(name, '')} |" for name in sub.choices]
+    rows = ["| command | what it does |", "|---|---|"] + [
+        f"| `haven {name}` | {helps.get(name, '')} |" for name in sub.choices
+    ]
     (out / "commands.part.md").write_text("\n".join(rows) + "\n\nEvery command's options: `haven COMMAND --help`.\n")
     (out / "plugin_kinds.part.md").write_text(_plugin_kinds())
 

@@ -16,8 +16,13 @@ folder = Path(sys.argv[1] if len(sys.argv) > 1 else "pilot")
 folder.mkdir(parents=True, exist_ok=True)
 
 # One recorded trial: blocks until the session folder is complete.
-trial = api.recorded_trial("hallway", participant="pilot", condition=["turn_signals"], seed=1, sessions=folder / "sessions")
-print(f"recorded: {trial.folder.name}: {trial.outcome}, valid {trial.valid}, closest approach {trial.metrics['min_human_centre_distance_m']} m")
+trial = api.recorded_trial(
+    "hallway", participant="pilot", condition=["turn_signals"], seed=1, sessions=folder / "sessions"
+)
+print(
+    f"recorded: {trial.folder.name}: {trial.outcome}, valid {trial.valid}, "
+    f"closest approach {trial.metrics['min_human_centre_distance_m']} m"
+)
 
 # A pilot study: three participants, two conditions, counterbalanced.
 study = folder / "pilot_study.yaml"

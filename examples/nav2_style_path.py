@@ -9,7 +9,9 @@ import math
 STEP_M = 0.05  # NavFn's pose spacing on a 5 cm map
 
 
-def turn_then_straight(x: float, y: float, yaw: float, gx: float, gy: float, radius: float) -> list[tuple[float, float]]:
+def turn_then_straight(
+    x: float, y: float, yaw: float, gx: float, gy: float, radius: float
+) -> list[tuple[float, float]]:
     """Points every STEP_M from (x, y) heading `yaw`: an arc of `radius` toward the goal until
     facing it, then straight to (gx, gy)."""
     points = [(x, y)]

@@ -35,7 +35,10 @@ PREFIX = Path(sys.prefix)
 PACKAGES = {
     "tf2_msgs": ("from tf2_msgs.msg import TFMessage; TFMessage()", "TF (/tf, /tf_static)"),
     "geographic_msgs": ("from geographic_msgs.msg import GeoPose; GeoPose()", "Nav2's actions"),
-    "nav2_msgs": ("from nav2_msgs.action import NavigateToPose; NavigateToPose.Goal()", "Nav2's actions (navigate_to_pose, ...)"),
+    "nav2_msgs": (
+        "from nav2_msgs.action import NavigateToPose; NavigateToPose.Goal()",
+        "Nav2's actions (navigate_to_pose, ...)",
+    ),
 }
 
 
@@ -114,7 +117,10 @@ def main(asked: list[str]) -> int:
                 if line.startswith(("Starting >>>", "Finished <<<", "Failed")):
                     print(f"build_interfaces: {line.strip()}", flush=True)
         if colcon.returncode != 0:
-            print(f"build_interfaces: colcon build of {', '.join(wanted)} failed:\n" + "\n".join(said[-15:]), file=sys.stderr)
+            print(
+                f"build_interfaces: colcon build of {', '.join(wanted)} failed:\n" + "\n".join(said[-15:]),
+                file=sys.stderr,
+            )
             return 1
     broken = [p for p in wanted if not imports(p)]
     if broken:

@@ -16,7 +16,9 @@ def build() -> L.Layout:
         "/haven/world_markers": L.BaseRendererRosMarkerTopicSettings(visible=True),
         "/haven/ar_markers": L.BaseRendererRosMarkerTopicSettings(visible=True),
         "/plan": L.BaseRendererPosesTopicSettings(visible=True),
-        "/scan": L.BaseRendererLaserScanTopicSettings(visible=True, point_size=4, color_mode="flat", flat_color="#ff3333"),
+        "/scan": L.BaseRendererLaserScanTopicSettings(
+            visible=True, point_size=4, color_mode="flat", flat_color="#ff3333"
+        ),
         "/odom": L.BaseRendererPoseTopicSettings(visible=True, type="arrow"),
         "/humans": L.BaseRendererPosesTopicSettings(visible=True),
     }
@@ -26,14 +28,19 @@ def build() -> L.Layout:
             topics=topics,
             fixed_frame="map",
             follow_mode="follow-none",
-            camera_state=L.ThreeDeeCameraState(distance=14, perspective=True, phi=50, target=[4.0, 2.5, 0.0], theta_offset=0),
+            camera_state=L.ThreeDeeCameraState(
+                distance=14, perspective=True, phi=50, target=[4.0, 2.5, 0.0], theta_offset=0
+            ),
             publish=L.ThreeDeePublishSettings(type="pose", pose_topic="/goal_pose"),
         ),
     )
     side = L.SplitContainer(
         direction="column",
         items=[
-            L.SplitItem(proportion=2, content=L.RawMessagesPanel(title="Events", config=L.RawMessagesConfig(topic_path="/haven/events"))),
+            L.SplitItem(
+                proportion=2,
+                content=L.RawMessagesPanel(title="Events", config=L.RawMessagesConfig(topic_path="/haven/events")),
+            ),
             L.SplitItem(proportion=1, content=L.ParametersPanel(title="Cue toggles (viz node)")),
         ],
     )

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The whole test suite: setup (idempotent), lint (ruff), the import layers, strict type checks of the core and the nodes
-# (mypy), the docs site, then every test tier (conftest.py says which).
+# The whole test suite: setup (idempotent), lint and format (ruff), the import layers, strict type checks of the core
+# and the nodes (mypy), the docs site, then every test tier (conftest.py says which).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # Bytecode caches on: where PYTHONDONTWRITEBYTECODE is set, every process the tests start compiles
@@ -10,6 +10,7 @@ unset PYTHONDONTWRITEBYTECODE
 ./scripts/setup.sh
 echo "== ruff"
 .venv/bin/ruff check .
+.venv/bin/ruff format --check .
 echo "== import layers (import-linter: .importlinter)"
 .venv/bin/lint-imports
 echo "== mypy (core and nodes, strict)"

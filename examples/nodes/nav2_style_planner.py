@@ -63,7 +63,9 @@ class Nav2StylePlanner(Node):
             return
         # (the suite's map -> odom is the identity; a real planner would look the pose up in TF)
         p = self.odom.pose.pose
-        points = turn_then_straight(p.position.x, p.position.y, yaw_of(p.orientation), goal.pose.position.x, goal.pose.position.y, self.radius)
+        points = turn_then_straight(
+            p.position.x, p.position.y, yaw_of(p.orientation), goal.pose.position.x, goal.pose.position.y, self.radius
+        )
         path = Path()
         path.header.frame_id = "map"
         path.header.stamp = self.get_clock().now().to_msg()
@@ -76,7 +78,9 @@ class Nav2StylePlanner(Node):
         path.poses[-1].pose.orientation = goal.pose.orientation  # the goal yaw on the last pose
         self.plan.publish(path)
         self.current, self.readers = path, self.plan.get_subscription_count()
-        self.get_logger().info(f"plan: {len(path.poses)} poses to ({goal.pose.position.x:.2f}, {goal.pose.position.y:.2f})")
+        self.get_logger().info(
+            f"plan: {len(path.poses)} poses to ({goal.pose.position.x:.2f}, {goal.pose.position.y:.2f})"
+        )
 
 
 def main() -> None:

@@ -33,7 +33,15 @@ from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from haven_scenarios.conduct.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial
+from haven_scenarios.conduct.recorded_trial import (
+    RecordedTrial,
+    RosOptions,
+    TrialError,
+    TrialRequest,
+    WebRequest,
+    plan_trial,
+    record_trial,
+)
 from haven_scenarios.conduct.study_run import StudyRun, run_participant as _run_participant
 from haven_scenarios.record.progress import TrialProgress, progress
 from haven_scenarios.record.study_report import Report, write_report
@@ -120,11 +128,17 @@ def recorded_trial(
         if key in options:
             options[key] = _names(options[key])
     plan = plan_trial(TrialRequest(scenario, **options))
-    return record_trial(plan, Path(sessions), RosOptions(domain_id, network, _domains(domains)), say=(lambda _: None) if quiet else print)
+    return record_trial(
+        plan,
+        Path(sessions),
+        RosOptions(domain_id, network, _domains(domains)),
+        say=(lambda _: None) if quiet else print,
+    )
 
 
 def _domains(text: str | None) -> DomainRange | None:
-    """`domains` as the API takes it ("30-39"), checked as `--domains` is; TrialError (one line) if it is not a range."""
+    """`domains` as the API takes it ("30-39"), checked as `--domains` is; TrialError (one line) if it is not a
+    range."""
     try:
         return parse_domains(text) if text is not None else None
     except ValueError as e:
@@ -150,7 +164,9 @@ def sweep(
         grid["robot"] = robot
     axes = parse_grid([f"{k}={','.join(str(v) for v in _names(values) or ())}" for k, values in grid.items()])
     checked = tuple(check_seed(s, "seeds") for s in seeds)
-    specs: list[TrialSpec] = plan_sweep([load_scenario(s) for s in dict.fromkeys(_names(scenarios) or ())], axes, checked)
+    specs: list[TrialSpec] = plan_sweep(
+        [load_scenario(s) for s in dict.fromkeys(_names(scenarios) or ())], axes, checked
+    )
     rows = list(run_rows(specs, load_suite_config(params_file, TRIAL_SETS), workers, cluster))
     return sorted(rows, key=lambda r: r["trial"])
 

@@ -60,7 +60,9 @@ def batch_trial_row(
     `condition` a cue condition, `model` the participants' model, `robot` a robot, `mission` the
     robot's mission behaviour (`robot.order` of the scenario), `params` node -> {parameter: value}
     as a parameter file's `ros__parameters` (written into `params_dir`)."""
-    axes = parse_grid([f"{k}={v}" for k, v in (("condition", condition), ("model", model), ("robot", robot)) if v is not None])
+    axes = parse_grid(
+        [f"{k}={v}" for k, v in (("condition", condition), ("model", model), ("robot", robot)) if v is not None]
+    )
     s = load_scenario(scenario)
     if mission is not None:
         plugin_item("missions", mission)
@@ -70,7 +72,9 @@ def batch_trial_row(
         if params_dir is None:
             raise ValueError("batch_trial_row: params need a params_dir to write the parameter file into")
         params_file = params_dir / "params.yaml"
-        params_file.write_text(yaml.safe_dump({node: {"ros__parameters": dict(values)} for node, values in params.items()}))
+        params_file.write_text(
+            yaml.safe_dump({node: {"ros__parameters": dict(values)} for node, values in params.items()})
+        )
     specs = plan_sweep([s], axes, (check_seed(seed),))
     (row,) = run_rows(specs, load_suite_config(params_file, TRIAL_SETS))
     return row

@@ -43,10 +43,18 @@ def read(bag: Path) -> tuple[list[float], list[dict], list[list[dict]]]:
             msg = STORE.deserialize_cdr(message.data, schema.name)
             if channel.topic == "/odom":
                 p, v = msg.pose.pose, msg.twist.twist
-                robot_msg = {"x": p.position.x, "y": p.position.y, "yaw": _yaw(p.orientation), "lin": v.linear.x, "ang": v.angular.z}
+                robot_msg = {
+                    "x": p.position.x,
+                    "y": p.position.y,
+                    "yaw": _yaw(p.orientation),
+                    "lin": v.linear.x,
+                    "ang": v.angular.z,
+                }
                 odom.append((_stamp(msg.header), robot_msg))
             elif channel.topic == "/humans":
-                humans.append((_stamp(msg.header), [(p.position.x, p.position.y, _yaw(p.orientation)) for p in msg.poses]))
+                humans.append(
+                    (_stamp(msg.header), [(p.position.x, p.position.y, _yaw(p.orientation)) for p in msg.poses])
+                )
             else:
                 events.append(json.loads(msg.data))
     start = next(e["stamp"] for e in events if e["type"] == "trial_start")
@@ -58,7 +66,14 @@ def read(bag: Path) -> tuple[list[float], list[dict], list[list[dict]]]:
         prev = humans[k - 1] if k else None
         agents_msgs.append(
             [
-                {"x": x, "y": y, "yaw": yaw, "lin": math.hypot(x - prev[1][i][0], y - prev[1][i][1]) / (t - prev[0]) if prev and t > prev[0] else 0.0}
+                {
+                    "x": x,
+                    "y": y,
+                    "yaw": yaw,
+                    "lin": math.hypot(x - prev[1][i][0], y - prev[1][i][1]) / (t - prev[0])
+                    if prev and t > prev[0]
+                    else 0.0,
+                }
                 for i, (x, y, yaw) in enumerate(poses)
             ]
         )
@@ -124,7 +139,10 @@ def metrics(bag: Path) -> dict[str, float]:
             avg += _closest(robot, agents, i)
     minimum = min(max(_dist(robot[i], a) - ROBOT_RADIUS - AGENT_RADIUS, 0.0) for i in range(n) for a in agents[i])
     maximum = max(_dist(robot[i], a) - ROBOT_RADIUS for i in range(n) for a in agents[i])
-    zones = {k: 100.0 * sum(_indicator(_closest(robot, agents, i), k) for i in range(n)) / n for k in ("intimate", "personal", "social")}
+    zones = {
+        k: 100.0 * sum(_indicator(_closest(robot, agents, i), k) for i in range(n)) / n
+        for k in ("intimate", "personal", "social")
+    }
     robot_coll = person_coll = 0
     for i in range(n):
         r = robot[i]

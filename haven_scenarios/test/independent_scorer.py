@@ -54,7 +54,9 @@ def score(bag: Path) -> Score:
     humans.sort(key=lambda h: h[0])
     ht = np.array([t for t, _ in humans])
     people = {
-        i: np.column_stack([np.interp(grid, ht, [p[i][0] for _, p in humans]), np.interp(grid, ht, [p[i][1] for _, p in humans])])
+        i: np.column_stack(
+            [np.interp(grid, ht, [p[i][0] for _, p in humans]), np.interp(grid, ht, [p[i][1] for _, p in humans])]
+        )
         for i in range(len(humans[0][1]))
     }
 

@@ -21,12 +21,24 @@ def test_a_batch_trial_and_a_sweep_are_the_commands_trials(tmp_path):
     r = api.batch_trial("hallway", seed=2, condition=["turn_signals"])
     assert r.metrics == run_trial(load_scenario("hallway"), 2, parse_condition(["turn_signals"])).metrics
     rows = api.sweep(["hallway"], seeds=[0, 1], grid={"condition": ["all", "none"]}, workers=2)
-    assert [(row["trial"], row["condition"], row["seed"]) for row in rows] == [(0, "all", 0), (1, "all", 1), (2, "none", 0), (3, "none", 1)]
+    assert [(row["trial"], row["condition"], row["seed"]) for row in rows] == [
+        (0, "all", 0),
+        (1, "all", 1),
+        (2, "none", 0),
+        (3, "none", 1),
+    ]
     out = tmp_path / "batch.csv"
-    assert main(["batch", "hallway", "--grid", "condition=all,none", "--seeds", "0-1", "--out", str(out), "--workers", "1"]) == 0
+    assert (
+        main(
+            ["batch", "hallway", "--grid", "condition=all,none", "--seeds", "0-1", "--out", str(out), "--workers", "1"]
+        )
+        == 0
+    )
     with out.open() as f:
         from_cli = list(csv.DictReader(f))
-    assert [str(row["min_human_centre_distance_m"]) for row in rows] == [row["min_human_centre_distance_m"] for row in from_cli]
+    assert [str(row["min_human_centre_distance_m"]) for row in rows] == [
+        row["min_human_centre_distance_m"] for row in from_cli
+    ]
 
 
 def test_a_pilot_study_through_the_api(tmp_path):
@@ -55,7 +67,10 @@ def test_a_pilot_study_through_the_api(tmp_path):
         api.study_report(str(study), dir=tmp_path / "empty")
     for options, said in (
         ({"participant": "p99"}, "--participant: 'p99' is not a participant of study pilot"),
-        ({"participant": "p01", "batch": True, "web": True}, "--batch runs simulated participants in this process: not with --web"),
+        (
+            {"participant": "p01", "batch": True, "web": True},
+            "--batch runs simulated participants in this process: not with --web",
+        ),
         ({"participant": "p01", "bach": True}, "run_participant: unknown option 'bach'"),
     ):
         with pytest.raises(api.TrialError, match=said):
@@ -70,7 +85,10 @@ def test_a_pilot_study_through_the_api(tmp_path):
         ({"rtf": 0}, "rtf: must be a positive number, got 0"),
         ({"condition": ["sparkles"]}, "unknown cue 'sparkles'"),
         ({"allow": ["/odom"]}, "--allow /odom: the simulator's and the metrics' topics take no outside publisher"),
-        ({"without": ["sim"]}, "--without: 'sim' is not one of our nodes that can be left out (mux, planner, controller, viz)"),
+        (
+            {"without": ["sim"]},
+            "--without: 'sim' is not one of our nodes that can be left out (mux, planner, controller, viz)",
+        ),
         ({"teleop": ["h9"]}, "--teleop: no human 'h9' in scenario hallway"),
         ({"questionnaires": ["nasa_tlx"]}, "--questionnaire: participants answer in their pages: needs --web"),
         ({"participant": "../x"}, "--participant"),

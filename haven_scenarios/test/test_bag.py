@@ -30,7 +30,9 @@ def test_write_then_read_back(tmp_path):
     assert not_recorded(bag) == {"/x": "no_msgs/msg/Nothing: package no_msgs is not installed here"}
     with open(next(bag.glob("*.mcap")), "rb") as f:
         seen = [(c.topic, m.log_time) for _, c, m in make_reader(f).iter_messages()]
-    assert sorted(seen) == sorted([("/haven/events", 0), ("/haven/events", 1)] + [("/odom", i * 20_000_000) for i in range(5)])
+    assert sorted(seen) == sorted(
+        [("/haven/events", 0), ("/haven/events", 1)] + [("/odom", i * 20_000_000) for i in range(5)]
+    )
     back = list(read_messages(bag))
     assert [m.data for m in back if m.topic == topics.EVENTS] == [e]  # the bad string is skipped
     assert [round(m.data.pose.x, 9) for m in back if m.topic == topics.ODOM] == [round(s.pose.x, 9) for s in odom]
@@ -77,7 +79,12 @@ def test_hostile_messages_recorded_from_other_nodes_are_skipped_when_read(tmp_pa
     bag = tmp_path / "bag"
     written = 0
     with BagWriter(bag) as w:
-        for topic, msg_type in (("/odom", Odometry), ("/battery_state", BatteryState), ("/haven/events", String), ("/haven/cue_state", String)):
+        for topic, msg_type in (
+            ("/odom", Odometry),
+            ("/battery_state", BatteryState),
+            ("/haven/events", String),
+            ("/haven/cue_state", String),
+        ):
             w.add_topic(topic, type_name(msg_type))
             for _, msg in hostile_messages(type_name(msg_type)):
                 w.write(topic, written, bytes(serialize_message(msg)))

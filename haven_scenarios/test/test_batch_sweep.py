@@ -28,7 +28,11 @@ def test_grid_axes_and_seeds_parse_in_the_order_given():
     "grid, says",
     [
         (["mood=happy"], "--grid: unknown key 'mood' (valid: " + ", ".join((*TASK_KEYS, *param_keys())) + ")"),
-        (["model=teleop"], f"--grid model: 'teleop' is not a simulated participant model ({', '.join(plugins.registry('participants').names())})"),
+        (
+            ["model=teleop"],
+            "--grid model: 'teleop' is not a simulated participant model "
+            f"({', '.join(plugins.registry('participants').names())})",
+        ),
         (["speed_mps=fast"], "--grid speed_mps: expected numbers, got 'fast'"),
         (["speed_mps=9"], "--grid speed_mps: must be within (0, 3] m/s, got 9"),
         (["condition=lasers"], "unknown cue 'lasers'"),
@@ -53,7 +57,9 @@ def test_the_sweep_is_every_combination_and_sets_only_the_simulated_participants
     room = load_scenario("shared_room")
     mixed = replace(load_scenario("hallway_pair"), name="mixed")
     mixed = replace(mixed, humans=(mixed.humans[0], HumanTask("h2", "teleop", mixed.humans[1].route, 1.0)))
-    specs = plan_sweep([room, mixed], {"condition": ("all", "none"), "model": ("yielder",), "speed_mps": (0.7,)}, (4, 5))
+    specs = plan_sweep(
+        [room, mixed], {"condition": ("all", "none"), "model": ("yielder",), "speed_mps": (0.7,)}, (4, 5)
+    )
     assert [s.index for s in specs] == list(range(8))
     assert [(s.scenario.name, s.columns()["condition"], s.seed) for s in specs[:4]] == [
         ("shared_room", "all", 4),
@@ -78,7 +84,11 @@ def test_the_sweep_is_every_combination_and_sets_only_the_simulated_participants
 def test_without_a_grid_each_scenario_keeps_its_own_condition_and_participants():
     hallway = load_scenario("hallway")
     (spec,) = plan_sweep([hallway], {}, (3,))
-    assert spec.scenario == hallway and spec.columns()["condition"] == "turn_signals" and spec.columns()["model"] == hallway.humans[0].model
+    assert (
+        spec.scenario == hallway
+        and spec.columns()["condition"] == "turn_signals"
+        and spec.columns()["model"] == hallway.humans[0].model
+    )
 
 
 SWEEP = (["shared_room"], {"model": ("walker", "yielder")}, (0, 1))
@@ -99,7 +109,12 @@ def test_rows_are_byte_identical_in_this_process_in_fresh_worker_processes_and_o
     assert _sweep_csv(tmp_path, "pool", workers=2) == one
     assert _sweep_csv(tmp_path, "dask", workers=2, cluster="local") == one
     read = list(csv.DictReader(one.decode().splitlines()))
-    assert [(r["model"], r["seed"]) for r in read] == [("walker", "0"), ("walker", "1"), ("yielder", "0"), ("yielder", "1")]
+    assert [(r["model"], r["seed"]) for r in read] == [
+        ("walker", "0"),
+        ("walker", "1"),
+        ("yielder", "0"),
+        ("yielder", "1"),
+    ]
     assert len({r["min_human_centre_distance_m"] for r in read}) > 1  # the model and the seed change the trial
 
 
@@ -127,8 +142,14 @@ def test_finished_rows_are_journaled_as_they_come(tmp_path, monkeypatch):
     "argv, says",
     [
         (["batch", "hallway", "--grid", "mood=happy"], "haven: error: --grid: unknown key 'mood' (valid: "),
-        (["batch", "hallway", "--seeds", "0-3", "--trials", "4"], "haven: error: give either --seeds or --trials/--seed, not both"),
-        (["batch", "hallway", "--condition", "none", "--grid", "condition=all"], "haven: error: give either --condition or --grid condition"),
+        (
+            ["batch", "hallway", "--seeds", "0-3", "--trials", "4"],
+            "haven: error: give either --seeds or --trials/--seed, not both",
+        ),
+        (
+            ["batch", "hallway", "--condition", "none", "--grid", "condition=all"],
+            "haven: error: give either --condition or --grid condition",
+        ),
         (["batch", "hallway", "--cluster", "myhost"], "haven: error: --cluster: expected local or a scheduler address"),
         (["batch", "hallway", "--workers", "0"], "argument --workers: must be 1..1024, got 0"),
     ],
@@ -145,7 +166,10 @@ def test_bad_batch_arguments_are_one_line(argv, says, capsys):
 def test_a_participant_parameter_is_a_grid_axis_set_on_every_simulated_person():
     room = load_scenario("shared_room")
     specs = plan_sweep([room], {"reaction_s": (0.3, 2.0), "fov_deg": (60.0,)}, (0,))
-    assert [(s.scenario.humans[0].params.reaction_s, s.scenario.humans[0].params.fov_deg) for s in specs] == [(0.3, 60.0), (2.0, 60.0)]
+    assert [(s.scenario.humans[0].params.reaction_s, s.scenario.humans[0].params.fov_deg) for s in specs] == [
+        (0.3, 60.0),
+        (2.0, 60.0),
+    ]
     columns = {
         "trial": 1,
         "scenario": "shared_room",
@@ -173,4 +197,8 @@ def test_in_a_log_the_progress_is_a_line_now_and_then_with_rate_and_eta(monkeypa
         progress.update(done)
     progress.close()
     lines = out.getvalue().splitlines()
-    assert len(lines) == 3 and all("trials/min, about" in line and "s to go" in line for line in lines[:2]) and lines[2].startswith("3/3 trials in ")
+    assert (
+        len(lines) == 3
+        and all("trials/min, about" in line and "s to go" in line for line in lines[:2])
+        and lines[2].startswith("3/3 trials in ")
+    )

@@ -41,7 +41,9 @@ def test_sim_runs_and_ctrl_c_stops_every_process(ros):
     proc = start_haven(ros, "sim", "--rtf", "2", "--params-file", str(params))
     ros.wait_for_messages(odom, 10)
     # Every node up: viz (markers), planner (plan) and controller (cmd_vel_nav), each discovered in its own time.
-    assert ros.spin_until(lambda: all(ros.node.count_publishers(t) > 0 for t in ("/haven/ar_markers", "/plan", "/cmd_vel_nav")), 30)
+    assert ros.spin_until(
+        lambda: all(ros.node.count_publishers(t) > 0 for t in ("/haven/ar_markers", "/plan", "/cmd_vel_nav")), 30
+    )
     assert ros.node.count_publishers("/cmd_vel_nav") == 1  # one controller
     kids = children_of(proc.pid)
     nav2 = importlib.util.find_spec("nav2_msgs") is not None  # (Nav2's servers where nav2_msgs is built)
@@ -109,8 +111,13 @@ def test_goto_sends_a_goal_to_a_running_suite_and_waits_for_arrival(ros):
 
 
 def test_snapshot_saves_what_the_viewers_show(ros, tmp_path):
-    alone = ros.run([*HAVEN, "snapshot", str(tmp_path / "none.png"), "--timeout", "2", "--domain-id", str(ros.domain_id)], timeout_s=60)
-    assert alone.returncode == 1 and "no HAVEN suite here" in alone.stderr and alone.stderr.count("\n") == 1, alone.stderr
+    alone = ros.run(
+        [*HAVEN, "snapshot", str(tmp_path / "none.png"), "--timeout", "2", "--domain-id", str(ros.domain_id)],
+        timeout_s=60,
+    )
+    assert alone.returncode == 1 and "no HAVEN suite here" in alone.stderr and alone.stderr.count("\n") == 1, (
+        alone.stderr
+    )
     assert not (tmp_path / "none.png").exists()
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     start_haven(ros, "sim", "--rtf", "2")

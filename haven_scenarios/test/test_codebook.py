@@ -17,7 +17,14 @@ LEGIBILITY = likert({"name": "legibility", "points": 7, "items": ITEMS}, "study:
 
 
 def results() -> list[TrialResults]:
-    design = {"participant": "p1", "trial_id": "hallway-all", "practice": False, "scenario": "hallway", "condition": "all", "valid": True}
+    design = {
+        "participant": "p1",
+        "trial_id": "hallway-all",
+        "practice": False,
+        "scenario": "hallway",
+        "condition": "all",
+        "valid": True,
+    }
     measures = (
         Measure("", "hunav_intimate_space_intrusions_pct", 0.4),
         Measure("", "min_human_centre_distance_m", 0.76),
@@ -40,7 +47,10 @@ def test_every_measure_of_the_long_table_has_one_row_with_its_unit_source_and_fo
     entries = {(e.per_person, e.measure): e for e in book.entries(long)}
     assert len(entries) == 8  # h1's and h2's time_not_moving_s are one measure
     hunav = entries[(False, "hunav_intimate_space_intrusions_pct")]
-    assert hunav.formula == "robotics-upo/hunav_sim@afa9743 hunav_evaluator/hunav_evaluator/hunav_metrics.py:intimate_space_intrusions"
+    assert (
+        hunav.formula
+        == "robotics-upo/hunav_sim@afa9743 hunav_evaluator/hunav_evaluator/hunav_metrics.py:intimate_space_intrusions"
+    )
     assert "HuNavSim" in hunav.source and "surface" in hunav.definition
     assert entries[(False, "min_human_centre_distance_m")].source == "HAVEN for ROS 2"
     standing = entries[(True, "time_not_moving_s")]
@@ -48,7 +58,11 @@ def test_every_measure_of_the_long_table_has_one_row_with_its_unit_source_and_fo
     assert entries[(True, "intimate_centre_intrusion_s")].wide_column == "<h>_<zone>_centre_intrusion_s"
     assert entries[(True, "contacts_robot_on_person")].wide_column == "<h>_contacts"
     safety = entries[(True, "godspeed_safety")]
-    assert safety.unit == "points 1-5" and safety.formula.endswith("questionnaires.py:score") and "safety_1" in safety.definition
+    assert (
+        safety.unit == "points 1-5"
+        and safety.formula.endswith("questionnaires.py:score")
+        and "safety_1" in safety.definition
+    )
     assert "reverse-scored (1+7-answer): surprise" in entries[(True, "legibility")].definition
     assert entries[(False, "a_labs_metric")].definition.startswith("undocumented")
 
@@ -68,5 +82,10 @@ def test_participants_csv_columns_have_rows_of_their_own_table():
 
     entries = {e.measure: e for e in codebook.participants(StudyInstruments(before=(NARS,)))}
     s3 = entries["nars_s3_emotions"]
-    assert s3.table == "participants.csv" and s3.unit == "points 3-15" and "reverse-scored" in s3.definition and "Nomura" in s3.source
+    assert (
+        s3.table == "participants.csv"
+        and s3.unit == "points 3-15"
+        and "reverse-scored" in s3.definition
+        and "Nomura" in s3.source
+    )
     assert {"participant", "not_asked"} <= set(entries)

@@ -48,7 +48,13 @@ def test_colcon_build_of_ros2_ws_installs_runnable_nodes(tmp_path):
     bad = tmp_path / "bad.yaml"
     bad.write_text("name: x\n")
     run = subprocess.run(
-        [sys.executable, str(install / "haven_sim" / "lib" / "haven_sim" / "sim_node"), "--ros-args", "-p", f"world:={bad}"],
+        [
+            sys.executable,
+            str(install / "haven_sim" / "lib" / "haven_sim" / "sim_node"),
+            "--ros-args",
+            "-p",
+            f"world:={bad}",
+        ],
         capture_output=True,
         text=True,
         timeout=60,

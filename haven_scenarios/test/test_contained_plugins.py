@@ -21,14 +21,30 @@ HAVEN = [sys.executable, "-m", "haven_scenarios"]
 HANG = "took longer than its deadline of"
 
 
-def batch(tmp_path: Path, env: dict[str, str], grid: str, workers: int, name: str) -> tuple[list[dict[str, str]], float]:
+def batch(
+    tmp_path: Path, env: dict[str, str], grid: str, workers: int, name: str
+) -> tuple[list[dict[str, str]], float]:
     """The rows of a `haven batch` of the short scenario over `grid`, and its wall time."""
     (tmp_path / "short.yaml").write_text(SCENARIO.format(model="walker"))
     (tmp_path / "params.yaml").write_text(PARAMS)
     out = tmp_path / f"{name}.csv"
-    argv = [*HAVEN, "batch", str(tmp_path / "short.yaml"), "--grid", grid, "--seeds", "0", "--workers", str(workers), "--out", str(out)]
+    argv = [
+        *HAVEN,
+        "batch",
+        str(tmp_path / "short.yaml"),
+        "--grid",
+        grid,
+        "--seeds",
+        "0",
+        "--workers",
+        str(workers),
+        "--out",
+        str(out),
+    ]
     started = time.monotonic()
-    r = subprocess.run([*argv, "--params-file", str(tmp_path / "params.yaml")], env=env, capture_output=True, text=True, timeout=300)
+    r = subprocess.run(
+        [*argv, "--params-file", str(tmp_path / "params.yaml")], env=env, capture_output=True, text=True, timeout=300
+    )
     took = time.monotonic() - started
     assert r.returncode == 0 and "Traceback" not in r.stderr, r.stderr[-3000:]
     assert not (tmp_path / f"{name}.csv.rows.jsonl").exists()  # (the journal gave way to the CSV)
@@ -44,9 +60,14 @@ def test_a_raising_and_a_hanging_participant_model_end_their_own_trials_not_the_
     # One stuck where no deadline can interrupt it: its worker process is ended, the row says why.
     stuck = by_model.pop("stuck")
     assert stuck["valid"] == "False" and stuck["end_reason"] == "plugin_failed" and stuck["duration_s"] == ""
-    assert stuck["invalid_reasons"] == "participant model stuck failed (still running 4 s past its deadline of 1 s, where it cannot be interrupted)"
+    assert (
+        stuck["invalid_reasons"]
+        == "participant model stuck failed (still running 4 s past its deadline of 1 s, where it cannot be interrupted)"
+    )
     assert by_model["walker"]["valid"] == "True" and by_model["walker"]["end_reason"] == "completed"
-    assert by_model["raiser"]["invalid_reasons"] == "participant model raiser failed (RuntimeError: the lab's model broke)"
+    assert (
+        by_model["raiser"]["invalid_reasons"] == "participant model raiser failed (RuntimeError: the lab's model broke)"
+    )
     assert by_model["hanger"]["invalid_reasons"] == f"participant model hanger failed ({HANG} 1 s)"
     for failed in (by_model["raiser"], by_model["hanger"]):
         assert failed["valid"] == "False" and failed["end_reason"] == "plugin_failed"

@@ -65,7 +65,9 @@ def test_in_the_crossing_room_the_cues_change_the_persons_own_walk():
 
 @pytest.mark.parametrize("model", ["walker", "blocker", "yielder"])
 def test_every_participant_model_crosses_the_room_without_contact(model):
-    for r in sweep("shared_room_crossing", ["all"], range(4), model) + sweep("shared_room_crossing", ["none"], range(4), model):
+    for r in sweep("shared_room_crossing", ["all"], range(4), model) + sweep(
+        "shared_room_crossing", ["none"], range(4), model
+    ):
         assert r["end_reason"] == "completed" and r["human_contacts"] == 0, (model, r["seed"], r["condition"])
 
 

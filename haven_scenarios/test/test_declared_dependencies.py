@@ -115,5 +115,7 @@ def test_every_runtime_import_is_declared_in_pyproject_and_package_xml(package):
 def test_every_rosdep_key_in_package_xml_is_known():
     """A key rosdep cannot resolve stops `rosdep install` for the whole workspace."""
     keys = rosdep_keys()
-    unknown = [f"{p}: {d}" for p in PACKAGES for d in sorted(exec_depends(p)) if d.startswith("python3-") and d not in keys]
+    unknown = [
+        f"{p}: {d}" for p in PACKAGES for d in sorted(exec_depends(p)) if d.startswith("python3-") and d not in keys
+    ]
     assert unknown == []

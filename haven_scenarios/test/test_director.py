@@ -157,10 +157,18 @@ def test_a_held_trial_starts_on_the_researchers_start_and_says_so_on_the_latched
     out = d.tick(0.2)
     assert EventKind.TRIAL_START in [e.kind for e in by_topic(out, topics.EVENTS)]
     s = status(out)
-    assert s["state"] == "running" and s["humans"]["h1"] == {"rooms": ["B", "A", "D", "C"], "rooms_done": 0, "next_room": "B", "done": False}
+    assert s["state"] == "running" and s["humans"]["h1"] == {
+        "rooms": ["B", "A", "D", "C"],
+        "rooms_done": 0,
+        "next_room": "B",
+        "done": False,
+    }
 
 
-@pytest.mark.parametrize(("command", "started", "reason"), [("stop", True, "stopped"), ("abort", True, "aborted"), ("stop", False, "aborted")])
+@pytest.mark.parametrize(
+    ("command", "started", "reason"),
+    [("stop", True, "stopped"), ("abort", True, "aborted"), ("stop", False, "aborted")],
+)
 def test_stop_and_abort_end_the_trial_with_their_reason(command, started, reason):
     d = TrialDirector(load_scenario("hallway"))
     d.held = not started

@@ -51,7 +51,9 @@ def test_every_pypi_dependency_rosdep_would_install_is_pinned_by_the_image_and_t
     pip_keys = {k: v["ubuntu"]["pip"]["packages"][0] for k, v in ours.items()}
     used = set()
     for pkg in ("haven_sim", "haven_viz", "haven_scenarios"):
-        used |= set(re.findall(r"<exec_depend>(python3-[a-z0-9-]+-pip)</exec_depend>", (ROOT / pkg / "package.xml").read_text()))
+        used |= set(
+            re.findall(r"<exec_depend>(python3-[a-z0-9-]+-pip)</exec_depend>", (ROOT / pkg / "package.xml").read_text())
+        )
     wanted = {pip_keys[k] for k in used}
     text = (ROOT / "docker" / "Dockerfile").read_text()
     pinned = re.search(r"pip install --no-cache-dir -c /tmp/constraints.txt ([a-z0-9 -]+)", text)

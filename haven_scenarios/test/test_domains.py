@@ -31,7 +31,9 @@ def lab(tmp_path, monkeypatch):
     holders = []
 
     def hold(*ids):
-        p = subprocess.Popen([sys.executable, "-c", HOLD, *map(str, ids)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True)
+        p = subprocess.Popen(
+            [sys.executable, "-c", HOLD, *map(str, ids)], stdin=subprocess.PIPE, stdout=subprocess.PIPE, text=True
+        )
         holders.append(p)
         assert p.stdout.readline() == "held\n"
 
@@ -66,7 +68,9 @@ def test_the_inherited_domain_inside_the_range_is_kept_and_the_environment_gives
     got.release()
     lab(35)
     moved = claim_domain(None, {"ROS_DOMAIN_ID": "35", "HAVEN_DOMAINS": "30-39"})
-    assert moved.domain_id == 30 and moved.moved_from[0] == 35 and "another HAVEN suite runs on it" in moved.moved_from[1]
+    assert (
+        moved.domain_id == 30 and moved.moved_from[0] == 35 and "another HAVEN suite runs on it" in moved.moved_from[1]
+    )
     moved.release()
     flag_wins = claim_domain(None, {"ROS_DOMAIN_ID": "35", "HAVEN_DOMAINS": "30-39"}, domains=DomainRange(50, 52))
     assert flag_wins.domain_id == 50 and flag_wins.moved_from == (35, "outside --domains 50-52")
@@ -77,7 +81,13 @@ def test_an_explicit_domain_outside_the_range_and_a_bad_range_are_refused_in_one
         claim_domain(12, {}, domains=parse_domains("30-39"))
     with pytest.raises(DomainBusy, match=r"^--domain-id 12 is outside HAVEN_DOMAINS 30-39: "):
         claim_domain(12, {"HAVEN_DOMAINS": "30-39"})
-    with pytest.raises(DomainBusy, match=r"^HAVEN_DOMAINS: expected A-B, ROS domain ids 0..232 \(e.g. 30-39\), got 'thirty' \(in the environment\)$"):
+    with pytest.raises(
+        DomainBusy,
+        match=(
+            r"^HAVEN_DOMAINS: expected A-B, ROS domain ids 0..232 "
+            r"\(e.g. 30-39\), got 'thirty' \(in the environment\)$"
+        ),
+    ):
         claim_domain(None, {"HAVEN_DOMAINS": "thirty"})
     assert claim_domain(33, {}, domains=parse_domains("30-39")).domain_id == 33
     assert parse_domains(" 7 ") == DomainRange(7, 7)
@@ -104,12 +114,17 @@ def test_haven_run_says_in_one_line_when_no_domain_of_the_range_is_free(lab, tmp
     lab(40, 41)
     code = main(["run", "hallway", "--sessions", str(tmp_path / "s")])
     err = capsys.readouterr().err
-    said = "no free ROS domain in HAVEN_DOMAINS 40-41: each runs another HAVEN suite or other ROS nodes (widen the range, or stop one)"
+    said = (
+        "no free ROS domain in HAVEN_DOMAINS 40-41: each runs another "
+        "HAVEN suite or other ROS nodes (widen the range, or stop one)"
+    )
     assert code == 2 and err == f"haven: error: {said}\n"
     assert not (tmp_path / "s").exists()  # nothing started, nothing written
 
 
-def test_serve_hands_the_range_to_every_participants_runner_and_refuses_one_smaller_than_its_capacity(tmp_path, monkeypatch):
+def test_serve_hands_the_range_to_every_participants_runner_and_refuses_one_smaller_than_its_capacity(
+    tmp_path, monkeypatch
+):
     from haven_scenarios import api
     from haven_scenarios.conduct.online_study import open_server
     from haven_scenarios.conduct.recorded_trial import TrialError
@@ -121,10 +136,14 @@ def test_serve_hands_the_range_to_every_participants_runner_and_refuses_one_smal
         seat = server.seats.join("PANEL_1")
         argv = server.runner_argv(seat)
         assert argv[argv.index("--domains") + 1] == "30-39"
-        assert not any(seat.key in a for a in argv)  # the session key is not on the command line (`ps` shows it to anyone)
+        # the session key is not on the command line (`ps` shows it to anyone)
+        assert not any(seat.key in a for a in argv)
     finally:
         server.httpd.server_close()
-    with pytest.raises(ValueError, match=r"^--domains 30-30: fewer ROS domains than --capacity 2 \(each participant's trial takes one\)$"):
+    with pytest.raises(
+        ValueError,
+        match=r"^--domains 30-30: fewer ROS domains than --capacity 2 \(each participant's trial takes one\)$",
+    ):
         open_server(str(study), tmp_path / "st", port=0, capacity=2, domains="30-30")
     monkeypatch.setenv("HAVEN_DOMAINS", "39-30")
     with pytest.raises(ValueError, match=r"^HAVEN_DOMAINS: 39-30: 39 is above 30 \(in the environment\)$"):

@@ -18,7 +18,8 @@ pytestmark = pytest.mark.unit
 ROOM = {  # 10 m x 6 m, one wall at x = 5 from y = 0 to y = 4
     "name": "room",
     "walls": [
-        {"segment": s, "thickness": 0.1} for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]], [[5, 0], [5, 4]])
+        {"segment": s, "thickness": 0.1}
+        for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]], [[5, 0], [5, 4]])
     ],
     "robot": {"start": [1.0, 5.0, 0.0]},
     "humans": [{"id": "h1", "start": [1.0, 2.0, 0.0]}],

@@ -53,7 +53,9 @@ def server(tmp_path: Path) -> Iterator[EditorServer]:
     s.stop()
 
 
-def post(server: EditorServer, action: str, body: bytes, token: bool = True, kind: str = "application/json") -> tuple[int, dict[str, Any]]:
+def post(
+    server: EditorServer, action: str, body: bytes, token: bool = True, kind: str = "application/json"
+) -> tuple[int, dict[str, Any]]:
     base = server.url.split("/edit?")[0]
     url = f"{base}/edit/{action}" + (f"{'&' if '?' in action else '?'}token={server.token}" if token else "")
     request = urllib.request.Request(url, data=body, headers={"Content-Type": kind}, method="POST")
@@ -84,7 +86,9 @@ def test_a_world_larger_than_a_world_file_may_be_is_refused_unread(server: Edito
     conn.endheaders()
     response = conn.getresponse()
     assert response.status == 400
-    assert json.loads(response.read())["error"] == f"the world of {MAX_WORLD_BYTES + 1} bytes (at most {MAX_WORLD_BYTES})"
+    assert (
+        json.loads(response.read())["error"] == f"the world of {MAX_WORLD_BYTES + 1} bytes (at most {MAX_WORLD_BYTES})"
+    )
     conn.close()
     assert post(server, "check", b"{not json")[1]["error"] == "the page sent something that is not JSON"
 
@@ -92,7 +96,10 @@ def test_a_world_larger_than_a_world_file_may_be_is_refused_unread(server: Edito
 def test_check_answers_with_the_loaders_own_line_and_the_key_it_names(server: EditorServer) -> None:
     assert post(server, "check", json.dumps(room_world()).encode()) == (
         200,
-        {"ok": True, "summary": "world lab: 4 wall(s), 0 obstacle(s), 2 room(s), 0 hallway(s), 1 gem(s), 1 person start(s)"},
+        {
+            "ok": True,
+            "summary": "world lab: 4 wall(s), 0 obstacle(s), 2 room(s), 0 hallway(s), 1 gem(s), 1 person start(s)",
+        },
     )
     world = room_world()
     world["humans"][0]["start"] = [6.0, 2.0, 0.0]  # on the east wall
@@ -100,7 +107,11 @@ def test_check_answers_with_the_loaders_own_line_and_the_key_it_names(server: Ed
     assert code == 200 and answer["ok"] is False and answer["key"] == "humans[0].start"
     assert answer["error"] == f"{server.out / 'lab.yaml'}: humans[0].start: (6, 2) lies inside a wall"
     code, answer = post(server, "check", json.dumps({**room_world(), "name": "my lab"}).encode())
-    assert answer["ok"] is False and answer["key"] == "name" and answer["error"].startswith("name: the world's name names its file")
+    assert (
+        answer["ok"] is False
+        and answer["key"] == "name"
+        and answer["error"].startswith("name: the world's name names its file")
+    )
 
 
 def test_save_writes_a_world_and_a_scenario_that_load_and_replaces_only_when_told(server: EditorServer) -> None:
@@ -109,14 +120,20 @@ def test_save_writes_a_world_and_a_scenario_that_load_and_replaces_only_when_tol
     assert code == 200 and answer["saved"] == [str(world_path), str(scenario_path)]
     assert load_world(world_path).name == "lab"
     scenario = load_scenario(scenario_path)
-    assert scenario.kind == "hallway" and scenario.robot_route == ("east", "west") and scenario.humans[0].route == ("west", "east")
+    assert (
+        scenario.kind == "hallway"
+        and scenario.robot_route == ("east", "west")
+        and scenario.humans[0].route == ("west", "east")
+    )
 
     moved = room_world()
     moved["rooms"][0]["centre"] = [1.5, 2.0]
     code, answer = post(server, "save", json.dumps({"world": moved, "task": "visit_rooms"}).encode())
     assert code == 409 and answer["exists"] == [str(world_path), str(scenario_path)]
     assert load_world(world_path).rooms[0].centre == (1.0, 2.0)  # not replaced
-    assert post(server, "save", json.dumps({"world": moved, "task": "visit_rooms", "overwrite": True}).encode())[0] == 200
+    assert (
+        post(server, "save", json.dumps({"world": moved, "task": "visit_rooms", "overwrite": True}).encode())[0] == 200
+    )
     assert load_world(world_path).rooms[0].centre == (1.5, 2.0)
 
 
@@ -127,7 +144,10 @@ def test_save_refuses_an_invalid_world_with_the_loaders_line_and_writes_nothing(
     assert code == 400 and answer["error"] == f"{server.out / 'lab.yaml'}: walls[1].thickness: must be positive, got 0"
     world = room_world()
     world["name"] = "my lab/../x"
-    assert "name: the world's name names its file" in post(server, "save", json.dumps({"world": world, "task": "none"}).encode())[1]["error"]
+    assert (
+        "name: the world's name names its file"
+        in post(server, "save", json.dumps({"world": world, "task": "none"}).encode())[1]["error"]
+    )
     world = room_world()
     world["rooms"] = world["rooms"][:1]
     assert post(server, "save", json.dumps({"world": world, "task": "visit_rooms"}).encode())[1]["error"] == (
@@ -147,7 +167,10 @@ def test_a_map_images_dark_cells_become_wall_polygons(server: EditorServer) -> N
     assert (min(xs), max(xs), min(ys), max(ys)) == pytest.approx((1.0, 1.1, 2.0, 4.0))
     code, answer = post(server, "walls?resolution=0", data.getvalue(), kind="image/png")
     assert code == 400 and "resolution" in answer["error"]
-    assert post(server, "walls", b"GIF89a", kind="image/gif")[1]["error"] == "the image must be a PNG, a JPEG or a PGM (a ROS map's image)"
+    assert (
+        post(server, "walls", b"GIF89a", kind="image/gif")[1]["error"]
+        == "the image must be a PNG, a JPEG or a PGM (a ROS map's image)"
+    )
     # map_saver's own PGM (told by its first bytes, whatever type the browser gives it): the same walls,
     # and as a PNG the page can draw under the plan
     pgm = io.BytesIO()
@@ -169,11 +192,18 @@ def png_header_only(width: int, height: int) -> bytes:
         return struct.pack(">I", len(data)) + kind + data + struct.pack(">I", zlib.crc32(kind + data))
 
     ihdr = struct.pack(">IIBBBBB", width, height, 8, 0, 0, 0, 0)
-    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(bytes(width + 1))) + chunk(b"IEND", b"")
+    return (
+        b"\x89PNG\r\n\x1a\n"
+        + chunk(b"IHDR", ihdr)
+        + chunk(b"IDAT", zlib.compress(bytes(width + 1)))
+        + chunk(b"IEND", b"")
+    )
 
 
 @pytest.mark.parametrize("side", [12_000, 20_000])  # 144 megapixels (PIL warns), 400 (PIL refuses)
-def test_an_image_too_large_to_be_a_map_is_refused_with_400_before_it_is_decoded(server: EditorServer, side: int) -> None:
+def test_an_image_too_large_to_be_a_map_is_refused_with_400_before_it_is_decoded(
+    server: EditorServer, side: int
+) -> None:
     bomb = png_header_only(side, side)
     for action in ("image", "walls?resolution=0.05"):
         code, answer = post(server, action, bomb, kind="image/png")
@@ -185,9 +215,14 @@ def test_an_image_too_large_to_be_a_map_is_refused_with_400_before_it_is_decoded
 def test_an_image_too_fragmented_for_walls_is_refused_with_400_in_one_line(server: EditorServer) -> None:
     rows, cols = np.indices((200, 200))
     data = io.BytesIO()
-    Image.fromarray(np.where((rows + cols) % 2 == 0, 0, 255).astype(np.uint8)).save(data, format="PNG")  # 20,000 one-pixel walls
+    # 20,000 one-pixel walls
+    Image.fromarray(np.where((rows + cols) % 2 == 0, 0, 255).astype(np.uint8)).save(data, format="PNG")
     code, answer = post(server, "walls?resolution=0.05", data.getvalue(), kind="image/png")
-    assert code == 400 and answer["error"].startswith("the image: ") and f"more than {MAX_WALL_BOXES:,} wall boxes" in answer["error"], answer
+    assert (
+        code == 400
+        and answer["error"].startswith("the image: ")
+        and f"more than {MAX_WALL_BOXES:,} wall boxes" in answer["error"]
+    ), answer
 
 
 def test_the_template_makes_scenarios_that_load(tmp_path: Path) -> None:
@@ -210,7 +245,9 @@ def test_haven_edit_starts_from_a_shipped_world_or_a_new_one_but_not_from_a_map(
         world_tree(str(tmp_path / "m.yaml"))
 
 
-def test_haven_edit_refuses_a_world_it_cannot_read_in_one_line(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_haven_edit_refuses_a_world_it_cannot_read_in_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     from haven_scenarios.tools.cli import main
 
     assert main(["edit", str(tmp_path / "nosuch.yaml")]) == 2

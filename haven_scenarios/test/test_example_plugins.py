@@ -43,10 +43,24 @@ questionnaires: [nasa_tlx, trust]
 def installed(tmp_path: Path) -> dict[str, str]:
     """The example package built and installed into tmp_path/site; the environment that sees it."""
     site = tmp_path / "site"
-    pip = [sys.executable, "-m", "pip", "install", "--quiet", "--no-deps", "--no-build-isolation", "--target", str(site), str(EXAMPLE)]
+    pip = [
+        sys.executable,
+        "-m",
+        "pip",
+        "install",
+        "--quiet",
+        "--no-deps",
+        "--no-build-isolation",
+        "--target",
+        str(site),
+        str(EXAMPLE),
+    ]
     r = subprocess.run(pip, capture_output=True, text=True, env={**os.environ, "PIP_DISABLE_PIP_VERSION_CHECK": "1"})
     assert r.returncode == 0, r.stderr[-2000:]
-    return {**os.environ, "PYTHONPATH": os.pathsep.join([str(site), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep)}
+    return {
+        **os.environ,
+        "PYTHONPATH": os.pathsep.join([str(site), os.environ.get("PYTHONPATH", "")]).rstrip(os.pathsep),
+    }
 
 
 def haven(env: dict[str, str], *args: str, cwd: Path | None = None) -> subprocess.CompletedProcess[str]:
@@ -56,14 +70,21 @@ def haven(env: dict[str, str], *args: str, cwd: Path | None = None) -> subproces
 def test_the_example_plugins_install_list_and_run_in_batch_trials_scenarios_and_studies(tmp_path):
     env = installed(tmp_path)
     listed = haven(env, "plugins").stdout.splitlines()
-    for kind, name in (("participants", "hurried"), ("metrics", "near"), ("questionnaires", "trust"), ("cues", "floor_arrows")):
+    for kind, name in (
+        ("participants", "hurried"),
+        ("metrics", "near"),
+        ("questionnaires", "trust"),
+        ("cues", "floor_arrows"),
+    ):
         assert f"{kind} {name} haven-lab-example" in listed
     tests = [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(EXAMPLE / "tests")]
     own = subprocess.run(tests, env=env, capture_output=True, text=True)
     assert own.returncode == 0, own.stdout[-2000:]
     # A --grid axis and the metric's column in the batch rows.
     out = tmp_path / "rows.csv"
-    r = haven(env, "batch", "hallway", "--grid", "model=walker,hurried", "--seeds", "0-1", "--workers", "1", "--out", str(out))
+    r = haven(
+        env, "batch", "hallway", "--grid", "model=walker,hurried", "--seeds", "0-1", "--workers", "1", "--out", str(out)
+    )
     assert r.returncode == 0, r.stderr[-2000:]
     with out.open() as f:
         rows = list(csv.DictReader(f))

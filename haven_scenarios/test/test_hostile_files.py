@@ -26,7 +26,8 @@ WORLDS = sorted(Path(str(resources.files("haven_scenarios") / "worlds")).glob("*
     Path(str(resources.files("haven_sim") / "worlds")).glob("*.yaml")
 )
 SCENARIOS = sorted(Path(str(resources.files("haven_scenarios") / "scenarios")).glob("*.yaml"))
-SCENARIO = "name: s\nworld: small_test\nkind: retrieval\n"  # small_test has human h1, rooms west and east, a charging base
+# small_test has human h1, rooms west and east, a charging base
+SCENARIO = "name: s\nworld: small_test\nkind: retrieval\n"
 
 
 def scenario_file(tmp_path, extra, name="s.yaml"):
@@ -86,7 +87,8 @@ def test_hostile_scenario_files_get_the_world_files_reader(tmp_path):
     refused(ScenarioError, "/dev/zero", load_scenario, "not a regular file")
     fifo = tmp_path / "fifo.yaml"
     os.mkfifo(fifo)
-    guard = threading.Timer(30.0, lambda: os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK)))  # unblocks a reader that opened it
+    # unblocks a reader that opened it
+    guard = threading.Timer(30.0, lambda: os.close(os.open(fifo, os.O_WRONLY | os.O_NONBLOCK)))
     guard.start()
     try:
         refused(ScenarioError, fifo, load_scenario, "not a regular file")
@@ -218,8 +220,11 @@ def _fuzz(files, load, error, seeds, tmp_path):
         source = rng.choice(files)
         tree = copy.deepcopy(parsed[source])
         what = [source.name]
-        what.extend(_tree_mutation(tree, rng) if _slots(tree) else "nothing" for _ in range(rng.randint(1, 3)))  # (in turn: each mutates the tree)
-        data, op = (_dump(tree, allow_unicode=True).encode(), "") if rng.random() < 0.6 else _text_mutation(_dump(tree), rng)
+        # (in turn: each mutates the tree)
+        what.extend(_tree_mutation(tree, rng) if _slots(tree) else "nothing" for _ in range(rng.randint(1, 3)))
+        data, op = (
+            (_dump(tree, allow_unicode=True).encode(), "") if rng.random() < 0.6 else _text_mutation(_dump(tree), rng)
+        )
         what.append(op)
         path = tmp_path / f"case{seed}.yaml"
         path.write_bytes(data)
@@ -233,7 +238,9 @@ def _fuzz(files, load, error, seeds, tmp_path):
             tb = traceback.format_exception(e)[-3:]
             failures.append(f"seed {seed} {what}: {type(e).__name__}: {str(e)[:200]} {''.join(tb)[-600:]}")
         path.unlink()
-    assert failures == [], f"{len(failures)} of {len(seeds)} mutated files neither loaded nor got one line:\n" + "\n".join(failures[:10])
+    assert failures == [], (
+        f"{len(failures)} of {len(seeds)} mutated files neither loaded nor got one line:\n" + "\n".join(failures[:10])
+    )
 
 
 def test_fuzzed_worlds_load_or_are_refused_in_refused(tmp_path):
@@ -249,7 +256,10 @@ def test_validate_checks_worlds_and_scenarios_without_starting_anything(tmp_path
     world, scenario = WORLDS[0], SCENARIOS[0]
     assert main(["validate", str(world), str(scenario)]) == 0
     out = capsys.readouterr().out.splitlines()
-    assert out == [f"ok: {world} (world {load_world(world).name})", f"ok: {scenario} (scenario {load_scenario(scenario).name})"]
+    assert out == [
+        f"ok: {world} (world {load_world(world).name})",
+        f"ok: {scenario} (scenario {load_scenario(scenario).name})",
+    ]
     bad = scenario_file(tmp_path, "timeout_s: .inf\n")
     neither = tmp_path / "neither.yaml"
     neither.write_text("colour: red\n")
@@ -258,7 +268,8 @@ def test_validate_checks_worlds_and_scenarios_without_starting_anything(tmp_path
     assert captured.out.splitlines() == [f"ok: {world} (world {load_world(world).name})"]
     assert captured.err.splitlines() == [
         f"haven: error: {bad}: timeout_s: must be a positive number, got inf",
-        f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key), a world (no 'walls' or 'map' key), a study (no 'scenarios' key), "
+        f"haven: error: {neither}: neither a scenario (no 'kind' or 'world' key), "
+        "a world (no 'walls' or 'map' key), a study (no 'scenarios' key), "
         "a robot (no 'kinematics' or 'extends' key) nor a parameter file (no 'ros__parameters')",
         "haven: error: /dev/zero: cannot read file: not a regular file",
     ]
@@ -271,7 +282,9 @@ def test_validate_checks_parameter_files(tmp_path, capsys):
     typo.write_text("controller:\n  ros__parameters:\n    rate_hx: 10.0\n")
     assert main(["validate", str(packaged_params_file()), str(typo)]) == 2
     captured = capsys.readouterr()
-    assert captured.out.startswith(f"ok: {packaged_params_file()} (parameter file for /**, sim_node, velocity_mux, planner")
+    assert captured.out.startswith(
+        f"ok: {packaged_params_file()} (parameter file for /**, sim_node, velocity_mux, planner"
+    )
     assert captured.err == f"haven: error: {typo}: controller: rate_hx: no such parameter (did you mean rate_hz?)\n"
 
 

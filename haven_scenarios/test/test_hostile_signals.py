@@ -66,15 +66,28 @@ def test_a_child_dies_with_its_supervisor_even_when_the_supervisor_is_killed(tmp
         (["run", "--rtf", "inf"], "argument --rtf: must be a finite number, got inf"),
         (["run", "--rtf", "0"], "argument --rtf: must be positive, got 0"),
         (["sim", "--domain-id", "300"], "argument --domain-id: must be 0..232, got 300"),
-        (["run", "--params-file", "/no/such/params.yaml"], "argument --params-file: /no/such/params.yaml: no such file"),
+        (
+            ["run", "--params-file", "/no/such/params.yaml"],
+            "argument --params-file: /no/such/params.yaml: no such file",
+        ),
         (["run", "--params-file", "/dev"], "argument --params-file: /dev: not a regular file"),
         (["batch", "hallway", "--seed", "-1"], "argument --seed: must be 0..2147483647, got -1"),
         (["run", "--seed", "1" + "0" * 40], "argument --seed: expected an integer, got '1000000000"),
         (["run", "--seed", "10000000000"], "argument --seed: must be 0..2147483647, got 10000000000"),
         (["demo", "--laps", "99999999999999999999"], "argument --laps: must be at least 1, got 99999999999999999999"),
-        (["run", "--allow", "/cmd_vel_telop"], "--allow: /cmd_vel_telop: not a topic the suite or the metrics read (did you mean /cmd_vel_teleop?)"),
-        (["run", "--allow", "/odom"], "--allow: /odom: the simulator's and the metrics' topics take no outside publisher"),
-        (["run", "--allow", "plan"], "--allow: plan: the simulator's and the metrics' topics take no outside publisher (your own planner: --without"),
+        (
+            ["run", "--allow", "/cmd_vel_telop"],
+            "--allow: /cmd_vel_telop: not a topic the suite or the metrics read (did you mean /cmd_vel_teleop?)",
+        ),
+        (
+            ["run", "--allow", "/odom"],
+            "--allow: /odom: the simulator's and the metrics' topics take no outside publisher",
+        ),
+        (
+            ["run", "--allow", "plan"],
+            "--allow: plan: the simulator's and the metrics' topics "
+            "take no outside publisher (your own planner: --without",
+        ),
         (["goto", "1e999", "0"], "argument x: must be a finite number, got 1e999"),
         (["bridge", "--port", "70000"], "argument --port: must be 0..65535, got 70000"),
     ],
@@ -106,7 +119,11 @@ def test_a_port_in_use_is_one_line(command, capsys):
 
 
 def test_discovery_stays_local_whatever_the_shell_says_unless_network():
-    shell = {"ROS_AUTOMATIC_DISCOVERY_RANGE": "SUBNET", "ROS_STATIC_PEERS": "192.168.1.7", "ROS_DISCOVERY_SERVER": "10.0.0.1:11811"}
+    shell = {
+        "ROS_AUTOMATIC_DISCOVERY_RANGE": "SUBNET",
+        "ROS_STATIC_PEERS": "192.168.1.7",
+        "ROS_DISCOVERY_SERVER": "10.0.0.1:11811",
+    }
     local = ros_environment(shell)
     assert local["ROS_AUTOMATIC_DISCOVERY_RANGE"] == "LOCALHOST"
     assert "ROS_STATIC_PEERS" not in local and "ROS_DISCOVERY_SERVER" not in local

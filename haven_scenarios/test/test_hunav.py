@@ -28,7 +28,9 @@ RADII = ROBOT_BODY.radius_m + HUMAN_BODY.radius_m
 def samples(robot, people, dt=0.05):
     """Samples from rows (x, y, yaw, v, w) and {id: rows (x, y, yaw, v) or None for absent}."""
     n = len(robot)
-    tracks = {h: np.array([r if r is not None else (math.nan,) * 4 for r in rows], dtype=float) for h, rows in people.items()}
+    tracks = {
+        h: np.array([r if r is not None else (math.nan,) * 4 for r in rows], dtype=float) for h, rows in people.items()
+    }
     return Samples(dt * np.arange(n), np.array(robot, dtype=float), tracks)
 
 
@@ -44,7 +46,9 @@ def test_distances_are_between_surfaces_clamped_at_zero_and_the_maximum_subtract
 
 
 def test_the_closest_person_averages_over_all_samples_including_those_without_anyone():
-    s = samples([(0, 0, 0, 0, 0)] * 4, {"h1": [(1.0, 0, 0, 0), None, None, None], "h2": [(3.0, 0, 0, 0), None, None, None]})
+    s = samples(
+        [(0, 0, 0, 0, 0)] * 4, {"h1": [(1.0, 0, 0, 0), None, None, None], "h2": [(3.0, 0, 0, 0), None, None, None]}
+    )
     m = columns(s)
     assert m["hunav_avg_distance_to_closest_person_m"] == pytest.approx((1.0 - RADII) / 4, abs=1e-4)
     assert m["hunav_personal_space_intrusions_pct"] == 25.0  # 0.573 m: the other three samples are "public"
@@ -56,7 +60,9 @@ def test_heading_changes_wrap_across_pi_in_theirs_and_ours():
     expected = 2 * (2 * math.pi - 6.2)
     assert columns(s)["hunav_cumulative_heading_changes_rad"] == pytest.approx(expected, abs=1e-4)
     assert _heading_change(np.array(yaws)) == pytest.approx(expected)
-    assert hunav.normalize_angle(math.pi) == pytest.approx(math.pi) and hunav.normalize_angle(-math.pi) == pytest.approx(math.pi)
+    assert hunav.normalize_angle(math.pi) == pytest.approx(math.pi) and hunav.normalize_angle(
+        -math.pi
+    ) == pytest.approx(math.pi)
     assert hunav.normalize_angle(5 * math.pi / 2) == pytest.approx(math.pi / 2)
 
 
@@ -118,7 +124,12 @@ def test_a_person_stands_only_until_their_own_task_is_done():
     stand(rec, 0.0, 5.0, {"h1": (2.5, 3.0)})
     rec.add(Message(topics.ODOM, RobotState(Pose2D(5.0, 0.0, 0.0), Twist2D(0.0, 0.0, 0.0)), 5.0))
     finish = event(EventKind.TASK_DONE, 2.0, Source.MISSION, by="h1")
-    events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO), finish, event(EventKind.TRIAL_END, 5.0, Source.SCENARIO, reason="completed"))
+    events(
+        rec,
+        event(EventKind.TRIAL_START, 0.0, Source.SCENARIO),
+        finish,
+        event(EventKind.TRIAL_END, 5.0, Source.SCENARIO, reason="completed"),
+    )
     assert compute(rec)["h1_time_not_moving_s"] == pytest.approx(2.0, abs=0.021)
     rec.events.remove(finish)  # no task_done: the trial's end
     assert compute(rec)["h1_time_not_moving_s"] == pytest.approx(5.0, abs=0.021)

@@ -23,8 +23,14 @@ def test_held_keys_combine_and_release_after_the_auto_repeat_stops():
 def test_a_teleoperating_participant_is_told_their_progress_and_the_end():
     assert announce(event(EventKind.GEM_COLLECTED, 3.0, "rules", gem="hg2", by="h1"), "h1") == "gem hg2 collected"
     assert announce(event(EventKind.GEM_COLLECTED, 3.0, "rules", gem="hg3", by="h2"), "h1") is None  # someone else's
-    assert announce(event(EventKind.TASK_DONE, 9.0, "scenario", by="h1"), "h1") == "your task is done: wait for the trial to end"
-    assert announce(event(EventKind.TRIAL_END, 9.5, "scenario", reason="completed"), "h1") == "trial over (completed): thank you"
+    assert (
+        announce(event(EventKind.TASK_DONE, 9.0, "scenario", by="h1"), "h1")
+        == "your task is done: wait for the trial to end"
+    )
+    assert (
+        announce(event(EventKind.TRIAL_END, 9.5, "scenario", reason="completed"), "h1")
+        == "trial over (completed): thank you"
+    )
 
 
 def test_a_late_teleop_client_is_told_where_the_trial_is():

@@ -51,18 +51,28 @@ def test_haven_run_records_a_map_world_whose_map_is_the_source_map_and_the_libra
     metrics = metrics_of(session)
     assert metrics["end_reason"] == "completed" and metrics["condition"] == "+".join(LIBRARY)
     assert all(metrics[f"{cue}_shown_s"] > 0 for cue in LIBRARY), metrics
-    assert (session / "world_map.pgm").read_bytes() == (tmp_path / "map" / "map.pgm").read_bytes()  # the session holds its map
+    # the session holds its map
+    assert (session / "world_map.pgm").read_bytes() == (tmp_path / "map" / "map.pgm").read_bytes()
     assert_independent_score_agrees(session)
     with AnyReader([session / "bag"]) as reader:
         (conn,) = [c for c in reader.connections if c.topic == "/map"]
         maps = [reader.deserialize(raw, conn.msgtype) for _, _, raw in reader.messages(connections=[conn])]
         (ar,) = [c for c in reader.connections if c.topic == "/haven/ar_markers"]
-        drawn = {m.ns for _, _, raw in reader.messages(connections=[ar]) for m in reader.deserialize(raw, ar.msgtype).markers if m.action == 0}
+        drawn = {
+            m.ns
+            for _, _, raw in reader.messages(connections=[ar])
+            for m in reader.deserialize(raw, ar.msgtype).markers
+            if m.action == 0
+        }
         (state,) = [c for c in reader.connections if c.topic == "/haven/cue_state"]
-        values = [json.loads(reader.deserialize(raw, state.msgtype).data) for _, _, raw in reader.messages(connections=[state])]
+        values = [
+            json.loads(reader.deserialize(raw, state.msgtype).data)
+            for _, _, raw in reader.messages(connections=[state])
+        ]
     assert set(LIBRARY) <= drawn and not drawn & {"path_projection", "turn_signals"}, drawn
     assert any(v.get("path_line", 0) > 0 for v in values) and any(v.get("projected_arrows", 0) > 0 for v in values)
-    assert any(isinstance(v.get("light_ring"), dict) and v["light_ring"]["blink"] != 0 for v in values)  # it blinked for a turn
+    # it blinked for a turn
+    assert any(isinstance(v.get("light_ring"), dict) and v["light_ring"]["blink"] != 0 for v in values)
     assert maps
     info = maps[-1].info
     pixels = map_pixels()

@@ -44,7 +44,13 @@ def events(rec, *evs):
 
 
 def cue(rec, t, thought="", signal=0, toggles=ALL):
-    rec.add(Message(topics.CUE_STATE, CueState(toggles, {"path_markers": 3, "turn_signal": signal, "thought": thought, "battery_level": 1.0}), t))
+    rec.add(
+        Message(
+            topics.CUE_STATE,
+            CueState(toggles, {"path_markers": 3, "turn_signal": signal, "thought": thought, "battery_level": 1.0}),
+            t,
+        )
+    )
 
 
 def straight():
@@ -79,7 +85,9 @@ def test_known_answers_on_a_straight_drive_past_a_person():
     assert m["h1_personal_centre_intrusion_s"] == pytest.approx(2 * math.sqrt(1.2**2 - 1.0), abs=0.03)
     assert m["h1_intimate_centre_intrusion_s"] == 0.0
     assert m["h1_personal_centre_band_s"] == m["h1_personal_centre_intrusion_s"]  # nothing nearer than 0.45 m
-    assert m["h1_social_centre_band_s"] == pytest.approx(m["h1_social_centre_intrusion_s"] - m["h1_personal_centre_intrusion_s"], abs=0.011)
+    assert m["h1_social_centre_band_s"] == pytest.approx(
+        m["h1_social_centre_intrusion_s"] - m["h1_personal_centre_intrusion_s"], abs=0.011
+    )
     assert (m["waits"], m["wait_time_s"]) == (1, 0.5)
     assert (m["gems_robot"], m["gems_human"], m["robot_gem_order"]) == (1, 1, "g1")
     assert (m["human_contacts"], m["wall_contacts"]) == (0, 1)
@@ -98,7 +106,9 @@ def test_every_metric_is_in_the_table_and_the_table_in_the_readme():
     # The docs' codebook is this table, written by docs/conf.py at every build (one source).
     docs = Path(__file__).resolve().parents[2] / "docs"
     assert "_generated/metric_table.part.md" in (docs / "reference" / "sessions.md").read_text()
-    assert "markdown(plugins=False)" in (docs / "conf.py").read_text() and markdown().startswith("| metric | unit | definition | source |")
+    assert "markdown(plugins=False)" in (docs / "conf.py").read_text() and markdown().startswith(
+        "| metric | unit | definition | source |"
+    )
 
 
 def test_people_are_paired_with_the_robot_by_time_not_by_index():
@@ -107,7 +117,11 @@ def test_people_are_paired_with_the_robot_by_time_not_by_index():
     rec = Recording()
     drive(rec, 0.0, 6.0)  # robot at x = t
     stand(rec, 0.18, 6.0, {"h1": (3.0, 0.6)})  # a person beside the track at x = 3
-    events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO), event(EventKind.TRIAL_END, 6.0, Source.SCENARIO, reason="completed"))
+    events(
+        rec,
+        event(EventKind.TRIAL_START, 0.0, Source.SCENARIO),
+        event(EventKind.TRIAL_END, 6.0, Source.SCENARIO, reason="completed"),
+    )
     m = compute(rec)
     assert m["min_human_centre_distance_m"] == pytest.approx(0.6, abs=0.005)
     assert m["h1_min_centre_distance_m"] == pytest.approx(0.6, abs=0.005)
@@ -122,7 +136,11 @@ def test_people_moving_are_interpolated_between_their_samples():
     for i in range(121):
         t = i * 0.05 + (0.013 if i % 3 == 1 else 0.0)
         rec.add(Message(topics.HUMANS, {"h1": Pose2D(5.0 - 0.5 * t, 0.0, math.pi)}, t))
-    events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO), event(EventKind.TRIAL_END, 6.0, Source.SCENARIO, reason="completed"))
+    events(
+        rec,
+        event(EventKind.TRIAL_START, 0.0, Source.SCENARIO),
+        event(EventKind.TRIAL_END, 6.0, Source.SCENARIO, reason="completed"),
+    )
     m = compute(rec)
     assert m["min_human_centre_distance_m"] == pytest.approx(5.0 - 0.5 * 6.0, abs=0.01)
 
@@ -145,13 +163,27 @@ def test_contact_flicker_is_one_attributed_episode_per_person():
         rec.add(Message(topics.ODOM, RobotState(Pose2D(0.0, 0.0, 0.0), Twist2D()), i * 0.02))
     for i in range(101):
         t = i * 0.05
-        rec.add(Message(topics.HUMANS, {"h1": Pose2D(max(3.0 - t, 0.42), 0.0, math.pi), "h2": Pose2D(0.0, 3.0, 0.0)}, t))
+        rec.add(
+            Message(topics.HUMANS, {"h1": Pose2D(max(3.0 - t, 0.42), 0.0, math.pi), "h2": Pose2D(0.0, 3.0, 0.0)}, t)
+        )
     flicker = [(2.58, 2.7), (2.75, 2.8), (2.86, 3.0)]
     for a, b in flicker:
-        events(rec, event(EventKind.CONTACT_BEGIN, a, Source.SIM, other="human:h1"), event(EventKind.CONTACT_END, b, Source.SIM, other="human:h1"))
-    events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO), event(EventKind.TRIAL_END, 5.0, Source.SCENARIO, reason="completed"))
+        events(
+            rec,
+            event(EventKind.CONTACT_BEGIN, a, Source.SIM, other="human:h1"),
+            event(EventKind.CONTACT_END, b, Source.SIM, other="human:h1"),
+        )
+    events(
+        rec,
+        event(EventKind.TRIAL_START, 0.0, Source.SCENARIO),
+        event(EventKind.TRIAL_END, 5.0, Source.SCENARIO, reason="completed"),
+    )
     m = compute(rec)
-    assert m["human_contacts"] == 1 and m["human_contacts_person_on_robot"] == 1 and m["human_contacts_robot_on_person"] == 0
+    assert (
+        m["human_contacts"] == 1
+        and m["human_contacts_person_on_robot"] == 1
+        and m["human_contacts_robot_on_person"] == 0
+    )
     assert (m["h1_contacts"], m["h2_contacts"]) == (1, 0)
 
 
@@ -199,13 +231,19 @@ def test_cue_exposure_comes_from_the_published_cue_state_per_condition_segment()
     cue(rec, 2.0, thought="", signal=0)
     cue(rec, 4.0, thought="charging", toggles=Toggles(True, True, True, False))
     cue(rec, 7.0, thought="", toggles=Toggles(True, True, True, False))
-    events(rec, event(EventKind.TRIAL_START, 0.0, Source.SCENARIO), event(EventKind.TRIAL_END, 10.0, Source.SCENARIO, reason="completed"))
+    events(
+        rec,
+        event(EventKind.TRIAL_START, 0.0, Source.SCENARIO),
+        event(EventKind.TRIAL_END, 10.0, Source.SCENARIO, reason="completed"),
+    )
     m = compute(rec)
     assert m["thought_bubble_shown_s"] == pytest.approx(5.0)
     assert m["turn_signal_shown_s"] == pytest.approx(2.0)
     segments = m["condition_segments"]
     assert [(s["start_s"], s["end_s"]) for s in segments] == [(0.0, 3.98), (4.0, 10.0)]
-    assert segments[0]["thought_bubble_shown_s"] == pytest.approx(2.0) and segments[1]["thought_bubble_shown_s"] == pytest.approx(3.0)
+    assert segments[0]["thought_bubble_shown_s"] == pytest.approx(2.0) and segments[1][
+        "thought_bubble_shown_s"
+    ] == pytest.approx(3.0)
     assert "battery_indicator" not in segments[1]["cues_on"]
 
 
@@ -229,7 +267,11 @@ def test_a_recording_with_lost_messages_is_flagged_not_valid():
 def test_a_plan_or_a_goal_the_log_names_but_the_recording_lacks_is_flagged_and_pre_trial_gaps_are_not():
     rec = straight()
     plan = [Pose2D(0.0, 0.0, 0.0), Pose2D(5.0, 0.0, 0.0)]
-    events(rec, event(EventKind.PLAN_MADE, 0.2, Source.PLANNER, plan_poses=2), event(EventKind.GOAL_SENT, 0.1, Source.SCENARIO, goal=[5.0, 0.0]))
+    events(
+        rec,
+        event(EventKind.PLAN_MADE, 0.2, Source.PLANNER, plan_poses=2),
+        event(EventKind.GOAL_SENT, 0.1, Source.SCENARIO, goal=[5.0, 0.0]),
+    )
     rec.plans, rec.goals = [(0.2, plan)], [(0.1, Goal(Pose2D(5.0, 0.0, 0.0)))]
     assert compute(rec)["valid"] is True
     rec.plans, rec.goals = [], []
@@ -240,7 +282,9 @@ def test_a_plan_or_a_goal_the_log_names_but_the_recording_lacks_is_flagged_and_p
     # recorder catches up on): not the trial's. One missing inside the trial is.
     early = straight()
     mine = sorted((e for e in early.events if e.source == Source.SCENARIO), key=lambda e: e.stamp)
-    early.events = [e for e in early.events if e.source != Source.SCENARIO] + [replace(e, data={**e.data, "seq": 30 + k}) for k, e in enumerate(mine)]
+    early.events = [e for e in early.events if e.source != Source.SCENARIO] + [
+        replace(e, data={**e.data, "seq": 30 + k}) for k, e in enumerate(mine)
+    ]
     assert compute(early)["valid"] is True
     early.events = [e for e in early.events if e.kind is not EventKind.GEM_COLLECTED or e["gem"] != "g2"]
     assert any(r.startswith("events: ") and "scenario's missing" in r for r in compute(early)["invalid_reasons"])
@@ -249,7 +293,15 @@ def test_a_plan_or_a_goal_the_log_names_but_the_recording_lacks_is_flagged_and_p
 def test_a_plugin_that_failed_makes_a_session_not_valid_by_one_rule_and_so_does_an_older_recordings_cue_failed():
     rec = straight()
     assert compute(rec)["valid"]
-    events(rec, Event(EventKind.PLUGIN_FAILED, 2.0, "scenario", {"kind": "participants", "name": "shy", "error": "ValueError: broke"}))
+    events(
+        rec,
+        Event(
+            EventKind.PLUGIN_FAILED,
+            2.0,
+            "scenario",
+            {"kind": "participants", "name": "shy", "error": "ValueError: broke"},
+        ),
+    )
     assert compute(rec)["invalid_reasons"] == ["participant model shy failed (ValueError: broke)"]
     old = straight()
     events(old, event(EventKind.CUE_FAILED, 2.0, "viz", cue="floor_arrows", error="ValueError: broke"))
@@ -259,7 +311,10 @@ def test_a_plugin_that_failed_makes_a_session_not_valid_by_one_rule_and_so_does_
 def test_a_message_the_lockstep_clock_never_got_and_an_outside_publisher_make_a_session_not_valid():
     rec = straight()
     events(rec, event(EventKind.INPUT_LOST, 2.0, "controller", topic="/plan", messages=1))
-    assert "/plan: 1 of the suite's message(s) never reached controller on the lockstep clock" in compute(rec)["invalid_reasons"]
+    assert (
+        "/plan: 1 of the suite's message(s) never reached controller on the lockstep clock"
+        in compute(rec)["invalid_reasons"]
+    )
     rec = straight()
     rec.publishers = PublisherLog()
     suite = {"/odom": "sim_node", "/goal_pose": "scenario", "/plan": "planner"}
@@ -269,12 +324,17 @@ def test_a_message_the_lockstep_clock_never_got_and_an_outside_publisher_make_a_
     rec.publishers.observe("/odom", [("sim_node", "gid-second-suite")], 6.0)  # after the trial: not the trial's
     nodes = frozenset({"recorder", "sim_node", "velocity_mux", "planner", "controller", "viz", "scenario"})
     free = compute(rec, declared=Declared(nodes))
-    assert free["valid"] is False and free["invalid_reasons"] == ["/goal_pose: published by rviz from outside the suite"]
+    assert free["valid"] is False and free["invalid_reasons"] == [
+        "/goal_pose: published by rviz from outside the suite"
+    ]
     lockstep = compute(rec, declared=Declared(nodes, lockstep=True))  # ignored there: noted, still valid
     assert lockstep["valid"] is True and lockstep["outside_publishers"].startswith("/goal_pose: published by rviz")
     opened = compute(rec, declared=Declared(nodes, open_topics(allow=["/goal_pose"])))
-    assert opened["valid"] is True and opened["outside_publishers"].endswith("from outside the suite, on a topic the run opened to it")
-    rec.publishers.observe("/odom", [("sim_node", "gid-another-suite")], 3.0)  # a second suite's simulator during the trial
+    assert opened["valid"] is True and opened["outside_publishers"].endswith(
+        "from outside the suite, on a topic the run opened to it"
+    )
+    # a second suite's simulator during the trial
+    rec.publishers.observe("/odom", [("sim_node", "gid-another-suite")], 3.0)
     m = compute(rec, declared=Declared(nodes, lockstep=True))
     assert m["valid"] is False and "another HAVEN suite on this ROS domain?" in m["invalid_reasons"][0]
 
@@ -297,7 +357,9 @@ def test_turn_signal_lead_is_how_long_the_matching_side_was_lit_before_the_turn(
 def test_a_stream_flooded_by_a_second_publisher_with_one_stamp_is_flagged_not_a_crash():
     """Another node's /odom at 1 kHz, every message stamped 0: the stamps repeat (no period to read)."""
     stamps = [0.02 * i for i in range(250)] + [0.0] * 10_000
-    assert _stream("/odom", stamps, (0.0, 4.98)) == ["/odom: 10000 message(s) with the stamp of another (a second publisher?)"]
+    assert _stream("/odom", stamps, (0.0, 4.98)) == [
+        "/odom: 10000 message(s) with the stamp of another (a second publisher?)"
+    ]
 
 
 def test_a_complete_20_hz_stream_on_50_hz_physics_is_complete_however_short():
@@ -331,7 +393,11 @@ def test_a_metric_plugin_adds_its_columns_and_a_failing_one_says_why_in_its_own(
     def broken(d):
         raise RuntimeError("no data\nmore")
 
-    ours = [Entry(p.name, p.target, p.package, p.value.compute) for p in plugins.registry("metrics") if p.package == "haven_scenarios"]
+    ours = [
+        Entry(p.name, p.target, p.package, p.value.compute)
+        for p in plugins.registry("metrics")
+        if p.package == "haven_scenarios"
+    ]
     lab = plugins.load(
         "metrics",
         [
@@ -339,10 +405,14 @@ def test_a_metric_plugin_adds_its_columns_and_a_failing_one_says_why_in_its_own(
             Entry("near", "lab.m:near", "lab_m", seconds_near),
             Entry("broken", "lab.m:broken", "lab_m", broken),
             Entry("thief", "lab.m:thief", "lab_m", lambda d: {"duration_s": 0}),
-            Entry("badcols", "lab.m:bad", "lab_m", type("M", (), {"columns": [("x",)], "__call__": lambda self, d: {}})()),
+            Entry(
+                "badcols", "lab.m:bad", "lab_m", type("M", (), {"columns": [("x",)], "__call__": lambda self, d: {}})()
+            ),
         ],
     )
-    assert lab.problems == ["haven.metrics badcols (lab.m:bad, from lab_m): columns: must be (name, unit, definition, source) rows of text"]
+    assert lab.problems == [
+        "haven.metrics badcols (lab.m:bad, from lab_m): columns: must be (name, unit, definition, source) rows of text"
+    ]
     monkeypatch.setattr(plugins, "registry", lambda kind: lab)
     before = compute(straight(), "synthetic", "completed")
     only_ours = plugins.load("metrics", ours)
@@ -351,5 +421,6 @@ def test_a_metric_plugin_adds_its_columns_and_a_failing_one_says_why_in_its_own(
     keys = list(before)
     assert keys[: len(alone) - 3] == list(alone)[: len(alone) - 3]  # ours first, in our order (validity last)
     assert before["broken_error"] == "RuntimeError: no data" and before["thief_error"] == "would overwrite duration_s"
-    assert before["valid"] is False and before["invalid_reasons"] == ["metric broken failed (RuntimeError: no data)"]  # (the thief: its column only)
+    # (the thief: its column only)
+    assert before["valid"] is False and before["invalid_reasons"] == ["metric broken failed (RuntimeError: no data)"]
     assert before["seconds_within_2m"] >= 0 and before["duration_s"] == alone["duration_s"]

@@ -27,14 +27,19 @@ def with_farthest(monkeypatch):
     ours = plugins.registry("missions")
     reg = plugins.load(
         "missions",
-        [*(Entry(p.name, p.target, p.package, p.value) for p in ours), Entry("farthest", "lab.missions:Farthest", "lab_missions", Farthest)],
+        [
+            *(Entry(p.name, p.target, p.package, p.value) for p in ours),
+            Entry("farthest", "lab.missions:Farthest", "lab_missions", Farthest),
+        ],
     )
     real = plugins.registry
     monkeypatch.setattr(plugins, "registry", lambda kind: reg if kind == "missions" else real(kind))
 
 
 def test_ours_are_registered_plugins():
-    assert {p.name: p.package for p in plugins.registry("missions")} == dict.fromkeys(("fixed", "nearest", "random"), "haven_scenarios")
+    assert {p.name: p.package for p in plugins.registry("missions")} == dict.fromkeys(
+        ("fixed", "nearest", "random"), "haven_scenarios"
+    )
 
 
 def test_a_labs_behaviour_picks_the_targets_and_a_scenario_names_it(with_farthest, tmp_path):
@@ -55,5 +60,7 @@ def test_a_labs_behaviour_picks_the_targets_and_a_scenario_names_it(with_farthes
 def test_an_unknown_behaviour_is_one_line_naming_the_known_ones(tmp_path):
     scenario = tmp_path / "far.yaml"
     scenario.write_text("name: far\nworld: shared_room\nkind: retrieval\nrobot: {order: farthest}\nhumans: []\n")
-    with pytest.raises(ScenarioError, match=r"robot\.order: unknown mission behaviour 'farthest' \(known: fixed, nearest, random\)$"):
+    with pytest.raises(
+        ScenarioError, match=r"robot\.order: unknown mission behaviour 'farthest' \(known: fixed, nearest, random\)$"
+    ):
         load_scenario(str(scenario))

@@ -51,9 +51,17 @@ def test_a_robot_that_varies_between_participants_is_a_fixed_effect() -> None:
         for r in [("tiago", "turtlebot2")[int(o.participant[1:]) % 2]]
     ]
     f = fit(obs, CONDITIONS, "none")
-    assert f.formula == "value ~ condition + robot + position + (1 | participant)" and "robot coded against tiago" in f.note
+    assert (
+        f.formula == "value ~ condition + robot + position + (1 | participant)"
+        and "robot coded against tiago" in f.note
+    )
     robot = f.term("robot:turtlebot2")
-    assert robot is not None and robot.ci_low is not None and robot.ci_high is not None and robot.ci_low < -2.0 < robot.ci_high
+    assert (
+        robot is not None
+        and robot.ci_low is not None
+        and robot.ci_high is not None
+        and robot.ci_low < -2.0 < robot.ci_high
+    )
     same = fit([replace(o, robot="turtlebot2") for o in obs], CONDITIONS, "none")  # one robot: no robot term
     assert "robot" not in same.formula and same.term("robot:turtlebot2") is None
 
@@ -84,7 +92,13 @@ def test_position_confounded_with_condition_is_left_out() -> None:
 def test_report_rows_one_per_term_and_the_singular_count() -> None:
     results = []
     for o in synthetic(10, participant_sd=1.0, residual_sd=0.5):
-        design = {"participant": o.participant, "practice": False, "valid": True, "scenario": "hallway", "condition": o.condition}
+        design = {
+            "participant": o.participant,
+            "practice": False,
+            "valid": True,
+            "scenario": "hallway",
+            "condition": o.condition,
+        }
         design["order_position"] = o.position
         results.append(TrialResults(design, (Measure("h1", "detour_m", o.value), Measure("", "flat_m", 1.0))))
     rows = model_rows(results, [("detour_m", True), ("flat_m", False), ("absent", False)], CONDITIONS)

@@ -114,17 +114,23 @@ def test_two_servers_on_one_study_folder_share_the_places_and_refuse_strangers(t
         assert code == 303 and head["Location"].startswith("/session/p01?key=")
         assert join(two.base, "PANEL_B")[2]["Location"].startswith("/session/p02?key=")
         assert join(two.base, "PANEL_A")[2]["Location"] == head["Location"]  # the same place on the other server
-        code, page, _ = get(f"{two.base}/?participant=PANEL_A")  # back on the landing page: the way back, not a new start
+        # back on the landing page: the way back, not a new start
+        code, page, _ = get(f"{two.base}/?participant=PANEL_A")
         assert code == 200 and "Welcome back" in page and "Continue where you left off" in page
         code, page, _ = join(two.base, "PANEL_C")
         assert code == 200 and "The study is full" in page
         code, page, _ = join(one.base, "../etc")
         assert code == 400 and "Your participant id must be" in page
-        assert get(f"{one.base}/session/p01?key=wrong")[0] == 403 and get(f"{one.base}/session/p01/state?key=wrong")[0] == 403
+        assert (
+            get(f"{one.base}/session/p01?key=wrong")[0] == 403
+            and get(f"{one.base}/session/p01/state?key=wrong")[0] == 403
+        )
         assert get(f"{one.base}{head['Location']}")[0] == 200
         assert get(f"{one.base}/console/sessions.json")[0] == 403 and get(f"{one.base}/console?token=wrong")[0] == 403
         code, listing, _ = get(one.console_url.replace("/console?", "/console/sessions.json?"))
-        assert code == 200 and [(r["panel_id"], r["participant"], r["state"]) for r in json.loads(listing)["sessions"]] == [
+        assert code == 200 and [
+            (r["panel_id"], r["participant"], r["state"]) for r in json.loads(listing)["sessions"]
+        ] == [
             ("PANEL_A", "p01", "new"),
             ("PANEL_B", "p02", "new"),
         ]
@@ -223,16 +229,23 @@ def test_a_burst_of_get_and_post_joins_from_one_client_without_cookies_takes_at_
         assert sorted(json.loads(book.read_text())) == ["bot0c", "bot1c"]  # the first two POSTs only
         assert stat.S_IMODE(book.stat().st_mode) == 0o600  # it holds every session's key
         assert [a[0] for a in answers[2::3]] == [303, 303] + [429] * 6
-        assert all(a[0] == 200 and "Start the study" in a[1] for i, a in enumerate(answers) if i % 3 != 2)  # the page, no place
+        # the page, no place
+        assert all(a[0] == 200 and "Start the study" in a[1] for i, a in enumerate(answers) if i % 3 != 2)
         assert "Too many new places from here" in answers[-1][1]
         assert join(server.base, "bot0c")[0] == 303  # an id that has a place is not limited: it takes no new one
         assert get(f"{server.base}/session/p01/state?key={json.loads(book.read_text())['bot0c']['key']}")[0] == 200
         assert server.sessions() and len(server.sessions()) == 2
-        put = urllib.request.Request(f"{server.base}/", data=b"x", method="PUT")  # (the standard library's own error page)
+        # (the standard library's own error page)
+        put = urllib.request.Request(f"{server.base}/", data=b"x", method="PUT")
         with pytest.raises(urllib.error.HTTPError) as unsupported:
             urllib.request.urlopen(put, timeout=10)
         assert unsupported.value.code == 501
-        more = [get(f"{server.base}/nothing"), get(server.console_url), get(f"{server.base}/static/haven.css"), (501, "", unsupported.value.headers)]
+        more = [
+            get(f"{server.base}/nothing"),
+            get(server.console_url),
+            get(f"{server.base}/static/haven.css"),
+            (501, "", unsupported.value.headers),
+        ]
         for code, _, head in [*answers, *more]:
             assert all(h in head for h in HEADERS), (code, head)
         assert "frame-ancestors 'none'" in head["Content-Security-Policy"] and head["Referrer-Policy"] == "same-origin"
@@ -269,9 +282,13 @@ def test_one_place_per_browser_signed_links_and_an_allow_list(tmp_path):
         assert [seat.panel_id for seat in s.seats.all()] == ["ANNA"]
         assert s.gate.rules() == "no limit per address; signed links only; 3 listed ids only"
         assert s.join_url.endswith("/?participant=ID&sig=SIG")
-        assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": "http://elsewhere.example"})[0] == 403
+        assert (
+            get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": "http://elsewhere.example"})[0]
+            == 403
+        )
         assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": "null"})[0] == 403
-        assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": ""})[0] == 403  # not from a browser's page
+        # not from a browser's page
+        assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": ""})[0] == 403
         assert join(s.base, "BEN", sig=sig["BEN"])[2]["Location"].startswith("/session/p02?key=")
     finally:
         s.httpd.shutdown()
@@ -310,4 +327,7 @@ def test_the_limit_counts_an_address_in_a_window_and_an_ipv6_network_as_one():
     gate.took("192.0.2.7", 0.0)
     assert not gate.may_take("192.0.2.7", 1.0)  # IPv4-mapped is the same address
     assert Gate(Online(join_limit=JoinLimit(places=0))).may_take("192.0.2.7", 0.0)
-    assert gate.rules() == "2 new places per address in 1 min" and Gate(Online(join_limit=JoinLimit(places=0))).rules() == "no limit per address"
+    assert (
+        gate.rules() == "2 new places per address in 1 min"
+        and Gate(Online(join_limit=JoinLimit(places=0))).rules() == "no limit per address"
+    )

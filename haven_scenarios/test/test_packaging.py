@@ -23,8 +23,10 @@ def test_package_is_an_ament_python_package_with_one_version(pkg):
     assert (root / "test").is_dir()
     assert "version=VERSION" in (root / "setup.py").read_text()  # (read from package.xml)
     project = tomllib.loads((root / "pyproject.toml").read_text())["project"]
-    assert project["name"] == pkg and project["dynamic"] == ["version"] and "version" not in project  # (the metadata, PEP 621)
-    assert xml.findtext("version") == ET.parse(ROOT / "haven_sim" / "package.xml").getroot().findtext("version")  # (the three move together)
+    # (the metadata, PEP 621)
+    assert project["name"] == pkg and project["dynamic"] == ["version"] and "version" not in project
+    # (the three move together)
+    assert xml.findtext("version") == ET.parse(ROOT / "haven_sim" / "package.xml").getroot().findtext("version")
     assert importlib.import_module(pkg).__version__ == xml.findtext("version")
     assert (ROOT / "ros2_ws" / "src" / pkg).resolve() == root
 

@@ -18,7 +18,10 @@ from haven_viz.cues import CueState, Toggles
 
 ROOM = {
     "name": "room",
-    "walls": [{"segment": s, "thickness": 0.1} for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]])],
+    "walls": [
+        {"segment": s, "thickness": 0.1}
+        for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]])
+    ],
     "robot": {"start": [5.0, 3.0, 0.0]},
     "humans": [{"id": "h1", "start": [1.0, 1.0, 0.0]}],
 }
@@ -66,7 +69,8 @@ def test_blocker_seeing_only_a_short_piece_of_path_goes_to_its_farthest_marker()
     path = [Pose2D(x, 3.0, 0.0) for x in (5.0, 5.5, 6.0, 6.5, 7.0)]
     _, poses = walk("blocker", [Stop(1.0, 5.0)], 12.0, robot_path=path, robot_at=Pose2D(5.0, 3.0, 0.0))
     assert len([p for p in poses if math.hypot(p.x - 7.0, p.y - 3.0) < 0.25]) > 100
-    _, short = walk("blocker", [Stop(1.0, 5.0)], 12.0, robot_path=path[:3], robot_at=Pose2D(5.0, 3.0, 0.0))  # 1 m: too little
+    # 1 m: too little
+    _, short = walk("blocker", [Stop(1.0, 5.0)], 12.0, robot_path=path[:3], robot_at=Pose2D(5.0, 3.0, 0.0))
     assert all(abs(p.y - 3.0) > 0.3 or p.x < 5.5 for p in short)
 
 
@@ -111,7 +115,11 @@ def test_our_participant_models_are_plugins_listed_by_haven_plugins(capsys):
     assert (walker.package, walker.target) == ("haven_scenarios", "haven_scenarios.study.participants:Walker")
     assert main(["plugins"]) == 0
     listed = capsys.readouterr().out.splitlines()
-    assert {"participants walker haven_scenarios", "participants blocker haven_scenarios", "participants yielder haven_scenarios"} <= set(listed)
+    assert {
+        "participants walker haven_scenarios",
+        "participants blocker haven_scenarios",
+        "participants yielder haven_scenarios",
+    } <= set(listed)
     assert all(len(line.split()) == 3 for line in listed)
 
 
@@ -123,8 +131,14 @@ def test_a_model_whose_plugin_is_broken_is_named_as_such_not_as_unknown(monkeypa
     from haven_scenarios.study.scenario import ScenarioError
     from haven_sim.common import plugins
 
-    ours = [Entry(p.name, p.target, p.package, p.value) for p in plugins.registry("participants") if p.package == "haven_scenarios"]
-    reg = plugins.load("participants", [*ours, Entry("shy", "lab.people:Shy", "lab_people", ImportError("No module named 'lab'"))])
+    ours = [
+        Entry(p.name, p.target, p.package, p.value)
+        for p in plugins.registry("participants")
+        if p.package == "haven_scenarios"
+    ]
+    reg = plugins.load(
+        "participants", [*ours, Entry("shy", "lab.people:Shy", "lab_people", ImportError("No module named 'lab'"))]
+    )
     real = plugins.registry
     monkeypatch.setattr(plugins, "registry", lambda kind: reg if kind == "participants" else real(kind))
     said = "participant model 'shy' is installed but left out: does not load: ImportError: No module named 'lab'"

@@ -23,7 +23,8 @@ from haven_viz.cues import CueState, Toggles
 ROOM = {
     "name": "room",
     "walls": [
-        {"segment": s, "thickness": 0.1} for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]], [[5, 0], [5, 4]])
+        {"segment": s, "thickness": 0.1}
+        for s in ([[0, 0], [10, 0]], [[10, 0], [10, 6]], [[10, 6], [0, 6]], [[0, 6], [0, 0]], [[5, 0], [5, 4]])
     ],
     "robot": {"start": [3.0, 2.0, 0.0]},
     "humans": [{"id": "h1", "start": [1.0, 2.0, 0.0]}],
@@ -65,9 +66,15 @@ def test_a_wall_hides_the_robot_and_the_markers_behind_it():
 def test_a_cue_off_in_the_condition_is_not_perceived(cue):
     off = replace(ALL, toggles=replace(Toggles(), **{cue: False}))
     p, q = look(Pose2D(3.0, 2.0, math.pi)), look(Pose2D(3.0, 2.0, math.pi), cues=off)
-    shown = {"path_projection": "path", "turn_signals": "signal", "thought_bubble": "thought", "battery_indicator": "battery"}[cue]
+    shown = {
+        "path_projection": "path",
+        "turn_signals": "signal",
+        "thought_bubble": "thought",
+        "battery_indicator": "battery",
+    }[cue]
     assert getattr(p, shown) and not getattr(q, shown)
-    assert look(Pose2D(3.0, 2.0, math.pi), cues=None) == Percept(0.0, Pose2D(3.0, 2.0, math.pi))  # before the viz says anything
+    # before the viz says anything
+    assert look(Pose2D(3.0, 2.0, math.pi), cues=None) == Percept(0.0, Pose2D(3.0, 2.0, math.pi))
 
 
 def test_without_a_cue_the_robot_shows_no_way_and_with_one_it_does():
@@ -92,7 +99,12 @@ def test_the_person_acts_one_reaction_time_late():
 
 def test_person_params_in_a_scenario_file_and_their_one_line_errors():
     def scenario(params):
-        return {"name": "s", "world": "small_test", "kind": "retrieval", "humans": [{"id": "h1", "model": "yielder", "params": params}]}
+        return {
+            "name": "s",
+            "world": "small_test",
+            "kind": "retrieval",
+            "humans": [{"id": "h1", "model": "yielder", "params": params}],
+        }
 
     task = parse_scenario(scenario({"reaction_s": 1.5, "fov_deg": 90}), "s.yaml").humans[0]
     assert task.params == PersonParams(reaction_s=1.5, fov_deg=90.0)
@@ -125,7 +137,9 @@ def test_hesitation_is_slowing_while_walking_not_at_a_stop_nor_after_the_task():
     assert hesitations(t, xy, np.zeros((0, 2)), None)[0] == 3  # the stop and the end count without them
 
 
-@pytest.mark.parametrize("condition, sees_path", [(["none"], False), (["turn_signals"], False), (["path_projection"], True)])
+@pytest.mark.parametrize(
+    "condition, sees_path", [(["none"], False), (["turn_signals"], False), (["path_projection"], True)]
+)
 def test_the_director_hands_the_blocker_the_path_only_when_the_projection_shows_it(condition, sees_path):
     s = load_scenario("hallway")
     s = replace(s, humans=tuple(replace(h, model="blocker") for h in s.humans))

@@ -63,7 +63,12 @@ def test_the_slowdown_is_a_random_effect_around_its_centre_never_the_metrics_thr
     assert statistics.stdev(draws) > 0.08 and min(draws) >= HESITATE_LIMITS[0] and max(draws) <= HESITATE_LIMITS[1]
     assert PersonParams().hesitate_factor != SLOW_FRACTION  # the metric does not measure the parameter
     # A centre of 1 (no slowing) stays 1 with the spreads off.
-    assert individual(PersonParams(hesitate_factor=1.0, hesitate_person_sd=0.0, hesitate_trial_sd=0.0), "h1", 0).params.hesitate_factor == 1.0
+    assert (
+        individual(
+            PersonParams(hesitate_factor=1.0, hesitate_person_sd=0.0, hesitate_trial_sd=0.0), "h1", 0
+        ).params.hesitate_factor
+        == 1.0
+    )
 
 
 def test_people_learn_reaction_time_and_misreading_shrink_over_the_session():
@@ -75,14 +80,26 @@ def test_people_learn_reaction_time_and_misreading_shrink_over_the_session():
 
 
 def test_a_misread_encounter_hides_the_cues_for_the_whole_encounter_at_the_documented_rate():
-    walls = [{"segment": s, "thickness": 0.1} for s in ([[-1, -2], [11, -2]], [[11, -2], [11, 2]], [[11, 2], [-1, 2]], [[-1, 2], [-1, -2]])]
-    world = parse_world({"name": "r", "walls": walls, "robot": {"start": [5.0, 0.0, 0.0]}, "humans": [{"id": "h1", "start": [0.0, 0.0, 0.0]}]})
+    walls = [
+        {"segment": s, "thickness": 0.1}
+        for s in ([[-1, -2], [11, -2]], [[11, -2], [11, 2]], [[11, 2], [-1, 2]], [[-1, 2], [-1, -2]])
+    ]
+    world = parse_world(
+        {
+            "name": "r",
+            "walls": walls,
+            "robot": {"start": [5.0, 0.0, 0.0]},
+            "humans": [{"id": "h1", "start": [0.0, 0.0, 0.0]}],
+        }
+    )
     planner = GridPlanner(rasterise(world), HUMAN_PLANNER)
     robot = Pose2D(4.0, 0.0, 3.14)
     shown = Percept(0.0, robot, path=((3.0, 0.0), (2.0, 0.0)))
     misread, encounters = 0, 0
     for seed in range(300):
-        w = make_walker("walker", "h1", [Stop(9.0, 0.0)], planner, 1.0, seed, PersonParams(cue_error=0.3, cue_error_person_sd=0.0))
+        w = make_walker(
+            "walker", "h1", [Stop(9.0, 0.0)], planner, 1.0, seed, PersonParams(cue_error=0.3, cue_error_person_sd=0.0)
+        )
         read = [w._read_cues(t, replace(shown, stamp=t)) for t in (0.0, 0.5, 1.0)]  # one encounter
         assert len({r.path for r in read}) == 1  # read or ignored for all of it
         misread += not read[0].path

@@ -68,8 +68,14 @@ def test_the_package_s_own_tests_pass_once_installed(kind, tmp_path):
     folder = write_package(kind, f"lab_{kind}", tmp_path)
     target = tmp_path / "site"
     uv = Path(sys.executable).with_name("uv")
-    install = [str(uv), "pip", "install", "--python", sys.executable] if uv.exists() else [sys.executable, "-m", "pip", "install"]
-    subprocess.run([*install, "-q", "--no-deps", "--no-build-isolation", "--target", str(target), str(folder)], check=True)
+    install = (
+        [str(uv), "pip", "install", "--python", sys.executable]
+        if uv.exists()
+        else [sys.executable, "-m", "pip", "install"]
+    )
+    subprocess.run(
+        [*install, "-q", "--no-deps", "--no-build-isolation", "--target", str(target), str(folder)], check=True
+    )
     shutil.rmtree(folder / "build", ignore_errors=True)
     env = {**os.environ, "PYTHONPATH": str(target)}
     run = subprocess.run(

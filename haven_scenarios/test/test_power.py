@@ -19,7 +19,12 @@ ORDERS = [tuple(CONDITIONS[i] for i in row) for row in williams(4)]
 
 
 def pool(
-    people: int, effect: float, participant_sd: float = 1.0, residual_sd: float = 0.5, seed: int = 3, effect_sd: float = 0.0
+    people: int,
+    effect: float,
+    participant_sd: float = 1.0,
+    residual_sd: float = 0.5,
+    seed: int = 3,
+    effect_sd: float = 0.0,
 ) -> list[Observation]:
     """A simulated pool: participant k ran Williams order k mod 4; `all` is `effect` above the rest
     (`effect_sd`: how much that effect varies between participants)."""
@@ -28,7 +33,11 @@ def pool(
     for k in range(people):
         level, own = rng.normal(0.0, participant_sd), effect + rng.normal(0.0, effect_sd)
         for position, c in enumerate(ORDERS[k % 4], 1):
-            out.append(Observation(f"p{k:02d}", c, position, 5.0 + level + (own if c == "all" else 0.0) + rng.normal(0.0, residual_sd)))
+            out.append(
+                Observation(
+                    f"p{k:02d}", c, position, 5.0 + level + (own if c == "all" else 0.0) + rng.normal(0.0, residual_sd)
+                )
+            )
     return out
 
 
@@ -47,8 +56,12 @@ def test_the_pool_is_shifted_to_the_effect_asked_keeping_its_spread() -> None:
     shifted = [o for trials in c.pool.values() for k, person in enumerate(trials) for o in c.shifted(person, k, 2.0)]
     assert abs(pool_effect(shifted, question(2.0)) - 2.0) < 1e-9
     for name in ("none", "turn_signals"):  # other conditions untouched, spread kept
-        assert sorted(o.value for o in shifted if o.condition == name) == sorted(o.value for o in raw if o.condition == name)
-    assert np.std([o.value for o in shifted if o.condition == "all"]) == pytest.approx(np.std([o.value for o in raw if o.condition == "all"]))
+        assert sorted(o.value for o in shifted if o.condition == name) == sorted(
+            o.value for o in raw if o.condition == name
+        )
+    assert np.std([o.value for o in shifted if o.condition == "all"]) == pytest.approx(
+        np.std([o.value for o in raw if o.condition == "all"])
+    )
 
 
 @pytest.mark.integration  # (a Monte Carlo of hundreds of model fits)
@@ -88,19 +101,25 @@ def test_wilson_interval() -> None:
 
 @pytest.mark.integration
 def test_power_on_the_shipped_study_prints_four_participant_counts(tmp_path: Path) -> None:
-    cmd = [sys.executable, "-m", "haven_scenarios.tools.cli", "study", "power", "haven_paper", "--metric", "time_to_finish_s", "--effect", "-2",
-           "--scenario", "hallway", "--participants", "4,8,12,16", "--reps", "10", "--pool", "4", "--out", str(tmp_path)]  # fmt: skip
+    cmd = [sys.executable, "-m", "haven_scenarios.tools.cli", "study", "power", "haven_paper",
+           "--metric", "time_to_finish_s", "--effect", "-2", "--scenario", "hallway",
+           "--participants", "4,8,12,16", "--reps", "10", "--pool", "4", "--out", str(tmp_path)]  # fmt: skip
     done = subprocess.run(cmd, capture_output=True, text=True, timeout=600)
     assert done.returncode == 0, done.stderr
     out = done.stdout
-    assert "pool: 4 simulated participant(s) (16 trial(s) simulated now)" in out  # (--scenario: its 4 trials each, no others)
+    # (--scenario: its 4 trials each, no others)
+    assert "pool: 4 simulated participant(s) (16 trial(s) simulated now)" in out
     for n in (4, 8, 12, 16):
         assert any(line.split()[:2] == ["hallway", str(n)] for line in out.splitlines()), out
     rows = list(csv.DictReader((tmp_path / "power_time_to_finish_s_all-none_E-2.csv").open()))
-    assert {int(r["participants"]) for r in rows} == {4, 8, 12, 16} and all(0.0 <= float(r["power"]) <= 1.0 for r in rows)
+    assert {int(r["participants"]) for r in rows} == {4, 8, 12, 16} and all(
+        0.0 <= float(r["power"]) <= 1.0 for r in rows
+    )
     assert (tmp_path / "power_time_to_finish_s_all-none_E-2.png").stat().st_size > 10_000
     again = subprocess.run(cmd, capture_output=True, text=True, timeout=600)  # the pool is reused, the numbers repeat
-    assert again.stdout.split("pool:")[1] == out.split("pool:")[1].replace("(16 trial(s) simulated now)", "(0 trial(s) simulated now)")
+    assert again.stdout.split("pool:")[1] == out.split("pool:")[1].replace(
+        "(16 trial(s) simulated now)", "(0 trial(s) simulated now)"
+    )
 
 
 @pytest.mark.integration  # (a Monte Carlo of hundreds of model fits)
@@ -109,7 +128,8 @@ def test_a_test_that_finds_absent_effects_too_often_is_flagged() -> None:
     # random-intercept model's one residual understates the C - R contrast's spread.
     varied = pool(48, effect=1.0, residual_sd=0.2, effect_sd=3.0)
     r = estimate(cell(question(1.0, reps=100), "s", 12, slots(12), varied))
-    assert r.false_positive_rate > 0.1 and r.anticonservative(), r.false_positive_rate  # (14 of 100: its interval starts at 0.085)
+    # (14 of 100: its interval starts at 0.085)
+    assert r.false_positive_rate > 0.1 and r.anticonservative(), r.false_positive_rate
 
 
 def test_a_pool_too_thin_for_the_orders_a_study_needs_is_said() -> None:
@@ -124,11 +144,19 @@ def test_a_metric_is_checked_before_any_trial_is_simulated() -> None:
     from haven_scenarios.study.protocol import load_study
 
     paper = load_study("haven_paper")
-    for fine in ("time_to_finish_s", "hunav_avg_distance_to_closest_person_m", "intimate_centre_intrusion_s", "path_length_m"):
+    for fine in (
+        "time_to_finish_s",
+        "hunav_avg_distance_to_closest_person_m",
+        "intimate_centre_intrusion_s",
+        "path_length_m",
+    ):
         check_metric(fine, paper)
     with pytest.raises(ValueError, match=r"^--metric: no measure 'time_to_finsh_s': did you mean time_to_finish_s\?$"):
         check_metric("time_to_finsh_s", paper)
-    with pytest.raises(ValueError, match=r"^--metric: godspeed_safety is a questionnaire score: simulated participants answer no questionnaire$"):
+    with pytest.raises(
+        ValueError,
+        match=r"^--metric: godspeed_safety is a questionnaire score: simulated participants answer no questionnaire$",
+    ):
         check_metric("godspeed_safety", paper)
 
 

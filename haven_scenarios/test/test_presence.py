@@ -21,8 +21,14 @@ def test_a_participant_who_leaves_and_comes_back_is_logged_with_how_long_they_we
     assert kinds(a.opened("h1", 1.0, 1.0)) == ([], [])  # a second tab of the same page
     assert kinds(a.closed("h1", 2.0, 2.0, running=True)) == ([], [])  # one tab still open
     events, acts = a.closed("h1", 3.0, 3.0, running=True)
-    assert [e.kind for e in events] == [EventKind.PARTICIPANT_DISCONNECTED] and events[0]["policy"] == "keep" and acts == []
-    assert a.table(10.0)["participants"]["h1"]["state"] == "away" and a.table(10.0)["participants"]["h1"]["away_s"] == 7.0
+    assert (
+        [e.kind for e in events] == [EventKind.PARTICIPANT_DISCONNECTED]
+        and events[0]["policy"] == "keep"
+        and acts == []
+    )
+    assert (
+        a.table(10.0)["participants"]["h1"]["state"] == "away" and a.table(10.0)["participants"]["h1"]["away_s"] == 7.0
+    )
     assert a.table(10.0)["participants"]["h2"]["state"] == "not yet"
     events, _ = a.opened("h1", 10.5, 4.0)
     assert [e.kind for e in events] == [EventKind.PARTICIPANT_RECONNECTED] and events[0]["away_s"] == 7.5
@@ -33,7 +39,8 @@ def test_pause_stands_the_trial_still_until_everyone_is_back_and_aborts_after_th
     a = Attendance(["h1", "h2"], OnDisconnect.PAUSE, reconnect_timeout_s=30.0)
     for who in ("h1", "h2"):
         a.opened(who, 0.0, 0.0)
-    assert kinds(a.closed("h1", 1.0, 1.0, running=False)) == ([EventKind.PARTICIPANT_DISCONNECTED], [])  # not running: no policy
+    # not running: no policy
+    assert kinds(a.closed("h1", 1.0, 1.0, running=False)) == ([EventKind.PARTICIPANT_DISCONNECTED], [])
     a.opened("h1", 2.0, 2.0)
     assert kinds(a.closed("h1", 3.0, 3.0, running=True)) == ([EventKind.PARTICIPANT_DISCONNECTED], [Act.PAUSE])
     assert kinds(a.closed("h2", 4.0, 3.0, running=True)) == ([EventKind.PARTICIPANT_DISCONNECTED], [])  # already paused
@@ -41,7 +48,11 @@ def test_pause_stands_the_trial_still_until_everyone_is_back_and_aborts_after_th
     assert a.table(5.0)["paused"] is True
     assert kinds(a.tick(33.0, 3.0, running=True)) == ([], [])  # h2 away 29 s
     events, acts = a.tick(34.0, 3.0, running=True)
-    assert [e.kind for e in events] == [EventKind.PARTICIPANT_LOST] and events[0]["by"] == "h2" and events[0]["away_s"] == 30.0
+    assert (
+        [e.kind for e in events] == [EventKind.PARTICIPANT_LOST]
+        and events[0]["by"] == "h2"
+        and events[0]["away_s"] == 30.0
+    )
     assert acts == [Act.RESUME, Act.ABORT] and not a.paused
     b = Attendance(["h1"], OnDisconnect.PAUSE)
     b.opened("h1", 0.0, 0.0)
@@ -105,13 +116,17 @@ def test_a_participant_away_longer_than_the_limit_makes_the_session_not_valid():
         event(EventKind.PARTICIPANT_DISCONNECTED, 10.0, Source.WEB, by="h1", policy="keep"),
         event(EventKind.PARTICIPANT_RECONNECTED, 24.0, Source.WEB, by="h1", away_s=MAX_AWAY_S + 4),
     )
-    assert _away(long, (5.0, 60.0)) == [f"participant h1: away {MAX_AWAY_S + 4:g} s from 5.0 s into the trial (its page disconnected)"]
+    assert _away(long, (5.0, 60.0)) == [
+        f"participant h1: away {MAX_AWAY_S + 4:g} s from 5.0 s into the trial (its page disconnected)"
+    ]
     paused = rec(
         event(EventKind.PARTICIPANT_DISCONNECTED, 10.0, Source.WEB, by="h1", policy="pause"),
         event(EventKind.PARTICIPANT_RECONNECTED, 10.0, Source.WEB, by="h1", away_s=MAX_AWAY_S + 4),
     )
     assert _away(paused, (5.0, 60.0)) == []  # the trial stood still while they were away
     gone = rec(event(EventKind.PARTICIPANT_DISCONNECTED, 40.0, Source.WEB, by="h2", policy="keep"))
-    assert _away(gone, (5.0, 60.0)) == ["participant h2: away from 35.0 s into the trial to its end (its page disconnected)"]
+    assert _away(gone, (5.0, 60.0)) == [
+        "participant h2: away from 35.0 s into the trial to its end (its page disconnected)"
+    ]
     before = rec(event(EventKind.PARTICIPANT_DISCONNECTED, 1.0, Source.WEB, by="h2", policy="keep"))
     assert _away(before, (5.0, 60.0)) == []  # before the trial began

@@ -63,17 +63,27 @@ def test_answers_are_checked_written_and_an_event(tmp_path):
     [
         ("h2", message(TLX_ANSWERS), "h2's page may not answer for 'h1'"),
         ("h1", message(TLX_ANSWERS, questionnaire="sus"), "no questionnaire 'sus' for h1"),
-        ("h1", message({**TLX_ANSWERS, "mental": None}), "nasa_tlx.mental: must be one of 0..100 in steps of 5, got None"),
+        (
+            "h1",
+            message({**TLX_ANSWERS, "mental": None}),
+            "nasa_tlx.mental: must be one of 0..100 in steps of 5, got None",
+        ),
         ("h1", message({k: v for k, v in TLX_ANSWERS.items() if k != "effort"}), "nasa_tlx.effort: must be one of"),
         ("h1", message({**TLX_ANSWERS, "mental": 52}), "nasa_tlx.mental: must be one of 0..100 in steps of 5, got 52"),
         ("h1", message({**TLX_ANSWERS, "extra": 5}), "nasa_tlx: no item 'extra'"),
         ("h1", "{not json", "not JSON"),
-        ("h1", json.dumps({"human": "h1", "answers": {}}), "must be a JSON object with human, questionnaire and answers"),
+        (
+            "h1",
+            json.dumps({"human": "h1", "answers": {}}),
+            "must be a JSON object with human, questionnaire and answers",
+        ),
         ("h1", json.dumps([1]), "must be a JSON object"),
         ("h1", " " * 70_000, "questionnaire answers of 70000 bytes"),
     ],
 )
-def test_a_message_that_is_not_the_pages_own_complete_answers_is_refused_and_nothing_written(tmp_path, page, text, problem):
+def test_a_message_that_is_not_the_pages_own_complete_answers_is_refused_and_nothing_written(
+    tmp_path, page, text, problem
+):
     with pytest.raises(ValueError, match=re.escape(problem)) as refused:
         book(tmp_path).take(page, text, 1.0, "t")
     assert "\n" not in str(refused.value)
@@ -88,7 +98,9 @@ def test_each_questionnaire_is_answered_once_and_a_restarted_node_goes_on_from_t
         again.take("h1", message({k: 0 for k in TLX_ANSWERS}), 2.0, "t2")
     again.take("h2", message({k: 100 for k in TLX_ANSWERS}, human="h2"), 3.0, "t3")
     data = json.loads((tmp_path / ANSWERS_FILE).read_text())
-    assert data["h1"]["nasa_tlx"]["answers"] == TLX_ANSWERS and data["h2"]["nasa_tlx"]["scores"]["nasa_tlx_raw"] == 100.0
+    assert (
+        data["h1"]["nasa_tlx"]["answers"] == TLX_ANSWERS and data["h2"]["nasa_tlx"]["scores"]["nasa_tlx_raw"] == 100.0
+    )
 
 
 def record(folder: Path, *events: Event) -> None:
@@ -97,7 +109,11 @@ def record(folder: Path, *events: Event) -> None:
 
 
 def trial(folder: Path, reason: str) -> None:
-    record(folder, Event(EventKind.TRIAL_START, 0.0, "scenario"), Event(EventKind.TRIAL_END, 9.0, "scenario", {"reason": reason}))
+    record(
+        folder,
+        Event(EventKind.TRIAL_START, 0.0, "scenario"),
+        Event(EventKind.TRIAL_END, 9.0, "scenario", {"reason": reason}),
+    )
 
 
 def test_the_questionnaires_are_over_when_every_answer_is_written_and_recorded(tmp_path):
@@ -136,7 +152,9 @@ def test_the_pages_get_the_questionnaires_and_only_participants_answer_only_the_
 
     r, string = roles(["h1"]), "std_msgs/msg/String"
     assert r["h1"].may_publish(ANSWERS, string) is None and r[CONSOLE].may_publish(ANSWERS, string)
-    assert r[CONSOLE].may_publish(SKIP_QUESTIONNAIRES, string) is None and r["h1"].may_publish(SKIP_QUESTIONNAIRES, string)
+    assert r[CONSOLE].may_publish(SKIP_QUESTIONNAIRES, string) is None and r["h1"].may_publish(
+        SKIP_QUESTIONNAIRES, string
+    )
     settings = PageSettings(questionnaires=(TLX, GODSPEED), teleoperated=("h1",))
     c = page_config(r["h1"], load_scenario("hallway"), settings)
     assert [q["name"] for q in c["questionnaires"]] == ["nasa_tlx", "godspeed"] and c["teleoperated"] == ["h1"]
@@ -149,7 +167,11 @@ def test_the_web_nodes_parameter_carries_the_specs(tmp_path):
     text = as_parameter(specs)
     assert text.startswith("'") and text.endswith("'")  # (ROS reads a quoted YAML string; '' is one quote)
     assert [q.name for q in from_parameter(text[1:-1].replace("''", "'"))] == ["nasa_tlx", "legibility"]
-    for bad, problem in (("{", "not JSON"), ('{"a": 1}', "must be a JSON list"), ('["sus"]', "unknown questionnaire 'sus'")):
+    for bad, problem in (
+        ("{", "not JSON"),
+        ('{"a": 1}', "must be a JSON list"),
+        ('["sus"]', "unknown questionnaire 'sus'"),
+    ):
         with pytest.raises(ValueError, match=problem):
             from_parameter(bad)
 
@@ -161,16 +183,21 @@ def run_errors(capsys, *argv) -> list[str]:
 
 def test_questionnaire_usage_errors_are_one_line(tmp_path, capsys):
     assert run_errors(capsys, "--questionnaire", "nasa_tlx") == [
-        "haven: error: --questionnaire: participants answer in their pages: needs --web and teleoperated humans (--teleop)"
+        "haven: error: --questionnaire: participants answer in their pages: "
+        "needs --web and teleoperated humans (--teleop)"
     ]
-    assert run_errors(capsys, "--web", "--questionnaire", "nasa_tlx")[0].endswith("needs --web and teleoperated humans (--teleop)")
+    assert run_errors(capsys, "--web", "--questionnaire", "nasa_tlx")[0].endswith(
+        "needs --web and teleoperated humans (--teleop)"
+    )
     web = ["--web", "--teleop", "h1", "--port", "0", "--sessions", str(tmp_path / "s")]
     assert run_errors(capsys, *web, "--questionnaire", "sus") == [
         f"haven: error: --questionnaire sus: neither a registered questionnaire ({', '.join(registered())}) nor a file"
     ]
     bad = tmp_path / "bad.yaml"
     bad.write_text("name: legibility\npoints: 12\nitems: [{id: a, text: A}]\n")
-    assert run_errors(capsys, *web, "--questionnaire", str(bad)) == [f"haven: error: {bad}: points: must be a whole number 2..11, got 12"]
+    assert run_errors(capsys, *web, "--questionnaire", str(bad)) == [
+        f"haven: error: {bad}: points: must be a whole number 2..11, got 12"
+    ]
     bad.write_text("- just a list\n")
     assert run_errors(capsys, *web, "--questionnaire", str(bad)) == [
         f"haven: error: {bad}: must be a mapping of one Likert questionnaire (name, points, anchors, items)"
@@ -178,7 +205,9 @@ def test_questionnaire_usage_errors_are_one_line(tmp_path, capsys):
     bad.write_text("name: [unclosed\n")
     (line,) = run_errors(capsys, *web, "--questionnaire", str(bad))
     assert line.startswith(f"haven: error: {bad}:")
-    assert run_errors(capsys, *web, "--questionnaire", "godspeed", "godspeed") == ["haven: error: --questionnaire: a questionnaire is named twice"]
+    assert run_errors(capsys, *web, "--questionnaire", "godspeed", "godspeed") == [
+        "haven: error: --questionnaire: a questionnaire is named twice"
+    ]
     assert not (tmp_path / "s").exists()  # refused before anything started
 
 
@@ -190,9 +219,18 @@ def test_mixed_items_reach_the_page_in_the_order_the_answers_record_per_person_a
     (mixed,) = from_parameter(json.dumps([{"name": "godspeed", "shuffle": True}]))
     r = roles(["h1", "h2"])
     settings = PageSettings(session="s1", questionnaires=(mixed,), teleoperated=("h1", "h2"))
-    shown = {h: [i["id"] for i in page_config(r[h], load_scenario("hallway"), settings)["questionnaires"][0]["items"]] for h in ("h1", "h2")}
-    other = page_config(r["h1"], load_scenario("hallway"), PageSettings(session="s2", questionnaires=(mixed,)))["questionnaires"][0]["items"]
-    assert shown["h1"] != shown["h2"] and shown["h1"] != [i["id"] for i in other] and sorted(shown["h1"]) == sorted(i.id for i in GODSPEED.items)
+    shown = {
+        h: [i["id"] for i in page_config(r[h], load_scenario("hallway"), settings)["questionnaires"][0]["items"]]
+        for h in ("h1", "h2")
+    }
+    other = page_config(r["h1"], load_scenario("hallway"), PageSettings(session="s2", questionnaires=(mixed,)))[
+        "questionnaires"
+    ][0]["items"]
+    assert (
+        shown["h1"] != shown["h2"]
+        and shown["h1"] != [i["id"] for i in other]
+        and sorted(shown["h1"]) == sorted(i.id for i in GODSPEED.items)
+    )
     (tmp_path / "s1").mkdir()
     answers = {i.id: 3 for i in GODSPEED.items}
     AnswerBook(tmp_path / "s1", ["h1"], [mixed]).take("h1", message(answers, questionnaire="godspeed"), 1.0, "t")

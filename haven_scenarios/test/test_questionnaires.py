@@ -4,7 +4,15 @@ from __future__ import annotations
 
 import pytest
 
-from haven_scenarios.study.questionnaires import BUILTINS, answers_record, check_answers, codebook_rows, likert, resolve, score
+from haven_scenarios.study.questionnaires import (
+    BUILTINS,
+    answers_record,
+    check_answers,
+    codebook_rows,
+    likert,
+    resolve,
+    score,
+)
 
 TLX = BUILTINS["nasa_tlx"]
 GODSPEED = BUILTINS["godspeed"]
@@ -20,14 +28,21 @@ def test_raw_tlx_is_the_mean_of_six_subscales_on_0_to_100_in_fives() -> None:
 
 
 def test_godspeed_has_its_five_series_asked_and_scored_as_published() -> None:
-    assert [name for name, _ in GODSPEED.scales] == ["anthropomorphism", "animacy", "likeability", "intelligence", "safety"]
+    assert [name for name, _ in GODSPEED.scales] == [
+        "anthropomorphism",
+        "animacy",
+        "likeability",
+        "intelligence",
+        "safety",
+    ]
     assert [len(ids) for _, ids in GODSPEED.scales] == [5, 6, 5, 5, 3]
     answers = {i.id: 5 for i in GODSPEED.items}
     s = score(GODSPEED, answers)
     assert s["godspeed_likeability"] == 5.0
     assert s["godspeed_safety"] == 5.0  # (published: no item reversed)
     s = score(GODSPEED, {**answers, "safety_1": 4, "safety_2": 5, "safety_3": 1})
-    assert s["godspeed_safety"] == pytest.approx(10 / 3, abs=1e-4)  # the 4/5/1: 3.33 as published (4.67 reversed)
+    # the 4/5/1: 3.33 as published (4.67 reversed)
+    assert s["godspeed_safety"] == pytest.approx(10 / 3, abs=1e-4)
     prompts = {i.id.split("_")[0]: i.prompt for i in GODSPEED.items}
     assert prompts["safety"] == "Please rate your emotional state on these scales."  # about the participant
     assert {prompts[s] for s in ("anthropomorphism", "animacy", "likeability", "intelligence")} == {
@@ -63,8 +78,14 @@ def test_answers_off_the_scale_are_refused_in_one_line(answers: object, message:
     "specs, message",
     [
         (["nasa"], r"q\[0\]: unknown questionnaire 'nasa'"),
-        ([{"name": "nasa_tlx", "items": [{"id": "a", "text": "x"}]}], r"is a registered questionnaire \(haven plugins\)"),
-        ([{"name": "x", "points": 1, "items": [{"id": "a", "text": "x"}]}], r"q\[0\]\.points: must be a whole number 2\.\.11"),
+        (
+            [{"name": "nasa_tlx", "items": [{"id": "a", "text": "x"}]}],
+            r"is a registered questionnaire \(haven plugins\)",
+        ),
+        (
+            [{"name": "x", "points": 1, "items": [{"id": "a", "text": "x"}]}],
+            r"q\[0\]\.points: must be a whole number 2\.\.11",
+        ),
         ([{"name": "x", "items": []}], r"q\[0\]\.items: must be a list of 1\.\.100"),
         ([{"name": "x", "items": [{"id": "a", "text": "x"}, {"id": "a", "text": "y"}]}], "item ids must differ"),
         (
@@ -76,7 +97,8 @@ def test_answers_off_the_scale_are_refused_in_one_line(answers: object, message:
         # YAML reads `anchors: [No, Yes]` as booleans
         (
             [{"name": "x", "anchors": [False, True], "items": [{"id": "a", "text": "x"}]}],
-            r"anchors.*must be text, got False \(YAML reads Yes, No, On and Off as true or false: put the words in quotes",
+            r"anchors.*must be text, got False \(YAML reads Yes, No, "
+            r"On and Off as true or false: put the words in quotes",
         ),
     ],
 )
@@ -89,7 +111,10 @@ def test_resolve_keeps_order_and_serialises_for_the_page() -> None:
     qs = resolve(["godspeed", "nasa_tlx"], "q")
     assert [q.name for q in qs] == ["godspeed", "nasa_tlx"]
     d = qs[1].to_dict()
-    assert d["scales"]["raw"] == ["mental", "physical", "temporal", "performance", "effort", "frustration"] and d["step"] == 5
+    assert (
+        d["scales"]["raw"] == ["mental", "physical", "temporal", "performance", "effort", "frustration"]
+        and d["step"] == 5
+    )
 
 
 def test_a_plugin_questionnaire_is_a_likert_mapping_or_a_questionnaire_under_its_registered_name() -> None:
@@ -108,16 +133,23 @@ def test_a_plugin_questionnaire_is_a_likert_mapping_or_a_questionnaire_under_its
         ],
     )
     assert reg.names() == ["tlx_again", "trust"]
-    assert reg.get("trust").name == "trust" and reg.get("trust").maximum == 5 and reg.get("tlx_again").items == TLX.items
+    assert (
+        reg.get("trust").name == "trust" and reg.get("trust").maximum == 5 and reg.get("tlx_again").items == TLX.items
+    )
     assert reg.problems == [
-        "haven.questionnaires broken (lab.q:BROKEN, from lab_q): questionnaire broken: items: must be a list of 1..100 items, got []",
-        "haven.questionnaires number (lab.q:N, from lab_q): is neither a Questionnaire nor a mapping of Likert items (title, points, anchors, items)",
+        "haven.questionnaires broken (lab.q:BROKEN, from lab_q): "
+        "questionnaire broken: items: must be a list of 1..100 items, got []",
+        "haven.questionnaires number (lab.q:N, from lab_q): is neither a Questionnaire "
+        "nor a mapping of Likert items (title, points, anchors, items)",
     ]
 
 
 def test_codebook_rows_give_each_score_its_range_definition_and_source() -> None:
     rows = {r[0]: r for r in codebook_rows(GODSPEED)}
     assert set(rows) == {f"godspeed_{s}" for s, _ in GODSPEED.scales}
-    assert rows["godspeed_safety"][1] == "points 1-5" and "mean of items safety_1, safety_2, safety_3" in rows["godspeed_safety"][2]
+    assert (
+        rows["godspeed_safety"][1] == "points 1-5"
+        and "mean of items safety_1, safety_2, safety_3" in rows["godspeed_safety"][2]
+    )
     assert "reverse" not in rows["godspeed_safety"][2] and "Bartneck" in rows["godspeed_safety"][3]
     assert codebook_rows(TLX)[0][:2] == ("nasa_tlx_raw", "points 0-100")

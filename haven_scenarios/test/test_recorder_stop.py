@@ -26,14 +26,17 @@ def odometry(stamp: float, x: float) -> bytes:
     sec, nanosec = int(stamp), round((stamp - int(stamp)) * 1e9)
     header = T["std_msgs/msg/Header"](stamp=T["builtin_interfaces/msg/Time"](sec=sec, nanosec=nanosec), frame_id="odom")
     pose = T["geometry_msgs/msg/Pose"](
-        position=T["geometry_msgs/msg/Point"](x=x, y=0.0, z=0.0), orientation=T["geometry_msgs/msg/Quaternion"](x=0.0, y=0.0, z=0.0, w=1.0)
+        position=T["geometry_msgs/msg/Point"](x=x, y=0.0, z=0.0),
+        orientation=T["geometry_msgs/msg/Quaternion"](x=0.0, y=0.0, z=0.0, w=1.0),
     )
     zero = T["geometry_msgs/msg/Vector3"](x=0.0, y=0.0, z=0.0)
     msg = T["nav_msgs/msg/Odometry"](
         header=header,
         child_frame_id="base_footprint",
         pose=T["geometry_msgs/msg/PoseWithCovariance"](pose=pose, covariance=np.zeros(36)),
-        twist=T["geometry_msgs/msg/TwistWithCovariance"](twist=T["geometry_msgs/msg/Twist"](linear=zero, angular=zero), covariance=np.zeros(36)),
+        twist=T["geometry_msgs/msg/TwistWithCovariance"](
+            twist=T["geometry_msgs/msg/Twist"](linear=zero, angular=zero), covariance=np.zeros(36)
+        ),
     )
     return bytes(TYPESTORE.serialize_cdr(msg, "nav_msgs/msg/Odometry"))
 
@@ -43,12 +46,15 @@ def text(data: str) -> bytes:
 
 
 def write_trial(bag, end_s=4.0, odom_until_s=None):
-    """A 4 s trial as the recorder writes it (flushed once a second of it); /odom up to `odom_until_s` (default: past the end)."""
+    """A 4 s trial as the recorder writes it (flushed once a second of it); /odom up to `odom_until_s` (default: past
+    the end)."""
     until = end_s + 0.04 if odom_until_s is None else odom_until_s
     with BagWriter(bag) as w:
         w.add_topic("/odom", "nav_msgs/msg/Odometry")
         w.add_topic("/haven/events", "std_msgs/msg/String")
-        w.write("/haven/events", 0, text(event(EventKind.TRIAL_START, 0.0, Source.SCENARIO, seq=1, scenario="s").to_json()))
+        w.write(
+            "/haven/events", 0, text(event(EventKind.TRIAL_START, 0.0, Source.SCENARIO, seq=1, scenario="s").to_json())
+        )
         for i in range(round(until / 0.02) + 1):
             w.write("/odom", i * 20_000_000, odometry(i * 0.02, 0.01 * i))
             if i % 50 == 49:
@@ -81,15 +87,22 @@ def test_a_cut_bag_makes_it_not_valid_and_so_does_its_repair(tmp_path):
     write_trial(bag)
     cut(bag)
     reason, stop = judge(bag)
-    assert reason == "recorder was killed by SIGKILL while stopping, and its bag is not verified complete: no metadata.yaml"
+    assert (
+        reason
+        == "recorder was killed by SIGKILL while stopping, and its bag is not verified complete: no metadata.yaml"
+    )
     assert stop["bag_verified"] is False and stop["why"] == "no metadata.yaml"
     repair(bag)  # (as `haven run` does at once: a proper bag again, but what the recorder held is lost)
-    assert judge(bag)[0].endswith("its bag is not verified complete: rebuilt by a repair (what the recorder still held was lost)")
+    assert judge(bag)[0].endswith(
+        "its bag is not verified complete: rebuilt by a repair (what the recorder still held was lost)"
+    )
 
 
 def test_a_bag_closed_before_the_streams_reached_trial_end_is_not_verified(tmp_path):
     write_trial(tmp_path / "bag", end_s=4.0, odom_until_s=3.0)
-    assert judge(tmp_path / "bag")[0].endswith("its bag is not verified complete: /odom recorded only to 1.00 s before trial_end")
+    assert judge(tmp_path / "bag")[0].endswith(
+        "its bag is not verified complete: /odom recorded only to 1.00 s before trial_end"
+    )
 
 
 def test_an_mcap_summary_that_disagrees_with_metadata_is_not_whole(tmp_path):

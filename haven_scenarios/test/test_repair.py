@@ -28,14 +28,30 @@ from rosbags.rosbag2 import StoragePlugin, Writer
 from rosbags.typesys import Stores, get_typestore
 from rosbags.typesys.msg import get_types_from_msg
 
-from haven_scenarios.record.bag import REPAIRED_KEY, TYPESTORE, BagWriter, custom_data, lost_messages, readable, recovered_records
+from haven_scenarios.record.bag import (
+    REPAIRED_KEY,
+    TYPESTORE,
+    BagWriter,
+    custom_data,
+    lost_messages,
+    readable,
+    recovered_records,
+)
 from haven_scenarios.record.repair import Repaired, RepairError, needs_repair, repair
 
 pytestmark = pytest.mark.integration
 
 FOREVER = QosTime(2**31 - 1, 0)
 LATCHED = Qos(
-    QosHistory.KEEP_LAST, 1, QosReliability.RELIABLE, QosDurability.TRANSIENT_LOCAL, FOREVER, FOREVER, QosLiveliness.AUTOMATIC, FOREVER, False
+    QosHistory.KEEP_LAST,
+    1,
+    QosReliability.RELIABLE,
+    QosDurability.TRANSIENT_LOCAL,
+    FOREVER,
+    FOREVER,
+    QosLiveliness.AUTOMATIC,
+    FOREVER,
+    False,
 )
 STRING, UINT32 = TYPESTORE.types["std_msgs/msg/String"], TYPESTORE.types["std_msgs/msg/UInt32"]
 
@@ -106,7 +122,10 @@ def test_a_killed_recorders_bag_is_rebuilt_and_opens_in_readers_we_did_not_write
 
     connections, messages = read_with_rosbags(bag)
     assert sorted(messages, key=lambda m: m[1]) == sorted(held, key=lambda m: m[1])
-    assert connections["/count"].msgtype == "std_msgs/msg/UInt32" and connections["/map_name"].msgtype == "std_msgs/msg/String"
+    assert (
+        connections["/count"].msgtype == "std_msgs/msg/UInt32"
+        and connections["/map_name"].msgtype == "std_msgs/msg/String"
+    )
     assert [q.durability for q in connections["/map_name"].ext.offered_qos_profiles] == [QosDurability.TRANSIENT_LOCAL]
     assert connections["/count"].digest == TYPESTORE.hash_rihs01("std_msgs/msg/UInt32")
     summary, messages = read_with_mcap(bag)
@@ -193,14 +212,20 @@ def test_a_type_this_ros_does_not_know_is_rebuilt_from_its_recorded_definition(t
     with Writer(bag, version=9, storage_plugin=StoragePlugin.MCAP) as w:
         conn = w.add_connection("/thing", "lab_msgs/msg/Thing", typestore=store)
         for i in range(20):
-            w.write(conn, i, bytes(store.serialize_cdr(store.types["lab_msgs/msg/Thing"](name=f"t{i}", n=i), "lab_msgs/msg/Thing")))
+            w.write(
+                conn,
+                i,
+                bytes(store.serialize_cdr(store.types["lab_msgs/msg/Thing"](name=f"t{i}", n=i), "lab_msgs/msg/Thing")),
+            )
     kill(bag, keep=0.97)
     done = repair(bag)
     assert done.messages == 20 and not done.skipped
     with AnyReader([bag]) as reader:  # the type comes from the bag itself
         (c,) = reader.connections
         assert c.digest == store.hash_rihs01("lab_msgs/msg/Thing")
-        assert [reader.deserialize(raw, c.msgtype).name for _, _, raw in reader.messages()] == [f"t{i}" for i in range(20)]
+        assert [reader.deserialize(raw, c.msgtype).name for _, _, raw in reader.messages()] == [
+            f"t{i}" for i in range(20)
+        ]
 
 
 def _limit_file_size(limit):
@@ -214,13 +239,22 @@ def test_a_full_disk_during_the_repair_leaves_the_damaged_bag_as_it_was(tmp_path
     bag = tmp_path / "bag"
     write_bag(bag, n=4000)
     damaged = kill(bag, keep=0.9)
-    script = "import sys; from pathlib import Path; from haven_scenarios.tools.cli import main; sys.exit(main(['repair', sys.argv[1]]))"
+    script = (
+        "import sys; from pathlib import Path; from haven_scenarios.tools.cli import main; "
+        "sys.exit(main(['repair', sys.argv[1]]))"
+    )
     r = subprocess.run(
-        [sys.executable, "-c", script, str(bag)], capture_output=True, text=True, timeout=120, preexec_fn=_limit_file_size(len(damaged) // 2)
+        [sys.executable, "-c", script, str(bag)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+        preexec_fn=_limit_file_size(len(damaged) // 2),
     )
     assert r.returncode == 1 and "Traceback" not in r.stderr
     (line,) = r.stderr.strip().splitlines()
-    assert line.startswith(f"haven: {bag}: could not write the repaired bag: File too large") and "left as it was" in line
+    assert (
+        line.startswith(f"haven: {bag}: could not write the repaired bag: File too large") and "left as it was" in line
+    )
     assert sorted(p.name for p in bag.iterdir()) == ["bag.mcap"] and (bag / "bag.mcap").read_bytes() == damaged
     assert needs_repair(bag)
     assert repair(bag).messages > 0  # with room on the disk, the same bag repairs
@@ -278,7 +312,9 @@ def test_haven_repair_rebuilds_a_session_and_report_includes_it_flagged(killed_s
     assert info["bag_repaired"]["messages"] > 1000 and info["bag_repaired"]["kept"] == ["bag.mcap.damaged"]
     assert info["outcome"].startswith("unknown") and info["valid"] is False  # (haven run never wrote one)
     metrics = json.loads((folder / "metrics.json").read_text())
-    assert metrics["valid"] is False and metrics["invalid_reasons"][0].startswith("bag repaired: its recorder did not close it")
+    assert metrics["valid"] is False and metrics["invalid_reasons"][0].startswith(
+        "bag repaired: its recorder did not close it"
+    )
     row = report_csv([study], tmp_path / "report.csv")[0]
     assert row["valid"] is False and "bag repaired" in row["invalid_reasons"]
     assert row["robot_path_length_m"] > 5.0  # the repaired data is in the row
@@ -286,7 +322,9 @@ def test_haven_repair_rebuilds_a_session_and_report_includes_it_flagged(killed_s
     assert "a complete bag, nothing to repair" in capsys.readouterr().out
     by_bag = study / "by_bag"  # a session's bag folder named directly: the session is updated too
     shutil.copytree(killed_session, by_bag)
-    assert main(["repair", str(by_bag / "bag")]) == 0 and "bag_repaired" in json.loads((by_bag / "session.json").read_text())
+    assert main(["repair", str(by_bag / "bag")]) == 0 and "bag_repaired" in json.loads(
+        (by_bag / "session.json").read_text()
+    )
     capsys.readouterr()
     assert main(["repair", str(tmp_path / "nothing")]) == 2
     assert capsys.readouterr().err.strip() == f"haven: error: {tmp_path / 'nothing'}: no such session folder or bag"
@@ -297,7 +335,10 @@ def test_session_json_says_how_the_run_ended():
     from haven_scenarios.run.supervisor import Exited
 
     assert exit_text("recorder", -signal.SIGKILL) == "recorder was killed by SIGKILL"
-    assert exit_text("planner", 1) == "planner exited with code 1" and exit_text("sim", -99) == "sim was killed by signal 99"
+    assert (
+        exit_text("planner", 1) == "planner exited with code 1"
+        and exit_text("sim", -99) == "sim was killed by signal 99"
+    )
     done = Repaired(Path("bag"), 812, 21, (Path("bag/bag.mcap.damaged"),))
     cases = [
         (Ended(Exited("scenario", 0), recorder_code=0), "completed", None, "completed"),
@@ -309,7 +350,12 @@ def test_session_json_says_how_the_run_ended():
         ),
         (Ended(Exited("planner", 1), recorder_code=0), "interrupted", None, "cut short: planner exited with code 1"),
         (Ended(None, recorder_code=0), "interrupted", None, "interrupted (stopped by a signal)"),
-        (Ended(None, timed_out=True, recorder_code=0), "interrupted", None, "cut short: the trial did not end within 360 s (wall)"),
+        (
+            Ended(None, timed_out=True, recorder_code=0),
+            "interrupted",
+            None,
+            "cut short: the trial did not end within 360 s (wall)",
+        ),
         (
             Ended(Exited("scenario", 0), recorder_code=-9),
             "completed",

@@ -50,8 +50,12 @@ def study_file(tmp_path: Path, **changes: object) -> Path:
 
 
 @pytest.mark.unit
-@pytest.mark.parametrize("command", [["batch", "hallway", "--seeds", "0"], ["run", "hallway"], ["sim", "--duration", "1"]])
-def test_an_unknown_robot_or_a_missing_file_is_one_line_naming_the_option(command: list[str], capsys: pytest.CaptureFixture[str]) -> None:
+@pytest.mark.parametrize(
+    "command", [["batch", "hallway", "--seeds", "0"], ["run", "hallway"], ["sim", "--duration", "1"]]
+)
+def test_an_unknown_robot_or_a_missing_file_is_one_line_naming_the_option(
+    command: list[str], capsys: pytest.CaptureFixture[str]
+) -> None:
     for robot, says in (("hal9000", "unknown robot 'hal9000'"), ("nowhere/bot.yaml", "no such robot file")):
         assert main([*command, "--robot", robot]) == 2
         err = capsys.readouterr().err
@@ -94,7 +98,9 @@ def test_robot_wins_over_the_scenarios_and_the_session_keeps_the_robot_as_run(
 def test_a_parameter_file_cannot_choose_the_robot(tmp_path: Path) -> None:
     params = tmp_path / "params.yaml"
     params.write_text("/**:\n  ros__parameters:\n    robot: turtlebot4\n")
-    with pytest.raises(ParamsError, match=r"/\*\*: robot: set by --robot \(or the scenario's robot: model\), not by a parameter file"):
+    with pytest.raises(
+        ParamsError, match=r"/\*\*: robot: set by --robot \(or the scenario's robot: model\), not by a parameter file"
+    ):
         load_suite_config(params, TRIAL_SETS)
 
 
@@ -108,8 +114,14 @@ def test_a_study_plans_the_robot_between_or_within_participants(tmp_path: Path, 
     assert [t.robot_name for t in p01] == ["turtlebot2"] * 2 + ["slow_bot"] * 2  # a block of trials per robot,
     assert [t.robot_name for t in p02] == ["slow_bot"] * 2 + ["turtlebot2"] * 2  # in counterbalanced order
     assert [t.block for t in p01] == [1, 1, 2, 2] and p01[0].trial_id == "shared_room-all-turtlebot2"
-    ran = {"scenario": "shared_room", "condition": between[2].condition, "seed": between[2].seed, "robot_name": "turtlebot2"}
-    assert ran_otherwise(ran, between[2]) == "ran with robot turtlebot2; the schedule now says robot slow_bot"  # (not done: run again)
+    ran = {
+        "scenario": "shared_room",
+        "condition": between[2].condition,
+        "seed": between[2].seed,
+        "robot_name": "turtlebot2",
+    }
+    # (not done: run again)
+    assert ran_otherwise(ran, between[2]) == "ran with robot turtlebot2; the schedule now says robot slow_bot"
     assert ran_otherwise({**ran, "robot_name": "slow_bot"}, between[2]) is None
     plain = schedule(load_study(study_file(tmp_path, robots=[])))
     assert {(t.robot, t.robot_name) for t in plain} == {("", "")} and plain[0].trial_id == "shared_room-all"
@@ -124,9 +136,27 @@ def test_a_study_plans_the_robot_between_or_within_participants(tmp_path: Path, 
 @pytest.mark.integration
 def test_a_users_slower_robot_file_runs_in_batch_and_takes_longer(tmp_path: Path, slow_bot: Path) -> None:
     out = tmp_path / "rows.csv"
-    assert main(["batch", "shared_room", "--grid", f"robot=turtlebot2,{slow_bot}", "--seeds", "0", "--workers", "1", "--out", str(out)]) == 0
+    assert (
+        main(
+            [
+                "batch",
+                "shared_room",
+                "--grid",
+                f"robot=turtlebot2,{slow_bot}",
+                "--seeds",
+                "0",
+                "--workers",
+                "1",
+                "--out",
+                str(out),
+            ]
+        )
+        == 0
+    )
     rows = list(csv.DictReader(out.open()))
-    assert [r["robot"] for r in rows] == ["turtlebot2", "slow_bot"] and all(r["end_reason"] == "completed" for r in rows)
+    assert [r["robot"] for r in rows] == ["turtlebot2", "slow_bot"] and all(
+        r["end_reason"] == "completed" for r in rows
+    )
     assert float(rows[1]["robot_time_to_finish_s"]) > float(rows[0]["robot_time_to_finish_s"]) + 5.0
 
 
@@ -134,7 +164,10 @@ def test_a_users_slower_robot_file_runs_in_batch_and_takes_longer(tmp_path: Path
 def test_a_study_with_robots_runs_in_batch_and_reports_the_robot_column(tmp_path: Path, slow_bot: Path) -> None:
     path, root = study_file(tmp_path), tmp_path / "run"
     for participant in ("p01", "p02"):
-        assert main(["study", "run", str(path), "--batch", "--participant", participant, "--no-pause", "--dir", str(root)]) == 0
+        assert (
+            main(["study", "run", str(path), "--batch", "--participant", participant, "--no-pause", "--dir", str(root)])
+            == 0
+        )
     assert main(["study", "report", str(path), "--dir", str(root)]) == 0
     wide = list(csv.DictReader((root / "report" / "study_wide.csv").open()))
     assert [(r["participant"], r["robot"]) for r in wide] == [("p01", "turtlebot2")] * 2 + [("p02", "slow_bot")] * 2
@@ -153,7 +186,10 @@ def test_a_robot_too_big_for_the_worlds_start_is_one_line(tmp_path: Path, capsys
     big.write_text("extends: tiago\nname: big_bot\nfootprint: {radius_m: 3.0}\n")
     assert main(["batch", "hallway", "--robot", str(big), "--seeds", "0", "--out", str(tmp_path / "x.csv")]) == 2
     (line,) = capsys.readouterr().err.strip().splitlines()
-    assert "robot 'big_bot' (radius 3.00 m) does not fit at world 'hallway''s robot start" in line and "overlaps a wall" in line
+    assert (
+        "robot 'big_bot' (radius 3.00 m) does not fit at world 'hallway''s robot start" in line
+        and "overlaps a wall" in line
+    )
 
 
 def test_a_drone_counts_its_hovering_in_the_range_its_mission_plans_with() -> None:

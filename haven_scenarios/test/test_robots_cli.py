@@ -47,4 +47,6 @@ def test_haven_validate_checks_robot_files(capsys, tmp_path):
     assert main(["validate", str(good), str(bad)]) == 2
     captured = capsys.readouterr()
     assert captured.out.splitlines() == [f"ok: {good} (robot my_bot)"]
-    assert captured.err.splitlines() == [f"haven: error: {bad}: motion.cruise_speed_mps: 0.5 is above limits.max_linear_speed_mps 0.22"]
+    assert captured.err.splitlines() == [
+        f"haven: error: {bad}: motion.cruise_speed_mps: 0.5 is above limits.max_linear_speed_mps 0.22"
+    ]

@@ -21,8 +21,16 @@ def test_the_api_example_records_a_trial_and_runs_a_pilot_study(ros, tmp_path):
     (session,) = (tmp_path / "pilot" / "sessions").iterdir()
     info = json.loads((session / "session.json").read_text())
     metrics = json.loads((session / "metrics.json").read_text())
-    assert (info["outcome"], info["participant"], info["seed"], info["ros_domain_id"]) == ("completed", "pilot", 1, ros.domain_id)
+    assert (info["outcome"], info["participant"], info["seed"], info["ros_domain_id"]) == (
+        "completed",
+        "pilot",
+        1,
+        ros.domain_id,
+    )
     assert metrics["valid"], metrics["invalid_reasons"]
-    assert f"recorded: {session.name}: completed, valid True, closest approach {metrics['min_human_centre_distance_m']} m" in r.stdout
+    assert (
+        f"recorded: {session.name}: completed, valid True, closest approach {metrics['min_human_centre_distance_m']} m"
+        in r.stdout
+    )
     assert "study: 6 trials done; 3 participant(s), 6 trials" in r.stdout
     assert (tmp_path / "pilot" / "study" / "report" / "study_wide.csv").exists()

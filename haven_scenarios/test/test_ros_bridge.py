@@ -51,7 +51,11 @@ async def fetch(port, topics, timeout_s=30.0, ready=lambda topic, msg: True):
                         if ch["topic"] in topics and ch["topic"] not in subs.values():
                             sub_id = len(subs) + 1
                             subs[sub_id] = ch["topic"]
-                            await ws.send(json.dumps({"op": "subscribe", "subscriptions": [{"id": sub_id, "channelId": ch["id"]}]}))
+                            await ws.send(
+                                json.dumps(
+                                    {"op": "subscribe", "subscriptions": [{"id": sub_id, "channelId": ch["id"]}]}
+                                )
+                            )
             elif frame[0] == 1:  # message data: opcode, subscription id, log time, payload
                 sub_id, _ = struct.unpack_from("<IQ", frame, 1)
                 topic = subs[sub_id]
@@ -104,7 +108,14 @@ async def foxglove_client(port, goal_cdr, goal_arrived, timeout_s=45.0):
 
         def done():
             # (the time: once it is the suite's; until the bridge has read /clock it sends 0)
-            return info and len(seen["values"]) >= 2 and seen["status"] and seen["time"] and seen["time"][-1] > 0 and goal_arrived.is_set()
+            return (
+                info
+                and len(seen["values"]) >= 2
+                and seen["status"]
+                and seen["time"]
+                and seen["time"][-1] > 0
+                and goal_arrived.is_set()
+            )
 
         async for frame in frames(ws, timeout_s, done):
             if isinstance(frame, bytes):
@@ -121,7 +132,15 @@ async def foxglove_client(port, goal_cdr, goal_arrived, timeout_s=45.0):
             if info and not sent:
                 sent = True
                 await ws.send(json.dumps({"op": "getParameters", "parameterNames": [], "id": "get"}))
-                await ws.send(json.dumps({"op": "setParameters", "parameters": [{"name": "/viz.thought_bubble", "value": False}], "id": "set"}))
+                await ws.send(
+                    json.dumps(
+                        {
+                            "op": "setParameters",
+                            "parameters": [{"name": "/viz.thought_bubble", "value": False}],
+                            "id": "set",
+                        }
+                    )
+                )
                 channels = [
                     {"id": 1, "topic": "/goal_pose", "encoding": "cdr", "schemaName": "geometry_msgs/msg/PoseStamped"},
                     {"id": 2, "topic": "/cmd_vel", "encoding": "cdr", "schemaName": "geometry_msgs/msg/Twist"},
@@ -147,7 +166,9 @@ def test_foxglove_parameters_panel_toggles_a_cue_and_clients_publish_only_the_al
     goal.header.frame_id = "map"
     goal.pose.position.x, goal.pose.position.y, goal.pose.orientation.w = 2.0, 3.0, 1.0
     goal_arrived, answer = threading.Event(), {}
-    client = threading.Thread(target=lambda: answer.update(r=asyncio.run(foxglove_client(port, bytes(serialize_message(goal)), goal_arrived))))
+    client = threading.Thread(
+        target=lambda: answer.update(r=asyncio.run(foxglove_client(port, bytes(serialize_message(goal)), goal_arrived)))
+    )
     client.start()
     try:
         ros.wait_for_messages(goals, 1, timeout_s=30.0)
@@ -173,7 +194,10 @@ def test_start_up_parameters_are_read_only_and_lists_are_string_arrays_even_when
 
     ros.start("haven_sim.nodes.sim_node", {"real_time_factor": 2.0})
     ros.start("haven_scenarios.nodes.bridge", {"port": 0})
-    for node, names in (("sim_node", ["lockstep_participants", "real_time_factor"]), ("haven_bridge", ["topics", "port"])):
+    for node, names in (
+        ("sim_node", ["lockstep_participants", "real_time_factor"]),
+        ("haven_bridge", ["topics", "port"]),
+    ):
         client = AsyncParameterClient(ros.node, node)
         assert ros.spin_until(client.services_are_ready, 30), node
         described, got = client.describe_parameters(names), client.get_parameters(names[:1])

@@ -1,8 +1,8 @@
-"""The docs' "Using your own planner or controller" page (docs/howto/own-planner.md), as a user would do it: `haven sim --without
-planner` and the example planner (examples/nodes/nav2_style_planner.py: Nav2's /plan QoS, NavFn-shaped
-paths) in its own process; a goal from RViz's QoS. The robot reaches the goal pose, the path
-projection shows cubes on the arc, and the plan's QoS is Nav2's. And a recorded study session with
-that planner in place of ours, in a world of the user's."""
+"""The docs' "Using your own planner or controller" page (docs/howto/own-planner.md), as a user would do it: `haven sim
+--without planner` and the example planner (examples/nodes/nav2_style_planner.py: Nav2's /plan QoS, NavFn-shaped paths)
+in its own process; a goal from RViz's QoS. The robot reaches the goal pose, the path projection shows cubes on the arc,
+and the plan's QoS is Nav2's. And a recorded study session with that planner in place of ours, in a world of the
+user's."""
 
 import json
 import math
@@ -24,13 +24,17 @@ from haven_sim.nodes import conversions as conv, qos
 pytestmark = pytest.mark.ros
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "nodes" / "nav2_style_planner.py"
-GOAL = (2.2, 4.2, 2.6)  # from the robot's start (1.0, 2.5, facing east): a left turn, a straight, a turn to the goal yaw
+# from the robot's start (1.0, 2.5, facing east): a left turn, a straight, a turn to the goal yaw
+GOAL = (2.2, 4.2, 2.6)
 
 
 def test_the_example_planner_drives_the_suite_to_the_goal_pose_with_cubes_on_its_arc(ros):
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     cues = ros.collect(MarkerArray, "/haven/ar_markers", qos.RELIABLE)
-    for argv in ([*HAVEN, "sim", "--without", "planner", "--rtf", "2", "--domain-id", str(ros.domain_id)], [sys.executable, str(EXAMPLE)]):
+    for argv in (
+        [*HAVEN, "sim", "--without", "planner", "--rtf", "2", "--domain-id", str(ros.domain_id)],
+        [sys.executable, str(EXAMPLE)],
+    ):
         ros.procs.append(subprocess.Popen(argv, env=ros.env, start_new_session=True, stderr=subprocess.PIPE, text=True))
     goal = ros.node.create_publisher(PoseStamped, "/goal_pose", 10)  # RViz's 2D Goal Pose: default QoS
     ros.wait_for_messages(odom, 5)
@@ -39,11 +43,15 @@ def test_the_example_planner_drives_the_suite_to_the_goal_pose_with_cubes_on_its
         readers = ros.node.get_subscriptions_info_by_topic("/goal_pose")
         return "nav2_style_planner" in {r.node_name for r in readers} and goal.get_subscription_count() >= len(readers)
 
-    def planner_publishes():  # (the Nav2 servers publish /plan too, for follow_path; a node's name can come after its writer)
+    # (the Nav2 servers publish /plan too, for follow_path; a node's name can come after its writer)
+    def planner_publishes():
         return [p for p in ros.node.get_publishers_info_by_topic("/plan") if p.node_name == "nav2_style_planner"]
 
-    assert ros.spin_until(lambda: planner_listens() and planner_publishes() and ros.node.count_subscribers("/plan") >= 2, 60)
-    ros.wait_matched(cues)  # (the cues come as deltas: a reader matched late could miss the arc's cubes, gone once it is driven)
+    assert ros.spin_until(
+        lambda: planner_listens() and planner_publishes() and ros.node.count_subscribers("/plan") >= 2, 60
+    )
+    # (the cues come as deltas: a reader matched late could miss the arc's cubes, gone once it is driven)
+    ros.wait_matched(cues)
     (plan_pub,) = planner_publishes()
     assert plan_pub.qos_profile.durability == DurabilityPolicy.VOLATILE
     goal.publish(conv.goal_msg(0.0, Goal(Pose2D(*GOAL), "map")))
@@ -91,7 +99,9 @@ def test_a_study_session_is_recorded_with_the_users_own_planner_in_another_world
     """`haven run --without planner --world`: the example planner plans, the session is recorded."""
     (tmp_path / "box.yaml").write_text(BOX)
     (tmp_path / "own.yaml").write_text(SCENARIO)
-    planner = subprocess.Popen([sys.executable, str(EXAMPLE)], env=ros.env, start_new_session=True, stderr=subprocess.PIPE, text=True)
+    planner = subprocess.Popen(
+        [sys.executable, str(EXAMPLE)], env=ros.env, start_new_session=True, stderr=subprocess.PIPE, text=True
+    )
     ros.procs.append(planner)
     argv = [*HAVEN, "run", str(tmp_path / "own.yaml"), "--without", "planner", "--world", str(tmp_path / "box.yaml")]
     r = ros.run([*argv, "--sessions", str(tmp_path / "s"), "--domain-id", str(ros.domain_id)], timeout_s=240)

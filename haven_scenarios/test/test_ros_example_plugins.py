@@ -18,9 +18,18 @@ pytestmark = pytest.mark.ros
 
 
 def test_a_recorded_trial_runs_the_labs_participant_model_cue_and_metric(ros, tmp_path):
-    env = {**ros.env, "PYTHONPATH": installed(tmp_path)["PYTHONPATH"]}  # (the harness's domain, the example on the path)
+    # (the harness's domain, the example on the path)
+    env = {**ros.env, "PYTHONPATH": installed(tmp_path)["PYTHONPATH"]}
     (tmp_path / "hurried.yaml").write_text(SCENARIO)
-    argv = [*HAVEN, "run", str(tmp_path / "hurried.yaml"), "--domain-id", str(ros.domain_id), "--sessions", str(tmp_path / "s")]
+    argv = [
+        *HAVEN,
+        "run",
+        str(tmp_path / "hurried.yaml"),
+        "--domain-id",
+        str(ros.domain_id),
+        "--sessions",
+        str(tmp_path / "s"),
+    ]
     r = subprocess.run(argv, env=env, capture_output=True, text=True, timeout=600)
     assert r.returncode == 0 and tracebacks(r.stderr) == [], r.stdout[-2000:] + r.stderr[-3000:]
     (session,) = (tmp_path / "s").iterdir()

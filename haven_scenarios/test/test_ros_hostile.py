@@ -1,8 +1,7 @@
-"""Hostile messages on every topic the suite reads, and hostile values for every parameter (issue 14): NaN, ±inf and ±1e308 in every float
-field, strings that are not JSON or are JSON of the wrong shape or 100k deep, empty and 10k-long
-sequences, integer extremes, maps whose size disagrees with their data, negative clocks. No node
-may stop; afterwards the suite still does its job (a goal is reached; a recorded trial ends with
-its metrics and `haven report` reads it)."""
+"""Hostile messages on every topic the suite reads, and hostile values for every parameter (issue 14): NaN, ±inf and
+±1e308 in every float field, strings that are not JSON or are JSON of the wrong shape or 100k deep, empty and 10k-long
+sequences, integer extremes, maps whose size disagrees with their data, negative clocks. No node may stop; afterwards
+the suite still does its job (a goal is reached; a recorded trial ends with its metrics and `haven report` reads it)."""
 
 import json
 import socket
@@ -50,7 +49,9 @@ def attack(ros, proc, names, required, only=None, keep=None, spin_s=0.002):
     piece at a time, so also until it has not grown for 2 s), then send every hostile message on
     every topic they read; each node must still be on the graph afterwards and the supervising
     `haven` still running."""
-    assert ros.spin_until(lambda: names <= nodes(ros) and required <= set(subscribed_topics(ros.node, names)), 90), nodes(ros)
+    assert ros.spin_until(lambda: names <= nodes(ros) and required <= set(subscribed_topics(ros.node, names)), 90), (
+        nodes(ros)
+    )
     wanted, since = subscribed_topics(ros.node, names), time.monotonic()
     while time.monotonic() - since < 2.0:
         ros.spin_for(0.2)
@@ -69,7 +70,10 @@ def test_the_free_running_suite_and_the_bridge_survive_every_hostile_message_and
     suite = start_haven(ros, "sim")
     bridge = start_haven(ros, "bridge", "--port", str(port))
     attack(
-        ros, suite, SUITE | {"haven_bridge"}, {"/goal_pose", "/map", "/odom", "/plan", "/haven/events", "/clock", "/haven/estop", "/cmd_vel_teleop"}
+        ros,
+        suite,
+        SUITE | {"haven_bridge"},
+        {"/goal_pose", "/map", "/odom", "/plan", "/haven/events", "/clock", "/haven/estop", "/cmd_vel_teleop"},
     )
     assert bridge.poll() is None, output(bridge)[-3000:]
     for name in sorted(SUITE):  # parameters: refused at run time, but for the cue toggles (booleans)
@@ -91,9 +95,22 @@ def test_a_recorded_trial_survives_every_hostile_message_and_is_scored(ros, tmp_
     scenario = tmp_path / "crossing.yaml"
     scenario.write_text(CROSSING)
     sessions = tmp_path / "s"
-    trial = start_haven(ros, "run", str(scenario), "--web", "--port", str(free_port()), "--researcher-start", "--sessions", str(sessions))
+    trial = start_haven(
+        ros,
+        "run",
+        str(scenario),
+        "--web",
+        "--port",
+        str(free_port()),
+        "--researcher-start",
+        "--sessions",
+        str(sessions),
+    )
     attack(
-        ros, trial, SUITE | {"scenario", "recorder", "web"}, {"/goal_pose", "/haven/events", "/haven/trial_control", "/haven/lockstep/ack", "/odom"}
+        ros,
+        trial,
+        SUITE | {"scenario", "recorder", "web"},
+        {"/goal_pose", "/haven/events", "/haven/trial_control", "/haven/lockstep/ack", "/odom"},
     )
     control = ros.node.create_publisher(String, "/haven/trial_control", qos.RELIABLE)
     ros.wait_matched(control)
@@ -109,7 +126,9 @@ def test_a_recorded_trial_survives_every_hostile_message_and_is_scored(ros, tmp_
     assert report.returncode == 0 and tracebacks(report.stderr) == [], report.stderr[-2000:]
 
 
-def test_a_lockstep_trial_still_completes_when_another_node_sends_unreadable_messages_on_the_suites_topics(ros, tmp_path):
+def test_a_lockstep_trial_still_completes_when_another_node_sends_unreadable_messages_on_the_suites_topics(
+    ros, tmp_path
+):
     """The lockstep clock names the suite's messages on its topics (/goal_pose, /plan, /odom) by
     digest: another writer's messages, readable or not, must never be taken for the suite's (a
     participant would then wait for ever for the suite's next goal); they are ignored and counted
@@ -129,7 +148,9 @@ def test_a_lockstep_trial_still_completes_when_another_node_sends_unreadable_mes
     trial = start_haven(ros, "run", str(scenario), "--rtf", "1", "--sessions", str(sessions))
     going = lambda: any('"target_selected"' in p.read_text() for p in sessions.glob("*/events.jsonl"))  # noqa: E731
     assert ros.spin_until(going, 120), "the robot never set off"
-    attack(ros, trial, SUITE | {"scenario", "recorder"}, set(decoders), only=set(decoders), keep=unreadable, spin_s=0.03)
+    attack(
+        ros, trial, SUITE | {"scenario", "recorder"}, set(decoders), only=set(decoders), keep=unreadable, spin_s=0.03
+    )
     out = "".join(trial.communicate(timeout=600))
     assert trial.returncode == 0 and tracebacks(out) == [], out[-3000:]
     (session,) = [p for p in sessions.iterdir() if p.is_dir()]

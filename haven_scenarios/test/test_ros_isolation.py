@@ -26,7 +26,9 @@ FLOOD = str(Path(__file__).resolve().parent / "flood.py")  # goals at a rate, fr
 
 
 def start(ros, argv, env=None):
-    proc = subprocess.Popen(argv, env=env or ros.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    proc = subprocess.Popen(
+        argv, env=env or ros.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True
+    )
     ros.procs.append(proc)
     return proc
 
@@ -52,7 +54,9 @@ def test_two_suites_started_at_once_without_a_domain_id_each_take_their_own(ros,
     assert [code for code, _, _ in said] == [0, 0], said
     moved = [out for _, out, _ in said if "this suite runs on ROS domain" in out]
     assert len(moved) == 1 and f"ROS domain {ros.domain_id}: another HAVEN suite runs on it" in moved[0]
-    domains = {json.loads((only_session(tmp_path / n) / "session.json").read_text())["ros_domain_id"] for n in ("a", "b")}
+    domains = {
+        json.loads((only_session(tmp_path / n) / "session.json").read_text())["ros_domain_id"] for n in ("a", "b")
+    }
     assert len(domains) == 2 and ros.domain_id in domains
     a, b = (metrics_of(only_session(tmp_path / n)) for n in ("a", "b"))
     assert a["valid"] and b["valid"], (a["invalid_reasons"], b["invalid_reasons"])
@@ -69,7 +73,10 @@ def test_a_second_suite_on_an_explicit_shared_domain_is_refused_in_one_line_whic
     codes = sorted(code for code, _, _ in said)
     assert codes == [0, 2], said
     (refused,) = [err for code, _, err in said if code == 2]
-    assert refused.count("\n") == 1 and f"haven: error: ROS domain {ros.domain_id}: another HAVEN suite runs on it (pid " in refused
+    assert (
+        refused.count("\n") == 1
+        and f"haven: error: ROS domain {ros.domain_id}: another HAVEN suite runs on it (pid " in refused
+    )
     assert len([p for p in tmp_path.glob("*/*") if p.is_dir()]) == 1  # the refused run made no session
     # A simulator someone started by hand (no `haven`, so no lock) is found on the graph.
     sim = ros.start("haven_sim.nodes.sim_node")
@@ -90,7 +97,9 @@ def test_a_goal_flood_a_reset_and_a_parameter_change_leave_a_lockstep_trial_its_
 
     scenario = crossing(tmp_path)
     flood = start(ros, [sys.executable, FLOOD, "1000", "10"])
-    trial = start(ros, [*HAVEN, "run", str(scenario), "--domain-id", str(ros.domain_id), "--sessions", str(tmp_path / "s")])
+    trial = start(
+        ros, [*HAVEN, "run", str(scenario), "--domain-id", str(ros.domain_id), "--sessions", str(tmp_path / "s")]
+    )
     reset = ros.node.create_client(Trigger, "/haven/reset")
     assert reset.wait_for_service(timeout_sec=60)
     answer = reset.call_async(Trigger.Request())
@@ -105,7 +114,10 @@ def test_a_goal_flood_a_reset_and_a_parameter_change_leave_a_lockstep_trial_its_
     folder = only_session(tmp_path / "s")
     m = metrics_of(folder)
     assert m["valid"], m["invalid_reasons"]
-    assert "/goal_pose: published by goal_flood from outside the suite, ignored on the lockstep clock" in m["outside_publishers"]
+    assert (
+        "/goal_pose: published by goal_flood from outside the suite, ignored on the lockstep clock"
+        in m["outside_publishers"]
+    )
     assert_same_trial(m, run_trial(load_scenario(str(scenario)), 0).metrics, rel=0.01)
     s = score(folder / "bag")
     assert m["min_human_centre_distance_m"] == pytest.approx(s.min_human_centre_distance_m, abs=0.02)
@@ -125,7 +137,8 @@ def test_an_outside_publisher_on_a_free_running_trial_makes_it_not_valid_unless_
     scenario.write_text(CROSSING.replace("timeout_s: 120", "timeout_s: 30"))
     for allow, sessions in ((["--allow", "/goal_pose"], "allowed"), ([], "s")):
         flood = start(ros, [sys.executable, FLOOD, "200", "2"])
-        trial = start(ros, [*HAVEN, "run", str(scenario), "--free-running", "--rtf", "8", "--domain-id", str(ros.domain_id), *allow,
+        trial = start(ros, [*HAVEN, "run", str(scenario), "--free-running", "--rtf", "8",
+                            "--domain-id", str(ros.domain_id), *allow,
                             "--sessions", str(tmp_path / sessions)])  # fmt: skip
         _code, _out, err = finish(trial)
         finish(flood)
@@ -136,7 +149,10 @@ def test_an_outside_publisher_on_a_free_running_trial_makes_it_not_valid_unless_
             assert m["valid"] is True, m["invalid_reasons"]
             assert "goal_flood from outside the suite, on a topic the run opened to it" in m["outside_publishers"]
         else:
-            assert m["valid"] is False and "/goal_pose: published by goal_flood from outside the suite" in m["invalid_reasons"]
+            assert (
+                m["valid"] is False
+                and "/goal_pose: published by goal_flood from outside the suite" in m["invalid_reasons"]
+            )
             assert err.count("haven run --allow TOPIC") == 1  # (said once, whatever the number of outsiders)
             assert "/goal_pose: published by goal_flood from outside the suite: the session will not be valid" in err
 
@@ -152,7 +168,10 @@ def test_a_study_participant_already_being_run_is_refused_before_anything_starts
         argv = [*HAVEN, "study", "run", str(study), "--participant", "p01", "--domain-id", str(ros.domain_id)]
         r = subprocess.run(argv, env=ros.env, cwd=tmp_path, capture_output=True, text=True, timeout=120)
     assert r.returncode == 2 and r.stderr.count("\n") == 1
-    assert f"participant p01 of study pilot is already being run (pid {os.getpid()}, haven study run pilot.yaml --participant p01" in r.stderr
+    assert (
+        "participant p01 of study pilot is already being run (pid "
+        f"{os.getpid()}, haven study run pilot.yaml --participant p01" in r.stderr
+    )
     assert not list((tmp_path / "studies" / "pilot" / "p01").glob("*/*/session.json"))
 
 
@@ -167,24 +186,36 @@ def test_with_a_range_of_domains_a_second_and_third_suite_stay_inside_it(ros, tm
     lab = f"{first}-{first + 2}"
     scenario = crossing(tmp_path)
     with FileLock(lock_path(first), "haven run (the first suite)").acquire():
-        runs = [start(ros, [*HAVEN, "run", str(scenario), "--domains", lab, "--sessions", str(tmp_path / n)]) for n in ("a", "b")]
+        runs = [
+            start(ros, [*HAVEN, "run", str(scenario), "--domains", lab, "--sessions", str(tmp_path / n)])
+            for n in ("a", "b")
+        ]
         seen: dict[int, set[str]] = {}
         for proc in runs:
-            nodes = lambda p=proc: [int(c) for t in Path(f"/proc/{p.pid}/task").glob("*/children") for c in t.read_text().split()]  # noqa: E731
+            nodes = lambda p=proc: [  # noqa: E731
+                int(c) for t in Path(f"/proc/{p.pid}/task").glob("*/children") for c in t.read_text().split()
+            ]
             started = ros.spin_until(lambda nodes=nodes, proc=proc: len(nodes()) == 7 or proc.poll() is not None, 120)
             assert started, "the suite never started its nodes"
             for pid in nodes():
                 with contextlib.suppress(OSError):
                     if b"--ros-args" not in Path(f"/proc/{pid}/cmdline").read_bytes():
                         continue  # (not a node: `git` asked for the commit, say)
-                    env = dict(v.split(b"=", 1) for v in Path(f"/proc/{pid}/environ").read_bytes().split(b"\0") if b"=" in v)
+                    env = dict(
+                        v.split(b"=", 1) for v in Path(f"/proc/{pid}/environ").read_bytes().split(b"\0") if b"=" in v
+                    )
                     seen.setdefault(proc.pid, set()).add(env[b"ROS_DOMAIN_ID"].decode())
         said = [finish(p) for p in runs]
     assert [code for code, _, _ in said] == [0, 0], said
-    taken = sorted(json.loads((only_session(tmp_path / n) / "session.json").read_text())["ros_domain_id"] for n in ("a", "b"))
+    taken = sorted(
+        json.loads((only_session(tmp_path / n) / "session.json").read_text())["ros_domain_id"] for n in ("a", "b")
+    )
     assert taken == [first + 1, first + 2]
-    assert sorted(d for ds in seen.values() for d in ds) == [str(first + 1), str(first + 2)]  # one domain per suite, its nodes all there
+    # one domain per suite, its nodes all there
+    assert sorted(d for ds in seen.values() for d in ds) == [str(first + 1), str(first + 2)]
     for _, out, _ in said:
-        assert f"haven: ROS domain {ros.domain_id}: outside --domains {lab}; this suite runs on ROS domain {first + 1}" in out or (
-            f"outside --domains {lab}; this suite runs on ROS domain {first + 2}" in out
+        assert (
+            f"haven: ROS domain {ros.domain_id}: outside --domains {lab}; this suite runs on ROS domain {first + 1}"
+            in out
+            or (f"outside --domains {lab}; this suite runs on ROS domain {first + 2}" in out)
         ), out

@@ -25,7 +25,9 @@ from visualization_msgs.msg import Marker, MarkerArray
 from haven_sim.nodes import conversions as conv, qos
 
 pytestmark = pytest.mark.ros
-nav2_actions = pytest.importorskip("nav2_msgs.action", reason="nav2_msgs is not built here (scripts/build_interfaces.py)")
+nav2_actions = pytest.importorskip(
+    "nav2_msgs.action", reason="nav2_msgs is not built here (scripts/build_interfaces.py)"
+)
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 DRIVE = Path(__file__).parent / "nav2" / "drive.py"
 sys.path.insert(0, str(DRIVE.parent))
@@ -35,7 +37,9 @@ from drive import FAR, THROUGH  # noqa: E402
 def clients():
     yield pytest.param("--ours", id="stand_in")
     installed = importlib.util.find_spec("nav2_simple_commander") is not None
-    skip = pytest.mark.skipif(not installed, reason="nav2_simple_commander is not installed (apt: ros-jazzy-nav2-simple-commander)")
+    skip = pytest.mark.skipif(
+        not installed, reason="nav2_simple_commander is not installed (apt: ros-jazzy-nav2-simple-commander)"
+    )
     yield pytest.param("", id="basic_navigator", marks=skip)
 
 
@@ -43,27 +47,56 @@ def clients():
 def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(ros, which, tmp_path):
     odom: list[Odometry] = []
     arrived: list[float] = []  # (when each of odom came)
-    ros.node.create_subscription(Odometry, "/odom", lambda m: (odom.append(m), arrived.append(time.monotonic())), qos.RELIABLE)
+    ros.node.create_subscription(
+        Odometry, "/odom", lambda m: (odom.append(m), arrived.append(time.monotonic())), qos.RELIABLE
+    )
     arrivals: list[tuple[float, MarkerArray]] = []  # (when, what): the cues as they came
-    ros.node.create_subscription(MarkerArray, "/haven/ar_markers", lambda m: arrivals.append((time.monotonic(), m)), qos.RELIABLE)
+    ros.node.create_subscription(
+        MarkerArray, "/haven/ar_markers", lambda m: arrivals.append((time.monotonic(), m)), qos.RELIABLE
+    )
     log = (tmp_path / "sim.log").open("w")
-    sim = subprocess.Popen([*HAVEN, "sim", "--rtf", "2", "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True, stderr=log)
+    sim = subprocess.Popen(
+        [*HAVEN, "sim", "--rtf", "2", "--domain-id", str(ros.domain_id)],
+        env=ros.env,
+        start_new_session=True,
+        stderr=log,
+    )
     ros.procs.append(sim)
-    ros.wait_for_messages(ros.collect(PoseWithCovarianceStamped, "/amcl_pose", qos.LATCHED), timeout_s=60)  # the servers are active
+    # the servers are active
+    ros.wait_for_messages(ros.collect(PoseWithCovarianceStamped, "/amcl_pose", qos.LATCHED), timeout_s=60)
     script = subprocess.Popen(
-        [sys.executable, str(DRIVE), *([which] if which else [])], env=ros.env, stdout=subprocess.PIPE, text=True, start_new_session=True
+        [sys.executable, str(DRIVE), *([which] if which else [])],
+        env=ros.env,
+        stdout=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
     )
     ros.procs.append(script)
     steps: list[tuple[float, dict]] = []
-    reader = threading.Thread(target=lambda: steps.extend((time.monotonic(), json.loads(line)) for line in script.stdout if line.startswith("{")))
+    reader = threading.Thread(
+        target=lambda: steps.extend(
+            (time.monotonic(), json.loads(line)) for line in script.stdout if line.startswith("{")
+        )
+    )
     reader.start()
     assert ros.spin_until(lambda: script.poll() is not None, 300), [s for _, s in steps]
     reader.join(5)
     got = {s["step"]: s for _, s in steps}
-    steps_run = ["active", "getPath", "getPathInAnotherFrame", "followPath", "goToPose", "followWaypoints", "goThroughPoses", "cancelTask", "offMap"]
+    steps_run = [
+        "active",
+        "getPath",
+        "getPathInAnotherFrame",
+        "followPath",
+        "goToPose",
+        "followWaypoints",
+        "goThroughPoses",
+        "cancelTask",
+        "offMap",
+    ]
     steps_run.append("throughPosesOffMap")
     assert script.returncode == 0 and list(got) == steps_run, got
-    assert got["getPath"]["poses"] > 2 and got["getPathInAnotherFrame"]["refused"]  # compute_path_to_pose: our planner's arcs and straights
+    # compute_path_to_pose: our planner's arcs and straights
+    assert got["getPath"]["poses"] > 2 and got["getPathInAnotherFrame"]["refused"]
     for step in ("followPath", "goToPose", "followWaypoints", "goThroughPoses"):
         assert got[step]["result"] == "SUCCEEDED" and got[step]["error_code"] == 0, got[step]
     assert got["followWaypoints"]["current_waypoint"] == 1
@@ -74,12 +107,22 @@ def test_a_nav2_simple_commander_script_drives_the_robot_with_its_cues_showing(r
     (start, end) = [t for t, s in steps if s["step"] in ("followWaypoints", "goThroughPoses")]
     via = THROUGH[0]
     during = [m for t, m in zip(arrived, odom, strict=False) if start <= t <= end]
-    passing = [abs(m.twist.twist.linear.x) for m in during if math.dist((m.pose.pose.position.x, m.pose.pose.position.y), via[:2]) < 0.5]
+    passing = [
+        abs(m.twist.twist.linear.x)
+        for m in during
+        if math.dist((m.pose.pose.position.x, m.pose.pose.position.y), via[:2]) < 0.5
+    ]
     assert passing and min(passing) > 0.3, passing
     assert got["cancelTask"]["result"] == "CANCELED"
-    assert got["offMap"]["result"] == "FAILED" and got["offMap"]["error_code"] == nav2_actions.ComputePathToPose.Result.GOAL_OUTSIDE_MAP
+    assert (
+        got["offMap"]["result"] == "FAILED"
+        and got["offMap"]["error_code"] == nav2_actions.ComputePathToPose.Result.GOAL_OUTSIDE_MAP
+    )
     through = got["throughPosesOffMap"]  # refused before the robot moves, with the through-poses planner's code
-    assert through["result"] == "FAILED" and through["error_code"] == nav2_actions.ComputePathThroughPoses.Result.GOAL_OUTSIDE_MAP
+    assert (
+        through["result"] == "FAILED"
+        and through["error_code"] == nav2_actions.ComputePathThroughPoses.Result.GOAL_OUTSIDE_MAP
+    )
 
     # The cancel stopped the robot short of the far goal; the final goal of the waypoints was reached.
     ros.spin_until(lambda: abs(odom[-1].twist.twist.linear.x) < 0.01, 10)
@@ -121,7 +164,10 @@ def test_ten_goals_on_a_busy_machine_end_within_the_goal_checkers_tolerances_in_
     ros.wait_for_messages(ros.collect(PoseWithCovarianceStamped, "/amcl_pose", qos.LATCHED), timeout_s=120)
     done = ros.run([sys.executable, str(DRIVE.parent / "goals.py"), *([which] if which else [])], timeout_s=600)
     steps = [json.loads(line) for line in done.stdout.splitlines() if line.startswith("{")]
-    assert done.returncode == 0 and [s["result"] for s in steps[1:]] == ["SUCCEEDED"] * len(GOALS), (steps, done.stderr[-2000:])
+    assert done.returncode == 0 and [s["result"] for s in steps[1:]] == ["SUCCEEDED"] * len(GOALS), (
+        steps,
+        done.stderr[-2000:],
+    )
     os.killpg(sim.pid, signal.SIGINT)
     assert sim.wait(timeout=60) == 0
     for p in busy:
@@ -130,11 +176,15 @@ def test_ten_goals_on_a_busy_machine_end_within_the_goal_checkers_tolerances_in_
     (bag,) = tmp_path.glob("*/bag")
     odom, events = [], []
     with AnyReader([bag], default_typestore=TYPESTORE) as reader:
-        for conn, stamp, raw in reader.messages([c for c in reader.connections if c.topic in ("/odom", "/haven/events")]):
+        for conn, stamp, raw in reader.messages(
+            [c for c in reader.connections if c.topic in ("/odom", "/haven/events")]
+        ):
             msg = reader.deserialize(raw, conn.msgtype)
             if conn.topic == "/odom":
                 q = msg.pose.pose.orientation
-                odom.append((stamp * 1e-9, msg.pose.pose.position.x, msg.pose.pose.position.y, 2 * math.atan2(q.z, q.w)))
+                odom.append(
+                    (stamp * 1e-9, msg.pose.pose.position.x, msg.pose.pose.position.y, 2 * math.atan2(q.z, q.w))
+                )
             else:
                 events.append(json.loads(msg.data))
     reached = [e for e in events if e["type"] == "goal_reached"]

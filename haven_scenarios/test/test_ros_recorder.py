@@ -16,7 +16,12 @@ from haven_sim.common.events import EventKind, event
 pytestmark = pytest.mark.ros
 
 # The suite's event publishers, with a depth of 10 instead of 100.
-SHALLOW = QoSProfile(depth=10, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+SHALLOW = QoSProfile(
+    depth=10,
+    history=HistoryPolicy.KEEP_LAST,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.TRANSIENT_LOCAL,
+)
 
 
 def test_messages_the_recorder_could_not_read_are_counted_and_flag_the_session(ros, tmp_path):

@@ -39,7 +39,17 @@ def start_run(ros, tmp_path):
     trial has run 2 s of sim time (however slowly this machine runs it) and the recorder has
     written some hundreds of messages to its file (it writes them out once a second)."""
     out, err = (tmp_path / "run.out").open("w"), (tmp_path / "run.err").open("w")
-    argv = [*HAVEN, "run", "hallway", "--rtf", "2", "--sessions", str(tmp_path / "s"), "--domain-id", str(ros.domain_id)]
+    argv = [
+        *HAVEN,
+        "run",
+        "hallway",
+        "--rtf",
+        "2",
+        "--sessions",
+        str(tmp_path / "s"),
+        "--domain-id",
+        str(ros.domain_id),
+    ]
     proc = subprocess.Popen(argv, env=ros.env, stdout=out, stderr=err, text=True, start_new_session=True)
     ros.procs.append(proc)
     clock = ros.collect(Clock, "/clock", QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT))
@@ -47,7 +57,9 @@ def start_run(ros, tmp_path):
     assert ros.spin_until(started, timeout_s=90), "the trial never started"
     assert ros.spin_until(lambda: bool(clock) and clock[-1].clock.sec >= 2, timeout_s=60), "the clock never reached 2 s"
     (folder,) = (tmp_path / "s").iterdir()
-    assert ros.spin_until(lambda: len(snapshot(folder / "bag", tmp_path)) > 300, timeout_s=60), "the recorder wrote nothing out"
+    assert ros.spin_until(lambda: len(snapshot(folder / "bag", tmp_path)) > 300, timeout_s=60), (
+        "the recorder wrote nothing out"
+    )
     return proc, folder
 
 
@@ -114,8 +126,12 @@ def test_a_recorder_killed_mid_trial_is_named_and_its_bag_repaired(ros, tmp_path
     assert tracebacks(err) == []
     assert f"haven: repaired {folder / 'bag'}: " in err and f"haven: session in {folder}" in out
     info = assert_repaired_and_readable(folder, kept)
-    assert info["outcome"].startswith("cut short: recorder was killed by SIGKILL; bag repaired (") and info["valid"] is False
-    repaired = "rebuilt by a repair (what the recorder still held was lost)"  # (record/recorder_stop.py: never verified complete)
+    assert (
+        info["outcome"].startswith("cut short: recorder was killed by SIGKILL; bag repaired (")
+        and info["valid"] is False
+    )
+    # (record/recorder_stop.py: never verified complete)
+    repaired = "rebuilt by a repair (what the recorder still held was lost)"
     assert info["recorder_stop"] == {
         "exit": "recorder was killed by SIGKILL",
         "code": -9,
@@ -136,7 +152,9 @@ def test_a_full_disk_stops_the_recorder_in_one_line_and_keeps_what_it_wrote(ros,
     code, _out, err = finished(proc, tmp_path)
     assert code == 1 and tracebacks(err) == [], err[-3000:]
     said = [line for line in err.splitlines() if line.startswith("recorder: error:")]
-    assert len(said) == 1 and said[0].startswith(f"recorder: error: cannot write {bag.resolve() / 'bag.mcap'}: File too large"), err[-3000:]
+    assert len(said) == 1 and said[0].startswith(
+        f"recorder: error: cannot write {bag.resolve() / 'bag.mcap'}: File too large"
+    ), err[-3000:]
     assert "haven: recorder exited with code 1; the trial was cut short" in err
     assert (bag / "bag.mcap.damaged").stat().st_size <= limit
     info = assert_repaired_and_readable(folder, kept)

@@ -22,10 +22,14 @@ def test_a_replayed_session_relatches_static_tf_the_map_and_the_world(ros, tmp_p
     tf2 = pytest.importorskip("tf2_msgs.msg", reason="tf2_msgs not built on this machine (scripts/build_interfaces.py)")
     clock = ros.collect(Clock, "/clock", qos.CLOCK)
     live = subprocess.Popen(
-        [*HAVEN, "sim", "--record", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True
+        [*HAVEN, "sim", "--record", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)],
+        env=ros.env,
+        start_new_session=True,
     )
     ros.procs.append(live)
-    assert ros.spin_until(lambda: "recorder" in {i.node_name for i in ros.node.get_subscriptions_info_by_topic("/clock")}, 60)
+    assert ros.spin_until(
+        lambda: "recorder" in {i.node_name for i in ros.node.get_subscriptions_info_by_topic("/clock")}, 60
+    )
     del clock[:]
     ros.wait_for_messages(clock, 200, timeout_s=60)  # 4 s of sim time recorded, however slowly the suite started
     os.killpg(live.pid, signal.SIGINT)  # Ctrl-C
@@ -33,9 +37,12 @@ def test_a_replayed_session_relatches_static_tf_the_map_and_the_world(ros, tmp_p
     (folder,) = tmp_path.iterdir()
     assert (folder / "bag" / "metadata.yaml").is_file() and (folder / "world.yaml").is_file()
     del clock[:]
-    player = subprocess.Popen([*HAVEN, "play", str(folder), "--hold", "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True)
+    player = subprocess.Popen(
+        [*HAVEN, "play", str(folder), "--hold", "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True
+    )
     ros.procs.append(player)
-    ros.wait_for_messages(clock, 10, timeout_s=60)  # playing, past the latched messages at the bag's start: the viewer below joins late
+    # playing, past the latched messages at the bag's start: the viewer below joins late
+    ros.wait_for_messages(clock, 10, timeout_s=60)
     rviz = qos.LATCHED  # the shipped RViz config's Map, World and TF (static) QoS
     late = {
         topic: ros.collect(t, topic, rviz)
@@ -43,7 +50,10 @@ def test_a_replayed_session_relatches_static_tf_the_map_and_the_world(ros, tmp_p
     }
     for got in late.values():
         ros.wait_for_messages(got, 1, timeout_s=30)
-    assert {(t.header.frame_id, t.child_frame_id) for t in late["/tf_static"][0].transforms} >= {("map", "odom"), ("base_footprint", "base_link")}
+    assert {(t.header.frame_id, t.child_frame_id) for t in late["/tf_static"][0].transforms} >= {
+        ("map", "odom"),
+        ("base_footprint", "base_link"),
+    }
     assert late["/map"][0].info.width > 0 and len(late["/haven/world_markers"][0].markers) > 4
 
 
@@ -60,7 +70,9 @@ def test_a_message_type_the_recording_library_does_not_know_is_recorded_from_its
     clock = ros.collect(Clock, "/clock", qos.CLOCK)
     goals = ros.node.create_publisher(Goals, "/lab/goals", 10)
     live = subprocess.Popen(
-        [*HAVEN, "sim", "--record", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)], env=ros.env, start_new_session=True
+        [*HAVEN, "sim", "--record", "--rtf", "2", "--sessions", str(tmp_path), "--domain-id", str(ros.domain_id)],
+        env=ros.env,
+        start_new_session=True,
     )
     ros.procs.append(live)
     ros.wait_for_messages(clock, 10, timeout_s=60)

@@ -115,24 +115,56 @@ def test_lockstep_trial_is_lossless_reproducible_rerunnable_and_equal_to_batch(r
     assert "haven: completed" in r.stdout and "lockstep clock" in r.stdout
     folder = only_session(tmp_path / "a")
     names = {p.name for p in folder.iterdir()}
-    assert names >= {"bag", "events.jsonl", "metrics.json", "session.json", "scenario.yaml", "world.yaml", "params.yaml", "trajectory.png"}
+    assert names >= {
+        "bag",
+        "events.jsonl",
+        "metrics.json",
+        "session.json",
+        "scenario.yaml",
+        "world.yaml",
+        "params.yaml",
+        "trajectory.png",
+    }
     session = json.loads((folder / "session.json").read_text())
-    assert (session["participant"], session["condition"], session["seed"], session["clock"]) == ("p07", "path_projection+turn_signals", 0, "lockstep")
+    assert (session["participant"], session["condition"], session["seed"], session["clock"]) == (
+        "p07",
+        "path_projection+turn_signals",
+        0,
+        "lockstep",
+    )
     assert session["versions"]["haven_scenarios"] and session["end_reason"] == "completed" and session["valid"] is True
     assert session["rmw"] and "git_commit" in session and session["params_file"] == "params.yaml"
     assert (session["robot"], session["robot_name"]) == (str(tmp_path / "slow.yaml"), "slow_bot")
     kept = yaml.safe_load((folder / "robot.yaml").read_text())  # (the file as run, what it extends merged in)
     assert kept["name"] == "slow_bot" and "extends" not in kept and kept["motion"]["cruise_speed_mps"] == 0.25
-    assert "robot: robot.yaml" in (folder / "params.yaml").read_text() and "model: robot.yaml" in (folder / "scenario.yaml").read_text()
+    assert (
+        "robot: robot.yaml" in (folder / "params.yaml").read_text()
+        and "model: robot.yaml" in (folder / "scenario.yaml").read_text()
+    )
     metadata = (folder / "bag" / "metadata.yaml").read_text()
     assert "version: 9" in metadata and "storage_identifier: mcap" in metadata
     counts = mcap_counts(folder / "bag")
     assert counts["/odom"] > 1000 and counts["/haven/events"] > 10 and counts["/haven/ar_markers"] > 10
-    expected = {"/map", "/plan", "/goal_pose", "/humans", "/battery_state", "/scan", "/haven/thought", "/haven/cue_state", "/tf", "/tf_static"}
+    expected = {
+        "/map",
+        "/plan",
+        "/goal_pose",
+        "/humans",
+        "/battery_state",
+        "/scan",
+        "/haven/thought",
+        "/haven/cue_state",
+        "/tf",
+        "/tf_static",
+    }
     assert expected <= set(counts)
     assert not any(t.startswith("/haven/lockstep/") for t in counts)  # the clock's own traffic is not study data
     kinds = [json.loads(line)["type"] for line in (folder / "events.jsonl").read_text().splitlines()]
-    assert kinds.count("trial_start") == 1 and kinds.count("trial_end") == 1 and kinds.index("trial_start") < kinds.index("trial_end")
+    assert (
+        kinds.count("trial_start") == 1
+        and kinds.count("trial_end") == 1
+        and kinds.index("trial_start") < kinds.index("trial_end")
+    )
     assert (folder / "trajectory.png").stat().st_size > 20_000
     first = metrics_of(folder)
     assert first["thought_bubble_shown_s"] == 0  # the bubble was off in this condition
@@ -157,7 +189,10 @@ def test_lockstep_trial_is_lossless_reproducible_rerunnable_and_equal_to_batch(r
     rep = subprocess.run([*HAVEN, "report", str(moved), "--out", str(out)], capture_output=True, text=True, timeout=120)
     assert rep.returncode == 0, rep.stderr
     row = next(csv.DictReader(out.open()))
-    assert float(row["min_human_centre_distance_m"]) == first["min_human_centre_distance_m"] and row["robot_gem_order"] == first["robot_gem_order"]
+    assert (
+        float(row["min_human_centre_distance_m"]) == first["min_human_centre_distance_m"]
+        and row["robot_gem_order"] == first["robot_gem_order"]
+    )
     assert row["robot"] == "slow_bot"
 
 
@@ -178,9 +213,14 @@ def test_free_running_recordings_are_complete_and_score_independently(ros, tmp_p
     start, end = (datetime.fromisoformat(session["wall_clock"][k]).timestamp() for k in ("trial_start", "trial_end"))
     assert before < start < end < time.time()
     if rtf == "1":  # real time, unless the machine was too busy for it: then the clock was held, and says so
-        held = [e for e in map(json.loads, (folder / "events.jsonl").read_text().splitlines()) if e["type"] == "clock_held"]
+        held = [
+            e for e in map(json.loads, (folder / "events.jsonl").read_text().splitlines()) if e["type"] == "clock_held"
+        ]
         assert end - start > session["duration_s"] - 0.5
-        assert held or end - start == pytest.approx(session["duration_s"], abs=0.5), (end - start, session["duration_s"])
+        assert held or end - start == pytest.approx(session["duration_s"], abs=0.5), (
+            end - start,
+            session["duration_s"],
+        )
 
 
 def test_ctrl_c_mid_trial_leaves_a_readable_bag(ros, tmp_path):

@@ -16,7 +16,9 @@ def test_robot_collects_only_its_target_not_gems_it_brushes_past():
     rules.robot_target = "r1"
     assert rules.update(0.0, Pose2D(1.0, 0.0), {}) == []  # on top of r2, which is not the target
     events = rules.update(0.1, Pose2D(1.9, 0.1), {})
-    assert [e.to_dict() for e in events] == [{"stamp": 0.1, "source": "scenario", "type": "gem_collected", "gem": "r1", "by": "robot"}]
+    assert [e.to_dict() for e in events] == [
+        {"stamp": 0.1, "source": "scenario", "type": "gem_collected", "gem": "r1", "by": "robot"}
+    ]
     assert [g.id for g in rules.remaining("robot")] == ["r2"] and rules.robot_target is None
 
 
@@ -32,7 +34,12 @@ def test_human_dwell_must_be_continuous_and_restarts_on_leaving():
     types = []
     for t, pose in [(0.0, on), (2.9, on), (3.0, off), (4.0, on), (6.9, on), (7.0, on)]:
         types += [(t, e.kind) for e in rules.update(t, Pose2D(0, 0), {"h1": pose})]
-    assert types == [(0.0, EventKind.DWELL_STARTED), (3.0, EventKind.DWELL_RESET), (4.0, EventKind.DWELL_STARTED), (7.0, EventKind.GEM_COLLECTED)]
+    assert types == [
+        (0.0, EventKind.DWELL_STARTED),
+        (3.0, EventKind.DWELL_RESET),
+        (4.0, EventKind.DWELL_STARTED),
+        (7.0, EventKind.GEM_COLLECTED),
+    ]
     assert rules.collected == {"m1": "h1"}
     assert rules.update(8.0, Pose2D(0, 0), {"h1": on}) == []  # gone: collected once
 

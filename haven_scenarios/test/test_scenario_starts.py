@@ -12,7 +12,13 @@ from haven_sim.sim.world_file import load_world
 
 pytestmark = pytest.mark.unit
 
-BASE = {"name": "s", "world": "office", "kind": "hallway", "robot": {"route": ["W"]}, "humans": [{"id": "h1", "route": ["west_end"]}]}
+BASE = {
+    "name": "s",
+    "world": "office",
+    "kind": "hallway",
+    "robot": {"route": ["W"]},
+    "humans": [{"id": "h1", "route": ["west_end"]}],
+}
 
 
 def test_the_scenario_starts_replace_the_worlds():

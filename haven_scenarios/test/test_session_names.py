@@ -27,7 +27,25 @@ pytestmark = pytest.mark.integration
 
 SCENARIO = "name: {name}\nworld: small_test\nkind: retrieval\ntimeout_s: 20\nrobot: {{order: nearest}}\n"
 RULE = "must be 1 to 64 ASCII letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
-BAD = ["", ".", "..", "../x", "../../../x", "a/b", "/abs", "a..b", "-x", ".hidden", "x" * 65, "a b", "ü", "a\x00b", "a\\b", None, 7]
+BAD = [
+    "",
+    ".",
+    "..",
+    "../x",
+    "../../../x",
+    "a/b",
+    "/abs",
+    "a..b",
+    "-x",
+    ".hidden",
+    "x" * 65,
+    "a b",
+    "ü",
+    "a\x00b",
+    "a\\b",
+    None,
+    7,
+]
 
 
 def every_path(root):
@@ -63,7 +81,9 @@ def run_haven(capsys, *argv):
 
 
 def test_haven_run_refuses_a_participant_id_that_is_a_path(tmp_path, capsys):
-    code, out, err = run_haven(capsys, "run", "hallway", "--participant", "../../x", "--sessions", str(tmp_path / "a" / "s"))
+    code, out, err = run_haven(
+        capsys, "run", "hallway", "--participant", "../../x", "--sessions", str(tmp_path / "a" / "s")
+    )
     assert code == 2 and out == ""
     rule = "1 to 64 ASCII letters, digits, '_', '.' or '-', starting with a letter or digit, without '..'"
     assert err == [f"haven: error: --participant: must be {rule}, got '../../x'"]
@@ -95,7 +115,9 @@ def test_sessions_under_a_regular_file_is_one_line(tmp_path, capsys):
     afile.write_text("not a folder\n")
     for sessions in (afile, afile / "s"):
         code, _, err = run_haven(capsys, "run", "hallway", "--sessions", str(sessions))
-        assert code == 2 and err == [f"haven: error: --sessions {sessions}: cannot make a session folder there: Not a directory"]
+        assert code == 2 and err == [
+            f"haven: error: --sessions {sessions}: cannot make a session folder there: Not a directory"
+        ]
     assert afile.read_text() == "not a folder\n"
 
 
@@ -104,7 +126,9 @@ def test_an_unwritable_sessions_folder_is_one_line(tmp_path, capsys):
     locked = tmp_path / "locked"
     locked.mkdir(mode=0o500)
     code, _, err = run_haven(capsys, "run", "hallway", "--sessions", str(locked))
-    assert code == 2 and err == [f"haven: error: --sessions {locked}: cannot make a session folder there: Permission denied"]
+    assert code == 2 and err == [
+        f"haven: error: --sessions {locked}: cannot make a session folder there: Permission denied"
+    ]
 
 
 def test_a_full_disk_while_the_session_is_made_is_one_line_and_leaves_nothing_half_made(tmp_path):
@@ -121,5 +145,7 @@ def test_a_full_disk_while_the_session_is_made_is_one_line_and_leaves_nothing_ha
     )
     assert r.returncode == 2 and r.stdout == "" and "Traceback" not in r.stderr
     (line,) = r.stderr.strip().splitlines()
-    assert line.startswith(f"haven: error: {sessions}/hallway_sim_") and line.endswith(": cannot write the session's files: File too large")
+    assert line.startswith(f"haven: error: {sessions}/hallway_sim_") and line.endswith(
+        ": cannot write the session's files: File too large"
+    )
     assert list(sessions.iterdir()) == []  # the half-made session folder is gone (it held only copies)

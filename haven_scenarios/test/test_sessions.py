@@ -36,7 +36,10 @@ def record_batch_trial(folder, name="shared_room", seed=0, delay_s=0.4):
     result = trial.run()
     folder.mkdir(parents=True)
     write_inputs(folder, scenario, "{}\n")
-    write_json(folder / "session.json", {"scenario": name, "seed": seed, "participant": "sim", "condition": "all", "humans": ["h1"]})
+    write_json(
+        folder / "session.json",
+        {"scenario": name, "seed": seed, "participant": "sim", "condition": "all", "humans": ["h1"]},
+    )
     with BagWriter(folder / "bag") as bag:
         for m in messages:
             topic = "/" + m.topic

@@ -18,7 +18,10 @@ from haven_sim.sim.world_file import parse_world
 
 HALL = {  # a 2 m wide, 12 m long hallway along x (HAVEN's hallway width)
     "name": "hall",
-    "walls": [{"segment": s, "thickness": 0.1} for s in ([[0, 0], [12, 0]], [[12, 0], [12, 2]], [[12, 2], [0, 2]], [[0, 2], [0, 0]])],
+    "walls": [
+        {"segment": s, "thickness": 0.1}
+        for s in ([[0, 0], [12, 0]], [[12, 0], [12, 2]], [[12, 2], [0, 2]], [[0, 2], [0, 0]])
+    ],
     "robot": {"start": [6.0, 1.0, math.pi]},
     "humans": [{"id": "h1", "start": [1.0, 1.0, 0.0]}],
 }
@@ -87,7 +90,9 @@ def test_a_walker_passes_a_robot_standing_in_a_hallway_without_touching_it():
     for k in range(30 * 50):
         if k % 5 == 0:
             me, robot = sim.human_poses()["h1"], sim.robot_pose()
-            sim.command_human("h1", person.command(sim.time, me, robot, perceive(person.params, sight, sim.time, me, robot, None)))
+            sim.command_human(
+                "h1", person.command(sim.time, me, robot, perceive(person.params, sight, sim.time, me, robot, None))
+            )
         sim.step()
         closest = min(closest, sim.human_poses()["h1"].distance_to((6.0, 1.0)))
         if person.done:

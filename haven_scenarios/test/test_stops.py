@@ -24,7 +24,12 @@ pytestmark = pytest.mark.integration
 
 HAVEN = [sys.executable, "-m", "haven_scenarios.tools.cli"]
 LIMIT_S = 5.0
-STUDY = {"name": "stops", "scenarios": ["shared_room"], "conditions": {"none": ["none"], "all": ["all"]}, "participants": 1}
+STUDY = {
+    "name": "stops",
+    "scenarios": ["shared_room"],
+    "conditions": {"none": ["none"], "all": ["all"]},
+    "participants": 1,
+}
 
 
 def wait_until(condition, timeout_s, what):
@@ -38,7 +43,9 @@ def start(argv, tmp_path, ignore_sigint=False):
     """`haven ...` in a session of its own; `ignore_sigint`: as a shell starts a background job (`cmd &`)."""
     out = (tmp_path / "out.txt").open("w")
     pre = (lambda: signal.signal(signal.SIGINT, signal.SIG_IGN)) if ignore_sigint else None
-    return subprocess.Popen([*HAVEN, *argv], stdout=out, stderr=subprocess.STDOUT, start_new_session=True, preexec_fn=pre, cwd=tmp_path)
+    return subprocess.Popen(
+        [*HAVEN, *argv], stdout=out, stderr=subprocess.STDOUT, start_new_session=True, preexec_fn=pre, cwd=tmp_path
+    )
 
 
 def stop(proc, sig):
@@ -57,7 +64,9 @@ def children(pid):
     return [int(c) for t in Path(f"/proc/{pid}/task").glob("*/children") for c in t.read_text().split()]
 
 
-@pytest.mark.parametrize("sig, ignored", [(signal.SIGTERM, False), (signal.SIGINT, True)], ids=["SIGTERM", "SIGINT-in-background"])
+@pytest.mark.parametrize(
+    "sig, ignored", [(signal.SIGTERM, False), (signal.SIGINT, True)], ids=["SIGTERM", "SIGINT-in-background"]
+)
 def test_a_batch_study_run_ends_within_5_s_and_runs_the_interrupted_trial_again(tmp_path, sig, ignored):
     (tmp_path / "study.yaml").write_text(yaml.safe_dump(STUDY))
     argv = ["study", "run", "study.yaml", "--participant", "p01", "--batch", "--dir", "st"]
@@ -83,7 +92,9 @@ def test_a_sweep_ends_within_5_s_of_sigterm_its_workers_gone_and_its_finished_ro
     took = stop(proc, signal.SIGTERM)
     said = (tmp_path / "out.txt").read_text()
     assert took < LIMIT_S and proc.returncode == 130, (took, said[-2000:])
-    assert "Traceback" not in said and f"finished trial(s) are in {journal.name}" in said.replace(str(tmp_path) + "/", "")
+    assert "Traceback" not in said and f"finished trial(s) are in {journal.name}" in said.replace(
+        str(tmp_path) + "/", ""
+    )
     rows = [json.loads(line) for line in journal.read_text().splitlines()]  # every line whole
     assert rows and all("end_reason" in r for r in rows) and not (tmp_path / "sweep.csv").exists()
     wait_until(lambda: not any(Path(f"/proc/{w}").exists() for w in workers), 5, "a worker outlived the sweep")
@@ -114,10 +125,13 @@ def test_serve_stops_every_participants_runner_together_within_5_s(tmp_path):
 
     (tmp_path / "study.yaml").write_text(yaml.safe_dump(STUDY | {"participants": 2}))
     study = load_study(tmp_path / "study.yaml")
-    server = StudyServer(ServeOptions(str(tmp_path / "study.yaml"), tmp_path / "st", port=0), study, bind(study, tmp_path / "st"))
+    server = StudyServer(
+        ServeOptions(str(tmp_path / "study.yaml"), tmp_path / "st", port=0), study, bind(study, tmp_path / "st")
+    )
     server.start()
     runners = {
-        p: Runner(p, [sys.executable, "-c", SLOW_STOP, how], os.environ, tmp_path / "st" / p) for p, how in (("p01", "clean"), ("p02", "hang"))
+        p: Runner(p, [sys.executable, "-c", SLOW_STOP, how], os.environ, tmp_path / "st" / p)
+        for p, how in (("p01", "clean"), ("p02", "hang"))
     }
     server.runners.update(runners)
     wait_until(lambda: all(r.trial for r in runners.values()), 30, "the runners never started")

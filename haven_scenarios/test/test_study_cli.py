@@ -94,8 +94,10 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     # A batch trial takes a fraction of a second, so the second one is held until the signal comes:
     # where the study is cut is the test's choice, not the machine's speed.
     held = tmp_path / "second_trial_running"
-    proc = subprocess.Popen([sys.executable, "-c", HOLD_SECOND_TRIAL, str(held), "study", "run", str(path), "--participant", "p02", "--batch"],
-                            cwd=tmp_path, start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)  # fmt: skip
+    proc = subprocess.Popen([sys.executable, "-c", HOLD_SECOND_TRIAL, str(held),
+                             "study", "run", str(path), "--participant", "p02", "--batch"],
+                            cwd=tmp_path, start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)  # fmt: skip
     wait_for(held.exists, 120.0)
     os.killpg(proc.pid, signal.SIGINT)
     _out, err = proc.communicate(timeout=60)
@@ -124,14 +126,24 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     again = haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path)
     assert again.returncode == 0 and "3/3 trials done" in again.stdout and sessions(root) == after
 
-    changed = haven("study", "run", str(study_file(tmp_path, participants=4)), "--participant", "p04", "--batch", cwd=tmp_path)
-    assert changed.returncode == 2 and changed.stderr.count("\n") == 1 and "the study changed since its first run" in changed.stderr
+    changed = haven(
+        "study", "run", str(study_file(tmp_path, participants=4)), "--participant", "p04", "--batch", cwd=tmp_path
+    )
+    assert (
+        changed.returncode == 2
+        and changed.stderr.count("\n") == 1
+        and "the study changed since its first run" in changed.stderr
+    )
 
     report = haven("study", "report", str(study_file(tmp_path)), cwd=tmp_path)
     assert report.returncode == 0, report.stderr
     with (root / "report" / "study_long.csv").open() as f:
         rows = list(csv.DictReader(f))
-    assert list(rows[0])[:3] == ["participant", "human", "trial_id"] and list(rows[0])[-3:] == ["measure", "unit", "value"]
+    assert list(rows[0])[:3] == ["participant", "human", "trial_id"] and list(rows[0])[-3:] == [
+        "measure",
+        "unit",
+        "value",
+    ]
     with (root / "report" / "codebook.csv").open() as f:  # every measure of the long table, documented
         book = {(r["per_person"] == "True", r["measure"]): r for r in csv.DictReader(f)}
     assert book.keys() == {(bool(r["human"]), r["measure"]) for r in rows} and all(r["source"] for r in book.values())
@@ -154,7 +166,10 @@ def test_batch_study_resumes_after_ctrl_c_without_running_a_finished_trial_twice
     r = haven("study", "run", str(reseeded), "--participant", "p01", "--batch", "--replan", cwd=tmp_path)
     assert r.returncode == 0 and "0/3 trials done" in r.stdout, r.stderr
     replanned = sessions(root)
-    assert all(replanned[t][: len(after[t])] == after[t] and len(replanned[t]) == len(after[t]) + t.startswith("p01/") for t in after)
+    assert all(
+        replanned[t][: len(after[t])] == after[t] and len(replanned[t]) == len(after[t]) + t.startswith("p01/")
+        for t in after
+    )
     status = haven("study", "status", str(reseeded), cwd=tmp_path)
     assert "3/3" in next(line for line in status.stdout.splitlines() if line.startswith("p01")), status.stdout
     assert haven("study", "report", str(reseeded), cwd=tmp_path).returncode == 0
@@ -170,16 +185,22 @@ def test_a_second_runner_on_the_same_participant_is_refused_and_a_killed_runner_
     path = study_file(tmp_path, participants=1)
     root = tmp_path / "studies" / "pilot"
     held = tmp_path / "second_trial_running"
-    first = subprocess.Popen([sys.executable, "-c", HOLD_SECOND_TRIAL, str(held), "study", "run", str(path), "--participant", "p01", "--batch"],
-                             cwd=tmp_path, start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)  # fmt: skip
+    first = subprocess.Popen([sys.executable, "-c", HOLD_SECOND_TRIAL, str(held),
+                              "study", "run", str(path), "--participant", "p01", "--batch"],
+                             cwd=tmp_path, start_new_session=True, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True)  # fmt: skip
     try:
         wait_for(held.exists, 120.0)
         before = sessions(root)
         second = haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path)
         assert second.returncode == 2 and second.stderr.count("\n") == 1, second.stderr
-        assert f"participant p01 of study pilot is already being run (pid {first.pid}" in second.stderr and "study run" in second.stderr
+        assert (
+            f"participant p01 of study pilot is already being run (pid {first.pid}" in second.stderr
+            and "study run" in second.stderr
+        )
         assert sessions(root) == before  # it ran nothing
-        other = haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path)  # (still held: still refused)
+        # (still held: still refused)
+        other = haven("study", "run", str(path), "--participant", "p01", "--batch", cwd=tmp_path)
         assert other.returncode == 2
     finally:
         os.killpg(first.pid, signal.SIGKILL)
@@ -190,9 +211,13 @@ def test_a_second_runner_on_the_same_participant_is_refused_and_a_killed_runner_
     assert len(finished) == 3 and all(len(a) == 1 for a in finished.values()), finished
 
 
-def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_report_reads_questionnaires_and_flags_invalid_sessions(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     conditions = {"none": ["none"], "path": ["path_projection"]}
-    path = study_file(tmp_path, participants=2, conditions=conditions, practice=[{"scenario": "shared_room", "condition": "path"}])
+    path = study_file(
+        tmp_path, participants=2, conditions=conditions, practice=[{"scenario": "shared_room", "condition": "path"}]
+    )
     monkeypatch.chdir(tmp_path)
     for p in ("p01", "p02"):
         assert main(["study", "run", str(path), "--participant", p, "--batch"]) == 0
@@ -200,8 +225,10 @@ def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, 
     tlx, legibility = BUILTINS["nasa_tlx"], likert(LEGIBILITY, "test")
     folders = sorted(s.parent for s in root.glob("*/*/*/session.json"))
     for k, folder in enumerate(folders):
-        answers = {"h1": {"nasa_tlx": answers_record(tlx, {i.id: 5 * k for i in tlx.items}, "2026-11-24T10:00:00"),
-                          "legibility": answers_record(legibility, {"side": 1 + k % 7, "odd": 2}, "2026-11-24T10:01:00")}}  # fmt: skip
+        answers = {"h1": {
+            "nasa_tlx": answers_record(tlx, {i.id: 5 * k for i in tlx.items}, "2026-11-24T10:00:00"),
+            "legibility": answers_record(legibility, {"side": 1 + k % 7, "odd": 2}, "2026-11-24T10:01:00"),
+        }}  # fmt: skip
         (folder / ANSWERS_FILE).write_text(json.dumps(answers))
     bad = next(f for f in folders if f.parents[1].name == "p01" and f.parent.name.startswith("02_"))
     metrics = json.loads((bad / "metrics.json").read_text())
@@ -220,13 +247,17 @@ def test_report_reads_questionnaires_and_flags_invalid_sessions(tmp_path: Path, 
         summary = list(csv.DictReader(f))
     leg = {r["condition"]: r for r in summary if r["measure"] == "legibility"}
     assert set(leg) == {"none", "path"}
-    assert sum(int(r["n"]) + int(r["n_invalid"]) for r in leg.values()) == 4  # 2 participants x 2 conditions: practice left out
+    # 2 participants x 2 conditions: practice left out
+    assert sum(int(r["n"]) + int(r["n_invalid"]) for r in leg.values()) == 4
     bad_condition = next(r["condition"] for r in rows if r["session"] == str(bad.relative_to(root)))
     assert (int(leg[bad_condition]["n"]), int(leg[bad_condition]["n_invalid"])) == (1, 1)
     good = [
         float(r["value"])
         for r in rows
-        if r["measure"] == "legibility" and r["condition"] == bad_condition and r["valid"] == "True" and r["practice"] == "False"
+        if r["measure"] == "legibility"
+        and r["condition"] == bad_condition
+        and r["valid"] == "True"
+        and r["practice"] == "False"
     ]
     assert float(leg[bad_condition]["mean"]) == pytest.approx(sum(good) / len(good))
     assert (tmp_path / "out" / "summary.png").stat().st_size > 20_000
@@ -243,20 +274,30 @@ def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(t
     from haven_scenarios.tools.cli import build_parser
 
     path = study_file(tmp_path)
-    args = build_parser().parse_args(["study", "run", str(path), "--participant", "p02", "--web", "--port", "0", "--domain-id", "7"])
+    args = build_parser().parse_args(
+        ["study", "run", str(path), "--participant", "p02", "--web", "--port", "0", "--domain-id", "7"]
+    )
     study = load_study(path)
     specs = questionnaire_specs(study, tmp_path / "studies" / "pilot")
     trial = participant_schedule(study, "p02")[1]
     request = trial_request(args, trial, specs, study)
-    assert request.extra["study"] == {"name": "pilot", "trial_id": trial.trial_id, "position": 2, "condition": trial.condition, "practice": False,
-                                      "sequence": 2, "block": 1, "position_in_block": 1, "previous_condition": ""}  # fmt: skip
-    assert (request.scenario, request.participant, request.condition, request.seed) == ("shared_room", "p02", tuple(trial.cues), 1)
-    assert request.person == (1, 2)  # the study's second participant (seed base 0), at the second place in their session
+    assert request.extra["study"] == {"name": "pilot", "trial_id": trial.trial_id, "position": 2,
+                                      "condition": trial.condition, "practice": False, "sequence": 2, "block": 1,
+                                      "position_in_block": 1, "previous_condition": ""}  # fmt: skip
+    assert (request.scenario, request.participant, request.condition, request.seed) == (
+        "shared_room",
+        "p02",
+        tuple(trial.cues),
+        1,
+    )
+    # the study's second participant (seed base 0), at the second place in their session
+    assert request.person == (1, 2)
     assert request.web is not None and (request.web.host, request.web.port) == ("127.0.0.1", 0) and request.teleop == ()
     assert request.questionnaires[0] == "nasa_tlx"
     written = Path(request.questionnaires[-1])
     assert written.parent == (tmp_path / "studies" / "pilot" / "questionnaires").resolve()
-    assert likert(yaml.safe_load(written.read_text()), "file") == likert(LEGIBILITY, "file")  # the study's own, as `haven run` reads it
+    # the study's own, as `haven run` reads it
+    assert likert(yaml.safe_load(written.read_text()), "file") == likert(LEGIBILITY, "file")
     plan = plan_trial(request)
     assert plan.web is not None and [h.teleoperated for h in plan.scenario.humans] == [True] * len(plan.scenario.humans)
     assert plan.extra["questionnaires"][0] == "nasa_tlx" and plan.toggles == parse_condition(list(trial.cues))
@@ -264,7 +305,9 @@ def test_with_web_each_trial_is_a_browser_trial_with_the_studys_questionnaires(t
 
 def test_a_reader_that_stops_early_gets_no_traceback(tmp_path: Path) -> None:
     """`haven study plan haven_paper | head -1`: the pipe closes; haven stops quietly."""
-    proc = subprocess.Popen([*HAVEN, "study", "plan", "haven_paper"], cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    proc = subprocess.Popen(
+        [*HAVEN, "study", "plan", "haven_paper"], cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.PIPE
+    )
     assert proc.stdout is not None and proc.stderr is not None
     proc.stdout.close()
     err = proc.stderr.read().decode()
@@ -279,9 +322,16 @@ def test_a_counterbalanced_pilot_has_the_order_columns_and_the_order_table(tmp_p
                       assignment={"policy": "random", "seed": 1}, questionnaires=[])  # fmt: skip
     plan = haven("study", "plan", str(path), cwd=tmp_path)
     assert plan.returncode == 0, plan.stderr
-    assert "2 sequences" in plan.stdout and "2 participant(s) complete it" in plan.stdout and "Assignment: random (seed 1)" in plan.stdout
+    assert (
+        "2 sequences" in plan.stdout
+        and "2 participant(s) complete it" in plan.stdout
+        and "Assignment: random (seed 1)" in plan.stdout
+    )
     assert "practice1-practice-none" in plan.stdout and "note:" not in plan.stdout
-    assert "sequence 1: blocks hallway, shared_room" in plan.stdout and "sequence 2: blocks shared_room, hallway" in plan.stdout
+    assert (
+        "sequence 1: blocks hallway, shared_room" in plan.stdout
+        and "sequence 2: blocks shared_room, hallway" in plan.stdout
+    )
     for p in ("p01", "p02"):
         r = haven("study", "run", str(path), "--participant", p, "--batch", "--dir", str(tmp_path / "d"), cwd=tmp_path)
         assert r.returncode == 0, r.stderr
@@ -311,9 +361,20 @@ def test_a_counterbalanced_pilot_has_the_order_columns_and_the_order_table(tmp_p
         w = trials[(row["participant"], int(row["order_position"]))]
         assert all(row[c] == w[c] for c in order)
     recorded = json.loads(next((tmp_path / "d" / "p02").glob("03_*/*/session.json")).read_text())["study"]
-    assert (recorded["block"], recorded["position_in_block"], recorded["previous_condition"]) == (1, 2, trials[("p02", 2)]["condition"])
+    assert (recorded["block"], recorded["position_in_block"], recorded["previous_condition"]) == (
+        1,
+        2,
+        trials[("p02", 2)]["condition"],
+    )
     with (out / "order_effects.csv").open() as f:
         effects = list(csv.DictReader(f))
-    blocks = {(r["scenario"], r["level"]) for r in effects if r["factor"] == "block" and r["measure"] == "min_human_centre_distance_m"}
+    blocks = {
+        (r["scenario"], r["level"])
+        for r in effects
+        if r["factor"] == "block" and r["measure"] == "min_human_centre_distance_m"
+    }
     assert blocks == {("hallway", "1"), ("hallway", "2"), ("shared_room", "1"), ("shared_room", "2")}
-    assert {r["level"] for r in effects if r["factor"] == "previous_condition" and r["condition"] == "all"} <= {"(first)", "none"}
+    assert {r["level"] for r in effects if r["factor"] == "previous_condition" and r["condition"] == "all"} <= {
+        "(first)",
+        "none",
+    }

@@ -31,15 +31,27 @@ def test_nars_has_the_published_14_items_3_subscales_and_reverses_s3_only() -> N
     assert "Nomura" in NARS.source and "2006" in NARS.source
     # Published scoring: each subscale the sum of its items, S3 turned round (6 - answer).
     all_ones = {i.id: 1 for i in NARS.items}
-    assert score(NARS, all_ones) == {"nars_s1_interaction": 6.0, "nars_s2_social_influence": 5.0, "nars_s3_emotions": 15.0}
+    assert score(NARS, all_ones) == {
+        "nars_s1_interaction": 6.0,
+        "nars_s2_social_influence": 5.0,
+        "nars_s3_emotions": 15.0,
+    }
     mixed = {**all_ones, "nars_3": 2, "nars_5": 4, "nars_6": 5, "nars_7": 5, "nars_13": 3}
-    assert score(NARS, mixed) == {"nars_s1_interaction": 10.0, "nars_s2_social_influence": 7.0, "nars_s3_emotions": 4 + 2 + 1}
+    assert score(NARS, mixed) == {
+        "nars_s1_interaction": 10.0,
+        "nars_s2_social_influence": 7.0,
+        "nars_s3_emotions": 4 + 2 + 1,
+    }
 
 
 def test_a_ranking_takes_each_rank_once() -> None:
     q = preference(CONDITIONS)
     assert [i.id for i in q.items] == ["none", "signals", "all"] and (q.minimum, q.maximum) == (1, 3)
-    assert score(q, check_answers(q, {"none": 3, "signals": 1, "all": 2})) == {"preference_none": 3, "preference_signals": 1, "preference_all": 2}
+    assert score(q, check_answers(q, {"none": 3, "signals": 1, "all": 2})) == {
+        "preference_none": 3,
+        "preference_signals": 1,
+        "preference_all": 2,
+    }
     with pytest.raises(ValueError, match=r"preference: every item needs a different answer \(each of 1\.\.3 once\)"):
         check_answers(q, {"none": 1, "signals": 1, "all": 2})
     with pytest.raises(ValueError, match=r"preference\.all: must be one of 1\.\.3"):
@@ -73,7 +85,13 @@ def test_shuffled_items_are_seeded_per_key_keep_their_prompt_and_score_the_same(
 
 
 def study_yaml(tmp_path: Path, **extra: object) -> Path:
-    data = {"name": "s", "scenarios": ["hallway"], "conditions": {"none": ["none"], "all": ["all"]}, "participants": 2, **extra}
+    data = {
+        "name": "s",
+        "scenarios": ["hallway"],
+        "conditions": {"none": ["none"], "all": ["all"]},
+        "participants": 2,
+        **extra,
+    }
     path = tmp_path / "study.yaml"
     path.write_text(yaml.safe_dump(data, sort_keys=False))
     return path
@@ -81,10 +99,20 @@ def study_yaml(tmp_path: Path, **extra: object) -> Path:
 
 def test_a_study_file_names_consent_and_the_instruments_before_and_after(tmp_path: Path) -> None:
     (tmp_path / "consent.md").write_text("You will walk past a robot.\n\nYou may stop at any time.\n")
-    study = load_study(study_yaml(tmp_path, consent={"file": "consent.md"}, before_study=["demographics", "nars"], after_study=["preference"]))
+    study = load_study(
+        study_yaml(
+            tmp_path, consent={"file": "consent.md"}, before_study=["demographics", "nars"], after_study=["preference"]
+        )
+    )
     inst = study.instruments()
-    assert inst.consent is not None and inst.consent.instructions.startswith("You will walk past") and "stop at any time" in inst.consent.instructions
-    assert [q.name for q in inst.first] == ["consent", "demographics", "nars"] and [q.name for q in inst.after] == ["preference"]
+    assert (
+        inst.consent is not None
+        and inst.consent.instructions.startswith("You will walk past")
+        and "stop at any time" in inst.consent.instructions
+    )
+    assert [q.name for q in inst.first] == ["consent", "demographics", "nars"] and [q.name for q in inst.after] == [
+        "preference"
+    ]
     assert [i.id for i in inst.after[0].items] == ["none", "all"]
     assert not load_study(study_yaml(tmp_path)).instruments()
 
@@ -122,21 +150,34 @@ def lines(*answers: str):  # type: ignore[no-untyped-def]
 def test_terminal_answers_are_stored_with_their_order_and_consent_no_stops_the_rest(tmp_path: Path) -> None:
     study = parse_study(
         {"name": "s", "scenarios": ["hallway"], "conditions": {"none": ["none"], "all": ["all"]}, "participants": 2,
-         "consent": {"text": "Walk past a robot."}, "before_study": [{"name": "nars", "shuffle": True}], "after_study": ["preference"]},
+         "consent": {"text": "Walk past a robot."}, "before_study": [{"name": "nars", "shuffle": True}],
+         "after_study": ["preference"]},
         "study.yaml",
     )  # fmt: skip
     inst = study.instruments()
-    # p01 agrees, mistypes one NARS answer (asked again), answers 1 to everything; the ranking once twice-ranked, then right.
+    # p01 agrees, mistypes one NARS answer (asked again), answers 1 to everything; the ranking once twice-ranked, then
+    # right.
     read, shown = lines("1", *["9", "1"], *["1"] * 13)
     book = InstrumentBook(tmp_path, "p01")
     said: list[str] = []
     assert run_instruments(book, inst.first, "s/p01/study", terminal_asker(read, said.append))
     assert any("please type one of 1..5" in s for s in said) and any("Nomura" in s for s in said)
     data = json.loads((tmp_path / "p01" / "instruments.json").read_text())
-    assert data["consent"]["agreed"] is True and data["consent"]["answers"] == {"agree": 1} and data["consent"]["text"] == "Walk past a robot."
-    assert data["nars"]["scores"] == {"nars_s1_interaction": 6.0, "nars_s2_social_influence": 5.0, "nars_s3_emotions": 15.0}
-    assert sorted(data["nars"]["order"]) == sorted(i.id for i in NARS.items) and data["nars"]["order"] != [i.id for i in NARS.items]
-    assert f"1/14 {NARS.items[int(data['nars']['order'][0].split('_')[1]) - 1].text}" in shown[1]  # asked in the stored order
+    assert (
+        data["consent"]["agreed"] is True
+        and data["consent"]["answers"] == {"agree": 1}
+        and data["consent"]["text"] == "Walk past a robot."
+    )
+    assert data["nars"]["scores"] == {
+        "nars_s1_interaction": 6.0,
+        "nars_s2_social_influence": 5.0,
+        "nars_s3_emotions": 15.0,
+    }
+    assert sorted(data["nars"]["order"]) == sorted(i.id for i in NARS.items) and data["nars"]["order"] != [
+        i.id for i in NARS.items
+    ]
+    # asked in the stored order
+    assert f"1/14 {NARS.items[int(data['nars']['order'][0].split('_')[1]) - 1].text}" in shown[1]
     read, _ = lines("1", "1", "2", "1")
     assert run_instruments(book, inst.after, "s/p01/study", terminal_asker(read, said.append))
     assert "Each of 1..2 once, please: again." in said
@@ -148,7 +189,11 @@ def test_terminal_answers_are_stored_with_their_order_and_consent_no_stops_the_r
     assert other.declined() and set(json.loads(other.path.read_text())) == {"consent"}
 
     rows = {r["participant"]: r for r in participant_rows(tmp_path, ["p01", "p02"], inst)}
-    assert rows["p01"]["consent"] == "yes" and rows["p01"]["nars_s3_emotions"] == 15.0 and rows["p01"]["preference_all"] == 1.0
+    assert (
+        rows["p01"]["consent"] == "yes"
+        and rows["p01"]["nars_s3_emotions"] == 15.0
+        and rows["p01"]["preference_all"] == 1.0
+    )
     assert rows["p02"]["consent"] == "no" and rows["p02"]["nars_s1_interaction"] == ""
     write_participants(tmp_path / "report", tmp_path, ["p01", "p02"], inst)
     with open(tmp_path / "report" / "participants.csv") as f:
@@ -156,7 +201,10 @@ def test_terminal_answers_are_stored_with_their_order_and_consent_no_stops_the_r
     assert [r["consent"] for r in table] == ["yes", "no"] and table[0]["nars_s1_interaction"] == "6.0"
     book_rows = {r[0]: r for r in codebook_rows(inst)}
     assert set(book_rows) == set(table[0]) and book_rows["nars_s1_interaction"][1] == "points 6-30"
-    assert "reverse-scored (1+5-answer): nars_3, nars_5, nars_6" in book_rows["nars_s3_emotions"][2] and "Nomura" in book_rows["nars_s3_emotions"][3]
+    assert (
+        "reverse-scored (1+5-answer): nars_3, nars_5, nars_6" in book_rows["nars_s3_emotions"][2]
+        and "Nomura" in book_rows["nars_s3_emotions"][3]
+    )
 
 
 def test_a_batch_pilot_records_not_asked_instead_of_answers(tmp_path: Path) -> None:
@@ -167,7 +215,9 @@ def test_a_batch_pilot_records_not_asked_instead_of_answers(tmp_path: Path) -> N
     ).instruments()  # fmt: skip
     book = InstrumentBook(tmp_path, "p01")
     assert run_instruments(book, (*inst.first, *inst.after), "k", None)
-    assert json.loads(book.path.read_text()) == {n: {"not_asked": BATCH_REASON} for n in ("consent", "demographics", "preference")}
+    assert json.loads(book.path.read_text()) == {
+        n: {"not_asked": BATCH_REASON} for n in ("consent", "demographics", "preference")
+    }
     (row,) = participant_rows(tmp_path, ["p01"], inst)
     assert row["consent"] == "not asked" and row["demographics_age"] == "" and row["preference_all"] == ""
     assert row["not_asked"] == "consent demographics preference"
@@ -205,7 +255,8 @@ def test_haven_study_run_asks_at_the_terminal_before_the_first_trial_and_after_t
     monkeypatch.setattr("builtins.input", lambda prompt="": next(answers))
     assert main(["study", "run", str(path), "--participant", "p01", "--dir", str(root)]) == 0
     assert ran == [] and "p01 did not agree to take part: no trial is run" in capsys.readouterr().err
-    assert main(["study", "run", str(path), "--participant", "p01", "--dir", str(root)]) == 0 and ran == []  # (asked once)
+    # (asked once)
+    assert main(["study", "run", str(path), "--participant", "p01", "--dir", str(root)]) == 0 and ran == []
 
     demographics = ["3", "2", "", "1", "2", "5"]
     answers = iter(["1", *demographics, *["2"] * 14, "2", "1"])
@@ -221,7 +272,10 @@ def test_haven_study_run_asks_at_the_terminal_before_the_first_trial_and_after_t
 
     capsys.readouterr()
     assert main(["study", "report", str(path), "--dir", str(root)]) == 0
-    assert "participants.csv: consent: 1 yes, 1 no, 1 not asked; demographics: 1/3 answered; nars: 1/3 answered" in capsys.readouterr().out
+    assert (
+        "participants.csv: consent: 1 yes, 1 no, 1 not asked; demographics: 1/3 answered; nars: 1/3 answered"
+        in capsys.readouterr().out
+    )
     with open(root / "report" / "participants.csv") as f:
         rows = {r["participant"]: r for r in csv.DictReader(f)}
     assert (
@@ -229,8 +283,11 @@ def test_haven_study_run_asks_at_the_terminal_before_the_first_trial_and_after_t
         and rows["p02"]["demographics_gender"] == "Man"
         and rows["p02"]["demographics_games"].startswith("Every")
     )
-    assert rows["p02"]["nars_s1_interaction"] == "12.0" and rows["p02"]["nars_s3_emotions"] == "12.0"  # 6 x 2; 3 x (6 - 2)
-    assert rows["p01"]["consent"] == "no" and rows["p03"]["consent"] == "not asked" and rows["p03"]["preference_all"] == ""
+    # 6 x 2; 3 x (6 - 2)
+    assert rows["p02"]["nars_s1_interaction"] == "12.0" and rows["p02"]["nars_s3_emotions"] == "12.0"
+    assert (
+        rows["p01"]["consent"] == "no" and rows["p03"]["consent"] == "not asked" and rows["p03"]["preference_all"] == ""
+    )
     assert rows["p03"]["not_asked"] == "consent demographics nars preference" and rows["p02"]["not_asked"] == ""
 
 
@@ -245,12 +302,37 @@ def test_the_instruments_wait_ends_cleanly_on_ctrl_c_and_on_a_closed_terminal(tm
 
     path = tmp_path / "study.yaml"
     path.write_text(
-        yaml.safe_dump({"name": "s", "scenarios": ["hallway"], "conditions": {"a": ["none"]}, "participants": 1, "before_study": ["nars"]})
+        yaml.safe_dump(
+            {
+                "name": "s",
+                "scenarios": ["hallway"],
+                "conditions": {"a": ["none"]},
+                "participants": 1,
+                "before_study": ["nars"],
+            }
+        )
     )
-    argv = [sys.executable, "-m", "haven_scenarios", "study", "run", str(path), "--participant", "p01", "--dir", str(tmp_path / "out")]
+    argv = [
+        sys.executable,
+        "-m",
+        "haven_scenarios",
+        "study",
+        "run",
+        str(path),
+        "--participant",
+        "p01",
+        "--dir",
+        str(tmp_path / "out"),
+    ]
     # Started as a shell starts a background job, with SIGINT ignored: Ctrl-C must end the wait all the same.
     background = lambda: signal.signal(signal.SIGINT, signal.SIG_IGN)  # noqa: E731
-    web = subprocess.Popen([*argv, "--web", "--port", "0"], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, preexec_fn=background)
+    web = subprocess.Popen(
+        [*argv, "--web", "--port", "0"],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        preexec_fn=background,
+    )
     try:
         assert "web: participant p01 (before the first trial: nars): http://" in web.stdout.readline()  # type: ignore[union-attr]
         web.send_signal(signal.SIGINT)

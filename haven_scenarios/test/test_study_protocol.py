@@ -10,7 +10,15 @@ import pytest
 import yaml
 
 from haven_scenarios.study.protocol import StudyError, load_study
-from haven_scenarios.study.schedule import design_note, latin, orders, participant_schedule, practice_note, schedule, williams
+from haven_scenarios.study.schedule import (
+    design_note,
+    latin,
+    orders,
+    participant_schedule,
+    practice_note,
+    schedule,
+    williams,
+)
 from haven_viz.cues import DEFAULT_ON
 
 BASE = {
@@ -56,7 +64,9 @@ def test_one_scenario_or_condition_has_one_order(design: str) -> None:
     assert orders(design, 1) == [[0]]  # (Williams' mirror once made one scenario two "block orders")
 
 
-@pytest.mark.parametrize("design, n", [("williams", 4), ("williams", 5), ("latin", 3), ("latin", 4), ("full", 3), ("full", 4)])
+@pytest.mark.parametrize(
+    "design, n", [("williams", 4), ("williams", 5), ("latin", 3), ("latin", 4), ("full", 3), ("full", 4)]
+)
 def test_every_design_is_balanced_for_position(design: str, n: int) -> None:
     rows = orders(design, n)
     assert all(sorted(r) == list(range(n)) for r in rows)
@@ -71,13 +81,19 @@ def test_latin_is_cyclic_and_full_is_every_permutation_once() -> None:
 
 
 def test_schedule_of_a_study_file(tmp_path: Path) -> None:
-    path = write(tmp_path, practice=[{"scenario": "shared_room", "condition": "all"}], seeds={"policy": "per_trial", "base": 100})
+    path = write(
+        tmp_path, practice=[{"scenario": "shared_room", "condition": "all"}], seeds={"policy": "per_trial", "base": 100}
+    )
     study = load_study(path)
     trials = schedule(study)
     assert len(trials) == 4 * 5
     p1 = participant_schedule(study, "p01")
     assert [t.position for t in p1] == [1, 2, 3, 4, 5]
-    assert p1[0].practice and p1[0].trial_id == "practice1-shared_room-all" and p1[0].folder == "01_practice1-shared_room-all"
+    assert (
+        p1[0].practice
+        and p1[0].trial_id == "practice1-shared_room-all"
+        and p1[0].folder == "01_practice1-shared_room-all"
+    )
     assert not any(t.practice for t in p1[1:])
     names = [c.name for c in study.conditions]
     for k, p in enumerate(study.participants):  # participant k takes the Williams square's row k
@@ -92,11 +108,18 @@ def test_seed_policies_and_repetitions(tmp_path: Path) -> None:
     ids = [t.trial_id for t in participant_schedule(fixed, "p02")]
     assert len(ids) == 8 and ids[0].endswith("-r1") and ids[4].endswith("-r2") and len(set(ids)) == 8
     per = load_study(write(tmp_path, seeds={"policy": "per_participant", "base": 3}))
-    assert {p: {t.seed for t in participant_schedule(per, p)} for p in per.participants} == {"p01": {3}, "p02": {4}, "p03": {5}, "p04": {6}}
+    assert {p: {t.seed for t in participant_schedule(per, p)} for p in per.participants} == {
+        "p01": {3},
+        "p02": {4},
+        "p03": {5},
+        "p04": {6},
+    }
 
 
 def test_schedule_is_deterministic_and_scenarios_are_counterbalanced_blocks(tmp_path: Path) -> None:
-    path = write(tmp_path, scenarios=["hallway", "shared_room"], participants=["anna", "ben", "cleo"], counterbalancing="full")
+    path = write(
+        tmp_path, scenarios=["hallway", "shared_room"], participants=["anna", "ben", "cleo"], counterbalancing="full"
+    )
     a, b = schedule(load_study(path)), schedule(load_study(path))
     assert a == b
     anna, ben = ([t for t in a if t.participant == p] for p in ("anna", "ben"))
@@ -106,11 +129,15 @@ def test_schedule_is_deterministic_and_scenarios_are_counterbalanced_blocks(tmp_
     assert [t.condition for t in ben[:4]] == [t.condition for t in ben[4:]]  # the same order in each block
     assert [t.previous_condition for t in ben[4:]] == ["", *(t.condition for t in ben[4:7])]  # within the block only
     in_file_order = load_study(write(tmp_path, scenarios=["hallway", "shared_room"], participants=3, blocks="none"))
-    assert {next(t.scenario for t in participant_schedule(in_file_order, p)) for p in in_file_order.participants} == {"hallway"}
+    assert {next(t.scenario for t in participant_schedule(in_file_order, p)) for p in in_file_order.participants} == {
+        "hallway"
+    }
 
 
 def test_plan_says_when_two_squares_are_needed_or_the_design_is_incomplete(tmp_path: Path) -> None:
-    odd = load_study(write(tmp_path, conditions={"none": ["none"], "path": ["path_projection"], "all": ["all"]}, participants=6))
+    odd = load_study(
+        write(tmp_path, conditions={"none": ["none"], "path": ["path_projection"], "all": ["all"]}, participants=6)
+    )
     assert "two Latin squares" in design_note(odd) and "6 participant(s) complete it" in design_note(odd)
     short = load_study(write(tmp_path, participants=5))
     assert "use a multiple of 4" in design_note(short)
@@ -118,14 +145,18 @@ def test_plan_says_when_two_squares_are_needed_or_the_design_is_incomplete(tmp_p
 
 def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) -> None:
     paper = load_study("haven_paper")
-    assert [s.name for s in paper.scenarios] == ["hallway", "shared_room", "shared_room_crossing"] and len(paper.conditions) == 4
+    assert [s.name for s in paper.scenarios] == ["hallway", "shared_room", "shared_room_crossing"] and len(
+        paper.conditions
+    ) == 4
     assert (paper.blocks, paper.counterbalancing, paper.assignment) == ("williams", "williams", "random")
     assert [(p.scenario.name, p.condition.cues, p.own) for p in paper.practice] == [("practice", ("none",), True)]
     assert practice_note(paper) is None and "12 participant(s) complete it" in design_note(paper)
     assert [q.name for q in paper.resolved_questionnaires()] == ["nasa_tlx", "godspeed", "legibility"]
     shipped = Path(__file__).resolve().parents[1] / "haven_scenarios" / "scenarios" / "shared_room.yaml"
     (tmp_path / "mine.yaml").write_text(
-        shipped.read_text().replace("world: shared_room", f"world: {shipped.parents[1] / 'worlds' / 'shared_room.yaml'}")
+        shipped.read_text().replace(
+            "world: shared_room", f"world: {shipped.parents[1] / 'worlds' / 'shared_room.yaml'}"
+        )
     )
     study = load_study(write(tmp_path, scenarios=["mine.yaml"]))
     assert study.scenarios[0].spec == str((tmp_path / "mine.yaml").resolve())
@@ -162,7 +193,9 @@ def test_shipped_study_and_scenario_files_relative_to_the_study(tmp_path: Path) 
         ({"colour": 1}, "colour: unknown key"),
     ],
 )
-def test_bad_study_files_are_refused_in_one_line_naming_file_and_key(tmp_path: Path, changes: dict[str, object], message: str) -> None:
+def test_bad_study_files_are_refused_in_one_line_naming_file_and_key(
+    tmp_path: Path, changes: dict[str, object], message: str
+) -> None:
     with pytest.raises(StudyError) as e:
         load_study(write(tmp_path, **changes))
     text = str(e.value)

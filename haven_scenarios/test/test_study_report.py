@@ -13,8 +13,9 @@ from haven_scenarios.record.study_table import Measure, TrialResults, long_rows,
 
 
 def test_per_person_metrics_become_human_and_measure_and_strings_are_not_measures() -> None:
-    metrics = {"min_human_centre_distance_m": 1.2, "h1_detour_m": 0.4, "h12_detour_m": 0.9, "h1_contacts": 0, "robot_gem_order": "rg1 rg2",
-               "valid": True, "seed": 4, "pass_signal_lead_s_median": None, "end_reason": "completed"}  # fmt: skip
+    metrics = {"min_human_centre_distance_m": 1.2, "h1_detour_m": 0.4, "h12_detour_m": 0.9, "h1_contacts": 0,
+               "robot_gem_order": "rg1 rg2", "valid": True, "seed": 4, "pass_signal_lead_s_median": None,
+               "end_reason": "completed"}  # fmt: skip
     got = split_measures(metrics, ["h1", "h12"])
     assert got == [
         Measure("", "min_human_centre_distance_m", 1.2),
@@ -45,7 +46,14 @@ def test_finished_outcomes(outcome: object, done: bool) -> None:
 
 
 def result(participant: str, condition: str, value: float, valid: bool = True, practice: bool = False) -> TrialResults:
-    design = {"participant": participant, "trial_id": f"s-{condition}", "practice": practice, "scenario": "s", "condition": condition, "valid": valid}
+    design = {
+        "participant": participant,
+        "trial_id": f"s-{condition}",
+        "practice": practice,
+        "scenario": "s",
+        "condition": condition,
+        "valid": valid,
+    }
     return TrialResults(design, (Measure("", "x_m", value), Measure("h1", "nasa_tlx_raw", value * 10)))
 
 
@@ -61,7 +69,11 @@ def test_long_and_wide_hold_the_same_values() -> None:
 def test_summary_leaves_out_practice_counts_invalid_apart_and_keeps_the_condition_order() -> None:
     values = [1.0, 2.5, 4.0]
     results = [result(f"p{k}", "none", v) for k, v in enumerate(values)]
-    results += [result("p9", "none", 100.0, valid=False), result("p1", "all", 3.0), result("p1", "none", 50.0, practice=True)]
+    results += [
+        result("p9", "none", 100.0, valid=False),
+        result("p1", "all", 3.0),
+        result("p1", "none", 50.0, practice=True),
+    ]
     rows = summary_rows(results, ["none", "all"])
     assert [(r["condition"], r["human"], r["measure"]) for r in rows] == [
         ("none", "", "x_m"),
@@ -71,13 +83,19 @@ def test_summary_leaves_out_practice_counts_invalid_apart_and_keeps_the_conditio
     ]
     none = rows[0]
     assert (none["n"], none["n_invalid"]) == (3, 1)
-    assert none["mean"] == pytest.approx(statistics.fmean(values)) and none["sd"] == pytest.approx(statistics.stdev(values)) and none["median"] == 2.5
+    assert (
+        none["mean"] == pytest.approx(statistics.fmean(values))
+        and none["sd"] == pytest.approx(statistics.stdev(values))
+        and none["median"] == 2.5
+    )
     assert rows[2]["n"] == 1 and rows[2]["sd"] is None  # one trial: no spread
 
 
 def test_summary_pairs_participants_against_the_reference_with_intervals_and_d_z() -> None:
     none, cued = [1.0, 2.0, 3.0, 4.0], [1.5, 2.0, 4.0, 5.5]  # paired differences 0.5, 0, 1, 1.5
-    results = [result(f"p{k}", "none", v) for k, v in enumerate(none)] + [result(f"p{k}", "all", v) for k, v in enumerate(cued)]
+    results = [result(f"p{k}", "none", v) for k, v in enumerate(none)] + [
+        result(f"p{k}", "all", v) for k, v in enumerate(cued)
+    ]
     results.append(result("p9", "all", 9.0))  # no reference trial: in the condition's mean, not in the pairs
     rows = {(r["condition"], r["measure"]): r for r in summary_rows(results, ["none", "all"])}
     ref, row = rows[("none", "x_m")], rows[("all", "x_m")]
@@ -87,7 +105,10 @@ def test_summary_pairs_participants_against_the_reference_with_intervals_and_d_z
     assert row["reference"] == "none" and row["diff_n"] == 4 and row["diff_mean"] == pytest.approx(0.75)
     assert row["d_z"] == pytest.approx(0.75 / statistics.stdev(diffs), abs=1e-4)
     half = 3.1824 * statistics.stdev(diffs) / 2
-    assert (row["diff_ci_low"], row["diff_ci_high"]) == (pytest.approx(0.75 - half, abs=1e-3), pytest.approx(0.75 + half, abs=1e-3))
+    assert (row["diff_ci_low"], row["diff_ci_high"]) == (
+        pytest.approx(0.75 - half, abs=1e-3),
+        pytest.approx(0.75 + half, abs=1e-3),
+    )
     assert rows[("all", "x_m")]["participants"] == 5
 
 
@@ -95,7 +116,8 @@ def test_summary_axes_keep_a_least_span_and_questionnaires_their_scale() -> None
     from haven_scenarios.record.study_summary import Panel, _limits
 
     low, high = _limits(Panel("hesitations", True, "", None, 2.0), 0.0, 0.0, nonnegative=True)
-    assert high - low >= 2.0 and low <= 0.0 and low > -0.2  # equal values: not an axis of +-0.04, and no negative counts
+    # equal values: not an axis of +-0.04, and no negative counts
+    assert high - low >= 2.0 and low <= 0.0 and low > -0.2
     low, high = _limits(Panel("detour_m", True, "", None, 0.5), 1.0, 1.01, nonnegative=True)
     assert high - low == pytest.approx(0.55) and low < 1.0 < 1.01 < high
     assert _limits(Panel("nasa_tlx_raw", True, "", (0.0, 100.0)), 40.0, 41.0, nonnegative=True) == (-5.0, 105.0)
@@ -105,7 +127,8 @@ def test_summary_picture_is_drawn_with_lines_per_participant(tmp_path: Path) -> 
     from haven_scenarios.record.study_summary import draw
 
     results = [result(f"p{k}", c, k + (0.5 if c == "all" else 0.0)) for k in range(4) for c in ("none", "all")]
-    assert draw(results, ["none", "all"], [], tmp_path / "s.png", "t") is None  # x_m is not a main measure: nothing to draw
+    # x_m is not a main measure: nothing to draw
+    assert draw(results, ["none", "all"], [], tmp_path / "s.png", "t") is None
     results = [TrialResults(r.design, (Measure("h1", "detour_m", r.measures[0].value),)) for r in results]
     out = draw(results, ["none", "all"], [], tmp_path / "s.png", "t")
     assert out is not None and out.stat().st_size > 10_000

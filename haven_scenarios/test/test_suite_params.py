@@ -42,9 +42,15 @@ def test_batch_refuses_a_bad_params_file_in_one_line(tmp_path):
     f = tmp_path / "bad.yaml"
     f.write_text("controller:\n  ros__parameters:\n    rate_hz: fast\n")
     r = subprocess.run(
-        [sys.executable, "-m", "haven_scenarios", "batch", "shared_room", "--params-file", str(f)], capture_output=True, text=True, timeout=60
+        [sys.executable, "-m", "haven_scenarios", "batch", "shared_room", "--params-file", str(f)],
+        capture_output=True,
+        text=True,
+        timeout=60,
     )
-    assert r.returncode == 2 and r.stderr.strip() == f"haven: error: {f}: controller: rate_hz: must be a finite number, got 'fast'"
+    assert (
+        r.returncode == 2
+        and r.stderr.strip() == f"haven: error: {f}: controller: rate_hz: must be a finite number, got 'fast'"
+    )
 
 
 def test_booleans_in_a_parameter_file_are_booleans_not_numbers(tmp_path):
@@ -61,16 +67,37 @@ def test_booleans_in_a_parameter_file_are_booleans_not_numbers(tmp_path):
 @pytest.mark.parametrize(
     ("text", "problem"),
     [
-        ("sim_node:\n  ros__parameters:\n    physics_hz: fast\n", "sim_node: physics_hz: no such parameter (did you mean physics_rate_hz?)"),
+        (
+            "sim_node:\n  ros__parameters:\n    physics_hz: fast\n",
+            "sim_node: physics_hz: no such parameter (did you mean physics_rate_hz?)",
+        ),
         ("planer:\n  ros__parameters:\n    check_rate_hz: 5.0\n", "planer: no such node (did you mean planner?)"),
         ('"/**":\n  ros__parameters:\n    use_sim_time: .nan\n', "/**: use_sim_time: must be true or false, got nan"),
-        ('"/**":\n  ros__parameters:\n    arc_max_angle_deg: .nan\n', "/**: arc_max_angle_deg: must be a finite number, got nan"),
+        (
+            '"/**":\n  ros__parameters:\n    arc_max_angle_deg: .nan\n',
+            "/**: arc_max_angle_deg: must be a finite number, got nan",
+        ),
         ("scenario:\n  ros__parameters:\n    rate_hz: nan\n", "scenario: rate_hz: must be a finite number, got nan"),
-        ('"/**":\n  ros__parameters:\n    use_sim_tim: true\n', "/**: use_sim_tim: no such parameter (did you mean use_sim_time?)"),
-        ("controller:\n  ros__parameters:\n    use_sim_time: 1\n", "controller: use_sim_time: must be true or false, got 1"),
-        ("controller:\n  ros__parameters:\n    lookahead_m: -.inf\n", "controller: lookahead_m: must be a finite number, got -inf"),
-        ("controller:\n  ros__parameters:\n    lookahead_m: 1" + "0" * 400 + "\n", "controller: lookahead_m: must be a finite number"),
-        ("viz:\n  ros__parameters:\n    turn_signal: true\n", "viz: turn_signal: no such parameter (did you mean turn_signals?)"),
+        (
+            '"/**":\n  ros__parameters:\n    use_sim_tim: true\n',
+            "/**: use_sim_tim: no such parameter (did you mean use_sim_time?)",
+        ),
+        (
+            "controller:\n  ros__parameters:\n    use_sim_time: 1\n",
+            "controller: use_sim_time: must be true or false, got 1",
+        ),
+        (
+            "controller:\n  ros__parameters:\n    lookahead_m: -.inf\n",
+            "controller: lookahead_m: must be a finite number, got -inf",
+        ),
+        (
+            "controller:\n  ros__parameters:\n    lookahead_m: 1" + "0" * 400 + "\n",
+            "controller: lookahead_m: must be a finite number",
+        ),
+        (
+            "viz:\n  ros__parameters:\n    turn_signal: true\n",
+            "viz: turn_signal: no such parameter (did you mean turn_signals?)",
+        ),
     ],
 )
 def test_a_typo_or_a_non_finite_value_in_a_parameter_file_is_refused_naming_file_node_and_key(tmp_path, text, problem):
@@ -104,6 +131,9 @@ def test_a_double_written_as_ros_reads_it_is_a_number(tmp_path):
 
 def test_namespaced_and_wildcard_node_keys_name_the_node(tmp_path):
     p = tmp_path / "params.yaml"
-    p.write_text("/robot1/controller:\n  ros__parameters:\n    lookahead_m: 0.3\n/**/planner:\n  ros__parameters:\n    check_rate_hz: 4.0\n")
+    p.write_text(
+        "/robot1/controller:\n  ros__parameters:\n    lookahead_m: 0.3\n"
+        "/**/planner:\n  ros__parameters:\n    check_rate_hz: 4.0\n"
+    )
     config = load_suite_config(str(p))
     assert config.controller.follower.lookahead_m == 0.3 and config.planner.check_rate_hz == 4.0

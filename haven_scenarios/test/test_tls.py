@@ -21,7 +21,17 @@ from haven_scenarios.web.access import door_key, role_token
 from haven_scenarios.web.door_hello import hello_frames
 from haven_scenarios.web.editor_server import EditorServer
 from haven_scenarios.web.front_door import FrontDoor
-from haven_scenarios.web.tls import CA_CERT, CA_KEY, SERVER_CERT, SERVER_KEY, address_notes, make_certificates, names_of, server_context, tls_files
+from haven_scenarios.web.tls import (
+    CA_CERT,
+    CA_KEY,
+    SERVER_CERT,
+    SERVER_KEY,
+    address_notes,
+    make_certificates,
+    names_of,
+    server_context,
+    tls_files,
+)
 
 pytestmark = pytest.mark.integration  # (TLS servers and clients on sockets)
 
@@ -34,12 +44,16 @@ def certs(tmp_path_factory: pytest.TempPathFactory) -> Path:
 
 
 def served(certs: Path, tmp_path: Path) -> EditorServer:
-    server = EditorServer("127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(certs / SERVER_CERT, certs / SERVER_KEY))
+    server = EditorServer(
+        "127.0.0.1", 0, {"name": "w", "walls": []}, tmp_path, server_context(certs / SERVER_CERT, certs / SERVER_KEY)
+    )
     server.start()
     return server
 
 
-def test_haven_cert_makes_the_authority_once_and_keeps_the_keys_private(certs: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_haven_cert_makes_the_authority_once_and_keeps_the_keys_private(
+    certs: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     for key in (CA_KEY, SERVER_KEY):
         assert stat.S_IMODE((certs / key).stat().st_mode) == 0o600, key
     before = (certs / CA_CERT).read_bytes()
@@ -49,12 +63,15 @@ def test_haven_cert_makes_the_authority_once_and_keeps_the_keys_private(certs: P
     assert (certs / CA_CERT).read_bytes() == before  # headsets that trust it go on trusting the next certificate
     leaf = x509.load_pem_x509_certificates((certs / SERVER_CERT).read_bytes())[0]
     leaf.verify_directly_issued_by(x509.load_pem_x509_certificate(before))  # signed by the same, kept authority
-    assert {"localhost", "127.0.0.1", "lab-pc.local"} <= set(names_of(certs / SERVER_CERT))  # --name adds to this machine's
+    # --name adds to this machine's
+    assert {"localhost", "127.0.0.1", "lab-pc.local"} <= set(names_of(certs / SERVER_CERT))
     assert main(["cert", "--dir", str(certs), "--name", "bad name"]) == 2
     assert "is neither a host name" in capsys.readouterr().err
 
 
-def test_haven_cert_refuses_a_symlinked_key_path_leaving_its_target_untouched(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_haven_cert_refuses_a_symlinked_key_path_leaving_its_target_untouched(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     victim = tmp_path / "victim.txt"
     victim.write_text("the researcher's notes\n")
     victim.chmod(0o644)
@@ -72,7 +89,9 @@ def test_haven_cert_refuses_a_symlinked_key_path_leaving_its_target_untouched(tm
         assert (folder / key).is_symlink()
 
 
-def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_is_secure(certs: Path, tmp_path: Path) -> None:
+def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_is_secure(
+    certs: Path, tmp_path: Path
+) -> None:
     server = served(certs, tmp_path)
     try:
         assert server.url.startswith("https://localhost:"), server.url
@@ -81,12 +100,15 @@ def test_a_client_trusting_only_the_lab_authority_opens_the_page_and_the_cookie_
             with urllib.request.urlopen(url, context=trusting, timeout=30) as r:
                 assert r.status == 200
                 assert "Secure" in r.headers["Set-Cookie"] and "HttpOnly" in r.headers["Set-Cookie"]
-                assert r.headers["X-Content-Type-Options"] == "nosniff" and r.headers["Referrer-Policy"] == "same-origin"
+                assert (
+                    r.headers["X-Content-Type-Options"] == "nosniff" and r.headers["Referrer-Policy"] == "same-origin"
+                )
                 assert "script-src 'self';" in r.headers["Content-Security-Policy"]  # (the editor has no inline script)
         with pytest.raises(urllib.error.URLError, match="CERTIFICATE_VERIFY_FAILED"):  # nobody else trusts it
             urllib.request.urlopen(server.url, context=ssl.create_default_context(), timeout=30)
         plain = server.url.replace("https://", "http://")
-        with pytest.raises(urllib.error.HTTPError) as refused:  # no page in clear text on the same port: one line saying why
+        # no page in clear text on the same port: one line saying why
+        with pytest.raises(urllib.error.HTTPError) as refused:
             urllib.request.urlopen(plain, timeout=30)
         assert refused.value.code == 400 and b"open it with https://" in refused.value.read()
     finally:
@@ -131,16 +153,25 @@ def test_a_websocket_passes_through_the_https_front_door_byte_for_byte(certs: Pa
     try:
         assert door.base_url("127.0.0.1").startswith("https://localhost:")
         context = ssl.create_default_context(cafile=certs / CA_CERT)
-        with socket.create_connection(("127.0.0.1", door.port), timeout=30) as raw, context.wrap_socket(raw, server_hostname="localhost") as s:
+        with (
+            socket.create_connection(("127.0.0.1", door.port), timeout=30) as raw,
+            context.wrap_socket(raw, server_hostname="localhost") as s,
+        ):
             token = role_token("secret", "console")
-            s.sendall(f"GET /ws/console?token={token} HTTP/1.1\r\nHost: localhost\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n\r\n".encode())
+            s.sendall(
+                (
+                    f"GET /ws/console?token={token} HTTP/1.1\r\nHost: localhost\r\n"
+                    "Upgrade: websocket\r\nConnection: Upgrade\r\n\r\n"
+                ).encode()
+            )
             answer = b""
             while b"\r\n\r\n" not in answer:
                 answer += s.recv(4096)
             assert answer.startswith(b"HTTP/1.1 101"), answer
             payload = bytes(range(256)) * 1024  # 256 KiB: many TLS records, some held decrypted inside the socket
             s.sendall(payload)
-            expected = len(hello_frames(door_key("secret", "console"))) + len(payload)  # (the stand-in echoes the door's hello too)
+            # (the stand-in echoes the door's hello too)
+            expected = len(hello_frames(door_key("secret", "console"))) + len(payload)
             echoed = b""
             while len(echoed) < expected:
                 echoed += s.recv(65536)

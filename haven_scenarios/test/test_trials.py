@@ -16,7 +16,8 @@ from haven_viz.cues import Toggles
 pytestmark = pytest.mark.integration
 
 
-NEW_ENVIRONMENTS = ("office_crossing", "office_blind_corner", "home_fetch", "warehouse_aisle")  # (issue 25; 30 seeds x every model: bench/RESULTS.md)
+# (issue 25; 30 seeds x every model: bench/RESULTS.md)
+NEW_ENVIRONMENTS = ("office_crossing", "office_blind_corner", "home_fetch", "warehouse_aisle")
 
 
 @pytest.mark.parametrize("name", ["hallway", "hallway_hard", "shared_room", *NEW_ENVIRONMENTS])
@@ -56,7 +57,9 @@ def test_condition_switches_cues_and_their_exposure():
     none = run_trial(s, 0, Toggles.none()).metrics
     assert none["thought_bubble_shown_s"] == 0 and none["turns_signalled"] == 0
     assert none["condition"] == "none"
-    assert parse_condition(["turn_signals", "path_projection"]) == Toggles.none().replaced({"turn_signals": True, "path_projection": True})
+    assert parse_condition(["turn_signals", "path_projection"]) == Toggles.none().replaced(
+        {"turn_signals": True, "path_projection": True}
+    )
     with pytest.raises(ValueError, match="unknown cue 'sparkles'"):
         parse_condition(["sparkles"])
 
@@ -153,7 +156,9 @@ def test_control_stays_smooth_with_the_delays_of_a_loaded_machine():
 
     rng = random.Random(7)
     delayed = {topics.ODOM, topics.CMD_VEL_NAV, topics.CMD_VEL}
-    r = Trial(load_scenario("hallway"), 0, delay=lambda topic: rng.uniform(0.05, 0.15) if topic in delayed else 0.0).run()
+    r = Trial(
+        load_scenario("hallway"), 0, delay=lambda topic: rng.uniform(0.05, 0.15) if topic in delayed else 0.0
+    ).run()
     assert r.end_reason == "completed" and r.metrics["human_contacts"] == 0
     tl, deviations = _on_centre_lines(r)
     assert max(deviations) < 0.05  # no wobble

@@ -35,7 +35,9 @@ def test_each_page_may_publish_only_what_its_role_allows():
     r = roles(["h1", "h2"])
     assert r["h1"].may_publish("/humans/h1/cmd_vel", "geometry_msgs/msg/Twist") is None
     assert r["h1"].may_publish(READY, "std_msgs/msg/String") is None
-    assert "may not publish on /humans/h2/cmd_vel" in r["h1"].may_publish("/humans/h2/cmd_vel", "geometry_msgs/msg/Twist")
+    assert "may not publish on /humans/h2/cmd_vel" in r["h1"].may_publish(
+        "/humans/h2/cmd_vel", "geometry_msgs/msg/Twist"
+    )
     assert "may not publish on /cmd_vel_teleop" in r["h1"].may_publish("/cmd_vel_teleop", "geometry_msgs/msg/Twist")
     assert r["h1"].may_publish("/humans/h1/cmd_vel", "geometry_msgs/msg/TwistStamped") == (
         "/humans/h1/cmd_vel takes geometry_msgs/msg/Twist, not geometry_msgs/msg/TwistStamped"
@@ -62,7 +64,11 @@ def test_routes_and_tokens():
     assert (route("/participant/h1?token=x").kind, route("/participant/h1").role) == ("page", "h1")
     assert (route("/ws/console?token=x").kind, route("/ws/participant/h2").role) == ("socket", "h2")
     assert route("/static/participant.js").rest == "participant.js"
-    assert route("/static/../secret").kind == "" and route("/static/.hidden").kind == "" and route("/etc/passwd").kind == ""
+    assert (
+        route("/static/../secret").kind == ""
+        and route("/static/.hidden").kind == ""
+        and route("/etc/passwd").kind == ""
+    )
     assert token_of("/console?token=abc", None, CONSOLE) == "abc"
     assert token_of("/console", "a=1; haven_token_console=abc", CONSOLE) == "abc"
     assert token_of("/console", "a=1; haven_token_h1=abc", CONSOLE) == ""  # a participant's cookie is not the console's
@@ -101,7 +107,8 @@ def test_a_page_is_told_the_trials_robot_its_look_footprint_and_flight(tmp_path)
     }
     (tmp_path / "model.glb").write_bytes(b"glTF")
     (tmp_path / "drone.yaml").write_text(
-        "extends: turtlebot2\nname: drone\ntitle: D\nkinematics: aerial\nfootprint: {polygon: [[0.2, 0.1], [-0.2, 0.1], [0, -0.2]]}\n"
+        "extends: turtlebot2\nname: drone\ntitle: D\nkinematics: aerial\n"
+        "footprint: {polygon: [[0.2, 0.1], [-0.2, 0.1], [0, -0.2]]}\n"
         "flight: {cruise_height_m: 1.5, climb_rate_mps: 0.5}\nlook: {model: model.glb}\n"
     )
     drone = robot_view(resolve_robot(str(tmp_path / "drone.yaml")))
@@ -154,7 +161,13 @@ H1, CON = role_token(SECRET, "h1"), role_token(SECRET, CONSOLE)
 @pytest.fixture
 def door():
     backend = _Backend()
-    d = FrontDoor("127.0.0.1", 0, SECRET, {"h1": backend.port, CONSOLE: backend.port}, lambda role: {"role": role, "x": "</script>"})
+    d = FrontDoor(
+        "127.0.0.1",
+        0,
+        SECRET,
+        {"h1": backend.port, CONSOLE: backend.port},
+        lambda role: {"role": role, "x": "</script>"},
+    )
     d.start()
     yield d, backend
     d.stop()
@@ -208,7 +221,10 @@ def test_a_socket_with_the_token_is_passed_through_byte_for_byte(door):
     d, backend = door
     with socket.create_connection(("127.0.0.1", d.port), timeout=5) as s:
         s.sendall(
-            f"GET /ws/participant/h1?token={H1} HTTP/1.1\r\nHost: x\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n".encode()
+            (
+                f"GET /ws/participant/h1?token={H1} HTTP/1.1\r\nHost: x\r\n"
+                "Upgrade: websocket\r\nConnection: Upgrade\r\n"
+            ).encode()
             + f"Sec-WebSocket-Protocol: foxglove.sdk.v1\r\nCookie: haven_token_h1={H1}\r\n\r\n".encode()
         )
         reply = b""
@@ -233,7 +249,9 @@ def test_a_socket_with_the_token_is_passed_through_byte_for_byte(door):
 def test_clients_that_leave_mid_request_or_send_their_headers_slowly_cost_no_traceback(capfd):
     backend = _Backend()
     before = threading.active_count()
-    d = FrontDoor("127.0.0.1", 0, SECRET, {"h1": backend.port, CONSOLE: backend.port}, lambda role: {}, request_timeout_s=0.3)
+    d = FrontDoor(
+        "127.0.0.1", 0, SECRET, {"h1": backend.port, CONSOLE: backend.port}, lambda role: {}, request_timeout_s=0.3
+    )
     d.start()
     try:
         for k in range(60):  # half a request, then gone (the reply meets a closed socket), or a reset
@@ -249,7 +267,8 @@ def test_clients_that_leave_mid_request_or_send_their_headers_slowly_cost_no_tra
             assert s.recv(100) == b""
             s.close()
         deadline = time.monotonic() + 30
-        while threading.active_count() > before + 2 and time.monotonic() < deadline:  # (every request's thread has ended)
+        # (every request's thread has ended)
+        while threading.active_count() > before + 2 and time.monotonic() < deadline:
             time.sleep(0.01)
     finally:
         d.stop()
@@ -284,22 +303,36 @@ def test_a_client_advertising_thousands_of_channels_is_cut_off_after_a_few_and_s
     for k in range(10_000):
         listener.on_client_advertise(hostile, SimpleNamespace(id=k, topic=f"/t{k}", schema_name="std_msgs/msg/String"))
     assert len(asked) == MAX_CHANNELS_PER_CLIENT and len(said) == 1 and len(statuses) == 1
-    listener.on_client_advertise(page, SimpleNamespace(id=0, topic="/humans/h1/cmd_vel", schema_name="geometry_msgs/msg/Twist"))
+    listener.on_client_advertise(
+        page, SimpleNamespace(id=0, topic="/humans/h1/cmd_vel", schema_name="geometry_msgs/msg/Twist")
+    )
     assert listener.accepted[(2, 0)] == ("/humans/h1/cmd_vel", "geometry_msgs/msg/Twist")
 
 
 def said(text, hold_s=None, everywhere=None):
     """The console's thought message."""
-    return json.dumps({"text": text, **({} if hold_s is None else {"hold_s": hold_s}), **({} if everywhere is None else {"everywhere": everywhere})})
+    return json.dumps(
+        {
+            "text": text,
+            **({} if hold_s is None else {"hold_s": hold_s}),
+            **({} if everywhere is None else {"everywhere": everywhere}),
+        }
+    )
 
 
 def test_a_thought_longer_than_the_logs_limit_or_held_wrong_is_refused_with_the_limit():
     w = Wizard()
     with pytest.raises(ValueError, match=f"at most {MAX_THOUGHT_CHARS}"):
         w.thought(said("x" * (MAX_THOUGHT_CHARS + 1)), 1.0)
-    _, (e,) = w.thought(said("\U0001f600" * MAX_THOUGHT_CHARS), 1.0)  # the longest allowed, in the widest escapes, fits an event
+    # the longest allowed, in the widest escapes, fits an event
+    _, (e,) = w.thought(said("\U0001f600" * MAX_THOUGHT_CHARS), 1.0)
     assert len(e.to_json()) < MAX_EVENT_BYTES
-    for bad, words in [("plain text", "not JSON"), ("[]", "must be"), (said("hi", -1), "hold_s must be 0..3600"), (said("hi", True), "hold_s")]:
+    for bad, words in [
+        ("plain text", "not JSON"),
+        ("[]", "must be"),
+        (said("hi", -1), "hold_s must be 0..3600"),
+        (said("hi", True), "hold_s"),
+    ]:
         with pytest.raises(ValueError, match=words):
             w.thought(bad, 1.0)
 
@@ -386,7 +419,9 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
     from haven_scenarios.web.foxglove_relay import DoorCheck, FoxgloveRelay
 
     relay, guard, sink = FoxgloveRelay(), BackendGuard(), _RoleSink()
-    server = relay.serve("127.0.0.1", 0, "haven console", sink, parameters=True, door=DoorCheck(door_key(SECRET, CONSOLE), guard.sweep))
+    server = relay.serve(
+        "127.0.0.1", 0, "haven console", sink, parameters=True, door=DoorCheck(door_key(SECRET, CONSOLE), guard.sweep)
+    )
     d = FrontDoor("127.0.0.1", 0, SECRET, {CONSOLE: server.port}, lambda role: {}, guard=guard)
     d.start()
     try:
@@ -403,7 +438,9 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
         while guard.cut < 1 and time.monotonic() < deadline:  # (the sweeping thread counts just after the shutdown)
             time.sleep(0.01)
         assert guard.cut >= 1 and all("did not come through the front door" in r for r in sink.refusals), sink.refusals
-        with connect(f"ws://127.0.0.1:{d.port}/ws/console?token={CON}", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as page:
+        with connect(
+            f"ws://127.0.0.1:{d.port}/ws/console?token={CON}", subprotocols=["foxglove.sdk.v1"], open_timeout=30
+        ) as page:
             _publish_and_set(page, b"through the door")
             deadline = time.monotonic() + 60
             while not (sink.messages and sink.parameter_sets) and time.monotonic() < deadline:
@@ -411,8 +448,10 @@ def test_only_connections_through_the_front_door_reach_a_role_server():
         assert sink.messages == [("/cmd_vel_teleop", b"through the door")]  # the direct client's never arrived
         assert len(sink.parameter_sets) == 1
         with (
-            pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)),  # the periodic sweep closes it too
-            connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as lurker,  # asks for nothing
+            # the periodic sweep closes it too
+            pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)),
+            # asks for nothing
+            connect(f"ws://127.0.0.1:{server.port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as lurker,
         ):
             while True:
                 lurker.recv(timeout=60)

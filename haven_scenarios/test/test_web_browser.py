@@ -6,7 +6,8 @@ its thought bubble in the rendered pixels, a lab's installed cue is drawn and is
 a cue toggled in the console leaves the participant's view and is recorded, the researcher's Stop
 ends the trial, and nothing is served without the token.
 Two participants (one through the machine's network address) see each other, Enter VR works
-with an emulated headset, and a participant sees the flying drone's NavPoints, Arrow and Gaze. Skipped, with one line, where no Chromium can be had.
+with an emulated headset, and a participant sees the flying drone's NavPoints, Arrow and Gaze. Skipped, with one line,
+where no Chromium can be had.
 """
 
 import csv
@@ -72,7 +73,9 @@ class WebTrial:
         )
         ros.procs.append(self.proc)
         self.lines: list[str] = []
-        self.reader = threading.Thread(target=lambda: self.lines.extend(iter(self.proc.stdout.readline, "")), daemon=True)
+        self.reader = threading.Thread(
+            target=lambda: self.lines.extend(iter(self.proc.stdout.readline, "")), daemon=True
+        )
         self.reader.start()
 
     def ended(self, timeout_s=120):
@@ -169,13 +172,16 @@ def try_the_backends_directly(ports):
 
     for port in ports:
         with (
-            pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)),  # (not a recv timeout: the server closes it)
+            # (not a recv timeout: the server closes it)
+            pytest.raises((ConnectionClosed, InvalidHandshake, EOFError, ConnectionError)),
             connect(f"ws://127.0.0.1:{port}/", subprotocols=["foxglove.sdk.v1"], open_timeout=30) as ws,
         ):
             channel = {"id": 1, "topic": "/haven/trial_control", "encoding": "cdr", "schemaName": "std_msgs/msg/String"}
             ws.send(json.dumps({"op": "advertise", "channels": [channel]}))
             ws.send(struct.pack("<BI", 1, 1) + cdr_string("stop"))
-            ws.send(json.dumps({"op": "setParameters", "parameters": [{"name": "/viz.thought_bubble", "value": False}]}))
+            ws.send(
+                json.dumps({"op": "setParameters", "parameters": [{"name": "/viz.thought_bubble", "value": False}]})
+            )
             while True:
                 ws.recv(timeout=60)
 
@@ -183,12 +189,15 @@ def try_the_backends_directly(ports):
 def status_of(url):
     u = urlsplit(url)
     c = http.client.HTTPConnection(u.hostname, u.port, timeout=10)
-    c.request("GET", u.path + ("?" + u.query if u.query else ""), headers={"Upgrade": "websocket", "Connection": "Upgrade"})
+    c.request(
+        "GET", u.path + ("?" + u.query if u.query else ""), headers={"Upgrade": "websocket", "Connection": "Upgrade"}
+    )
     return c.getresponse().status
 
 
 def screenshot(name, png):
-    """The pictures in the README and the docs: written where HAVEN_SCREENSHOTS points (haven_scenarios/doc to update them)."""
+    """The pictures in the README and the docs: written where HAVEN_SCREENSHOTS points (haven_scenarios/doc to update
+    them)."""
     folder = os.environ.get("HAVEN_SCREENSHOTS")
     if folder:
         with open(os.path.join(folder, name), "wb") as f:
@@ -218,7 +227,21 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     scenario = head_on_scenario(tmp_path)
     lab = {**ros.env, "PYTHONPATH": installed(tmp_path)["PYTHONPATH"]}  # with a lab's cue installed: `all` has it too
     trial = WebTrial(
-        ros, ["run", str(scenario), "--teleop", "h1", "--web", "--port", "0", "--condition", "all", "--sessions", str(tmp_path / "s")], lab
+        ros,
+        [
+            "run",
+            str(scenario),
+            "--teleop",
+            "h1",
+            "--web",
+            "--port",
+            "0",
+            "--condition",
+            "all",
+            "--sessions",
+            str(tmp_path / "s"),
+        ],
+        lab,
     )
     urls = trial.urls()
     participant_url, console_url = urls["participant h1"], urls["researcher console"]
@@ -230,7 +253,8 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     page = browser.new_page(viewport={"width": 800, "height": 450})
     page.goto(participant_url, timeout=PAGE_LOAD_MS)
     page.wait_for_function(
-        "s => (s = window.havenState) && s.world > 0 && s.pose && s.robot && s.trial && s.trial.state === 'held' && s.frames > 2",
+        "s => (s = window.havenState) && s.world > 0 && s.pose && "
+        "s.robot && s.trial && s.trial.state === 'held' && s.frames > 2",
         timeout=PAGE_TIMEOUT_MS,
     )
     assert page.evaluate("havenState.prompt") == "Welcome"
@@ -242,13 +266,20 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     backends = listening_ports(trial.proc.pid, "haven_scenarios.nodes.web_node") - {int(urlsplit(console_url).port)}
     assert len(backends) == 2, backends  # the console's and h1's
     try_the_backends_directly(backends)
-    assert console.evaluate("havenState.toggles.thought_bubble") is True and page.evaluate("havenState.trial.state") == "held"
+    assert (
+        console.evaluate("havenState.toggles.thought_bubble") is True
+        and page.evaluate("havenState.trial.state") == "held"
+    )
 
     page.click("#start")  # read the instructions, ready: the trial starts
-    page.wait_for_function("() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS
+    )
     # The lab's cue (the example's floor arrows) is drawn with no page code of its own, and is a console toggle.
     page.wait_for_function("() => (havenState.markers.floor_arrows || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
-    console.wait_for_function("() => (t => t && t.checked)(document.getElementById('cue-floor_arrows'))", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function(
+        "() => (t => t && t.checked)(document.getElementById('cue-floor_arrows'))", timeout=PAGE_TIMEOUT_MS
+    )
 
     # Before: 6 m apart, no bubble where it would be drawn.
     robot = page.evaluate("havenState.robot")
@@ -263,12 +294,15 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     assert ros.spin_until(lambda: bool(humans), timeout_s=30)
     start_x = humans[-1].poses[0].position.x
     page.keyboard.down("KeyW")
-    assert ros.spin_until(lambda: start_x - humans[-1].poses[0].position.x > 0.5, timeout_s=60), "the avatar did not walk"
+    assert ros.spin_until(lambda: start_x - humans[-1].poses[0].position.x > 0.5, timeout_s=60), (
+        "the avatar did not walk"
+    )
     page.keyboard.up("KeyW")
     page.wait_for_function("() => (havenState.markers.thought_bubble || 0) >= 1", timeout=PAGE_TIMEOUT_MS)
     # The bubble in view, and where it is drawn, from one frame.
     spot = page.wait_for_function(
-        f"() => {{ const m = havenMarker('thought_bubble', 0); return ({IN_VIEW})(m) && havenProject(m.x, m.y, m.z); }}",
+        "() => { const m = havenMarker('thought_bubble', 0); "
+        f"return ({IN_VIEW})(m) && havenProject(m.x, m.y, m.z); }}",
         timeout=PAGE_TIMEOUT_MS,
     ).json_value()
     after = page.screenshot()
@@ -276,7 +310,12 @@ def test_a_participant_walks_up_to_the_robot_and_the_researcher_runs_the_trial(r
     assert 0 < spot["x"] < 800 and 0 < spot["y"] < 450 and spot["z"] < 1, spot
     white, dark = bubble_pixels(after, spot)
     white_before, _ = bubble_pixels(before, before_spot)
-    assert white > 1000 and dark > 40 and white_before < 100, ("no thought bubble drawn where it should be", white, dark, white_before)
+    assert white > 1000 and dark > 40 and white_before < 100, (
+        "no thought bubble drawn where it should be",
+        white,
+        dark,
+        white_before,
+    )
 
     # The researcher switches the thought bubble off: it leaves the participant's view at once.
     console.uncheck("#cue-thought_bubble")
@@ -320,14 +359,35 @@ def test_a_participant_sees_the_flying_drone_with_its_navpoints_arrow_and_gaze(r
     """`haven run shared_room --robot quadrotor --teleop h1 --web`: the participant starts facing
     the drone's pad; once it has taken off, its three intent cues of Walker et al. 2018 are drawn
     in the air, in view, and the participant walks among them."""
-    trial = WebTrial(ros, ["run", "shared_room", "--robot", "quadrotor", "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")])
+    trial = WebTrial(
+        ros,
+        [
+            "run",
+            "shared_room",
+            "--robot",
+            "quadrotor",
+            "--teleop",
+            "h1",
+            "--web",
+            "--port",
+            "0",
+            "--sessions",
+            str(tmp_path / "s"),
+        ],
+    )
     urls = trial.urls()
     page = browser.new_page(viewport={"width": 960, "height": 540})
     page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
-    page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.robot && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "s => (s = window.havenState) && s.world > 0 && s.robot && s.trial && s.trial.state === 'held'",
+        timeout=PAGE_TIMEOUT_MS,
+    )
     page.click("#start")
-    seen = f"""() => {{ const inView = {IN_VIEW}; const s = havenState;
-      return s.robot && s.robot.z > 1.2 && ['nav_points', 'arrow', 'gaze'].every(ns => inView(havenMarker(ns, ns === 'nav_points' ? 1 : 0))); }}"""
+    seen = (
+        f"() => {{ const inView = {IN_VIEW}; const s = havenState;\n"
+        "      return s.robot && s.robot.z > 1.2 && ['nav_points', 'arrow', 'gaze']"
+        ".every(ns => inView(havenMarker(ns, ns === 'nav_points' ? 1 : 0))); }"
+    )
     page.wait_for_function(seen, timeout=PAGE_TIMEOUT_MS)  # up at cruise height, its cues in front of the participant
     screenshot("web_drone.png", page.screenshot())
     drone = page.evaluate("havenState.robot")
@@ -355,18 +415,33 @@ def test_a_participant_sees_the_library_cues_in_a_world_made_from_a_ros_map_whos
     dividing wall is held by it (the walls are the simulator's too)."""
     from map_maker import make_map_world
 
-    argv = ["run", str(make_map_world(tmp_path / "map")), "--teleop", "h1", "--web", "--port", "0", "--condition", *LIBRARY_CUES]
+    argv = [
+        "run",
+        str(make_map_world(tmp_path / "map")),
+        "--teleop",
+        "h1",
+        "--web",
+        "--port",
+        "0",
+        "--condition",
+        *LIBRARY_CUES,
+    ]
     trial = WebTrial(ros, [*argv, "--sessions", str(tmp_path / "s")])
     page = browser.new_page(viewport={"width": 960, "height": 540})
     page.goto(trial.urls()["participant h1"], timeout=PAGE_LOAD_MS)
     page.wait_for_function(
-        "s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held' && s.frames > 2", timeout=PAGE_TIMEOUT_MS
+        "s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held' && s.frames > 2",
+        timeout=PAGE_TIMEOUT_MS,
     )
     page.click("#start")
-    page.wait_for_function("() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS
+    )
     drawn = " && ".join(f"(havenState.markers.{ns} || 0) >= 1" for ns in LIBRARY_CUES)
-    page.wait_for_function(f"() => {drawn} && havenState.robot && havenState.robot.x > 2.0", timeout=PAGE_TIMEOUT_MS)  # on its way to the door
-    screenshot("web_map_world.png", page.screenshot())  # the dividing wall ahead, the robot coming through its door with the library cues
+    # on its way to the door
+    page.wait_for_function(f"() => {drawn} && havenState.robot && havenState.robot.x > 2.0", timeout=PAGE_TIMEOUT_MS)
+    # the dividing wall ahead, the robot coming through its door with the library cues
+    screenshot("web_map_world.png", page.screenshot())
     page.keyboard.down("KeyW")  # from (5.5, 3.0) facing west: the dividing wall's east face is at x = 3.65
     page.wait_for_function("() => havenState.pose.x < 4.0", timeout=PAGE_TIMEOUT_MS)
     frames = page.evaluate("havenState.frames")
@@ -397,7 +472,21 @@ def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_
     if address is None:
         pytest.skip("this machine has no network address besides loopback")
     trial = WebTrial(
-        ros, ["run", "hallway_pair", "--teleop", "h1", "h2", "--web", "--host", "0.0.0.0", "--port", "0", "--sessions", str(tmp_path / "s")]
+        ros,
+        [
+            "run",
+            "hallway_pair",
+            "--teleop",
+            "h1",
+            "h2",
+            "--web",
+            "--host",
+            "0.0.0.0",
+            "--port",
+            "0",
+            "--sessions",
+            str(tmp_path / "s"),
+        ],
     )
     urls = trial.urls(pages=3)
     # The printed addresses are the machine's network address: h2 comes "from another machine"
@@ -412,7 +501,8 @@ def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_
         pages[who].goto(url, timeout=PAGE_LOAD_MS)
     for page in pages.values():
         page.wait_for_function(
-            "s => (s = window.havenState) && s.pose && s.others === 1 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
+            "s => (s = window.havenState) && s.pose && s.others === 1 && s.trial && s.trial.state === 'held'",
+            timeout=PAGE_TIMEOUT_MS,
         )
     pages["h1"].click("#start")
     assert pages["h2"].evaluate("havenState.trial.state") == "held"  # the trial waits for everyone
@@ -426,10 +516,12 @@ def test_two_participants_one_from_the_network_see_each_other(ros, browser, tmp_
     pages["h2"].keyboard.up("KeyW")
 
 
-GAMEPAD = """
-window.testPad = { id: "test pad", index: 0, connected: true, mapping: "standard", timestamp: 0, axes: [0, 0, 0, 0], buttons: [] };
-navigator.getGamepads = () => [window.testPad];
-"""
+GAMEPAD = (
+    "\n"
+    'window.testPad = { id: "test pad", index: 0, connected: true, mapping: "standard", timestamp: 0, '
+    "axes: [0, 0, 0, 0], buttons: [] };\n"
+    "navigator.getGamepads = () => [window.testPad];\n"
+)
 
 
 def test_a_gamepad_walks_and_enter_vr_works_with_an_emulated_headset(ros, browser, tmp_path):
@@ -440,17 +532,33 @@ def test_a_gamepad_walks_and_enter_vr_works_with_an_emulated_headset(ros, browse
         pytest.skip("no Node.js or no haven_scenarios/web/node_modules to build the emulated headset: XR test skipped")
     emulator = tmp_path / "xr_emulator.js"
     subprocess.run(["node", "build.mjs", "--xr-emulator", str(emulator)], cwd=WEB_SOURCES, check=True, timeout=120)
-    trial = WebTrial(ros, ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")])
+    trial = WebTrial(
+        ros,
+        [
+            "run",
+            str(head_on_scenario(tmp_path)),
+            "--teleop",
+            "h1",
+            "--web",
+            "--port",
+            "0",
+            "--sessions",
+            str(tmp_path / "s"),
+        ],
+    )
     context = browser.new_context(viewport={"width": 480, "height": 270})
     context.add_init_script(path=str(emulator))
     context.add_init_script(GAMEPAD)
     page = context.new_page()
     page.goto(trial.urls()["participant h1"], timeout=PAGE_LOAD_MS)
     page.wait_for_function(
-        "s => (s = window.havenState) && s.world > 0 && s.pose && s.xrOffered && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
+        "s => (s = window.havenState) && s.world > 0 && s.pose && s.xrOffered && s.trial && s.trial.state === 'held'",
+        timeout=PAGE_TIMEOUT_MS,
     )
     page.click("#start")
-    page.wait_for_function("() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "() => havenState.trial.state === 'running' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS
+    )
     # A gamepad's left stick walks the avatar (the Gamepad API's standard mapping: up is -1).
     x0 = page.evaluate("havenState.pose.x")
     page.evaluate("window.testPad.axes[1] = -1")
@@ -470,12 +578,24 @@ def test_a_gamepad_walks_and_enter_vr_works_with_an_emulated_headset(ros, browse
 def stopped_trial(ros, browser, tmp_path, questionnaires, viewport, argv=None):
     """`haven run --web --teleop h1 --questionnaire ...` (or `argv`): the participant starts, the
     researcher stops the trial (the console's text before it is kept as havenState.before)."""
-    argv = argv or ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    argv = argv or [
+        "run",
+        str(head_on_scenario(tmp_path)),
+        "--teleop",
+        "h1",
+        "--web",
+        "--port",
+        "0",
+        "--sessions",
+        str(tmp_path / "s"),
+    ]
     trial = WebTrial(ros, [*argv, *(["--questionnaire", *questionnaires] if questionnaires else [])])
     urls = trial.urls()
     page = browser.new_page(viewport=viewport)
     page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
-    page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "s => (s = window.havenState) && s.world > 0 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
+    )
     console = browser.new_page(viewport={"width": 1100, "height": 600})
     console.goto(urls["researcher console"], timeout=PAGE_LOAD_MS)
     console.wait_for_function("s => (s = window.havenState) && s.trial", timeout=PAGE_TIMEOUT_MS)
@@ -493,7 +613,10 @@ def answer_with_clicks(page, q, values):
 
 def submit_and_wait(page, q, answered):
     page.click("#questionnaire button[type=submit]")
-    page.wait_for_function(f"() => havenState.answered.length === {answered} && havenState.questionnaire !== '{q}'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        f"() => havenState.answered.length === {answered} && havenState.questionnaire !== '{q}'",
+        timeout=PAGE_TIMEOUT_MS,
+    )
 
 
 STUDY_YAML = """name: browser_study
@@ -524,17 +647,37 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
 
     head_on_scenario(tmp_path)
     (tmp_path / "study.yaml").write_text(STUDY_YAML)
-    argv = ["study", "run", str(tmp_path / "study.yaml"), "--participant", "p01", "--web", "--teleop", "h1", "--port", "0", "--no-pause"]
+    argv = [
+        "study",
+        "run",
+        str(tmp_path / "study.yaml"),
+        "--participant",
+        "p01",
+        "--web",
+        "--teleop",
+        "h1",
+        "--port",
+        "0",
+        "--no-pause",
+    ]
     argv += ["--dir", str(tmp_path / "study")]
     trial, page, console = stopped_trial(ros, browser, tmp_path, [], {"width": 1000, "height": 700}, argv)
     assert console.evaluate("havenState.before") == "after the trial: nasa_tlx, godspeed, legibility"
 
     # The trial is over: the first questionnaire instead of "Thank you"; haven run waits.
-    page.wait_for_function("() => havenState.questionnaire === 'nasa_tlx' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS)
-    console.wait_for_function("() => document.getElementById('questionnaires').textContent === 'h1: questionnaire 1 of 3'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "() => havenState.questionnaire === 'nasa_tlx' && havenState.prompt === null", timeout=PAGE_TIMEOUT_MS
+    )
+    console.wait_for_function(
+        "() => document.getElementById('questionnaires').textContent === 'h1: questionnaire 1 of 3'",
+        timeout=PAGE_TIMEOUT_MS,
+    )
     assert console.is_visible("#skip-questionnaires")
     assert page.locator("#questionnaire input:checked").count() == 0  # nothing preselected
-    assert page.locator("#questionnaire fieldset").count() == 6 and page.locator("#questionnaire input[name='nasa_tlx.mental']").count() == 21
+    assert (
+        page.locator("#questionnaire fieldset").count() == 6
+        and page.locator("#questionnaire input[name='nasa_tlx.mental']").count() == 21
+    )
 
     # Submit with nothing answered, then with one item left: refused, the missing items marked.
     page.click("#questionnaire button[type=submit]")
@@ -557,7 +700,10 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     page.keyboard.press("ArrowRight")  # frustration: 5
     assert page.inner_text("#questionnaire .missing") == ""  # every item answered: the refusal is gone
     submit_and_wait(page, "nasa_tlx", 1)
-    console.wait_for_function("() => document.getElementById('questionnaires').textContent === 'h1: questionnaire 2 of 3'", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function(
+        "() => document.getElementById('questionnaires').textContent === 'h1: questionnaire 2 of 3'",
+        timeout=PAGE_TIMEOUT_MS,
+    )
 
     page.wait_for_function("() => havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
     godspeed = {item.id: 1 + k % 5 for k, item in enumerate(BUILTINS["godspeed"].items)}
@@ -592,7 +738,8 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
     assert abs(data["h1"]["nasa_tlx"]["scores"]["nasa_tlx_raw"] - (5 + 10 + 15 + 20 + 25 + 5) / 6) < 1e-3
     assert data["h1"]["godspeed"]["answers"] == godspeed
     assert data["h1"]["godspeed"]["scores"] == score(BUILTINS["godspeed"], godspeed)  # (the order does not change them)
-    assert data["h1"]["godspeed"]["order"] == godspeed_shown and data["h1"]["nasa_tlx"]["order"] == tlx  # the order shown, stored
+    # the order shown, stored
+    assert data["h1"]["godspeed"]["order"] == godspeed_shown and data["h1"]["nasa_tlx"]["order"] == tlx
     assert data["h1"]["legibility"]["scores"] == {"legibility": 6.0}  # (6 + (8 - 2)) / 2: "surprised" reversed
     events = read_events(os.path.join(folder, "events.jsonl"))
     answered = [(e["by"], e["questionnaire"], e["scores"]) for e in events if e["type"] == "questionnaire_answered"]
@@ -612,19 +759,28 @@ def test_a_study_participant_answers_the_questionnaires_in_the_page_and_the_repo
         rows = {(r["human"], r["measure"]): r for r in csv.DictReader(f)}
     raw = rows[("h1", "nasa_tlx_raw")]
     assert (raw["participant"], raw["condition"], raw["scenario"]) == ("p01", "signals", "head_on")
-    assert abs(float(raw["value"]) - (5 + 10 + 15 + 20 + 25 + 5) / 6) < 1e-3 and float(rows[("h1", "legibility")]["value"]) == 6.0
+    assert (
+        abs(float(raw["value"]) - (5 + 10 + 15 + 20 + 25 + 5) / 6) < 1e-3
+        and float(rows[("h1", "legibility")]["value"]) == 6.0
+    )
     assert (tmp_path / "study" / "report" / "summary.png").stat().st_size > 10_000
 
 
 def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros, browser, tmp_path):
     """Nobody answers: the console's Skip questionnaires ends the wait; the session is complete and
     valid, session.json says nothing was answered and that the researcher skipped."""
-    trial, page, console = stopped_trial(ros, browser, tmp_path, ["godspeed", "nasa_tlx"], {"width": 640, "height": 480})
+    trial, page, console = stopped_trial(
+        ros, browser, tmp_path, ["godspeed", "nasa_tlx"], {"width": 640, "height": 480}
+    )
     page.wait_for_function("() => havenState.questionnaire === 'godspeed'", timeout=PAGE_TIMEOUT_MS)
-    console.wait_for_function("() => havenState.questionnaires.join() === 'h1: questionnaire 1 of 2'", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function(
+        "() => havenState.questionnaires.join() === 'h1: questionnaire 1 of 2'", timeout=PAGE_TIMEOUT_MS
+    )
     assert trial.proc.poll() is None  # haven run waits for the answers
     console.click("#skip-questionnaires")
-    page.wait_for_function("() => havenState.prompt === 'Trial over' && havenState.questionnaire === null", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "() => havenState.prompt === 'Trial over' && havenState.questionnaire === null", timeout=PAGE_TIMEOUT_MS
+    )
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     folder = trial.session()
     session = read_json(os.path.join(folder, "session.json"))
@@ -632,7 +788,9 @@ def test_the_researcher_skips_the_questionnaires_and_the_session_stays_valid(ros
     assert session["valid"] and session["end_reason"] == "stopped" and session["outcome"] == "stopped"
     assert not os.path.exists(os.path.join(folder, "questionnaires.json"))
     events = read_events(os.path.join(folder, "events.jsonl"))
-    assert [(e.get("action"), e.get("by")) for e in events if e["type"] == "intervention"] == [("skip_questionnaires", "researcher")]
+    assert [(e.get("action"), e.get("by")) for e in events if e["type"] == "intervention"] == [
+        ("skip_questionnaires", "researcher")
+    ]
     assert tracebacks("".join(trial.lines)) == []
 
 
@@ -647,17 +805,31 @@ def test_ctrl_c_while_waiting_for_answers_keeps_the_session_and_says_what_was_an
 
     from haven_sim.nodes import qos
 
-    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    argv = [
+        "run",
+        str(head_on_scenario(tmp_path)),
+        "--teleop",
+        "h1",
+        "--web",
+        "--port",
+        "0",
+        "--sessions",
+        str(tmp_path / "s"),
+    ]
     trial = WebTrial(ros, [*argv, "--questionnaire", "nasa_tlx"])
     trial.urls()
     latched = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
     status = ros.collect(String, "/haven/trial_status", latched)
-    assert ros.spin_until(lambda: status and json.loads(status[-1].data)["state"] == "held", timeout_s=90), "".join(trial.lines)[-3000:]
+    assert ros.spin_until(lambda: status and json.loads(status[-1].data)["state"] == "held", timeout_s=90), "".join(
+        trial.lines
+    )[-3000:]
     control = ros.node.create_publisher(String, "/haven/trial_control", qos.RELIABLE)
     ros.wait_matched(control)
     for command, state in (("start", "running"), ("stop", "ended")):
         control.publish(String(data=command))
-        assert ros.spin_until(lambda state=state: json.loads(status[-1].data)["state"] == state, timeout_s=60), "".join(trial.lines)[-3000:]
+        assert ros.spin_until(lambda state=state: json.loads(status[-1].data)["state"] == state, timeout_s=60), "".join(
+            trial.lines
+        )[-3000:]
     deadline = time.monotonic() + 60
     while not any("waiting for h1 to answer nasa_tlx" in line for line in trial.lines):
         assert time.monotonic() < deadline and trial.proc.poll() is None, "".join(trial.lines)[-3000:]

@@ -8,7 +8,15 @@ import os
 import time
 
 import pytest
-from test_web_browser import PAGE_LOAD_MS, PAGE_TIMEOUT_MS, WebTrial, head_on_scenario, read_events, read_json, screenshot
+from test_web_browser import (
+    PAGE_LOAD_MS,
+    PAGE_TIMEOUT_MS,
+    WebTrial,
+    head_on_scenario,
+    read_events,
+    read_json,
+    screenshot,
+)
 
 pytestmark = [pytest.mark.ros, pytest.mark.browser]
 
@@ -23,7 +31,17 @@ def test_a_closed_tab_shows_on_the_console_is_recorded_and_the_pause_stands_the_
     from rclpy.qos import QoSProfile
     from rosgraph_msgs.msg import Clock
 
-    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    argv = [
+        "run",
+        str(head_on_scenario(tmp_path)),
+        "--teleop",
+        "h1",
+        "--web",
+        "--port",
+        "0",
+        "--sessions",
+        str(tmp_path / "s"),
+    ]
     trial = WebTrial(ros, [*argv, "--on-disconnect", "pause", "--reconnect-timeout", "600"])
     urls = trial.urls()
     console = browser.new_page(viewport={"width": 1100, "height": 600})
@@ -31,7 +49,10 @@ def test_a_closed_tab_shows_on_the_console_is_recorded_and_the_pause_stands_the_
     context = browser.new_context(viewport={"width": 480, "height": 270})
     page = context.new_page()
     page.goto(urls["participant h1"], timeout=PAGE_LOAD_MS)
-    page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "s => (s = window.havenState) && s.world > 0 && s.pose && s.trial && s.trial.state === 'held'",
+        timeout=PAGE_TIMEOUT_MS,
+    )
     page.click("#start")
     page.wait_for_function("() => havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
     page.keyboard.down("KeyW")  # an input the page reports
@@ -56,20 +77,31 @@ def test_a_closed_tab_shows_on_the_console_is_recorded_and_the_pause_stands_the_
     ros.spin_for(1.0)
     frozen = len(clock), clock[-1].clock
     ros.spin_for(2.0)
-    assert all(c.clock == frozen[1] for c in clock[frozen[0] :]), "simulated time went on while the participant was away"
+    assert all(c.clock == frozen[1] for c in clock[frozen[0] :]), (
+        "simulated time went on while the participant was away"
+    )
 
     back = browser.new_context(viewport={"width": 480, "height": 270}).new_page()
-    back.goto(urls["participant h1"] + "&quality=low", timeout=PAGE_LOAD_MS)  # the same address: back in the trial (on a slow machine's setting)
-    console.wait_for_function("() => havenState.participants.participants.h1.state === 'connected'", timeout=PAGE_TIMEOUT_MS)
+    # the same address: back in the trial (on a slow machine's setting)
+    back.goto(urls["participant h1"] + "&quality=low", timeout=PAGE_LOAD_MS)
+    console.wait_for_function(
+        "() => havenState.participants.participants.h1.state === 'connected'", timeout=PAGE_TIMEOUT_MS
+    )
     seconds = frozen[1].sec + frozen[1].nanosec * 1e-9
-    assert ros.spin_until(lambda: clock[-1].clock.sec + clock[-1].clock.nanosec * 1e-9 > seconds + 0.5, timeout_s=60), "time did not run on"
+    assert ros.spin_until(lambda: clock[-1].clock.sec + clock[-1].clock.nanosec * 1e-9 > seconds + 0.5, timeout_s=60), (
+        "time did not run on"
+    )
     back.wait_for_function("() => (t => t && t.state === 'running')(havenState.trial)", timeout=PAGE_TIMEOUT_MS)
     assert back.evaluate("havenState.quality") == "low"
 
     console.click("#stop")
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]
     events = read_events(os.path.join(trial.session(), "events.jsonl"))
-    order = [e["type"] for e in events if e["type"] in ("participant_disconnected", "trial_paused", "participant_reconnected", "trial_resumed")]
+    order = [
+        e["type"]
+        for e in events
+        if e["type"] in ("participant_disconnected", "trial_paused", "participant_reconnected", "trial_resumed")
+    ]
     assert order == ["participant_disconnected", "trial_paused", "participant_reconnected", "trial_resumed"], order
     (left,) = [e for e in events if e["type"] == "participant_disconnected"]
     (returned,) = [e for e in events if e["type"] == "participant_reconnected"]

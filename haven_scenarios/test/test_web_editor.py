@@ -38,13 +38,16 @@ class Editor:
     def verdict_after(self, checks: int) -> dict:  # type: ignore[type-arg]
         """The loader's verdict on the world as it is now (a check newer than `checks`)."""
         self.page.wait_for_function(
-            f"() => havenEditor.checks > {checks} && JSON.stringify(havenEditor.world()) === havenEditor.checkedWorld", timeout=PAGE_TIMEOUT_MS
+            f"() => havenEditor.checks > {checks} && JSON.stringify(havenEditor.world()) === havenEditor.checkedWorld",
+            timeout=PAGE_TIMEOUT_MS,
         )
         return self.page.evaluate("havenEditor.verdict")  # type: ignore[no-any-return]
 
 
 def haven_edit(out: Path) -> tuple[subprocess.Popen, str]:  # type: ignore[type-arg]
-    proc = subprocess.Popen([*HAVEN, "edit", "--port", "0", "--out", str(out)], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    proc = subprocess.Popen(
+        [*HAVEN, "edit", "--port", "0", "--out", str(out)], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True
+    )
     lines: list[str] = []
     threading.Thread(target=lambda: lines.extend(iter(proc.stdout.readline, "")), daemon=True).start()  # type: ignore[union-attr]
     deadline = time.monotonic() + 60
@@ -93,8 +96,12 @@ def test_haven_edit_draws_a_room_that_haven_batch_runs(browser, tmp_path: Path) 
         verdict = editor.verdict_after(checks)
         assert verdict["ok"] is True, verdict
         world = page.evaluate("havenEditor.world()")
-        assert [w["segment"] for w in world["walls"]] == [[list(a), list(CORNERS[(i + 1) % 4])] for i, a in enumerate(CORNERS)]
-        assert [r["name"] for r in world["rooms"]] == ["west", "east"] and world["humans"] == [{"id": "h1", "start": [5, 3, 3.1416]}]
+        assert [w["segment"] for w in world["walls"]] == [
+            [list(a), list(CORNERS[(i + 1) % 4])] for i, a in enumerate(CORNERS)
+        ]
+        assert [r["name"] for r in world["rooms"]] == ["west", "east"] and world["humans"] == [
+            {"id": "h1", "start": [5, 3, 3.1416]}
+        ]
         screenshot("editor_room.png", page.screenshot())
         page.select_option("#task", "visit_rooms")
         page.click("#save")
@@ -105,14 +112,18 @@ def test_haven_edit_draws_a_room_that_haven_batch_runs(browser, tmp_path: Path) 
         assert proc.wait(timeout=60) == 0
     scenario = tmp_path / "worlds" / "room6x4_scenario.yaml"
     out = tmp_path / "rows.csv"
-    r = subprocess.run([*HAVEN, "batch", str(scenario), "--seeds", "0", "--out", str(out)], capture_output=True, text=True, timeout=600)
+    r = subprocess.run(
+        [*HAVEN, "batch", str(scenario), "--seeds", "0", "--out", str(out)], capture_output=True, text=True, timeout=600
+    )
     assert r.returncode == 0, r.stderr[-2000:]
     rows = list(csv.DictReader(out.open()))
     assert len(rows) == 1 and rows[0]["end_reason"] == "completed", rows
     assert os.path.exists(tmp_path / "worlds" / "room6x4.yaml")
 
 
-def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_under_the_plan_and_as_walls(browser, tmp_path: Path) -> None:  # type: ignore[no-untyped-def]
+def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_under_the_plan_and_as_walls(  # type: ignore[no-untyped-def]
+    browser, tmp_path: Path
+) -> None:
     import io
 
     import numpy as np
@@ -131,12 +142,21 @@ def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_u
         editor = Editor(page)
         pixels = np.full((80, 120), 255, dtype=np.uint8)  # 6 x 4 m at 0.05 m per pixel
         pixels[:2, :] = pixels[-2:, :] = pixels[:, :2] = pixels[:, -2:] = 0  # a dark border: the room's walls
-        pgm = io.BytesIO()  # a ROS map's own image, a PGM, which the browser cannot draw itself (the editor converts it)
+        # a ROS map's own image, a PGM, which the browser cannot draw itself (the editor converts it)
+        pgm = io.BytesIO()
         Image.fromarray(pixels).save(pgm, format="PPM")
-        page.set_input_files("#image", files=[{"name": "map.pgm", "mimeType": "image/x-portable-graymap", "buffer": pgm.getvalue()}])
+        page.set_input_files(
+            "#image", files=[{"name": "map.pgm", "mimeType": "image/x-portable-graymap", "buffer": pgm.getvalue()}]
+        )
         page.click("#as-background")
         page.wait_for_function("() => havenEditor.background !== null", timeout=PAGE_TIMEOUT_MS)
-        assert page.evaluate("havenEditor.background") == {"width": 120, "height": 80, "resolution": 0.05, "x": 0, "y": 0}
+        assert page.evaluate("havenEditor.background") == {
+            "width": 120,
+            "height": 80,
+            "resolution": 0.05,
+            "x": 0,
+            "y": 0,
+        }
         page.click("#as-walls")
         page.wait_for_function("() => havenEditor.world().walls.length === 4", timeout=PAGE_TIMEOUT_MS)
         assert all("polygon" in w for w in page.evaluate("havenEditor.world().walls"))
@@ -146,12 +166,16 @@ def test_the_editors_other_tools_furniture_hallway_move_delete_and_a_map_image_u
         page.mouse.down()
         page.mouse.move(*b, steps=4)
         page.mouse.up()
-        assert page.evaluate("havenEditor.world().obstacles") == [{"polygon": [[2, 1], [3, 1], [3, 1.5], [2, 1.5]], "height": 0.75}]
+        assert page.evaluate("havenEditor.world().obstacles") == [
+            {"polygon": [[2, 1], [3, 1], [3, 1.5], [2, 1.5]], "height": 0.75}
+        ]
         editor.tool("hallway")
         for x in (1.0, 3.0, 5.0):
             editor.click(x, 3.0)
         page.keyboard.press("Enter")
-        assert page.evaluate("havenEditor.world().hallways") == [{"name": "hall1", "centreline": [[1, 3], [3, 3], [5, 3]], "width": 1.8}]
+        assert page.evaluate("havenEditor.world().hallways") == [
+            {"name": "hall1", "centreline": [[1, 3], [3, 3], [5, 3]], "width": 1.8}
+        ]
         editor.tool("select")  # drag the furniture 1 m to the right, then delete the hallway
         a, b = page.evaluate("havenEditor.toPage(2.5, 1.25)"), page.evaluate("havenEditor.toPage(3.5, 1.25)")
         page.mouse.move(*a)

@@ -56,12 +56,28 @@ def test_over_https_a_browser_that_trusts_the_lab_authority_is_offered_enter_vr(
     assert haven(["cert", "--dir", str(certs), "--name", address]) == 0
     emulator = tmp_path / "xr_emulator.js"
     subprocess.run(["node", "build.mjs", "--xr-emulator", str(emulator)], cwd=WEB_SOURCES, check=True, timeout=120)
-    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--host", host, "--port", "0", "--sessions", str(tmp_path / "s")]
-    trial = WebTrial(ros, [*argv, "--tls-cert", str(certs / "haven-server.pem"), "--tls-key", str(certs / "haven-server-key.pem")])
+    argv = [
+        "run",
+        str(head_on_scenario(tmp_path)),
+        "--teleop",
+        "h1",
+        "--web",
+        "--host",
+        host,
+        "--port",
+        "0",
+        "--sessions",
+        str(tmp_path / "s"),
+    ]
+    trial = WebTrial(
+        ros, [*argv, "--tls-cert", str(certs / "haven-server.pem"), "--tls-key", str(certs / "haven-server-key.pem")]
+    )
     plain = ThreadingHTTPServer((host, 0), _Blank)  # today's page over http from the same address, for contrast
     threading.Thread(target=plain.serve_forever, daemon=True).start()
     trusted = spki_hash((certs / "haven-ca.pem").read_bytes())
-    headset = browser.browser_type.launch(executable_path=chromium_path(), args=[*CHROMIUM_ARGS, f"--ignore-certificate-errors-spki-list={trusted}"])
+    headset = browser.browser_type.launch(
+        executable_path=chromium_path(), args=[*CHROMIUM_ARGS, f"--ignore-certificate-errors-spki-list={trusted}"]
+    )
     try:
         url = trial.urls()["participant h1"]
         assert url.startswith(f"https://{address}:"), url
@@ -77,7 +93,9 @@ def test_over_https_a_browser_that_trusts_the_lab_authority_is_offered_enter_vr(
         page = context.new_page()
         page.goto(url, timeout=PAGE_LOAD_MS)
         page.wait_for_function(
-            "s => (s = window.havenState) && s.world > 0 && s.pose && s.xrOffered && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
+            "s => (s = window.havenState) && s.world > 0 && s.pose "
+            "&& s.xrOffered && s.trial && s.trial.state === 'held'",
+            timeout=PAGE_TIMEOUT_MS,
         )  # the scene and the trial over wss:// through the front door
         page.click("#start")
         page.wait_for_function("() => havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)

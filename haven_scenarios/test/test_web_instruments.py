@@ -28,9 +28,10 @@ pytestmark = [pytest.mark.browser]
 PAGE_TIMEOUT_MS = 60_000  # a limit, not a wait (a loaded 2-core machine)
 CONSENT = "You will walk past a robot in a virtual hallway.\n\nYou may stop at any time."
 STUDY = {
-    "name": "s", "scenarios": ["hallway"], "conditions": {"none": ["none"], "signals": ["turn_signals"], "all": ["all"]},
-    "participants": 2, "consent": {"text": CONSENT}, "before_study": ["demographics", {"name": "nars", "shuffle": True}],
-    "after_study": ["preference"],
+    "name": "s", "scenarios": ["hallway"],
+    "conditions": {"none": ["none"], "signals": ["turn_signals"], "all": ["all"]},
+    "participants": 2, "consent": {"text": CONSENT},
+    "before_study": ["demographics", {"name": "nars", "shuffle": True}], "after_study": ["preference"],
 }  # fmt: skip
 
 
@@ -64,7 +65,9 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         )  # under the question, not squeezed beside it
         screenshot("web_consent.png", page.screenshot())
         page.click("#questionnaire button[type=submit]")  # nothing chosen: refused
-        assert page.evaluate("havenForm.refused") == 1 and "Please answer every item" in page.inner_text("#questionnaire .missing")
+        assert page.evaluate("havenForm.refused") == 1 and "Please answer every item" in page.inner_text(
+            "#questionnaire .missing"
+        )
         page.check("input[name='consent.agree'][value='1']")
         submit(page, "consent")
 
@@ -93,7 +96,14 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         server.stop()
     data = json.loads((tmp_path / "p01" / "instruments.json").read_text())
     assert data["consent"]["agreed"] is True and data["consent"]["answers"] == {"agree": 1}
-    assert data["demographics"]["answers"] == {"age": 2, "gender": 4, "gender_self": "agender", "robots": 1, "vr": 3, "games": 5}
+    assert data["demographics"]["answers"] == {
+        "age": 2,
+        "gender": 4,
+        "gender_self": "agender",
+        "robots": 1,
+        "vr": 3,
+        "games": 5,
+    }
     assert data["nars"]["answers"] == answers and data["nars"]["scores"] == score(NARS, answers)
     assert data["nars"]["order"] == shown  # the order shown is stored with the answers
 
@@ -112,7 +122,11 @@ def test_the_page_asks_consent_demographics_and_nars_then_the_ranking_and_stores
         page.wait_for_function("() => havenState.done", timeout=PAGE_TIMEOUT_MS)
     finally:
         after.stop()
-    assert json.loads(book.path.read_text())["preference"]["scores"] == {"preference_none": 3.0, "preference_signals": 2.0, "preference_all": 1.0}
+    assert json.loads(book.path.read_text())["preference"]["scores"] == {
+        "preference_none": 3.0,
+        "preference_signals": 2.0,
+        "preference_all": 1.0,
+    }
 
 
 @pytest.mark.integration
@@ -139,7 +153,11 @@ def test_haven_study_run_web_a_participant_who_declines_in_the_page_runs_no_tria
     threading.Thread(target=lambda: lines.extend(iter(proc.stdout.readline, "")), daemon=True).start()  # type: ignore[union-attr]
     try:
         deadline = time.monotonic() + 60
-        while not (found := re.findall(r"web: participant p02 \(before the first trial: consent, demographics, nars\): (\S+)", "".join(lines))):
+        while not (
+            found := re.findall(
+                r"web: participant p02 \(before the first trial: consent, demographics, nars\): (\S+)", "".join(lines)
+            )
+        ):
             assert proc.poll() is None and time.monotonic() < deadline, "".join(lines)
             time.sleep(0.05)
         page = browser.new_page()

@@ -33,7 +33,8 @@ VIEW = {"width": 640, "height": 480}
 CROP = {"width": 320, "height": 240}  # the docs' pictures: the middle of the view, around the robot
 DISTANCE_M = 2.5  # the participant's eye from the robot's centre
 HOVER_M = 1.5  # the aerial robot is pictured hovering this high
-SPECK = {"shape": "sphere", "size": [0.001] * 3, "at": [0, 0, 0], "rpy": [0, 0, 0], "colour": "#dfe6ee", "spin": False}  # an empty scene
+# an empty scene
+SPECK = {"shape": "sphere", "size": [0.001] * 3, "at": [0, 0, 0], "rpy": [0, 0, 0], "colour": "#dfe6ee", "spin": False}
 ROBOT_AT = (6.0, 2.0)  # in the hallway, clear of its walls
 
 POLYGON_ROBOT = """extends: turtlebot2
@@ -45,8 +46,10 @@ look:
   primitives:
     - {shape: box, size: [0.7, 0.5, 0.25], at: [0, 0, 0.2], colour: "#c0392b"}
     - {shape: box, size: [0.1, 0.4, 0.6], at: [-0.3, 0, 0.6], colour: "#7f8c8d"}
-    - {shape: cylinder, size: [0.07, 0.07, 0.04], at: [0.25, 0.27, 0.07], rpy: [1.5708, 0, 0], colour: "#111111", spin: true}
-    - {shape: cylinder, size: [0.07, 0.07, 0.04], at: [0.25, -0.27, 0.07], rpy: [1.5708, 0, 0], colour: "#111111", spin: true}
+    - {shape: cylinder, size: [0.07, 0.07, 0.04], at: [0.25, 0.27, 0.07], rpy: [1.5708, 0, 0], \
+colour: "#111111", spin: true}
+    - {shape: cylinder, size: [0.07, 0.07, 0.04], at: [0.25, -0.27, 0.07], rpy: [1.5708, 0, 0], \
+colour: "#111111", spin: true}
 """
 AERIAL_ROBOT = """extends: turtlebot2
 name: lab_drone
@@ -78,16 +81,22 @@ def pyramid_glb() -> bytes:
     """A glTF binary of one red pyramid (glTF axes: y up), 1 x 1 at the base and 2 high."""
     points = [(-0.5, 0, -0.5), (0.5, 0, -0.5), (0.5, 0, 0.5), (-0.5, 0, 0.5), (0, 2, 0)]
     faces = [(0, 2, 1), (0, 3, 2), (0, 1, 4), (1, 2, 4), (2, 3, 4), (3, 0, 4)]
-    data = struct.pack(f"<{3 * len(points)}f", *[c for p in points for c in p]) + struct.pack(f"<{3 * len(faces)}H", *[i for f in faces for i in f])
+    data = struct.pack(f"<{3 * len(points)}f", *[c for p in points for c in p]) + struct.pack(
+        f"<{3 * len(faces)}H", *[i for f in faces for i in f]
+    )
     n_points = 12 * len(points)
     gltf = {
         "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
         "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.1, 0.1, 1], "metallicFactor": 0}}],
         "buffers": [{"byteLength": len(data)}],
-        "bufferViews": [{"buffer": 0, "byteLength": n_points}, {"buffer": 0, "byteOffset": n_points, "byteLength": len(data) - n_points}],
+        "bufferViews": [
+            {"buffer": 0, "byteLength": n_points},
+            {"buffer": 0, "byteOffset": n_points, "byteLength": len(data) - n_points},
+        ],
         "accessors": [
-            {"bufferView": 0, "componentType": 5126, "count": len(points), "type": "VEC3", "min": [-0.5, 0, -0.5], "max": [0.5, 2, 0.5]},
+            {"bufferView": 0, "componentType": 5126, "count": len(points), "type": "VEC3",
+             "min": [-0.5, 0, -0.5], "max": [0.5, 2, 0.5]},
             {"bufferView": 1, "componentType": 5123, "count": 3 * len(faces), "type": "SCALAR"},
         ],
     }  # fmt: skip
@@ -144,7 +153,9 @@ def drawn(page, desc: dict[str, Any], z: float) -> tuple[int, bytes, bytes, byte
 def changed_pixels(a: bytes, b: bytes) -> int:
     from PIL import Image, ImageChops
 
-    diff = ImageChops.difference(Image.open(BytesIO(a)).convert("RGB"), Image.open(BytesIO(b)).convert("RGB")).convert("L")
+    diff = ImageChops.difference(Image.open(BytesIO(a)).convert("RGB"), Image.open(BytesIO(b)).convert("RGB")).convert(
+        "L"
+    )
     return sum(diff.point(lambda v: 255 if v > 24 else 0).histogram()[255:])
 
 
@@ -162,18 +173,21 @@ def test_every_robot_is_drawn_from_its_description_at_real_size(browser, tmp_pat
         page.goto(urls(f"http://127.0.0.1:{door.port}", "secret", ["h1"])["h1"], timeout=PAGE_TIMEOUT_MS)
         page.add_style_tag(content="#prompt, #inset, #hud, #lost { display: none !important; }")
         page.wait_for_function(
-            "() => window.havenState && havenState.frames > 1 && typeof window.havenShowRobot === 'function'", timeout=PAGE_TIMEOUT_MS
+            "() => window.havenState && havenState.frames > 1 && typeof window.havenShowRobot === 'function'",
+            timeout=PAGE_TIMEOUT_MS,
         )
         out = os.environ.get("HAVEN_ROBOT_PICTURES")
         shown = []
         for robot in robots(tmp_path):
             desc = robot_view(robot)
-            heights = {"": 0.0} if not robot.aerial else {"": HOVER_M, "_landed": 0.0}  # a drone: hovering, and on its pad
+            # a drone: hovering, and on its pad
+            heights = {"": 0.0} if not robot.aerial else {"": HOVER_M, "_landed": 0.0}
             for suffix, z in heights.items():
                 meshes, empty, full, picture = drawn(page, desc, z)
                 assert meshes == max(1, len(robot.look.primitives)), robot.name
                 changed = changed_pixels(empty, full)
-                assert changed > 300, (robot.name, z, changed)  # at 2.5 m the smallest robot (a 0.2 m drone) covers some hundreds
+                # at 2.5 m the smallest robot (a 0.2 m drone) covers some hundreds
+                assert changed > 300, (robot.name, z, changed)
                 if out:
                     Path(out).mkdir(parents=True, exist_ok=True)
                     Path(out, f"{robot.name}{suffix}.png").write_bytes(picture)

@@ -81,7 +81,9 @@ def test_two_panel_participants_at_once_each_end_with_the_completion_code(ros, b
         "humans: [{id: h1, model: walker, route: [A, B], speed_mps: 1.0}]\n"
     )
     (tmp_path / "study.yaml").write_text(STUDY)
-    serve = Serve(ros, ["serve", str(tmp_path / "study.yaml"), "--dir", str(tmp_path / "s"), "--port", "0", "--capacity", "2"])
+    serve = Serve(
+        ros, ["serve", str(tmp_path / "study.yaml"), "--dir", str(tmp_path / "s"), "--port", "0", "--capacity", "2"]
+    )
     join = serve.printed(r"serve: participants join at (\S+)")
     console = serve.printed(r"serve: researcher's list: (\S+)")
     pages = [browser.new_context(viewport={"width": 480, "height": 320}).new_page() for _ in range(3)]
@@ -106,10 +108,15 @@ def test_two_panel_participants_at_once_each_end_with_the_completion_code(ros, b
 
     for page in pages[:2]:  # each on their own trial page: they press Start themselves
         page.wait_for_url("**/participant/h1**", timeout=PAGE_TIMEOUT_MS)
-        page.wait_for_function("s => (s = window.havenState) && s.world > 0 && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function(
+            "s => (s = window.havenState) && s.world > 0 && s.trial && s.trial.state === 'held'",
+            timeout=PAGE_TIMEOUT_MS,
+        )
         page.click("#start")
     for page in pages[:2]:
-        page.wait_for_function("() => havenState.trial.state === 'running' || havenState.trial.state === 'ended'", timeout=PAGE_TIMEOUT_MS)
+        page.wait_for_function(
+            "() => havenState.trial.state === 'running' || havenState.trial.state === 'ended'", timeout=PAGE_TIMEOUT_MS
+        )
     live = sessions(console)
     assert {live[f"PANEL{k}"]["participant"] for k in range(2)} == {"p01", "p02"}
     assert all(live[f"PANEL{k}"]["console"] for k in range(2)) and live["PANEL2"]["state"] == "waiting"
@@ -137,7 +144,9 @@ def test_two_panel_participants_at_once_each_end_with_the_completion_code(ros, b
     for p in ("p01", "p02"):
         (info,) = [json.loads(f.read_text()) for f in (tmp_path / "s" / p).rglob("session.json")]
         assert info["outcome"] == "timeout" and info["study"]["condition"] == "signals"
-        assert json.loads(next((tmp_path / "s" / p).rglob("questionnaires.json")).read_text())["h1"]["legibility"]["answers"] == {"side": 5}
+        assert json.loads(next((tmp_path / "s" / p).rglob("questionnaires.json")).read_text())["h1"]["legibility"][
+            "answers"
+        ] == {"side": 5}
         assert json.loads((tmp_path / "s" / p / "instruments.json").read_text())["consent"]["agreed"] is True
 
     assert refused == []  # every page, its bundle and its WebSocket within the policy

@@ -1,7 +1,7 @@
 """Wizard of Oz and the participant's view, in a real browser: the researcher's thought text is held
 over the robot's own and shown to a participant 6 m away when the researcher asks (its text as large
-there as at 4 m, drawn before the walls); the participant looks down with a key and sees the floor at their feet; `&stats` shows the
-page's frame rate and latency in a corner. Skipped, with one line, where no Chromium can be had."""
+there as at 4 m, drawn before the walls); the participant looks down with a key and sees the floor at their feet;
+`&stats` shows the page's frame rate and latency in a corner. Skipped, with one line, where no Chromium can be had."""
 
 import json
 import math
@@ -16,18 +16,30 @@ TEXT = "Please keep to your right"
 
 
 def test_the_researchers_held_thought_shows_far_away_and_the_participant_looks_down(ros, browser, tmp_path):
-    argv = ["run", str(head_on_scenario(tmp_path)), "--teleop", "h1", "--web", "--port", "0", "--sessions", str(tmp_path / "s")]
+    argv = [
+        "run",
+        str(head_on_scenario(tmp_path)),
+        "--teleop",
+        "h1",
+        "--web",
+        "--port",
+        "0",
+        "--sessions",
+        str(tmp_path / "s"),
+    ]
     trial = WebTrial(ros, argv)
     urls = trial.urls()
     page = browser.new_page(viewport={"width": 480, "height": 270})
     page.goto(urls["participant h1"] + "&stats", timeout=PAGE_LOAD_MS)
     page.wait_for_function(
-        "s => (s = window.havenState) && s.world > 0 && s.pose && s.robot && s.trial && s.trial.state === 'held'", timeout=PAGE_TIMEOUT_MS
+        "s => (s = window.havenState) && s.world > 0 && s.pose && s.robot && s.trial && s.trial.state === 'held'",
+        timeout=PAGE_TIMEOUT_MS,
     )
     console = browser.new_page(viewport={"width": 1100, "height": 600})
     console.goto(urls["researcher console"], timeout=PAGE_LOAD_MS)
     console.wait_for_function("s => (s = window.havenState) && s.cue && s.trial", timeout=PAGE_TIMEOUT_MS)
-    assert page.evaluate("havenState.quality") == "low"  # the default where the browser draws in software (SwiftShader here)
+    # the default where the browser draws in software (SwiftShader here)
+    assert page.evaluate("havenState.quality") == "low"
     page.click("#start")
     page.wait_for_function("() => havenState.trial.state === 'running'", timeout=PAGE_TIMEOUT_MS)
     assert "thought_bubble" not in page.evaluate("havenState.markers")  # 6 m away: beyond the bubble's 3 m
@@ -48,13 +60,17 @@ def test_the_researchers_held_thought_shows_far_away_and_the_participant_looks_d
         timeout=PAGE_TIMEOUT_MS,
     ).json_value()
     assert far > 1.0 and pull == pytest.approx(1 / far, rel=0.25), (pull, far)
-    console.wait_for_function(f"() => document.getElementById('thought-now').textContent.includes({json.dumps(TEXT)})", timeout=PAGE_TIMEOUT_MS)
+    console.wait_for_function(
+        f"() => document.getElementById('thought-now').textContent.includes({json.dumps(TEXT)})",
+        timeout=PAGE_TIMEOUT_MS,
+    )
     screenshot("web_wizard_far.png", page.screenshot())
 
     # Look down (F): the floor a metre ahead of the participant's feet comes into view.
     pose = page.evaluate("havenState.pose")
     ahead = (pose["x"] + math.cos(pose["yaw"]), pose["y"] + math.sin(pose["yaw"]))
-    assert not 0 <= page.evaluate(f"havenProject({ahead[0]}, {ahead[1]}, 0)")["y"] <= 270  # looking straight ahead: below the view
+    # looking straight ahead: below the view
+    assert not 0 <= page.evaluate(f"havenProject({ahead[0]}, {ahead[1]}, 0)")["y"] <= 270
     page.keyboard.down("KeyF")
     page.wait_for_function("() => havenState.pitch < -0.6", timeout=PAGE_TIMEOUT_MS)
     page.keyboard.up("KeyF")
@@ -65,7 +81,9 @@ def test_the_researchers_held_thought_shows_far_away_and_the_participant_looks_d
     spot = page.evaluate(f"havenProject({ahead[0]}, {ahead[1]}, 0)")
     assert 0 <= spot["y"] <= 270 and spot["z"] < 1, spot
     screenshot("web_look_down.png", page.screenshot())
-    page.wait_for_function("() => (e => e && /fps/.test(e.textContent))(document.getElementById('stats'))", timeout=PAGE_TIMEOUT_MS)
+    page.wait_for_function(
+        "() => (e => e && /fps/.test(e.textContent))(document.getElementById('stats'))", timeout=PAGE_TIMEOUT_MS
+    )
 
     console.click("#stop")
     assert trial.ended() == 0, "".join(trial.lines)[-3000:]

@@ -11,7 +11,12 @@ def test_a_shipped_world_is_checked_and_drawn(capsys, tmp_path: Path) -> None:
     out = tmp_path / "hallway.png"
     assert main(["world", "show", "hallway", "--out", str(out)]) == 0
     said = capsys.readouterr().out
-    assert said.startswith("ok: ") and "world hallway: 32 wall(s)" in said and "4 hallway(s)" in said and said.rstrip().endswith(str(out))
+    assert (
+        said.startswith("ok: ")
+        and "world hallway: 32 wall(s)" in said
+        and "4 hallway(s)" in said
+        and said.rstrip().endswith(str(out))
+    )
     assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and out.stat().st_size > 20_000
 
 
@@ -52,10 +57,14 @@ def test_a_maps_own_yaml_or_a_fifo_as_its_image_is_one_line(capsys, tmp_path: Pa
     for command in (["world", "show"], ["validate"]):
         assert main([*command, str(tmp_path / "map.yaml")]) == 2
         (line,) = capsys.readouterr().err.strip().splitlines()
-        assert line.startswith(f"haven: error: {tmp_path / 'map.yaml'}: this is a map_server map") and "`map: map.yaml`" in line, line
+        assert (
+            line.startswith(f"haven: error: {tmp_path / 'map.yaml'}: this is a map_server map")
+            and "`map: map.yaml`" in line
+        ), line
     (tmp_path / "map.pgm").unlink()
     os.mkfifo(tmp_path / "map.pgm")  # (refused before it is opened: opening it would wait for a writer)
-    guard = threading.Timer(20.0, lambda: os.close(os.open(tmp_path / "map.pgm", os.O_WRONLY | os.O_NONBLOCK)))  # (if it did)
+    # (if it did)
+    guard = threading.Timer(20.0, lambda: os.close(os.open(tmp_path / "map.pgm", os.O_WRONLY | os.O_NONBLOCK)))
     guard.start()
     try:
         assert main(["world", "show", str(tmp_path / "world.yaml"), "--out", str(tmp_path / "w.png")]) == 2
@@ -88,9 +97,19 @@ def test_a_world_past_the_planners_caps_is_refused_in_one_line_by_validate_and_s
     ):
         assert main(args) == 2
         (line,) = capsys.readouterr().err.strip().splitlines()
-        assert line.startswith(f"haven: error: {said}the map has 2,916 corners") and f"at most {MAX_PLANNER_NODES:,}" in line, line
+        assert (
+            line.startswith(f"haven: error: {said}the map has 2,916 corners")
+            and f"at most {MAX_PLANNER_NODES:,}" in line
+        ), line
     assert not (tmp_path / "dots.png").exists()
     shipped = sorted(p.stem for p in (Path(__file__).parents[1] / "haven_scenarios" / "worlds").glob("*.yaml"))
     assert (
-        len(shipped) >= 9 and main(["validate", *(str(Path(__file__).parents[1] / "haven_scenarios" / "worlds" / f"{n}.yaml") for n in shipped)]) == 0
+        len(shipped) >= 9
+        and main(
+            [
+                "validate",
+                *(str(Path(__file__).parents[1] / "haven_scenarios" / "worlds" / f"{n}.yaml") for n in shipped),
+            ]
+        )
+        == 0
     )

@@ -10,7 +10,8 @@ import numpy as np
 from haven_sim.common.geometry import Pose2D
 from haven_sim.nav.motion_style import MotionStyle
 
-STYLE = (MotionStyle().arc_max_angle_rad, MotionStyle().facing_tolerance_rad)  # read_path's style arguments, HAVEN's defaults
+# read_path's style arguments, HAVEN's defaults
+STYLE = (MotionStyle().arc_max_angle_rad, MotionStyle().facing_tolerance_rad)
 
 RADIUS_M = 0.6
 LEG_M = 2.0
@@ -28,7 +29,13 @@ def _point(s: float) -> tuple[float, float, float]:
     return LEG_M + RADIUS_M, RADIUS_M + (s - ARC_END_M), math.pi / 2
 
 
-def arc_path(spacing_m: float = 0.05, orientation: str = "identity", yaw_jitter_deg: float = 0.0, seed: int = 0, origin=(0.0, 0.0)) -> list[Pose2D]:
+def arc_path(
+    spacing_m: float = 0.05,
+    orientation: str = "identity",
+    yaw_jitter_deg: float = 0.0,
+    seed: int = 0,
+    origin=(0.0, 0.0),
+) -> list[Pose2D]:
     """`orientation`: identity (NavFn: every pose but the last), tangent (Smac; with jitter).
     The last pose carries the goal yaw, as Nav2 planners give it."""
     rng = np.random.default_rng(seed)
@@ -55,5 +62,7 @@ def corner_path(turn_deg: float, spacing_m: float | None = 0.05, leg_m: float = 
         points = [(0.0, 0.0), corner, end]
     else:
         n = round(leg_m / spacing_m)
-        points = [(leg_m * k / n, 0.0) for k in range(n)] + [(corner[0] + (end[0] - corner[0]) * k / n, (end[1]) * k / n) for k in range(n + 1)]
+        points = [(leg_m * k / n, 0.0) for k in range(n)] + [
+            (corner[0] + (end[0] - corner[0]) * k / n, (end[1]) * k / n) for k in range(n + 1)
+        ]
     return [Pose2D(x, y, 0.0) for x, y in points]

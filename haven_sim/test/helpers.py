@@ -37,7 +37,9 @@ def corridor(length: float = 12.0, width: float = 3.0, humans: list[dict[str, An
     return parse_world(data, source="corridor.yaml")
 
 
-def drive_closed_loop(sim: Any, follower: Any, seconds: float, navigator: Any = None, on_tick: Any = None) -> list[dict[str, Any]]:
+def drive_closed_loop(
+    sim: Any, follower: Any, seconds: float, navigator: Any = None, on_tick: Any = None
+) -> list[dict[str, Any]]:
     """Run follower (20 Hz) and navigator (5 Hz) on the simulator core; returns navigator events
     (stamped with sim time). Stops early when the follower arrives."""
     from haven_sim.nav.follower import Status

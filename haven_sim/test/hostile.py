@@ -49,7 +49,9 @@ INT_RANGES = {
 }
 LONG = 10_000  # elements in a "long" sequence
 # A YAML alias bomb ("billion laughs"): 9^9 values in about 450 bytes.
-BOMB = "l0: &l0 [lol, lol, lol, lol, lol, lol, lol, lol, lol]\n" + "".join(f"l{i}: &l{i} [{', '.join([f'*l{i - 1}'] * 9)}]\n" for i in range(1, 9))
+BOMB = "l0: &l0 [lol, lol, lol, lol, lol, lol, lol, lol, lol]\n" + "".join(
+    f"l{i}: &l{i} [{', '.join([f'*l{i - 1}'] * 9)}]\n" for i in range(1, 9)
+)
 
 
 def refused(error: type[Exception], path: Any, load: Any, *needles: str) -> str:
@@ -114,12 +116,18 @@ def _variants(base: Any, path: str, ftype: str) -> Iterator[tuple[str, Any]]:
         return
     if ftype.startswith("sequence<"):  # of messages: none, and many default ones
         yield f"{path}=[]", _set(base, path, [])
-        yield f"{path}=[default]*{LONG}", _set(base, path, [message_class(elem.replace("/", "/msg/", 1))() for _ in range(LONG)])
+        yield (
+            f"{path}=[default]*{LONG}",
+            _set(base, path, [message_class(elem.replace("/", "/msg/", 1))() for _ in range(LONG)]),
+        )
         return
     if fixed and _is_float(elem):
         n = len(getattr(_resolve(base, path), path.split(".")[-1]))
         for v in FLOATS[:2]:
-            yield f"{path}=[{v}]*{n}", _set(base, path, array.array("d", [v] * n) if elem in ("double", "float64") else [v] * n)
+            yield (
+                f"{path}=[{v}]*{n}",
+                _set(base, path, array.array("d", [v] * n) if elem in ("double", "float64") else [v] * n),
+            )
         return
     if _is_float(elem):
         for v in FLOATS:

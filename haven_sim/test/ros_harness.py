@@ -71,7 +71,10 @@ class RosHarness:
             FASTRTPS_DEFAULT_PROFILES_FILE=str(resources.files("haven_sim") / "config" / "fastdds.xml"),
             PYTHONUNBUFFERED="1",
         )
-        self._saved = {k: os.environ.get(k) for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "FASTRTPS_DEFAULT_PROFILES_FILE")}
+        self._saved = {
+            k: os.environ.get(k)
+            for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "FASTRTPS_DEFAULT_PROFILES_FILE")
+        }
         os.environ.update({k: self.env[k] for k in self._saved})
         self.context = rclpy.Context()
         rclpy.init(context=self.context)
@@ -81,7 +84,9 @@ class RosHarness:
         self.procs: list[subprocess.Popen[str]] = []
 
     # -- processes -------------------------------------------------------------------------------
-    def start(self, module: str, params: Mapping[str, Any] | None = None, args: Sequence[str] = (), capture: bool = False) -> subprocess.Popen[str]:
+    def start(
+        self, module: str, params: Mapping[str, Any] | None = None, args: Sequence[str] = (), capture: bool = False
+    ) -> subprocess.Popen[str]:
         argv = [sys.executable, "-m", module, "--ros-args"]
         for k, v in (params or {}).items():
             v = ("true" if v else "false") if isinstance(v, bool) else v

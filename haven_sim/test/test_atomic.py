@@ -22,12 +22,16 @@ except OSError as e:
 def test_a_write_that_fails_leaves_the_old_file_and_no_temporary_one(tmp_path):
     target = tmp_path / "metrics.json"
     atomic.write_text(target, json.dumps({"old": 1}))
-    r = subprocess.run([sys.executable, "-c", WRITE_UNDER_A_SIZE_LIMIT, str(target)], capture_output=True, text=True, timeout=60)
+    r = subprocess.run(
+        [sys.executable, "-c", WRITE_UNDER_A_SIZE_LIMIT, str(target)], capture_output=True, text=True, timeout=60
+    )
     assert r.stdout.strip() == "27", r.stderr  # EFBIG
     assert json.loads(target.read_text()) == {"old": 1}
     assert sorted(p.name for p in tmp_path.iterdir()) == ["metrics.json"]
     fresh = tmp_path / "new.json"
-    r = subprocess.run([sys.executable, "-c", WRITE_UNDER_A_SIZE_LIMIT, str(fresh)], capture_output=True, text=True, timeout=60)
+    r = subprocess.run(
+        [sys.executable, "-c", WRITE_UNDER_A_SIZE_LIMIT, str(fresh)], capture_output=True, text=True, timeout=60
+    )
     assert r.stdout.strip() == "27" and not fresh.exists()  # no 0-byte file
 
 

@@ -62,7 +62,10 @@ def test_controller_reports_arrival_once_per_path():
 
 def test_planner_refuses_bad_goals_and_keeps_a_goal_until_it_has_map_and_pose():
     planner = PlannerComponent()
-    for goal, why in [(Goal(Pose2D(1, 1, 0), "base_link"), "goal frame 'base_link' is not 'map'"), (Goal(Pose2D(math.nan, 1, 0)), "not finite")]:
+    for goal, why in [
+        (Goal(Pose2D(1, 1, 0), "base_link"), "goal frame 'base_link' is not 'map'"),
+        (Goal(Pose2D(math.nan, 1, 0)), "not finite"),
+    ]:
         (refused,) = by_topic(planner.on_goal(goal, 0.0), topics.EVENTS)
         assert refused.kind is EventKind.PLAN_REFUSED and why in refused["reason"]
     assert planner.on_goal(Goal(Pose2D(7, 5, 0)), 0.0) == []  # no map, no pose yet: kept
@@ -117,7 +120,9 @@ def test_simulator_publishes_each_topic_at_its_rate():
 
 @pytest.mark.parametrize("rate", [7.0, 20.0, 33.0])
 def test_rates_that_do_not_divide_the_physics_rate_hold_on_average(rate):
-    sim = SimulatorComponent(box_world(10.0, humans=[{"id": "h1", "start": [2.0, 2.0, 0.0]}]), SimulatorConfig(humans_rate_hz=rate))
+    sim = SimulatorComponent(
+        box_world(10.0, humans=[{"id": "h1", "start": [2.0, 2.0, 0.0]}]), SimulatorConfig(humans_rate_hz=rate)
+    )
     n = 0
     for _ in range(500):  # ten seconds
         n += sum(1 for m in sim.sense() if m.topic == topics.HUMANS)

@@ -44,9 +44,18 @@ def failed(kind: str, fn) -> tuple[contain.PluginFailed, float]:
 
 def test_a_raise_is_one_line_naming_kind_plugin_and_error():
     e, _ = failed("participants", breaks)
-    assert (e.kind, e.name, e.error, e.reason) == ("participants", "shy", "RuntimeError: broke", "participant model shy failed (RuntimeError: broke)")
+    assert (e.kind, e.name, e.error, e.reason) == (
+        "participants",
+        "shy",
+        "RuntimeError: broke",
+        "participant model shy failed (RuntimeError: broke)",
+    )
     event = contain.failed_event(e, 2.0, "scenario")
-    assert event.kind is EventKind.PLUGIN_FAILED and dict(event.data) == {"kind": "participants", "name": "shy", "error": "RuntimeError: broke"}
+    assert event.kind is EventKind.PLUGIN_FAILED and dict(event.data) == {
+        "kind": "participants",
+        "name": "shy",
+        "error": "RuntimeError: broke",
+    }
     assert contain.failures([event]) == [e.reason]
     assert str(pickle.loads(pickle.dumps(e))) == e.reason  # (from a worker process to the sweep)
 
@@ -76,7 +85,8 @@ def test_a_call_in_time_gives_its_value_and_expected_exceptions_pass():
 
 def test_the_deadlines_are_parameters_with_bounds_one_per_kind():
     assert contain.deadlines().of("participants") == contain.PluginDeadlines().plugin_deadline_participants_s
-    assert contain.PluginDeadlines().of("robots") == contain.PluginDeadlines().plugin_deadline_load_s  # (data: only loaded)
+    # (data: only loaded)
+    assert contain.PluginDeadlines().of("robots") == contain.PluginDeadlines().plugin_deadline_load_s
     assert set(contain.kinds()) == {"participants", "missions", "planners", "cues", "metrics", "load"}
     with pytest.raises(ParamsError, match="plugin_deadline_metrics_s must be positive"):
         build_config(contain.PluginDeadlines, {"plugin_deadline_metrics_s": 0.0}, where="/**: ")
@@ -94,4 +104,6 @@ def test_a_plugin_whose_import_hangs_is_left_out_at_the_load_deadline_in_one_lin
     with contain.use(contain.PluginDeadlines(plugin_deadline_load_s=0.2)):
         reg = plugins.load("missions", [Hangs("stuck", "lab.m:Stuck", "lab_m")])
     assert reg.names() == []
-    assert reg.problems == ["haven.missions stuck (lab.m:Stuck, from lab_m): does not load: took longer than its deadline of 0.2 s"]
+    assert reg.problems == [
+        "haven.missions stuck (lab.m:Stuck, from lab_m): does not load: took longer than its deadline of 0.2 s"
+    ]

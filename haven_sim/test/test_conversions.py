@@ -78,5 +78,9 @@ def test_the_shared_decoder_reads_rclpy_and_rosbags_messages_alike_with_sensor_m
                 conv.goal_msg(2.0, Goal(Pose2D(3.0, 4.0, 1.0), "map"))):  # fmt: skip
         name = type(msg).__module__.split(".")[0] + "/msg/" + type(msg).__name__
         bag_msg = store.deserialize_cdr(serialize_message(msg), name)  # (what the bag reader gets)
-        read = {BatteryState: decode.battery_from_msg, conv.Odometry: decode.odometry_from_msg, conv.PoseStamped: decode.goal_from_msg}[type(msg)]
+        read = {
+            BatteryState: decode.battery_from_msg,
+            conv.Odometry: decode.odometry_from_msg,
+            conv.PoseStamped: decode.goal_from_msg,
+        }[type(msg)]
         assert read(bag_msg) == read(msg) and decode.stamp_of(bag_msg) == decode.stamp_of(msg) == 2.0

@@ -57,7 +57,9 @@ def test_a_control_loop_that_falls_behind_slows_the_clock_without_a_burst_after(
         for _ in range(round(seconds / 0.01)):
             wall += 0.01
             if controller_lag_s is not None:  # ticks at 20 Hz of the sim time it saw controller_lag_s of wall time ago
-                saw = max(s for w, s in seen if w <= wall - controller_lag_s + 1e-9) if wall >= controller_lag_s else 0.0
+                saw = (
+                    max(s for w, s in seen if w <= wall - controller_lag_s + 1e-9) if wall >= controller_lag_s else 0.0
+                )
                 pace.report(math.floor(saw / 0.05 + 1e-9) * 0.05, wall)
             sim += step * pacer.due_steps(wall, pace.allowed_steps(sim, step, wall))
             seen.append((wall, sim))

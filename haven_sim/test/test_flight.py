@@ -213,7 +213,9 @@ def test_the_people_plan_round_the_furniture_the_drone_flies_over() -> None:
     from haven_sim.sim.occupancy import on_the_floor, rasterise
     from haven_sim.sim.world_file import load_world
 
-    world = load_world(Path(__file__).resolve().parents[2] / "haven_scenarios" / "haven_scenarios" / "worlds" / "shared_room.yaml")
+    world = load_world(
+        Path(__file__).resolve().parents[2] / "haven_scenarios" / "haven_scenarios" / "worlds" / "shared_room.yaml"
+    )
     below = clear_height(resolve_robot("quadrotor"))
     table = (6.3, 2.4)  # the middle of a 0.75 m table
     drone_map = rasterise(world, below=below)
@@ -221,4 +223,5 @@ def test_the_people_plan_round_the_furniture_the_drone_flies_over() -> None:
     floor = on_the_floor(drone_map, world, below)
     assert floor.is_occupied(*table) and (floor.data == rasterise(world).data).all()
     ground = rasterise(world)
-    assert clear_height(DEFAULT) is None and on_the_floor(ground, world, None) is ground  # a ground robot's map is the people's
+    # a ground robot's map is the people's
+    assert clear_height(DEFAULT) is None and on_the_floor(ground, world, None) is ground

@@ -25,7 +25,9 @@ def refusal(path, *needles):
 
 def world_file(tmp_path, data, name="w.yaml"):
     p = tmp_path / name
-    p.write_bytes(data if isinstance(data, bytes) else (data if isinstance(data, str) else yaml.safe_dump(data)).encode())
+    p.write_bytes(
+        data if isinstance(data, bytes) else (data if isinstance(data, str) else yaml.safe_dump(data)).encode()
+    )
     return p
 
 
@@ -46,21 +48,29 @@ def test_an_alias_bomb_is_refused_at_the_alias_without_expanding_it(tmp_path):
     text = "name: bomb\nrobot: {start: [1, 1, 0]}\n" + BOMB
     assert len(text) < 600
     refusal(world_file(tmp_path, text), "l5[", f"more than {MAX_NODES} values", "line 8")
-    walls = "name: bomb\nrobot: {start: [1, 1]}\nwalls: [&w {segment: [[0, 0], [1, 0]], thickness: 0.1}, [*w, *w, *w, *w], &x [*w, *w], [*x, *x]]\n"
+    walls = (
+        "name: bomb\nrobot: {start: [1, 1]}\n"
+        "walls: [&w {segment: [[0, 0], [1, 0]], thickness: 0.1}, [*w, *w, *w, *w], &x [*w, *w], [*x, *x]]\n"
+    )
     refusal(world_file(tmp_path, walls), "walls[1]", "must be a mapping")  # aliases that stay small are YAML as usual
 
 
 def test_a_self_referencing_alias_and_deep_nesting_are_refused(tmp_path):
     refusal(world_file(tmp_path, "name: &n [1, *n]\n"), "name[1]", "refers to itself")
     refusal(world_file(tmp_path, "name: " + "[" * 100_000 + "]" * 100_000 + "\n"), f"deeper than {MAX_DEPTH} levels")
-    refusal(world_file(tmp_path, "walls:\n" + "".join("  " * i + "- \n" for i in range(1, 200))), "walls[0][0]", f"deeper than {MAX_DEPTH}")
+    refusal(
+        world_file(tmp_path, "walls:\n" + "".join("  " * i + "- \n" for i in range(1, 200))),
+        "walls[0][0]",
+        f"deeper than {MAX_DEPTH}",
+    )
 
 
 def test_files_over_the_size_cap_are_refused_unread(tmp_path):
     flow = "walls: [" + ", ".join(["{segment: [[0, 0], [1, 1]], thickness: 0.1}"] * 50_000) + "]\n"  # ~2 MB
     assert len(flow) > 2 * MAX_FILE_BYTES - 200_000
     refusal(world_file(tmp_path, flow), "larger than 1 MiB")
-    many = "name: many\nwalls: [" + ", ".join(["{polygon: [[0, 0], [1, 0], [1, 1]]}"] * 25_000) + "]\n"  # < 1 MiB, too many values
+    # < 1 MiB, too many values
+    many = "name: many\nwalls: [" + ", ".join(["{polygon: [[0, 0], [1, 0], [1, 1]]}"] * 25_000) + "]\n"
     assert len(many) < MAX_FILE_BYTES
     refusal(world_file(tmp_path, many), f"more than {MAX_NODES} values")
 
@@ -72,7 +82,8 @@ def test_special_files_are_refused_before_they_are_opened(tmp_path):
     fifo = tmp_path / "fifo.yaml"
     os.mkfifo(fifo)
 
-    def unblock():  # only if load_world opened the FIFO and waits for a writer: give it one, and a world it must not accept
+    # only if load_world opened the FIFO and waits for a writer: give it one, and a world it must not accept
+    def unblock():
         fd = os.open(fifo, os.O_WRONLY | os.O_NONBLOCK)
         os.write(fd, b"hung: true\n")
         os.close(fd)
@@ -88,7 +99,9 @@ def test_special_files_are_refused_before_they_are_opened(tmp_path):
 def test_far_away_coordinates_and_worlds_too_large_for_the_grid_are_refused(tmp_path):
     far = world_file(tmp_path, mutated(lambda d: d["robot"].update(start=[1e6, 1e6, 0.0])))
     refusal(far, "robot.start[0]", f"within ±{MAX_COORDINATE_M:g} m")
-    huge = world_file(tmp_path, mutated(lambda d: d["walls"].append({"segment": [[0, 0], [5000, 0]], "thickness": 0.1})))
+    huge = world_file(
+        tmp_path, mutated(lambda d: d["walls"].append({"segment": [[0, 0], [5000, 0]], "thickness": 0.1}))
+    )
     refusal(huge, "walls[6].segment[1][0]", "within ±1000 m")
     wide = world_file(tmp_path, mutated(lambda d: d["walls"].append({"segment": [[0, 0], [500, 0]], "thickness": 0.1})))
     refusal(wide, "walls[6]", f"a world fits in {MAX_EXTENT_M:g} m x {MAX_EXTENT_M:g} m")
@@ -96,20 +109,36 @@ def test_far_away_coordinates_and_worlds_too_large_for_the_grid_are_refused(tmp_
     refusal(gem, "gems[0].position", "makes the world span")
     thick = world_file(tmp_path, mutated(lambda d: d["walls"][0].update(thickness=1e300)))
     refusal(thick, "walls[0].thickness", "at most 100 m")
-    refusal(world_file(tmp_path, mutated(lambda d: d["walls"][0].update(thickness=10**400))), "walls[0].thickness", "finite number")
+    refusal(
+        world_file(tmp_path, mutated(lambda d: d["walls"][0].update(thickness=10**400))),
+        "walls[0].thickness",
+        "finite number",
+    )
 
 
 def test_the_robots_and_peoples_whole_bodies_must_be_clear_of_walls_at_start(tmp_path):
     # small_test has a wall along x = 4 (0.1 m thick) from y = 0 to 1.9: its face is at x = 3.95.
-    just_clear = world_file(tmp_path, mutated(lambda d: d["robot"].update(start=[3.95 - ROBOT_BODY.radius_m - 0.01, 1.0, 0.0])))
+    just_clear = world_file(
+        tmp_path, mutated(lambda d: d["robot"].update(start=[3.95 - ROBOT_BODY.radius_m - 0.01, 1.0, 0.0]))
+    )
     assert load_world(just_clear).robot_start.x < 3.95
-    body = world_file(tmp_path, mutated(lambda d: d["robot"].update(start=[3.95 - ROBOT_BODY.radius_m + 0.05, 1.0, 0.0])))
+    body = world_file(
+        tmp_path, mutated(lambda d: d["robot"].update(start=[3.95 - ROBOT_BODY.radius_m + 0.05, 1.0, 0.0]))
+    )
     refusal(body, "robot.start", f"the robot's body (radius {ROBOT_BODY.radius_m:g} m) into a wall")
-    human = world_file(tmp_path, mutated(lambda d: d["humans"][0].update(start=[7.95 - HUMAN_BODY.radius_m + 0.05, 1.0, 0.0])))
+    human = world_file(
+        tmp_path, mutated(lambda d: d["humans"][0].update(start=[7.95 - HUMAN_BODY.radius_m + 0.05, 1.0, 0.0]))
+    )
     refusal(human, "humans[0].start", f"the person's body (radius {HUMAN_BODY.radius_m:g} m) into a wall")
-    pillar = world_file(tmp_path, mutated(lambda d: d["humans"][0].update(start=[5.9, 3.8, 0.0])))  # obstacle spans x 6.0..6.6
+    # obstacle spans x 6.0..6.6
+    pillar = world_file(tmp_path, mutated(lambda d: d["humans"][0].update(start=[5.9, 3.8, 0.0])))
     refusal(pillar, "humans[0].start", "into an obstacle")
-    door = world_file(tmp_path, mutated(lambda d: d.update(obstructions=[{"id": "door", "segment": [[0.9, 2.0], [0.9, 3.0]], "thickness": 0.1}])))
+    door = world_file(
+        tmp_path,
+        mutated(
+            lambda d: d.update(obstructions=[{"id": "door", "segment": [[0.9, 2.0], [0.9, 3.0]], "thickness": 0.1}])
+        ),
+    )
     refusal(door, "robot.start", "into an obstruction door")
 
 
@@ -118,7 +147,9 @@ def test_places_someone_must_stand_on_are_clear_of_walls_and_furniture(tmp_path)
     out (the planner refuses the goal): refused in one line instead, with its owner's body size."""
     gem = world_file(tmp_path, mutated(lambda d: d["gems"][0].update(position=[4.0, 1.0])))  # in the x = 4 wall
     refusal(gem, "gems[0].position", "(4, 1) lies inside a wall")
-    room = world_file(tmp_path, mutated(lambda d: d["rooms"][0].update(centre=[3.95 - ROBOT_BODY.radius_m + 0.05, 1.0])))
+    room = world_file(
+        tmp_path, mutated(lambda d: d["rooms"][0].update(centre=[3.95 - ROBOT_BODY.radius_m + 0.05, 1.0]))
+    )
     refusal(room, "rooms[0].centre", f"the robot's body (radius {ROBOT_BODY.radius_m:g} m) into a wall")
     under = world_file(tmp_path, mutated(lambda d: d["gems"][0].update(position=[6.3, 3.8])))  # under the obstacle
     refusal(under, "gems[0].position", "lies inside an obstacle")
@@ -129,22 +160,33 @@ def test_places_someone_must_stand_on_are_clear_of_walls_and_furniture(tmp_path)
 def test_polygons_must_be_simple(tmp_path):
     bowtie = [[6.0, 3.5], [6.6, 4.1], [6.6, 3.5], [6.0, 4.3]]  # edges 0 and 2 cross; the area is not zero
     crossing = "edges from point 0 to 1 and from point 2 to 3 cross"
-    refusal(world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=bowtie))), "obstacles[0].polygon", crossing)
+    refusal(
+        world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=bowtie))),
+        "obstacles[0].polygon",
+        crossing,
+    )
     repeated = [[6.0, 3.5], [6.6, 3.5], [6.6, 3.5], [6.6, 4.1], [6.0, 4.1]]
-    refusal(world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=repeated))), "point 2 repeats point 1")
+    refusal(
+        world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=repeated))), "point 2 repeats point 1"
+    )
     closed = [[6.0, 3.5], [6.6, 3.5], [6.6, 4.1], [6.0, 4.1], [6.0, 3.5]]  # the first point again at the end
-    refusal(world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=closed))), "point 0 repeats point 4")
+    refusal(
+        world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=closed))), "point 0 repeats point 4"
+    )
     spike = [[6.0, 3.5], [6.6, 3.5], [6.6, 4.1], [6.6, 3.8], [6.0, 4.1]]
     refusal(world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=spike))), "folds back")
     many = [[6.0 + 0.3 * (i % 2), 3.5 + 0.001 * i] for i in range(600)]
-    refusal(world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=many))), "has 600 points; at most 500")
+    refusal(
+        world_file(tmp_path, mutated(lambda d: d["obstacles"][0].update(polygon=many))), "has 600 points; at most 500"
+    )
 
 
 def test_polygon_checks_accept_simple_polygons_of_any_winding():
     square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
     ell = [(0.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0), (1.0, 2.0), (0.0, 2.0)]
     assert polygon_problem(square) is None and polygon_problem(square[::-1]) is None and polygon_problem(ell) is None
-    assert "cross or touch" in polygon_problem([(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (1.0, 0.0), (0.0, 2.0)])  # a vertex on an edge
+    # a vertex on an edge
+    assert "cross or touch" in polygon_problem([(0.0, 0.0), (2.0, 0.0), (2.0, 2.0), (1.0, 0.0), (0.0, 2.0)])
 
 
 def test_values_in_messages_are_truncated(tmp_path):
@@ -158,7 +200,11 @@ def test_values_in_messages_are_truncated(tmp_path):
 
 
 def test_yaml_tags_huge_integers_and_several_documents_are_one_line(tmp_path):
-    refusal(world_file(tmp_path, "name: !!python/object/apply:os.system [echo]\n"), "YAML syntax error at line 1", "constructor")
+    refusal(
+        world_file(tmp_path, "name: !!python/object/apply:os.system [echo]\n"),
+        "YAML syntax error at line 1",
+        "constructor",
+    )
     refusal(world_file(tmp_path, "name: " + "9" * 5000 + "\n"), "invalid value")
     refusal(world_file(tmp_path, "name: a\n---\nname: b\n"), "line 2")
 

@@ -28,7 +28,11 @@ def _off_centre(path, x_range, y_range, centre_x=None, centre_y=None):
     pts = np.array([(p.x, p.y) for p in path])
     inside = (pts[:, 0] > x_range[0]) & (pts[:, 0] < x_range[1]) & (pts[:, 1] > y_range[0]) & (pts[:, 1] < y_range[1])
     assert inside.sum() >= 2
-    return float(np.max(np.abs(pts[inside, 0] - centre_x))) if centre_x is not None else float(np.max(np.abs(pts[inside, 1] - centre_y)))
+    return (
+        float(np.max(np.abs(pts[inside, 0] - centre_x)))
+        if centre_x is not None
+        else float(np.max(np.abs(pts[inside, 1] - centre_y)))
+    )
 
 
 @pytest.mark.parametrize("start", [(15.6, 2.3, 1.2), (16.4, 1.7, 0.3), (15.2, 2.8, 2.0)])

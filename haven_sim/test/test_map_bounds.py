@@ -102,7 +102,9 @@ def test_a_map_fragmented_past_the_box_limit_is_refused_in_one_line():
     with pytest.raises(WorldError) as e:
         wall_boxes(checker)
     said = str(e.value)
-    assert said.startswith("checker.pgm: ") and f"more than {MAX_WALL_BOXES:,} wall boxes" in said and "\n" not in said, said
+    assert (
+        said.startswith("checker.pgm: ") and f"more than {MAX_WALL_BOXES:,} wall boxes" in said and "\n" not in said
+    ), said
     assert len(wall_boxes(checker, limit=20_000)) == 20_000
 
 
@@ -131,7 +133,9 @@ LOAD = textwrap.dedent(
 
 
 def load_in_a_process(world):
-    out = subprocess.run([sys.executable, "-c", LOAD, str(world)], capture_output=True, text=True, timeout=120, check=True).stdout
+    out = subprocess.run(
+        [sys.executable, "-c", LOAD, str(world)], capture_output=True, text=True, timeout=120, check=True
+    ).stdout
     seconds, peak_mb, said = out.strip().split("\t")
     return float(seconds), float(peak_mb), said
 
@@ -148,7 +152,9 @@ def test_a_4000_by_4000_map_is_refused_or_loaded_within_10_s_and_500_mb(tmp_path
     building[100:3880:40, 100:3900:38] = 0  # 95 x 100 pillars of one cell, and 4 walls: 9,504 boxes
     Image.fromarray(building).save(tmp_path / "building.pgm")
     for name in ("checker", "building"):
-        (tmp_path / f"{name}.yaml").write_text(f"name: {name}\nmap: {{image: {name}.pgm, resolution: 0.025}}\nrobot: {{start: [1.0, 1.0, 0.0]}}\n")
+        (tmp_path / f"{name}.yaml").write_text(
+            f"name: {name}\nmap: {{image: {name}.pgm, resolution: 0.025}}\nrobot: {{start: [1.0, 1.0, 0.0]}}\n"
+        )
     seconds, peak_mb, said = load_in_a_process(tmp_path / "checker.yaml")
     assert said.startswith("refused: ") and f"more than {MAX_WALL_BOXES:,} wall boxes" in said, said
     assert seconds < 10.0 and peak_mb < 500.0, (seconds, peak_mb)

@@ -45,7 +45,8 @@ def test_scale_and_raw_modes_and_alpha(tmp_path):
     Image.fromarray(np.full((1, 1, 4), [80, 80, 80, 255], np.uint8), "RGBA").save(tmp_path / "rgba.png")
     assert read_image(tmp_path / "rgb.png", 0.1).cells.tolist() == [[OCCUPIED]]
     assert read_image(tmp_path / "rgba.png", 0.1).cells.tolist() == [[UNKNOWN]]
-    assert read_image(tmp_path / "rgba.png", 0.1, mode="scale").cells.tolist() == [[OCCUPIED]]  # (scale mode leaves the alpha out)
+    # (scale mode leaves the alpha out)
+    assert read_image(tmp_path / "rgba.png", 0.1, mode="scale").cells.tolist() == [[OCCUPIED]]
     raw = read_image(_image(tmp_path, [[0, 100, 101, 255]]), 0.1, mode="raw")
     assert raw.cells.tolist() == [[0, 100, UNKNOWN, UNKNOWN]]
 
@@ -116,7 +117,10 @@ def test_an_overlay_adds_walls_and_obstructions_to_the_map(tmp_path):
     make_map_world(tmp_path)
     text = (tmp_path / "world.yaml").read_text()
     text += "walls:\n  - {segment: [[0.5, -1.0], [0.5, -0.5]], thickness: 0.1}\n"
-    text += "obstructions:\n  - {id: door, segment: [[3.6, 0.6], [3.6, 1.6]], thickness: 0.1, removed_when_human_reaches: B}\n"
+    text += (
+        "obstructions:\n"
+        "  - {id: door, segment: [[3.6, 0.6], [3.6, 1.6]], thickness: 0.1, removed_when_human_reaches: B}\n"
+    )
     (tmp_path / "world.yaml").write_text(text)
     w = load_world(tmp_path / "world.yaml")
     assert rasterise(w).is_occupied(3.6, 1.0) and not rasterise(w, removed=frozenset({"door"})).is_occupied(3.6, 1.0)
@@ -126,7 +130,9 @@ def test_an_overlay_adds_walls_and_obstructions_to_the_map(tmp_path):
 def test_a_floor_plan_png_with_a_scale_is_a_world(tmp_path):
     make_map_world(tmp_path, suffix=".png")
     (tmp_path / "world.yaml").write_text(
-        (tmp_path / "world.yaml").read_text().replace("map: map.yaml", "map: {image: map.png, resolution: 0.05, origin: [-1.0, -2.0]}")
+        (tmp_path / "world.yaml")
+        .read_text()
+        .replace("map: map.yaml", "map: {image: map.png, resolution: 0.05, origin: [-1.0, -2.0]}")
     )
     assert len(load_world(tmp_path / "world.yaml").walls) == len(load_world(tmp_path / "world.yaml").walls) > 0
 
@@ -136,16 +142,25 @@ def test_a_floor_plan_png_with_a_scale_is_a_world(tmp_path):
     [
         (("map: map.yaml", "map: nothing.yaml"), "nothing.yaml"),
         (("map: map.yaml", "map: {image: map.pgm, resolution: -1}"), "map.resolution: must be"),
-        (("map: map.yaml", "map: {image: map.pgm, resolution: 0.05, origin: [0, 0, 0.5]}"), "map.origin: yaw must be 0"),
+        (
+            ("map: map.yaml", "map: {image: map.pgm, resolution: 0.05, origin: [0, 0, 0.5]}"),
+            "map.origin: yaw must be 0",
+        ),
         (("map: map.yaml", "map: {image: map.pgm, resolution: 0.05, free_thresh: 0.9}"), "free_thresh"),
-        (("map: map.yaml", "map: {image: map.pgm, resolution: 0.05, mode: fancy}"), "map.mode: must be one of trinary, scale, raw"),
+        (
+            ("map: map.yaml", "map: {image: map.pgm, resolution: 0.05, mode: fancy}"),
+            "map.mode: must be one of trinary, scale, raw",
+        ),
         (("map: map.yaml", "map: {image: map.yaml, resolution: 0.05}"), "is not a map image"),
         (("map: map.yaml", "map: {image: missing.png, resolution: 0.05}"), "cannot be read as an image"),
         (("map: map.yaml", "map: {image: map.pgm, resolution: 5.0}"), "exceed the 100 m"),
         (("start: [1.0, 0.0, 0.0]", "start: [20.0, 0.0, 0.0]"), "robot.start: (20, 0) lies outside the map"),
         (("start: [1.0, 0.0, 0.0]", "start: [-0.5, 0.0, 0.0]"), "robot.start: (-0.5, 0) lies inside a wall of the map"),
         (("centre: [1.5, 1.0]", "centre: [15, 1.0]"), "rooms[0].centre: (15, 1) lies outside the map"),
-        (("map: map.yaml", "map: map.pgm"), "map: map.pgm is an image: give its scale with it, map: {image: map.pgm, resolution:"),
+        (
+            ("map: map.yaml", "map: map.pgm"),
+            "map: map.pgm is an image: give its scale with it, map: {image: map.pgm, resolution:",
+        ),
     ],
 )
 def test_bad_maps_are_refused_in_one_line(tmp_path, change, words):
@@ -158,7 +173,9 @@ def test_bad_maps_are_refused_in_one_line(tmp_path, change, words):
 
 def test_a_bad_map_yaml_names_its_own_file_and_key(tmp_path):
     make_map_world(tmp_path)
-    (tmp_path / "map.yaml").write_text((tmp_path / "map.yaml").read_text().replace("resolution: 0.05", "resolution: fine"))
+    (tmp_path / "map.yaml").write_text(
+        (tmp_path / "map.yaml").read_text().replace("resolution: 0.05", "resolution: fine")
+    )
     with pytest.raises(WorldError, match=r"map\.yaml: resolution: must be a positive number, got .fine."):
         load_world(tmp_path / "world.yaml")
 
@@ -167,7 +184,10 @@ def test_a_bad_map_yaml_names_its_own_file_and_key(tmp_path):
     "change, words",
     [
         (("resolution: 0.05", "resolution: 0"), "map.yaml: resolution: must be a positive number, got 0"),
-        (("resolution: 0.05", "resolutoin: 0.05"), "map.yaml: resolution: is required (is 'resolutoin' meant to be 'resolution'?)"),
+        (
+            ("resolution: 0.05", "resolutoin: 0.05"),
+            "map.yaml: resolution: is required (is 'resolutoin' meant to be 'resolution'?)",
+        ),
     ],
 )
 def test_a_map_yamls_own_mistakes_name_it(tmp_path, change, words):
@@ -188,5 +208,8 @@ def test_map_image_grid_rows_are_bottom_up():
     m = MapImage(np.array([[100, 0], [0, -1]], np.int8), 0.5, (0.0, 0.0))
     g = m.grid()
     assert g.is_occupied(0.25, 0.75) and not g.is_occupied(0.75, 0.75) and not g.is_occupied(0.25, 0.25)
-    assert m.occupied.tolist() == [[True, False], [False, False]] and m.unknown.tolist() == [[False, False], [False, True]]
+    assert m.occupied.tolist() == [[True, False], [False, False]] and m.unknown.tolist() == [
+        [False, False],
+        [False, True],
+    ]
     assert m.blocked.tolist() == [[True, False], [False, True]]

@@ -41,10 +41,19 @@ def test_a_refused_plan_fails_the_task_with_the_planners_reason_and_a_missed_way
     task = NavTask(TaskKind.FOLLOW_WAYPOINTS, [A, B], 0.0)
     task.start(0.0)
     refused = event(
-        EventKind.PLAN_REFUSED, 0.1, Source.PLANNER, goal=[A.x, A.y], reason="goal (2.00, 1.00) is outside the map", failure="goal_outside_map"
+        EventKind.PLAN_REFUSED,
+        0.1,
+        Source.PLANNER,
+        goal=[A.x, A.y],
+        reason="goal (2.00, 1.00) is outside the map",
+        failure="goal_outside_map",
     )
     task.on_event(refused, 0.1)
-    assert task.outcome is Outcome.ABORTED and task.failure is PlanFailure.GOAL_OUTSIDE_MAP and task.missed == [(0, PlanFailure.GOAL_OUTSIDE_MAP)]
+    assert (
+        task.outcome is Outcome.ABORTED
+        and task.failure is PlanFailure.GOAL_OUTSIDE_MAP
+        and task.missed == [(0, PlanFailure.GOAL_OUTSIDE_MAP)]
+    )
     assert "outside the map" in task.reason
 
 
@@ -77,7 +86,12 @@ def test_feedback_distance_follows_the_plan_and_on_through_later_poses_with_bt_n
     task.on_event(made(A), 1.0)
     task.on_plan([Pose2D(0.0, 1.0, 0.0), Pose2D(0.0, 2.0, 0.0), Pose2D(2.0, 2.0, 0.0), A])  # a detour: 4 m to A
     p = task.progress(2.0)
-    assert abs(p.distance_remaining_m - 5.0) < 1e-9 and abs(p.eta_s - 10.0) < 1e-9 and p.elapsed_s == 2.0 and p.remaining_poses == 2
+    assert (
+        abs(p.distance_remaining_m - 5.0) < 1e-9
+        and abs(p.eta_s - 10.0) < 1e-9
+        and p.elapsed_s == 2.0
+        and p.remaining_poses == 2
+    )
 
 
 def test_through_poses_passes_a_pose_on_the_way_without_stopping_and_ends_at_rest_at_the_last():
@@ -90,7 +104,8 @@ def test_through_poses_passes_a_pose_on_the_way_without_stopping_and_ends_at_res
     (goal,) = task.on_odom(near_a, 2.0)  # within the radius, moving: on to B, no goal_reached at A
     assert goal.topic == topics.GOAL and goal.data == Goal(B) and task.index == 1 and task.outcome is None
     task.on_event(made(B), 2.1)
-    assert task.on_odom(RobotState(B, Twist2D(0.5, 0.0, 0.0)), 3.0) == [] and task.outcome is None  # the last pose: at rest only
+    # the last pose: at rest only
+    assert task.on_odom(RobotState(B, Twist2D(0.5, 0.0, 0.0)), 3.0) == [] and task.outcome is None
     task.on_event(reached(B), 4.0)
     assert task.outcome is Outcome.SUCCEEDED
     waypoints = NavTask(TaskKind.FOLLOW_WAYPOINTS, [A, B], 0.0)  # (follow_waypoints stops at every waypoint, as Nav2's)
@@ -123,4 +138,9 @@ def test_a_robot_that_makes_no_progress_fails_its_task_and_is_stopped():
     task.on_odom(RobotState(Pose2D(0.9, 0.0, 0.0)), 21.0)  # 0.3 m more: not enough to count
     assert task.check_progress(49.0, 30.0) == [] and task.outcome is None
     (stop,) = task.check_progress(50.5, 30.0)
-    assert stop.topic == topics.CANCEL_GOAL and task.stalled and task.outcome is Outcome.ABORTED and "no progress" in task.reason
+    assert (
+        stop.topic == topics.CANCEL_GOAL
+        and task.stalled
+        and task.outcome is Outcome.ABORTED
+        and "no progress" in task.reason
+    )

@@ -103,6 +103,8 @@ def test_bounds_are_declared_with_the_parameter_and_say_what_is_allowed():
     assert POSITIVE.problem(0.0) == "must be positive" and POSITIVE.problem(1e-9) is None
     assert FRACTION.problem(1.5) == "must be within 0..1" and FRACTION.problem(1.0) is None
     assert Bounds(0.0, 360.0, low_open=True).problem(0.0) == "must be within (0, 360]"
-    assert Bounds(high=5.0).problem(6) == "must be at most 5" and POSITIVE.problem(math.nan) == "must be a finite number"
+    assert (
+        Bounds(high=5.0).problem(6) == "must be at most 5" and POSITIVE.problem(math.nan) == "must be a finite number"
+    )
     with pytest.raises(ParamsError, match=r"^sim: battery_initial_level must be within 0\.\.1, got 2\.0$"):
         build_config(SimulatorConfig, {"battery_initial_level": 2.0}, where="sim: ")

@@ -37,7 +37,9 @@ def test_short_next_leg_rotates_in_place():
     assert kinds(shape_path(corner(30.0, leg=0.6), 0.0, style)) == [S, A, S]
 
 
-@pytest.mark.parametrize("start_deg,expected", [(0.0, [S]), (40.0, [A, S]), (-55.0, [A, S]), (70.0, [R, S]), (180.0, [R, S])])
+@pytest.mark.parametrize(
+    "start_deg,expected", [(0.0, [S]), (40.0, [A, S]), (-55.0, [A, S]), (70.0, [R, S]), (180.0, [R, S])]
+)
 def test_start_arc_or_rotation_from_the_robot_heading(start_deg, expected):
     poses = shape_path([(0.0, 0.0), (4.0, 0.0)], math.radians(start_deg))
     assert kinds(poses) == expected
@@ -51,7 +53,8 @@ def test_arc_is_tangent_smooth_and_removes_the_heading_change():
     pts = poses[arc.start : arc.end + 1]
     assert pts[0].yaw == pytest.approx(0.0) and pts[-1].yaw == pytest.approx(math.radians(40.0))
     radii = []
-    for a, b, c in zip(pts, pts[1:], pts[2:], strict=False):  # circumradius of consecutive triples: constant on a circle
+    # circumradius of consecutive triples: constant on a circle
+    for a, b, c in zip(pts, pts[1:], pts[2:], strict=False):
         ab, bc, ca = math.dist(a[:2], b[:2]), math.dist(b[:2], c[:2]), math.dist(c[:2], a[:2])
         area = abs((b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y)) / 2
         radii.append(ab * bc * ca / (4 * area))
@@ -130,7 +133,8 @@ def test_a_nav2_shaped_arc_reads_as_straight_arc_straight_then_the_goal_yaw(shap
     reading = read_path(poses, *STYLE)
     segs = reading.segments
     assert [s.kind for s in segs] == [S, A, S, R]
-    assert (segs[-1].start, segs[-1].end, segs[-1].yaw) == (len(poses) - 1, len(poses) - 1, GOAL.yaw)  # the goal yaw, at the end
+    # the goal yaw, at the end
+    assert (segs[-1].start, segs[-1].end, segs[-1].yaw) == (len(poses) - 1, len(poses) - 1, GOAL.yaw)
     # the arc where it is (a sparse path's polygon may read as two), nothing elsewhere; a dense one to 2 cm
     if NAV2_SHAPES[shape]["spacing_m"] == 0.05:
         ((a, b),) = reading.arcs
@@ -138,7 +142,9 @@ def test_a_nav2_shaped_arc_reads_as_straight_arc_straight_then_the_goal_yaw(shap
     assert all(ARC_START_M - 0.15 < a < b < ARC_END_M + 0.2 for a, b in reading.arcs), reading.arcs
     assert sum(b - a for a, b in reading.arcs) > 0.6 * (ARC_END_M - ARC_START_M), reading.arcs
     # the travel heading, not the identity orientations
-    assert reading.headings[0] == pytest.approx(0.0, abs=0.05) and reading.headings[-1] == pytest.approx(math.pi / 2, abs=0.05)
+    assert reading.headings[0] == pytest.approx(0.0, abs=0.05) and reading.headings[-1] == pytest.approx(
+        math.pi / 2, abs=0.05
+    )
 
 
 def test_a_path_that_arrives_facing_its_goal_yaw_gets_no_final_rotation():
@@ -151,7 +157,8 @@ def test_a_path_that_arrives_facing_its_goal_yaw_gets_no_final_rotation():
 def test_thetastar_corners_rotate_when_havens_style_would_and_arc_otherwise(spacing):
     sharp = read_path(corner_path(90.0, spacing), *STYLE).segments
     assert [s.kind for s in sharp][:3] == [S, R, S] and sharp[1].yaw == pytest.approx(math.pi / 2, abs=0.05)
-    gentle = read_path(corner_path(30.0, spacing), *STYLE)  # (its identity orientations: a goal yaw of 0, rotated to at the end)
+    # (its identity orientations: a goal yaw of 0, rotated to at the end)
+    gentle = read_path(corner_path(30.0, spacing), *STYLE)
     assert [s.kind for s in gentle.segments] == ([S, A, S, R] if spacing else [A, R])  # (two steps: both touch the arc)
     ((a, b),) = gentle.arcs  # the arc the robot drives around the corner, centred on it
     assert a == pytest.approx(2.0 - 0.15, abs=0.02) and b == pytest.approx(2.0 + 0.15, abs=0.02)
@@ -168,7 +175,10 @@ def test_our_planners_paths_read_as_written():
         poses = shape_path(pts, rng.uniform(-3, 3))
         for seg in read_path(poses, *STYLE).segments:
             for a, b in zip(poses[seg.start : seg.end], poses[seg.start + 1 : seg.end + 1], strict=False):
-                moved, turned = math.hypot(b.x - a.x, b.y - a.y) > 1e-3, abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) > math.radians(0.5)
+                moved, turned = (
+                    math.hypot(b.x - a.x, b.y - a.y) > 1e-3,
+                    abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) > math.radians(0.5),
+                )
                 small = abs(math.remainder(b.yaw - a.yaw, 2 * math.pi)) < math.radians(2.0)
                 assert seg.kind is (A if moved and turned else S if moved else R) or (small and seg.kind is S)
 

@@ -67,7 +67,9 @@ def test_unreachable_goals_are_refused_with_a_reason(small, goal, reason):
 
 
 def test_disconnected_goal_is_refused():
-    closed = box_world(6.0, obstacles=[{"segment": [[3.0, 0.0], [3.0, 6.0]], "thickness": 0.2}], robot={"start": [1.0, 3.0, 0.0]})
+    closed = box_world(
+        6.0, obstacles=[{"segment": [[3.0, 0.0], [3.0, 6.0]], "thickness": 0.2}], robot={"start": [1.0, 3.0, 0.0]}
+    )
     planner = GridPlanner(rasterise(closed))
     with pytest.raises(PlanningError, match=r"not reachable|no way out"):
         planner.plan((1.0, 3.0), (5.0, 3.0))
@@ -91,7 +93,9 @@ def test_plans_on_a_map_it_did_not_make():
     planner = GridPlanner(grid, PlannerParams(safety_margin_m=0.05, body_radius_m=0.2))
     plan = planner.plan((0.0, 2.0), (6.0, 2.0))
     assert max(p[1] for p in plan.points) > 1.0 + 4.5  # over the top of the wall
-    assert all(planner.visible(np.array([a]), np.array([b]))[0] for a, b in zip(plan.points, plan.points[1:], strict=False))
+    assert all(
+        planner.visible(np.array([a]), np.array([b]))[0] for a, b in zip(plan.points, plan.points[1:], strict=False)
+    )
     with pytest.raises(PlanningError, match="inside an obstacle"):
         planner.plan((0.0, 2.0), (5.2, 3.2))  # in the unknown patch
 

@@ -12,7 +12,14 @@ import pytest
 from PIL import Image
 
 from haven_sim.nav import planner as planner_module
-from haven_sim.nav.planner import MAX_PLANNER_NODES, MAX_SIGHT_WORK, GridPlanner, PlanningError, check_plannable, sight_work
+from haven_sim.nav.planner import (
+    MAX_PLANNER_NODES,
+    MAX_SIGHT_WORK,
+    GridPlanner,
+    PlanningError,
+    check_plannable,
+    sight_work,
+)
 from haven_sim.sim.occupancy import OccupancyGridData
 from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import load_world
@@ -44,7 +51,11 @@ def test_a_map_past_the_caps_is_refused_at_the_first_plan_in_one_line():
     with pytest.raises(PlanningError) as e:
         planner.plan((0.4, 0.4), (19.6, 19.6))
     said = str(e.value)
-    assert f"the map has {len(planner.nodes):,} corners" in said and f"at most {MAX_PLANNER_NODES:,}" in said and "\n" not in said, said
+    assert (
+        f"the map has {len(planner.nodes):,} corners" in said
+        and f"at most {MAX_PLANNER_NODES:,}" in said
+        and "\n" not in said
+    ), said
     assert planner._graph is None  # nothing N x N was made
 
 
@@ -59,12 +70,18 @@ def test_the_sight_work_cap_scales_with_the_map():
 def test_a_world_past_the_caps_is_refused_naming_the_world(tmp_path):
     grid = pillars(400, 14)
     Image.fromarray(np.where(grid.data[::-1] >= 50, 0, 254).astype(np.uint8)).save(tmp_path / "dots.pgm")
-    (tmp_path / "dots.yaml").write_text("name: dots\nmap: {image: dots.pgm, resolution: 0.05}\nrobot: {start: [0.4, 0.4, 0.0]}\n")
+    (tmp_path / "dots.yaml").write_text(
+        "name: dots\nmap: {image: dots.pgm, resolution: 0.05}\nrobot: {start: [0.4, 0.4, 0.0]}\n"
+    )
     world = load_world(tmp_path / "dots.yaml")
     with pytest.raises(WorldError) as e:
         check_plannable(world, "dots.yaml")
     said = str(e.value)
-    assert said.startswith("dots.yaml: world dots: the map has ") and f"at most {MAX_PLANNER_NODES:,}" in said and "\n" not in said, said
+    assert (
+        said.startswith("dots.yaml: world dots: the map has ")
+        and f"at most {MAX_PLANNER_NODES:,}" in said
+        and "\n" not in said
+    ), said
 
 
 # Peak resident memory of the child itself (VmHWM), as test_map_bounds measures the loader.
@@ -103,9 +120,20 @@ def test_the_pillar_map_is_refused_in_one_line_within_10_s_and_500_mb(tmp_path):
     building[:8], building[-8:], building[:, :8], building[:, -8:] = 0, 0, 0, 0
     building[100:3880:40, 100:3900:38] = 0
     Image.fromarray(building).save(tmp_path / "pillars.pgm")
-    (tmp_path / "pillars.yaml").write_text("name: pillars\nmap: {image: pillars.pgm, resolution: 0.025}\nrobot: {start: [1.0, 1.0, 0.0]}\n")
-    out = subprocess.run([sys.executable, "-c", PLAN, str(tmp_path / "pillars.yaml")], capture_output=True, text=True, timeout=300, check=True)
+    (tmp_path / "pillars.yaml").write_text(
+        "name: pillars\nmap: {image: pillars.pgm, resolution: 0.025}\nrobot: {start: [1.0, 1.0, 0.0]}\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", PLAN, str(tmp_path / "pillars.yaml")],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        check=True,
+    )
     check_s, plan_s, peak_mb, said, planned = out.stdout.strip().split("\t")
-    assert said.startswith("refused: pillars.yaml: world pillars: the map has ") and f"at most {MAX_PLANNER_NODES:,}" in said, said
+    assert (
+        said.startswith("refused: pillars.yaml: world pillars: the map has ")
+        and f"at most {MAX_PLANNER_NODES:,}" in said
+    ), said
     assert planned.startswith("plan refused: the map has ") and "corners for the built-in planner" in planned, planned
     assert float(check_s) < 10.0 and float(plan_s) < 10.0 and float(peak_mb) < 500.0, (check_s, plan_s, peak_mb)

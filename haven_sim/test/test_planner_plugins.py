@@ -41,7 +41,12 @@ def with_corner(monkeypatch):
     reg = plugins.load(
         "planners",
         [
-            Entry("visibility", "haven_sim.nav.planner:GridPlanner", "haven_sim", plugins.registry("planners").get("visibility")),
+            Entry(
+                "visibility",
+                "haven_sim.nav.planner:GridPlanner",
+                "haven_sim",
+                plugins.registry("planners").get("visibility"),
+            ),
             Entry("corner", "lab.planners:Corner", "lab_planners", Corner),
             Entry("crashing", "lab.planners:Crashing", "lab_planners", Crashing),
             Entry("number", "lab.planners:N", "lab_planners", 3),
@@ -77,7 +82,10 @@ def test_the_algorithm_parameter_picks_a_labs_planner_whose_points_are_shaped(wi
 
 
 def test_an_unknown_algorithm_is_one_line_naming_the_known_ones(with_corner):
-    with pytest.raises(ParamsError, match=r"^planner: parameter algorithm: unknown planner 'astar' \(known: corner, crashing, visibility\)$"):
+    with pytest.raises(
+        ParamsError,
+        match=r"^planner: parameter algorithm: unknown planner 'astar' \(known: corner, crashing, visibility\)$",
+    ):
         build_config(PlannerConfig, {"algorithm": "astar"}, where="planner: parameter ")
 
 
@@ -86,5 +94,8 @@ def test_a_labs_planner_that_raises_refuses_the_goal_in_one_line_and_the_trial_g
     planner.on_map(rasterise(box_world(10.0)), 0.0)
     planner.on_odom(RobotState(Pose2D(2.0, 2.0, 0.0)), 0.0)
     (refused,) = [m.data for m in planner.on_goal(Goal(Pose2D(8.0, 8.0, 0.0)), 0.1) if m.topic == topics.EVENTS]
-    assert refused.kind is EventKind.PLAN_REFUSED and refused["reason"] == "the planner failed: RuntimeError: index out of range"
+    assert (
+        refused.kind is EventKind.PLAN_REFUSED
+        and refused["reason"] == "the planner failed: RuntimeError: index out of range"
+    )
     assert planner.warnings == ["refused goal (8.00, 8.00): the planner failed: RuntimeError: index out of range"]

@@ -31,8 +31,13 @@ def test_a_broken_plugin_is_one_line_and_the_others_still_work():
     assert reg.names() == ["shy", "walker"] and reg.items["walker"].package == "haven_scenarios"
     assert len(reg.problems) == 4 and all("\n" not in p for p in reg.problems)
     said = "\n".join(reg.problems)
-    assert "haven.participants walker (lab.people:Walker, from lab_people): the name is taken by haven_scenarios" in said
-    assert "haven.participants broken (lab.people:Broken, from lab_people): does not load: ImportError: No module named 'lab.missing'" in said
+    assert (
+        "haven.participants walker (lab.people:Walker, from lab_people): the name is taken by haven_scenarios" in said
+    )
+    assert (
+        "haven.participants broken (lab.people:Broken, from lab_people): "
+        "does not load: ImportError: No module named 'lab.missing'" in said
+    )
     assert "haven.participants number (lab.people:NUMBER, from lab_people): is not a participant model" in said
     assert "Bad-Name" in said and "lower-case letters" in said
     assert isinstance(reg.get("shy")(1, 2), Model)
@@ -61,7 +66,10 @@ def test_a_plugin_written_for_a_newer_plugin_api_is_left_out_saying_so():
     )
     assert reg.names() == ["today"]
     now, later = plugins.PLUGIN_API, plugins.PLUGIN_API + 1
-    assert reg.left_out["later"] == f"written for HAVEN's plugin API {later}; this HAVEN has version {now} (upgrade HAVEN, or the plugin)"
+    assert (
+        reg.left_out["later"]
+        == f"written for HAVEN's plugin API {later}; this HAVEN has version {now} (upgrade HAVEN, or the plugin)"
+    )
     assert "plugin API 1;" in reg.left_out["odd"]  # (a version is a whole number)
 
 
@@ -70,8 +78,14 @@ def test_an_item_can_build_on_one_registered_before_it_while_the_registry_loads(
     which is the one being loaded (the items so far), not a second load of it."""
     ours = plugins.registry("robots")
     mine = tmp_path / "slow_bot.yaml"
-    mine.write_text("extends: turtlebot2\nname: slow_bot\nmotion: {cruise_speed_mps: 0.3}\nsources: {motion.cruise_speed_mps: ours}\n")
-    entries = [*(Entry(p.name, p.target, p.package, p.value) for p in ours), Entry("slow_bot", "lab:SLOW", "lab_robots", str(mine))]
+    mine.write_text(
+        "extends: turtlebot2\nname: slow_bot\nmotion: {cruise_speed_mps: 0.3}\n"
+        "sources: {motion.cruise_speed_mps: ours}\n"
+    )
+    entries = [
+        *(Entry(p.name, p.target, p.package, p.value) for p in ours),
+        Entry("slow_bot", "lab:SLOW", "lab_robots", str(mine)),
+    ]
     reg = plugins.load("robots", entries)
     assert reg.problems == []
     assert reg.get("slow_bot").motion.cruise_speed_mps == 0.3

@@ -18,7 +18,12 @@ def array_projection(line, x, y, lo, hi):
     closest = a + d * t[:, None]
     dist = np.hypot(closest[:, 0] - x, closest[:, 1] - y)
     k = int(np.argmin(dist))
-    return float(dist[k]), lo + k, float(line.cumulative[lo + k] + t[k] * math.sqrt(ln2[k])), (float(closest[k, 0]), float(closest[k, 1]))
+    return (
+        float(dist[k]),
+        lo + k,
+        float(line.cumulative[lo + k] + t[k] * math.sqrt(ln2[k])),
+        (float(closest[k, 0]), float(closest[k, 1])),
+    )
 
 
 @pytest.mark.parametrize("seed", range(5))
@@ -28,7 +33,9 @@ def test_projection_matches_the_array_form_bit_for_bit(seed):
     pts[10] = pts[9]  # a rotation in place: a zero-length segment
     pts = np.round(pts, 1) if seed % 2 else pts  # grid-aligned paths make exact ties between segments
     line = Polyline(pts)
-    for x, y, s in zip(rng.uniform(-2, 12, 300), rng.uniform(-2, 12, 300), rng.uniform(0, line.length, 300), strict=True):
+    for x, y, s in zip(
+        rng.uniform(-2, 12, 300), rng.uniform(-2, 12, 300), rng.uniform(0, line.length, 300), strict=True
+    ):
         for s_from, s_to in ((0.0, math.inf), (s, s + 2.0)):
             p = line.project(float(x), float(y), s_from, s_to)
             lo = line._segment_at(s_from)

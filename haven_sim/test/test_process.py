@@ -19,7 +19,9 @@ def test_a_child_of_a_parent_that_ignores_ctrl_c_still_takes_it():
     previous = signal.signal(signal.SIGINT, signal.SIG_IGN)  # (a background job of a script; a worker starting)
     try:
         plain = subprocess.run([sys.executable, "-c", CHILD], capture_output=True, text=True, check=True)
-        ours = subprocess.run([sys.executable, "-c", CHILD], capture_output=True, text=True, check=True, preexec_fn=die_with_parent())
+        ours = subprocess.run(
+            [sys.executable, "-c", CHILD], capture_output=True, text=True, check=True, preexec_fn=die_with_parent()
+        )
     finally:
         signal.signal(signal.SIGINT, previous)
     assert plain.stdout.strip() == "False"  # (the ignored signal is inherited across exec)

@@ -87,7 +87,8 @@ BURGER = yaml.safe_load((Path(catalogue.__file__).parent / "turtlebot3_burger.ya
         ({"kinematics": "aerial"}, "flight"),
         ({"footprint": {"polygon": [[0, 0], [0.1, 0]]}}, "footprint"),
         ({"look": {"model": "missing.glb"}}, "look.model"),
-        ({"footprint": {"polygon": [[0, 0], [0.5, 0], [0, 0.3], [0.3, 0.4]]}}, "footprint.polygon: is not simple"),  # edges crossing
+        # edges crossing
+        ({"footprint": {"polygon": [[0, 0], [0.5, 0], [0, 0.3], [0.3, 0.4]]}}, "footprint.polygon: is not simple"),
         ({"footprint": {"polygon": [[0, 0], [0.1, 0], [0.2, 0]]}}, "footprint.polygon: has zero area"),
         ({"frames": {"base": "a b/../c"}}, "frames.base: must be a ROS frame name"),
         ({"frames": {"base": "/base_footprint"}}, "frames.base: must be a ROS frame name"),
@@ -111,9 +112,17 @@ def test_a_bad_robot_file_is_one_line_naming_the_key(change, key, tmp_path):
 def test_frame_names_with_a_namespace_are_kept(tmp_path):
     own = tmp_path / "ns_bot.yaml"
     frames = {"base": "robot1/base_footprint", "base_link": "robot1/base_link"}
-    own.write_text(yaml.safe_dump({**BURGER, "name": "ns_bot", "frames": frames, "lidar": {**BURGER["lidar"], "frame": "robot1/laser_2d"}}))
+    own.write_text(
+        yaml.safe_dump(
+            {**BURGER, "name": "ns_bot", "frames": frames, "lidar": {**BURGER["lidar"], "frame": "robot1/laser_2d"}}
+        )
+    )
     robot = resolve_robot(str(own))
-    assert (robot.frames.base, robot.frames.base_link, robot.lidar.frame) == ("robot1/base_footprint", "robot1/base_link", "robot1/laser_2d")
+    assert (robot.frames.base, robot.frames.base_link, robot.lidar.frame) == (
+        "robot1/base_footprint",
+        "robot1/base_link",
+        "robot1/laser_2d",
+    )
 
 
 def test_a_plugin_whose_file_names_another_robot_is_left_out_with_one_line():

@@ -19,7 +19,9 @@ from haven_sim.sim.world import packaged_world
 from haven_sim.sim.world_file import load_world
 
 pytestmark = pytest.mark.ros
-SIM, MUX, PLANNER, CONTROLLER = (f"haven_sim.nodes.{n}" for n in ("sim_node", "mux_node", "planner_node", "controller_node"))
+SIM, MUX, PLANNER, CONTROLLER = (
+    f"haven_sim.nodes.{n}" for n in ("sim_node", "mux_node", "planner_node", "controller_node")
+)
 
 
 def start_suite(ros, world="small_test", rtf=4.0, planner=True, lockstep=False):
@@ -48,7 +50,11 @@ def rest_pose(ros, odom, after_s):
 
     def resting():
         m = odom[-1]
-        return conv.time_from_msg(m.header.stamp) > after_s and abs(m.twist.twist.linear.x) < 1e-3 and abs(m.twist.twist.angular.z) < 1e-3
+        return (
+            conv.time_from_msg(m.header.stamp) > after_s
+            and abs(m.twist.twist.linear.x) < 1e-3
+            and abs(m.twist.twist.angular.z) < 1e-3
+        )
 
     assert ros.spin_until(resting, 30), "the robot did not come to rest"
     return conv.pose_from_msg(odom[-1].pose.pose)
@@ -73,8 +79,11 @@ def test_goal_pose_to_plan_to_arrival_without_touching_walls(ros):
     # The node publishes exactly what the planner core makes of the same map, start and goal.
     world = load_world(packaged_world("small_test"))
     expected = Navigator(rasterise(world)).set_goal(world.robot_start, Pose2D(7.2, 4.5, math.pi / 2), 0.0).path
-    assert len(path) == len(expected) and all(a.distance_to(b) < 1e-6 and abs(a.yaw - b.yaw) < 1e-6 for a, b in zip(path, expected, strict=True))
-    assert {s.kind for s in read_path(path, *STYLE).segments} >= {SegmentKind.STRAIGHT, SegmentKind.ROTATE}  # a door to go through, a yaw to end on
+    assert len(path) == len(expected) and all(
+        a.distance_to(b) < 1e-6 and abs(a.yaw - b.yaw) < 1e-6 for a, b in zip(path, expected, strict=True)
+    )
+    # a door to go through, a yaw to end on
+    assert {s.kind for s in read_path(path, *STYLE).segments} >= {SegmentKind.STRAIGHT, SegmentKind.ROTATE}
     p = rest_pose(ros, odom, events_of(events, EventKind.GOAL_REACHED)[0].stamp)
     assert math.hypot(p.x - 7.2, p.y - 4.5) <= 0.1
     assert abs(math.remainder(p.yaw - math.pi / 2, 2 * math.pi)) <= math.radians(6)
@@ -114,7 +123,9 @@ def corridor_world(tmp_path, human, width=3.0):
 
 
 # A 1.6 m corridor leaves no room beside a person: the robot waits. In 3 m it passes them.
-@pytest.mark.parametrize("human,width,expected", [((4.0, 0.8, 3.14), 1.6, EventKind.WAITING), ((6.0, 1.25, 3.14), 3.0, EventKind.REPLANNED)])
+@pytest.mark.parametrize(
+    "human,width,expected", [((4.0, 0.8, 3.14), 1.6, EventKind.WAITING), ((6.0, 1.25, 3.14), 3.0, EventKind.REPLANNED)]
+)
 def test_human_on_the_path_makes_the_robot_wait_or_pass(ros, tmp_path, human, width, expected):
     events = ros.collect(String, "/haven/events", qos.EVENTS)
     waits = ros.collect(Bool, "/haven/wait", qos.LATCHED)

@@ -89,7 +89,9 @@ def test_odom_rate_pose_scan_and_topics(ros):
     assert ss == pytest.approx(0.1, abs=1e-6)
     assert humans[-1].header.frame_id == "map" and len(humans[-1].poses) == 1
     # the same person by id, on a topic of its own
-    assert h1[-1].header.frame_id == "map" and conv.pose_from_msg(h1[-1].pose) == pytest.approx((7.0, 1.0, 3.14159), abs=1e-4)
+    assert h1[-1].header.frame_id == "map" and conv.pose_from_msg(h1[-1].pose) == pytest.approx(
+        (7.0, 1.0, 3.14159), abs=1e-4
+    )
     b = battery[-1]
     assert b.percentage == pytest.approx(1.0) and b.power_supply_status == BatteryState.POWER_SUPPLY_STATUS_FULL
 
@@ -104,7 +106,9 @@ def test_cmd_vel_drives_and_watchdog_stops(ros):
     ros.wait_matched(pub)
     ros.wait_for_messages(odom, 5)
     n = len(odom)
-    assert ros.spin_until(lambda: pub.publish(twist(0.4, 0.0)) or odom[-1].twist.twist.linear.x == pytest.approx(0.4, abs=1e-6), 30)
+    assert ros.spin_until(
+        lambda: pub.publish(twist(0.4, 0.0)) or odom[-1].twist.twist.linear.x == pytest.approx(0.4, abs=1e-6), 30
+    )
     speeds = [(conv.time_from_msg(m.header.stamp), m.twist.twist.linear.x) for m in odom[n:]]
     rises = [(v1 - v0) / (t1 - t0) for (t0, v0), (t1, v1) in itertools.pairwise(speeds) if v1 > v0]
     assert rises and max(rises) == pytest.approx(0.5, abs=1e-3)  # the ramp, never steeper
@@ -112,7 +116,9 @@ def test_cmd_vel_drives_and_watchdog_stops(ros):
     assert ros.spin_until(lambda: abs(odom[-1].twist.twist.linear.x) < 1e-6, 30)  # the watchdog stops it
     n = len(odom)
     pub.publish(twist(0.4, 0.0))  # one command, then nothing
-    assert ros.spin_until(lambda: any(m.twist.twist.linear.x > 0 for m in odom[n:]) and abs(odom[-1].twist.twist.linear.x) < 1e-6, 30)
+    assert ros.spin_until(
+        lambda: any(m.twist.twist.linear.x > 0 for m in odom[n:]) and abs(odom[-1].twist.twist.linear.x) < 1e-6, 30
+    )
     moving = [m for m in odom[n:] if m.twist.twist.linear.x > 0]
     peak = max(moving, key=lambda m: m.twist.twist.linear.x)
     held = conv.time_from_msg(peak.header.stamp) - conv.time_from_msg(moving[0].header.stamp)
@@ -220,7 +226,8 @@ def test_estop_from_default_qos_publishers_several_at_once_and_a_latched_one_bef
     ros.start(MUX, {"estop_hold_s": 4.0})
     ros.wait_matched(out)
     ros.wait_matched(nav)
-    assert ros.spin_until(lambda: latched.get_subscription_count() >= 3)  # the mux's volatile (reliable, best effort) and latched readers
+    # the mux's volatile (reliable, best effort) and latched readers
+    assert ros.spin_until(lambda: latched.get_subscription_count() >= 3)
     assert latched.wait_for_all_acked(Duration(seconds=5.0))  # the stop has reached both
 
     def drives(seconds):
@@ -234,7 +241,9 @@ def test_estop_from_default_qos_publishers_several_at_once_and_a_latched_one_bef
 
     assert not drives(2.5)  # the late-joining mux honours the latched stop
     latched.publish(Bool(data=False))
-    assert ros.spin_until(lambda: (nav.publish(twist(0.2)) or True) and bool(out) and out[-1].linear.x == pytest.approx(0.2), 15.0)
+    assert ros.spin_until(
+        lambda: (nav.publish(twist(0.2)) or True) and bool(out) and out[-1].linear.x == pytest.approx(0.2), 15.0
+    )
 
     cli = ros.node.create_publisher(Bool, "/haven/estop", 10)  # what `ros2 topic pub` creates
     other = ros.node.create_publisher(Bool, "/haven/estop", 10)
@@ -255,7 +264,10 @@ def test_estop_from_default_qos_publishers_several_at_once_and_a_latched_one_bef
         stopped = stopped and out[-1].linear.x == 0.0
     assert stopped
     # The CLI is stopped: the other publisher's false releases the stop after the hold.
-    assert ros.spin_until(lambda: (other.publish(Bool(data=False)), nav.publish(twist(0.2))) and out[-1].linear.x == pytest.approx(0.2), 15.0)
+    assert ros.spin_until(
+        lambda: (other.publish(Bool(data=False)), nav.publish(twist(0.2))) and out[-1].linear.x == pytest.approx(0.2),
+        15.0,
+    )
 
 
 def test_teleop_from_another_node_drives_the_simulated_robot(ros):
@@ -292,8 +304,8 @@ def test_a_publisher_of_the_wrong_type_is_named_in_a_warning(ros):
     teleop = ros.node.create_publisher(TwistStamped, "/cmd_vel_teleop", 10)
     mux = ros.start(MUX, capture=True)
     warning = (
-        "/cmd_vel_teleop: haven_test_probe publishes geometry_msgs/msg/TwistStamped, this node reads geometry_msgs/msg/Twist; "
-        "ignored (set the stamped_cmd_vel parameter to match)"
+        "/cmd_vel_teleop: haven_test_probe publishes geometry_msgs/msg/TwistStamped, "
+        "this node reads geometry_msgs/msg/Twist; ignored (set the stamped_cmd_vel parameter to match)"
     )
     teleop.publish(TwistStamped())
     said = stderr_of(mux)
@@ -408,10 +420,18 @@ def test_an_estop_of_any_qos_stops_teleop_in_the_mux_and_the_simulator(ros):
     ros.wait_for_messages(odom, 5)
     turn = twist(0.0, 1.0)
     best_effort = QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT)
-    transient_best_effort = QoSProfile(depth=1, reliability=ReliabilityPolicy.BEST_EFFORT, durability=DurabilityPolicy.TRANSIENT_LOCAL)
-    for name, profile in (("best effort", best_effort), ("reliable", 10), ("latched", qos.LATCHED), ("best effort latched", transient_best_effort)):
+    transient_best_effort = QoSProfile(
+        depth=1, reliability=ReliabilityPolicy.BEST_EFFORT, durability=DurabilityPolicy.TRANSIENT_LOCAL
+    )
+    for name, profile in (
+        ("best effort", best_effort),
+        ("reliable", 10),
+        ("latched", qos.LATCHED),
+        ("best effort latched", transient_best_effort),
+    ):
         estop = ros.node.create_publisher(Bool, "/haven/estop", profile)
-        assert ros.spin_until(lambda estop=estop: estop.get_subscription_count() >= 2, 15.0), name  # the mux and the simulator
+        # the mux and the simulator
+        assert ros.spin_until(lambda estop=estop: estop.get_subscription_count() >= 2, 15.0), name
         del events[:]
 
         def send(stop: bool, estop=estop):
@@ -419,7 +439,9 @@ def test_an_estop_of_any_qos_stops_teleop_in_the_mux_and_the_simulator(ros):
             teleop.publish(turn)
             keyboard.publish(turn)
 
-        assert ros.spin_until(lambda: (send(True), ros.spin_for(0.05)) and odom[-1].twist.twist.angular.z == 0.0, 10.0), name
+        assert ros.spin_until(
+            lambda: (send(True), ros.spin_for(0.05)) and odom[-1].twist.twist.angular.z == 0.0, 10.0
+        ), name
         still = conv.pose_from_msg(odom[-1].pose.pose)
         stamp = conv.time_from_msg(odom[-1].header.stamp)
         while conv.time_from_msg(odom[-1].header.stamp) - stamp < 1.5:  # 1.5 s of sim time asking to turn at 1 rad/s
@@ -428,7 +450,9 @@ def test_an_estop_of_any_qos_stops_teleop_in_the_mux_and_the_simulator(ros):
         assert abs(conv.pose_from_msg(odom[-1].pose.pose).yaw - still.yaw) < 0.02, name
         assert any(conv.event_from_msg(m).get("to") == "estop" for m in events), name  # the mux too
         # Released: a false, and no true for estop_hold_s; the same commands turn it again.
-        assert ros.spin_until(lambda: (send(False), ros.spin_for(0.05)) and abs(odom[-1].twist.twist.angular.z) > 0.5, 15.0), name
+        assert ros.spin_until(
+            lambda: (send(False), ros.spin_for(0.05)) and abs(odom[-1].twist.twist.angular.z) > 0.5, 15.0
+        ), name
         ros.node.destroy_publisher(estop)
     for proc in (sim, mux):
         said = stderr_of(proc)()

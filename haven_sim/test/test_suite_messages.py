@@ -27,7 +27,8 @@ def test_a_flood_on_the_same_topic_neither_delays_nor_displaces_the_suites_goal(
     q.add([*flood[:500], raw("ours"), *flood[500:]])
     assert not q.missing([digest(raw("ours"))])
     ours, outside = q.split([digest(raw("ours"))])
-    assert ours == [raw("ours")] and outside == []  # the rest waits one act: it may be another participant's of this step
+    # the rest waits one act: it may be another participant's of this step
+    assert ours == [raw("ours")] and outside == []
     q.add([raw("late ours")])
     ours, outside = q.split([digest(raw("late ours"))])
     assert ours == [raw("late ours")] and outside == flood
@@ -49,7 +50,9 @@ def test_a_state_stream_hands_over_its_newest_announced_message():
 
 
 def test_outside_messages_are_ignored_on_owned_topics_unless_opened_and_limited_elsewhere():
-    o = OutsideInputs(owned=frozenset({"/goal_pose", "/plan"}), opened=frozenset({"/plan"}), limit=InputLimit(rate_hz=10.0, burst=5))
+    o = OutsideInputs(
+        owned=frozenset({"/goal_pose", "/plan"}), opened=frozenset({"/plan"}), limit=InputLimit(rate_hz=10.0, burst=5)
+    )
     assert o.take("goal_pose", [raw("g")] * 7, now=1.0) == [] and o.ignored["/goal_pose"] == 7
     assert o.take("odom", [raw("o")], now=1.0) == []  # a state stream is never taken from outside
     teleop = [raw(f"t{k}") for k in range(8)]

@@ -53,7 +53,11 @@ BAD = [
     (lambda d: d["rooms"][0].update(centre=[1, "x"]), "rooms[0].centre[1]", "finite number"),
     (lambda d: d["hallways"][0].update(centreline=[[0, 0]]), "hallways[0].centreline", "at least 2"),
     (
-        lambda d: d.update(obstructions=[{"id": "o", "segment": [[4, 2], [4, 3]], "thickness": 0.1, "removed_when_human_reaches": "attic"}]),
+        lambda d: d.update(
+            obstructions=[
+                {"id": "o", "segment": [[4, 2], [4, 3]], "thickness": 0.1, "removed_when_human_reaches": "attic"}
+            ]
+        ),
         "obstructions[0].removed_when_human_reaches",
         "names no room",
     ),
@@ -83,7 +87,9 @@ def test_yaml_syntax_error_and_missing_file(tmp_path):
 
 def test_obstructions_are_solid_until_removed():
     d = _base()
-    d["obstructions"] = [{"id": "door", "segment": [[4, 1.9], [4, 3.1]], "thickness": 0.05, "removed_when_human_reaches": "west"}]
+    d["obstructions"] = [
+        {"id": "door", "segment": [[4, 1.9], [4, 3.1]], "thickness": 0.05, "removed_when_human_reaches": "west"}
+    ]
     from haven_sim.sim.world_file import parse_world
 
     w = parse_world(d)

@@ -55,37 +55,59 @@ class CueParams:
     marker_spacing_m: float = param(0.4, "HAVEN: 1 m at its 2.6x robot scale", POSITIVE)
     steps_ahead: int = param(0, "projected markers shown ahead; 0 = the whole remaining path", NOT_NEGATIVE)
     marker_size_m: float = param(0.2, "HAVEN's 0.2 m spheres and cubes", POSITIVE)
-    consume_distance_m: float = param(0.2, "a marker this close ahead of the robot along the path is used up", NOT_NEGATIVE)
+    consume_distance_m: float = param(
+        0.2, "a marker this close ahead of the robot along the path is used up", NOT_NEGATIVE
+    )
     scheme: str = param("yellow", "marker colour: yellow (HAVEN), white (the paper's figures), cyan")
     turn_signal_threshold_deg: float = param(
-        11.0, "HAVEN: a heading error this large lights the turn signal", Bounds(0.0, 180.0, low_open=True, high_open=True)
+        11.0,
+        "HAVEN: a heading error this large lights the turn signal",
+        Bounds(0.0, 180.0, low_open=True, high_open=True),
     )
-    turn_signal_release_deg: float = param(6.0, "a lit turn signal goes dark only when the turn ahead is within this (hysteresis)")
-    turn_signal_hold_s: float = param(0.5, "a lit turn signal stays lit at least this long (no flicker on S-curves)", NOT_NEGATIVE)
+    turn_signal_release_deg: float = param(
+        6.0, "a lit turn signal goes dark only when the turn ahead is within this (hysteresis)"
+    )
+    turn_signal_hold_s: float = param(
+        0.5, "a lit turn signal stays lit at least this long (no flicker on S-curves)", NOT_NEGATIVE
+    )
     signal_lookahead_m: float = param(
-        1.2, "the turn signals show a turn of the path this far ahead (3 s at 0.4 m/s; drivers signal about 3 s ahead)", NOT_NEGATIVE
+        1.2,
+        "the turn signals show a turn of the path this far ahead (3 s at 0.4 m/s; drivers signal about 3 s ahead)",
+        NOT_NEGATIVE,
     )
     thought_radius_m: float = param(3.0, "a human this close shows the thought bubble ...", POSITIVE)
     thought_hysteresis_m: float = param(0.5, "... which hides again only beyond radius + this", NOT_NEGATIVE)
     thought_backdrop: bool = param(True, "a white bubble behind the thought's text")
     nav_points_ahead: int = param(
-        3, "NavPoints (aerial robots): waypoints shown ahead, each with its arrival countdown (Walker et al. 2018)", POSITIVE
+        3,
+        "NavPoints (aerial robots): waypoints shown ahead, each with its arrival countdown (Walker et al. 2018)",
+        POSITIVE,
     )
-    nav_point_spacing_m: float = param(1.0, "NavPoints: a waypoint this far apart along the path, and at its end (ours)", POSITIVE)
-    gaze_lookahead_m: float = param(1.0, "Gaze (aerial robots): the eye looks at the path this far ahead (ours)", POSITIVE)
+    nav_point_spacing_m: float = param(
+        1.0, "NavPoints: a waypoint this far apart along the path, and at its end (ours)", POSITIVE
+    )
+    gaze_lookahead_m: float = param(
+        1.0, "Gaze (aerial robots): the eye looks at the path this far ahead (ours)", POSITIVE
+    )
     turn_signal_rule: str = param(
         "pass_side",
-        "in a pass round a person: pass_side (the side passed on, the whole pass; dark on the way back) or path_turn (every turn of the path)",
+        "in a pass round a person: pass_side (the side passed on, the whole pass; "
+        "dark on the way back) or path_turn (every turn of the path)",
     )
 
     def __post_init__(self) -> None:
         check_bounds(self)
         if self.turn_signal_rule not in SIGNAL_RULES:
-            raise ValueError(f"turn_signal_rule must be one of {', '.join(SIGNAL_RULES)}, got {self.turn_signal_rule!r}")
+            raise ValueError(
+                f"turn_signal_rule must be one of {', '.join(SIGNAL_RULES)}, got {self.turn_signal_rule!r}"
+            )
         if self.scheme not in SCHEMES:
             raise ValueError(f"scheme must be one of {', '.join(SCHEMES)}, got {self.scheme!r}")
         if not 0 <= self.turn_signal_release_deg <= self.turn_signal_threshold_deg:
-            raise ValueError(f"turn_signal_release_deg must be within [0, turn_signal_threshold_deg], got {self.turn_signal_release_deg}")
+            raise ValueError(
+                "turn_signal_release_deg must be within "
+                f"[0, turn_signal_threshold_deg], got {self.turn_signal_release_deg}"
+            )
 
     @property
     def turn_signal_threshold_rad(self) -> float:
@@ -120,7 +142,15 @@ class PathProjection:
             return None
         size, color = p.marker_size_m, SCHEMES[p.scheme]
         specs = [
-            MarkerSpec(PATH_NS, i, Shape.CUBE if m.arc else Shape.SPHERE, (m.x, m.y, ctx.robot_z_m + size / 2.0), 0.0, (size,) * 3, color)
+            MarkerSpec(
+                PATH_NS,
+                i,
+                Shape.CUBE if m.arc else Shape.SPHERE,
+                (m.x, m.y, ctx.robot_z_m + size / 2.0),
+                0.0,
+                (size,) * 3,
+                color,
+            )
             for i, m in shown
         ]
         return Shown(len(shown), specs if markers else [], tuple((m.x, m.y) for _, m in shown), on_robot=False)
@@ -159,16 +189,21 @@ class TurnSignals:
             return None
         # The path's heading at points ahead: the nearest that turns away by the threshold, else
         # the largest turn within the look-ahead.
-        ahead = np.arange(path.progress, min(line.length, path.progress + p.signal_lookahead_m) + 1e-9, LOOKAHEAD_STEP_M)
+        ahead = np.arange(
+            path.progress, min(line.length, path.progress + p.signal_lookahead_m) + 1e-9, LOOKAHEAD_STEP_M
+        )
         largest: float | None = None
         for s in ahead.tolist():
             e = wrap_angle(path.headings[line.moving_segment_at(s)] - robot.yaw)
             if abs(e) >= p.turn_signal_threshold_rad:
                 return e
-            largest = e if largest is None or abs(e) > abs(largest) else largest  # the first of the largest, as max() keeps
+            # the first of the largest, as max() keeps
+            largest = e if largest is None or abs(e) > abs(largest) else largest
         return largest
 
-    def side(self, robot: Pose2D, path: TrackedPath, now: float | None = None, manoeuvre: Manoeuvre = NO_MANOEUVRE) -> int:
+    def side(
+        self, robot: Pose2D, path: TrackedPath, now: float | None = None, manoeuvre: Manoeuvre = NO_MANOEUVRE
+    ) -> int:
         """+1 (left) or -1 (right) while the turn ahead reaches the threshold (a lit side stays lit
         down to the release angle, and for `turn_signal_hold_s` when the time is given), else 0.
         With the pass-side rule, during a pass round a person (`manoeuvre`) the side passed on,
@@ -210,7 +245,15 @@ class TurnSignals:
         m = ctx.mounts
         x, y = robot.x + m.signal_offset_m * math.cos(out_yaw), robot.y + m.signal_offset_m * math.sin(out_yaw)
         color = SCHEMES[self.params.scheme]
-        arrow = MarkerSpec(SIGNAL_NS, 0 if side > 0 else 1, Shape.ARROW, (x, y, ctx.robot_z_m + m.signal_height_m), out_yaw, (0.3, 0.08, 0.08), color)
+        arrow = MarkerSpec(
+            SIGNAL_NS,
+            0 if side > 0 else 1,
+            Shape.ARROW,
+            (x, y, ctx.robot_z_m + m.signal_height_m),
+            out_yaw,
+            (0.3, 0.08, 0.08),
+            color,
+        )
         return Shown(side, [arrow] if markers else [])
 
 
@@ -234,10 +277,31 @@ class ThoughtBubble:
             return Shown(ctx.thought)
         z = ctx.robot_z_m + ctx.mounts.bubble_height_m
         text = ctx.thought
-        out = [MarkerSpec(THOUGHT_NS, 0, Shape.TEXT_VIEW_FACING, (robot.x, robot.y, z), 0.0, (0.0, 0.0, 0.15), (0.05, 0.05, 0.05, 1.0), text)]
+        out = [
+            MarkerSpec(
+                THOUGHT_NS,
+                0,
+                Shape.TEXT_VIEW_FACING,
+                (robot.x, robot.y, z),
+                0.0,
+                (0.0, 0.0, 0.15),
+                (0.05, 0.05, 0.05, 1.0),
+                text,
+            )
+        ]
         if p.thought_backdrop:
             width = max(0.6, 0.085 * len(text))
-            out.append(MarkerSpec(THOUGHT_NS, 1, Shape.SPHERE, (robot.x, robot.y, z), robot.yaw, (width, width, 0.35), (1.0, 1.0, 1.0, 0.85)))
+            out.append(
+                MarkerSpec(
+                    THOUGHT_NS,
+                    1,
+                    Shape.SPHERE,
+                    (robot.x, robot.y, z),
+                    robot.yaw,
+                    (width, width, 0.35),
+                    (1.0, 1.0, 1.0, 0.85),
+                )
+            )
         return Shown(text, out)
 
 
@@ -265,10 +329,25 @@ class BatteryIndicator:
         return Shown(
             level,
             [
-                MarkerSpec(BATTERY_NS, 0, Shape.CUBE, (robot.x, robot.y, z), 0.0, (full + 0.02, thick + 0.02, thick + 0.02), (0.15, 0.15, 0.15, 0.6)),
+                MarkerSpec(
+                    BATTERY_NS,
+                    0,
+                    Shape.CUBE,
+                    (robot.x, robot.y, z),
+                    0.0,
+                    (full + 0.02, thick + 0.02, thick + 0.02),
+                    (0.15, 0.15, 0.15, 0.6),
+                ),
                 MarkerSpec(BATTERY_NS, 1, Shape.CUBE, (bx, by, z), 0.0, (filled, thick, thick + 0.03), color),
                 MarkerSpec(
-                    BATTERY_NS, 2, Shape.TEXT_VIEW_FACING, (robot.x, robot.y, z + 0.15), 0.0, (0.0, 0.0, 0.12), color, f"{round(100 * level)} %"
+                    BATTERY_NS,
+                    2,
+                    Shape.TEXT_VIEW_FACING,
+                    (robot.x, robot.y, z + 0.15),
+                    0.0,
+                    (0.0, 0.0, 0.12),
+                    color,
+                    f"{round(100 * level)} %",
                 ),
             ],
         )

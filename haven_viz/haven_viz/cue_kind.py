@@ -10,7 +10,8 @@ and only while the study condition has it on, what it shows now::
         exposure = "floor_arrows_shown_s"   # its exposure metric (default: "<name>_shown_s")
         rank = 10                   # where it comes among the cues (default 100; then by name)
         kinematics = ("diff_drive", "omni")  # the robot kinds it serves (default: every kind)
-        default_on = True           # on in condition `all` (False: a library cue, shown only where a condition names it)
+        default_on = True           # on in condition `all` (False: a library cue, shown only where a condition
+                                    # names it)
 
         def __init__(self, params: CueParams) -> None: ...
 
@@ -92,7 +93,9 @@ class TrackedPath:
 
     def advance(self, robot: Pose2D) -> None:
         if len(self.line) >= 2:
-            self.progress = max(self.progress, self.line.project(robot.x, robot.y, self.progress, self.progress + 2.0).s)
+            self.progress = max(
+                self.progress, self.line.project(robot.x, robot.y, self.progress, self.progress + 2.0).s
+            )
 
     @property
     def remaining_m(self) -> float:
@@ -202,9 +205,16 @@ def accept_plugin(name: str, value: Any) -> CueSpec:
     )
     kinds = spec.kinematics
     if isinstance(kinds, str) or not isinstance(kinds, tuple) or not kinds or any(k not in KINDS for k in kinds):
-        raise ValueError(f"is not a cue: its kinematics must be a tuple of robot kinds ({', '.join(KINDS)}), got {str(kinds)[:50]}")
+        raise ValueError(
+            f"is not a cue: its kinematics must be a tuple of robot kinds ({', '.join(KINDS)}), got {str(kinds)[:50]}"
+        )
     if not isinstance(spec.default_on, bool):
         raise ValueError("is not a cue: its default_on must be true or false")
-    if not isinstance(spec.key, str) or not spec.key or not isinstance(spec.exposure, str) or not isinstance(spec.rank, int):
+    if (
+        not isinstance(spec.key, str)
+        or not spec.key
+        or not isinstance(spec.exposure, str)
+        or not isinstance(spec.rank, int)
+    ):
         raise ValueError("is not a cue: its key and exposure must be names, its rank a whole number")
     return spec

@@ -38,7 +38,19 @@ from haven_viz.builtin_cues import (
 from haven_viz.cue_kind import NO_MANOEUVRE, Cue, CueContext, CueSpec, TrackedPath, serves
 from haven_viz.markers import MarkerSpec
 
-__all__ = ["BATTERY_NS", "CUES", "PATH_NS", "SCHEMES", "SIGNAL_NS", "THOUGHT_NS", "ArCues", "CueParams", "CueState", "Toggles", "battery_color"]
+__all__ = [
+    "BATTERY_NS",
+    "CUES",
+    "PATH_NS",
+    "SCHEMES",
+    "SIGNAL_NS",
+    "THOUGHT_NS",
+    "ArCues",
+    "CueParams",
+    "CueState",
+    "Toggles",
+    "battery_color",
+]
 
 RESERVED_KEYS = frozenset({"stamp", "toggles"})
 CASTS: dict[str, Any] = {"path_markers": int, "turn_signal": int, "thought": str, "battery_level": float}
@@ -64,7 +76,8 @@ def cue_specs(reg: plugins.Registry) -> dict[str, CueSpec]:
 
 CUE_SPECS = cue_specs(plugins.registry("cues"))
 CUES: tuple[str, ...] = tuple(CUE_SPECS)
-DEFAULT_ON: tuple[str, ...] = tuple(c for c in CUES if CUE_SPECS[c].default_on)  # condition `all` (library cues are named)
+# condition `all` (library cues are named)
+DEFAULT_ON: tuple[str, ...] = tuple(c for c in CUES if CUE_SPECS[c].default_on)
 
 
 def cues_for(kind: Kinematics | str) -> tuple[str, ...]:
@@ -89,7 +102,10 @@ def unfit(on: Sequence[str], robot: RobotDescription) -> str | None:
     for name in on:
         spec = CUE_SPECS[name]
         if not serves(spec, robot.kinematics):
-            return f"cue {name} does not fit robot {robot.name} ({robot.kinematics.value}): it serves {', '.join(spec.kinematics)} robots"
+            return (
+                f"cue {name} does not fit robot {robot.name} ({robot.kinematics.value}): "
+                f"it serves {', '.join(spec.kinematics)} robots"
+            )
     return None
 
 
@@ -164,7 +180,8 @@ class CueState:
 
     def to_json(self, stamp: float) -> str:
         toggles = {c: on for c, on in dataclasses.asdict(self.toggles).items() if c in self.cues}  # type: ignore[call-overload]
-        return json.dumps({"stamp": round(stamp, 4), "toggles": toggles, **self.values}, sort_keys=True)  # (the console lists these)
+        # (the console lists these)
+        return json.dumps({"stamp": round(stamp, 4), "toggles": toggles, **self.values}, sort_keys=True)
 
     @staticmethod
     def from_json(text: str) -> tuple[float, CueState]:
@@ -175,7 +192,8 @@ class CueState:
                 raise ValueError(f"{len(text)} characters")
             d = json.loads(text)
             toggles = Toggles(**{k: bool(v) for k, v in d["toggles"].items() if k in CUES})
-            cues = tuple(c for c in CUE_SPECS if CUE_SPECS[c].key in d)  # (the robot's: each has its value, hidden or not)
+            # (the robot's: each has its value, hidden or not)
+            cues = tuple(c for c in CUE_SPECS if CUE_SPECS[c].key in d)
             values = {CUE_SPECS[c].key: d[CUE_SPECS[c].key] for c in cues}
             for key, cast in CASTS.items():  # (HAVEN's values, checked; a lab's cue's are its JSON)
                 if values.get(key) is not None:
@@ -189,7 +207,8 @@ class CueState:
 class CueFrame:
     markers: list[MarkerSpec]
     state: CueState
-    ways: dict[str, tuple[tuple[Point, ...], bool]] = field(default_factory=dict)  # cue -> (the way it shows, drawn on the robot)
+    # cue -> (the way it shows, drawn on the robot)
+    ways: dict[str, tuple[tuple[Point, ...], bool]] = field(default_factory=dict)
 
 
 class ArCues:
@@ -198,14 +217,23 @@ class ArCues:
     deadline (common/contain.py) is in `failed` and shows nothing from then on; the viz says so (a
     `plugin_failed` event), which ends the trial, not valid."""
 
-    def __init__(self, params: CueParams | None = None, names: Sequence[str] | None = None, robot: RobotDescription = DEFAULT) -> None:
+    def __init__(
+        self, params: CueParams | None = None, names: Sequence[str] | None = None, robot: RobotDescription = DEFAULT
+    ) -> None:
         self.params = params or CueParams()
         self.robot = robot
-        self.failed: dict[str, str] = {}  # cue -> its error, for a cue whose code raised (it shows nothing from then on)
+        # cue -> its error, for a cue whose code raised (it shows nothing from then on)
+        self.failed: dict[str, str] = {}
         self.cues: dict[str, Cue] = {}
-        self.names = tuple(n for n in (CUES if names is None else names) if n not in CUE_SPECS or serves(CUE_SPECS[n], robot.kinematics))
+        self.names = tuple(
+            n
+            for n in (CUES if names is None else names)
+            if n not in CUE_SPECS or serves(CUE_SPECS[n], robot.kinematics)
+        )
         flight = robot.flight
-        self.flight_z_m = flight.cruise_height_m if flight is not None and robot.kinematics is Kinematics.AERIAL else 0.0
+        self.flight_z_m = (
+            flight.cruise_height_m if flight is not None and robot.kinematics is Kinematics.AERIAL else 0.0
+        )
         for n in self.names:
             try:
                 self.cues[n] = contain.call("cues", n, CUE_SPECS[n].make, self.params)
@@ -273,7 +301,12 @@ class ArCues:
         return CueFrame(out, CueState(toggles, values, self.names), ways)
 
     def markers(
-        self, robot: Pose2D, humans: Sequence[Point] = (), battery_level: float | None = None, thought: str = "", toggles: CueToggles | None = None
+        self,
+        robot: Pose2D,
+        humans: Sequence[Point] = (),
+        battery_level: float | None = None,
+        thought: str = "",
+        toggles: CueToggles | None = None,
     ) -> list[MarkerSpec]:
         return self.frame(robot, humans, battery_level, thought, toggles).markers
 
@@ -281,7 +314,9 @@ class ArCues:
         """Where the projected path's markers not yet consumed are (all of them, whatever `steps_ahead`),
         nearest the robot first, after the robot reached `robot` (what a participant can look at)."""
         self.path.advance(robot)
-        shown = PathProjection(dataclasses.replace(self.params, steps_ahead=0)).show(CueContext(robot, self.path), markers=False)
+        shown = PathProjection(dataclasses.replace(self.params, steps_ahead=0)).show(
+            CueContext(robot, self.path), markers=False
+        )
         return list(shown.way) if shown is not None else []
 
     def signal_side(self, robot: Pose2D, now: float | None = None) -> int:

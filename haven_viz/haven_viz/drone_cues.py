@@ -4,9 +4,9 @@ pp. 316-324, doi:10.1145/3171221.3171253), as `haven.cues` plugins for aerial ro
 (`kinematics = ("aerial",)`: a robot of another kind has none of them):
 
   * NavPoints (`nav_points`): the next `nav_points_ahead` waypoints of the remaining path (its
-    corners, every `nav_point_spacing_m` along it between them, and its end) as spheres at flight height, joined by a line from
-    the robot, each with a countdown of its estimated arrival in seconds (distance along the path /
-    the robot's cruise speed);
+    corners, every `nav_point_spacing_m` along it between them, and its end) as spheres at flight height, joined by a
+    line from the robot, each with a countdown of its estimated arrival in seconds (distance along the path / the
+    robot's cruise speed);
   * Arrow (`arrow`): one 3D arrow on the robot pointing at the next waypoint;
   * Gaze (`gaze`): an eye on the robot (a white ball and a dark pupil) looking at the point
     `gaze_lookahead_m` ahead along the path.
@@ -59,13 +59,17 @@ def corners(path: TrackedPath) -> list[float]:
     idx = [0, *kept, len(xy) - 1]
     out = []
     for a, b, c in zip(idx, idx[1:], idx[2:], strict=False):
-        turn = math.atan2(xy[c][1] - xy[b][1], xy[c][0] - xy[b][0]) - math.atan2(xy[b][1] - xy[a][1], xy[b][0] - xy[a][0])
+        turn = math.atan2(xy[c][1] - xy[b][1], xy[c][0] - xy[b][0]) - math.atan2(
+            xy[b][1] - xy[a][1], xy[b][0] - xy[a][0]
+        )
         if abs(math.remainder(turn, math.tau)) >= math.radians(CORNER_DEG):
             out.append(cum[b])
     return out
 
 
-def waypoints(path: TrackedPath, params: CueParams, turns: list[float] | None = None) -> list[tuple[float, float, float]]:
+def waypoints(
+    path: TrackedPath, params: CueParams, turns: list[float] | None = None
+) -> list[tuple[float, float, float]]:
     """(x, y, s) of the waypoints not yet reached: the path's corners (`turns`, default: found
     here), and between them every `nav_point_spacing_m` along the path (none within half of that of
     a corner), and its end, beyond `consume_distance_m` ahead of the robot, nearest first."""
@@ -144,7 +148,18 @@ class NavPoints:
         for i, (x, y, s) in enumerate(points):
             eta = (s - ctx.path.progress) / speed
             specs.append(MarkerSpec(NAV_NS, 1 + 2 * i, Shape.SPHERE, (x, y, z), 0.0, (size,) * 3, color))
-            specs.append(MarkerSpec(NAV_NS, 2 + 2 * i, Shape.TEXT_VIEW_FACING, (x, y, z + size), 0.0, (0.0, 0.0, 0.12), TEXT_COLOUR, f"{eta:.0f} s"))
+            specs.append(
+                MarkerSpec(
+                    NAV_NS,
+                    2 + 2 * i,
+                    Shape.TEXT_VIEW_FACING,
+                    (x, y, z + size),
+                    0.0,
+                    (0.0, 0.0, 0.12),
+                    TEXT_COLOUR,
+                    f"{eta:.0f} s",
+                )
+            )
         return Shown(len(points), specs, way, on_robot=False)
 
 
@@ -166,7 +181,15 @@ class Arrow:
         robot = ctx.robot
         yaw = math.atan2(y - robot.y, x - robot.x)
         length = min(0.5, max(0.15, math.hypot(x - robot.x, y - robot.y)))
-        spec = MarkerSpec(ARROW_NS, 0, Shape.ARROW, (robot.x, robot.y, _arrow_z(ctx)), yaw, (length, 0.06, 0.1), SCHEMES[self.params.scheme])
+        spec = MarkerSpec(
+            ARROW_NS,
+            0,
+            Shape.ARROW,
+            (robot.x, robot.y, _arrow_z(ctx)),
+            yaw,
+            (length, 0.06, 0.1),
+            SCHEMES[self.params.scheme],
+        )
         return Shown(round(math.degrees(yaw)), [spec] if markers else [], ((x, y),), on_robot=True)
 
 
@@ -189,8 +212,12 @@ class Gaze:
         if not markers:
             return Shown(round(math.degrees(yaw)), [], ((gx, gy),), on_robot=True)
         z = _eye_z(ctx)
-        # The eye sits on the robot's front in the direction it looks; the pupil on the ball's surface, toward the look-at point.
-        ex, ey = robot.x + ctx.mounts.signal_offset_m * 0.5 * math.cos(yaw), robot.y + ctx.mounts.signal_offset_m * 0.5 * math.sin(yaw)
+        # The eye sits on the robot's front in the direction it looks; the pupil on the ball's surface, toward the
+        # look-at point.
+        ex, ey = (
+            robot.x + ctx.mounts.signal_offset_m * 0.5 * math.cos(yaw),
+            robot.y + ctx.mounts.signal_offset_m * 0.5 * math.sin(yaw),
+        )
         dz = _height(ctx) - z
         dist = math.hypot(math.hypot(gx - ex, gy - ey), dz)
         k = (EYE_RADIUS_M - PUPIL_RADIUS_M / 2.0) / max(dist, 1e-6)

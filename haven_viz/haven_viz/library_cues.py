@@ -11,9 +11,9 @@ paper had.
     scheme; from the robot to the goal.
   * `projected_arrows`: short arrows along the path and a sphere at the destination, flat on the
     floor, after Han, Parrillo, Wilkinson, Yanco & Williams, "Projecting Robot Navigation Paths:
-    Hardware and Software for Projected AR", HRI 2022 (Short Contributions), whose ROS code (github.com/umhan35/arrow_projection,
-    src/PathProjection.cpp) we follow: path points `HAN_SPACING_M` apart paired into arrows (so
-    arrows 0.1 m long with 0.1 m gaps), magenta, 0.06 m shafts and 0.08 m heads, and a 0.12 m green
+    Hardware and Software for Projected AR", HRI 2022 (Short Contributions), whose ROS code
+    (github.com/umhan35/arrow_projection, src/PathProjection.cpp) we follow: path points `HAN_SPACING_M` apart paired
+    into arrows (so arrows 0.1 m long with 0.1 m gaps), magenta, 0.06 m shafts and 0.08 m heads, and a 0.12 m green
     sphere at the destination. A projector needs a floor under it: ground robots only.
   * `light_ring`: lights on the robot's body, after Szafir, Mutlu & Fong, "Communicating
     Directionality in Flying Robots", HRI 2015, pp. 19-26, doi:10.1145/2696454.2696475 (a ring of
@@ -40,7 +40,8 @@ FLOOR_Z_M = 0.01  # projected cues lie just above the floor (clear of it in the 
 PATH_LINE_WIDTH_M = 0.05  # ours: a projector's line about as wide as the projected path's markers are small
 PATH_LINE_STEP_M = 0.1  # the band follows the path's arcs this finely
 HAN_SPACING_M = 0.1  # arrow_projection: DISTANCE_BETWEEN, path points this far apart ...
-HAN_SHAFT_M, HAN_HEAD_M, HAN_GOAL_M = 0.06, 0.08, 0.12  # ... its arrows' shaft and head diameters, the destination sphere's
+# ... its arrows' shaft and head diameters, the destination sphere's
+HAN_SHAFT_M, HAN_HEAD_M, HAN_GOAL_M = 0.06, 0.08, 0.12
 MAGENTA: Color = (1.0, 0.0, 1.0, 1.0)  # arrow_projection's arrows
 GREEN: Color = (0.0, 1.0, 0.0, 1.0)  # ... and destination
 MAX_ARROWS = 150  # arrows drawn at most (30 m of path): a marker array stays small
@@ -92,14 +93,27 @@ class PathLine:
         way = tuple(points[1:])
         if not markers:
             return Shown(remaining, [], way, on_robot=False)
-        band = MarkerSpec(LINE_NS, 0, Shape.TRIANGLE_LIST, color=SCHEMES[self.params.scheme], points=_band(points, PATH_LINE_WIDTH_M, FLOOR_Z_M))
+        band = MarkerSpec(
+            LINE_NS,
+            0,
+            Shape.TRIANGLE_LIST,
+            color=SCHEMES[self.params.scheme],
+            points=_band(points, PATH_LINE_WIDTH_M, FLOOR_Z_M),
+        )
         return Shown(remaining, [band], way, on_robot=False)
 
 
 class ProjectedArrows:
     """Arrows along the path and the destination, projected on the floor (Han et al. 2022)."""
 
-    key, hidden, exposure, rank, kinematics, default_on = "projected_arrows", 0, "projected_arrows_shown_s", 11, GROUND, False
+    key, hidden, exposure, rank, kinematics, default_on = (
+        "projected_arrows",
+        0,
+        "projected_arrows_shown_s",
+        11,
+        GROUND,
+        False,
+    )
 
     def __init__(self, params: CueParams) -> None:
         self.params = params
@@ -126,7 +140,11 @@ class ProjectedArrows:
             )
             for i, ((ax, ay), (bx, by)) in enumerate(pairs)
         ]
-        specs.append(MarkerSpec(ARROWS_NS, 0, Shape.SPHERE, (goal[0], goal[1], FLOOR_Z_M), 0.0, (HAN_GOAL_M, HAN_GOAL_M, 0.01), GREEN))
+        specs.append(
+            MarkerSpec(
+                ARROWS_NS, 0, Shape.SPHERE, (goal[0], goal[1], FLOOR_Z_M), 0.0, (HAN_GOAL_M, HAN_GOAL_M, 0.01), GREEN
+            )
+        )
         return Shown(len(pairs), specs, way, on_robot=False)
 
 
@@ -145,14 +163,21 @@ class LightRing:
             return None
         robot = ctx.robot
         x, y, _ = ahead[0]
-        bearing = wrap_angle(math.atan2(y - robot.y, x - robot.x) - robot.yaw) if math.hypot(x - robot.x, y - robot.y) > 1e-3 else 0.0
+        bearing = (
+            wrap_angle(math.atan2(y - robot.y, x - robot.x) - robot.yaw)
+            if math.hypot(x - robot.x, y - robot.y) > 1e-3
+            else 0.0
+        )
         side = self.signal.side(robot, ctx.path, ctx.now, ctx.manoeuvre)
         blink_on = side != 0 and (ctx.now is None or (ctx.now * BLINK_HZ) % 1.0 < 0.5)
         value = {"bearing_deg": round(math.degrees(bearing)), "blink": side}
         way = ((x, y),)
         if not markers:
             return Shown(value, [], way)
-        radius, z = max(LED_RADIUS_M, ctx.half_width_m - LED_RADIUS_M), ctx.robot_z_m + ctx.robot_height_m + LED_RADIUS_M
+        radius, z = (
+            max(LED_RADIUS_M, ctx.half_width_m - LED_RADIUS_M),
+            ctx.robot_z_m + ctx.robot_height_m + LED_RADIUS_M,
+        )
         lit = SCHEMES[self.params.scheme]
         specs = []
         for i in range(LIGHT_RING_LEDS):

@@ -43,7 +43,8 @@ _LAYER = {
 }
 
 
-PERSON_TRAILS = ("tab:red", "tab:orange", "tab:purple", "tab:brown")  # the people's tracks, in turn (the robot's: black)
+# the people's tracks, in turn (the robot's: black)
+PERSON_TRAILS = ("tab:red", "tab:orange", "tab:purple", "tab:brown")
 
 
 def _rgb(c: Sequence[float]) -> tuple[float, float, float, float]:
@@ -134,7 +135,11 @@ def render_scene(
     ax.set_facecolor((0.97, 0.97, 0.95))
     for kind, shapes in (("wall", world.walls), ("obstacle", world.obstacles)):
         if shapes:  # (one collection: a world made from a map has thousands of wall boxes)
-            ax.add_collection(PolyCollection([s.polygon for s in shapes], closed=True, facecolors=COLORS[kind], edgecolors="none", zorder=2))
+            ax.add_collection(
+                PolyCollection(
+                    [s.polygon for s in shapes], closed=True, facecolors=COLORS[kind], edgecolors="none", zorder=2
+                )
+            )
     for o in world.obstructions:
         if o.id not in removed:
             ax.add_patch(Polygon(o.shape.polygon, closed=True, facecolor=COLORS["obstruction"], hatch="//", zorder=2))
@@ -147,7 +152,9 @@ def render_scene(
     shown: set[str] = set()
     for x, y, kind in events:
         symbol, color = EVENT_SYMBOLS.get(kind, ("o", "tab:blue"))
-        ax.plot([x], [y], symbol, color=color, ms=7, mec="white", mew=0.6, zorder=9.6, label=None if kind in shown else kind)
+        ax.plot(
+            [x], [y], symbol, color=color, ms=7, mec="white", mew=0.6, zorder=9.6, label=None if kind in shown else kind
+        )
         shown.add(kind)
     for m in sorted(markers, key=lambda m: _LAYER.get(m.ns, 5)):
         _draw(ax, m)

@@ -6,7 +6,8 @@ into HAVEN's AR cues (`cues.ArCues`) plus the moving bodies, sending only what c
 joins and every `refresh_period_s`, for viewers and bag replays that start late or missed a message.
 What is shown goes out as data on /haven/cue_state when it changes. The world (walls, rooms,
 gems, base) goes on /haven/world_markers, again when a gem is collected or an obstruction removed.
-The cue toggles are the study condition (a cue the robot does not have shows nothing); every change is a `cue_toggled` event.
+The cue toggles are the study condition (a cue the robot does not have shows nothing); every change is a `cue_toggled`
+event.
 """
 
 from __future__ import annotations
@@ -41,7 +42,9 @@ class VizConfig:
     cues: CueParams = group(CueParams)
     world: str = param("", "world file for the world markers (haven sim passes its world)")
     rate_hz: float = param(10.0, "cue update rate (sim time)", POSITIVE)
-    refresh_period_s: float = param(2.0, "everything is re-sent this often (late viewers, bag replay from the middle)", POSITIVE)
+    refresh_period_s: float = param(
+        2.0, "everything is re-sent this often (late viewers, bag replay from the middle)", POSITIVE
+    )
     map_frame: str = param("map", "frame of the markers")
 
     def __post_init__(self) -> None:
@@ -161,7 +164,13 @@ class VizComponent:
             if cue not in self.told:
                 self.told.add(cue)
                 self.warnings.append(f"cue {cue} failed and is not shown from now on: {error}")
-                out.append(Message(topics.EVENTS, contain.failed_event(contain.PluginFailed("cues", cue, error), now, Source.VIZ), now))
+                out.append(
+                    Message(
+                        topics.EVENTS,
+                        contain.failed_event(contain.PluginFailed("cues", cue, error), now, Source.VIZ),
+                        now,
+                    )
+                )
         return out
 
     def viewer_joined(self) -> None:
@@ -187,14 +196,26 @@ class VizComponent:
         thought = wizard.text if wizard is not None else self.thought
         everywhere = wizard is not None and wizard.everywhere
         frame = self.cues.frame(
-            self.robot, humans_xy, self.battery, thought, self.toggles, now, markers=shown, altitude_m=self.altitude_m, thought_everywhere=everywhere
+            self.robot,
+            humans_xy,
+            self.battery,
+            thought,
+            self.toggles,
+            now,
+            markers=shown,
+            altitude_m=self.altitude_m,
+            thought_everywhere=everywhere,
         )
         out += self._failures(now)
-        refresh = self._refresh_now or self._last_refresh is None or now - self._last_refresh >= self.config.refresh_period_s
+        refresh = (
+            self._refresh_now or self._last_refresh is None or now - self._last_refresh >= self.config.refresh_period_s
+        )
         if refresh:
             self._last_refresh, self._refresh_now = now, False
         if shown:
-            update = self.ar_diff.update(frame.markers + body_markers(self.robot, self.humans, self.config.description), resend_all=refresh)
+            update = self.ar_diff.update(
+                frame.markers + body_markers(self.robot, self.humans, self.config.description), resend_all=refresh
+            )
             if update:
                 out.append(Message(topics.AR_MARKERS, update, now))
         if frame.state != self.state:  # on change only (latched: a late reader gets the last one)

@@ -44,7 +44,11 @@ def triangulate(polygon: Sequence[Point]) -> list[tuple[Point, Point, Point]]:
             a, b, c = pts[i0], pts[i1], pts[i2]
             if cross(a, b, c) <= 1e-12:
                 continue  # reflex or degenerate corner: not an ear
-            if any(cross(a, b, pts[j]) >= 0 and cross(b, c, pts[j]) >= 0 and cross(c, a, pts[j]) >= 0 for j in idx if j not in (i0, i1, i2)):
+            if any(
+                cross(a, b, pts[j]) >= 0 and cross(b, c, pts[j]) >= 0 and cross(c, a, pts[j]) >= 0
+                for j in idx
+                if j not in (i0, i1, i2)
+            ):
                 continue
             tris.append((a, b, c))
             idx.pop(k)
@@ -70,15 +74,28 @@ def world_markers(world: World, collected: Collection[str] = (), removed: Collec
     """Static scene: re-sent only when a gem is collected or an obstruction removed."""
     out: list[MarkerSpec] = []
     for kind, shapes in (("wall", world.walls), ("obstacle", world.obstacles)):
-        tris = tuple(p for s in shapes for p in _prism(s.polygon, WALL_HEIGHT_M))  # (one pass: a map world has thousands)
+        # (one pass: a map world has thousands)
+        tris = tuple(p for s in shapes for p in _prism(s.polygon, WALL_HEIGHT_M))
         if tris:
             out.append(MarkerSpec(f"{kind}s", 0, Shape.TRIANGLE_LIST, color=COLORS[kind], points=tris))
     for i, o in enumerate(world.obstructions):
         if o.id not in removed:
-            out.append(MarkerSpec("obstructions", i, Shape.TRIANGLE_LIST, color=COLORS["obstruction"], points=_prism(o.shape.polygon, WALL_HEIGHT_M)))
+            out.append(
+                MarkerSpec(
+                    "obstructions",
+                    i,
+                    Shape.TRIANGLE_LIST,
+                    color=COLORS["obstruction"],
+                    points=_prism(o.shape.polygon, WALL_HEIGHT_M),
+                )
+            )
     for i, r in enumerate(world.rooms):
         x, y = r.centre
-        out.append(MarkerSpec("rooms", i, Shape.TEXT_VIEW_FACING, (x, y, 0.05), 0.0, (0.0, 0.0, 0.3), COLORS["room_text"], r.name))
+        out.append(
+            MarkerSpec(
+                "rooms", i, Shape.TEXT_VIEW_FACING, (x, y, 0.05), 0.0, (0.0, 0.0, 0.3), COLORS["room_text"], r.name
+            )
+        )
     for i, g in enumerate(world.gems):
         if g.id in collected:
             continue
@@ -86,23 +103,52 @@ def world_markers(world: World, collected: Collection[str] = (), removed: Collec
         x, y = g.position
         out.append(MarkerSpec("gems", i, Shape.CUBE, (x, y, 0.25), math.pi / 4, (0.18, 0.18, 0.18), color))
         area = (color[0], color[1], color[2], 0.25)
-        out.append(MarkerSpec("gem_areas", i, Shape.CYLINDER, (x, y, 0.005), 0.0, (2 * g.radius, 2 * g.radius, 0.01), area))
+        out.append(
+            MarkerSpec("gem_areas", i, Shape.CYLINDER, (x, y, 0.005), 0.0, (2 * g.radius, 2 * g.radius, 0.01), area)
+        )
     if world.charging_base is not None:
         (bx, by), br = world.charging_base.position, world.charging_base.radius
-        out.append(MarkerSpec("charging_base", 0, Shape.CYLINDER, (bx, by, 0.02), 0.0, (2 * br, 2 * br, 0.04), COLORS["base"]))
+        out.append(
+            MarkerSpec("charging_base", 0, Shape.CYLINDER, (bx, by, 0.02), 0.0, (2 * br, 2 * br, 0.04), COLORS["base"])
+        )
     return out
 
 
-def body_markers(robot: Pose2D, humans: Mapping[str, Pose2D], description: RobotDescription = DEFAULT, z: float = 0.0) -> list[MarkerSpec]:
+def body_markers(
+    robot: Pose2D, humans: Mapping[str, Pose2D], description: RobotDescription = DEFAULT, z: float = 0.0
+) -> list[MarkerSpec]:
     """The robot (a cylinder of its footprint's size, with a heading arrow; `z` above the floor)
     and each human (a tall cylinder)."""
     r, rh = description.radius_m, description.height_m
     out = [
-        MarkerSpec("robot", 0, Shape.CYLINDER, (robot.x, robot.y, z + rh / 2), robot.yaw, (2 * r, 2 * r, rh), COLORS["robot"]),
-        MarkerSpec("robot", 1, Shape.ARROW, (robot.x, robot.y, z + rh + 0.02), robot.yaw, (0.25, 0.05, 0.05), (1.0, 1.0, 1.0, 1.0)),
+        MarkerSpec(
+            "robot", 0, Shape.CYLINDER, (robot.x, robot.y, z + rh / 2), robot.yaw, (2 * r, 2 * r, rh), COLORS["robot"]
+        ),
+        MarkerSpec(
+            "robot",
+            1,
+            Shape.ARROW,
+            (robot.x, robot.y, z + rh + 0.02),
+            robot.yaw,
+            (0.25, 0.05, 0.05),
+            (1.0, 1.0, 1.0, 1.0),
+        ),
     ]
     h, hh = HUMAN_BODY.radius_m, HUMAN_BODY.height_m
     for i, (hid, p) in enumerate(humans.items()):
-        out.append(MarkerSpec("humans", i, Shape.CYLINDER, (p.x, p.y, hh / 2), p.yaw, (2 * h, 2 * h, hh), COLORS["human"]))
-        out.append(MarkerSpec("human_names", i, Shape.TEXT_VIEW_FACING, (p.x, p.y, hh + 0.2), 0.0, (0.0, 0.0, 0.2), (0.1, 0.1, 0.1, 1.0), hid))
+        out.append(
+            MarkerSpec("humans", i, Shape.CYLINDER, (p.x, p.y, hh / 2), p.yaw, (2 * h, 2 * h, hh), COLORS["human"])
+        )
+        out.append(
+            MarkerSpec(
+                "human_names",
+                i,
+                Shape.TEXT_VIEW_FACING,
+                (p.x, p.y, hh + 0.2),
+                0.0,
+                (0.0, 0.0, 0.2),
+                (0.1, 0.1, 0.1, 1.0),
+                hid,
+            )
+        )
     return out

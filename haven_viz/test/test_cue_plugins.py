@@ -23,14 +23,19 @@ class Beacon:
     def show(self, ctx: CueContext, markers: bool) -> Shown | None:
         if ctx.path.remaining_m <= 0:
             return None
-        light = MarkerSpec("beacon", 0, Shape.SPHERE, (ctx.robot.x, ctx.robot.y, ctx.robot_height_m + 0.1), 0.0, (0.1, 0.1, 0.1))
+        light = MarkerSpec(
+            "beacon", 0, Shape.SPHERE, (ctx.robot.x, ctx.robot.y, ctx.robot_height_m + 0.1), 0.0, (0.1, 0.1, 0.1)
+        )
         return Shown(True, [light] if markers else [])
 
 
 def test_havens_cues_are_registered_plugins_in_their_order():
     reg = plugins.registry("cues")
     assert CUES[:4] == ("path_projection", "turn_signals", "thought_bubble", "battery_indicator")
-    assert all(reg.items[c].package == "haven_viz" and reg.items[c].target.startswith("haven_viz.builtin_cues:") for c in CUES[:4])
+    assert all(
+        reg.items[c].package == "haven_viz" and reg.items[c].target.startswith("haven_viz.builtin_cues:")
+        for c in CUES[:4]
+    )
 
 
 def test_a_broken_or_clashing_cue_is_one_line_and_the_others_stay():
@@ -40,7 +45,9 @@ def test_a_broken_or_clashing_cue_is_one_line_and_the_others_stay():
     reg = plugins.load(
         "cues",
         [
-            Entry("thought_bubble", "haven_viz.builtin_cues:ThoughtBubble", "haven_viz", CUE_SPECS["thought_bubble"].make),
+            Entry(
+                "thought_bubble", "haven_viz.builtin_cues:ThoughtBubble", "haven_viz", CUE_SPECS["thought_bubble"].make
+            ),
             Entry("beacon", "lab.cues:Beacon", "lab_cues", Beacon),
             Entry("thinks", "lab.cues:Thinks", "lab_cues", Thinks),
             Entry("text", "lab.cues:TEXT", "lab_cues", "not a class"),
@@ -59,7 +66,10 @@ def test_a_broken_or_clashing_cue_is_one_line_and_the_others_stay():
     assert not hasattr(Beacon, "key") and beacon.make is Beacon  # (read, never written onto the lab's class)
     said = "\n".join(reg.problems)
     assert len(reg.problems) == 2 and "haven.cues text (lab.cues:TEXT, from lab_cues): is not a cue" in said
-    assert "haven.cues thinks (lab.cues:Thinks, from lab_cues): its state key 'thought' is taken by cue thought_bubble" in said
+    assert (
+        "haven.cues thinks (lab.cues:Thinks, from lab_cues): its state key 'thought' is taken by cue thought_bubble"
+        in said
+    )
     assert "thinks" in reg.left_out and "thinks" not in reg
 
 
@@ -67,7 +77,9 @@ def test_a_labs_cue_is_drawn_said_and_read_back_like_havens(monkeypatch):
     import haven_viz.cues as cues
 
     monkeypatch.setitem(cues.CUE_SPECS, "beacon", accept_plugin("beacon", Beacon))  # (as if installed)
-    both = dataclasses.make_dataclass("Both", [("path_projection", bool, True), ("beacon", bool, True)], bases=(CueToggles,), frozen=True)
+    both = dataclasses.make_dataclass(
+        "Both", [("path_projection", bool, True), ("beacon", bool, True)], bases=(CueToggles,), frozen=True
+    )
     arcues = ArCues(CueParams(), names=["path_projection", "beacon"])
     arcues.set_path([Pose2D(0.0, 0.0, 0.0), Pose2D(2.0, 0.0, 0.0)])
     frame = arcues.frame(Pose2D(0.0, 0.0, 0.0), toggles=both())
@@ -97,7 +109,9 @@ def test_a_cue_that_raises_shows_nothing_from_then_on_and_is_said_once(monkeypat
 
     monkeypatch.setitem(cues.CUE_SPECS, "flaky", accept_plugin("flaky", Flaky))
     monkeypatch.setattr(cues, "CUES", (*cues.CUES, "flaky"))
-    both = dataclasses.make_dataclass("Both", [("path_projection", bool, True), ("flaky", bool, True)], bases=(CueToggles,), frozen=True)
+    both = dataclasses.make_dataclass(
+        "Both", [("path_projection", bool, True), ("flaky", bool, True)], bases=(CueToggles,), frozen=True
+    )
     viz = VizComponent()
     viz.toggles = both()
     viz.on_plan([Pose2D(0.0, 0.0, 0.0), Pose2D(3.0, 0.0, 0.0)], 0.0)

@@ -46,7 +46,10 @@ def test_spheres_on_straights_cubes_on_arcs_and_steps_ahead():
     assert all(m.scale == (0.2, 0.2, 0.2) for m in ms)
 
 
-@pytest.mark.parametrize("shape", [dict(spacing_m=0.05), dict(spacing_m=0.05, orientation="tangent", yaw_jitter_deg=1.0), dict(spacing_m=0.3)])
+@pytest.mark.parametrize(
+    "shape",
+    [dict(spacing_m=0.05), dict(spacing_m=0.05, orientation="tangent", yaw_jitter_deg=1.0), dict(spacing_m=0.3)],
+)
 def test_any_planners_arc_shows_cubes_on_the_arc_and_spheres_elsewhere(shape):
     """NavFn, Smac, sparse: cubes on the arc, spheres on the straights (within 0.15 m of where the
     arc begins and ends, either)."""
@@ -97,7 +100,9 @@ def test_thought_bubble_appears_near_a_human_with_hysteresis():
     assert of(cues.markers(robot, [(1.0, 0.0)], thought=""), THOUGHT_NS) == []  # nothing to say
 
 
-@pytest.mark.parametrize("level,band", [(1.0, 0), (0.81, 0), (0.8, 1), (0.61, 1), (0.6, 2), (0.41, 2), (0.21, 3), (0.2, 4), (0.0, 4)])
+@pytest.mark.parametrize(
+    "level,band", [(1.0, 0), (0.81, 0), (0.8, 1), (0.61, 1), (0.6, 2), (0.41, 2), (0.21, 3), (0.2, 4), (0.0, 4)]
+)
 def test_battery_colour_bands_follow_havens_thresholds(level, band):
     colors = [battery_color(x) for x in (0.9, 0.7, 0.5, 0.3, 0.1)]
     assert battery_color(level) == colors[band]

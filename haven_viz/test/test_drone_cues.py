@@ -20,7 +20,8 @@ pytestmark = pytest.mark.unit
 DRONE = resolve_robot("quadrotor")
 CRUISE_Z = DRONE.flight.cruise_height_m if DRONE.flight else 0.0
 STRAIGHT = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(9)]  # 4 m along x
-TURNING = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(5)] + [Pose2D(2.0, y * 0.5, math.pi / 2) for y in range(1, 5)]  # 2 m, left, 2 m
+# 2 m, left, 2 m
+TURNING = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(5)] + [Pose2D(2.0, y * 0.5, math.pi / 2) for y in range(1, 5)]
 DRONE_CUES = (NAV_NS, ARROW_NS, GAZE_NS)
 
 
@@ -54,7 +55,9 @@ def test_navpoints_are_the_next_waypoints_at_flight_height_with_countdowns(path)
     assert len(spheres) == len(texts) == n == frame.state.value(NAV_NS)
     assert all(m.position[2] == pytest.approx(CRUISE_Z) for m in spheres)
     # Every metre along the path: on a turning path the third is on the second leg.
-    assert flat(m.position[:2] for m in spheres) == pytest.approx(flat(cues.path.line.point_at(s) for s in (1.0, 2.0, 3.0)))
+    assert flat(m.position[:2] for m in spheres) == pytest.approx(
+        flat(cues.path.line.point_at(s) for s in (1.0, 2.0, 3.0))
+    )
     if path is TURNING:
         assert spheres[2].position[:2] == pytest.approx((2.0, 1.0))
     etas = [float(t.text.split()[0]) for t in texts]
@@ -66,12 +69,15 @@ def test_navpoints_are_the_next_waypoints_at_flight_height_with_countdowns(path)
 
 def test_a_corner_is_a_waypoint_and_grid_wiggle_is_not():
     # 2.3 m along x (with 1 cm cell wiggle), then 2 m along y.
-    poses = [Pose2D(0.05 * i, 0.01 * (i % 2), 0.0) for i in range(47)] + [Pose2D(2.3, 0.05 * j, math.pi / 2) for j in range(1, 41)]
+    poses = [Pose2D(0.05 * i, 0.01 * (i % 2), 0.0) for i in range(47)] + [
+        Pose2D(2.3, 0.05 * j, math.pi / 2) for j in range(1, 41)
+    ]
     path = TrackedPath(poses, CueParams().marker_spacing_m)
     (corner,) = corners(path)
     assert path.line.point_at(corner) == pytest.approx((2.3, 0.0), abs=0.011)
     stations = [s for _, _, s in waypoints(path, CueParams())]
-    assert stations == pytest.approx([1.0, corner, 3.0, 4.0, path.line.length])  # 2.0 gives way to the corner (0.35 m along)
+    # 2.0 gives way to the corner (0.35 m along)
+    assert stations == pytest.approx([1.0, corner, 3.0, 4.0, path.line.length])
 
 
 def test_the_countdown_decreases_as_the_drone_advances_and_reached_points_go():
@@ -91,7 +97,8 @@ def test_the_arrow_on_the_drone_points_at_the_next_waypoint(path, target):
     (arrow,) = of(frame.markers, ARROW_NS)
     assert arrow.shape is Shape.ARROW and arrow.position[:2] == (robot.x, robot.y)
     m = DRONE.cues
-    assert z + m.signal_height_m + 0.05 < arrow.position[2] < z + m.gauge_height_m - 0.05  # on the drone, clear of signals and gauge
+    # on the drone, clear of signals and gauge
+    assert z + m.signal_height_m + 0.05 < arrow.position[2] < z + m.gauge_height_m - 0.05
     assert arrow.yaw == pytest.approx(math.atan2(target[1] - robot.y, target[0] - robot.x))
     (way, on_robot) = frame.ways[ARROW_NS]
     assert flat(way) == pytest.approx(target) and on_robot  # seen with the robot
@@ -103,10 +110,16 @@ def test_the_gaze_eye_looks_along_the_path_ahead(path):
     robot = Pose2D(1.5, 0.0, 0.0)
     frame = cues.frame(robot, altitude_m=z)
     ball, pupil = of(frame.markers, GAZE_NS)
-    assert ball.shape is pupil.shape is Shape.SPHERE and ball.color[:3] == (1.0, 1.0, 1.0) and pupil.scale[0] < ball.scale[0]
+    assert (
+        ball.shape is pupil.shape is Shape.SPHERE
+        and ball.color[:3] == (1.0, 1.0, 1.0)
+        and pupil.scale[0] < ball.scale[0]
+    )
     look = cues.path.line.point_at(1.5 + CueParams().gaze_lookahead_m)
     direction = math.atan2(look[1] - ball.position[1], look[0] - ball.position[0])
-    assert math.atan2(pupil.position[1] - ball.position[1], pupil.position[0] - ball.position[0]) == pytest.approx(direction, abs=1e-6)
+    assert math.atan2(pupil.position[1] - ball.position[1], pupil.position[0] - ball.position[0]) == pytest.approx(
+        direction, abs=1e-6
+    )
     assert z < ball.position[2] < z + 1.0
     if path is TURNING:  # the eye looks left, round the corner, before the drone turns
         assert direction > 0.3
@@ -120,7 +133,10 @@ def test_havens_cues_and_the_projected_path_draw_at_the_drones_altitude():
     assert all(m.position[2] > 1.2 for m in frame.markers if m.ns == "battery_indicator")
     ground = ArCues()
     ground.set_path(STRAIGHT)
-    assert all(m.position[2] == pytest.approx(CueParams().marker_size_m / 2) for m in of(ground.frame(Pose2D(0.0, 0.0, 0.0)).markers, PATH_NS))
+    assert all(
+        m.position[2] == pytest.approx(CueParams().marker_size_m / 2)
+        for m in of(ground.frame(Pose2D(0.0, 0.0, 0.0)).markers, PATH_NS)
+    )
 
 
 def test_a_diff_drive_has_no_drone_cues_even_in_condition_all():

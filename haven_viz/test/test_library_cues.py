@@ -31,7 +31,8 @@ pytestmark = pytest.mark.unit
 
 LIBRARY = ("path_line", "projected_arrows", "light_ring")
 STRAIGHT = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(9)]  # 4 m along x
-TURNING = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(5)] + [Pose2D(2.0, y * 0.5, math.pi / 2) for y in range(1, 5)]  # 2 m, left, 2 m
+# 2 m, left, 2 m
+TURNING = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(5)] + [Pose2D(2.0, y * 0.5, math.pi / 2) for y in range(1, 5)]
 
 
 def frame(path, robot, cue, now=None, robot_desc=DEFAULT):
@@ -80,14 +81,18 @@ def test_projected_arrows_follow_han_et_al():
     assert len(arrows) == 20  # 4 m of path: points 0.1 m apart, paired into 0.1 m arrows with 0.1 m gaps
     assert all(a.color == MAGENTA and a.scale[0] == HAN_SPACING_M for a in arrows)
     first, last = arrows[0], arrows[-1]
-    assert first.yaw == pytest.approx(0.0, abs=1e-6) and last.yaw == pytest.approx(math.pi / 2, abs=1e-6)  # each points along the path
+    # each points along the path
+    assert first.yaw == pytest.approx(0.0, abs=1e-6) and last.yaw == pytest.approx(math.pi / 2, abs=1e-6)
     assert f.state.value("projected_arrows") == 20
 
 
 def test_projected_arrows_need_a_floor_the_drone_has_none():
     drone = resolve_robot("quadrotor")
     assert "projected_arrows" not in cues_for(drone.kinematics) and "path_line" in cues_for(drone.kinematics)
-    with pytest.raises(ValueError, match=r"^cue projected_arrows does not fit robot quadrotor \(aerial\): it serves diff_drive, omni robots$"):
+    with pytest.raises(
+        ValueError,
+        match=r"^cue projected_arrows does not fit robot quadrotor \(aerial\): it serves diff_drive, omni robots$",
+    ):
         check_fit(parse_condition(["path_projection", "projected_arrows"]), drone)
     check_fit(Toggles(), drone)  # `all`: every cue the robot has
     check_fit(parse_condition(["projected_arrows"]), DEFAULT)
@@ -131,7 +136,9 @@ def test_the_pass_side_rule_on_plain_data():
     from haven_viz.builtin_cues import CueParams, TurnSignals
     from haven_viz.cue_kind import Manoeuvre, TrackedPath
 
-    left_curve = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(3)] + [Pose2D(1.0 + y * 0.3, y * 0.5, 1.0) for y in range(1, 5)]
+    left_curve = [Pose2D(x * 0.5, 0.0, 0.0) for x in range(3)] + [
+        Pose2D(1.0 + y * 0.3, y * 0.5, 1.0) for y in range(1, 5)
+    ]
     path = TrackedPath(left_curve, 0.4)
     robot = Pose2D(0.0, 0.0, 0.0)
     signals = TurnSignals(CueParams())

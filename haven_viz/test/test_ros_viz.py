@@ -19,7 +19,17 @@ pytestmark = pytest.mark.ros
 
 
 def test_marker_conversion_round_trips():
-    spec = MarkerSpec("path_projection", 7, Shape.CUBE, (1.0, 2.0, 0.1), 0.5, (0.2, 0.2, 0.2), (1, 1, 0, 1), "", ((0, 0, 0), (1, 1, 1)))
+    spec = MarkerSpec(
+        "path_projection",
+        7,
+        Shape.CUBE,
+        (1.0, 2.0, 0.1),
+        0.5,
+        (0.2, 0.2, 0.2),
+        (1, 1, 0, 1),
+        "",
+        ((0, 0, 0), (1, 1, 1)),
+    )
     back = spec_from_msg(marker_msg(spec, 12.5))
     assert back.rounded() == spec.rounded()
 

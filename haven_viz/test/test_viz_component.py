@@ -37,11 +37,17 @@ def test_cue_state_is_published_as_data_and_changes_with_the_condition():
     first = viz.tick(0.0)
     assert by_topic(first, topics.WORLD_MARKERS)  # the world goes out with the first tick
     (state,) = by_topic(first, topics.CUE_STATE)
-    assert state.turn_signal == -1 and state.path_markers == 10 and state.thought == "" and state.toggles.thought_bubble is False
+    assert (
+        state.turn_signal == -1
+        and state.path_markers == 10
+        and state.thought == ""
+        and state.toggles.thought_bubble is False
+    )
     assert by_topic(viz.tick(0.1), topics.CUE_STATE) == []  # unchanged: not sent again
     out = viz.set_toggles({"thought_bubble": True, "path_projection": True}, 0.2)
     toggled = by_topic(out, topics.EVENTS)
-    assert [(e.kind, e["cue"], e["on"]) for e in toggled] == [(EventKind.CUE_TOGGLED, "thought_bubble", True)]  # only real changes
+    # only real changes
+    assert [(e.kind, e["cue"], e["on"]) for e in toggled] == [(EventKind.CUE_TOGGLED, "thought_bubble", True)]
     (shown,) = by_topic(out, topics.CUE_STATE)
     assert shown.thought == "Going to room B"
     assert CueState.from_json(shown.to_json(0.2)) == (0.2, shown)
@@ -54,7 +60,8 @@ def test_world_markers_follow_gems_and_a_viewer_joining_gets_everything():
     assert by_topic(viz.tick(0.1), topics.AR_MARKERS) == []  # nothing changed
     viz.viewer_joined()
     (full,) = by_topic(viz.tick(0.2), topics.AR_MARKERS)
-    assert sorted(m.key for m in full.upsert) == [("robot", 0), ("robot", 1)]  # no path, person or battery yet: the body
+    # no path, person or battery yet: the body
+    assert sorted(m.key for m in full.upsert) == [("robot", 0), ("robot", 1)]
     gem = viz.world.gems[0].id
     viz.on_event(event(EventKind.GEM_COLLECTED, 0.3, Source.SCENARIO, gem=gem, by="robot"), 0.3)
     (world,) = by_topic(viz.tick(0.3), topics.WORLD_MARKERS)

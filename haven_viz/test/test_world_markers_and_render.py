@@ -34,7 +34,12 @@ def test_world_markers_colour_gems_by_owner_and_drop_collected_ones():
 
 def test_body_markers_for_robot_and_each_human():
     ms = body_markers(Pose2D(1, 2, 0.5), {"ann": Pose2D(3, 3, 0), "bob": Pose2D(4, 4, 0)})
-    assert [(m.ns, m.id) for m in ms if m.ns in ("robot", "humans")] == [("robot", 0), ("robot", 1), ("humans", 0), ("humans", 1)]
+    assert [(m.ns, m.id) for m in ms if m.ns in ("robot", "humans")] == [
+        ("robot", 0),
+        ("robot", 1),
+        ("humans", 0),
+        ("humans", 1),
+    ]
     assert [m.text for m in ms if m.ns == "human_names"] == ["ann", "bob"]
 
 
@@ -47,7 +52,13 @@ def test_render_writes_a_picture_of_the_scene(tmp_path):
     robot = Pose2D(1.0, 2.5, math.pi / 2)
     markers = world_markers(world) + body_markers(robot, {"h1": Pose2D(2.0, 3.0, 0)})
     markers += cues.markers(robot, [(2.0, 3.0)], 0.3, "Going to gem r1")
-    out = render_scene(world, markers, tmp_path / "scene.png", title="test", trails={"robot": (np.array([[0.5, 2.5], [1.0, 2.5]]), "black")})
+    out = render_scene(
+        world,
+        markers,
+        tmp_path / "scene.png",
+        title="test",
+        trails={"robot": (np.array([[0.5, 2.5], [1.0, 2.5]]), "black")},
+    )
     img = mpimg.imread(out)
     assert img.shape[0] > 300 and img.shape[1] > 500
     yellow = (img[:, :, 0] > 0.85) & (img[:, :, 1] > 0.85) & (img[:, :, 2] < 0.2)

@@ -36,7 +36,15 @@ class FloorArrows:
         color = SCHEMES[self.params.scheme]
         half = ARROW_SIZE[0] / 2.0  # (an arrow marker starts at its position: centred on the point)
         specs = [
-            MarkerSpec("floor_arrows", i, Shape.ARROW, (x - half * math.cos(h), y - half * math.sin(h), 0.01), h, ARROW_SIZE, color)
+            MarkerSpec(
+                "floor_arrows",
+                i,
+                Shape.ARROW,
+                (x - half * math.cos(h), y - half * math.sin(h), 0.01),
+                h,
+                ARROW_SIZE,
+                color,
+            )
             for i, (x, y, h) in enumerate(ahead)
         ]
         return Shown(len(ahead), specs if markers else [], tuple((x, y) for x, y, _ in ahead), on_robot=False)

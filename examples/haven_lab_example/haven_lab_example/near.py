@@ -19,5 +19,10 @@ def seconds_near(d: Any) -> dict[str, float]:
 
 # The codebook's rows for its columns: (name, unit, definition, source).
 seconds_near.columns = [  # type: ignore[attr-defined]
-    ("seconds_within_2m", "s", f"time any person was within {NEAR_M:g} m of the robot, centre to centre", "haven_lab_example")
+    (
+        "seconds_within_2m",
+        "s",
+        f"time any person was within {NEAR_M:g} m of the robot, centre to centre",
+        "haven_lab_example",
+    )
 ]

@@ -14,6 +14,12 @@ HURRY = 4.0 / 3.0  # a third faster than the scenario's walking speed
 
 class Hurried(Walker):
     def __init__(
-        self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float = 1.0, seed: int = 0, params: PersonParams | None = None
+        self,
+        human_id: str,
+        stops: Sequence[Stop],
+        planner: Planner,
+        speed_mps: float = 1.0,
+        seed: int = 0,
+        params: PersonParams | None = None,
     ) -> None:
         super().__init__(human_id, stops, planner, speed_mps * HURRY, seed, params)

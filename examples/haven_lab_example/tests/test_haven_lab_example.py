@@ -33,9 +33,12 @@ def test_the_floor_arrows_lie_ahead_on_the_path_pointing_along_it():
     shown = FloorArrows(CueParams()).show(CueContext(Pose2D(0.0, 0.0, 0.0), path), markers=True)
     assert shown.value == len(AHEAD_M) and not shown.on_robot
     assert [(round(x, 2), round(y, 2)) for x, y in shown.way] == [(0.6, 0.0), (1.0, 0.2), (1.0, 0.8)]
-    assert [round(m.yaw, 2) for m in shown.markers] == [0.0, 1.57, 1.57] and all(m.position[2] < 0.05 for m in shown.markers)
+    assert [round(m.yaw, 2) for m in shown.markers] == [0.0, 1.57, 1.57] and all(
+        m.position[2] < 0.05 for m in shown.markers
+    )
     end = TrackedPath([Pose2D(0.0, 0.0, 0.0), Pose2D(0.5, 0.0, 0.0)], 0.4)
-    assert FloorArrows(CueParams()).show(CueContext(Pose2D(0.5, 0.0, 0.0), end), markers=True) is None  # (nothing ahead)
+    # (nothing ahead)
+    assert FloorArrows(CueParams()).show(CueContext(Pose2D(0.5, 0.0, 0.0), end), markers=True) is None
 
 
 def test_a_hurried_person_is_faster_than_a_walker():

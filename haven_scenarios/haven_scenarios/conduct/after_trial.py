@@ -49,10 +49,14 @@ def spec(text: str) -> str | dict[str, Any]:
         reg = plugins.registry("questionnaires")
         if text in reg.left_out:
             raise ValueError(f"--questionnaire {text[:80]}: {reg.unknown(text)}")
-        raise ValueError(f"--questionnaire {text[:80]}: neither a registered questionnaire ({', '.join(registered())}) nor a file")
+        raise ValueError(
+            f"--questionnaire {text[:80]}: neither a registered questionnaire ({', '.join(registered())}) nor a file"
+        )
     data = read_yaml(path, "questionnaire file")
     if not isinstance(data, dict):
-        raise ValueError(f"{file_label(path)}: must be a mapping of one Likert questionnaire (name, points, anchors, items)")
+        raise ValueError(
+            f"{file_label(path)}: must be a mapping of one Likert questionnaire (name, points, anchors, items)"
+        )
     from_mapping(data, file_label(path) + ":")
     return data
 
@@ -63,7 +67,9 @@ def specs(texts: Sequence[str] | None, web: bool, teleoperated: Sequence[str]) -
     if not texts:
         return ()
     if not web or not teleoperated:
-        raise ValueError("--questionnaire: participants answer in their pages: needs --web and teleoperated humans (--teleop)")
+        raise ValueError(
+            "--questionnaire: participants answer in their pages: needs --web and teleoperated humans (--teleop)"
+        )
     out = tuple(spec(text) for text in texts)
     resolve(list(out), "--questionnaire")
     return out
@@ -103,4 +109,7 @@ def wait_for_answers(sup: Supervisor, folder: Path, humans: Sequence[str], asked
 
 def summary(folder: Path, humans: Sequence[str], asked: Sequence[str], how: str | None) -> dict[str, Any]:
     """For session.json: what each participant answered, and how the questionnaires ended."""
-    return {"questionnaires_answered": answered(folder, humans, asked), "questionnaires_end": how or "not asked: the trial did not end normally"}
+    return {
+        "questionnaires_answered": answered(folder, humans, asked),
+        "questionnaires_end": how or "not asked: the trial did not end normally",
+    }

@@ -75,7 +75,9 @@ def terminal_asker(read: Read | None = None, write: Write | None = None) -> Call
     return lambda q: ask(q, read or input, write or print)
 
 
-def run_instruments(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, asker: Callable[[Questionnaire], dict[str, Any]] | None) -> bool:
+def run_instruments(
+    book: InstrumentBook, qs: Sequence[Questionnaire], key: str, asker: Callable[[Questionnaire], dict[str, Any]] | None
+) -> bool:
     """Ask what is pending of `qs` (None: a batch pilot, each stored as not asked); False when the
     participant declined consent (nothing after it is asked)."""
     for q in book.pending(qs):
@@ -111,20 +113,27 @@ DONE_AFTER = "Thank you for taking part: the study is over."
 def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, where: Served, first: bool) -> bool:
     """The participant answers what is pending of `qs` in their browser (web/instrument_server.py):
     prints the address, returns once all is answered (False: consent declined). `where`: the
-    study run's host, port and TLS files. ValueError (one line) if the address cannot be served; Ctrl-C ends the wait (KeyboardInterrupt)."""
+    study run's host, port and TLS files. ValueError (one line) if the address cannot be served; Ctrl-C ends the wait
+    (KeyboardInterrupt)."""
     from haven_scenarios.web.instrument_server import InstrumentServer  # (only with --web)
     from haven_scenarios.web.tls import server_context, tls_files
 
     files = tls_files(where.tls_cert, where.tls_key)
     tls = server_context(*files) if files else None
-    server = InstrumentServer(where.host, where.port, book, qs, key, DONE_BEFORE if first else DONE_AFTER, tls, where.next_url or "")
+    server = InstrumentServer(
+        where.host, where.port, book, qs, key, DONE_BEFORE if first else DONE_AFTER, tls, where.next_url or ""
+    )
     server.start()
     # Every stop signal ends the wait, as it ends `haven run`: also where the shell started this
     # in the background with SIGINT ignored (Python then leaves Ctrl-C ignored; the wait hung).
     try:
         with on_stop_signals(interrupted):
             when = "before the first trial" if first else "after the last trial"
-            print(f"web: participant {book.path.parent.name} ({when}: {', '.join(q.name for q in book.pending(qs))}): {server.url}", flush=True)
+            print(
+                f"web: participant {book.path.parent.name} ({when}: "
+                f"{', '.join(q.name for q in book.pending(qs))}): {server.url}",
+                flush=True,
+            )
             server.finished.wait()
     finally:
         server.stop()
@@ -132,4 +141,8 @@ def ask_in_browser(book: InstrumentBook, qs: Sequence[Questionnaire], key: str, 
 
 
 def say_declined(participant: str, folder: Path) -> None:
-    print(f"haven study: participant {participant} did not agree to take part: no trial is run (their answer is in {folder})", file=sys.stderr)
+    print(
+        f"haven study: participant {participant} did not agree to take part: "
+        f"no trial is run (their answer is in {folder})",
+        file=sys.stderr,
+    )

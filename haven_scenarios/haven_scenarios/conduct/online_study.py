@@ -34,12 +34,18 @@ def open_server(
         options["domains"] = parse_domains(options["domains"])
     o = ServeOptions(str(Path(s.source).resolve()), root, **options)
     if o.trial_ports and o.trial_ports[1] - o.trial_ports[0] + 1 < o.capacity:
-        raise ValueError(f"--trial-ports: {o.trial_ports[0]}-{o.trial_ports[1]} has fewer ports than --capacity {o.capacity}")
+        raise ValueError(
+            f"--trial-ports: {o.trial_ports[0]}-{o.trial_ports[1]} has fewer ports than --capacity {o.capacity}"
+        )
     try:  # (each participant's runner takes a domain of its own in the range: checked once, here)
         domains = o.domains or domains_of(os.environ)
     except DomainBusy as e:
         raise ValueError(str(e)) from None
     if domains is not None and len(domains.ids) < o.capacity:
-        raise ValueError(f"{domains}: fewer ROS domains than --capacity {o.capacity} (each participant's trial takes one)")
-    o = replace(o, tls=tls_files(tls_cert, tls_key), params_file=str(Path(params_file).resolve()) if params_file else None)
+        raise ValueError(
+            f"{domains}: fewer ROS domains than --capacity {o.capacity} (each participant's trial takes one)"
+        )
+    o = replace(
+        o, tls=tls_files(tls_cert, tls_key), params_file=str(Path(params_file).resolve()) if params_file else None
+    )
     return StudyServer(o, s, trials)

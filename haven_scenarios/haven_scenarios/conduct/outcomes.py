@@ -49,7 +49,9 @@ class Ended:
         code = self.recorder_code
         if code is None:
             return None
-        during = "during the trial" if self.died is not None and self.died.name == nodes.RECORDER.key else "while stopping"
+        during = (
+            "during the trial" if self.died is not None and self.died.name == nodes.RECORDER.key else "while stopping"
+        )
         return recorder_stop.record(exit_text("recorder", code), code, during)
 
     @property
@@ -77,7 +79,9 @@ def outcome(ended: Ended | None, end_reason: str | None, repaired: Repaired | No
     else:
         text = end_reason or "unknown: the metrics were not computed"
     code = ended.recorder_code if ended is not None else None
-    if code not in (None, 0) and not (ended is not None and ended.died is not None and ended.died.name == nodes.RECORDER.key):
+    if code not in (None, 0) and not (
+        ended is not None and ended.died is not None and ended.died.name == nodes.RECORDER.key
+    ):
         text += f"; {exit_text('recorder', code)} while stopping"
     if repaired is not None:
         text += f"; bag repaired ({repaired.messages} messages recovered)"
@@ -102,7 +106,10 @@ def write_outcome(folder: Path, info: dict[str, Any]) -> None:
     try:
         write_json(folder / SESSION_FILE, info)
     except OSError as e:
-        print(f"haven: error: cannot write {folder / SESSION_FILE}: {e.strerror or e} (outcome: {info['outcome']})", file=sys.stderr)
+        print(
+            f"haven: error: cannot write {folder / SESSION_FILE}: {e.strerror or e} (outcome: {info['outcome']})",
+            file=sys.stderr,
+        )
 
 
 def repair_bag(bag: Path, how: str = "haven repair") -> Repaired | None:
@@ -121,4 +128,9 @@ def repair_bag(bag: Path, how: str = "haven repair") -> Repaired | None:
 
 def repair_record(done: Repaired) -> dict[str, object]:
     """What session.json says about a repair."""
-    return {"messages": done.messages, "topics": done.topics, "kept": [str(p.relative_to(done.bag)) for p in done.kept], "skipped": done.skipped}
+    return {
+        "messages": done.messages,
+        "topics": done.topics,
+        "kept": [str(p.relative_to(done.bag)) for p in done.kept],
+        "skipped": done.skipped,
+    }

@@ -48,7 +48,8 @@ class {cls}:
             return None  # nothing to show now
         x, y, h = ahead[0]
         arrow = MarkerSpec(
-            "{name}", 0, Shape.ARROW, (x - 0.175 * math.cos(h), y - 0.175 * math.sin(h), 0.01), h, (0.35, 0.15, 0.02), SCHEMES[self.params.scheme]
+            "{name}", 0, Shape.ARROW, (x - 0.175 * math.cos(h), y - 0.175 * math.sin(h), 0.01), h, \
+(0.35, 0.15, 0.02), SCHEMES[self.params.scheme]
         )
         return Shown(1, [arrow] if markers else [], way=((x, y),), on_robot=False)
 ''',
@@ -306,7 +307,8 @@ def package_files(kind: str, name: str, python: str = "python") -> dict[str, str
         "conftest.py": CONFTEST,
         f"{package}/__init__.py": f'"""{meta["what_cap"]}: {name} (see {name}.py)."""\n',
         f"{package}/{name}.py": t.module.format(**fill),
-        f"tests/test_{name}.py": f'"""{name}: loaded as HAVEN loads it, and used in a trial."""\n\n' + t.test.format(**fill),
+        f"tests/test_{name}.py": f'"""{name}: loaded as HAVEN loads it, and used in a trial."""\n\n'
+        + t.test.format(**fill),
     }
     if t.data:
         files[f"{package}/{name}.yaml"] = t.data.format(**fill)

@@ -59,12 +59,22 @@ def simulate_participant(job: PoolJob) -> tuple[str, int, str]:
         ran += 1
         made = attempts(sessions, p.trial)
         if not (made and made[-1].finished):
-            return job.participant, ran, f"{p.trial.folder} did not finish ({made[-1].outcome if made else 'no session'})"
+            return (
+                job.participant,
+                ran,
+                f"{p.trial.folder} did not finish ({made[-1].outcome if made else 'no session'})",
+            )
     return job.participant, ran, ""
 
 
 def simulate_pool(
-    study: Study, size: int, root: Path, scenario: str | None, params_file: str | None, workers: int | None, cluster: str | None
+    study: Study,
+    size: int,
+    root: Path,
+    scenario: str | None,
+    params_file: str | None,
+    workers: int | None,
+    cluster: str | None,
 ) -> tuple[list[TrialResults], int]:
     """The pool's trial results (simulating what is not there yet: `scenario`'s trials only, if
     given; on `workers` processes, or a Dask `cluster`) and how many trials ran now."""
@@ -74,14 +84,23 @@ def simulate_pool(
             raise ValueError(f"scenario {s} has a teleoperated participant: the pool needs simulated ones")
     trials = bind(pool, root, replan=True)
     if scenario is not None and scenario not in [s.name for s in study.scenarios]:
-        raise ValueError(f"--scenario: {scenario!r} is not a scenario of study {study.name} ({', '.join(s.name for s in study.scenarios)})")
-    todo = sorted({p.trial.participant for p in progress(root, trials) if p.status != "done" and wanted(p.trial, scenario)})
+        raise ValueError(
+            f"--scenario: {scenario!r} is not a scenario of study "
+            f"{study.name} ({', '.join(s.name for s in study.scenarios)})"
+        )
+    todo = sorted(
+        {p.trial.participant for p in progress(root, trials) if p.status != "done" and wanted(p.trial, scenario)}
+    )
     params = str(Path(params_file).resolve()) if params_file else None
     jobs = [PoolJob(study.source, size, p, root, params, scenario) for p in todo]
     workers = workers or cores()
     ran = 0
     if jobs:
-        print(f"haven study power: simulating {len(jobs)} pool participant(s) on {cluster or f'{min(workers, len(jobs))} process(es)'}", flush=True)
+        print(
+            f"haven study power: simulating {len(jobs)} pool "
+            f"participant(s) on {cluster or f'{min(workers, len(jobs))} process(es)'}",
+            flush=True,
+        )
     for participant, n, problem in farm(jobs, simulate_participant, workers, cluster):
         ran += n
         if problem:
@@ -94,14 +113,19 @@ def simulate_pool(
 def orders(study: Study, n: int, scenario: str) -> list[Order]:
     """The condition orders the study gives n participants in one scenario (practice left out)."""
     s = with_participants(study, n)
-    return [tuple(t.condition for t in participant_schedule(s, p) if t.scenario == scenario and not t.practice) for p in s.participants]
+    return [
+        tuple(t.condition for t in participant_schedule(s, p) if t.scenario == scenario and not t.practice)
+        for p in s.participants
+    ]
 
 
 def measured_per_person(results: list[TrialResults], metric: str) -> bool:
     kinds = {bool(m.human) for r in results for m in r.measures if m.measure == metric}
     if not kinds:
         names = sorted({m.measure for r in results for m in r.measures})
-        raise ValueError(f"--metric: no measure {metric!r} in the pool's trials (some there are: {', '.join(names[:12])} ...)")
+        raise ValueError(
+            f"--metric: no measure {metric!r} in the pool's trials (some there are: {', '.join(names[:12])} ...)"
+        )
     return False not in kinds  # (a trial-level measure wins over a per-person one of the same name)
 
 

@@ -24,7 +24,15 @@ from typing import Any
 
 from haven_scenarios.conduct import after_trial, outcomes
 from haven_scenarios.conduct.after_trial import Asked
-from haven_scenarios.conduct.outcomes import NO_OUTCOME, Ended, exit_text, outcome, repair_bag, repair_record, write_outcome
+from haven_scenarios.conduct.outcomes import (
+    NO_OUTCOME,
+    Ended,
+    exit_text,
+    outcome,
+    repair_bag,
+    repair_record,
+    write_outcome,
+)
 from haven_scenarios.conduct.session_plan import SESSION_PARAMS_HEADER, SessionPlan, WebOptions, specs_of, web_spec
 from haven_scenarios.conduct.suite_processes import claim_ros_domain, port_free
 from haven_scenarios.record import recorder_stop
@@ -154,7 +162,8 @@ class TrialRequest:
     web: WebRequest | None = None
     questionnaires: tuple[str, ...] = ()  # in the pages after the trial: built-in names or Likert YAML files
     extra: dict[str, Any] = field(default_factory=dict)  # more for session.json
-    person: tuple[int, int] | None = None  # simulated people as a study participant: (person seed, position in the session)
+    # simulated people as a study participant: (person seed, position in the session)
+    person: tuple[int, int] | None = None
     robot: str | None = None  # a robot's name or a robot file (None: the scenario's robot: model, else turtlebot2)
 
 
@@ -168,7 +177,10 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
             raise ValueError(f"rtf: must be a positive number, got {repr(r.rtf)[:40]}")
         unknown = [n for n in r.without if n not in nodes.REPLACEABLE]
         if unknown:
-            raise ValueError(f"--without: {unknown[0]!r} is not one of our nodes that can be left out ({', '.join(nodes.REPLACEABLE)})")
+            raise ValueError(
+                f"--without: {unknown[0]!r} is not one of our nodes "
+                f"that can be left out ({', '.join(nodes.REPLACEABLE)})"
+            )
         for topic in r.allow:
             why = allowable("/" + topic.lstrip("/"))
             if why is not None:
@@ -181,7 +193,9 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
             missing = [i for i in ids if i not in {h.id for h in scenario.humans}]
             if missing:
                 raise ValueError(f"--teleop: no human {missing[0]!r} in scenario {scenario.name}")
-            scenario = replace(scenario, humans=tuple(replace(h, model=TELEOP) if h.id in ids else h for h in scenario.humans))
+            scenario = replace(
+                scenario, humans=tuple(replace(h, model=TELEOP) if h.id in ids else h for h in scenario.humans)
+            )
         base = load_suite_config(r.params_file, TRIAL_SETS)
         teleop = [h.id for h in scenario.humans if h.teleoperated]
         questionnaires = after_trial.specs(r.questionnaires, r.web is not None, teleop)
@@ -206,10 +220,14 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
     except (ScenarioError, ParamsError, ValueError) as e:
         raise TrialError(str(e)) from None
     extra = {**r.extra, **({"questionnaires": after_trial.names(questionnaires)} if questionnaires else {})}
-    return SessionPlan(scenario, toggles, seed, participant, base, r.rtf, r.free_running, extra, web, tuple(r.without), tuple(r.allow))
+    return SessionPlan(
+        scenario, toggles, seed, participant, base, r.rtf, r.free_running, extra, web, tuple(r.without), tuple(r.allow)
+    )
 
 
-def record_trial(plan: SessionPlan, sessions: Path, ros: RosOptions = RosOptions(), say: Say = say_now) -> RecordedTrial:
+def record_trial(
+    plan: SessionPlan, sessions: Path, ros: RosOptions = RosOptions(), say: Say = say_now
+) -> RecordedTrial:
     """Run and record one trial into a new session folder under `sessions`; blocks until it has
     ended and its session is complete. TrialError (one line) when it cannot. Call it from the main
     thread: while it runs, a stop signal (Ctrl-C) ends the trial cleanly; the handlers the caller
@@ -235,31 +253,47 @@ def _record(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -> Rec
 def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -> RecordedTrial:
     scenario, lockstep, rtf = plan.scenario, plan.lockstep, plan.real_time_factor
     folder, info = _new_session(plan, sessions)
-    pace = "lockstep clock" + (f", at most {rtf:g}x real time" if rtf < UNCAPPED_RTF else "") if lockstep else f"{rtf:g}x real time"
+    pace = (
+        "lockstep clock" + (f", at most {rtf:g}x real time" if rtf < UNCAPPED_RTF else "")
+        if lockstep
+        else f"{rtf:g}x real time"
+    )
     say(
-        f"haven: {scenario.name} trial, robot {scenario.robot.name}, participant {plan.participant}, condition {condition_name(plan.toggles)}, "
-        f"seed {plan.seed}, {pace}, ROS domain {ros.domain_id} -> {folder}"
+        f"haven: {scenario.name} trial, robot {scenario.robot.name}, participant {plan.participant}, "
+        f"condition {condition_name(plan.toggles)}, seed {plan.seed}, {pace}, ROS domain {ros.domain_id} -> {folder}"
     )
     started = time.monotonic()
-    limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0  # a lockstep trial runs at least at 1x on this machine
+    # a lockstep trial runs at least at 1x on this machine
+    limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0
     specs = specs_of(folder, plan)
     if plan.web is not None:
         specs.append(web_spec(plan, plan.web, folder))
     ended, metrics, repaired = None, None, None
     asked = after_trial.asked(plan.scenario, plan.web)
     end_read, end_write = os.pipe()  # the recorder says on it when it has the trial's end
-    specs = [replace(s, env={**s.env, END_FD_ENV: str(end_write)}, pass_fds=(end_write,)) if s.name == nodes.RECORDER.key else s for s in specs]
+    specs = [
+        replace(s, env={**s.env, END_FD_ENV: str(end_write)}, pass_fds=(end_write,))
+        if s.name == nodes.RECORDER.key
+        else s
+        for s in specs
+    ]
     try:
         ended = _supervise(
             ros, specs, folder, None if plan.web is not None else limit, asked, (end_read, end_write)
         )  # the researcher decides when it starts
         died = exit_text(ended.died.name, ended.died.code) if ended.died is not None else None
-        repaired = repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else "")) if ended.recorder_code != 0 else None  # (0: closed)
+        # (0: closed)
+        repaired = (
+            repair_bag(folder / "bag", "haven run" + (f" ({died})" if died else ""))
+            if ended.recorder_code != 0
+            else None
+        )
         if repaired is not None:
             info["bag_repaired"] = repair_record(repaired)
         info.update({recorder_stop.KEY: stop} if (stop := ended.recorder_stop()) else {})  # (record/recorder_stop.py)
         write_json(folder / SESSION_FILE, info)  # (analyse judges the bag by its recorder_stop)
-        metrics = _finish(folder, plan, info, time.monotonic() - started, picture=not ended.stopped)  # (stopped: no picture, out sooner)
+        # (stopped: no picture, out sooner)
+        metrics = _finish(folder, plan, info, time.monotonic() - started, picture=not ended.stopped)
     except OSError as e:  # a full disk while the session is completed: what was written stays
         raise TrialError(f"{folder}: {e.strerror or e}", code=1) from None
     finally:
@@ -271,7 +305,9 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
     # (a stop signal that ended the questionnaires' wait stops a study too: no next trial starts)
     stopped = ended.stopped or ended.questionnaires == "interrupted"
     wall = float(info["wall_time_s"])  # (as session.json has it: the trial to its metrics)
-    return RecordedTrial(folder, info["outcome"], metrics, int(ros.domain_id or 0), wall, died, ended.timed_out, stopped)
+    return RecordedTrial(
+        folder, info["outcome"], metrics, int(ros.domain_id or 0), wall, died, ended.timed_out, stopped
+    )
 
 
 def _wait_for_recorded_end(folder: Path, end_read: int, timeout_s: float) -> None:
@@ -279,14 +315,23 @@ def _wait_for_recorded_end(folder: Path, end_read: int, timeout_s: float) -> Non
     up to it, or closes the pipe (it ended), or `timeout_s` (a stream that stopped: a node died),
     before everything stops."""
     events = folder / EVENTS_FILE
-    if not (events.exists() and f'"{EventKind.TRIAL_START.value}"' in events.read_text(encoding="utf-8", errors="replace")):
+    if not (
+        events.exists() and f'"{EventKind.TRIAL_START.value}"' in events.read_text(encoding="utf-8", errors="replace")
+    ):
         return  # no trial started (stopped while held): no end to wait for
     with contextlib.suppress(OSError):
         if select.select([end_read], [], [], timeout_s)[0]:
             os.read(end_read, 64)
 
 
-def _supervise(ros: RosOptions, specs: list[ProcessSpec], folder: Path, timeout_s: float | None, asked: Asked | None, end: tuple[int, int]) -> Ended:
+def _supervise(
+    ros: RosOptions,
+    specs: list[ProcessSpec],
+    folder: Path,
+    timeout_s: float | None,
+    asked: Asked | None,
+    end: tuple[int, int],
+) -> Ended:
     """`asked`: the teleoperated humans and the questionnaires they answer after the trial; `end`:
     the recorder's end-of-trial pipe (read, write: the write end is the recorder's alone once it runs)."""
     started = time.monotonic()
@@ -303,9 +348,13 @@ def _supervise(ros: RosOptions, specs: list[ProcessSpec], folder: Path, timeout_
         if asked is not None and exited is not None and exited.name == nodes.SCENARIO.key and exited.code == 0:
             _wait_for_recorded_end(folder, end[0], 10.0)  # (the trial's nodes still run: its end is recorded)
             questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
-        sup.stop_some((nodes.SCENARIO.key,))  # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
-        if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):  # (a dead recorder says no end)
-            _wait_for_recorded_end(folder, end[0], 10.0 if exited is not None or timed_out else outcomes.STOPPED_END_WAIT_S)
+        # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
+        sup.stop_some((nodes.SCENARIO.key,))
+        # (a dead recorder says no end)
+        if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):
+            _wait_for_recorded_end(
+                folder, end[0], 10.0 if exited is not None or timed_out else outcomes.STOPPED_END_WAIT_S
+            )
         codes = sup.stop()
     return Ended(exited, timed_out, codes.get(nodes.RECORDER.key), questionnaires)
 
@@ -354,7 +403,12 @@ def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float, 
     with contain.use(plan.base.deadlines):
         metrics, world, rec = analyse(folder)
     write_json(folder / METRICS_FILE, metrics)
-    info.update(end_reason=metrics["end_reason"], duration_s=metrics["duration_s"], wall_time_s=round(wall, 1), valid=metrics["valid"])
+    info.update(
+        end_reason=metrics["end_reason"],
+        duration_s=metrics["duration_s"],
+        wall_time_s=round(wall, 1),
+        valid=metrics["valid"],
+    )
     info.update(invalid_reasons=metrics.get("invalid_reasons", []))
     if recorder_stop.KEY in info:
         info[recorder_stop.KEY] = recorder_stop.judged(info[recorder_stop.KEY], folder / "bag", rec)
@@ -362,7 +416,9 @@ def _finish(folder: Path, plan: SessionPlan, info: dict[str, Any], wall: float, 
     info.update({"not_recorded": skipped} if (skipped := not_recorded(folder / "bag")) else {})
     write_json(folder / SESSION_FILE, info)
     if world is not None and picture:
-        trajectory_picture(folder, world, rec, f"{plan.scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s")
+        trajectory_picture(
+            folder, world, rec, f"{plan.scenario.name}: {metrics['end_reason']} after {metrics['duration_s']} s"
+        )
     return metrics
 
 
@@ -375,7 +431,10 @@ def tell(result: RecordedTrial) -> None:
     if not result.valid:
         print(f"haven: the session is not valid: {'; '.join(result.invalid_reasons)}", file=sys.stderr)
         if any("from outside the suite" in r for r in result.invalid_reasons):
-            hint = "an outside input the study expects is declared with `haven run --allow TOPIC` (docs: Clocks and isolation)"
+            hint = (
+                "an outside input the study expects is declared with "
+                "`haven run --allow TOPIC` (docs: Clocks and isolation)"
+            )
             print(f"haven: {hint}", file=sys.stderr)
     made = sorted(p.name + ("/" if p.is_dir() else "") for p in result.folder.iterdir())
     print(f"haven: session in {result.folder} ({', '.join(made)})", flush=True)

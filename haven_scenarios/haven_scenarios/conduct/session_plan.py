@@ -55,7 +55,11 @@ class SessionPlan:
         """The nodes this run starts and the topics it opens to outside publishers."""
         without = [nodes.BY_KEY[n].name for n in self.without]
         teleop = [h.id for h in self.scenario.humans if h.teleoperated]
-        return Declared(frozenset(suite_nodes(without, self.web is not None)), open_topics(without, teleop, self.allow), self.lockstep)
+        return Declared(
+            frozenset(suite_nodes(without, self.web is not None)),
+            open_topics(without, teleop, self.allow),
+            self.lockstep,
+        )
 
     @property
     def real_time_factor(self) -> float:
@@ -64,16 +68,20 @@ class SessionPlan:
     def config(self, folder: Path) -> SuiteConfig:
         """Every node's parameters as run in a session folder (its own copies of the world, the
         scenario and the robot, named relative to it): the file's, then what the scenario and the run fix."""
-        model = ROBOT_FILE if self.scenario.robot.source_file else self.scenario.robot_model  # (robot.yaml: the session's copy)
+        # (robot.yaml: the session's copy)
+        model = ROBOT_FILE if self.scenario.robot.source_file else self.scenario.robot_model
         own = replace(self.scenario, world_path=WORLD_FILE, source=SCENARIO_FILE, robot_model=model)
         c = scenario_suite(own, self.seed, self.toggles, self.base)
-        sim = replace(c.sim, real_time_factor=self.real_time_factor, reset_allowed=False)  # (a recorded trial is not reset from outside)
+        # (a recorded trial is not reset from outside)
+        sim = replace(c.sim, real_time_factor=self.real_time_factor, reset_allowed=False)
         if self.web is not None:  # a first-person camera moves with every physics step, not at 20 Hz
             sim = replace(sim, humans_rate_hz=max(sim.humans_rate_hz, 1.0 / sim.sim.step_s))
         if self.lockstep:
             # The viz is waited for like any participant: the scenario reads what it shows (/haven/cue_state).
             participants = tuple(n.name for n in nodes.LOCKSTEP_PARTICIPANTS)
-            sim = replace(sim, lockstep_participants=participants, lockstep_observers=(), lockstep_wait_for=(nodes.RECORDER.name,))
+            sim = replace(
+                sim, lockstep_participants=participants, lockstep_observers=(), lockstep_wait_for=(nodes.RECORDER.name,)
+            )
         else:
             sim = replace(sim, lockstep_participants=(), lockstep_observers=(), lockstep_wait_for=())
         # The trial starts once the planner listens (somebody's own: whichever node reads /goal_pose).
@@ -111,7 +119,8 @@ class WebOptions:
     secret: str = field(default_factory=new_token)  # each page role's token derives from it
     questionnaires: tuple[str | dict[str, Any], ...] = ()  # asked after the trial: built-in names, Likert mappings
     tls: tuple[str, str] | None = None  # HTTPS: the certificate's and its key's absolute paths (checked: web/tls.py)
-    dropout: tuple[str, float] = (OnDisconnect.KEEP.value, DEFAULT_RECONNECT_TIMEOUT_S)  # on_disconnect, reconnect_timeout_s
+    # on_disconnect, reconnect_timeout_s
+    dropout: tuple[str, float] = (OnDisconnect.KEEP.value, DEFAULT_RECONNECT_TIMEOUT_S)
     next_url: str = ""  # where a participant's page goes when the trial and its questionnaires are over
 
 
@@ -132,4 +141,6 @@ def web_spec(plan: SessionPlan, web: WebOptions, folder: Path) -> ProcessSpec:
         "reconnect_timeout_s": web.dropout[1],
         **({"next_url": web.next_url} if web.next_url else {}),
     }
-    return ProcessSpec(nodes.WEB.key, node_argv(nodes.WEB.module, params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve()))
+    return ProcessSpec(
+        nodes.WEB.key, node_argv(nodes.WEB.module, params), env={TOKEN_ENV: web.secret}, cwd=str(folder.resolve())
+    )

@@ -18,7 +18,15 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.conduct.instruments import ask_in_browser, order_key, run_instruments, say_declined, terminal_asker
-from haven_scenarios.conduct.recorded_trial import RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
+from haven_scenarios.conduct.recorded_trial import (
+    RosOptions,
+    TrialError,
+    TrialRequest,
+    WebRequest,
+    plan_trial,
+    record_trial,
+    tell,
+)
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.record.progress import TrialProgress, attempts, bind, progress, questionnaire_specs, trial_dir
 from haven_scenarios.run.domains import DomainRange
@@ -67,7 +75,16 @@ class StudyRun:
 
 def study_extra(study: str, trial: PlannedTrial) -> dict[str, Any]:
     """What session.json records of the trial's place in the study: its design, order columns included."""
-    keys = ("trial_id", "position", "condition", "practice", "sequence", "block", "position_in_block", "previous_condition")
+    keys = (
+        "trial_id",
+        "position",
+        "condition",
+        "practice",
+        "sequence",
+        "block",
+        "position_in_block",
+        "previous_condition",
+    )
     return {"study": {"name": study, **{k: getattr(trial, k) for k in keys}}}
 
 
@@ -77,13 +94,17 @@ def person_of(study: Study, trial: PlannedTrial) -> tuple[int, int]:
     return study.seed_base + study.participants.index(trial.participant), trial.position
 
 
-def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str], study: Study | None = None) -> TrialRequest:
+def trial_request(
+    args: StudyRun, trial: PlannedTrial, questionnaires: list[str], study: Study | None = None
+) -> TrialRequest:
     """The recorded trial for one trial of the schedule (`study`: for session.json, and who the
     simulated participant is)."""
     web = None
     if args.web:
         tls = (args.tls_cert or "", args.tls_key or "")
-        web = WebRequest(args.host, args.port, False, True, *tls, args.on_disconnect, args.reconnect_timeout, args.next_url or "")
+        web = WebRequest(
+            args.host, args.port, False, True, *tls, args.on_disconnect, args.reconnect_timeout, args.next_url or ""
+        )
     teleop = tuple(args.teleop or ()) if args.web or args.teleop is not None else None
     return TrialRequest(
         trial.scenario_spec,
@@ -100,7 +121,9 @@ def trial_request(args: StudyRun, trial: PlannedTrial, questionnaires: list[str]
     )
 
 
-def run_recorded_trial(args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str], study: Study) -> bool:
+def run_recorded_trial(
+    args: StudyRun, trial: PlannedTrial, sessions: Path, questionnaires: list[str], study: Study
+) -> bool:
     """The trial with the whole node suite; True if a stop signal (Ctrl-C) cut it short."""
     try:
         plan = plan_trial(trial_request(args, trial, questionnaires, study))
@@ -132,13 +155,18 @@ def batch_session(trial: PlannedTrial, sessions: Path, study: Study, params_file
         scenario = scenario.for_robot(resolve_robot(trial.robot), trial.robot)
     scenario = in_session(scenario, *person_of(study, trial))
     extra = study_extra(study.name, trial)
-    run_batch_session(scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(params_file, TRIAL_SETS))
+    run_batch_session(
+        scenario, trial.participant, trial.cues, trial.seed, sessions, extra, load_suite_config(params_file, TRIAL_SETS)
+    )
 
 
 def describe(trial: PlannedTrial, total: int) -> str:
     practice = " (practice)" if trial.practice else ""
     cues = " ".join(trial.cues)
-    return f"trial {trial.position}/{total} {trial.trial_id}{practice}: {trial.scenario}, condition {trial.condition} ({cues}), seed {trial.seed}"
+    return (
+        f"trial {trial.position}/{total} {trial.trial_id}{practice}: "
+        f"{trial.scenario}, condition {trial.condition} ({cues}), seed {trial.seed}"
+    )
 
 
 def wait_for_enter(args: StudyRun, person: bool) -> None:
@@ -184,7 +212,8 @@ def run_participant(args: StudyRun) -> int:
     except Locked as e:
         who = e.holder.describe()
         raise TrialError(
-            f"participant {args.participant} of study {study.name} is already being run ({who}); wait for it to end or stop it"
+            f"participant {args.participant} of study {study.name} is already "
+            f"being run ({who}); wait for it to end or stop it"
         ) from None
     except OSError as e:
         raise TrialError(f"cannot lock {root / args.participant}: {e.strerror or e}") from None
@@ -217,12 +246,16 @@ def _instruments(args: StudyRun, study: Study, root: Path, qs: tuple[Questionnai
         raise TrialError(str(e)) from None
     except EOFError:
         print(
-            f"\nhaven study: no answers for {args.participant} at the terminal (its input is closed): run it at a terminal, or with --web",
+            f"\nhaven study: no answers for {args.participant} at the terminal "
+            "(its input is closed): run it at a terminal, or with --web",
             file=sys.stderr,
         )
         return INTERRUPTED
     except KeyboardInterrupt:
-        print(f"\nhaven study: stopped while asking {args.participant}; the same command asks what is missing", file=sys.stderr)
+        print(
+            f"\nhaven study: stopped while asking {args.participant}; the same command asks what is missing",
+            file=sys.stderr,
+        )
         return INTERRUPTED
     return None
 
@@ -231,22 +264,33 @@ def _run_trials(args: StudyRun, study: Study, root: Path, trials: list[PlannedTr
     todo = [t for t in progress(root, trials) if t.status != "done"]
     done = len(trials) - len(todo)
     print(
-        f"haven study: {study.name}, participant {args.participant}: {done}/{len(trials)} trials done; folder {root / args.participant}", flush=True
+        f"haven study: {study.name}, participant {args.participant}: "
+        f"{done}/{len(trials)} trials done; folder {root / args.participant}",
+        flush=True,
     )
     person = args.web or args.teleop is not None
     asked = [q.name for q in (*study.resolved_questionnaires(), *study.instruments().first, *study.instruments().after)]
     if args.batch and todo and asked:
-        print(f"haven study: --batch: simulated participants answer nothing ({', '.join(asked)} not asked; nothing is invented)", flush=True)
+        print(
+            "haven study: --batch: simulated participants answer "
+            f"nothing ({', '.join(asked)} not asked; nothing is invented)",
+            flush=True,
+        )
     for p in todo:
         code = _one(args, study, p, len(trials), root, questionnaires, person)
         if code:
             return code
     where = f" --dir {args.dir}" if args.dir is not None else ""
-    print(f"haven study: participant {args.participant}: all {len(trials)} trials done (`haven study report {args.study}{where}` for the tables)")
+    print(
+        f"haven study: participant {args.participant}: all {len(trials)} "
+        f"trials done (`haven study report {args.study}{where}` for the tables)"
+    )
     return 0
 
 
-def _one(args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool) -> int:
+def _one(
+    args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path, questionnaires: list[str], person: bool
+) -> int:
     """Run one trial; 0 when it finished, else the study's exit code (and why, said)."""
     trial = p.trial
     again = f" (again: {len(p.attempts)} attempt(s) did not finish)" if p.attempts else ""
@@ -258,7 +302,11 @@ def _one(args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path,
         return INTERRUPTED
     sessions = trial_dir(root, trial)
     try:
-        stopped = run_batch_trial(args, trial, sessions, study) if args.batch else run_recorded_trial(args, trial, sessions, questionnaires, study)
+        stopped = (
+            run_batch_trial(args, trial, sessions, study)
+            if args.batch
+            else run_recorded_trial(args, trial, sessions, questionnaires, study)
+        )
     except KeyboardInterrupt:
         stopped = True
     except (OSError, ValueError) as e:
@@ -270,8 +318,14 @@ def _one(args: StudyRun, study: Study, p: TrialProgress, total: int, root: Path,
         if not stopped:
             return 0
     if stopped:
-        print(f"haven study: stopped during {trial.folder}; the same command goes on from the first trial not finished", file=sys.stderr)
+        print(
+            f"haven study: stopped during {trial.folder}; the same command goes on from the first trial not finished",
+            file=sys.stderr,
+        )
         return INTERRUPTED
     outcome = made[-1].outcome if made else "no session folder was made"
-    print(f"haven study: {trial.folder} did not finish ({outcome}); the study stops here: the same command runs it again", file=sys.stderr)
+    print(
+        f"haven study: {trial.folder} did not finish ({outcome}); the study stops here: the same command runs it again",
+        file=sys.stderr,
+    )
     return 1

@@ -25,7 +25,11 @@ def port_free(host: str, port: int) -> str | None:
 
 
 def claim_ros_domain(
-    domain_id: int | None, network: bool, ignore: Sequence[str] = (), say: Callable[[str], None] = print, domains: DomainRange | None = None
+    domain_id: int | None,
+    network: bool,
+    ignore: Sequence[str] = (),
+    say: Callable[[str], None] = print,
+    domains: DomainRange | None = None,
 ) -> Claim:
     """The ROS domain a suite runs on (`run/domains.py`); DomainBusy (one line) when `domain_id`
     names a domain another suite holds or one outside `domains` (None: $HAVEN_DOMAINS, if set), or
@@ -39,7 +43,9 @@ def claim_ros_domain(
     return got
 
 
-def suite_specs(params: Mapping[str, Mapping[str, object]], pfile: str | None, without: Sequence[str] = ()) -> list[ProcessSpec]:
+def suite_specs(
+    params: Mapping[str, Mapping[str, object]], pfile: str | None, without: Sequence[str] = ()
+) -> list[ProcessSpec]:
     """Our nodes (less `without`), each with the parameter file and its own -p overrides; every node
     but the simulator runs on sim time."""
     specs = []

@@ -38,14 +38,18 @@ class Bridge(Node):
         host = declare(self, "host", "127.0.0.1")
         port = declare(self, "port", 8765)
         only = list(declare(self, "topics", []))
-        params = build(WireParams, {n: declare(self, n, d) for n, d in defaults(WireParams).items()}, where="bridge: parameter ")
+        params = build(
+            WireParams, {n: declare(self, n, d) for n, d in defaults(WireParams).items()}, where="bridge: parameter "
+        )
         self.table = wire.with_wire_params(wire.specs(), params)
         self.publisher = TablePublishers(self, self.table)
         role = Role("foxglove", {absolute(t): wire.type_name(self.table[t].msg_type) for t in ALLOWED}, parameters=True)
         self.relay = FoxgloveRelay()
         sink = RoleSink(self, role, self.forward, CueParameters(self), "a Foxglove client")
         self.relay.serve(host, port, "haven bridge", sink, parameters=True, time=True)
-        self.topics = RawTopics(self, self.relay.add_topic, self._on_message, [t for t in only if t] or None, params=params)
+        self.topics = RawTopics(
+            self, self.relay.add_topic, self._on_message, [t for t in only if t] or None, params=params
+        )
         self._time_sent = 0.0
         self.create_subscription(Clock, topics.CLOCK, self._on_clock, qos.CLOCK)
         print(f"bridge: Foxglove WebSocket on ws://{host}:{self.relay.port}", flush=True)

@@ -38,7 +38,9 @@ class CueParameters:
         on a busy machine, is answered once they are, within the timeout)."""
         if self.client.services_are_ready() or self.client.wait_for_services(timeout_sec=PARAMETER_TIMEOUT_S):
             return True
-        self.node.get_logger().warning(f"no {VIZ_NODE} node answers parameter requests (within {PARAMETER_TIMEOUT_S:g} s)")
+        self.node.get_logger().warning(
+            f"no {VIZ_NODE} node answers parameter requests (within {PARAMETER_TIMEOUT_S:g} s)"
+        )
         return False
 
     def _wait(self, future: Any) -> Any:
@@ -55,13 +57,18 @@ class CueParameters:
         result = self._wait(self.client.get_parameters(cues)) if cues and self._ready() else None
         if result is None:
             return []
-        return [FoxgloveParameter(parameter_name(c), value=bool(v.bool_value)) for c, v in zip(cues, result.values, strict=False)]
+        return [
+            FoxgloveParameter(parameter_name(c), value=bool(v.bool_value))
+            for c, v in zip(cues, result.values, strict=False)
+        ]
 
     def set(self, parameters: list[FoxgloveParameter]) -> list[FoxgloveParameter]:
         """Set the toggles among `parameters` (others and non-booleans are ignored); all of them, as they now are."""
         by_name = {parameter_name(c): c for c in CUES}
         values = {p.name: p.get_value() for p in parameters}
-        changes = [Parameter(by_name[n], value=bool(v)) for n, v in values.items() if n in by_name and isinstance(v, bool)]
+        changes = [
+            Parameter(by_name[n], value=bool(v)) for n, v in values.items() if n in by_name and isinstance(v, bool)
+        ]
         if changes and self._ready():
             self._wait(self.client.set_parameters(changes))
         return self.get([])

@@ -4,8 +4,8 @@ theirs (`run/domains.py`), so that two suites never share a graph unknowingly.
 Run as `python -m haven_scenarios.nodes.domain_probe SECONDS NAME...` with ROS_DOMAIN_ID set; it
 watches the graph for up to SECONDS of wall time (discovery of a running suite takes 0.4-0.9 s
 on these machines, more on a busy one), stops as soon as it sees one of the NAMEs, and prints the
-names of every node it saw, one per line. Its node has no parameter services and no /rosout, so a suite it finds hears nothing
-but a participant that comes and goes.
+names of every node it saw, one per line. Its node has no parameter services and no /rosout, so a suite it finds hears
+nothing but a participant that comes and goes.
 """
 
 from __future__ import annotations

@@ -1,7 +1,8 @@
 """Sends one goal on /goal_pose (as RViz's "2D Goal Pose" does) and reports what became of it.
 
 Exits 0 when the controller reports `goal_reached`, 1 when the planner refuses the goal, the
-timeout (sim seconds) passes, or (wall seconds) nobody reads goals or sim time stops; prints the planner's and controller's events as they come.
+timeout (sim seconds) passes, or (wall seconds) nobody reads goals or sim time stops; prints the planner's and
+controller's events as they come.
 """
 
 from __future__ import annotations

@@ -39,7 +39,9 @@ def _yaml(value: Any, indent: int = 0) -> str:
     if isinstance(value, list):
         if len(value) > 16 and not any(isinstance(v, (dict, list)) for v in value):
             return f"{pad}- '<sequence of {len(value)} values, first {value[:4]}>'"
-        return "\n".join(f"{pad}-\n{_yaml(v, indent + 1)}" if isinstance(v, (dict, list)) else f"{pad}- {v}" for v in value)
+        return "\n".join(
+            f"{pad}-\n{_yaml(v, indent + 1)}" if isinstance(v, (dict, list)) else f"{pad}- {v}" for v in value
+        )
     return f"{pad}{value}"
 
 
@@ -76,7 +78,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         if args.command == "topics":
             _wait_for_graph(node, args.wait)
             for name, types in sorted(node.get_topic_names_and_types()):
-                print(f"{name} [{', '.join(types)}] publishers: {node.count_publishers(name)}, subscribers: {node.count_subscribers(name)}")
+                print(
+                    f"{name} [{', '.join(types)}] publishers: {node.count_publishers(name)}, "
+                    f"subscribers: {node.count_subscribers(name)}"
+                )
             return 0
         topic = args.topic if args.topic.startswith("/") else "/" + args.topic
         type_name = _type_of(node, topic, max(args.wait, 5.0))

@@ -30,7 +30,9 @@ LATCHED_DEPTH = 10  # rosbag2's depth for a replayed topic whose recorded histor
 def replay_qos(offered: list[Qos]) -> QoSProfile:
     """rosbag2's rule: the offered profile when every publisher offered the same reliability and
     durability, else a reliable volatile default."""
-    same = offered and all(o.reliability == offered[0].reliability and o.durability == offered[0].durability for o in offered)
+    same = offered and all(
+        o.reliability == offered[0].reliability and o.durability == offered[0].durability for o in offered
+    )
     latched = bool(same) and offered[0].durability == QosDurability.TRANSIENT_LOCAL
     best_effort = bool(same) and offered[0].reliability == QosReliability.BEST_EFFORT
     return QoSProfile(
@@ -70,7 +72,9 @@ class Player(Node):
             self.get_logger().info(f"playing {self.bag} ({len(self.pubs)} topics) at {self.rate:g}x")
             first: int | None = None
             start = time.monotonic()
-            for connection, log_ns, data in reader.messages(connections=[c for c in reader.connections if c.topic in self.pubs]):
+            for connection, log_ns, data in reader.messages(
+                connections=[c for c in reader.connections if c.topic in self.pubs]
+            ):
                 first = log_ns if first is None else first
                 due = start + (log_ns - first) * 1e-9 / self.rate
                 while (wait := due - time.monotonic()) > 0 and not stop_requested():

@@ -38,7 +38,15 @@ class PresenceDesk:
     ) -> None:
         """`log`: events to the study log; `control(command)`: a /haven/trial_control command;
         `now()`: the node's (simulated) time; `lock`: the web node's, held around each change."""
-        self.node, self.attendance, self.relay, self.log, self.control, self.now, self.lock = node, attendance, relay, log, control, now, lock
+        self.node, self.attendance, self.relay, self.log, self.control, self.now, self.lock = (
+            node,
+            attendance,
+            relay,
+            log,
+            control,
+            now,
+            lock,
+        )
         self.state = TrialState.WAITING.value
         self.closing = False  # the node stops: the pages' sockets close with it, and that is no drop-out
         self.pause_client = node.create_client(SetBool, "haven/pause")
@@ -87,7 +95,11 @@ class PresenceDesk:
         self.log(events)
         for act in acts:
             if act is Act.ABORT:  # (trial_end says it was the drop-out policy, and whose)
-                gone = [e["by"] for e in events if e.kind in (EventKind.PARTICIPANT_LOST, EventKind.PARTICIPANT_DISCONNECTED)]
+                gone = [
+                    e["by"]
+                    for e in events
+                    if e.kind in (EventKind.PARTICIPANT_LOST, EventKind.PARTICIPANT_DISCONNECTED)
+                ]
                 self.control(f"{TrialCommand.ABORT} dropout:{gone[0] if gone else 'participant'}")
                 continue
             if not self.pause_client.service_is_ready():

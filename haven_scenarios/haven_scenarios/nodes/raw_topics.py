@@ -46,7 +46,12 @@ def known_topics(params: WireParams = DEFAULT_WIRE_PARAMS) -> list[tuple[str, st
     for topic, spec in table.items():
         profile = spec.pub_qos
         if spec.sub_qos == qos.ANY_DURABILITY:  # /plan, /haven/estop: outsiders publish them volatile
-            profile = QoSProfile(depth=profile.depth, history=profile.history, reliability=profile.reliability, durability=DurabilityPolicy.VOLATILE)
+            profile = QoSProfile(
+                depth=profile.depth,
+                history=profile.history,
+                reliability=profile.reliability,
+                durability=DurabilityPolicy.VOLATILE,
+            )
         latched = spec.pub_qos.durability == DurabilityPolicy.TRANSIENT_LOCAL
         out.append(("/" + topic.lstrip("/"), type_name(spec.msg_type), profile, latched))
     return out
@@ -75,7 +80,8 @@ class DrainedReaders(CallbackGroup):
         pass
 
 
-IGNORED = ("/rosout", "/parameter_events", "/haven/lockstep/")  # logs, parameter changes, the lockstep clock's own traffic
+# logs, parameter changes, the lockstep clock's own traffic
+IGNORED = ("/rosout", "/parameter_events", "/haven/lockstep/")
 
 
 def hidden(topic: str) -> bool:
@@ -128,14 +134,21 @@ class RawTopics:
     ) -> None:
         """`topics`: only these (all of the graph when None); `keep_all`: readers that drop nothing
         (a recorder's), else the depth of the topic's profile; `on_lost(topic, n)`: DDS reports
-        that n messages of a topic never reached the reader (and whether it is a best-effort topic); `batched`: messages are handed over
-        every DRAIN_PERIOD_S instead of one callback each (a recorder at 10x real time gets
-        thousands a second); `held`: suite topics not subscribed until `release()`; `params`: the
-        topic table's (stamped velocity commands); `on_matched(topic)`: a publisher matched or left
-        one of the readers (however briefly it lived); `catch_up`: latched readers beside the
-        volatile ones where every publisher latches (batched mode); `on_unreadable(topic, type,
-        why)`: a topic whose type cannot be read here (its package is not installed), said once."""
-        self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = node, add, on_message, topics, keep_all, on_lost
+        that n messages of a topic never reached the reader (and whether it is a best-effort topic); `batched`: messages
+        are handed over every DRAIN_PERIOD_S instead of one callback each (a recorder at 10x real time gets thousands a
+        second); `held`: suite topics not subscribed until `release()`; `params`: the topic table's (stamped velocity
+        commands); `on_matched(topic)`: a publisher matched or left one of the readers (however briefly it lived);
+        `catch_up`: latched readers beside the volatile ones where every publisher latches (batched mode);
+        `on_unreadable(topic, type, why)`: a topic whose type cannot be read here (its package is not installed), said
+        once."""
+        self.node, self.add, self.on_message, self.only, self.keep_all, self.on_lost = (
+            node,
+            add,
+            on_message,
+            topics,
+            keep_all,
+            on_lost,
+        )
         self.on_matched, self.on_unreadable = on_matched, on_unreadable
         self.late: dict[str, Subscription] = {}  # topic -> its latched catch-up reader, while it has one
         self.late_qos = _late_readable(params) if catch_up and batched else {}
@@ -158,7 +171,9 @@ class RawTopics:
         """Hand over every message the readers hold (in batched mode; at shutdown in any)."""
         for topic, (msgtype, sub) in list(self.subscriptions.items()):
             if topic in self.seen:  # read by two readers: each message once
-                for data in self._once(topic, [take_all_with_info(sub), take_all_with_info(self.late[topic]) if topic in self.late else []]):
+                for data in self._once(
+                    topic, [take_all_with_info(sub), take_all_with_info(self.late[topic]) if topic in self.late else []]
+                ):
                     self.on_message(topic, msgtype, data)
                 continue
             for data in take_all(sub):
@@ -183,7 +198,12 @@ class RawTopics:
         if wanted and topic not in self.late:
             msgtype, sub = self.subscriptions[topic]
             self.late[topic] = self.node.create_subscription(
-                sub.msg_type, topic, functools.partial(self.on_message, topic, msgtype), self.late_qos[topic], raw=True, callback_group=self.group
+                sub.msg_type,
+                topic,
+                functools.partial(self.on_message, topic, msgtype),
+                self.late_qos[topic],
+                raw=True,
+                callback_group=self.group,
             )
         elif not wanted and topic in self.late:
             self._drain_late(topic)
@@ -195,7 +215,12 @@ class RawTopics:
             self.on_message(topic, msgtype, data)
 
     def _wanted(self, topic: str) -> bool:
-        return topic not in IGNORED and not topic.startswith(IGNORED) and not hidden(topic) and (self.only is None or topic in self.only)
+        return (
+            topic not in IGNORED
+            and not topic.startswith(IGNORED)
+            and not hidden(topic)
+            and (self.only is None or topic in self.only)
+        )
 
     def release(self) -> None:
         """Subscribe the held topics (with the topic table's QoS)."""
@@ -222,13 +247,19 @@ class RawTopics:
                 package = msgtype.split("/")[0]
                 installed = importlib.util.find_spec(package) is not None
                 self.on_unreadable(
-                    topic, msgtype, f"no such type in its package {package}" if installed else f"its package {package} is not installed here"
+                    topic,
+                    msgtype,
+                    f"no such type in its package {package}"
+                    if installed
+                    else f"its package {package} is not installed here",
                 )
             return
         if not self.add(topic, msgtype, latched):
             return
         if self.keep_all:
-            profile = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=profile.reliability, durability=profile.durability)
+            profile = QoSProfile(
+                history=HistoryPolicy.KEEP_ALL, reliability=profile.reliability, durability=profile.durability
+            )
         callbacks: dict[str, Any] = {}
         if self.on_lost is not None:
             on_lost = self.on_lost
@@ -238,7 +269,13 @@ class RawTopics:
             callbacks["matched"] = lambda info: self._matched(topic)
         events = SubscriptionEventCallbacks(**callbacks) if callbacks else None
         sub = self.node.create_subscription(
-            cls, topic, functools.partial(self.on_message, topic, msgtype), profile, raw=True, event_callbacks=events, callback_group=self.group
+            cls,
+            topic,
+            functools.partial(self.on_message, topic, msgtype),
+            profile,
+            raw=True,
+            event_callbacks=events,
+            callback_group=self.group,
         )
         self.subscriptions[topic] = (msgtype, sub)
         self.catch_up(topic)

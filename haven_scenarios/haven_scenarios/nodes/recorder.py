@@ -118,7 +118,8 @@ class Recorder(Node):
         self.lost: dict[str, int] = {}
         self.lost_at: list[tuple[str, int, float]] = []  # (topic, messages, sim time DDS reported it)
         self.start_stamp: float | None = None
-        self.end_fd = int(os.environ[END_FD_ENV]) if os.environ.get(END_FD_ENV, "").isdigit() else None  # (haven run's pipe)
+        # (haven run's pipe)
+        self.end_fd = int(os.environ[END_FD_ENV]) if os.environ.get(END_FD_ENV, "").isdigit() else None
         self.end_stamp: float | None = None
         self.reached: set[str] = set()  # streams recorded up to the end
         self.flowing: set[str] = set()  # streams that have reached the recorder
@@ -126,7 +127,8 @@ class Recorder(Node):
         self.said_not_recorded: set[str] = set()
         names, opened = (declare(self, n, []) for n in ("suite_nodes", "open_topics"))
         lockstep = bool(declare(self, "suite_lockstep", False))
-        self.declared = Declared(frozenset(names), tuple(opened), lockstep) if names else None  # (`haven sim --record`: no trial to judge)
+        # (`haven sim --record`: no trial to judge)
+        self.declared = Declared(frozenset(names), tuple(opened), lockstep) if names else None
         self.topics = RawTopics(
             self,
             lambda topic, msgtype, latched: True,
@@ -134,14 +136,17 @@ class Recorder(Node):
             keep_all=True,
             on_lost=self._on_lost,
             batched=True,
-            held=() if lockstep else GATED,  # (on the lockstep clock the simulator waits for the recorder to read everything)
+            # (on the lockstep clock the simulator waits for the recorder to read everything)
+            held=() if lockstep else GATED,
             params=self._declare_wire_params(),
             on_matched=self._watch_publishers,
             catch_up=True,
             on_unreadable=self._not_recorded,
         )
         self.create_timer(PUBLISHERS_PERIOD_S, self._watch_publishers, clock=Clock(clock_type=ClockType.STEADY_TIME))
-        self._give_up = self.create_timer(STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME))
+        self._give_up = self.create_timer(
+            STREAMS_WAIT_S, self._streams_missing, clock=Clock(clock_type=ClockType.STEADY_TIME)
+        )
         self.clock_pairs: list[tuple[int, int]] = []  # (sim ns, wall ns)
         self.create_timer(CLOCK_PAIR_PERIOD_S, self._pair_clocks, clock=Clock(clock_type=ClockType.STEADY_TIME))
         refuse_changes(self)  # (use_sim_time switched mid-trial would turn the bag's times into wall time)
@@ -174,7 +179,11 @@ class Recorder(Node):
                 for s in new:
                     if s.gid in outside:
                         ignored = self.declared.ignores(name)
-                        then = "ignored on the lockstep clock (noted in the session)" if ignored else "the session will not be valid"
+                        then = (
+                            "ignored on the lockstep clock (noted in the session)"
+                            if ignored
+                            else "the session will not be valid"
+                        )
                         self.get_logger().warning(f"{describe(s, self.declared)}: {then}")
 
     def _write_failed(self, path: Path, e: OSError) -> None:
@@ -256,7 +265,12 @@ class Recorder(Node):
             self.flowing.add(topic)
             if self.flowing >= set(STREAMS):
                 self.topics.release()
-        if self.end_stamp is not None and topic in STREAMS and topic not in self.reached and header_stamp(data) >= self.end_stamp - 1e-6:
+        if (
+            self.end_stamp is not None
+            and topic in STREAMS
+            and topic not in self.reached
+            and header_stamp(data) >= self.end_stamp - 1e-6
+        ):
             self.reached.add(topic)
             if self.reached >= set(STREAMS) and self.end_fd is not None:
                 with contextlib.suppress(OSError):  # (nobody reads any more: haven run is gone)
@@ -303,7 +317,9 @@ class Recorder(Node):
                 self.topics.drain()
                 self._pair_clocks()
                 self._watch_publishers()
-                self.bag.close(lost=self._lost_in_trial(), wall_clock=self.clock_pairs, publishers=self.publisher_log.to_json())
+                self.bag.close(
+                    lost=self._lost_in_trial(), wall_clock=self.clock_pairs, publishers=self.publisher_log.to_json()
+                )
             except SystemExit:
                 pass  # a write failed: said in one line, the bag left as written for the repair
             except OSError as e:

@@ -18,7 +18,9 @@ from haven_sim.nodes.wire import TopicSpec
 
 
 class RoleSink:
-    def __init__(self, node: Node, role: Role, forward: Callable[[str, bytes], None], cues: CueParameters, who: str) -> None:
+    def __init__(
+        self, node: Node, role: Role, forward: Callable[[str, bytes], None], cues: CueParameters, who: str
+    ) -> None:
         """`forward(topic, cdr)`: an accepted message; `who`: how warnings name the client."""
         self.node, self.role, self.forward, self.cues, self.who = node, role, forward, cues, who
 
@@ -47,9 +49,9 @@ MATCH_WAIT_S = 1.0  # a new publisher waits this long at most for its readers
 class TablePublishers:
     """Publishers made as clients first send on a topic, with the topic table's type and QoS. A new
     one waits (briefly) until it has matched the readers the graph already shows and at least one
-    other node's, as `ros2 topic pub` waits for a matching subscription: a page's or Foxglove's first message (a goal, a Start)
-    would otherwise go out before DDS has matched its readers, and a volatile reader never gets it.
-    (Called from the Foxglove servers' threads, never the node's executor.)"""
+    other node's, as `ros2 topic pub` waits for a matching subscription: a page's or Foxglove's first message (a goal, a
+    Start) would otherwise go out before DDS has matched its readers, and a volatile reader never gets it. (Called from
+    the Foxglove servers' threads, never the node's executor.)"""
 
     def __init__(self, node: Node, table: dict[str, TopicSpec]) -> None:
         self.node, self.table = node, table

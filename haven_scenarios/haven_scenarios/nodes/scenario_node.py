@@ -71,8 +71,8 @@ class ScenarioNode(ComponentNode):
 
     def _everyone_listening(self) -> bool:
         """The nodes in `wait_for` subscribe (an entry like "/goal_pose": a node that is not one of
-        our observers (nodes.OBSERVERS) reads that topic: somebody's own planner), and our publishers have matched every subscription the graph knows
-        of (seeing a reader in the graph comes before being able to deliver to it)."""
+        our observers (nodes.OBSERVERS) reads that topic: somebody's own planner), and our publishers have matched every
+        subscription the graph knows of (seeing a reader in the graph comes before being able to deliver to it)."""
         listeners: set[str] = set()
         for topic in (topics.EVENTS, topics.GOAL):
             infos = self.get_subscriptions_info_by_topic(self.resolve_topic_name(topic))

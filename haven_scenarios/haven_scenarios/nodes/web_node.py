@@ -121,7 +121,9 @@ class WebNode(Node):
         for name, role in self.roles.items():
             sink = RoleSink(self, role, functools.partial(self.forward, role), self.cues, f"page {name}")
             door = DoorCheck(door_key(self.secret, name), guard.sweep)
-            self.servers[name] = self.relay.serve("127.0.0.1", 0, f"haven {name}", sink, parameters=role.parameters, door=door)
+            self.servers[name] = self.relay.serve(
+                "127.0.0.1", 0, f"haven {name}", sink, parameters=role.parameters, door=door
+            )
         ports = {name: int(server.port) for name, server in self.servers.items()}
         self.topics = RawTopics(self, self.relay.add_topic, self._relay, list(RELAYED))
         refuse_changes(self, self._refused)
@@ -147,7 +149,11 @@ class WebNode(Node):
             print(f"web: {'researcher console' if name == CONSOLE else 'participant ' + name}: {url}", flush=True)
         for note in address_notes(address_for_others(host), tls_cert):
             print(f"web: {note}", flush=True)
-        when = "on the console's Start" if researcher_start or not humans else f"when {', '.join(humans)} pressed Start (or on the console's)"
+        when = (
+            "on the console's Start"
+            if researcher_start or not humans
+            else f"when {', '.join(humans)} pressed Start (or on the console's)"
+        )
         print(f"web: the trial starts {when}", flush=True)
 
     def _relay(self, topic: str, msgtype: str, data: bytes) -> None:
@@ -163,7 +169,13 @@ class WebNode(Node):
 
     def _refused(self, name: str, reason: str) -> None:
         with self._lock:
-            self._log([event(EventKind.REQUEST_REFUSED, self.now(), Source.WEB, request="parameter", name=name, reason=reason)])
+            self._log(
+                [
+                    event(
+                        EventKind.REQUEST_REFUSED, self.now(), Source.WEB, request="parameter", name=name, reason=reason
+                    )
+                ]
+            )
 
     def _log(self, events: list[Event]) -> None:
         for e in events:
@@ -197,7 +209,8 @@ class WebNode(Node):
                     self.presence.ending()
                 if topic == absolute(topics.CMD_VEL_TELEOP):
                     self._log(self.wizard.drive(conv.twist_from_msg(msg), self.now()))
-                elif topic == absolute(topics.WIZARD_THOUGHT):  # the page's {text, hold_s, everywhere}: the viz's held thought
+                # the page's {text, hold_s, everywhere}: the viz's held thought
+                elif topic == absolute(topics.WIZARD_THOUGHT):
                     try:
                         held, events = self.wizard.thought(str(msg.data), self.now())
                     except ValueError as e:  # (said on the console too: the page shows the server's status)

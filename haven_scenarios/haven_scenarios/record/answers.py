@@ -22,13 +22,21 @@ from pathlib import Path
 from typing import Any
 
 from haven_scenarios.record.session import EVENTS_FILE, write_json
-from haven_scenarios.study.questionnaires import ANSWERS_FILE, Questionnaire, answers_record, item_order, resolve, trial_key
+from haven_scenarios.study.questionnaires import (
+    ANSWERS_FILE,
+    Questionnaire,
+    answers_record,
+    item_order,
+    resolve,
+    trial_key,
+)
 from haven_scenarios.study.rules import EndReason
 from haven_sim.common.events import Event, EventKind, Source, event
 
 MAX_MESSAGE_BYTES = 64 * 1024  # a 100-item questionnaire's answers take about 3 KB
 SKIP = "skip_questionnaires"  # the console's intervention action: the researcher ends the wait
-RECORDED = (EventKind.TRIAL_START, EventKind.TRIAL_END, EventKind.QUESTIONNAIRE_ANSWERED, EventKind.INTERVENTION)  # what is read of it
+# what is read of it
+RECORDED = (EventKind.TRIAL_START, EventKind.TRIAL_END, EventKind.QUESTIONNAIRE_ANSWERED, EventKind.INTERVENTION)
 
 
 def read_answers(folder: Path) -> dict[str, Any]:
@@ -91,7 +99,15 @@ class AnswerBook:
         write_json(self.path, data)
         self.data = data
         scores, checked = record["scores"], record["answers"]
-        return event(EventKind.QUESTIONNAIRE_ANSWERED, now, Source.WEB, by=human, questionnaire=name, scores=scores, answers=checked)
+        return event(
+            EventKind.QUESTIONNAIRE_ANSWERED,
+            now,
+            Source.WEB,
+            by=human,
+            questionnaire=name,
+            scores=scores,
+            answers=checked,
+        )
 
 
 def answered(folder: Path, humans: Sequence[str], names: Sequence[str]) -> dict[str, list[str]]:
@@ -121,7 +137,11 @@ def wanted(folder: Path) -> bool:
     aborted nor interrupted: such a trial runs again, and is asked about then)."""
     kinds = {e["type"]: e for e in _recorded(folder)}
     end = kinds.get(EventKind.TRIAL_END)
-    return EventKind.TRIAL_START in kinds and end is not None and end.get("reason") not in (EndReason.ABORTED, EndReason.INTERRUPTED)
+    return (
+        EventKind.TRIAL_START in kinds
+        and end is not None
+        and end.get("reason") not in (EndReason.ABORTED, EndReason.INTERRUPTED)
+    )
 
 
 def over(folder: Path, humans: Sequence[str], names: Sequence[str]) -> str | None:

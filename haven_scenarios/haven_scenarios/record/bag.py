@@ -71,7 +71,12 @@ class BagWriter:
     def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
         self.close()
 
-    def close(self, lost: Mapping[str, int] | None = None, wall_clock: Sequence[tuple[int, int]] = (), publishers: str | None = None) -> None:
+    def close(
+        self,
+        lost: Mapping[str, int] | None = None,
+        wall_clock: Sequence[tuple[int, int]] = (),
+        publishers: str | None = None,
+    ) -> None:
         """Close the bag; `lost`: messages per topic that never reached the recorder, kept in the
         metadata's custom_data (LOST_KEY) so the session can say how complete it is; `wall_clock`:
         (sim ns, wall ns) pairs (WALL_CLOCK_KEY), to align the bag with other recordings;
@@ -119,7 +124,9 @@ class BagWriter:
         if why is not None:
             self.not_recorded[topic] = why  # (it names the type it could not find: this one or one it uses)
             return False
-        self._connections[topic] = self._writer.add_connection(topic, msgtype, typestore=TYPESTORE, offered_qos_profiles=offered_qos)
+        self._connections[topic] = self._writer.add_connection(
+            topic, msgtype, typestore=TYPESTORE, offered_qos_profiles=offered_qos
+        )
         fields = TYPESTORE.fielddefs[msgtype][1]
         self._stamped[topic] = bool(fields) and fields[0][1][1] in (HEADER, TIME)
         self.counts[topic] = 0
@@ -238,7 +245,12 @@ def recovered_records(path: Path) -> Iterator[tuple[RecoveredChannel, int, bytes
                 schema = schemas[record.schema_id]
                 text = schema.data.decode("utf-8", errors="replace")
                 channels[record.id] = RecoveredChannel(
-                    record.topic, schema.name, schema.encoding, text, record.message_encoding, record.metadata.get("offered_qos_profiles", "")
+                    record.topic,
+                    schema.name,
+                    schema.encoding,
+                    text,
+                    record.message_encoding,
+                    record.metadata.get("offered_qos_profiles", ""),
                 )
             elif isinstance(record, McapMessage) and record.channel_id in channels:
                 yield channels[record.channel_id], record.log_time, bytes(record.data)
@@ -351,4 +363,7 @@ def read_recording(bag: Path, human_ids: Sequence[str] = ()) -> tuple[Recording,
             n += 1
         except Exception:
             continue
-    return rec, f"bag recovered from its MCAP data ({n} messages read; metadata or footer missing: `haven repair` rebuilds it)"
+    return (
+        rec,
+        f"bag recovered from its MCAP data ({n} messages read; metadata or footer missing: `haven repair` rebuilds it)",
+    )

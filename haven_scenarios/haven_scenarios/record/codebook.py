@@ -82,7 +82,10 @@ def participants(instruments: StudyInstruments) -> list[Entry]:
     """participants.csv's columns (consent, demographics, the before- and after-study scores)."""
     where = "haven_scenarios/record/participants.py"
     rows = participant_rows(instruments)
-    return [Entry(PARTICIPANTS_CSV, name, False, name, unit, definition, source, where) for name, unit, definition, source in rows]
+    return [
+        Entry(PARTICIPANTS_CSV, name, False, name, unit, definition, source, where)
+        for name, unit, definition, source in rows
+    ]
 
 
 def write(folder: Path, entries: Sequence[Entry]) -> None:

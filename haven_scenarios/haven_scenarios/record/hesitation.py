@@ -57,7 +57,10 @@ def hesitations(t: FloatArray, xy: FloatArray, stops: FloatArray, done_at: float
         walking &= t <= done_at
     stops = np.asarray(stops, dtype=float).reshape(-1, 2)
     if len(stops):
-        near = np.min(np.hypot(xy[:, None, 0] - stops[None, :, 0], xy[:, None, 1] - stops[None, :, 1]), axis=1) < STOP_NEAR_M
+        near = (
+            np.min(np.hypot(xy[:, None, 0] - stops[None, :, 0], xy[:, None, 1] - stops[None, :, 1]), axis=1)
+            < STOP_NEAR_M
+        )
         walking &= ~near
     run = np.concatenate([[False], walking & slow, [False]]).astype(np.int8)
     edges = np.flatnonzero(np.diff(run))

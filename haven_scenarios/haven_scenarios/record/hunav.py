@@ -80,7 +80,9 @@ def sample(rec: Recording, t0: float, t1: float, rate_hz: float = SAMPLE_HZ) -> 
     oi, hi = _held(ots, ticks), _held(hts, ticks)
     keep = (oi >= 0) & (hi >= 0)
     ticks, oi, hi = ticks[keep], oi[keep], hi[keep]
-    robot = np.array([(st.pose.x, st.pose.y, st.pose.yaw, st.twist.vx, st.twist.wz) for _, st in odom]).reshape(-1, 5)[oi]
+    robot = np.array([(st.pose.x, st.pose.y, st.pose.yaw, st.twist.vx, st.twist.wz) for _, st in odom]).reshape(-1, 5)[
+        oi
+    ]
     people: dict[str, FloatArray] = {}
     for hid in dict.fromkeys(h for _, poses in humans for h in poses):
         track = np.full((len(humans), 4), math.nan)
@@ -89,7 +91,11 @@ def sample(rec: Recording, t0: float, t1: float, rate_hz: float = SAMPLE_HZ) -> 
             p = poses.get(hid)
             if p is None:
                 continue
-            speed = math.hypot(p.x - last[1], p.y - last[2]) / (stamp - last[0]) if last is not None and stamp > last[0] else 0.0
+            speed = (
+                math.hypot(p.x - last[1], p.y - last[2]) / (stamp - last[0])
+                if last is not None and stamp > last[0]
+                else 0.0
+            )
             track[k] = (p.x, p.y, p.yaw, speed)
             last = (stamp, p.x, p.y)
         people[hid] = track[hi]
@@ -161,7 +167,10 @@ def collisions(s: Samples) -> tuple[int, int]:
         for i in np.flatnonzero(surface[:, j] < COLLISION_M):
             rx, ry, ryaw, rv = s.robot[i, :4]
             ax, ay, ayaw, av = p[i]
-            alpha = math.atan2(-(rx - ax) * math.sin(ayaw) + (ry - ay) * math.cos(ayaw), (rx - ax) * math.cos(ayaw) + (ry - ay) * math.sin(ayaw))
+            alpha = math.atan2(
+                -(rx - ax) * math.sin(ayaw) + (ry - ay) * math.cos(ayaw),
+                (rx - ax) * math.cos(ayaw) + (ry - ay) * math.sin(ayaw),
+            )
             nrx = (ax - rx) * math.cos(ryaw) + (ay - ry) * math.sin(ryaw)
             nry = -(ax - rx) * math.sin(ryaw) + (ay - ry) * math.cos(ryaw)
             alpha2 = math.atan2(nrx, nry)  # (sic: hunav_metrics.collisions)

@@ -87,14 +87,17 @@ def compute(
         return {**m, "duration_s": None, **check(rec, None, declared)}
     t0, t1 = window
     tl = Timeline.of(rec, t0, t1)
-    events = sorted((replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp)
+    events = sorted(
+        (replace(e, stamp=e.stamp - t0) for e in rec.events if t0 - 1e-9 <= e.stamp <= t1 + 1e-9), key=lambda e: e.stamp
+    )
     m["duration_s"], data = rounded(t1 - t0, 2), TrialData(tl, events, rec, t0, t1, world, robot)
     failed: list[str] = []
     registered = plugins.registry("metrics")
     for name in (*OURS, *(n for n in registered.names() if n not in OURS)):
         m.update(_one(name, registered.get(name).compute, data, m, failed))
     m.update(check(rec, window, declared))
-    m.update(valid=m["valid"] and not failed, invalid_reasons=[*m["invalid_reasons"], *failed])  # (as for any plugin that failed)
+    # (as for any plugin that failed)
+    m.update(valid=m["valid"] and not failed, invalid_reasons=[*m["invalid_reasons"], *failed])
     return m
 
 

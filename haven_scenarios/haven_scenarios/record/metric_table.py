@@ -41,7 +41,13 @@ HUNAV_METRICS: tuple[Row, ...] = (
         HUNAV,
         f"{HUNAV_CODE}:total_time",
     ),
-    ("hunav_path_length_m", "m", "sum of the robot's displacements between samples", HUNAV, f"{HUNAV_CODE}:robot_path_length"),
+    (
+        "hunav_path_length_m",
+        "m",
+        "sum of the robot's displacements between samples",
+        HUNAV,
+        f"{HUNAV_CODE}:robot_path_length",
+    ),
     (
         "hunav_cumulative_heading_changes_rad",
         "rad",
@@ -94,15 +100,23 @@ HUNAV_METRICS: tuple[Row, ...] = (
     (
         "hunav_robot_on_person_collisions",
         "samples",
-        "samples x people with surface distance < 0.02 m attributed to the robot by HuNavSim's angle/velocity rule (scales with the 20 Hz rate)",
+        "samples x people with surface distance < 0.02 m attributed to the "
+        "robot by HuNavSim's angle/velocity rule (scales with the 20 Hz rate)",
         HUNAV,
         f"{HUNAV_CODE}:robot_on_person_collision",
     ),
-    ("hunav_person_on_robot_collisions", "samples", "the same, attributed to the person", HUNAV, f"{HUNAV_CODE}:person_on_robot_collision"),
+    (
+        "hunav_person_on_robot_collisions",
+        "samples",
+        "the same, attributed to the person",
+        HUNAV,
+        f"{HUNAV_CODE}:person_on_robot_collision",
+    ),
     (
         "hunav_time_not_moving_s",
         "s",
-        "time_to_reach_goal / samples x samples with v < 0.01 m/s and w < 0.02 rad/s, SIGNED as its code compares them (abs() wraps the comparison)",
+        "time_to_reach_goal / samples x samples with v < 0.01 m/s and w < 0.02 rad/s, "
+        "SIGNED as its code compares them (abs() wraps the comparison)",
         HUNAV,
         f"{HUNAV_CODE}:time_not_moving",
     ),
@@ -145,10 +159,23 @@ HUNAV_METRICS: tuple[Row, ...] = (
 
 METRICS: tuple[Row, ...] = (
     ("scenario", "", "scenario name", OURS, ""),
-    ("end_reason", "", "completed, timeout, contact, battery_empty, stopped / aborted (researcher), interrupted (Ctrl-C, no trial_end)", OURS, ""),
+    (
+        "end_reason",
+        "",
+        "completed, timeout, contact, battery_empty, "
+        "stopped / aborted (researcher), interrupted (Ctrl-C, no trial_end)",
+        OURS,
+        "",
+    ),
     ("duration_s", "s", "trial_end - trial_start", OURS, "haven_scenarios/record/metric_kind.py:compute"),
     ("robot_time_to_finish_s", "s", "when the robot's task was done (task_done by robot)", OURS, f"{CODE}:_robot"),
-    ("robot_path_length_m", "m", "length of the robot's track on the 0.02 s grid", cf("HuNavSim path_length"), f"{CODE}:_robot"),
+    (
+        "robot_path_length_m",
+        "m",
+        "length of the robot's track on the 0.02 s grid",
+        cf("HuNavSim path_length"),
+        f"{CODE}:_robot",
+    ),
     (
         "robot_time_not_moving_s",
         "s",
@@ -158,7 +185,13 @@ METRICS: tuple[Row, ...] = (
     ),
     ("robot_speed_mean_mps", "m/s", "mean |v| over the grid", cf(SOCNAV + " average speed"), f"{CODE}:_robot"),
     ("robot_speed_max_mps", "m/s", "largest |v|", OURS, f"{CODE}:_robot"),
-    ("robot_accel_mean_mps2", "m/s^2", "mean |dv/dt| over the grid", cf(SOCNAV + " average acceleration"), f"{CODE}:_robot"),
+    (
+        "robot_accel_mean_mps2",
+        "m/s^2",
+        "mean |dv/dt| over the grid",
+        cf(SOCNAV + " average acceleration"),
+        f"{CODE}:_robot",
+    ),
     ("robot_accel_max_mps2", "m/s^2", "largest |dv/dt|", OURS, f"{CODE}:_robot"),
     (
         "robot_jerk_mean_mps3",
@@ -188,7 +221,13 @@ METRICS: tuple[Row, ...] = (
         cf(SEAN + " path irregularity"),
         f"{CODE}:_navigation",
     ),
-    ("min_human_centre_distance_m", "m", "closest approach of the robot to any person, centre to centre", OURS, f"{CODE}:_proximity"),
+    (
+        "min_human_centre_distance_m",
+        "m",
+        "closest approach of the robot to any person, centre to centre",
+        OURS,
+        f"{CODE}:_proximity",
+    ),
     (
         "min_human_surface_distance_m",
         "m",
@@ -210,9 +249,21 @@ METRICS: tuple[Row, ...] = (
         cf(HALL + "; HuNavSim measures between surfaces"),
         f"{CODE}:_proximity",
     ),
-    ("closest_personal_centre_pct", "%", "time it is 0.45-1.2 m away, centre to centre", cf(HALL), f"{CODE}:_proximity"),
+    (
+        "closest_personal_centre_pct",
+        "%",
+        "time it is 0.45-1.2 m away, centre to centre",
+        cf(HALL),
+        f"{CODE}:_proximity",
+    ),
     ("closest_social_centre_pct", "%", "time it is 1.2-3.6 m away, centre to centre", cf(HALL), f"{CODE}:_proximity"),
-    ("closest_public_centre_pct", "%", "time it is farther than 3.6 m, centre to centre", cf(HALL), f"{CODE}:_proximity"),
+    (
+        "closest_public_centre_pct",
+        "%",
+        "time it is farther than 3.6 m, centre to centre",
+        cf(HALL),
+        f"{CODE}:_proximity",
+    ),
     (
         "human_contacts",
         "episodes",
@@ -236,7 +287,13 @@ METRICS: tuple[Row, ...] = (
     ),
     ("wall_contacts", "episodes", "robot-wall contact episodes", OURS, f"{CODE}:_contacts"),
     ("waits", "count", "times the robot waited for a person (waiting events)", OURS, f"{CODE}:_navigation"),
-    ("wait_time_s", "s", "time spent waiting (waiting until resumed, a new plan or a detour)", OURS, f"{CODE}:_navigation"),
+    (
+        "wait_time_s",
+        "s",
+        "time spent waiting (waiting until resumed, a new plan or a detour)",
+        OURS,
+        f"{CODE}:_navigation",
+    ),
     ("replans", "count", "detours around a person (replanned events)", OURS, f"{CODE}:_navigation"),
     ("reverts", "count", "returns to the original path (reverted events)", OURS, f"{CODE}:_navigation"),
     ("plans_refused", "count", "goals the planner refused", OURS, f"{CODE}:_navigation"),
@@ -250,12 +307,36 @@ METRICS: tuple[Row, ...] = (
     ("turn_signal_shown_s", "s", "time a turn signal was lit", OURS, f"{CODE}:_exposure"),
     ("thought_bubble_shown_s", "s", "time the thought bubble was on show", OURS, f"{CODE}:_exposure"),
     ("battery_indicator_shown_s", "s", "time the battery gauge was on show", OURS, f"{CODE}:_exposure"),
-    ("nav_points_shown_s", "s", "aerial robots only: time NavPoints were on show (Walker et al. 2018)", OURS, f"{CODE}:_exposure"),
-    ("arrow_shown_s", "s", "aerial robots only: time the Arrow was on show (Walker et al. 2018)", OURS, f"{CODE}:_exposure"),
-    ("gaze_shown_s", "s", "aerial robots only: time the Gaze eye was on show (Walker et al. 2018)", OURS, f"{CODE}:_exposure"),
+    (
+        "nav_points_shown_s",
+        "s",
+        "aerial robots only: time NavPoints were on show (Walker et al. 2018)",
+        OURS,
+        f"{CODE}:_exposure",
+    ),
+    (
+        "arrow_shown_s",
+        "s",
+        "aerial robots only: time the Arrow was on show (Walker et al. 2018)",
+        OURS,
+        f"{CODE}:_exposure",
+    ),
+    (
+        "gaze_shown_s",
+        "s",
+        "aerial robots only: time the Gaze eye was on show (Walker et al. 2018)",
+        OURS,
+        f"{CODE}:_exposure",
+    ),
     ("turns", "count", "turns of the robot (|w| rising above 0.3 rad/s)", OURS, f"{CODE}:signal_lead_times"),
     ("turns_signalled", "count", "turns the signal on that side announced", OURS, f"{CODE}:signal_lead_times"),
-    ("turn_signal_lead_s_mean", "s", "mean time the matching signal had been lit when a turn began (0 if not)", OURS, f"{CODE}:signal_lead_times"),
+    (
+        "turn_signal_lead_s_mean",
+        "s",
+        "mean time the matching signal had been lit when a turn began (0 if not)",
+        OURS,
+        f"{CODE}:signal_lead_times",
+    ),
     ("passes", "count", "re-plans around a person on the path (the paper's Figure 3)", OURS, f"{CODE}:_passes"),
     (
         "passes_signalled",
@@ -264,8 +345,20 @@ METRICS: tuple[Row, ...] = (
         OURS,
         f"{CODE}:pass_signal_leads",
     ),
-    ("pass_signal_lead_s_median", "s", "median time that signal had been lit when the curve began (0 if not)", OURS, f"{CODE}:pass_signal_leads"),
-    ("condition_segments", "", "metrics.json only: per stretch of one condition, its start, end and cue exposure", OURS, f"{CODE}:_cues"),
+    (
+        "pass_signal_lead_s_median",
+        "s",
+        "median time that signal had been lit when the curve began (0 if not)",
+        OURS,
+        f"{CODE}:pass_signal_leads",
+    ),
+    (
+        "condition_segments",
+        "",
+        "metrics.json only: per stretch of one condition, its start, end and cue exposure",
+        OURS,
+        f"{CODE}:_cues",
+    ),
     (
         "valid",
         "",
@@ -276,7 +369,8 @@ METRICS: tuple[Row, ...] = (
     (
         "invalid_reasons",
         "",
-        "why a session is not valid: lost messages, gaps, a missing trial_end, bag or scenario copy, outside publishers",
+        "why a session is not valid: lost messages, gaps, "
+        "a missing trial_end, bag or scenario copy, outside publishers",
         OURS,
         "haven_scenarios/record/validity.py:check",
     ),
@@ -288,7 +382,13 @@ METRICS: tuple[Row, ...] = (
         "haven_scenarios/record/validity.py:check",
     ),
     *HUNAV_METRICS,
-    ("<h>_time_to_finish_s", "s", "when the person's own task was done (their last gem or room)", OURS, f"{CODE}:_person"),
+    (
+        "<h>_time_to_finish_s",
+        "s",
+        "when the person's own task was done (their last gem or room)",
+        OURS,
+        f"{CODE}:_person",
+    ),
     ("<h>_path_length_m", "m", "length of the person's track", OURS, f"{CODE}:_person"),
     (
         "<h>_time_not_moving_s",
@@ -300,11 +400,18 @@ METRICS: tuple[Row, ...] = (
     (
         "<h>_hesitations",
         "count",
-        f"times the person, walking their task, went slower than {SLOW_FRACTION:g} of their own walking speed for {MIN_S:g} s or more",
+        "times the person, walking their task, went slower than "
+        f"{SLOW_FRACTION:g} of their own walking speed for {MIN_S:g} s or more",
         OURS,
         "haven_scenarios/record/hesitation.py:hesitations",
     ),
-    ("<h>_hesitation_s", "s", "time spent in those hesitations", OURS, "haven_scenarios/record/hesitation.py:hesitations"),
+    (
+        "<h>_hesitation_s",
+        "s",
+        "time spent in those hesitations",
+        OURS,
+        "haven_scenarios/record/hesitation.py:hesitations",
+    ),
     (
         "<h>_detour_m",
         "m",
@@ -313,7 +420,13 @@ METRICS: tuple[Row, ...] = (
         f"{CODE}:_detour",
     ),
     ("<h>_gems", "count", "gems the person collected", OURS, f"{CODE}:_person"),
-    ("<h>_min_centre_distance_m", "m", "closest approach of the robot to this person, centre to centre", OURS, f"{CODE}:_person"),
+    (
+        "<h>_min_centre_distance_m",
+        "m",
+        "closest approach of the robot to this person, centre to centre",
+        OURS,
+        f"{CODE}:_person",
+    ),
     (
         "<h>_contacts",
         "episodes",
@@ -338,7 +451,8 @@ METRICS: tuple[Row, ...] = (
     (
         "<h>_<zone>_centre_band_s",
         "s",
-        "time the robot was in the zone's band only, centre to centre (disjoint: intimate < 0.45 <= personal < 1.2 <= social < 3.6)",
+        "time the robot was in the zone's band only, centre to centre (disjoint: "
+        "intimate < 0.45 <= personal < 1.2 <= social < 3.6)",
         cf(HALL),
         f"{CODE}:_person",
     ),

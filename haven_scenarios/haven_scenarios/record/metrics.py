@@ -109,7 +109,11 @@ def _heading_change(yaw: FloatArray) -> float:
 
 
 def _turning(poses: Sequence[Any]) -> float:
-    return sum(abs(wrap_angle(b.yaw - a.yaw)) for a, b in itertools.pairwise(poses) if math.isfinite(a.yaw) and math.isfinite(b.yaw))
+    return sum(
+        abs(wrap_angle(b.yaw - a.yaw))
+        for a, b in itertools.pairwise(poses)
+        if math.isfinite(a.yaw) and math.isfinite(b.yaw)
+    )
 
 
 def _navigation(tl: Timeline, events: Sequence[Event], rec: Recording, t0: float, t1: float) -> dict[str, Any]:
@@ -151,7 +155,14 @@ def _distances(tl: Timeline) -> dict[str, FloatArray]:
 def _proximity(tl: Timeline, robot_radius_m: float) -> dict[str, Any]:
     d = _distances(tl)
     if not d:
-        return {k: None for k in ("min_human_centre_distance_m", "min_human_surface_distance_m", "avg_closest_human_centre_distance_m")}
+        return {
+            k: None
+            for k in (
+                "min_human_centre_distance_m",
+                "min_human_surface_distance_m",
+                "avg_closest_human_centre_distance_m",
+            )
+        }
     closest = np.nanmin(np.vstack(list(d.values())), axis=0)
     total = float(np.sum(tl.dt)) or 1.0
     bands = {
@@ -166,7 +177,9 @@ def _proximity(tl: Timeline, robot_radius_m: float) -> dict[str, Any]:
         "avg_closest_human_centre_distance_m": rounded(float(np.nanmean(closest))),
     }
     for name, (lo, hi) in bands.items():
-        out[f"closest_{name}_centre_pct"] = rounded(100.0 * float(np.sum(tl.dt[(closest >= lo) & (closest < hi)])) / total, 1)
+        out[f"closest_{name}_centre_pct"] = rounded(
+            100.0 * float(np.sum(tl.dt[(closest >= lo) & (closest < hi)])) / total, 1
+        )
     return out
 
 
@@ -201,8 +214,12 @@ def _mission(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
 
 
 def _exposure(tl: Timeline, names: Sequence[str], sel: Any = slice(None)) -> dict[str, float]:
-    dt, cues = tl.dt[sel], tl.cues[sel] if isinstance(sel, slice) else [c for c, keep in zip(tl.cues, sel, strict=True) if keep]
-    shown = {CUE_SPECS[name].exposure: [c.shown(name) for c in cues] for name in names}  # every registered cue the robot has
+    dt, cues = (
+        tl.dt[sel],
+        tl.cues[sel] if isinstance(sel, slice) else [c for c, keep in zip(tl.cues, sel, strict=True) if keep],
+    )
+    # every registered cue the robot has
+    shown = {CUE_SPECS[name].exposure: [c.shown(name) for c in cues] for name in names}
     return {k: round(float(np.sum(dt[np.asarray(v, dtype=bool)])), 2) for k, v in shown.items()}
 
 
@@ -243,7 +260,11 @@ def pass_signal_leads(
 
 def _passes(tl: Timeline, events: Sequence[Event]) -> dict[str, Any]:
     """Figure 3: each re-plan around a person, whether its side's signal showed before the curve."""
-    passes = [(e.stamp, 1 if e.get("side") == "left" else -1) for e in events if e.kind is EventKind.REPLANNED and e.get("side") in ("left", "right")]
+    passes = [
+        (e.stamp, 1 if e.get("side") == "left" else -1)
+        for e in events
+        if e.kind is EventKind.REPLANNED and e.get("side") in ("left", "right")
+    ]
     leads = pass_signal_leads(tl.t, tl.robot_w, [c.turn_signal for c in tl.cues], passes) if len(tl.t) else []
     return {
         "passes": len(passes),
@@ -264,7 +285,12 @@ def _cues(tl: Timeline, names: Sequence[str]) -> dict[str, Any]:
             sel = np.zeros(len(tl.t), dtype=bool)
             sel[start:i] = True
             segments.append(
-                {"start_s": round(float(tl.t[start]), 2), "end_s": round(float(tl.t[i - 1]), 2), "cues_on": on, **_exposure(tl, names, sel)}
+                {
+                    "start_s": round(float(tl.t[start]), 2),
+                    "end_s": round(float(tl.t[i - 1]), 2),
+                    "cues_on": on,
+                    **_exposure(tl, names, sel),
+                }
             )
             start = i
     out["condition_segments"] = segments
@@ -281,7 +307,9 @@ def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None
     out: dict[str, Any] = {
         f"{hid}_time_to_finish_s": rounded(max([e.stamp for e in own], default=done) if done is not None else None, 2),
         f"{hid}_path_length_m": rounded(_length(xy)),
-        f"{hid}_time_not_moving_s": rounded(float(np.sum(dt[:-1][(speed < PERSON_STILL_MPS) & working])) if len(speed) else 0.0, 2),
+        f"{hid}_time_not_moving_s": rounded(
+            float(np.sum(dt[:-1][(speed < PERSON_STILL_MPS) & working])) if len(speed) else 0.0, 2
+        ),
         f"{hid}_detour_m": rounded(_detour(tl.t, xy, own, world)),
         f"{hid}_gems": sum(1 for e in own if e.kind is EventKind.GEM_COLLECTED),
         f"{hid}_min_centre_distance_m": rounded(float(np.min(d)) if len(d) else None),
@@ -293,7 +321,9 @@ def _person(hid: str, tl: Timeline, events: Sequence[Event], world: World | None
     for zone, r in ZONES.items():
         inside = d < r
         out[f"{hid}_{zone}_centre_intrusion_s"] = round(float(np.sum(dt[inside])), 2)
-        out[f"{hid}_{zone}_centre_intrusions"] = int(np.sum(inside[1:] & ~inside[:-1]) + (1 if len(inside) and inside[0] else 0))
+        out[f"{hid}_{zone}_centre_intrusions"] = int(
+            np.sum(inside[1:] & ~inside[:-1]) + (1 if len(inside) and inside[0] else 0)
+        )
         out[f"{hid}_{zone}_centre_band_s"] = round(float(np.sum(dt[(d >= previous) & (d < r)])), 2)
         previous = r
     return out

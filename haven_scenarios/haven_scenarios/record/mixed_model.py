@@ -39,8 +39,8 @@ ALPHA = 0.05  # the confidence intervals' level: 95 %
 # these the table has (the study table's name for it, and the schedule's).
 POSITIONS = ("order_position", "sequence", "position")
 MIXED = (
-    "scenario", "measure", "human", "formula", "reference", "participants", "trials", "term", "coef", "ci_low", "ci_high", "p",
-    "participant_var", "residual_var", "converged", "singular", "note",
+    "scenario", "measure", "human", "formula", "reference", "participants", "trials",
+    "term", "coef", "ci_low", "ci_high", "p", "participant_var", "residual_var", "converged", "singular", "note",
 )  # fmt: skip
 
 
@@ -90,7 +90,9 @@ def observations(results: Sequence[TrialResults], scenario: str, measure: str, p
         if values and all(math.isfinite(v) for v in values):
             position = next((float(d[k]) for k in POSITIONS if d.get(k) is not None), 0.0)
             robot = str(d.get("robot") or "")
-            out.append(Observation(str(d["participant"]), str(d["condition"]), position, sum(values) / len(values), robot))
+            out.append(
+                Observation(str(d["participant"]), str(d["condition"]), position, sum(values) / len(values), robot)
+            )
     return out
 
 
@@ -149,16 +151,24 @@ def fit(obs: Sequence[Observation], conditions: Sequence[str], reference: str) -
     k = x.shape[1]
     ci = np.asarray(result.conf_int(ALPHA))[:k]
     params, pvalues = np.asarray(result.fe_params), np.asarray(result.pvalues)[:k]
-    terms = tuple(Term(n, float(params[i]), _finite(ci[i, 0]), _finite(ci[i, 1]), _finite(pvalues[i])) for i, n in enumerate(names))
+    terms = tuple(
+        Term(n, float(params[i]), _finite(ci[i, 0]), _finite(ci[i, 1]), _finite(pvalues[i]))
+        for i, n in enumerate(names)
+    )
     participant_var, residual_var = float(np.asarray(result.cov_re)[0, 0]), float(result.scale)
     exact = participant_var + residual_var <= EXACT_FRACTION * float(np.var(y))
     singular = exact or participant_var <= SINGULAR_FRACTION * residual_var
     said = sorted({str(w.message).split("\n")[0][:70] for w in caught})
     notes = [note] if note else []
     if exact:
-        notes.append("singular fit: no variance left, the fixed effects give every value exactly (deterministic data): p values mean nothing")
+        notes.append(
+            "singular fit: no variance left, the fixed effects give every "
+            "value exactly (deterministic data): p values mean nothing"
+        )
     elif singular:
-        notes.append("singular fit: participant variance 0 (under 1 % of the residual: no spread between participants to model)")
+        notes.append(
+            "singular fit: participant variance 0 (under 1 % of the residual: no spread between participants to model)"
+        )
     # (statsmodels tries its optimizers in turn: a warning from one that failed may precede a converged fit)
     said_by = "statsmodels, on the way to a converged fit" if result.converged else "statsmodels, not converged"
     notes += [f"{said_by}: {s}" for s in said if not (singular and "boundary" in s)]
@@ -173,7 +183,9 @@ def fit(obs: Sequence[Observation], conditions: Sequence[str], reference: str) -
     )
 
 
-def model_rows(results: Sequence[TrialResults], measures: Sequence[tuple[str, bool]], conditions: Sequence[str]) -> list[dict[str, Any]]:
+def model_rows(
+    results: Sequence[TrialResults], measures: Sequence[tuple[str, bool]], conditions: Sequence[str]
+) -> list[dict[str, Any]]:
     """mixed_models.csv: per scenario x measure (name, per person?), a row per fixed effect (or one
     with the note when nothing was fitted); the reference is the study's first condition."""
     scenarios = sorted({str(r.design["scenario"]) for r in results if not r.design["practice"]})
@@ -184,7 +196,13 @@ def model_rows(results: Sequence[TrialResults], measures: Sequence[tuple[str, bo
             if not obs:
                 continue
             f = fit(obs, conditions, conditions[0])
-            head = {"scenario": scenario, "measure": measure, "human": "person" if per_person else "", "formula": f.formula, "reference": f.reference}
+            head = {
+                "scenario": scenario,
+                "measure": measure,
+                "human": "person" if per_person else "",
+                "formula": f.formula,
+                "reference": f.reference,
+            }
             tail = {
                 "participants": f.participants,
                 "trials": f.trials,
@@ -195,7 +213,13 @@ def model_rows(results: Sequence[TrialResults], measures: Sequence[tuple[str, bo
                 "note": f.note,
             }
             for t in f.terms or (Term("", math.nan, None, None, None),):
-                values = {"term": t.name, "coef": _round(t.coef), "ci_low": _round(t.ci_low), "ci_high": _round(t.ci_high), "p": _round(t.p, 6)}
+                values = {
+                    "term": t.name,
+                    "coef": _round(t.coef),
+                    "ci_low": _round(t.ci_low),
+                    "ci_high": _round(t.ci_high),
+                    "p": _round(t.p, 6),
+                }
                 rows.append({**head, **tail, **values})
     return rows
 

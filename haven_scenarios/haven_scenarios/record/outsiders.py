@@ -36,7 +36,17 @@ METRIC_TOPICS = (topics.ODOM, topics.HUMANS, topics.BATTERY, topics.CUE_STATE, t
 
 # The ROS names of the suite's nodes (haven_sim/common/nodes.py).
 SIM, MUX, PLANNER, CONTROLLER, VIZ, SCENARIO, WEB, RECORDER = (
-    n.name for n in (nodes.SIM, nodes.MUX, nodes.PLANNER, nodes.CONTROLLER, nodes.VIZ, nodes.SCENARIO, nodes.WEB, nodes.RECORDER)
+    n.name
+    for n in (
+        nodes.SIM,
+        nodes.MUX,
+        nodes.PLANNER,
+        nodes.CONTROLLER,
+        nodes.VIZ,
+        nodes.SCENARIO,
+        nodes.WEB,
+        nodes.RECORDER,
+    )
 )
 EVERY_NODE = frozenset({SIM, MUX, PLANNER, CONTROLLER, VIZ, SCENARIO, WEB})
 
@@ -48,7 +58,10 @@ def _t(name: str) -> str:
 # Topic (a glob for the per-person ones) -> the suite's nodes that publish it: the components'
 # outputs (test_outsiders.py holds the table to them) and the web pages' allow-lists (web/access.py).
 WRITERS: Mapping[str, frozenset[str]] = {
-    **{_t(t): frozenset({SIM}) for t in (topics.CLOCK, topics.MAP, topics.ODOM, topics.BATTERY, topics.HUMANS, topics.human_pose("*"))},
+    **{
+        _t(t): frozenset({SIM})
+        for t in (topics.CLOCK, topics.MAP, topics.ODOM, topics.BATTERY, topics.HUMANS, topics.human_pose("*"))
+    },
     _t(topics.CMD_VEL): frozenset({MUX}),
     _t(topics.CMD_VEL_NAV): frozenset({CONTROLLER}),
     _t(topics.CMD_VEL_TELEOP): frozenset({WEB}),  # the console's Wizard-of-Oz driving
@@ -118,7 +131,13 @@ class Seen:
     last_s: float
 
     def to_dict(self) -> dict[str, object]:
-        return {"topic": self.topic, "node": self.node, "gid": self.gid, "first_s": round(self.first_s, 3), "last_s": round(self.last_s, 3)}
+        return {
+            "topic": self.topic,
+            "node": self.node,
+            "gid": self.gid,
+            "first_s": round(self.first_s, 3),
+            "last_s": round(self.last_s, 3),
+        }
 
 
 @dataclass
@@ -197,7 +216,11 @@ def outsiders(log: PublisherLog, declared: Declared, with_open: bool = False) ->
 
 def describe(s: Seen, declared: Declared) -> str:
     """One line: who published where and when (trial time is up to the caller)."""
-    twin = " (a second publisher under one of our node names: another HAVEN suite on this ROS domain?)" if s.node in declared.nodes else ""
+    twin = (
+        " (a second publisher under one of our node names: another HAVEN suite on this ROS domain?)"
+        if s.node in declared.nodes
+        else ""
+    )
     who = "a node whose name never became known" if s.node in (UNNAMED, "") else s.node
     return f"{s.topic}: published by {who} from outside the suite{twin}"
 

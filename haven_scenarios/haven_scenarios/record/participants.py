@@ -23,7 +23,12 @@ from typing import Any
 from haven_scenarios.record.report import write_table
 from haven_scenarios.record.session import write_json
 from haven_scenarios.study.instruments import CONSENT, StudyInstruments, agreed
-from haven_scenarios.study.questionnaires import CHOICE, Questionnaire, answers_record, codebook_rows as questionnaire_rows
+from haven_scenarios.study.questionnaires import (
+    CHOICE,
+    Questionnaire,
+    answers_record,
+    codebook_rows as questionnaire_rows,
+)
 
 INSTRUMENTS_FILE = "instruments.json"
 PARTICIPANTS_CSV = "participants.csv"
@@ -41,7 +46,9 @@ class InstrumentBook:
         """The instruments of `qs` not answered (nor marked not asked) yet, in order."""
         return [q for q in qs if q.name not in self.data]
 
-    def take(self, q: Questionnaire, answers: Any, answered_at: str, order: Sequence[str] | None = None) -> dict[str, Any]:
+    def take(
+        self, q: Questionnaire, answers: Any, answered_at: str, order: Sequence[str] | None = None
+    ) -> dict[str, Any]:
         """Check and store one instrument's answers (ValueError, one line, if they do not fit)."""
         if q.name in self.data:
             raise ValueError(f"{q.name} is answered already")
@@ -99,7 +106,9 @@ def _values(q: Questionnaire, record: Any) -> dict[str, Any]:
         out = {}
         for i in q.items:
             v = answers.get(i.id, "")
-            out[f"{q.name}_{i.id}"] = i.options[v - 1] if i.kind == CHOICE and isinstance(v, int) and 1 <= v <= len(i.options) else v
+            out[f"{q.name}_{i.id}"] = (
+                i.options[v - 1] if i.kind == CHOICE and isinstance(v, int) and 1 <= v <= len(i.options) else v
+            )
         return out
     return {k: v for k, v in record.get("scores", {}).items() if k in _columns(q)}
 
@@ -112,13 +121,19 @@ def participant_rows(root: Path, participants: Sequence[str], instruments: Study
         row: dict[str, Any] = dict.fromkeys(columns(instruments), "") | {"participant": p}
         for q in (*instruments.first, *instruments.after):
             row |= _values(q, data.get(q.name))
-        skipped = [q.name for q in (*instruments.first, *instruments.after) if isinstance(data.get(q.name), dict) and NOT_ASKED in data[q.name]]
+        skipped = [
+            q.name
+            for q in (*instruments.first, *instruments.after)
+            if isinstance(data.get(q.name), dict) and NOT_ASKED in data[q.name]
+        ]
         row[NOT_ASKED] = " ".join(skipped)
         rows.append(row)
     return rows
 
 
-def write_participants(out: Path, root: Path, participants: Sequence[str], instruments: StudyInstruments) -> list[dict[str, Any]]:
+def write_participants(
+    out: Path, root: Path, participants: Sequence[str], instruments: StudyInstruments
+) -> list[dict[str, Any]]:
     """participants.csv in `out`; its rows."""
     rows = participant_rows(root, participants, instruments)
     write_table(out / PARTICIPANTS_CSV, rows, columns(instruments))
@@ -130,7 +145,14 @@ def codebook_rows(instruments: StudyInstruments) -> list[tuple[str, str, str, st
     rows: list[tuple[str, str, str, str]] = [("participant", "", "the participant's id in the study", "")]
     for q in (*instruments.first, *instruments.after):
         if q.name == CONSENT:
-            rows += [("consent", "", "yes: agreed to the study's consent text; no: declined (no trial run)", "the study file")]
+            rows += [
+                (
+                    "consent",
+                    "",
+                    "yes: agreed to the study's consent text; no: declined (no trial run)",
+                    "the study file",
+                )
+            ]
             rows += [("consent_at", "UTC", "when the consent was answered (ISO 8601)", "")]
         elif not q.scales:
             for i in q.items:
@@ -138,7 +160,15 @@ def codebook_rows(instruments: StudyInstruments) -> list[tuple[str, str, str, st
                 rows.append((f"{q.name}_{i.id}", "", f"{i.text} ({kind})", q.source))
         else:
             rows += questionnaire_rows(q)
-    return [*rows, (NOT_ASKED, "", "the instruments not asked (a --batch pilot's simulated participant): their columns are empty", "")]
+    return [
+        *rows,
+        (
+            NOT_ASKED,
+            "",
+            "the instruments not asked (a --batch pilot's simulated participant): their columns are empty",
+            "",
+        ),
+    ]
 
 
 def summary_line(rows: Sequence[dict[str, Any]], instruments: StudyInstruments) -> str:

@@ -43,8 +43,8 @@ from haven_scenarios.record.mixed_model import Observation, fit
 from haven_scenarios.record.report import save_png
 
 TARGET = 0.8  # the conventional power to plan for (Cohen 1988, Statistical Power Analysis, ch. 2.4)
-POWER = ("scenario", "metric", "condition", "reference", "effect", "participants", "reps", "detected", "power", "ci_low", "ci_high",
-         "singular", "failed", "mean_estimate", "pool", "pool_effect",
+POWER = ("scenario", "metric", "condition", "reference", "effect", "participants", "reps",
+         "detected", "power", "ci_low", "ci_high", "singular", "failed", "mean_estimate", "pool", "pool_effect",
          "false_positives", "false_positive_rate", "fp_ci_low", "fp_ci_high")  # fmt: skip
 Order = tuple[str, ...]  # a participant's conditions, in the order they ran them in one scenario
 
@@ -81,9 +81,13 @@ class Cell:
         return [(o, n, len(self.pool[o])) for o, n in sorted(needed.items()) if len(self.pool[o]) < n]
 
     def shifted(self, trials: Sequence[Observation], slot: int, effect: float) -> list[Observation]:
-        """A drawn participant's trials as participant `s<slot>`, C shifted so the pool's C - R difference is `effect`."""
+        """A drawn participant's trials as participant `s<slot>`, C shifted so the pool's C - R difference is
+        `effect`."""
         c, shift = self.question.condition, effect - self.pool_effect
-        return [Observation(f"s{slot}", o.condition, o.position, o.value + shift if o.condition == c else o.value) for o in trials]
+        return [
+            Observation(f"s{slot}", o.condition, o.position, o.value + shift if o.condition == c else o.value)
+            for o in trials
+        ]
 
 
 @dataclass(frozen=True)
@@ -113,13 +117,15 @@ class Power:
     def row(self) -> dict[str, Any]:
         q, low_high = self.cell.question, self.interval()
         return {
-            "scenario": self.cell.scenario, "metric": q.metric, "condition": q.condition, "reference": q.reference, "effect": q.effect,
-            "participants": self.cell.participants, "reps": q.reps, "detected": self.detected, "power": round(self.power, 4),
-            "ci_low": round(low_high[0], 4), "ci_high": round(low_high[1], 4), "singular": self.singular, "failed": self.failed,
+            "scenario": self.cell.scenario, "metric": q.metric, "condition": q.condition, "reference": q.reference,
+            "effect": q.effect, "participants": self.cell.participants, "reps": q.reps, "detected": self.detected,
+            "power": round(self.power, 4), "ci_low": round(low_high[0], 4), "ci_high": round(low_high[1], 4),
+            "singular": self.singular, "failed": self.failed,
             "mean_estimate": round(self.mean_estimate, 6) if self.mean_estimate is not None else None,
-            "pool": self.cell.pool_size, "pool_effect": round(self.cell.pool_effect, 6), "false_positives": self.false_positives,
-            "false_positive_rate": round(self.false_positive_rate, 4),
-            **dict(zip(("fp_ci_low", "fp_ci_high"), (round(x, 4) for x in wilson(self.false_positives, q.reps)), strict=True)),
+            "pool": self.cell.pool_size, "pool_effect": round(self.cell.pool_effect, 6),
+            "false_positives": self.false_positives, "false_positive_rate": round(self.false_positive_rate, 4),
+            **dict(zip(("fp_ci_low", "fp_ci_high"),
+                       (round(x, 4) for x in wilson(self.false_positives, q.reps)), strict=True)),
         }  # fmt: skip
 
 
@@ -142,7 +148,9 @@ def pool_effect(pool: Sequence[Observation], question: Question) -> float:
     return means[question.condition] - means[question.reference]
 
 
-def cell(question: Question, scenario: str, participants: int, slots: Sequence[Order], pool: Sequence[Observation]) -> Cell:
+def cell(
+    question: Question, scenario: str, participants: int, slots: Sequence[Order], pool: Sequence[Observation]
+) -> Cell:
     """The cell's pool, grouped by each pool participant's order; ValueError (one line) when an
     order the study needs has no pool participant."""
     delta = pool_effect(pool, question)
@@ -155,8 +163,13 @@ def cell(question: Question, scenario: str, participants: int, slots: Sequence[O
         groups[tuple(o.condition for o in ran)].append(ran)
     for order in slots:
         if order not in groups:
-            raise ValueError(f"{scenario}: no pool participant ran the order {', '.join(order)} with valid trials: use a larger --pool")
-    return Cell(question, scenario, participants, tuple(slots), {k: tuple(v) for k, v in groups.items()}, len(trials), delta)
+            raise ValueError(
+                f"{scenario}: no pool participant ran the order "
+                f"{', '.join(order)} with valid trials: use a larger --pool"
+            )
+    return Cell(
+        question, scenario, participants, tuple(slots), {k: tuple(v) for k, v in groups.items()}, len(trials), delta
+    )
 
 
 def estimate(c: Cell) -> Power:
@@ -169,7 +182,9 @@ def estimate(c: Cell) -> Power:
         warnings.simplefilter("ignore")  # (the fits say what they need to in their results)
         for _ in range(q.reps):
             drawn = [(slot, c.pool[order][int(rng.integers(len(c.pool[order])))]) for slot, order in enumerate(c.slots)]
-            null = fit([o for slot, trials in drawn for o in c.shifted(trials, slot, 0.0)], q.conditions, q.reference).term(q.condition)
+            null = fit(
+                [o for slot, trials in drawn for o in c.shifted(trials, slot, 0.0)], q.conditions, q.reference
+            ).term(q.condition)
             false_positives += null is not None and null.p is not None and null.p < q.alpha
             f = fit([o for slot, trials in drawn for o in c.shifted(trials, slot, q.effect)], q.conditions, q.reference)
             term = f.term(q.condition)
@@ -184,13 +199,15 @@ def estimate(c: Cell) -> Power:
 
 def table(results: Sequence[Power]) -> list[list[str]]:
     """The printed table: power with its interval per scenario and participant count."""
-    rows = [["scenario", "participants", "power", "95 % CI (Wilson)", "detected", "at E=0", "singular fits", "failed fits"]]
+    rows = [
+        ["scenario", "participants", "power", "95 % CI (Wilson)", "detected", "at E=0", "singular fits", "failed fits"]
+    ]
     for r in results:
         low, high = r.interval()
         reps = r.cell.question.reps
         null = f"{r.false_positive_rate:.2f}" + (" !" if r.anticonservative() else "")
-        rows.append([r.cell.scenario, str(r.cell.participants), f"{r.power:.2f}", f"{low:.2f}-{high:.2f}", f"{r.detected}/{reps}", null,
-                     f"{r.singular}/{reps}", f"{r.failed}/{reps}"])  # fmt: skip
+        rows.append([r.cell.scenario, str(r.cell.participants), f"{r.power:.2f}", f"{low:.2f}-{high:.2f}",
+                     f"{r.detected}/{reps}", null, f"{r.singular}/{reps}", f"{r.failed}/{reps}"])  # fmt: skip
     return rows
 
 

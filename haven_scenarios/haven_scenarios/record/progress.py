@@ -34,7 +34,14 @@ from haven_scenarios.study.schedule import PlannedTrial, assignment, schedule
 from haven_sim.common import atomic
 
 STORED = "study.json"
-FINISHED = (EndReason.COMPLETED, EndReason.TIMEOUT, EndReason.CONTACT, EndReason.BATTERY_EMPTY, EndReason.STOPPED, EndReason.PLUGIN_FAILED)
+FINISHED = (
+    EndReason.COMPLETED,
+    EndReason.TIMEOUT,
+    EndReason.CONTACT,
+    EndReason.BATTERY_EMPTY,
+    EndReason.STOPPED,
+    EndReason.PLUGIN_FAILED,
+)
 
 
 def finished(outcome: Any) -> bool:
@@ -78,10 +85,15 @@ def ran_otherwise(info: dict[str, Any], trial: PlannedTrial) -> str | None:
     ran = (info.get("scenario"), info.get("condition"), info.get("seed"))
     planned = (trial.scenario, condition_name(parse_condition(trial.cues)), trial.seed)
     if trial.robot_name and info.get("robot_name") != trial.robot_name:
-        return f"ran with robot {info.get('robot_name') or 'turtlebot2'}; the schedule now says robot {trial.robot_name}"
+        return (
+            f"ran with robot {info.get('robot_name') or 'turtlebot2'}; the schedule now says robot {trial.robot_name}"
+        )
     if ran == planned:
         return None
-    return f"ran as {ran[0]}, condition {ran[1]}, seed {ran[2]}; the schedule now says {planned[0]}, condition {planned[1]}, seed {planned[2]}"
+    return (
+        f"ran as {ran[0]}, condition {ran[1]}, seed {ran[2]}; the schedule "
+        f"now says {planned[0]}, condition {planned[1]}, seed {planned[2]}"
+    )
 
 
 def attempts(folder: Path, trial: PlannedTrial) -> tuple[Attempt, ...]:
@@ -110,8 +122,14 @@ def stored(root: Path) -> dict[str, Any] | None:
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError) as e:
-        raise StudyError(f"{path}: unreadable ({str(e)[:80]}); move it away to start the study's folder afresh") from None
-    if not isinstance(data, dict) or not isinstance(data.get("study"), dict) or not isinstance(data.get("schedule"), list):
+        raise StudyError(
+            f"{path}: unreadable ({str(e)[:80]}); move it away to start the study's folder afresh"
+        ) from None
+    if (
+        not isinstance(data, dict)
+        or not isinstance(data.get("study"), dict)
+        or not isinstance(data.get("schedule"), list)
+    ):
         raise StudyError(f"{path}: not a study record of haven; move it away to start the study's folder afresh")
     return data
 
@@ -143,8 +161,9 @@ def bind(study: Study, root: Path, replan: bool = False) -> list[PlannedTrial]:
         changed = differences(old["study"], record["study"])
         if changed:
             raise StudyError(
-                f"{study.source}: the study changed since its first run in {root} ({', '.join(changed)} differ from {root / STORED}); "
-                "run it with --replan to go on with the new schedule, or --dir for a new study folder"
+                f"{study.source}: the study changed since its first run in {root} "
+                f"({', '.join(changed)} differ from {root / STORED}); run it with "
+                "--replan to go on with the new schedule, or --dir for a new study folder"
             )
     if old is None or replan:
         root.mkdir(parents=True, exist_ok=True)

@@ -17,7 +17,10 @@ class RateStats:
     window: int
 
     def line(self) -> str:
-        return f"average rate: {self.rate_hz:.3f}\n\tmin: {self.min_s:.3f}s max: {self.max_s:.3f}s std dev: {self.std_s:.5f}s window: {self.window}"
+        return (
+            f"average rate: {self.rate_hz:.3f}\n"
+            f"\tmin: {self.min_s:.3f}s max: {self.max_s:.3f}s std dev: {self.std_s:.5f}s window: {self.window}"
+        )
 
 
 def rate_stats(arrivals: Sequence[float]) -> RateStats | None:
@@ -26,4 +29,6 @@ def rate_stats(arrivals: Sequence[float]) -> RateStats | None:
         return None
     gaps = [b - a for a, b in itertools.pairwise(arrivals)]
     mean = sum(gaps) / len(gaps)
-    return RateStats(1.0 / mean if mean > 0 else float("inf"), min(gaps), max(gaps), statistics.pstdev(gaps), len(arrivals))
+    return RateStats(
+        1.0 / mean if mean > 0 else float("inf"), min(gaps), max(gaps), statistics.pstdev(gaps), len(arrivals)
+    )

@@ -35,7 +35,9 @@ from haven_scenarios.record.validity import MAX_GAP_S
 from haven_sim.common.events import EventKind
 
 KEY = "recorder_stop"  # in session.json
-CLOSED = "closed by the recorder (a clean exit: it exits 0 only after writing the footer, the summary and metadata.yaml)"
+CLOSED = (
+    "closed by the recorder (a clean exit: it exits 0 only after writing the footer, the summary and metadata.yaml)"
+)
 
 
 def _summary_count(mcap: Path) -> int | None:

@@ -28,7 +28,14 @@ from rosbags.rosbag2.metadata import parse_qos
 from rosbags.typesys import Stores, get_typestore
 from rosbags.typesys.msg import get_types_from_msg
 
-from haven_scenarios.record.bag import REPAIRED_KEY, TYPESTORE, RecoveredChannel, custom_data, readable, recovered_records
+from haven_scenarios.record.bag import (
+    REPAIRED_KEY,
+    TYPESTORE,
+    RecoveredChannel,
+    custom_data,
+    readable,
+    recovered_records,
+)
 
 DAMAGED = ".damaged"  # suffix of the damaged originals kept beside the repaired bag
 WORK = ".repairing"  # the new bag is written here first (inside the bag folder)
@@ -49,8 +56,15 @@ class Repaired:
 
     def line(self) -> str:
         kept = ", ".join(p.name for p in self.kept)
-        skipped = f"; left out {sum(self.skipped.values())} of unknown type ({', '.join(sorted(self.skipped))})" if self.skipped else ""
-        return f"repaired {self.bag}: {self.messages} messages on {self.topics} topics recovered{skipped}; the damaged original kept as {kept}"
+        skipped = (
+            f"; left out {sum(self.skipped.values())} of unknown type ({', '.join(sorted(self.skipped))})"
+            if self.skipped
+            else ""
+        )
+        return (
+            f"repaired {self.bag}: {self.messages} messages on {self.topics} "
+            f"topics recovered{skipped}; the damaged original kept as {kept}"
+        )
 
 
 def _has_summary(path: Path) -> bool:
@@ -87,7 +101,11 @@ def _connection(writer: Writer, channel: RecoveredChannel) -> Connection:
     qos = parse_qos(channel.offered_qos)
     if channel.msgtype in TYPESTORE.types:
         return writer.add_connection(
-            channel.topic, channel.msgtype, typestore=TYPESTORE, serialization_format=channel.message_encoding, offered_qos_profiles=qos
+            channel.topic,
+            channel.msgtype,
+            typestore=TYPESTORE,
+            serialization_format=channel.message_encoding,
+            offered_qos_profiles=qos,
         )
     if channel.schema_encoding != "ros2msg":
         raise ValueError(f"schema encoding {channel.schema_encoding}")
@@ -103,7 +121,9 @@ def _connection(writer: Writer, channel: RecoveredChannel) -> Connection:
     )
 
 
-def _rewrite(sources: Sequence[Path], out: Path, kept_custom: dict[str, str], how: str) -> tuple[int, int, dict[str, int]]:
+def _rewrite(
+    sources: Sequence[Path], out: Path, kept_custom: dict[str, str], how: str
+) -> tuple[int, int, dict[str, int]]:
     """A new bag at `out` with every message the sources still hold: (messages, topics, skipped)."""
     writer = Writer(out, version=9, storage_plugin=StoragePlugin.MCAP)
     writer.open()
@@ -161,7 +181,9 @@ def repair(bag: Path, how: str = "haven repair") -> Repaired:
         n, topics, skipped = _rewrite(sources, work / bag.name, kept_custom, how)
     except OSError as e:
         shutil.rmtree(work, ignore_errors=True)
-        raise RepairError(f"{bag}: could not write the repaired bag: {e.strerror or e}; the damaged recording is left as it was") from None
+        raise RepairError(
+            f"{bag}: could not write the repaired bag: {e.strerror or e}; the damaged recording is left as it was"
+        ) from None
     kept = [_keep(p) for p in sources]
     if stale.exists():
         kept.append(_keep(stale))

@@ -57,7 +57,13 @@ from haven_viz.cues import CUES, CueToggles
 from haven_viz.world_markers import world_markers
 
 PACKAGES = ("haven_sim", "haven_viz", "haven_scenarios", "ros-jazzy-rclpy", "pymunk", "numpy", "rosbags", "mcap")
-SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = "scenario.yaml", "world.yaml", "params.yaml", "session.json", "metrics.json"
+SCENARIO_FILE, WORLD_FILE, PARAMS_FILE, SESSION_FILE, METRICS_FILE = (
+    "scenario.yaml",
+    "world.yaml",
+    "params.yaml",
+    "session.json",
+    "metrics.json",
+)
 ROBOT_FILE = "robot.yaml"
 EVENTS_FILE = "events.jsonl"
 # The write end of a pipe on which the recorder says it has the trial's end on every state stream
@@ -100,7 +106,8 @@ def git_commit() -> str | None:
         head = subprocess.run(["git", "rev-parse", "HEAD"], cwd=here, capture_output=True, text=True, timeout=5)
         if head.returncode != 0:
             return None
-        status = ["git", "--no-optional-locks", "status", "--porcelain", "--untracked-files=no"]  # (no index.lock left if it times out)
+        # (no index.lock left if it times out)
+        status = ["git", "--no-optional-locks", "status", "--porcelain", "--untracked-files=no"]
         dirty = subprocess.run(status, cwd=here, capture_output=True, text=True, timeout=5)
         return head.stdout.strip() + ("+dirty" if dirty.stdout.strip() else "")
     except (OSError, subprocess.TimeoutExpired):
@@ -146,22 +153,32 @@ def _params(params: PersonParams) -> dict[str, Any]:
     """A person's `params` as a scenario file sets them (those not at their default): the scenario
     node reads them from the session's copy, so batch and ROS trials have the same people."""
     default = PersonParams()
-    changed = {f.name: getattr(params, f.name) for f in fields(PersonParams) if getattr(params, f.name) != getattr(default, f.name)}
+    changed = {
+        f.name: getattr(params, f.name)
+        for f in fields(PersonParams)
+        if getattr(params, f.name) != getattr(default, f.name)
+    }
     return {"params": changed} if changed else {}
 
 
 def write_inputs(folder: Path, scenario: Scenario, params_yaml: str) -> None:
     """The scenario (with world: world.yaml, robot: robot.yaml), copies of its world and its robot,
     and every node's parameters."""
-    data: dict[str, Any] = yaml.safe_load(Path(scenario.source).read_text()) if scenario.source else {"name": scenario.name}
+    data: dict[str, Any] = (
+        yaml.safe_load(Path(scenario.source).read_text()) if scenario.source else {"name": scenario.name}
+    )
     data["world"] = WORLD_FILE
     robot = robot_file_text(scenario.robot)
     section: dict[str, Any] = dict(data.get("robot") or {})
-    section["model"] = ROBOT_FILE if robot is not None else scenario.robot_model  # (a robot made in code has no file: its name)
+    # (a robot made in code has no file: its name)
+    section["model"] = ROBOT_FILE if robot is not None else scenario.robot_model
     data["robot"] = section
     if robot is not None:
         atomic.write_text(folder / ROBOT_FILE, robot)
-    data["humans"] = [{"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps, **_params(h.params)} for h in scenario.humans]
+    data["humans"] = [
+        {"id": h.id, "model": h.model, "route": list(h.route), "speed_mps": h.speed_mps, **_params(h.params)}
+        for h in scenario.humans
+    ]
     data["robot"].pop("start", None)  # (the starts as run are the world copy's)
     for name, content in world_files(scenario.world, WORLD_FILE).items():  # (a world from a map: its image too)
         atomic.write_bytes(folder / name, content)
@@ -213,10 +230,15 @@ def analyse(folder: Path) -> tuple[dict[str, Any], World | None, Recording]:
     except Exception as e:
         rec, note = Recording(), f"bag unreadable: {str(e)[:120]}"
     end = rec.first(EventKind.TRIAL_END)
-    name, reason = str(info.get("scenario", scenario.name if scenario else "")), end["reason"] if end else EndReason.INTERRUPTED
+    name, reason = (
+        str(info.get("scenario", scenario.name if scenario else "")),
+        end["reason"] if end else EndReason.INTERRUPTED,
+    )
     problems = [p for p in (note, problem, recorder_stop.problem(info, folder / "bag", rec)) if p]
     try:
-        metrics = compute(rec, name, reason, world, declared_of(info), scenario.robot if scenario is not None else DEFAULT)
+        metrics = compute(
+            rec, name, reason, world, declared_of(info), scenario.robot if scenario is not None else DEFAULT
+        )
     except Exception as e:
         metrics = {"scenario": name, "end_reason": reason, "duration_s": None, "valid": False, "invalid_reasons": []}
         problems.append(f"metrics could not be computed: {type(e).__name__}: {str(e)[:120]}")
@@ -247,7 +269,12 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
         trails["robot"] = (tl.robot_xy, "black")
         for i, (hid, xy) in enumerate(tl.humans.items()):
             trails[hid] = (xy, PERSON_TRAILS[i % len(PERSON_TRAILS)])
-        labels = {EventKind.WAITING: "wait", EventKind.REPLANNED: "detour", EventKind.CONTACT_BEGIN: "contact", EventKind.CHARGE_TRIP: "to charge"}
+        labels = {
+            EventKind.WAITING: "wait",
+            EventKind.REPLANNED: "detour",
+            EventKind.CONTACT_BEGIN: "contact",
+            EventKind.CHARGE_TRIP: "to charge",
+        }
         for e in rec.events:
             if e.kind in labels and window[0] <= e.stamp <= window[1]:
                 i = min(int(np.searchsorted(tl.t, e.stamp - window[0])), len(tl.t) - 1)
@@ -263,17 +290,34 @@ def trajectory_picture(folder: Path, world: World, rec: Recording, title: str) -
                 marks.append((x, y, f"{e['gem']}: {e['by']}, {e.stamp - window[0]:.0f} s", "tab:green"))
     collected = {str(e["gem"]) for e in rec.events if e.kind is EventKind.GEM_COLLECTED}
     removed = {str(e["id"]) for e in rec.events if e.kind is EventKind.OBSTRUCTION_REMOVED}
-    markers = [m for m in world_markers(world, collected, removed) if m.ns in ("gems", "gem_areas", "charging_base", "rooms")]
+    markers = [
+        m for m in world_markers(world, collected, removed) if m.ns in ("gems", "gem_areas", "charging_base", "rooms")
+    ]
     subtitle = f"participant {info.get('participant', '?')}, condition {info.get('condition', '?')}"
 
     out = folder / "trajectory.png"
-    return render_scene(world, markers, out, title=f"{title}\n{subtitle}", trails=trails, points=marks, removed=sorted(removed), events=happened)
+    return render_scene(
+        world,
+        markers,
+        out,
+        title=f"{title}\n{subtitle}",
+        trails=trails,
+        points=marks,
+        removed=sorted(removed),
+        events=happened,
+    )
 
 
 def provenance() -> dict[str, Any]:
     """What a session folder's session.json says about how it was made: when, with which
     versions, commit, RMW and command line."""
-    return {"started": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "versions": versions(), "git_commit": git_commit(), "rmw": rmw(), "command": sys.argv}
+    return {
+        "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
+        "versions": versions(),
+        "git_commit": git_commit(),
+        "rmw": rmw(),
+        "command": sys.argv,
+    }
 
 
 def trial_wall_clock(folder: Path) -> dict[str, str]:

@@ -26,7 +26,8 @@ from haven_scenarios.study.schedule import (
 class Report:
     """What `haven study report` wrote."""
 
-    folder: Path  # study_long.csv, codebook, study_wide.csv, summary.csv, order_effects.csv, mixed_models.csv, summary.png
+    # study_long.csv, codebook, study_wide.csv, summary.csv, order_effects.csv, mixed_models.csv, summary.png
+    folder: Path
     trials_done: int
     trials: int
     counts: str  # participants, trials, practice trials, flagged not valid
@@ -43,7 +44,9 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
     done = progress(root, schedule(study))
     results = [r for r in (trial_results(t) for t in done) if r is not None]
     if not results:
-        raise ValueError(f"no finished trials of study {study.name} in {root} (see `haven study status {study.name} --dir {root}`)")
+        raise ValueError(
+            f"no finished trials of study {study.name} in {root} (see `haven study status {study.name} --dir {root}`)"
+        )
     out = out if out is not None else root / "report"
     try:
         book = codebook.Codebook(questionnaires)
@@ -55,7 +58,11 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
         conditions = [c.name for c in study.conditions]
         picture = _summaries(results, conditions, questionnaires, out, study.name)
         write_table(out / "order_effects.csv", order_rows(results, conditions), ORDER_EFFECTS)
-        said = summary_line(write_participants(out, root, study.participants, instruments), instruments) if instruments else ""
+        said = (
+            summary_line(write_participants(out, root, study.participants, instruments), instruments)
+            if instruments
+            else ""
+        )
         models = model_rows(results, [(p.measure, p.per_person) for p in panels(results, questionnaires)], conditions)
         write_table(out / "mixed_models.csv", models, MIXED)
     except OSError as e:
@@ -65,18 +72,33 @@ def write_report(study: Study, root: Path, out: Path | None = None) -> Report:
     return Report(out, len(results), len(done), _counts(results), picture, changed, said, fit_counts(models))
 
 
-def _summaries(results: list[TrialResults], conditions: list[str], questionnaires: Sequence[Questionnaire], out: Path, name: str) -> str:
+def _summaries(
+    results: list[TrialResults], conditions: list[str], questionnaires: Sequence[Questionnaire], out: Path, name: str
+) -> str:
     """summary.csv and summary.png; when the robot varies, per robot: summary.csv with a `robot`
     column first, and summary_<robot>.png each. The pictures drawn ("": none)."""
     robots = list(dict.fromkeys(str(r.design["robot"]) for r in results))
     if len(robots) == 1:
         write_table(out / "summary.csv", summary_rows(results, conditions), SUMMARY)
-        return "summary.png" if draw(results, conditions, questionnaires, out / "summary.png", f"{name}: {_counts(results)}") else ""
+        return (
+            "summary.png"
+            if draw(results, conditions, questionnaires, out / "summary.png", f"{name}: {_counts(results)}")
+            else ""
+        )
     rows, drawn = [], []
     for robot in robots:
         mine = [r for r in results if r.design["robot"] == robot]
         rows += [{"robot": robot, **row} for row in summary_rows(mine, conditions)]
-        if draw(mine, conditions, questionnaires, out / f"summary_{robot}.png", f"{name}, robot {robot}: {_counts(mine)}") is not None:
+        if (
+            draw(
+                mine,
+                conditions,
+                questionnaires,
+                out / f"summary_{robot}.png",
+                f"{name}, robot {robot}: {_counts(mine)}",
+            )
+            is not None
+        ):
             drawn.append(f"summary_{robot}.png")
     write_table(out / "summary.csv", rows, ("robot", *SUMMARY))
     return ", ".join(drawn)
@@ -87,6 +109,6 @@ def _counts(results: list[TrialResults]) -> str:
     invalid = sum(1 for r in results if not r.design["valid"])
     participants = len({r.design["participant"] for r in results})
     return (
-        f"{participants} participant(s), {len(results) - practice} trials and {practice} practice trial(s) (left out of the summary), "
-        f"{invalid} flagged not valid"
+        f"{participants} participant(s), {len(results) - practice} trials and {practice} "
+        f"practice trial(s) (left out of the summary), {invalid} flagged not valid"
     )

@@ -26,8 +26,8 @@ from haven_scenarios.record.report import save_png
 from haven_scenarios.record.study_table import TrialResults
 from haven_scenarios.study.questionnaires import Questionnaire
 
-SUMMARY = ("scenario", "condition", "human", "measure", "n", "n_invalid", "mean", "sd", "median", "participants", "ci_low", "ci_high",
-           "reference", "diff_n", "diff_mean", "diff_ci_low", "diff_ci_high", "d_z")  # fmt: skip
+SUMMARY = ("scenario", "condition", "human", "measure", "n", "n_invalid", "mean", "sd", "median", "participants",
+           "ci_low", "ci_high", "reference", "diff_n", "diff_mean", "diff_ci_low", "diff_ci_high", "d_z")  # fmt: skip
 # The main measures of the figure: (per person?, measure, axis label, least axis span in its unit:
 # about what a reader would call a difference worth a look, so equal values stay a flat line).
 MAIN = (
@@ -76,7 +76,14 @@ def _difference(values: Values, key: Key, reference: str) -> dict[str, Any]:
     mine = participant_means(values.get(key, []))
     theirs = participant_means(values.get((key[0], reference, key[2], key[3]), []))
     d = paired_difference(mine, theirs)
-    return {"reference": reference, "diff_n": d.n, "diff_mean": _r(d.mean), "diff_ci_low": _r(d.low), "diff_ci_high": _r(d.high), "d_z": _r(d.d_z)}
+    return {
+        "reference": reference,
+        "diff_n": d.n,
+        "diff_mean": _r(d.mean),
+        "diff_ci_low": _r(d.low),
+        "diff_ci_high": _r(d.high),
+        "d_z": _r(d.d_z),
+    }
 
 
 def summary_rows(results: Sequence[TrialResults], conditions: Sequence[str]) -> list[dict[str, Any]]:
@@ -155,13 +162,32 @@ def _panel(ax: Any, panel: Panel, scenario: str, values: Values, conditions: Seq
     everyone = sorted({p for m in means.values() for p in m})
     for p in everyone:
         xs = [i for i, c in enumerate(conditions) if p in means[c]]
-        ax.plot(xs, [means[conditions[i]][p] for i in xs], color="0.55", alpha=0.55, linewidth=0.8, marker="o", markersize=3, zorder=2)
+        ax.plot(
+            xs,
+            [means[conditions[i]][p] for i in xs],
+            color="0.55",
+            alpha=0.55,
+            linewidth=0.8,
+            marker="o",
+            markersize=3,
+            zorder=2,
+        )
     data = [v for m in means.values() for v in m.values()]
     for i, c in enumerate(conditions):
         m = mean_interval(means[c].values())
         if m.mean is not None:
             err = [[m.mean - m.low], [m.high - m.mean]] if m.low is not None and m.high is not None else None
-            ax.errorbar(i + 0.15, m.mean, yerr=err, fmt="D", color=f"C{i % 10}", markersize=6, capsize=4, linewidth=1.6, zorder=4)
+            ax.errorbar(
+                i + 0.15,
+                m.mean,
+                yerr=err,
+                fmt="D",
+                color=f"C{i % 10}",
+                markersize=6,
+                capsize=4,
+                linewidth=1.6,
+                zorder=4,
+            )
             data += [x for x in (m.low, m.high) if x is not None]
     low, high = _limits(panel, min(data), max(data), min(data) >= 0) if data else (0.0, 1.0)
     ax.set_ylim(low, high)
@@ -179,7 +205,13 @@ def _panel(ax: Any, panel: Panel, scenario: str, values: Values, conditions: Seq
     ax.grid(axis="y", alpha=0.3)
 
 
-def draw(results: Sequence[TrialResults], conditions: Sequence[str], questionnaires: Sequence[Questionnaire], out: Path, title: str) -> Path | None:
+def draw(
+    results: Sequence[TrialResults],
+    conditions: Sequence[str],
+    questionnaires: Sequence[Questionnaire],
+    out: Path,
+    title: str,
+) -> Path | None:
     """summary.png: a panel per main measure and scenario (each on its own scale); None when there
     is nothing to draw."""
     shown = panels(results, questionnaires)
@@ -201,9 +233,10 @@ def draw(results: Sequence[TrialResults], conditions: Sequence[str], questionnai
     for ax in list(axes.flat)[len(cells) :]:
         ax.axis("off")
     fig.suptitle(
-        f"{title}\ngrey: each participant's mean per condition, linked (within-subject); diamonds: mean over participants with its 95 % t interval;"
-        f"\nΔ: paired difference from {conditions[0]} [95 % interval], d_z = mean / sd of the paired differences (Cohen 1988);"
-        " valid trials, practice left out",
+        f"{title}\ngrey: each participant's mean per condition, linked (within-subject); "
+        "diamonds: mean over participants with its 95 % t interval;"
+        f"\nΔ: paired difference from {conditions[0]} [95 % interval], "
+        "d_z = mean / sd of the paired differences (Cohen 1988); valid trials, practice left out",
         fontsize=9,
     )
     fig.tight_layout(rect=(0, 0, 1, 1 - 0.55 / (4.4 * rows)))  # (the title's three lines: about half an inch)

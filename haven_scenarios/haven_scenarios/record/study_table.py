@@ -29,7 +29,19 @@ from haven_sim.robots.robot_kind import DEFAULT_ROBOT
 # is the participant's sequence of the design (study/schedule.py): what a carry-over model needs.
 # `robot` is the robot's name: the study's robot factor (study/study_robots.py), else the scenario's.
 ORDER = ("sequence", "order_position", "block", "position_in_block", "previous_condition")
-DESIGN = ("participant", "trial_id", *ORDER, "practice", "scenario", "condition", "robot", "seed", "valid", "end_reason", "session")
+DESIGN = (
+    "participant",
+    "trial_id",
+    *ORDER,
+    "practice",
+    "scenario",
+    "condition",
+    "robot",
+    "seed",
+    "valid",
+    "end_reason",
+    "session",
+)
 LONG = (*DESIGN[:1], "human", *DESIGN[1:], "measure", "unit", "value")  # unit: as in codebook.csv
 NOT_MEASURES = ("seed", "valid")  # numbers in metrics.json that are design columns
 
@@ -122,7 +134,8 @@ def trial_results(p: TrialProgress) -> TrialResults | None:
         "practice": t.practice,
         "scenario": t.scenario,
         "condition": t.condition,
-        "robot": t.robot_name or str(info.get("robot_name", DEFAULT_ROBOT)),  # (a session from before robots: TurtleBot2)
+        # (a session from before robots: TurtleBot2)
+        "robot": t.robot_name or str(info.get("robot_name", DEFAULT_ROBOT)),
         "seed": t.seed,
         "valid": valid,
         "end_reason": metrics.get("end_reason", info.get("end_reason", "")),
@@ -135,7 +148,9 @@ def long_rows(results: Sequence[TrialResults], unit: Callable[[str, str], str] |
     """`unit(human, measure)`: the codebook's (default: metrics and registered questionnaires)."""
     unit = unit or Codebook().unit
     return [
-        {**r.design, "human": m.human, "measure": m.measure, "unit": unit(m.human, m.measure), "value": m.value} for r in results for m in r.measures
+        {**r.design, "human": m.human, "measure": m.measure, "unit": unit(m.human, m.measure), "value": m.value}
+        for r in results
+        for m in r.measures
     ]
 
 

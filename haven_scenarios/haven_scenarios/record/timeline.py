@@ -96,14 +96,18 @@ class Timeline:
             grid = np.append(grid, end)
         odom = sorted(rec.odom, key=lambda s: s[0])
         ts = np.array([s for s, _ in odom])
-        pose = np.array([(st.pose.x, st.pose.y, st.pose.yaw, st.twist.vx, st.twist.wz) for _, st in odom]).reshape(-1, 5)
+        pose = np.array([(st.pose.x, st.pose.y, st.pose.yaw, st.twist.vx, st.twist.wz) for _, st in odom]).reshape(
+            -1, 5
+        )
         yaw = np.unwrap(pose[:, 2]) if len(pose) else pose[:, 2]
         humans: dict[str, FloatArray] = {}
         samples = sorted(rec.humans, key=lambda s: s[0])
         for hid in dict.fromkeys(h for _, poses in samples for h in poses):
             hs = [(s, poses[hid]) for s, poses in samples if hid in poses]
             hts = np.array([s for s, _ in hs])
-            humans[hid] = np.column_stack([_interp(grid, hts, np.array([p.x for _, p in hs])), _interp(grid, hts, np.array([p.y for _, p in hs]))])
+            humans[hid] = np.column_stack(
+                [_interp(grid, hts, np.array([p.x for _, p in hs])), _interp(grid, hts, np.array([p.y for _, p in hs]))]
+            )
         bts = sorted(rec.battery)
         battery = _interp(grid, np.array([s for s, _ in bts]), np.array([v for _, v in bts]))
         return Timeline(

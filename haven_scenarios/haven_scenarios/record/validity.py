@@ -34,7 +34,11 @@ MAX_GAP_S = 0.1
 def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list[str]:
     inside = [s for s in stamps if window[0] - MAX_GAP_S <= s <= window[1] + MAX_GAP_S]
     t = np.unique(np.array(inside, dtype=float))
-    out = [f"{name}: {len(inside) - len(t)} message(s) with the stamp of another (a second publisher?)"] if len(t) < len(inside) else []
+    out = (
+        [f"{name}: {len(inside) - len(t)} message(s) with the stamp of another (a second publisher?)"]
+        if len(t) < len(inside)
+        else []
+    )
     if len(t) < 2:
         return [*out, f"{name}: {len(t)} message(s) in the trial"]
     gaps = np.diff(t)
@@ -42,7 +46,8 @@ def _stream(name: str, stamps: list[float], window: tuple[float, float]) -> list
     # counts (20 Hz on 50 Hz physics gives gaps of 0.04 and 0.06 s).
     period = float(np.median((gaps[:-1] + gaps[1:]) / 2.0)) if len(gaps) > 1 else float(gaps[0])
     expected = round((t[-1] - t[0]) / period) + 1.0  # rounded: a stream may end on its short gap
-    if t[0] > window[0] + MAX_GAP_S + 1e-6:  # (coverage counts from the first message: a late start is a gap of its own)
+    # (coverage counts from the first message: a late start is a gap of its own)
+    if t[0] > window[0] + MAX_GAP_S + 1e-6:
         out.append(f"{name}: recorded only from {t[0] - window[0]:.2f} s into the trial")
     if len(t) < MIN_COVERAGE * expected:
         out.append(f"{name}: {100.0 * len(t) / expected:.1f} % of the messages recorded")
@@ -91,11 +96,17 @@ def _sent_but_not_recorded(rec: Recording, window: tuple[float, float]) -> list[
     return out + ([f"/goal_pose: {missing_goals} of the scenario's goals not recorded"] if missing_goals else [])
 
 
-def _planned_before_start(rec: Recording, window: tuple[float, float], declared: Declared | None) -> tuple[list[str], list[str]]:
+def _planned_before_start(
+    rec: Recording, window: tuple[float, float], declared: Declared | None
+) -> tuple[list[str], list[str]]:
     """(reasons, notes): the planner's plans from before trial_start. The scenario sends its first
     goal at the start, so an earlier plan followed somebody else's goal, which can have moved the
     robot the trial then starts from, even if its publisher was gone before the recorder looked."""
-    early = sum(1 for e in rec.events if e.source == Source.PLANNER and isinstance(e.get(PLAN_POSES), int) and e.stamp < window[0] - 1e-6)
+    early = sum(
+        1
+        for e in rec.events
+        if e.source == Source.PLANNER and isinstance(e.get(PLAN_POSES), int) and e.stamp < window[0] - 1e-6
+    )
     if not early:
         return [], []
     line = f"/plan: {early} plan(s) made before the trial began, for goals from outside the suite"
@@ -107,12 +118,19 @@ def _away(rec: Recording, window: tuple[float, float]) -> list[str]:
     without them (policy keep): as the web node measured it, or, for one never back, to the trial's end."""
     out, left = [], {}
     for e in rec.events:
-        if e.kind is EventKind.PARTICIPANT_DISCONNECTED and window[0] - 1e-6 <= e.stamp <= window[1] + 1e-6 and e.get("policy") == "keep":
+        if (
+            e.kind is EventKind.PARTICIPANT_DISCONNECTED
+            and window[0] - 1e-6 <= e.stamp <= window[1] + 1e-6
+            and e.get("policy") == "keep"
+        ):
             left[e["by"]] = e.stamp
         elif e.kind in (EventKind.PARTICIPANT_RECONNECTED, EventKind.PARTICIPANT_LOST) and e["by"] in left:
             at = left.pop(e["by"])
             if e["away_s"] > MAX_AWAY_S:
-                out.append(f"participant {e['by']}: away {e['away_s']:g} s from {at - window[0]:.1f} s into the trial (its page disconnected)")
+                out.append(
+                    f"participant {e['by']}: away {e['away_s']:g} s from "
+                    f"{at - window[0]:.1f} s into the trial (its page disconnected)"
+                )
     out += [
         f"participant {who}: away from {at - window[0]:.1f} s into the trial to its end (its page disconnected)"
         for who, at in left.items()

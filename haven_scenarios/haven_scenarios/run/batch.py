@@ -49,7 +49,10 @@ class Progress:
             self.logged = now
             rate = done / (now - self.started)
             eta = (self.total - done) / rate if rate > 0 else float("inf")
-            self.out.write(f"{done}/{self.total} trials in {now - self.started:.0f} s, {rate * 60:.0f} trials/min, about {eta:.0f} s to go\n")
+            self.out.write(
+                f"{done}/{self.total} trials in {now - self.started:.0f} s, "
+                f"{rate * 60:.0f} trials/min, about {eta:.0f} s to go\n"
+            )
             self.out.flush()
 
     def close(self, finished: bool = True) -> None:
@@ -103,13 +106,20 @@ def summary(rows: Sequence[dict[str, Any]]) -> str:
     done = sum(1 for r in rows if r["end_reason"] == EndReason.COMPLETED)
     # (.get: a trial a plugin ended before it began has none of these)
     times = [r["robot_time_to_finish_s"] for r in rows if r.get("robot_time_to_finish_s") is not None]
-    finish = f"robot finishes in {sum(times) / len(times):.1f} s on average" if times else "the robot finished in no trial"
+    finish = (
+        f"robot finishes in {sum(times) / len(times):.1f} s on average" if times else "the robot finished in no trial"
+    )
     contacts = sum(r.get("human_contacts") or 0 for r in rows)
     distances = [r["min_human_centre_distance_m"] for r in rows if r.get("min_human_centre_distance_m") is not None]
-    closest = f"closest approach {min(distances):.2f} m (the least of any trial)" if distances else "no person in any trial"
+    closest = (
+        f"closest approach {min(distances):.2f} m (the least of any trial)" if distances else "no person in any trial"
+    )
     failed = sum(1 for r in rows if r["end_reason"] == EndReason.PLUGIN_FAILED)
     plugins = f", {failed} ended by a plugin that failed (see invalid_reasons)" if failed else ""
-    return f"{done}/{n} completed{plugins}, {finish}, {contacts} human contact(s), {closest}{_people(rows)}{_exposure(rows)}"
+    return (
+        f"{done}/{n} completed{plugins}, {finish}, {contacts} human "
+        f"contact(s), {closest}{_people(rows)}{_exposure(rows)}"
+    )
 
 
 def _exposure(rows: Sequence[dict[str, Any]]) -> str:
@@ -127,8 +137,17 @@ def _people(rows: Sequence[dict[str, Any]]) -> str:
     """The people's own walk, averaged over the trials and their people: time to finish, path length, hesitations."""
     trial_level = {m[0] for m in metric_rows()}  # (robot_path_length_m, hunav_path_length_m, ...: not a person's)
     said = []
-    for suffix, label, unit in (("_time_to_finish_s", "finish in", " s"), ("_path_length_m", "walk", " m"), ("_hesitations", "hesitate", "x")):
-        values = [v for r in rows for k, v in r.items() if k.endswith(suffix) and k not in trial_level and isinstance(v, (int, float))]
+    for suffix, label, unit in (
+        ("_time_to_finish_s", "finish in", " s"),
+        ("_path_length_m", "walk", " m"),
+        ("_hesitations", "hesitate", "x"),
+    ):
+        values = [
+            v
+            for r in rows
+            for k, v in r.items()
+            if k.endswith(suffix) and k not in trial_level and isinstance(v, (int, float))
+        ]
         if values:
             said.append(f"{label} {sum(values) / len(values):.1f}{unit}")
     return f"; people {', '.join(said)} on average" if said else ""

@@ -82,7 +82,11 @@ def parse_domains(text: str, given: str = "--domains") -> DomainRange:
         raise ValueError(f"{given}: expected A-B, ROS domain ids 0..{MAX_DOMAIN_ID} (e.g. 30-39), got {text[:20]!r}")
     first, last = int(parts[0]), int(parts[-1])
     if last > MAX_DOMAIN_ID or first > last:
-        why = f"{last} is not a ROS domain id (0..{MAX_DOMAIN_ID})" if last > MAX_DOMAIN_ID else f"{first} is above {last}"
+        why = (
+            f"{last} is not a ROS domain id (0..{MAX_DOMAIN_ID})"
+            if last > MAX_DOMAIN_ID
+            else f"{first} is above {last}"
+        )
         raise ValueError(f"{given}: {text.strip()}: {why}")
     return DomainRange(first, last, given)
 
@@ -121,7 +125,10 @@ def inherited_domain(env: Mapping[str, str]) -> int:
     if not text:
         return 0
     if not text.isdigit() or int(text) > MAX_DOMAIN_ID:
-        raise DomainBusy(f"ROS_DOMAIN_ID={text[:20]!r} in the environment is not a ROS domain id (0..{MAX_DOMAIN_ID}): unset it or pass --domain-id")
+        raise DomainBusy(
+            f"ROS_DOMAIN_ID={text[:20]!r} in the environment is not a ROS "
+            f"domain id (0..{MAX_DOMAIN_ID}): unset it or pass --domain-id"
+        )
     return int(text)
 
 
@@ -136,7 +143,9 @@ def nodes_on(domain_id: int, env: Mapping[str, str], wanted: Sequence[str]) -> l
     return r.stdout.split()
 
 
-def _take(domain_id: int, env: Mapping[str, str], ignore: Sequence[str], empty: bool = False) -> tuple[FileLock | None, str]:
+def _take(
+    domain_id: int, env: Mapping[str, str], ignore: Sequence[str], empty: bool = False
+) -> tuple[FileLock | None, str]:
     """The domain's lock if the domain is free (of a HAVEN suite; with `empty`, of any node), else
     (None, what is there); `ignore`: names of nodes the user runs in place of ours."""
     lock = FileLock(lock_path(domain_id))
@@ -152,7 +161,11 @@ def _take(domain_id: int, env: Mapping[str, str], ignore: Sequence[str], empty: 
     if suite or (empty and seen):
         lock.release()
         if suite:
-            return None, f"HAVEN suite nodes already run on it ({', '.join(suite)}; started without `haven`, or on another machine)"
+            return (
+                None,
+                f"HAVEN suite nodes already run on it ({', '.join(suite)}; "
+                "started without `haven`, or on another machine)",
+            )
         return None, f"other ROS nodes run on it ({', '.join(seen[:3])}{'...' if len(seen) > 3 else ''})"
     return lock, ""
 
@@ -165,14 +178,19 @@ def take_domain(domain_id: int, env: Mapping[str, str], ignore: Sequence[str] = 
     return Claim(domain_id, lock)
 
 
-def claim_domain(explicit: int | None, env: Mapping[str, str], ignore: Sequence[str] = (), domains: DomainRange | None = None) -> Claim:
+def claim_domain(
+    explicit: int | None, env: Mapping[str, str], ignore: Sequence[str] = (), domains: DomainRange | None = None
+) -> Claim:
     """The domain this suite runs on: `explicit` or refuse (DomainBusy), else the inherited one
     if free, else the first free one; `ignore`: node names the user's own nodes may have.
     `domains`: the lab's range (None: HAVEN_DOMAINS from `env`, if set), never left."""
     domains = domains if domains is not None else domains_of(env)
     if explicit is not None:
         if domains is not None and explicit not in domains:
-            raise DomainBusy(f"--domain-id {explicit} is outside {domains}: choose one inside it, or leave --domain-id out to get a free one")
+            raise DomainBusy(
+                f"--domain-id {explicit} is outside {domains}: "
+                "choose one inside it, or leave --domain-id out to get a free one"
+            )
         try:
             return take_domain(explicit, env, ignore)
         except DomainBusy as e:
@@ -184,12 +202,16 @@ def claim_domain(explicit: int | None, env: Mapping[str, str], ignore: Sequence[
             return Claim(home, lock)
     else:
         why = f"outside {domains}"
-    for candidate in domains.ids if domains is not None else FREE_DOMAINS:  # (a domain of its own: one where no other node runs either)
+    # (a domain of its own: one where no other node runs either)
+    for candidate in domains.ids if domains is not None else FREE_DOMAINS:
         if candidate == home:
             continue
         other, _ = _take(candidate, env, ignore, empty=True)
         if other is not None:
             return Claim(candidate, other, (home, why))
     if domains is not None:
-        raise DomainBusy(f"no free ROS domain in {domains}: each runs another HAVEN suite or other ROS nodes (widen the range, or stop one)")
+        raise DomainBusy(
+            f"no free ROS domain in {domains}: each runs another HAVEN "
+            "suite or other ROS nodes (widen the range, or stop one)"
+        )
     raise DomainBusy(f"no free ROS domain: {home} and 1..{FREE_DOMAINS[-1]} all hold HAVEN suites")

@@ -81,7 +81,9 @@ def _value(key: str, text: str) -> Any:
         if text in models.left_out:
             raise ValueError(f"--grid model: {models.unknown(text)}")
         if text not in models:
-            raise ValueError(f"--grid model: {text!r} is not a simulated participant model ({', '.join(models.names())})")
+            raise ValueError(
+                f"--grid model: {text!r} is not a simulated participant model ({', '.join(models.names())})"
+            )
         return text
     value = _number(key, text)
     if key == "speed_mps" and not 0 < value <= MAX_WALKING_SPEED_MPS:
@@ -173,7 +175,9 @@ def apply(scenario: Scenario, point: Point) -> tuple[Scenario, CueToggles]:
     return replace(scenario, humans=tuple(_human(h, point) for h in scenario.humans)), toggles
 
 
-def plan_sweep(scenarios: Sequence[Scenario], axes: Mapping[str, Sequence[Any]], seeds: Sequence[int]) -> list[TrialSpec]:
+def plan_sweep(
+    scenarios: Sequence[Scenario], axes: Mapping[str, Sequence[Any]], seeds: Sequence[int]
+) -> list[TrialSpec]:
     """Every combination, scenario outermost and seed innermost; refused beyond `MAX_TRIALS`."""
     total = len(scenarios) * math.prod(len(v) for v in axes.values()) * len(seeds)
     if total > MAX_TRIALS:

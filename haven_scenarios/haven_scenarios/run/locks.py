@@ -48,7 +48,9 @@ class FileLock:
 
     def __init__(self, path: Path, what: str = "") -> None:
         self.path, self.what = Path(path), what or command_line()
-        self._lock = filelock.FileLock(self.path, thread_local=False, preserve_lock_file=True, on_acquired=self._say_who)
+        self._lock = filelock.FileLock(
+            self.path, thread_local=False, preserve_lock_file=True, on_acquired=self._say_who
+        )
 
     def _say_who(self, fd: int) -> None:
         info = {"pid": os.getpid(), "command": self.what[:200], "since": time.strftime("%Y-%m-%d %H:%M:%S")}
@@ -89,7 +91,8 @@ def command_line() -> str:
     return " ".join([program, *sys.argv[1:]])
 
 
-HOLDER_WAIT_S = 0.5  # a holder writes who it is just after it takes the lock: a taker that finds the file empty waits this long for it
+# a holder writes who it is just after it takes the lock: a taker that finds the file empty waits this long for it
+HOLDER_WAIT_S = 0.5
 
 
 def read_holder(path: Path) -> Holder:
@@ -110,4 +113,8 @@ def read_holder(path: Path) -> Holder:
     if not isinstance(d, dict):
         return Holder(None, "", "")
     pid = d.get("pid")
-    return Holder(pid if isinstance(pid, int) and not isinstance(pid, bool) else None, str(d.get("command", ""))[:200], str(d.get("since", ""))[:40])
+    return Holder(
+        pid if isinstance(pid, int) and not isinstance(pid, bool) else None,
+        str(d.get("command", ""))[:200],
+        str(d.get("since", ""))[:40],
+    )

@@ -12,7 +12,14 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any
 
-from haven_scenarios.record.session import EVENTS_FILE, METRICS_FILE, SESSION_FILE, new_session_dir, trial_record, write_json
+from haven_scenarios.record.session import (
+    EVENTS_FILE,
+    METRICS_FILE,
+    SESSION_FILE,
+    new_session_dir,
+    trial_record,
+    write_json,
+)
 from haven_scenarios.run.suite import SuiteConfig
 from haven_scenarios.run.trial import run_trial
 from haven_scenarios.study.conditions import parse_condition
@@ -24,14 +31,25 @@ INTERRUPTED = "interrupted (stopped by a signal)"  # as a recorded trial's (cond
 
 
 def run_batch_session(
-    scenario: Scenario, participant: str, cues: tuple[str, ...], seed: int, sessions: Path, extra: dict[str, Any], suite: SuiteConfig | None = None
+    scenario: Scenario,
+    participant: str,
+    cues: tuple[str, ...],
+    seed: int,
+    sessions: Path,
+    extra: dict[str, Any],
+    suite: SuiteConfig | None = None,
 ) -> tuple[Path, dict[str, Any]]:
     """Run the trial into a new session folder under `sessions`; (the folder, its metrics)."""
     if any(h.teleoperated for h in scenario.humans):
         raise ValueError(f"scenario {scenario.name} has a teleoperated participant: a batch trial needs simulated ones")
     toggles = parse_condition(cues)
     folder = new_session_dir(sessions, scenario.name, participant)
-    info: dict[str, Any] = {**trial_record(participant, toggles, seed, scenario), "clock": "batch", **extra, "outcome": NO_OUTCOME}
+    info: dict[str, Any] = {
+        **trial_record(participant, toggles, seed, scenario),
+        "clock": "batch",
+        **extra,
+        "outcome": NO_OUTCOME,
+    }
     write_json(folder / SESSION_FILE, info)
     try:
         result = run_trial(scenario, seed, toggles, suite)
@@ -41,7 +59,12 @@ def run_batch_session(
     atomic.write_text(folder / EVENTS_FILE, "".join(e.to_json() + "\n" for e in result.recording.events))
     metrics = {**result.metrics, "participant": participant, "session": folder.name}
     write_json(folder / METRICS_FILE, metrics)
-    info.update(end_reason=str(result.end_reason), duration_s=metrics["duration_s"], valid=metrics["valid"], outcome=str(result.end_reason))
+    info.update(
+        end_reason=str(result.end_reason),
+        duration_s=metrics["duration_s"],
+        valid=metrics["valid"],
+        outcome=str(result.end_reason),
+    )
     info.update(invalid_reasons=metrics.get("invalid_reasons", []))  # (as a recorded trial's session.json says them)
     write_json(folder / SESSION_FILE, info)
     return folder, metrics

@@ -62,7 +62,13 @@ class Simulation:
         self.markers: dict[tuple[str, int], MarkerSpec] = {}  # the AR markers shown now
         toggles = parse_condition(list(condition if condition is not None else s.condition))
         check_fit(toggles, s.robot)
-        self.trial = Trial(s, check_seed(seed), toggles, load_suite_config(params_file, TRIAL_SETS), watch=([self._marker], [topics.AR_MARKERS]))
+        self.trial = Trial(
+            s,
+            check_seed(seed),
+            toggles,
+            load_suite_config(params_file, TRIAL_SETS),
+            watch=([self._marker], [topics.AR_MARKERS]),
+        )
         self.step_s = self.trial.sim.config.sim.step_s
 
     def _marker(self, m: Message) -> None:
@@ -82,7 +88,13 @@ class Simulation:
     def state(self) -> SimState:
         sim = self.trial.sim.sim
         ended = self.trial.director.ended
-        return SimState(sim.time, sim.robot_pose(), sim.human_poses(), sim.battery_reading().level, ended.value if ended is not None else None)
+        return SimState(
+            sim.time,
+            sim.robot_pose(),
+            sim.human_poses(),
+            sim.battery_reading().level,
+            ended.value if ended is not None else None,
+        )
 
     def run(self) -> TrialResult:
         """On to the trial's end (as `haven batch` runs it), then its result."""

@@ -13,7 +13,16 @@ from typing import Any
 from haven_scenarios.study.director import ScenarioNodeConfig
 from haven_sim.common import nodes
 from haven_sim.common.contain import PluginDeadlines
-from haven_sim.common.params import WILDCARD, ParamsError, check_names, defaults, flatten, load_params_file, node_values, render_params_file
+from haven_sim.common.params import (
+    WILDCARD,
+    ParamsError,
+    check_names,
+    defaults,
+    flatten,
+    load_params_file,
+    node_values,
+    render_params_file,
+)
 from haven_sim.common.topics import WireParams
 from haven_sim.common.yaml_file import file_label, short
 from haven_sim.nav.controller import ControllerConfig
@@ -73,7 +82,9 @@ def render(config: SuiteConfig | None = None, header: str = HEADER) -> str:
     if config is None:
         return render_params_file(NODES, SHARED, header)
     values: dict[str, Any] = {name: flatten(c) for name, c in config.by_node().items()}
-    values[WILDCARD] = flatten(config.sim.robot) | flatten(config.planner.style) | flatten(config.lockstep) | flatten(config.deadlines)
+    values[WILDCARD] = (
+        flatten(config.sim.robot) | flatten(config.planner.style) | flatten(config.lockstep) | flatten(config.deadlines)
+    )
     return render_params_file(NODES, SHARED, header, values)
 
 
@@ -88,7 +99,9 @@ def suite_config(params: Mapping[str, Mapping[str, Any]] | None = None, label: s
     }
     shared = node_values(p, nodes.SIM.name)  # (the "/**" section's values, as every node reads them)
     lockstep = build_config(LockstepParams, shared, where=f"{where}sim_node: ")
-    return SuiteConfig(**made, lockstep=lockstep, deadlines=build_config(PluginDeadlines, shared, where=f"{where}sim_node: "))
+    return SuiteConfig(
+        **made, lockstep=lockstep, deadlines=build_config(PluginDeadlines, shared, where=f"{where}sim_node: ")
+    )
 
 
 # Parameters every node has beside its config: rclpy's own (a node declares them itself) and what
@@ -137,7 +150,9 @@ def load_suite_config(path: str | Path | None, sets: Mapping[tuple[str, str], st
     return suite_config(None) if path is None else checked_suite_config(load_params_file(path), file_label(path), sets)
 
 
-def checked_suite_config(params: Mapping[str, Mapping[str, Any]], label: str, sets: Mapping[tuple[str, str], str] | None = None) -> SuiteConfig:
+def checked_suite_config(
+    params: Mapping[str, Mapping[str, Any]], label: str, sets: Mapping[tuple[str, str], str] | None = None
+) -> SuiteConfig:
     """A node or a parameter that no node has, a number that is not finite, a value of the wrong
     type, and one the command sets itself are refused in one line naming file (`label`), node and
     key: the nodes themselves would silently ignore a misspelt name and run on the default."""

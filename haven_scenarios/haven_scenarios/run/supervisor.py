@@ -35,7 +35,12 @@ class ProcessSpec:
     pass_fds: tuple[int, ...] = ()  # file descriptors it inherits (the recorder's end-of-trial pipe)
 
 
-def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args: Sequence[str] = (), params_file: str | None = None) -> list[str]:
+def node_argv(
+    module: str,
+    params: Mapping[str, object] | None = None,
+    ros_args: Sequence[str] = (),
+    params_file: str | None = None,
+) -> list[str]:
     """Command line that runs a node module with this interpreter, a parameter file, and
     `-p name:=value` parameters (which come after the file, so they win)."""
     argv = [sys.executable, "-m", module, "--ros-args"]
@@ -54,7 +59,9 @@ def node_argv(module: str, params: Mapping[str, object] | None = None, ros_args:
 NETWORK_REACHING = ("ROS_STATIC_PEERS", "ROS_DISCOVERY_SERVER")
 
 
-def ros_environment(base: Mapping[str, str] | None = None, network: bool = False, domain_id: int | None = None) -> dict[str, str]:
+def ros_environment(
+    base: Mapping[str, str] | None = None, network: bool = False, domain_id: int | None = None
+) -> dict[str, str]:
     """The environment for node processes: discovery on localhost unless `network`, and the
     quick-discovery Fast DDS profile unless the user chose one."""
     env = dict(os.environ if base is None else base)
@@ -114,7 +121,14 @@ class Supervisor:
 
     def start(self, spec: ProcessSpec) -> subprocess.Popen[bytes]:
         env = {**self.env, **spec.env}
-        proc = subprocess.Popen(list(spec.argv), env=env, cwd=spec.cwd, start_new_session=True, preexec_fn=self._preexec, pass_fds=spec.pass_fds)
+        proc = subprocess.Popen(
+            list(spec.argv),
+            env=env,
+            cwd=spec.cwd,
+            start_new_session=True,
+            preexec_fn=self._preexec,
+            pass_fds=spec.pass_fds,
+        )
         self.procs[spec.name] = proc
         return proc
 
@@ -138,7 +152,9 @@ class Supervisor:
         for sig in STOP_SIGNALS:
             signal.signal(sig, self.request_stop)
 
-    def wait(self, timeout_s: float | None = None, until_exit_of: str | None = None, until: Callable[[], bool] | None = None) -> Exited | None:
+    def wait(
+        self, timeout_s: float | None = None, until_exit_of: str | None = None, until: Callable[[], bool] | None = None
+    ) -> Exited | None:
         """Block until a stop is requested, the timeout passes, `until()` holds, or a child exits
         (only `until_exit_of`, if given, when it exits cleanly); returns the child that ended it."""
         deadline = None if timeout_s is None else time.monotonic() + timeout_s

@@ -49,7 +49,9 @@ def row_of(spec: TrialSpec, metrics: Row) -> Row:
     return {**design, **{k: v for k, v in csv_row(metrics).items() if k not in design}}
 
 
-def run_rows(specs: Sequence[TrialSpec], suite: SuiteConfig | None = None, workers: int = 1, cluster: str | None = None) -> Iterator[Row]:
+def run_rows(
+    specs: Sequence[TrialSpec], suite: SuiteConfig | None = None, workers: int = 1, cluster: str | None = None
+) -> Iterator[Row]:
     """Every spec's row, in the order the trials finish."""
     done = farm(specs, functools.partial(_indexed, suite=suite), workers, cluster, _lost)
     by_index = {s.index: s for s in specs}
@@ -57,7 +59,11 @@ def run_rows(specs: Sequence[TrialSpec], suite: SuiteConfig | None = None, worke
 
 
 def farm(
-    items: Sequence[Item], task: Callable[[Item], Result], workers: int = 1, cluster: str | None = None, lost: Lost | None = None
+    items: Sequence[Item],
+    task: Callable[[Item], Result],
+    workers: int = 1,
+    cluster: str | None = None,
+    lost: Lost | None = None,
 ) -> Iterator[Result]:
     """`task` of every item (a picklable, module-level function), in the order they finish: here,
     on `workers` processes (run/workers.py: one whose worker ends without a result gives `lost`'s)
@@ -77,7 +83,13 @@ def _lost(spec: TrialSpec, why: str, stuck: bool) -> Done:
     """A trial whose worker process was ended without its row (a plugin stuck where its deadline
     cannot interrupt it, or a crash): its row, not valid with the reason."""
     reason = EndReason.PLUGIN_FAILED if stuck else EndReason.INTERRUPTED
-    return spec.index, {"scenario": spec.scenario.name, "end_reason": str(reason), "duration_s": None, "valid": False, "invalid_reasons": [why]}
+    return spec.index, {
+        "scenario": spec.scenario.name,
+        "end_reason": str(reason),
+        "duration_s": None,
+        "valid": False,
+        "invalid_reasons": [why],
+    }
 
 
 def _on_dask(specs: Sequence[Item], task: Callable[[Item], Result], cluster: str, workers: int) -> Iterator[Result]:
@@ -92,7 +104,9 @@ def _on_dask(specs: Sequence[Item], task: Callable[[Item], Result], cluster: str
 
     local = None
     if cluster == LOCAL:
-        local = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=logging.ERROR)
+        local = LocalCluster(
+            n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=logging.ERROR
+        )
     try:
         with Client(local if local is not None else cluster, timeout="10s") as client:
             futures = client.map(task, specs, pure=False)

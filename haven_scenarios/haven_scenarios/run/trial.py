@@ -44,9 +44,18 @@ def scenario_suite(scenario: Scenario, seed: int, toggles: CueToggles, suite: Su
     director = replace(s.scenario.director, scenario=scenario.source or scenario.name, seed=seed)
     # The scenario's cue parameters, except where the run's parameter file set one.
     default, run = CueParams(), s.viz.cues
-    cues = replace(scenario.cues, **{f.name: getattr(run, f.name) for f in fields(CueParams) if getattr(run, f.name) != getattr(default, f.name)})
+    cues = replace(
+        scenario.cues,
+        **{f.name: getattr(run, f.name) for f in fields(CueParams) if getattr(run, f.name) != getattr(default, f.name)},
+    )
     viz = replace(s.viz, world=scenario.world_path, toggles=toggles, cues=cues)
-    return replace(s, sim=sim, planner=replace(s.planner, world=scenario.world_path), viz=viz, scenario=replace(s.scenario, director=director))
+    return replace(
+        s,
+        sim=sim,
+        planner=replace(s.planner, world=scenario.world_path),
+        viz=viz,
+        scenario=replace(s.scenario, director=director),
+    )
 
 
 @dataclass
@@ -103,7 +112,9 @@ class Trial:
         return TrialResult(self.scenario.name, self.seed, condition_name(self.toggles), reason, metrics, self.recording)
 
 
-def run_trial(scenario: Scenario, seed: int = 0, toggles: CueToggles | None = None, suite: SuiteConfig | None = None) -> TrialResult:
+def run_trial(
+    scenario: Scenario, seed: int = 0, toggles: CueToggles | None = None, suite: SuiteConfig | None = None
+) -> TrialResult:
     """The trial with the suite's plugin deadlines (common/contain.py): a plugin that fails ends it not valid."""
     with contain.use(suite.deadlines if suite is not None else None):
         return Trial(scenario, seed, toggles, suite).run()

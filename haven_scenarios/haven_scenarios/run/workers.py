@@ -66,7 +66,8 @@ def _start(task: Callable[[Any], Any]) -> _Worker:
     parent, child = multiprocessing.get_context("spawn").Pipe()
     process = multiprocessing.get_context("spawn").Process(target=_serve, args=(child, task), daemon=True)
     main = threading.current_thread() is threading.main_thread()  # (only the main thread may set handlers)
-    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None  # inherited: a Ctrl-C while it starts is not its
+    # inherited: a Ctrl-C while it starts is not its
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
     try:
         process.start()
     finally:
@@ -83,7 +84,9 @@ def _end(w: _Worker) -> None:
     w.conn.close()
 
 
-def run_on_workers(items: Sequence[Item], task: Callable[[Item], Result], workers: int, lost: Lost | None = None) -> Iterator[Result]:
+def run_on_workers(
+    items: Sequence[Item], task: Callable[[Item], Result], workers: int, lost: Lost | None = None
+) -> Iterator[Result]:
     """`task` of every item on `workers` processes, in the order they finish. An item whose worker
     ended without a result gives `lost(item, why, stuck)` (None: WorkerLost). A task's exception or a
     Ctrl-C stops the sweep (raised here; the finished results have been yielded; the workers ended)."""

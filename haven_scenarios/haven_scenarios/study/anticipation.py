@@ -117,7 +117,13 @@ def _read(
 
 
 def keep_clear(
-    me: Pose2D, task: Point, ways: Sequence[Sequence[Point]], seen: Seen, params: PersonParams, free_run: RayFn, side: float = 0.0
+    me: Pose2D,
+    task: Point,
+    ways: Sequence[Sequence[Point]],
+    seen: Seen,
+    params: PersonParams,
+    free_run: RayFn,
+    side: float = 0.0,
 ) -> tuple[Point, float] | None:
     """The walk `task` adjusted for the robot's shown ways (`intent_ways`) and the side (+1 my left,
     -1 my right) it passes them on, or None when they do not bother this person. `side`: the side
@@ -140,7 +146,9 @@ def keep_clear(
     return _sidestep(me, (hx, hy, speed), close, c, side, free_run), side
 
 
-def _sidestep(me: Pose2D, way: tuple[float, float, float], close: list[float], c: float, side: float, free_run: RayFn) -> Point:
+def _sidestep(
+    me: Pose2D, way: tuple[float, float, float], close: list[float], c: float, side: float, free_run: RayFn
+) -> Point:
     """Move to `side` of the robot's way, `c` from its points that are `close` (lateral offsets)."""
     hx, hy, speed = way
     need = max(0.0, max(c + side * a for a in close))
@@ -155,7 +163,9 @@ def _sidestep(me: Pose2D, way: tuple[float, float, float], close: list[float], c
     return (vx * scale, vy * scale)
 
 
-def _give_way(task: Point, crossing: tuple[float, int], points: Sequence[Point], seen: Seen, params: PersonParams) -> Point | None:
+def _give_way(
+    task: Point, crossing: tuple[float, int], points: Sequence[Point], seen: Seen, params: PersonParams
+) -> Point | None:
     """The shown path crosses my way: slow early when the robot gets there first, else walk on."""
     robot = seen.percept.robot
     if robot is None:

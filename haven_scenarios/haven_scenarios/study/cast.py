@@ -42,7 +42,11 @@ def make_participants(scenario: Scenario, grid: OccupancyGridData, seed: int) ->
             if stops:  # done, a person steps out of the way instead of standing on the room's centre
                 stops.append(_aside(planner, stops[-1]))
         else:
-            gems = [Stop(g.position[0], g.position[1], dwell_s=scenario.dwell_time_s + 0.5, reach_m=0.12) for g in w.gems if g.owner == "human"]
+            gems = [
+                Stop(g.position[0], g.position[1], dwell_s=scenario.dwell_time_s + 0.5, reach_m=0.12)
+                for g in w.gems
+                if g.owner == "human"
+            ]
             start = starts[task.id]
             stops = shuffled_nearest(gems, (start.x, start.y), s)
         out[task.id] = make_walker(task.model, task.id, stops, planner, task.speed_mps, s, task.params)

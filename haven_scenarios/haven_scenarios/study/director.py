@@ -21,7 +21,15 @@ from haven_scenarios.study.cast import make_participants, robot_targets
 from haven_scenarios.study.mission import Mission, MissionOutput, Phase
 from haven_scenarios.study.participants import Participant
 from haven_scenarios.study.perception import BY_FIELD, Percept, Sight, cue_ways, perceive
-from haven_scenarios.study.rules import EndReason, EndRule, GemRules, ObstructionRules, RouteRules, TrialCommand, TrialState
+from haven_scenarios.study.rules import (
+    EndReason,
+    EndRule,
+    GemRules,
+    ObstructionRules,
+    RouteRules,
+    TrialCommand,
+    TrialState,
+)
 from haven_scenarios.study.scenario import Scenario
 from haven_sim.common import contain, topics
 from haven_sim.common.component import Handler, Message
@@ -60,8 +68,12 @@ class DirectorConfig:
 class ScenarioNodeConfig:
     robot: RobotChoice = group(RobotChoice)
     director: DirectorConfig = group(DirectorConfig)
-    wait_for: tuple[str, ...] = param(("planner",), "nodes that must be listening before the trial starts (/topic: any reader of it)")
-    hold_start: bool = param(False, "the trial starts only on a `start` on /haven/trial_control (the researcher console's Start)")
+    wait_for: tuple[str, ...] = param(
+        ("planner",), "nodes that must be listening before the trial starts (/topic: any reader of it)"
+    )
+    hold_start: bool = param(
+        False, "the trial starts only on a `start` on /haven/trial_control (the researcher console's Start)"
+    )
 
 
 class TrialDirector:
@@ -130,7 +142,8 @@ class TrialDirector:
 
     # -- inputs ----------------------------------------------------------------------------------
     def on_map(self, grid: OccupancyGridData, now: float) -> list[Message]:
-        grid = on_the_floor(grid, self.scenario.world, clear_height(self.scenario.robot))  # people walk round what a drone flies over
+        # people walk round what a drone flies over
+        grid = on_the_floor(grid, self.scenario.world, clear_height(self.scenario.robot))
         first = self.planner is None
         self.planner = GridPlanner(grid)
         self.sight = Sight(grid)
@@ -183,11 +196,17 @@ class TrialDirector:
         away on someone else's errand (`diverted`: the mission asks again once it stands still)."""
         if e.kind is EventKind.CONTACT_BEGIN and str(e["other"]).startswith("human"):
             self.contact = True
-        if e.kind in (EventKind.PLUGIN_FAILED, EventKind.CUE_FAILED) and self.ended is None:  # (another node's plugin: the trial ends)
+        # (another node's plugin: the trial ends)
+        if e.kind in (EventKind.PLUGIN_FAILED, EventKind.CUE_FAILED) and self.ended is None:
             self.ended = EndReason.PLUGIN_FAILED
             return [self._event(EventKind.TRIAL_END, now, reason=self.ended), *self._status_messages(now)]
         goal = e.get("goal")
-        if e.kind in (EventKind.PLAN_MADE, EventKind.PLAN_REFUSED) and self.sent_goal is not None and isinstance(goal, list) and len(goal) == 2:
+        if (
+            e.kind in (EventKind.PLAN_MADE, EventKind.PLAN_REFUSED)
+            and self.sent_goal is not None
+            and isinstance(goal, list)
+            and len(goal) == 2
+        ):
             self.diverted = math.dist(goal, (self.sent_goal.x, self.sent_goal.y)) > GOAL_MATCH_M
         return []
 
@@ -224,9 +243,19 @@ class TrialDirector:
                 total = sum(1 for g in self.gems.gems.values() if g.owner == "human")
                 dwell = self.gems.dwell_progress(h.id, now)
                 done = total - len(self.gems.remaining("human"))
-                people[h.id] = {"gems_total": total, "gems_done": done, "dwell": None if dwell is None else round(dwell, 1)}
+                people[h.id] = {
+                    "gems_total": total,
+                    "gems_done": done,
+                    "dwell": None if dwell is None else round(dwell, 1),
+                }
             people[h.id]["done"] = h.id in self.humans_done
-        return {"scenario": self.scenario.name, "kind": self.scenario.kind, "state": state, "end_reason": self.ended, "humans": people}
+        return {
+            "scenario": self.scenario.name,
+            "kind": self.scenario.kind,
+            "state": state,
+            "end_reason": self.ended,
+            "humans": people,
+        }
 
     def _status_messages(self, now: float) -> list[Message]:
         """/haven/trial_status when it changed (latched: a page that opens late still learns it);
@@ -276,13 +305,17 @@ class TrialDirector:
         if self.start_time is None or self.ended is not None or self.last_tick is None:
             return []
         self.ended = EndReason.INTERRUPTED
-        return [self._event(EventKind.TRIAL_END, self.last_tick, reason=self.ended), *self._status_messages(self.last_tick)]
+        return [
+            self._event(EventKind.TRIAL_END, self.last_tick, reason=self.ended),
+            *self._status_messages(self.last_tick),
+        ]
 
     def tick(self, now: float) -> list[Message]:
         self.last_tick = now
         try:
             out = self._tick(now) if self.ended is None and self._ready() else []
-        except contain.PluginFailed as e:  # (a participant model or the mission behaviour: what this tick made is dropped)
+        except contain.PluginFailed as e:
+            # (a participant model or the mission behaviour: what this tick made is dropped)
             return self._failed(e, now)
         return out + self._status_messages(now)
 
@@ -327,12 +360,16 @@ class TrialDirector:
         shows_path = cues is not None and cues.toggles.on(PATH_NS) and cues.path_markers > 0
         markers = self.projection.shown_points(robot) if shows_path else []
         thought = self.mission.thought if self.mission is not None else ""
-        ways = cue_ways(self.projection, cues, robot, [(h.x, h.y) for h in self.humans.values()], self.level, thought, now)
+        ways = cue_ways(
+            self.projection, cues, robot, [(h.x, h.y) for h in self.humans.values()], self.level, thought, now
+        )
         for hid, walker in self.participants.items():
             if hid in self.humans:
                 me = self.humans[hid]
                 others = [pose for other, pose in self.humans.items() if other != hid]
-                self.percepts[hid] = seen = perceive(walker.params, sight, now, me, robot, cues, markers, ways, self.scenario.robot.radius_m)
+                self.percepts[hid] = seen = perceive(
+                    walker.params, sight, now, me, robot, cues, markers, ways, self.scenario.robot.radius_m
+                )
                 cmd = contain.call("participants", self.models[hid], walker.command, now, me, robot, seen, others)
                 out.append(Message(topics.human_cmd_vel(hid), cmd, now))
         fired = self.gems.update(now, robot, self.humans) + self.routes.update(now, {"robot": robot, **self.humans})
@@ -343,7 +380,12 @@ class TrialDirector:
                 out.append(Message(topics.REMOVE_OBSTRUCTION, e["id"], now))
             elif e.kind is EventKind.GEM_COLLECTED and e["by"] == "robot":
                 out += self._mission_messages(mission.target_done(now, e["gem"], robot, level), now)
-            elif e.kind is EventKind.ROOM_REACHED and e["by"] == "robot" and mission.current is not None and e["room"] == mission.current.id:
+            elif (
+                e.kind is EventKind.ROOM_REACHED
+                and e["by"] == "robot"
+                and mission.current is not None
+                and e["room"] == mission.current.id
+            ):
                 out += self._mission_messages(mission.target_done(now, e["room"], robot, level), now)
         # Every person's task counts, simulated or teleoperated: a trial with a person ends when
         # they are done too (their TASK_DONE tells their client).
@@ -356,7 +398,11 @@ class TrialDirector:
         all_done = mission.phase is Phase.DONE and self.humans_done >= people
         elapsed = now - (self.start_time if self.start_time is not None else now)
         stranded = self.empty_since is not None and now - self.empty_since > STRANDED_S
-        self.ended = EndReason.BATTERY_EMPTY if stranded and not all_done else self.end_rule.reason(elapsed, all_done, self.contact)
+        self.ended = (
+            EndReason.BATTERY_EMPTY
+            if stranded and not all_done
+            else self.end_rule.reason(elapsed, all_done, self.contact)
+        )
         if self.ended is not None:
             out.append(self._event(EventKind.TRIAL_END, now, reason=self.ended))
         return out

@@ -56,10 +56,20 @@ NARS_REVERSED = "s3"
 
 
 def _nars() -> Questionnaire:
-    items = tuple(Item(f"nars_{n}", text, "Strongly disagree", "Strongly agree", reverse=s == NARS_REVERSED) for n, text, s in NARS_ITEMS)
-    scales = tuple((name, tuple(f"nars_{n}" for n, _, s in NARS_ITEMS if s == key)) for key, name in NARS_SUBSCALES.items())
-    text = "How much do you agree with each statement? (1 strongly disagree, 2 disagree, 3 undecided, 4 agree, 5 strongly agree)"
-    return Questionnaire("nars", "Attitudes towards robots", text, 1, 5, 1, items, scales, source=NARS_SOURCE, scoring="sum")
+    items = tuple(
+        Item(f"nars_{n}", text, "Strongly disagree", "Strongly agree", reverse=s == NARS_REVERSED)
+        for n, text, s in NARS_ITEMS
+    )
+    scales = tuple(
+        (name, tuple(f"nars_{n}" for n, _, s in NARS_ITEMS if s == key)) for key, name in NARS_SUBSCALES.items()
+    )
+    text = (
+        "How much do you agree with each statement? (1 strongly disagree, "
+        "2 disagree, 3 undecided, 4 agree, 5 strongly agree)"
+    )
+    return Questionnaire(
+        "nars", "Attitudes towards robots", text, 1, 5, 1, items, scales, source=NARS_SOURCE, scoring="sum"
+    )
 
 
 PREFER_NOT = "Prefer not to say"
@@ -73,13 +83,27 @@ def _demographics() -> Questionnaire:
 
     items = (
         choice("age", "How old are you?", ("18-24", "25-34", "35-44", "45-54", "55-64", "65 or older", PREFER_NOT)),
-        choice("gender", "What is your gender?", ("Woman", "Man", "Non-binary", "I prefer to self-describe (below)", PREFER_NOT)),
+        choice(
+            "gender",
+            "What is your gender?",
+            ("Woman", "Man", "Non-binary", "I prefer to self-describe (below)", PREFER_NOT),
+        ),
         Item("gender_self", "If you prefer to self-describe your gender: (optional)", "", "", kind=TEXT),
         choice("robots", "How often do you use or work with robots (for example a robot vacuum cleaner)?", FREQUENCY),
         choice("vr", "How often do you use a virtual-reality headset?", FREQUENCY),
         choice("games", "How often do you play video games?", FREQUENCY),
     )
-    return Questionnaire("demographics", "About you", "Please answer a few questions about yourself.", 1, 1, 1, items, (), source=GENDER_SOURCE)
+    return Questionnaire(
+        "demographics",
+        "About you",
+        "Please answer a few questions about yourself.",
+        1,
+        1,
+        1,
+        items,
+        (),
+        source=GENDER_SOURCE,
+    )
 
 
 NARS, DEMOGRAPHICS = _nars(), _demographics()  # registered as plugins in pyproject.toml, beside nasa_tlx and godspeed
@@ -107,9 +131,22 @@ def preference(conditions: Sequence[tuple[str, Sequence[str]]]) -> Questionnaire
         return f"{name.replace('_', ' ')} ({', '.join(c.replace('_', ' ') for c in cues)})"
 
     items = tuple(Item(name, label(name, cues), "liked best", "liked least") for name, cues in conditions)
-    text = f"You saw the robot with {n} different cue settings. Rank them: 1 for the one you liked best, {n} for the one you liked least, "
+    text = (
+        f"You saw the robot with {n} different cue settings. Rank them: "
+        f"1 for the one you liked best, {n} for the one you liked least, "
+    )
     text += "each number once."
-    return Questionnaire(PREFERENCE, "Which did you like best?", text, 1, n, 1, items, tuple((i.id, (i.id,)) for i in items), distinct=True)
+    return Questionnaire(
+        PREFERENCE,
+        "Which did you like best?",
+        text,
+        1,
+        n,
+        1,
+        items,
+        tuple((i.id, (i.id,)) for i in items),
+        distinct=True,
+    )
 
 
 @dataclass(frozen=True)

@@ -75,7 +75,8 @@ class Mission:
         self,
         targets: Sequence[Target],
         path_length: PathLength,
-        order: str = "fixed",  # a mission behaviour (study/mission_orders.py): fixed (the given order) | nearest | random | a lab's
+        # a mission behaviour (study/mission_orders.py): fixed (the given order) | nearest | random | a lab's
+        order: str = "fixed",
         battery: BatteryPlan | None = None,
         base: Point | None = None,
         seed: int = 0,
@@ -155,7 +156,14 @@ class Mission:
                 there = self.path_length(self.base, target.xy)
                 back = self.path_length(target.xy, self.base)
                 if sf * there > full:
-                    self._event(out, EventKind.BATTERY_INSUFFICIENT, target=target.id, need_m=_m(sf * there), has_m=_m(full), skipped=True)
+                    self._event(
+                        out,
+                        EventKind.BATTERY_INSUFFICIENT,
+                        target=target.id,
+                        need_m=_m(sf * there),
+                        has_m=_m(full),
+                        skipped=True,
+                    )
                     self.pending = [t for t in self.pending if t.id != target.id]
                     self.skipped.append(target.id)
                     self.current = None
@@ -170,7 +178,14 @@ class Mission:
                     one_way = [t for t in self.pending if t.id in self.last_only]
                     far = max(one_way, key=lambda t: self.path_length(self.base, t.xy))  # type: ignore[arg-type]
                     need_m = sf * (self.path_length(self.base, far.xy) + self.path_length(far.xy, self.base))
-                    self._event(out, EventKind.BATTERY_INSUFFICIENT, target=far.id, need_m=_m(need_m), has_m=_m(full), skipped=True)
+                    self._event(
+                        out,
+                        EventKind.BATTERY_INSUFFICIENT,
+                        target=far.id,
+                        need_m=_m(need_m),
+                        has_m=_m(full),
+                        skipped=True,
+                    )
                     self.pending = [t for t in self.pending if t.id != far.id]
                     self.skipped.append(far.id)
                     self.current = None
@@ -213,7 +228,9 @@ class Mission:
             out.goal = Pose2D(self.base[0], self.base[1], math.nan)
         return out
 
-    def tick(self, now: float, robot: Pose2D, level: float, at_base: bool = False, waiting: bool = False) -> MissionOutput:
+    def tick(
+        self, now: float, robot: Pose2D, level: float, at_base: bool = False, waiting: bool = False
+    ) -> MissionOutput:
         self._now = now
         out = MissionOutput()
         p = self.battery
@@ -237,7 +254,8 @@ class Mission:
                 self._charge_ticks += 1
                 self._say(out, f"Charging: {round(100 * level)} %")
             return out
-        last = self.current is not None and [t.id for t in self.pending] == [self.current.id]  # (checked one way on leaving)
+        # (checked one way on leaving)
+        last = self.current is not None and [t.id for t in self.pending] == [self.current.id]
         watch = p.mode == "continuous" or p.drains_waiting
         if self.phase is Phase.GOING and watch and self.base is not None and not last:
             home = self.path_length((robot.x, robot.y), self.base)

@@ -65,7 +65,10 @@ MissionFactory = Callable[[], MissionBehaviour]  # a `haven.missions` plugin: th
 
 
 def accept_plugin(name: str, value: Any) -> MissionFactory:
-    """A `haven.missions` plugin: a class whose objects arrange(targets, seed) and pick(candidates, robot, path_length)."""
+    """A `haven.missions` plugin: a class whose objects arrange(targets, seed) and pick(candidates, robot,
+    path_length)."""
     if not inspect.isclass(value) or not all(callable(getattr(value, m, None)) for m in ("arrange", "pick")):
-        raise ValueError("is not a mission behaviour: a class with arrange(targets, seed) and pick(candidates, robot, path_length)")
+        raise ValueError(
+            "is not a mission behaviour: a class with arrange(targets, seed) and pick(candidates, robot, path_length)"
+        )
     return cast(MissionFactory, value)

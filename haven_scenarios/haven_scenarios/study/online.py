@@ -76,7 +76,8 @@ class Online(FileModel):
     completion_code: Annotated[str, checked(_code)] = ""
     completion_url: Annotated[str, checked(_url)] = ""
     join_limit: JoinLimit = JoinLimit()
-    allowed_ids: Annotated[str, checked(_file)] = ""  # a file of the ids that may join, one a line ('#' starts a comment)
+    # a file of the ids that may join, one a line ('#' starts a comment)
+    allowed_ids: Annotated[str, checked(_file)] = ""
     link_secret_file: Annotated[str, checked(_file)] = ""  # signed links: the secret the panel signs each id with
 
 
@@ -100,7 +101,9 @@ def read_secret(path: str) -> bytes:
         raise ValueError(f"{path}: others can read this link secret: chmod 600 {path}")
     secret = read_text(Path(path), 4096).strip().encode()
     if len(secret) < MIN_SECRET_BYTES:
-        raise ValueError(f"{path}: a link secret of at least {MIN_SECRET_BYTES} characters is needed, got {len(secret)}")
+        raise ValueError(
+            f"{path}: a link secret of at least {MIN_SECRET_BYTES} characters is needed, got {len(secret)}"
+        )
     return secret
 
 

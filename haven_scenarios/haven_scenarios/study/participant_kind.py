@@ -16,7 +16,9 @@ from haven_sim.nav.planner import Planner
 class ParticipantFactory(Protocol):
     """A `haven.participants` plugin: a class or function that makes a simulated participant."""
 
-    def __call__(self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int, params: PersonParams) -> Participant: ...
+    def __call__(
+        self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int, params: PersonParams
+    ) -> Participant: ...
 
 
 def accept_plugin(name: str, value: Any) -> ParticipantFactory:
@@ -34,12 +36,20 @@ def accept_plugin(name: str, value: Any) -> ParticipantFactory:
 
 
 def make_walker(
-    model: str, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float, seed: int, params: PersonParams | None = None
+    model: str,
+    human_id: str,
+    stops: Sequence[Stop],
+    planner: Planner,
+    speed_mps: float,
+    seed: int,
+    params: PersonParams | None = None,
 ) -> Participant:
     """A simulated participant of the named model (the names a scenario file uses): a plugin of
     kind `participants` (ours: walker, blocker and yielder, in pyproject.toml), a class or factory that
     takes these arguments and returns a `Participant`. One that raises or overruns its deadline:
     `contain.PluginFailed` (its trial ends, not valid)."""
     factory = plugins.registry("participants").get(model)
-    made: Participant = contain.call("participants", model, factory, human_id, stops, planner, speed_mps, seed, params or PersonParams())
+    made: Participant = contain.call(
+        "participants", model, factory, human_id, stops, planner, speed_mps, seed, params or PersonParams()
+    )
     return made

@@ -43,7 +43,8 @@ from haven_sim.robots.fields import DEFAULT
 CLOSE_ENOUGH_M = 0.3  # a stop the person cannot get nearer to than this (someone beside it) counts as reached
 ROBOT_ON_STOP_M = 0.6  # the robot this close to a stop stands on it
 SIDE_HOLD_S = 3.0  # a side chosen to pass the robot on is kept this long after the last step aside
-ENCOUNTER_GAP_S = 2.0  # no cue seen for this long ends an encounter with the robot's cues (ours: a glance away is not a new encounter)
+# no cue seen for this long ends an encounter with the robot's cues (ours: a glance away is not a new encounter)
+ENCOUNTER_GAP_S = 2.0
 HUMAN_PLANNER = PlannerParams(safety_margin_m=0.05, snap_radius_m=0.5, body_radius_m=HUMAN_BODY.radius_m)
 
 
@@ -55,7 +56,9 @@ class Participant(Protocol):
     done: bool  # their task is finished
     params: PersonParams
 
-    def command(self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()) -> Twist2D: ...
+    def command(
+        self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()
+    ) -> Twist2D: ...
 
 
 @dataclass(frozen=True)
@@ -86,7 +89,13 @@ class Walker:
     closes in on the robot."""
 
     def __init__(
-        self, human_id: str, stops: Sequence[Stop], planner: Planner, speed_mps: float = 1.0, seed: int = 0, params: PersonParams | None = None
+        self,
+        human_id: str,
+        stops: Sequence[Stop],
+        planner: Planner,
+        speed_mps: float = 1.0,
+        seed: int = 0,
+        params: PersonParams | None = None,
     ) -> None:
         self.id = human_id
         self.person = individual(params or PersonParams(), human_id, seed)  # who they are, as in this trial
@@ -111,7 +120,9 @@ class Walker:
         self._side = (0.0, -math.inf)  # the side they pass the robot's shown way on, until when
         self.done = not self.stops
 
-    def command(self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()) -> Twist2D:
+    def command(
+        self, now: float, me: Pose2D, robot: Pose2D, percept: Percept, others: Sequence[Pose2D] = ()
+    ) -> Twist2D:
         self._robot_radius = percept.robot_radius_m
         self.attention.push(self._read_cues(now, percept))
         seen = self.attention.acted_on(now)
@@ -157,7 +168,9 @@ class Walker:
         return task
 
     # -- moving ------------------------------------------------------------------------------------
-    def _move(self, now: float, me: Pose2D, robot: Pose2D, seen: Seen | None, others: Sequence[Pose2D], desired: Point) -> Twist2D:
+    def _move(
+        self, now: float, me: Pose2D, robot: Pose2D, seen: Seen | None, others: Sequence[Pose2D], desired: Point
+    ) -> Twist2D:
         """The social-force step from the desired velocity, as a command in the person's frame: the
         robot pushes where and as the person saw it move; where it is only for the hard rule."""
         if self._last_tick is not None and now > self._last_tick:
@@ -167,7 +180,9 @@ class Walker:
         if seen is not None and seen.percept.robot is not None:
             r = seen.percept.robot
             bodies.insert(0, robot_body(r.x, r.y, *seen.robot_v, seen.percept.robot_radius_m))
-        vx, vy = self.crowd.step((me.x, me.y), desired, bodies, self._dt, guard=(robot_body(robot.x, robot.y, 0.0, 0.0, self._robot_radius),))
+        vx, vy = self.crowd.step(
+            (me.x, me.y), desired, bodies, self._dt, guard=(robot_body(robot.x, robot.y, 0.0, 0.0, self._robot_radius),)
+        )
         return self._twist(me, (vx, vy), desired)
 
     def _twist(self, me: Pose2D, v: Point, desired: Point) -> Twist2D:
@@ -175,7 +190,11 @@ class Walker:
         go. The command holds for the tick, so it is aimed along the heading they will have half-way
         through, or the walk would curl as they turn."""
         face = v if math.hypot(*v) > 0.1 else desired
-        wz = max(-3.0, min(3.0, 2.0 * wrap_angle(math.atan2(face[1], face[0]) - me.yaw))) if math.hypot(*face) > 1e-3 else 0.0
+        wz = (
+            max(-3.0, min(3.0, 2.0 * wrap_angle(math.atan2(face[1], face[0]) - me.yaw)))
+            if math.hypot(*face) > 1e-3
+            else 0.0
+        )
         mid = me.yaw + 0.5 * wz * self._dt
         c, s = math.cos(mid), math.sin(mid)
         return Twist2D(c * v[0] + s * v[1], -s * v[0] + c * v[1], wz)
@@ -229,7 +248,11 @@ class Walker:
         the robot may be waiting for them and neither would move). A stop to stand on for a while
         (a gem) needs the person on it."""
         robot = self._robot
-        held = robot is not None and stop.dwell_s == 0.0 and math.hypot(stop.x - robot.x, stop.y - robot.y) < ROBOT_ON_STOP_M
+        held = (
+            robot is not None
+            and stop.dwell_s == 0.0
+            and math.hypot(stop.x - robot.x, stop.y - robot.y) < ROBOT_ON_STOP_M
+        )
         return ROBOT_ON_STOP_M + HUMAN_BODY.radius_m if held else CLOSE_ENOUGH_M
 
     def _contested(self, stop: Stop, near_m: float = 0.8) -> bool:
@@ -255,7 +278,9 @@ class Blocker(Walker):
     reached within `give_up_s`. The spot is on the projected path when the person sees enough of
     it, else `ahead_m` along the robot's motion as they saw it; with neither, they just walk."""
 
-    def __init__(self, *args: object, ahead_m: float = 3.0, block_s: float = 8.0, give_up_s: float = 30.0, **kwargs: object) -> None:
+    def __init__(
+        self, *args: object, ahead_m: float = 3.0, block_s: float = 8.0, give_up_s: float = 30.0, **kwargs: object
+    ) -> None:
         super().__init__(*args, **kwargs)  # type: ignore[arg-type]
         self.ahead_m, self.block_s, self.give_up_s = ahead_m, block_s, give_up_s
         self._spot: Point | None = None
@@ -276,7 +301,11 @@ class Blocker(Walker):
             if walked >= self.ahead_m and math.hypot(b[0] - ref[0], b[1] - ref[1]) >= self.ahead_m * 0.8:
                 return b
         last = path[-1]
-        return last if walked >= self.ahead_m / 2 and math.hypot(last[0] - ref[0], last[1] - ref[1]) >= self.ahead_m * 0.4 else None
+        return (
+            last
+            if walked >= self.ahead_m / 2 and math.hypot(last[0] - ref[0], last[1] - ref[1]) >= self.ahead_m * 0.4
+            else None
+        )
 
     def _spot_on_motion(self, seen: Seen) -> Point | None:
         """`ahead_m` along the robot's seen motion, if it moves and that place is free."""
@@ -326,7 +355,9 @@ class Yielder(Walker):
     or its thought bubble says it waits for them, the person walks on past it for `walk_on_s`:
     nobody waits for ever."""
 
-    def __init__(self, *args: object, yield_m: float = 1.5, patience_s: float = 4.0, walk_on_s: float = 6.0, **kwargs: object) -> None:
+    def __init__(
+        self, *args: object, yield_m: float = 1.5, patience_s: float = 4.0, walk_on_s: float = 6.0, **kwargs: object
+    ) -> None:
         super().__init__(*args, **kwargs)  # type: ignore[arg-type]
         self.yield_m, self.patience_s, self.walk_on_s = yield_m, patience_s, walk_on_s
         self._yielding: tuple[float, Pose2D] | None = None  # since when, and where the robot was then
@@ -336,7 +367,11 @@ class Yielder(Walker):
         robot = seen.percept.robot if seen is not None else None
         shown = intent_ways(seen.percept) if seen is not None else []
         reach = self.yield_m * (2.0 if shown else 1.0)
-        ahead = robot is not None and math.hypot(robot.x - me.x, robot.y - me.y) < reach and ahead_of(me, (robot.x, robot.y), math.radians(70))
+        ahead = (
+            robot is not None
+            and math.hypot(robot.x - me.x, robot.y - me.y) < reach
+            and ahead_of(me, (robot.x, robot.y), math.radians(70))
+        )
         if robot is None or not ahead or now < self._walk_on_until:
             self._yielding = None
             return self._react(now, me, self._task(now, me), seen)
@@ -350,9 +385,14 @@ class Yielder(Walker):
         side = -1.0  # right, unless the shown way lies to the right
         if shown:
             left = (-math.sin(me.yaw), math.cos(me.yaw))
-            side = 1.0 if sum((p[0] - me.x) * left[0] + (p[1] - me.y) * left[1] for way in shown for p in way) < 0.0 else -1.0
+            side = (
+                1.0
+                if sum((p[0] - me.x) * left[0] + (p[1] - me.y) * left[1] for way in shown for p in way) < 0.0
+                else -1.0
+            )
         away = (-side * math.sin(me.yaw), side * math.cos(me.yaw))
-        room = self.planner.free_run((me.x, me.y), away, 1.0) - HUMAN_BODY.radius_m - 0.05  # to the wall, body and margin off
+        # to the wall, body and margin off
+        room = self.planner.free_run((me.x, me.y), away, 1.0) - HUMAN_BODY.radius_m - 0.05
         step = min(0.4, max(0.0, 2.0 * room))
         return (away[0] * step, away[1] * step)
 
@@ -364,6 +404,10 @@ def in_session(scenario: Scenario, person_seed: int, session_trial: int) -> Scen
     one's draw also depends on their id (`person.individual`)."""
 
     def one(h: HumanTask) -> HumanTask:
-        return h if h.teleoperated else replace(h, params=replace(h.params, person_seed=person_seed, session_trial=session_trial))
+        return (
+            h
+            if h.teleoperated
+            else replace(h, params=replace(h.params, person_seed=person_seed, session_trial=session_trial))
+        )
 
     return replace(scenario, humans=tuple(one(h) for h in scenario.humans))

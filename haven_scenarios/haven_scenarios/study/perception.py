@@ -45,11 +45,13 @@ class Percept:
     battery: float | None = None
     ways: tuple[tuple[Point, ...], ...] = ()  # the robot's way as other cues show it, the parts seen
     shown: Mapping[str, Any] = field(default_factory=dict)  # other cues seen: cue -> its value
-    robot_radius_m: float = DEFAULT.radius_m  # the robot's size (its footprint's enclosing circle), as anyone can see it
+    # the robot's size (its footprint's enclosing circle), as anyone can see it
+    robot_radius_m: float = DEFAULT.radius_m
 
     @property
     def intent_shown(self) -> bool:
-        """The robot's way ahead is shown to this person (its projected path, a lit turn signal or another cue's way)."""
+        """The robot's way ahead is shown to this person (its projected path, a lit turn signal or another cue's
+        way)."""
         return bool(self.path) or self.signal != 0 or bool(self.ways)
 
 
@@ -145,7 +147,11 @@ def perceive(
     for cue, (way, on_robot) in (ways or {}).items():
         if not (cues.toggles.on(cue) and cues.shown(cue)):
             continue
-        part = (way if robot_seen else ()) if on_robot else tuple(p for p, v in zip(way, seen(params, sight, me, np.array(way)), strict=True) if v)
+        part = (
+            (way if robot_seen else ())
+            if on_robot
+            else tuple(p for p, v in zip(way, seen(params, sight, me, np.array(way)), strict=True) if v)
+        )
         if part:
             seen_ways.append(part)
             values[cue] = cues.value(cue)
@@ -165,7 +171,15 @@ def perceive(
     )
 
 
-def cue_ways(cues: ArCues, state: CueState | None, robot: Pose2D, humans: Sequence[Point], level: float | None, thought: str, now: float) -> Ways:
+def cue_ways(
+    cues: ArCues,
+    state: CueState | None,
+    robot: Pose2D,
+    humans: Sequence[Point],
+    level: float | None,
+    thought: str,
+    now: float,
+) -> Ways:
     """Where the cues in `cues` (laid out as the viz does) that show something now say the robot
     goes (only while one of them is on show)."""
     if state is None or not any(state.shown(c) for c in cues.cues):

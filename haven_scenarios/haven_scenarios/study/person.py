@@ -63,7 +63,8 @@ from dataclasses import dataclass, fields, replace
 
 HALL_SOCIAL_M = 3.6  # Hall (1966): social distance ends here (the metrics' social zone, too)
 NEW_PERSON = -1  # `person_seed`: a new person for every trial seed
-HESITATE_LIMITS = (0.2, 0.9)  # a drawn slowdown factor is kept within these (a person neither stops dead nor ignores the robot)
+# a drawn slowdown factor is kept within these (a person neither stops dead nor ignores the robot)
+HESITATE_LIMITS = (0.2, 0.9)
 SPEED_FACTOR_LIMITS = (0.6, 1.4)  # a drawn walking-speed factor is kept within these (3.6 sd of Bohannon's spread)
 INT_FIELDS = ("person_seed", "session_trial")
 
@@ -104,9 +105,13 @@ class PersonParams:
                 raise ValueError(f"{name} must be a whole number, got {value:g}")
             object.__setattr__(self, name, int(value))
         if self.person_seed < NEW_PERSON:
-            raise ValueError(f"person_seed must be -1 (a new person per trial seed) or a seed >= 0, got {self.person_seed}")
+            raise ValueError(
+                f"person_seed must be -1 (a new person per trial seed) or a seed >= 0, got {self.person_seed}"
+            )
         if self.session_trial < 1:
-            raise ValueError(f"session_trial must be 1 or more (the trial's position in the session), got {self.session_trial}")
+            raise ValueError(
+                f"session_trial must be 1 or more (the trial's position in the session), got {self.session_trial}"
+            )
         if not 0 < self.fov_deg <= 360:
             raise ValueError(f"fov_deg must be within (0, 360], got {self.fov_deg:g}")
         for name in ("view_m", "anticipate_m", "hesitate_m"):
@@ -163,7 +168,8 @@ def individual(params: PersonParams, human_id: str, trial_seed: int) -> Individu
     reaction = p.reaction_s * math.exp(spread(p.reaction_person_sd, p.reaction_trial_sd)) * practice
     gap = p.pass_gap_m * math.exp(spread(p.pass_gap_person_sd, p.pass_gap_trial_sd))
     anticipate = p.anticipate_m * math.exp(spread(p.anticipate_person_sd, p.anticipate_trial_sd))
-    lo, hi = min(HESITATE_LIMITS[0], p.hesitate_factor), max(HESITATE_LIMITS[1], p.hesitate_factor)  # (a centre of 1: no slowing)
+    # (a centre of 1: no slowing)
+    lo, hi = min(HESITATE_LIMITS[0], p.hesitate_factor), max(HESITATE_LIMITS[1], p.hesitate_factor)
     hesitate = min(hi, max(lo, p.hesitate_factor + spread(p.hesitate_person_sd, p.hesitate_trial_sd)))
     error = 0.0
     if p.cue_error > 0.0:

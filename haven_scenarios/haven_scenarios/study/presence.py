@@ -99,7 +99,9 @@ class Attendance:
         if p.sockets:
             return [], []
         p.away_since = wall
-        events = [event(EventKind.PARTICIPANT_DISCONNECTED, sim_now, Source.WEB, by=who, policy=str(self.on_disconnect))]
+        events = [
+            event(EventKind.PARTICIPANT_DISCONNECTED, sim_now, Source.WEB, by=who, policy=str(self.on_disconnect))
+        ]
         if not running:
             return events, []
         if self.on_disconnect is OnDisconnect.ABORT:
@@ -113,12 +115,23 @@ class Attendance:
         """With `pause`: a participant away longer than the timeout is lost, and the trial aborted."""
         if not (self.paused and running):
             return [], []
-        lost = [w for w, p in self.people.items() if p.away_since is not None and wall - p.away_since >= self.reconnect_timeout_s]
+        lost = [
+            w
+            for w, p in self.people.items()
+            if p.away_since is not None and wall - p.away_since >= self.reconnect_timeout_s
+        ]
         if not lost:
             return [], []
         self.paused = False
         events = [
-            event(EventKind.PARTICIPANT_LOST, sim_now, Source.WEB, by=w, away_s=round(wall - (self.people[w].away_since or wall), 2)) for w in lost
+            event(
+                EventKind.PARTICIPANT_LOST,
+                sim_now,
+                Source.WEB,
+                by=w,
+                away_s=round(wall - (self.people[w].away_since or wall), 2),
+            )
+            for w in lost
         ]
         return events, [Act.RESUME, Act.ABORT]
 
@@ -147,7 +160,10 @@ class Attendance:
         if not isinstance(data, dict):
             return "a page report that is not a JSON object"
         values = {k: data.get(k) for k in REPORTED}
-        if any(v is not None and (isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1e9) for v in values.values()):
+        if any(
+            v is not None and (isinstance(v, bool) or not isinstance(v, (int, float)) or not 0 <= v < 1e9)
+            for v in values.values()
+        ):
             return "a page report with a value that is not a number >= 0"
         p.report = {k: None if v is None else round(float(v), 1) for k, v in values.items()}
         p.reported_at = wall

@@ -19,7 +19,8 @@ consent: {file: consent.md}        # before anything: {text: ...} or a text file
 before_study: [demographics, nars]  # before the first trial, after consent (study/instruments.py)
 after_study: [preference]           # after the last trial: `preference` ranks the conditions
 robots: [turtlebot2, turtlebot4]    # a design factor (default: the scenario's robot); robot_design: between | within
-online: {completion_code: C1A2B3}   # `haven serve`: the landing page's text, the code or redirect at the end (study/online.py)
+online: {completion_code: C1A2B3}   # `haven serve`: the landing page's text, the code or redirect at the end
+                                    # (study/online.py)
 ```
 
 Scenarios run as blocks, in the participant's counterbalanced block order (`blocks`), each showing
@@ -127,12 +128,20 @@ class Study:
             "participants": list(self.participants),
             "repetitions": self.repetitions,
             "counterbalancing": self.counterbalancing,
-            "practice": [[p.scenario.spec, p.condition.name, *([list(p.condition.cues)] if p.own else [])] for p in self.practice],
+            "practice": [
+                [p.scenario.spec, p.condition.name, *([list(p.condition.cues)] if p.own else [])] for p in self.practice
+            ],
             "seeds": {"policy": self.seed_policy, "base": self.seed_base},
             "questionnaires": list(self.questionnaires),
             "blocks": self.blocks if len(self.scenarios) > 1 else "none",  # (one scenario: one block, nothing to order)
-            "assignment": {"policy": self.assignment, "seed": self.assignment_seed} if self.assignment == "random" else {"policy": self.assignment},
-            **({"robots": [[r.spec, r.name] for r in self.robots], "robot_design": self.robot_design} if self.robots else {}),
+            "assignment": {"policy": self.assignment, "seed": self.assignment_seed}
+            if self.assignment == "random"
+            else {"policy": self.assignment},
+            **(
+                {"robots": [[r.spec, r.name] for r in self.robots], "robot_design": self.robot_design}
+                if self.robots
+                else {}
+            ),
         }
 
 
@@ -212,7 +221,9 @@ class StudyFile(FileModel):
 
     name: str
     scenarios: Annotated[list[Any], listing("a non-empty list of scenarios")]
-    conditions: Annotated[dict[Any, Any], mapping("a mapping of condition name to its cue list, e.g. {none: [none], all: [all]}")]
+    conditions: Annotated[
+        dict[Any, Any], mapping("a mapping of condition name to its cue list, e.g. {none: [none], all: [all]}")
+    ]
     participants: Annotated[int | list[Any], checked(_participants)]
     repetitions: Whole(1, MAX_REPETITIONS) = 1  # type: ignore[valid-type]
     counterbalancing: Literal["williams", "latin", "full", "none"] = "williams"
@@ -223,13 +234,17 @@ class StudyFile(FileModel):
         Field(json_schema_extra=_one_or_list),
     ] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     seeds: Seeds | None = None
-    questionnaires: Annotated[list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
+    questionnaires: Annotated[
+        list[Any], listing("a list of built-in names (nasa_tlx, godspeed) and Likert mappings", non_empty=False)
+    ] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     # The protocol against order confounds (study/schedule.py).
     blocks: Literal["williams", "latin", "full", "none"] = "williams"
     assignment: Assignment | None = None
     # before and after the whole study (study/instruments.py)
     consent: Consent | None = None
-    before_study: Annotated[list[Any], listing("a list of questionnaires (demographics, nars, ...)", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
+    before_study: Annotated[
+        list[Any], listing("a list of questionnaires (demographics, nars, ...)", non_empty=False)
+    ] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     after_study: Annotated[list[Any], listing("a list of questionnaires (preference, ...)", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     robots: Annotated[list[Any], listing("a list of robots: names (haven robots) or robot files", non_empty=False)] = []  # noqa: RUF012 (a pydantic field: the default is copied per instance)
     robot_design: Literal["between", "within"] = "between"
@@ -254,12 +269,17 @@ class _StudyParser:
     def study(self, f: StudyFile) -> Study:
         scenarios, conditions = self.scenarios(f.scenarios), self.conditions(f.conditions)
         if f.counterbalancing == "full" and len(conditions) > 8:
-            raise self.fail("counterbalancing", f"full: {len(conditions)} conditions have too many orders; use williams")
+            raise self.fail(
+                "counterbalancing", f"full: {len(conditions)} conditions have too many orders; use williams"
+            )
         if f.blocks == "full" and len(scenarios) > 6:
             raise self.fail("blocks", f"full: {len(scenarios)} scenarios have too many orders; use williams")
         assignment = f.assignment or Assignment()
         if assignment.policy == "random" and assignment.seed is None:
-            raise self.fail("assignment.seed", "required with policy random: a whole number, fixed before the study (e.g. {policy: random, seed: 7})")
+            raise self.fail(
+                "assignment.seed",
+                "required with policy random: a whole number, fixed before the study (e.g. {policy: random, seed: 7})",
+            )
         seeds = f.seeds or Seeds()
         return Study(
             name=self.name(f.name, "name"),
@@ -337,7 +357,9 @@ class _StudyParser:
                 raise self.fail(f"participants[{i}]", f"participant {p!r} is listed twice")
         return ids
 
-    def practice(self, value: list[PracticeTrial], scenarios: tuple[StudyScenario, ...], conditions: tuple[Condition, ...]) -> tuple[Practice, ...]:
+    def practice(
+        self, value: list[PracticeTrial], scenarios: tuple[StudyScenario, ...], conditions: tuple[Condition, ...]
+    ) -> tuple[Practice, ...]:
         by_name = {c.name: c for c in conditions}
         listed = {s.name: s for s in scenarios}
         out = []
@@ -349,7 +371,10 @@ class _StudyParser:
             elif p.cues is not None:
                 raise self.fail(key, "give cues or condition, not both")
             elif p.condition not in by_name:
-                raise self.fail(f"{key}.condition", f"names no condition of the study ({', '.join(by_name)}), got {short(p.condition)}")
+                raise self.fail(
+                    f"{key}.condition",
+                    f"names no condition of the study ({', '.join(by_name)}), got {short(p.condition)}",
+                )
             else:
                 out.append(Practice(scenario, by_name[p.condition]))
         return tuple(out)
@@ -387,7 +412,10 @@ class _StudyParser:
 
     def instruments(self, value: list[Any], key: str, special: tuple[str, ...]) -> tuple[Any, ...]:
         if key != "after_study" and PREFERENCE in value:
-            raise self.fail(f"{key}[{value.index(PREFERENCE)}]", f"{PREFERENCE} ranks the conditions after the last trial: list it in after_study")
+            raise self.fail(
+                f"{key}[{value.index(PREFERENCE)}]",
+                f"{PREFERENCE} ranks the conditions after the last trial: list it in after_study",
+            )
         try:
             resolve([v for v in value if v not in special], key)
         except ValueError as e:

@@ -62,7 +62,8 @@ MAX_ITEMS = 100
 MAX_TEXT = 300
 
 
-SCALE, CHOICE, TEXT = "scale", "choice", "text"  # an item's kind: a rating, one of its options (1..n), optional free text
+# an item's kind: a rating, one of its options (1..n), optional free text
+SCALE, CHOICE, TEXT = "scale", "choice", "text"
 MAX_ANSWER_TEXT = 100  # a free-text answer (e.g. a self-described gender)
 
 
@@ -73,14 +74,16 @@ class Item:
     low: str  # the anchor at the scale's low end
     high: str  # ... and at its high end
     reverse: bool = False  # scored as (min + max - answer)
-    prompt: str = ""  # the instruction the page shows above this item and those after it, until another ("": the questionnaire's)
+    # the instruction the page shows above this item and those after it, until another ("": the questionnaire's)
+    prompt: str = ""
     kind: str = SCALE
     options: tuple[str, ...] = ()  # CHOICE: the answer k means options[k - 1]
 
 
 @dataclass(frozen=True)
 class Questionnaire:
-    """One questionnaire as the participant page shows it: answers run from `minimum` to `maximum` in steps of `step`."""
+    """One questionnaire as the participant page shows it: answers run from `minimum` to `maximum` in steps of
+    `step`."""
 
     name: str
     title: str
@@ -108,14 +111,39 @@ def _tlx() -> Questionnaire:
         ("mental", "Mental demand: how mentally demanding was the task?", "Very low", "Very high"),
         ("physical", "Physical demand: how physically demanding was the task?", "Very low", "Very high"),
         ("temporal", "Temporal demand: how hurried or rushed was the pace of the task?", "Very low", "Very high"),
-        ("performance", "Performance: how successful were you in accomplishing what you were asked to do?", "Perfect", "Failure"),
-        ("effort", "Effort: how hard did you have to work to accomplish your level of performance?", "Very low", "Very high"),
-        ("frustration", "Frustration: how insecure, discouraged, irritated, stressed and annoyed were you?", "Very low", "Very high"),
+        (
+            "performance",
+            "Performance: how successful were you in accomplishing what you were asked to do?",
+            "Perfect",
+            "Failure",
+        ),
+        (
+            "effort",
+            "Effort: how hard did you have to work to accomplish your level of performance?",
+            "Very low",
+            "Very high",
+        ),
+        (
+            "frustration",
+            "Frustration: how insecure, discouraged, irritated, stressed and annoyed were you?",
+            "Very low",
+            "Very high",
+        ),
     )
     items = tuple(Item(i, text, low, high) for i, text, low, high in subscales)
     scales = (("raw", tuple(i.id for i in items)), *((i.id, (i.id,)) for i in items))
     source = "Hart & Staveland (1988), NASA Task Load Index; raw (unweighted) TLX: Hart (2006)"
-    return Questionnaire("nasa_tlx", "NASA Task Load Index", "Rate the trial you just did on each scale.", 0, 100, 5, items, scales, source=source)
+    return Questionnaire(
+        "nasa_tlx",
+        "NASA Task Load Index",
+        "Rate the trial you just did on each scale.",
+        0,
+        100,
+        5,
+        items,
+        scales,
+        source=source,
+    )
 
 
 GODSPEED_SERIES: dict[str, tuple[tuple[str, str], ...]] = {
@@ -123,7 +151,8 @@ GODSPEED_SERIES: dict[str, tuple[tuple[str, str], ...]] = {
                          ("Artificial", "Lifelike"), ("Moving rigidly", "Moving elegantly")),
     "animacy": (("Dead", "Alive"), ("Stagnant", "Lively"), ("Mechanical", "Organic"), ("Artificial", "Lifelike"),
                 ("Inert", "Interactive"), ("Apathetic", "Responsive")),
-    "likeability": (("Dislike", "Like"), ("Unfriendly", "Friendly"), ("Unkind", "Kind"), ("Unpleasant", "Pleasant"), ("Awful", "Nice")),
+    "likeability": (("Dislike", "Like"), ("Unfriendly", "Friendly"), ("Unkind", "Kind"), ("Unpleasant", "Pleasant"),
+                    ("Awful", "Nice")),
     "intelligence": (("Incompetent", "Competent"), ("Ignorant", "Knowledgeable"), ("Irresponsible", "Responsible"),
                      ("Unintelligent", "Intelligent"), ("Foolish", "Sensible")),
     "safety": (("Anxious", "Relaxed"), ("Agitated", "Calm"), ("Quiescent", "Surprised")),
@@ -145,14 +174,28 @@ def _godspeed() -> Questionnaire:
     for series, pairs in GODSPEED_SERIES.items():
         ids = tuple(f"{series}_{k + 1}" for k in range(len(pairs)))
         prompt = GODSPEED_PROMPTS.get(series, GODSPEED_IMPRESSION)
-        items += [Item(i, f"{low} - {high}", low, high, prompt=prompt) for i, (low, high) in zip(ids, pairs, strict=True)]
+        items += [
+            Item(i, f"{low} - {high}", low, high, prompt=prompt) for i, (low, high) in zip(ids, pairs, strict=True)
+        ]
         scales.append((series, ids))
     text = "Rate each pair on the scale between its two words."
-    return Questionnaire("godspeed", "Godspeed questionnaire", text, 1, 5, 1, tuple(items), tuple(scales), differential=True, source=GODSPEED_SOURCE)
+    return Questionnaire(
+        "godspeed",
+        "Godspeed questionnaire",
+        text,
+        1,
+        5,
+        1,
+        tuple(items),
+        tuple(scales),
+        differential=True,
+        source=GODSPEED_SOURCE,
+    )
 
 
 NASA_TLX, GODSPEED = _tlx(), _godspeed()
-BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (NASA_TLX, GODSPEED)}  # ours, registered as plugins in pyproject.toml
+# ours, registered as plugins in pyproject.toml
+BUILTINS: dict[str, Questionnaire] = {q.name: q for q in (NASA_TLX, GODSPEED)}
 
 
 def accept_plugin(name: str, value: Any) -> Questionnaire:
@@ -175,7 +218,11 @@ def _text(limit: int) -> Any:
 
     def check(value: Any) -> str:
         if isinstance(value, (bool, int, float)):  # YAML reads Yes, No, On, Off as booleans, 5 as a number
-            words = "YAML reads Yes, No, On and Off as true or false" if isinstance(value, bool) else "YAML reads it as a number"
+            words = (
+                "YAML reads Yes, No, On and Off as true or false"
+                if isinstance(value, bool)
+                else "YAML reads it as a number"
+            )
             raise ValueError(f'must be text, got {short(value)} ({words}: put the words in quotes, e.g. "No")')
         if not isinstance(value, str) or not value.strip() or len(value) > limit or "\n" in value.strip():
             raise ValueError(f"must be one line of text (at most {limit} characters)")
@@ -238,13 +285,17 @@ def likert(spec: Mapping[str, Any], where: str, registered: bool = True) -> Ques
     except ValidationError as e:
         raise ValueError(_at(where, problem(LikertFile, e))) from None
     if registered and f.name in plugins.registry("questionnaires"):
-        raise ValueError(f"{_at(where, 'name')}: {f.name!r} is a registered questionnaire (haven plugins); name yours otherwise")
+        raise ValueError(
+            f"{_at(where, 'name')}: {f.name!r} is a registered questionnaire (haven plugins); name yours otherwise"
+        )
     low, high = f.anchors
     items = tuple(Item(i.id, i.text, low, high, i.reverse) for i in f.items)
     ids = [i.id for i in items]
     if len(set(ids)) != len(ids):
         raise ValueError(f"{_at(where, 'items')}: item ids must differ")
-    return Questionnaire(f.name, f.title or f.name, f.instructions, 1, f.points, 1, items, ((f.name, tuple(ids)),), shuffle=f.shuffle)
+    return Questionnaire(
+        f.name, f.title or f.name, f.instructions, 1, f.points, 1, items, ((f.name, tuple(ids)),), shuffle=f.shuffle
+    )
 
 
 def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
@@ -257,7 +308,10 @@ def resolve(specs: Sequence[Any], where: str) -> tuple[Questionnaire, ...]:
             if spec in plugins.registry("questionnaires").left_out:
                 raise ValueError(f"{at}: {plugins.registry('questionnaires').unknown(spec)}")
             if spec not in known:
-                raise ValueError(f"{at}: unknown questionnaire {spec[:50]!r} (registered: {', '.join(known)}, or a mapping of Likert items)")
+                raise ValueError(
+                    f"{at}: unknown questionnaire {spec[:50]!r} (registered: "
+                    f"{', '.join(known)}, or a mapping of Likert items)"
+                )
             out.append(known[spec])
         elif isinstance(spec, dict):
             out.append(from_mapping(spec, at))
@@ -316,7 +370,10 @@ def _answer(q: Questionnaire, item: Item, v: Any) -> int | str:
     if item.kind == TEXT:
         v = "" if v is None else v
         if not isinstance(v, str) or len(v) > MAX_ANSWER_TEXT or "\n" in v:
-            raise ValueError(f"{q.name}.{item.id}: must be one line of text (at most {MAX_ANSWER_TEXT} characters), got {repr(v)[:30]}")
+            raise ValueError(
+                f"{q.name}.{item.id}: must be one line of text "
+                f"(at most {MAX_ANSWER_TEXT} characters), got {repr(v)[:30]}"
+            )
         return v.strip()
     low, high, step = (1, len(item.options), 1) if item.kind == CHOICE else (q.minimum, q.maximum, q.step)
     if isinstance(v, bool) or not isinstance(v, int) or not low <= v <= high or (v - low) % step:
@@ -342,7 +399,11 @@ def score(q: Questionnaire, answers: Mapping[str, Any]) -> dict[str, float]:
     """One score per scale, the mean (or with `scoring: sum` the sum) of its items, reverse-scored
     items turned round; named `<questionnaire>_<scale>` (a custom questionnaire's single scale is
     named as the questionnaire)."""
-    value = {i.id: (q.minimum + q.maximum - answers[i.id]) if i.reverse else answers[i.id] for i in q.items if i.kind == SCALE}
+    value = {
+        i.id: (q.minimum + q.maximum - answers[i.id]) if i.reverse else answers[i.id]
+        for i in q.items
+        if i.kind == SCALE
+    }
     out: dict[str, float] = {}
     for scale, ids in q.scales:
         key = q.name if scale == q.name else f"{q.name}_{scale}"
@@ -352,7 +413,8 @@ def score(q: Questionnaire, answers: Mapping[str, Any]) -> dict[str, float]:
 
 
 def codebook_rows(q: Questionnaire) -> list[tuple[str, str, str, str]]:
-    """The scores `score` gives, as codebook rows (name, unit with the range, definition, source), for the report's codebook."""
+    """The scores `score` gives, as codebook rows (name, unit with the range, definition, source), for the report's
+    codebook."""
     rows = []
     for scale, ids in q.scales:
         name = q.name if scale == q.name else f"{q.name}_{scale}"
@@ -365,7 +427,9 @@ def codebook_rows(q: Questionnaire) -> list[tuple[str, str, str, str]]:
     return rows
 
 
-def answers_record(q: Questionnaire, answers: Any, answered_at: str, order: Sequence[str] | None = None) -> dict[str, Any]:
+def answers_record(
+    q: Questionnaire, answers: Any, answered_at: str, order: Sequence[str] | None = None
+) -> dict[str, Any]:
     """What `ANSWERS_FILE` holds for one person's questionnaire: checked answers, scores, when, and
     the order the items were shown in (scores do not depend on it)."""
     checked = check_answers(q, answers)

@@ -53,7 +53,12 @@ class GemRules:
     def update(self, now: float, robot: Pose2D, humans: Mapping[str, Pose2D]) -> list[Event]:
         events: list[Event] = []
         target = self.gems.get(self.robot_target or "")
-        if target is not None and target.owner == "robot" and target.id not in self.collected and _near(robot, target.position, target.radius):
+        if (
+            target is not None
+            and target.owner == "robot"
+            and target.id not in self.collected
+            and _near(robot, target.position, target.radius)
+        ):
             self.collected[target.id] = "robot"
             events.append(_rule(EventKind.GEM_COLLECTED, now, gem=target.id, by="robot"))
             self.robot_target = None
@@ -127,7 +132,9 @@ class ObstructionRules:
             for hid, pose in humans.items():
                 if _near(pose, centre, self.reach_m):
                     self.cleared.add(o.id)
-                    events.append(_rule(EventKind.OBSTRUCTION_CLEARED, now, id=o.id, by=hid, room=o.removed_when_human_reaches))
+                    events.append(
+                        _rule(EventKind.OBSTRUCTION_CLEARED, now, id=o.id, by=hid, room=o.removed_when_human_reaches)
+                    )
                     break
         return events
 
@@ -142,7 +149,8 @@ class EndReason(StrEnum):
     INTERRUPTED = "interrupted"  # stopped before a `trial_end` (Ctrl-C, a node died)
     STOPPED = "stopped"  # the researcher ended the trial early (the console's stop)
     ABORTED = "aborted"  # the researcher called the trial off (the console's abort): not for analysis
-    PLUGIN_FAILED = "plugin_failed"  # a plugin's code raised or overran its deadline (a `plugin_failed` event says which): not valid
+    # a plugin's code raised or overran its deadline (a `plugin_failed` event says which): not valid
+    PLUGIN_FAILED = "plugin_failed"
 
 
 class TrialState(StrEnum):
@@ -171,7 +179,9 @@ class TrialCommand(StrEnum):
             raise ValueError(f"unknown trial command {text!r} (expected {', '.join(TrialCommand)})") from None
         by = by.strip() or "researcher"
         if not _BY.match(by):
-            raise ValueError(f"trial command {text[:80]!r}: who asked must be letters, digits, '_', ':' or '-' (up to 64)")
+            raise ValueError(
+                f"trial command {text[:80]!r}: who asked must be letters, digits, '_', ':' or '-' (up to 64)"
+            )
         return command, by
 
 

@@ -12,7 +12,8 @@ robot:
   model: turtlebot2            # a robot (haven robots) or a robot file beside this one (a run's --robot wins)
   route: [B, C, D, A]          # hallway: room centres in order
   order: nearest               # retrieval: nearest | random (seeded) gem order
-  battery: {mode: off, capacity_m: 100.0, charge_until: 1.0, safety_factor: 1.2}   # capacity_m: the pack (default: the robot's own)
+  battery: {mode: off, capacity_m: 100.0, charge_until: 1.0, safety_factor: 1.2}   # capacity_m: the pack
+                                                                                   # (default: the robot's own)
   start: [2.0, 2.0, 0.0]       # where it starts (default: the world's robot start)
 humans:
   - {id: h1, model: walker, route: [B, A, D, C], speed_mps: 1.0}   # walker | blocker | yielder | teleop
@@ -73,7 +74,8 @@ class BatteryPlan:
     charge_until: float = 1.0  # fraction of full at which charging stops
     safety_factor: float = 1.2  # continuous mode: go home when range <= this x distance home
     drain_factor: float = 1.0  # charge used per metre, in metres: 1 + what the time at cruise drains (a drone hovers)
-    drains_waiting: bool = False  # the robot drains while it waits (a drone hovers): return-to-home failsafe in every mode
+    # the robot drains while it waits (a drone hovers): return-to-home failsafe in every mode
+    drains_waiting: bool = False
 
 
 @dataclass(frozen=True)
@@ -118,12 +120,15 @@ class Scenario:
         if hit is not None:
             what = f"{hit[0].kind} {hit[0].id}".strip()
             raise ScenarioError(
-                f"{self.source or self.name}: robot {robot.name!r} (radius {robot.radius_m:.2f} m) does not fit at world "
-                f"'{self.world.name}''s robot start ({start.x:g}, {start.y:g}): its body overlaps a {what}"
+                f"{self.source or self.name}: robot {robot.name!r} (radius {robot.radius_m:.2f} m) does not fit "
+                f"at world '{self.world.name}''s robot start ({start.x:g}, {start.y:g}): its body overlaps a {what}"
             )
         pack = self.pack_m if self.pack_m is not None else robot.battery.capacity_m
-        drain = 1.0 + robot.battery.idle_drain_per_s * pack / robot.motion.cruise_speed_mps  # (1 for a robot that drains only as it moves)
-        battery = replace(self.battery, capacity_m=pack, drain_factor=drain, drains_waiting=robot.battery.idle_drain_per_s > 0)
+        # (1 for a robot that drains only as it moves)
+        drain = 1.0 + robot.battery.idle_drain_per_s * pack / robot.motion.cruise_speed_mps
+        battery = replace(
+            self.battery, capacity_m=pack, drain_factor=drain, drains_waiting=robot.battery.idle_drain_per_s > 0
+        )
         return replace(self, robot=robot, robot_model=model or robot.name, battery=battery)
 
 
@@ -147,7 +152,9 @@ def resolve_world(spec: str, base: Path | None = None) -> Path:
         shipped = world_names()
         close = get_close_matches(spec, shipped, n=1)
         hint = f"did you mean {close[0]!r}? " if close else ""
-        raise WorldError(f"{spec}: no such world file and no shipped world of that name ({hint}shipped: {', '.join(shipped)})")
+        raise WorldError(
+            f"{spec}: no such world file and no shipped world of that name ({hint}shipped: {', '.join(shipped)})"
+        )
     return p
 
 
@@ -184,14 +191,17 @@ def parse_scenario(data: Any, source: str) -> Scenario:
 
 
 class BatteryFile(FileModel):
-    mode: Annotated[Literal["off", "on_arrival", "continuous"], checked(lambda v: "off" if v is False else v)] = "off"  # (YAML reads `off` as false)
-    capacity_m: Positive() | None = None  # type: ignore[valid-type]  # the pack in metres of travel (default: the robot's own)
+    # (YAML reads `off` as false)
+    mode: Annotated[Literal["off", "on_arrival", "continuous"], checked(lambda v: "off" if v is False else v)] = "off"
+    # the pack in metres of travel (default: the robot's own)
+    capacity_m: Positive() | None = None  # type: ignore[valid-type]
     charge_until: Positive() = 1.0  # type: ignore[valid-type]
     safety_factor: Positive() = 1.2  # type: ignore[valid-type]
 
 
 class RobotFile(FileModel):
-    model: Line(4096) | None = None  # type: ignore[valid-type]  # a robot (haven robots) or a robot file beside the scenario
+    # a robot (haven robots) or a robot file beside the scenario
+    model: Line(4096) | None = None  # type: ignore[valid-type]
     route: Any = None  # room names of the world
     order: Any = "nearest"  # a mission behaviour
     battery: BatteryFile | None = None
@@ -237,7 +247,9 @@ class _ScenarioParser:
         """The name of a registered plugin of `kind`."""
         reg = plugins.registry(kind)
         if not isinstance(value, str):
-            raise self.fail(key, f"must be the name of a {contain.singular(kind)} ({', '.join(reg.names())}), got {short(value)}")
+            raise self.fail(
+                key, f"must be the name of a {contain.singular(kind)} ({', '.join(reg.names())}), got {short(value)}"
+            )
         if value not in reg:
             raise self.fail(key, reg.unknown(value))
         return value
@@ -256,7 +268,9 @@ class _ScenarioParser:
             raise self.fail(key, f"must be a list of {what} names, got {short(value)}")
         for i, name in enumerate(value):
             if not isinstance(name, str) or name not in known:
-                raise self.fail(f"{key}[{i}]", f"names no {what} of the world (known: {_listing(known)}), got {short(name)}")
+                raise self.fail(
+                    f"{key}[{i}]", f"names no {what} of the world (known: {_listing(known)}), got {short(name)}"
+                )
         return tuple(value)
 
     def scenario(self, f: ScenarioFile) -> Scenario:
@@ -292,7 +306,9 @@ class _ScenarioParser:
             pack_m=battery.capacity_m,
         )
         scenario = scenario.for_robot(*self.robot(robot.model))
-        why = unfit(list(scenario.condition), scenario.robot) if scenario.condition not in (("all",), ("none",)) else None
+        why = (
+            unfit(list(scenario.condition), scenario.robot) if scenario.condition not in (("all",), ("none",)) else None
+        )
         if why is not None:
             raise self.fail("condition", why)
         return scenario
@@ -313,8 +329,14 @@ class _ScenarioParser:
         return moved
 
     def pose(self, value: Any, key: str) -> Pose2D:
-        if not isinstance(value, list) or len(value) not in (2, 3) or any(finite(v) is None or abs(v) > MAX_COORDINATE_M for v in value):
-            raise self.fail(key, f"must be a pose [x, y, yaw] (metres within ±{MAX_COORDINATE_M:g}, radians), got {short(value)}")
+        if (
+            not isinstance(value, list)
+            or len(value) not in (2, 3)
+            or any(finite(v) is None or abs(v) > MAX_COORDINATE_M for v in value)
+        ):
+            raise self.fail(
+                key, f"must be a pose [x, y, yaw] (metres within ±{MAX_COORDINATE_M:g}, radians), got {short(value)}"
+            )
         return Pose2D(float(value[0]), float(value[1]), float(value[2]) if len(value) == 3 else 0.0)
 
     def robot(self, model: str | None) -> tuple[RobotDescription, str]:
@@ -358,17 +380,25 @@ class _ScenarioParser:
         for i, m in enumerate(value or ()):
             key = f"humans[{i}]"
             if not isinstance(m.id, str) or m.id not in known:
-                raise self.fail(f"{key}.id", f"names no human of world '{world.name}' (humans: {_listing(known)}), got {short(m.id)}")
+                raise self.fail(
+                    f"{key}.id",
+                    f"names no human of world '{world.name}' (humans: {_listing(known)}), got {short(m.id)}",
+                )
             if m.id in {t.id for t in out}:
                 raise self.fail(f"{key}.id", f"duplicate id {short(m.id)}")
             if m.speed_mps > MAX_WALKING_SPEED_MPS:
-                raise self.fail(f"{key}.speed_mps", f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {m.speed_mps:g}")
+                raise self.fail(
+                    f"{key}.speed_mps",
+                    f"must be at most {MAX_WALKING_SPEED_MPS:g} m/s (a brisk walk), got {m.speed_mps:g}",
+                )
             route = self.names(m.route, f"{key}.route", rooms, "room")
             models = plugins.registry("participants")
             if isinstance(m.model, str) and m.model in models.left_out:
                 raise self.fail(f"{key}.model", models.unknown(m.model))
             if m.model not in (*models.names(), TELEOP):
-                raise self.fail(f"{key}.model", f"must be one of {', '.join((*models.names(), TELEOP))}, got {short(m.model)}")
+                raise self.fail(
+                    f"{key}.model", f"must be one of {', '.join((*models.names(), TELEOP))}, got {short(m.model)}"
+                )
             out.append(HumanTask(m.id, m.model, route, m.speed_mps, self.person(m.params, f"{key}.params")))
         return tuple(out)
 

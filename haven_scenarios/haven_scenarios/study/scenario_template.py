@@ -39,7 +39,9 @@ def scenario_template(name: str, world: str, world_data: Mapping[str, Any], task
         route = [*rooms[1:], rooms[0]]
         scenario["kind"] = "hallway"
         scenario["robot"] = {"route": route}
-        scenario["humans"] = [{"id": h, "model": "walker", "route": route[::-1], "speed_mps": WALKING_SPEED_MPS} for h in people]
+        scenario["humans"] = [
+            {"id": h, "model": "walker", "route": route[::-1], "speed_mps": WALKING_SPEED_MPS} for h in people
+        ]
         return scenario
     if not [g for g in world_data.get("gems") or () if g.get("owner") == "robot"]:
         raise TemplateError("task collect_gems: needs at least one gem for the robot in the world")

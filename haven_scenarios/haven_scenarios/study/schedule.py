@@ -77,7 +77,9 @@ def condition_orders(study: Study) -> list[list[int]]:
 
 def robot_orders(study: Study) -> list[list[int]]:
     """The orders of the robots each participant meets (`within`); one robot each otherwise."""
-    return orders(study.counterbalancing, len(study.robots)) if study.robot_design == "within" and study.robots else [[0]]
+    return (
+        orders(study.counterbalancing, len(study.robots)) if study.robot_design == "within" and study.robots else [[0]]
+    )
 
 
 def sequence_count(study: Study) -> int:
@@ -110,7 +112,10 @@ def _design(kind: str, rows: int, n: int, what: str) -> str:
     if n == 1:
         return f"one {what[:-1]}"
     text = {
-        "williams": f"Williams design (Williams 1949): {rows} {what[:-1]} orders, balanced for position and first-order carry-over",
+        "williams": (
+            f"Williams design (Williams 1949): {rows} {what[:-1]} orders, "
+            "balanced for position and first-order carry-over"
+        ),
         "latin": f"cyclic Latin square: {rows} {what[:-1]} orders, balanced for position (not for carry-over)",
         "full": f"all {rows} permutations of the {what}",
         "none": f"not counterbalanced: every participant takes the {what} in the file's order",
@@ -128,17 +133,28 @@ def design_note(study: Study) -> str:
         f"Conditions in each block: {_design(study.counterbalancing, c, len(study.conditions), 'conditions')}"
     )
     if b > 1 and c > 1:
-        text += f". Combined: {n} sequences (the least common multiple of {b} and {c}): every {n} participants use each block order "
+        text += (
+            f". Combined: {n} sequences (the least common multiple of {b} "
+            f"and {c}): every {n} participants use each block order "
+        )
         text += "and each condition order equally often"
         if n < b * c:
-            text += f" (the two are paired, not crossed: sequence s takes block order s mod {b} and condition order s mod {c}, "
+            text += (
+                " (the two are paired, not crossed: sequence s takes "
+                f"block order s mod {b} and condition order s mod {c}, "
+            )
             text += f"so only {n} of the {b * c} pairs occur)"
     text += _robots_note(study, n, c)
     full = n * (len(study.robots) if study.robots and study.robot_design == "between" else 1)
     if full > 1:
-        text += f"; {p} participant(s) " + ("complete it" if p % full == 0 else f"do not complete it: use a multiple of {full}")
+        text += f"; {p} participant(s) " + (
+            "complete it" if p % full == 0 else f"do not complete it: use a multiple of {full}"
+        )
     if study.assignment == "random":
-        text += f". Assignment: random (seed {study.assignment_seed}), each set of {n} participants takes the {n} sequences in a shuffled order"
+        text += (
+            f". Assignment: random (seed {study.assignment_seed}), "
+            f"each set of {n} participants takes the {n} sequences in a shuffled order"
+        )
     else:
         text += f". Assignment: by id, participant k in the list takes sequence k mod {n}"
     return text + "."
@@ -150,7 +166,10 @@ def _robots_note(study: Study, n: int, c: int) -> str:
     names = ", ".join(r.name for r in study.robots)
     if study.robot_design == "within":
         rows = len(robot_orders(study))
-        text = f". Robots (within): every participant meets {names}, one block of trials each, in one of {rows} robot orders"
+        text = (
+            f". Robots (within): every participant meets {names}, "
+            f"one block of trials each, in one of {rows} robot orders"
+        )
         if rows > 1 and c > 1 and n < rows * c:
             text += f" (paired with the condition orders, not crossed: sequence s takes robot order s mod {rows}, "
             text += f"so only {n} of the {rows * c} pairs occur)"
@@ -162,7 +181,10 @@ def sequence_orders(study: Study) -> list[tuple[list[str], list[str]]]:
     """Each sequence's scenario order and condition order, by name (sequence s is item s - 1)."""
     blocks, conditions = block_orders(study), condition_orders(study)
     return [
-        ([study.scenarios[i].name for i in blocks[s % len(blocks)]], [study.conditions[i].name for i in conditions[s % len(conditions)]])
+        (
+            [study.scenarios[i].name for i in blocks[s % len(blocks)]],
+            [study.conditions[i].name for i in conditions[s % len(conditions)]],
+        )
         for s in range(sequence_count(study))
     ]
 
@@ -174,8 +196,8 @@ def practice_note(study: Study) -> str | None:
     if not shown or not plain:
         return None
     return (
-        f"the practice shows {', '.join(shown)} before every participant's {plain[0]} trials, a carry-over no order undoes; "
-        "`practice: {scenario: practice, cues: [none]}` practises without cues"
+        f"the practice shows {', '.join(shown)} before every participant's {plain[0]} trials, "
+        "a carry-over no order undoes; `practice: {scenario: practice, cues: [none]}` practises without cues"
     )
 
 
@@ -232,8 +254,9 @@ def _trials(study: Study, k: int, sequence: int) -> list[PlannedTrial]:
     for i, p in enumerate(study.practice, 1):
         c = p.condition
         tid = f"practice{i}-{p.scenario.name}-{c.name}"
-        out.append(PlannedTrial(participant, i, tid, p.scenario.name, p.scenario.spec, c.name, c.cues, _seed(study, k, i), True, 0,
-                                sequence + 1, 0, i, out[-1].condition if out else "", spec, name))  # fmt: skip
+        out.append(PlannedTrial(participant, i, tid, p.scenario.name, p.scenario.spec, c.name, c.cues,
+                                _seed(study, k, i), True, 0, sequence + 1, 0, i, out[-1].condition if out else "",
+                                spec, name))  # fmt: skip
     for robot in robots:
         _blocks(study, k, sequence, robot, out)
     return out
@@ -252,8 +275,9 @@ def _blocks(study: Study, k: int, sequence: int, robot: StudyRobot | None, out: 
             for c in order:
                 position, suffix = len(out) + 1, f"-r{rep}" if study.repetitions > 1 else ""
                 in_block = (rep - 1) * len(order) + order.index(c) + 1
-                out.append(PlannedTrial(study.participants[k], position, f"{s.name}-{c.name}{suffix}{tag}", s.name, s.spec, c.name, c.cues,
-                                        _seed(study, k, position), False, rep, sequence + 1, b, in_block, previous, spec, name))  # fmt: skip
+                out.append(PlannedTrial(study.participants[k], position, f"{s.name}-{c.name}{suffix}{tag}",
+                                        s.name, s.spec, c.name, c.cues, _seed(study, k, position), False, rep,
+                                        sequence + 1, b, in_block, previous, spec, name))  # fmt: skip
                 previous = c.name
 
 

@@ -85,7 +85,9 @@ def _unit(x: float, y: float) -> tuple[float, float, float]:
 class SocialForce:
     """One person's velocity, stepped at the participant's tick."""
 
-    def __init__(self, free_run: RayFn, params: SocialForceParams | None = None, radius_m: float = HUMAN_BODY.radius_m) -> None:
+    def __init__(
+        self, free_run: RayFn, params: SocialForceParams | None = None, radius_m: float = HUMAN_BODY.radius_m
+    ) -> None:
         self.free_run = free_run
         self.p = params or SocialForceParams()
         self.radius = radius_m
@@ -157,7 +159,9 @@ class SocialForce:
                 fx, fy = fx - mag * c, fy - mag * s
         return fx, fy
 
-    def _hard_rules(self, me: Point, v: Point, others: Sequence[Body], rays: Sequence[tuple[float, float, float]]) -> Point:
+    def _hard_rules(
+        self, me: Point, v: Point, others: Sequence[Body], rays: Sequence[tuple[float, float, float]]
+    ) -> Point:
         vx, vy = v
         for b in others:
             if not b.robot:

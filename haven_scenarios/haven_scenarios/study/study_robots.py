@@ -42,7 +42,9 @@ def parse_robots(values: list[Any], source: str, error: type[ValueError] = Value
     out: list[StudyRobot] = []
     for i, value in enumerate(values):
         if not isinstance(value, str) or not value:
-            raise error(f"{where}: robots[{i}]: must be a robot's name (haven robots) or a robot file, got {short(value)}")
+            raise error(
+                f"{where}: robots[{i}]: must be a robot's name (haven robots) or a robot file, got {short(value)}"
+            )
         spec = value
         if is_file_spec(value) and not Path(value).is_absolute():
             spec = str((Path(source).parent / value).resolve())

@@ -45,7 +45,20 @@ class Parser(argparse.ArgumentParser):
 
 
 def build_parser() -> argparse.ArgumentParser:
-    from haven_scenarios.tools.commands import batch_report, cert, clients, edit, files, recordings, robots, serve, study, suite, trial, world
+    from haven_scenarios.tools.commands import (
+        batch_report,
+        cert,
+        clients,
+        edit,
+        files,
+        recordings,
+        robots,
+        serve,
+        study,
+        suite,
+        trial,
+        world,
+    )
 
     parser = Parser(prog="haven", description="HAVEN for ROS 2: AR-cue HRI studies with a simulated TurtleBot2.")
     sub = parser.add_subparsers(dest="command", required=True)

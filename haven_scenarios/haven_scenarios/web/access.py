@@ -60,13 +60,16 @@ class Role:
 READY = "/haven/ready"  # a participant's Start (String: their id)
 ANSWERS = "/haven/questionnaire"  # a participant's answers to one questionnaire (String: JSON, record/answers.py)
 SKIP_QUESTIONNAIRES = "/haven/skip_questionnaires"  # the console ends the wait for answers (String, any)
-PAGE_REPORT = "/haven/page_report"  # a participant page's frame rate, latency, input age (String: JSON, study/presence.py)
+# a participant page's frame rate, latency, input age (String: JSON, study/presence.py)
+PAGE_REPORT = "/haven/page_report"
 NOT_ROS = (READY, ANSWERS, SKIP_QUESTIONNAIRES, PAGE_REPORT)  # what pages send that the web node handles itself
 PARTICIPANTS = "/haven/participants"  # to the pages: who is connected, what their pages report (String: JSON)
 
 
 def participant_role(human: str) -> Role:
-    return Role(human, {absolute(topics.human_cmd_vel(human)): TWIST, READY: STRING, ANSWERS: STRING, PAGE_REPORT: STRING})
+    return Role(
+        human, {absolute(topics.human_cmd_vel(human)): TWIST, READY: STRING, ANSWERS: STRING, PAGE_REPORT: STRING}
+    )
 
 
 CONSOLE_ROLE = Role(
@@ -85,7 +88,9 @@ def roles(humans: Sequence[str]) -> dict[str, Role]:
     """The console and one participant page per teleoperated human; refuses ids a URL cannot carry."""
     bad = [h for h in humans if not _ID.match(h) or h == CONSOLE]
     if bad:
-        raise ValueError(f"human id {bad[0]!r} cannot name a participant page (letters, digits and _ only, not 'console')")
+        raise ValueError(
+            f"human id {bad[0]!r} cannot name a participant page (letters, digits and _ only, not 'console')"
+        )
     return {CONSOLE: CONSOLE_ROLE, **{h: participant_role(h) for h in humans}}
 
 
@@ -116,9 +121,8 @@ class Request:
 
 
 ROBOT_MODEL_FILE = "model"
-ROBOT_MODEL_PATH = (
-    f"/robot/{ROBOT_MODEL_FILE}"  # + .glb/.gltf: the trial robot's glTF model (its look.model), the one file served from outside static/
-)
+# + .glb/.gltf: the trial robot's glTF model (its look.model), the one file served from outside static/
+ROBOT_MODEL_PATH = f"/robot/{ROBOT_MODEL_FILE}"
 
 
 def route(path: str) -> Request:
@@ -133,7 +137,11 @@ def route(path: str) -> Request:
         return Request("socket", CONSOLE, "")
     if len(parts) == 3 and parts[:2] == ["ws", "participant"]:
         return Request("socket", parts[2], "")
-    if len(parts) == 2 and parts[0] == ROBOT_MODEL_PATH.split("/")[1] and parts[1] in (f"{ROBOT_MODEL_FILE}.glb", f"{ROBOT_MODEL_FILE}.gltf"):
+    if (
+        len(parts) == 2
+        and parts[0] == ROBOT_MODEL_PATH.split("/")[1]
+        and parts[1] in (f"{ROBOT_MODEL_FILE}.glb", f"{ROBOT_MODEL_FILE}.gltf")
+    ):
         return Request("robot_model", "", parts[1].rsplit(".", 1)[1])
     if len(parts) == 2 and parts[0] == "static" and re.match(r"^[\w.-]+$", parts[1]) and not parts[1].startswith("."):
         return Request("static", "", parts[1])
@@ -154,7 +162,11 @@ def token_of(path: str, cookie_header: str | None, role: str) -> str:
 
 def cookie_tokens(cookie_header: str | None) -> list[str]:
     """Every role token in a request's cookies (the pages' code needs any one of them)."""
-    return [v for n, _, v in (p.strip().partition("=") for p in (cookie_header or "").split(";")) if n.startswith(TOKEN_COOKIE)]
+    return [
+        v
+        for n, _, v in (p.strip().partition("=") for p in (cookie_header or "").split(";"))
+        if n.startswith(TOKEN_COOKIE)
+    ]
 
 
 def token_ok(given: str, expected: str) -> bool:

@@ -105,7 +105,11 @@ class BackendGuard:
                         cut += 1
             self.cut += cut
         if cut:
-            print(f"web: {cut} connection(s) to the pages' servers did not come through the front door: closed", file=sys.stderr, flush=True)
+            print(
+                f"web: {cut} connection(s) to the pages' servers did not come through the front door: closed",
+                file=sys.stderr,
+                flush=True,
+            )
         return cut
 
     def _strangers(self) -> set[str]:

@@ -36,7 +36,16 @@ import yaml
 from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.study.scenario_template import TASKS, TemplateError, scenario_template
 from haven_scenarios.web.access import TOKEN_COOKIE, TOKEN_PARAM, new_token, role_token, token_of, token_ok
-from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json, token_cookie
+from haven_scenarios.web.front_door import (
+    STATIC,
+    _Server,
+    address_for_others,
+    quiet_handler,
+    read_body,
+    reply,
+    reply_json,
+    token_cookie,
+)
 from haven_sim.common import atomic
 from haven_sim.common.yaml_file import MAX_FILE_BYTES, YamlFileError, file_label, one_line
 from haven_sim.sim.map_image import open_image, read_image, wall_boxes
@@ -55,7 +64,9 @@ _FILE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_-]{0,63}$")
 class EditorServer:
     """Serves the editor for one world tree until stopped; saves into `out`."""
 
-    def __init__(self, host: str, port: int, world: Mapping[str, Any], out: Path, tls: ssl.SSLContext | None = None) -> None:
+    def __init__(
+        self, host: str, port: int, world: Mapping[str, Any], out: Path, tls: ssl.SSLContext | None = None
+    ) -> None:
         self.world, self.out = dict(world), out
         self.token = role_token(new_token(), ROLE)
         self._lock = threading.Lock()
@@ -128,7 +139,10 @@ class EditorServer:
     def target(self, world: Any) -> Path:
         name = world.get("name") if isinstance(world, dict) else None
         if not isinstance(name, str) or not _FILE_NAME.match(name):
-            raise ValueError("name: the world's name names its file: letters, digits, '_' and '-' (up to 64), starting with a letter or digit")
+            raise ValueError(
+                "name: the world's name names its file: letters, digits, "
+                "'_' and '-' (up to 64), starting with a letter or digit"
+            )
         return self.out / f"{name}.yaml"
 
     def check(self, world: Any) -> tuple[int, dict[str, Any]]:
@@ -161,7 +175,11 @@ class EditorServer:
                 return 400, {"ok": False, "error": problem}
         existing = [str(p) for p in files if p.exists()]
         if existing and message.get("overwrite") is not True:
-            return 409, {"ok": False, "exists": existing, "error": f"{', '.join(existing)} exist(s): save again to replace"}
+            return 409, {
+                "ok": False,
+                "exists": existing,
+                "error": f"{', '.join(existing)} exist(s): save again to replace",
+            }
         self.out.mkdir(parents=True, exist_ok=True)
         for path, text in files.items():
             atomic.write_text(path, text)
@@ -233,7 +251,12 @@ def image_walls(image: bytes, query: Mapping[str, list[str]]) -> dict[str, Any]:
         f.write(image)
         f.flush()
         try:
-            grid = read_image(f.name, number("resolution", "0.05"), (number("x", "0"), number("y", "0")), negate=query.get("negate", ["0"])[0] == "1")
+            grid = read_image(
+                f.name,
+                number("resolution", "0.05"),
+                (number("x", "0"), number("y", "0")),
+                negate=query.get("negate", ["0"])[0] == "1",
+            )
             boxes = wall_boxes(grid)
         except WorldError as e:
             raise ValueError(str(e).replace(f.name, "the image")) from None

@@ -107,9 +107,15 @@ class _Listener(ServerListener):
         self.advertised[client.id] += 1
         if self.advertised[client.id] > MAX_CHANNELS_PER_CLIENT:
             if self.advertised[client.id] == MAX_CHANNELS_PER_CLIENT + 1 and self.sink is not None:
-                self.sink.refused_client(f"client {client.id} advertised more than {MAX_CHANNELS_PER_CLIENT} channels; ignoring the rest")
+                self.sink.refused_client(
+                    f"client {client.id} advertised more than {MAX_CHANNELS_PER_CLIENT} channels; ignoring the rest"
+                )
             return
-        refused = "this server takes no messages" if self.sink is None else self.sink.advertised(channel.topic, channel.schema_name)
+        refused = (
+            "this server takes no messages"
+            if self.sink is None
+            else self.sink.advertised(channel.topic, channel.schema_name)
+        )
         if refused is None:
             self.accepted[(client.id, channel.id)] = (channel.topic, channel.schema_name)
         elif self.server is not None and (client.id, -1) not in self.accepted:
@@ -131,10 +137,14 @@ class _Listener(ServerListener):
         if accepted is not None and self.sink is not None:
             self.sink.message(accepted[0], accepted[1], bytes(data))
 
-    def on_get_parameters(self, client: Client, param_names: list[str], request_id: str | None = None) -> list[Parameter]:
+    def on_get_parameters(
+        self, client: Client, param_names: list[str], request_id: str | None = None
+    ) -> list[Parameter]:
         return self.sink.get_parameters(param_names) if self.sink is not None and not self._stranger(client) else []
 
-    def on_set_parameters(self, client: Client, parameters: list[Parameter], request_id: str | None = None) -> list[Parameter]:
+    def on_set_parameters(
+        self, client: Client, parameters: list[Parameter], request_id: str | None = None
+    ) -> list[Parameter]:
         return self.sink.set_parameters(parameters) if self.sink is not None and not self._stranger(client) else []
 
 
@@ -166,7 +176,12 @@ class FoxgloveRelay:
             caps.append(Capability.Time)
         listener = _Listener(self, sink, door)
         server = foxglove.start_server(
-            name=name, host=host, port=port, capabilities=list(caps), supported_encodings=["cdr"], server_listener=listener
+            name=name,
+            host=host,
+            port=port,
+            capabilities=list(caps),
+            supported_encodings=["cdr"],
+            server_listener=listener,
         )
         listener.server = server
         self.servers.append(server)

@@ -27,7 +27,16 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from haven_scenarios.web.access import CONSOLE, TOKEN_COOKIE, cookie_tokens, door_key, role_token, route, token_of, token_ok
+from haven_scenarios.web.access import (
+    CONSOLE,
+    TOKEN_COOKIE,
+    cookie_tokens,
+    door_key,
+    role_token,
+    route,
+    token_of,
+    token_ok,
+)
 from haven_scenarios.web.door_hello import BackendGuard, hello_frames
 
 STATIC = resources.files("haven_scenarios.web") / "static"
@@ -80,7 +89,10 @@ def _pump(a: socket.socket, b: socket.socket) -> None:
 SWEEP_PERIOD_S = 1.0  # how often connections that skipped the door are looked for (and on their first request)
 MAX_ANSWER_HEAD = 16384  # a role server's answer to the upgrade: its headers within this
 TLS_HANDSHAKE = b"\x16"  # the first byte of every TLS connection (a handshake record, RFC 8446 5.1)
-PLAIN_HEADERS = b"Content-Security-Policy: default-src 'none'\r\nX-Content-Type-Options: nosniff\r\nReferrer-Policy: same-origin\r\n"
+PLAIN_HEADERS = (
+    b"Content-Security-Policy: default-src 'none'\r\n"
+    b"X-Content-Type-Options: nosniff\r\nReferrer-Policy: same-origin\r\n"
+)
 REQUEST_TIMEOUT_S = 10.0  # a request's headers must come within this (a client that sends them slowly is cut off)
 
 
@@ -93,7 +105,9 @@ class _Server(ThreadingHTTPServer):
     daemon_threads = True
     said_at = 0.0
 
-    def __init__(self, address: tuple[str, int], handler: type[BaseHTTPRequestHandler], tls: ssl.SSLContext | None = None) -> None:
+    def __init__(
+        self, address: tuple[str, int], handler: type[BaseHTTPRequestHandler], tls: ssl.SSLContext | None = None
+    ) -> None:
         self.tls = tls
         super().__init__(address, handler)
 
@@ -108,7 +122,9 @@ class _Server(ThreadingHTTPServer):
             request.settimeout(REQUEST_TIMEOUT_S)
             if request.recv(1, socket.MSG_PEEK)[:1] not in (TLS_HANDSHAKE, b""):
                 body = b"this address is served over HTTPS: open it with https://"
-                request.sendall(b"HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n" + PLAIN_HEADERS)
+                request.sendall(
+                    b"HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n" + PLAIN_HEADERS
+                )
                 request.sendall(b"Content-Length: %d\r\n\r\n%s" % (len(body), body))
                 return
             with self.tls.wrap_socket(request, server_side=True) as secure:  # (the handshake, under the timeout)
@@ -118,14 +134,20 @@ class _Server(ThreadingHTTPServer):
 
     def handle_error(self, request: Any, client_address: Any) -> None:
         e = sys.exc_info()[1]
-        if isinstance(e, (ConnectionError, TimeoutError, ssl.SSLError)):  # (a browser that does not trust the certificate yet)
+        # (a browser that does not trust the certificate yet)
+        if isinstance(e, (ConnectionError, TimeoutError, ssl.SSLError)):
             return
         if time.monotonic() - self.said_at >= 10.0:
             self.said_at = time.monotonic()
-            print(f"web: a request from {client_address[0]} failed: {type(e).__name__}: {str(e)[:120]}", file=sys.stderr, flush=True)
+            print(
+                f"web: a request from {client_address[0]} failed: {type(e).__name__}: {str(e)[:120]}",
+                file=sys.stderr,
+                flush=True,
+            )
 
 
-INLINE_SCRIPT = re.compile(rb"<script>(.*?)</script>", re.S)  # (a page's own code: `<script src>` and JSON data blocks are not it)
+# (a page's own code: `<script src>` and JSON data blocks are not it)
+INLINE_SCRIPT = re.compile(rb"<script>(.*?)</script>", re.S)
 _HOST = re.compile(r"^[A-Za-z0-9.:\[\]-]{1,300}$")
 
 
@@ -134,12 +156,15 @@ def content_policy(h: BaseHTTPRequestHandler, body: bytes) -> str:
     (a page's own inline code by its hash), its WebSocket on the same host (named too, for browsers
     before CSP 3's 'self' for ws:), images and glTF buffers also as data: and blob: URLs (three.js
     decodes a model's textures that way), no plugins, no <base>, never inside another site's frame."""
-    hashes = "".join(f" 'sha256-{base64.b64encode(hashlib.sha256(m).digest()).decode()}'" for m in INLINE_SCRIPT.findall(body))
+    hashes = "".join(
+        f" 'sha256-{base64.b64encode(hashlib.sha256(m).digest()).decode()}'" for m in INLINE_SCRIPT.findall(body)
+    )
     host = h.headers.get("Host") or ""
     sockets = f" ws://{host} wss://{host}" if _HOST.match(host) else ""
     return (
-        f"default-src 'self'; script-src 'self'{hashes}; style-src 'self' 'unsafe-inline'; img-src 'self' data: blob:; "
-        f"connect-src 'self'{sockets} data: blob:; object-src 'none'; base-uri 'none'; form-action 'self'; frame-ancestors 'none'"
+        f"default-src 'self'; script-src 'self'{hashes}; style-src 'self' 'unsafe-inline'; "
+        f"img-src 'self' data: blob:; connect-src 'self'{sockets} data: blob:; "
+        "object-src 'none'; base-uri 'none'; form-action 'self'; frame-ancestors 'none'"
     )
 
 
@@ -158,7 +183,9 @@ def send_common_headers(h: BaseHTTPRequestHandler, body: bytes, cookie: str = ""
         h.send_header("Set-Cookie", cookie)
 
 
-def reply(h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = "") -> None:
+def reply(
+    h: BaseHTTPRequestHandler, code: int, body: bytes, kind: str = "text/plain; charset=utf-8", cookie: str = ""
+) -> None:
     """One whole HTTP answer (send_common_headers)."""
     h.send_response(code)
     h.send_header("Content-Type", kind)
@@ -315,7 +342,9 @@ class FrontDoor:
         if req.kind == "robot_model":
             if self.robot_model is None or self.robot_model.suffix != f".{req.rest}" or not self.robot_model.is_file():
                 return reply(h, 404, b"no such file")
-            return reply(h, 200, self.robot_model.read_bytes(), "model/gltf-binary" if req.rest == "glb" else "model/gltf+json")
+            return reply(
+                h, 200, self.robot_model.read_bytes(), "model/gltf-binary" if req.rest == "glb" else "model/gltf+json"
+            )
         if req.kind == "static":
             asset = STATIC / req.rest
             if not asset.is_file() or req.rest.endswith(".html"):

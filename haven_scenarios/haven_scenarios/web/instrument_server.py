@@ -26,7 +26,16 @@ from haven_scenarios.record.answers import MAX_MESSAGE_BYTES
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, role_token, token_of, token_ok
-from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, reply, reply_json, token_cookie
+from haven_scenarios.web.front_door import (
+    STATIC,
+    _Server,
+    address_for_others,
+    quiet_handler,
+    read_body,
+    reply,
+    reply_json,
+    token_cookie,
+)
 
 PAGE, COOKIE = "instruments", "haven_instruments_"  # the page's path and its token cookie (+ participant)
 SERVED = ("instruments.js", "haven.css")
@@ -114,18 +123,28 @@ class InstrumentServer:
         if [p for p in urlsplit(h.path).path.split("/") if p] != [PAGE, self.participant, "answers"]:
             return reply(h, 404, b"no such page")
         if not self._cookie_ok(h):
-            return reply_json(h, 403, {"error": "not this participant's page: open the address `haven study run` printed"})
+            return reply_json(
+                h, 403, {"error": "not this participant's page: open the address `haven study run` printed"}
+            )
         try:
             msg = json.loads(read_body(h, MAX_MESSAGE_BYTES, "answers"))
-            if not isinstance(msg, dict) or set(msg) != {"questionnaire", "answers"} or msg["questionnaire"] not in self.qs:
+            if (
+                not isinstance(msg, dict)
+                or set(msg) != {"questionnaire", "answers"}
+                or msg["questionnaire"] not in self.qs
+            ):
                 raise ValueError(f"answers must name one of {', '.join(self.qs)}")
             name = msg["questionnaire"]
             with self._lock:
-                self.book.take(self.qs[name], msg["answers"], datetime.now(UTC).isoformat(timespec="seconds"), self.order[name])
+                self.book.take(
+                    self.qs[name], msg["answers"], datetime.now(UTC).isoformat(timespec="seconds"), self.order[name]
+                )
                 self._check_done()
                 answer = {"answered": [n for n in self.qs if n in self.book.data], "declined": self.book.declined()}
         except (ValueError, RecursionError) as e:
-            return reply_json(h, 400, {"error": str(e) if not isinstance(e, json.JSONDecodeError) else "answers: not JSON"})
+            return reply_json(
+                h, 400, {"error": str(e) if not isinstance(e, json.JSONDecodeError) else "answers: not JSON"}
+            )
         except OSError as e:  # (a full disk: the page can send them again)
             return reply_json(h, 500, {"error": f"cannot write {e.filename}: {e.strerror or e}"})
         reply_json(h, 200, answer)

@@ -58,8 +58,16 @@ class Refusal:
     text: str
 
 
-NOT_SIGNED = Refusal(403, "This link is not valid", "Please open the study from the link your panel gave you (this one is incomplete or changed).")
-NOT_LISTED = Refusal(403, "Not on this study's list", "Your participant id is not on this study's list: please check it, or contact the researcher.")
+NOT_SIGNED = Refusal(
+    403,
+    "This link is not valid",
+    "Please open the study from the link your panel gave you (this one is incomplete or changed).",
+)
+NOT_LISTED = Refusal(
+    403,
+    "Not on this study's list",
+    "Your participant id is not on this study's list: please check it, or contact the researcher.",
+)
 TOO_MANY = Refusal(
     429,
     "Too many new places from here",
@@ -80,12 +88,24 @@ class Gate:
 
     def rules(self) -> str:
         """The rules in a few words, for the researcher's terminal."""
-        limit = f"{self.places} new places per address in {self.window_s / 60:g} min" if self.places else "no limit per address"
-        return "; ".join([limit, *(["signed links only"] if self.secret else []), *([f"{len(self.ids)} listed ids only"] if self.ids else [])])
+        limit = (
+            f"{self.places} new places per address in {self.window_s / 60:g} min"
+            if self.places
+            else "no limit per address"
+        )
+        return "; ".join(
+            [
+                limit,
+                *(["signed links only"] if self.secret else []),
+                *([f"{len(self.ids)} listed ids only"] if self.ids else []),
+            ]
+        )
 
     def refusal(self, panel_id: str, sig: str) -> Refusal | None:
         """None if this id may join (a signed link checked, the allow-list), else why not."""
-        if self.secret is not None and not hmac.compare_digest(sig.strip().lower().encode(), link_signature(self.secret, panel_id).encode()):
+        if self.secret is not None and not hmac.compare_digest(
+            sig.strip().lower().encode(), link_signature(self.secret, panel_id).encode()
+        ):
             return NOT_SIGNED
         if self.ids is not None and panel_id not in self.ids:
             return NOT_LISTED
@@ -112,7 +132,10 @@ def place_cookie(h: BaseHTTPRequestHandler, participant: str, key: str) -> str:
     """The Set-Cookie value of a browser's place: not for scripts, sent on top-level visits from the
     panel's site too (Lax: the landing page says "welcome back"), over HTTPS never in clear."""
     secure = "; Secure" if getattr(h.server, "tls", None) is not None else ""
-    return f"{PLACE_COOKIE}={participant}.{key}; Path=/; Max-Age={PLACE_COOKIE_DAYS * 86400}; HttpOnly; SameSite=Lax{secure}"
+    return (
+        f"{PLACE_COOKIE}={participant}.{key}; Path=/; "
+        f"Max-Age={PLACE_COOKIE_DAYS * 86400}; HttpOnly; SameSite=Lax{secure}"
+    )
 
 
 def cookie_place(h: BaseHTTPRequestHandler) -> tuple[str, str]:

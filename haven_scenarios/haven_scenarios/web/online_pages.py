@@ -41,7 +41,11 @@ def landing(study: Study, panel_id: str, id_param: str, returning: bool = False,
     form = f'<form action="/join" method=post>{field}{signed}<button type=submit id=join>{button}</button></form>'
     if returning:
         return _page(f"Study {study.name}", f"<h1>Welcome back</h1><p>You have joined this study before.</p>{form}")
-    note = "<p class=small>You will be asked for your consent before anything is recorded.</p>" if study.consent_text else ""
+    note = (
+        "<p class=small>You will be asked for your consent before anything is recorded.</p>"
+        if study.consent_text
+        else ""
+    )
     return _page(f"Study {study.name}", f"<h1>Welcome</h1>{welcome}{consent}{form}{note}")
 
 

@@ -32,7 +32,8 @@ NEXT_LINE = re.compile(r"haven study: next: (.+)$")
 PAGE_GONE = ("haven: session in ", "haven study: next: ")  # the page printed before is over
 STOP_WAIT_S = 30.0  # a stopped runner ends its trial cleanly within this, else it is killed
 LOG = "online.log"  # in the participant's folder
-NEXT_URL_ENV = "HAVEN_NEXT_URL"  # the runner's next page (it holds the session key): in its environment, not its command line
+# the runner's next page (it holds the session key): in its environment, not its command line
+NEXT_URL_ENV = "HAVEN_NEXT_URL"
 
 
 def token(url: str) -> str:
@@ -76,7 +77,8 @@ class Runner:
                 if line.startswith(PAGE_GONE):
                     self.page = None
                 if m := PAGE_LINE.match(line):
-                    self.page = self.page or m.group(2)  # (the first human's page: theirs is h1's in a scenario for several)
+                    # (the first human's page: theirs is h1's in a scenario for several)
+                    self.page = self.page or m.group(2)
                 elif m := CONSOLE_LINE.match(line):
                     self.console = m.group(1)
                 elif m := NEXT_LINE.match(line):

@@ -66,7 +66,8 @@ class Seats:
         self.root, self.participants = root, tuple(participants)
         root.mkdir(parents=True, exist_ok=True)
         book = root / BOOK
-        if book.is_file() and not book.is_symlink() and book.stat().st_mode & 0o077:  # (a book an earlier version left readable)
+        # (a book an earlier version left readable)
+        if book.is_file() and not book.is_symlink() and book.stat().st_mode & 0o077:
             book.chmod(0o600)
 
     def _read(self) -> dict[str, Seat]:
@@ -115,6 +116,8 @@ def standing(study: Study, root: Path, participant: str, trials: Sequence[Planne
         return Standing.DECLINED
     mine = [t for t in trials if t.participant == participant]
     instruments = study.instruments()
-    if all(p.status == "done" for p in progress(root, mine)) and not book.pending([*instruments.first, *instruments.after]):
+    if all(p.status == "done" for p in progress(root, mine)) and not book.pending(
+        [*instruments.first, *instruments.after]
+    ):
         return Standing.DONE
     return Standing.STARTED if (root / participant).is_dir() else Standing.NEW

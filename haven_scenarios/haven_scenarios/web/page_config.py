@@ -24,12 +24,19 @@ from haven_viz.world_markers import WALL_HEIGHT_M
 VIEW_WALL_HEIGHT_M = 2.4  # walls are drawn this tall in first person (the markers' 0.5 m suits a top-down view)
 
 INSTRUCTIONS = {
-    "hallway": ("Walk to the rooms in the order shown at the top of the screen. A robot uses the same hallway; walk as you would around a person."),
+    "hallway": (
+        "Walk to the rooms in the order shown at the top of the screen. A robot "
+        "uses the same hallway; walk as you would around a person."
+    ),
     "retrieval": (
-        "Collect the red gems: walk into a gem's red circle and stand still until it is collected. The robot collects the blue gems in the same room."
+        "Collect the red gems: walk into a gem's red circle and stand still "
+        "until it is collected. The robot collects the blue gems in the same room."
     ),
 }
-CONTROLS = "W / S or ↑ / ↓: walk forward and back · A / D or ← / →: turn · Q / E: step sideways · R / F: look up and down · a gamepad works too"
+CONTROLS = (
+    "W / S or ↑ / ↓: walk forward and back · A / D or ← / →: turn · "
+    "Q / E: step sideways · R / F: look up and down · a gamepad works too"
+)
 
 
 @dataclass(frozen=True)
@@ -56,7 +63,14 @@ def robot_view(robot: RobotDescription) -> dict[str, Any]:
         "footprint": {"radius_m": fp.radius_m, "polygon": [list(p) for p in fp.polygon]},
         "height_m": robot.height_m,
         "primitives": [
-            {"shape": p.shape, "size": list(p.size), "at": list(p.at), "rpy": list(p.rpy), "colour": p.colour, "spin": p.spin}
+            {
+                "shape": p.shape,
+                "size": list(p.size),
+                "at": list(p.at),
+                "rpy": list(p.rpy),
+                "colour": p.colour,
+                "spin": p.spin,
+            }
             for p in robot.look.primitives
         ],
         "flight_height_m": robot.flight.cruise_height_m if robot.flight is not None else None,
@@ -89,7 +103,10 @@ def page_config(role: Role, scenario: Scenario, settings: PageSettings) -> dict[
         "map_inset": settings.map_inset,
         "instructions": INSTRUCTIONS.get(scenario.kind, ""),
         "controls": CONTROLS,
-        "questionnaires": [in_order(q, item_order(q, trial_key(settings.session, role.name))).to_dict() for q in settings.questionnaires],
+        "questionnaires": [
+            in_order(q, item_order(q, trial_key(settings.session, role.name))).to_dict()
+            for q in settings.questionnaires
+        ],
         "teleoperated": list(settings.teleoperated),
         "thought_max_chars": MAX_THOUGHT_CHARS,
         "next_url": settings.next_url,

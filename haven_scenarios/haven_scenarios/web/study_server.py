@@ -33,7 +33,17 @@ from haven_scenarios.study.protocol import Study
 from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.web import online_pages as pages
 from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
-from haven_scenarios.web.front_door import STATIC, _Server, address_for_others, quiet_handler, read_body, redirect, reply, reply_json, token_cookie
+from haven_scenarios.web.front_door import (
+    STATIC,
+    _Server,
+    address_for_others,
+    quiet_handler,
+    read_body,
+    redirect,
+    reply,
+    reply_json,
+    token_cookie,
+)
 from haven_scenarios.web.online_gate import SIG_PARAM, TOO_MANY, Gate, Refusal, cookie_place, place_cookie, same_origin
 from haven_scenarios.web.online_runner import LOG, NEXT_URL_ENV, Runner
 from haven_scenarios.web.online_seats import LIVE, Full, Seat, Seats, Standing, standing
@@ -64,7 +74,8 @@ class ServeOptions:
     reconnect_timeout: float = 60.0
     params_file: str | None = None
     network: bool = False
-    domains: DomainRange | None = None  # each runner's ROS domain from these (None: $HAVEN_DOMAINS, if set, else any free one)
+    # each runner's ROS domain from these (None: $HAVEN_DOMAINS, if set, else any free one)
+    domains: DomainRange | None = None
 
 
 class StudyServer:
@@ -98,7 +109,8 @@ class StudyServer:
 
     @property
     def join_url(self) -> str:
-        signed = f"&{SIG_PARAM}=SIG" if self.gate.secret is not None else ""  # (SIG: the id's signature, web/online_gate.py)
+        # (SIG: the id's signature, web/online_gate.py)
+        signed = f"&{SIG_PARAM}=SIG" if self.gate.secret is not None else ""
         return f"{self.base}/?{self.o.id_param}=ID{signed}"
 
     @property
@@ -165,15 +177,38 @@ class StudyServer:
         if runner.code == 0:
             print(f"serve: {who}: session ended", flush=True)
             return
-        again = "; it starts again when they come back" if self.starts[p] < MAX_STARTS else f"; given up after {MAX_STARTS} starts"
+        again = (
+            "; it starts again when they come back"
+            if self.starts[p] < MAX_STARTS
+            else f"; given up after {MAX_STARTS} starts"
+        )
         log = self.o.root / p / LOG
-        print(f"serve: {who}: session stopped (code {runner.code}: {runner.last[:200]}){again} (log: {log})", file=sys.stderr, flush=True)
+        print(
+            f"serve: {who}: session stopped (code {runner.code}: {runner.last[:200]}){again} (log: {log})",
+            file=sys.stderr,
+            flush=True,
+        )
 
     def runner_argv(self, seat: Seat) -> list[str]:
         o = self.o
-        port = next((q for q in range(o.trial_ports[0], o.trial_ports[1] + 1) if q not in self.ports.values()), 0) if o.trial_ports else 0
+        port = (
+            next((q for q in range(o.trial_ports[0], o.trial_ports[1] + 1) if q not in self.ports.values()), 0)
+            if o.trial_ports
+            else 0
+        )
         self.ports[seat.participant] = port
-        argv = [sys.executable, "-m", "haven_scenarios", "study", "run", o.study, "--participant", seat.participant, "--dir", str(o.root)]
+        argv = [
+            sys.executable,
+            "-m",
+            "haven_scenarios",
+            "study",
+            "run",
+            o.study,
+            "--participant",
+            seat.participant,
+            "--dir",
+            str(o.root),
+        ]
         argv += ["--web", "--no-pause", "--host", o.host, "--port", str(port)]
         argv += ["--on-disconnect", o.on_disconnect, "--reconnect-timeout", str(o.reconnect_timeout)]
         argv += ["--tls-cert", o.tls[0], "--tls-key", o.tls[1]] if o.tls else []
@@ -196,7 +231,11 @@ class StudyServer:
                     return {"state": Standing.RUNNING, "title": "Go on", "text": "Taking you there…", "url": page}
                 return {"state": Standing.PREPARING, "title": "One moment", "text": "Your next part is being prepared…"}
             if self.starts[p] >= MAX_STARTS:
-                return {"state": Standing.FAILED, "title": "Sorry", "text": "Your session cannot go on: please tell the researcher."}
+                return {
+                    "state": Standing.FAILED,
+                    "title": "Sorry",
+                    "text": "Your session cannot go on: please tell the researcher.",
+                }
             self.waiting[p] = now  # (a participant already in line keeps their place)
             ahead = list(self.waiting).index(p) - (self.o.capacity - len(self.runners))
             if ahead < 0:
@@ -204,7 +243,9 @@ class StudyServer:
             return {
                 "state": Standing.WAITING,
                 "title": "Please wait",
-                "text": f"All places are in use right now: you are number {ahead + 1} in line. This page goes on by itself.",
+                "text": (
+                    f"All places are in use right now: you are number {ahead + 1} in line. This page goes on by itself."
+                ),
             }
 
     def _ended(self, where: Standing) -> dict[str, Any]:
@@ -217,7 +258,13 @@ class StudyServer:
             }
         code = online.completion_code
         text = "You have finished the study. Thank you!" + (" Your completion code:" if code else "")
-        return {"state": Standing.DONE, "title": "Thank you", "text": text, "code": code or None, "url": online.completion_url or None}
+        return {
+            "state": Standing.DONE,
+            "title": "Thank you",
+            "text": text,
+            "code": code or None,
+            "url": online.completion_url or None,
+        }
 
     def sessions(self) -> list[dict[str, Any]]:
         """The researcher's list: every participant who joined, live ones first."""
@@ -228,15 +275,31 @@ class StudyServer:
                 live = runner is not None and runner.code is None
                 waiting = seat.participant in self.waiting
             if live and runner is not None:
-                state, now, console = (Standing.RUNNING if runner.page else Standing.PREPARING), runner.trial, runner.console
-            elif self.starts[seat.participant] >= MAX_STARTS and standing(self.study, self.o.root, seat.participant, self.trials) not in (
+                state, now, console = (
+                    (Standing.RUNNING if runner.page else Standing.PREPARING),
+                    runner.trial,
+                    runner.console,
+                )
+            elif self.starts[seat.participant] >= MAX_STARTS and standing(
+                self.study, self.o.root, seat.participant, self.trials
+            ) not in (
                 Standing.DONE,
                 Standing.DECLINED,
             ):
                 state, now, console = Standing.FAILED, "", None
             else:
-                state, now, console = (Standing.WAITING if waiting else standing(self.study, self.o.root, seat.participant, self.trials)), "", None
-            row = {"panel_id": seat.panel_id, "participant": seat.participant, "state": state, "now": now, "joined": seat.joined}
+                state, now, console = (
+                    (Standing.WAITING if waiting else standing(self.study, self.o.root, seat.participant, self.trials)),
+                    "",
+                    None,
+                )
+            row = {
+                "panel_id": seat.panel_id,
+                "participant": seat.participant,
+                "state": state,
+                "now": now,
+                "joined": seat.joined,
+            }
             rows.append({**row, "console": console})
         return sorted(rows, key=lambda r: (r["state"] not in (*LIVE, Standing.WAITING), r["participant"]))
 
@@ -262,7 +325,12 @@ class StudyServer:
                     runner = self.runners.get(seat.participant)
                 if runner is not None:
                     runner.finished_page(query["left"])
-            return reply(h, 200, pages.session(f"/session/{seat.participant}/state?key={quote(seat.key)}"), "text/html; charset=utf-8")
+            return reply(
+                h,
+                200,
+                pages.session(f"/session/{seat.participant}/state?key={quote(seat.key)}"),
+                "text/html; charset=utf-8",
+            )
         if parts == ["favicon.ico"]:
             return reply(h, 204, b"")
         return reply(h, 404, b"no such page")
@@ -299,7 +367,11 @@ class StudyServer:
         outcome = seat or self.gate.refusal(panel_id, sig) or self._take(panel_id, h.client_address[0])
         if isinstance(outcome, Refusal):
             return reply(h, outcome.code, pages.message(outcome.title, outcome.text), HTML)
-        redirect(h, f"/session/{outcome.participant}?key={quote(outcome.key)}", place_cookie(h, outcome.participant, outcome.key))
+        redirect(
+            h,
+            f"/session/{outcome.participant}?key={quote(outcome.key)}",
+            place_cookie(h, outcome.participant, outcome.key),
+        )
 
     def _take(self, panel_id: str, address: str) -> Seat | Refusal:
         """This id's place (the one it had, else a new one if `address` may take one more)."""
@@ -313,7 +385,9 @@ class StudyServer:
             except ValueError as e:
                 return Refusal(400, "Cannot join", str(e).replace("participant: ", "Your participant id "))
             except Full:
-                return Refusal(200, "The study is full", "Every place in this study has been taken. Thank you for your interest.")
+                return Refusal(
+                    200, "The study is full", "Every place in this study has been taken. Thank you for your interest."
+                )
             if new:
                 self.gate.took(address, now)
             return seat

@@ -31,7 +31,8 @@ from cryptography.x509.oid import ExtendedKeyUsageOID, NameOID
 from haven_sim.common.atomic import refuse_link, write_secret
 
 CA_CERT, CA_KEY = "haven-ca.pem", "haven-ca-key.pem"
-SERVER_CERT, SERVER_KEY = "haven-server.pem", "haven-server-key.pem"  # (made again each time: the names may have changed)
+# (made again each time: the names may have changed)
+SERVER_CERT, SERVER_KEY = "haven-server.pem", "haven-server-key.pem"
 CA_DAYS = 3650  # the lab's authority: ten years (a headset trusts it once)
 # A server certificate's lifetime: at most 398 days, the limit Chrome and Safari enforce for
 # certificates (Apple, "About upcoming limits on trusted certificates", 2020; CA/Browser Forum
@@ -50,7 +51,9 @@ def server_context(cert: str | os.PathLike[str], key: str | os.PathLike[str]) ->
     try:
         context.load_cert_chain(cert, key)
     except ssl.SSLError as e:
-        raise ValueError(f"--tls-cert {cert} / --tls-key {key}: not a certificate and its key in PEM ({e.reason or e})") from None
+        raise ValueError(
+            f"--tls-cert {cert} / --tls-key {key}: not a certificate and its key in PEM ({e.reason or e})"
+        ) from None
     return context
 
 
@@ -73,12 +76,15 @@ def address_notes(shown: str, cert: str) -> list[str]:
         if shown in ("localhost", "127.0.0.1", "::1"):
             return []
         return [
-            f"plain http on {shown}: browsers on other devices treat the pages as insecure (no Enter VR) and the tokens "
-            "travel in clear text; serve HTTPS (haven cert, then --tls-cert and --tls-key)"
+            f"plain http on {shown}: browsers on other devices treat the pages as insecure (no Enter VR) "
+            "and the tokens travel in clear text; serve HTTPS (haven cert, then --tls-cert and --tls-key)"
         ]
     if shown in names_of(cert):
         return []
-    return [f"warning: the certificate {cert} does not name {shown}: browsers will refuse the pages; run haven cert again (docs/howto/https.md)"]
+    return [
+        f"warning: the certificate {cert} does not name {shown}: "
+        "browsers will refuse the pages; run haven cert again (docs/howto/https.md)"
+    ]
 
 
 def this_machines_names() -> list[str]:
@@ -114,9 +120,12 @@ def make_certificates(folder: Path, names: Sequence[str], now: datetime.datetime
         raise ValueError("haven cert: no name or address to certify")
     bad = [n for n in names if not _nameable(n)]
     if bad:
-        raise ValueError(f"haven cert: --name {bad[0]!r} is neither a host name (letters, digits, '-', dots) nor an IP address")
+        raise ValueError(
+            f"haven cert: --name {bad[0]!r} is neither a host name (letters, digits, '-', dots) nor an IP address"
+        )
     folder.mkdir(parents=True, exist_ok=True)
-    for name in (CA_CERT, CA_KEY, SERVER_CERT, SERVER_KEY):  # (before anything is made: a link's target is never written)
+    # (before anything is made: a link's target is never written)
+    for name in (CA_CERT, CA_KEY, SERVER_CERT, SERVER_KEY):
         refuse_link(folder / name)
     now = now or datetime.datetime.now(datetime.UTC)
     ca_cert_path, ca_key_path = folder / CA_CERT, folder / CA_KEY
@@ -162,7 +171,17 @@ def _authority(key: ec.EllipticCurvePrivateKey, now: datetime.datetime) -> x509.
         .not_valid_after(now + datetime.timedelta(days=CA_DAYS))
         .add_extension(x509.BasicConstraints(ca=True, path_length=0), critical=True)
         .add_extension(
-            x509.KeyUsage(False, False, False, False, False, key_cert_sign=True, crl_sign=True, encipher_only=False, decipher_only=False),
+            x509.KeyUsage(
+                False,
+                False,
+                False,
+                False,
+                False,
+                key_cert_sign=True,
+                crl_sign=True,
+                encipher_only=False,
+                decipher_only=False,
+            ),
             critical=True,
         )
         .add_extension(ski, critical=False)
@@ -171,7 +190,11 @@ def _authority(key: ec.EllipticCurvePrivateKey, now: datetime.datetime) -> x509.
 
 
 def _server(
-    key: ec.EllipticCurvePrivateKey, ca_key: ec.EllipticCurvePrivateKey, ca_cert: x509.Certificate, names: Sequence[str], now: datetime.datetime
+    key: ec.EllipticCurvePrivateKey,
+    ca_key: ec.EllipticCurvePrivateKey,
+    ca_cert: x509.Certificate,
+    names: Sequence[str],
+    now: datetime.datetime,
 ) -> x509.Certificate:
     alt: list[x509.GeneralName] = []
     for n in names:
@@ -202,7 +225,10 @@ def _server(
 
 
 def _write_key(path: Path, key: ec.EllipticCurvePrivateKey) -> None:
-    write_secret(path, key.private_bytes(serialization.Encoding.PEM, serialization.PrivateFormat.PKCS8, serialization.NoEncryption()))
+    write_secret(
+        path,
+        key.private_bytes(serialization.Encoding.PEM, serialization.PrivateFormat.PKCS8, serialization.NoEncryption()),
+    )
 
 
 _LABEL = re.compile(r"^(?!-)[A-Za-z0-9-]{1,63}(?<!-)$")

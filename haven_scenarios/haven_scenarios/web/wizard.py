@@ -39,17 +39,33 @@ class Wizard:
             data = json.loads(sent)
         except (json.JSONDecodeError, RecursionError):
             raise ValueError("thought: not JSON") from None
-        text, hold, everywhere = (data.get(k) for k in ("text", "hold_s", "everywhere")) if isinstance(data, dict) else (None, None, None)
+        text, hold, everywhere = (
+            (data.get(k) for k in ("text", "hold_s", "everywhere")) if isinstance(data, dict) else (None, None, None)
+        )
         if not isinstance(text, str):
             raise ValueError('thought: must be {"text": ..., "hold_s": seconds, "everywhere": true|false}')
         if len(text) > MAX_THOUGHT_CHARS:
-            raise ValueError(f"thought text of {len(text)} characters refused: at most {MAX_THOUGHT_CHARS} (the study log's events hold 64 KiB)")
+            raise ValueError(
+                f"thought text of {len(text)} characters refused: "
+                f"at most {MAX_THOUGHT_CHARS} (the study log's events hold 64 KiB)"
+            )
         hold = DEFAULT_HOLD_S if hold is None else hold
         if isinstance(hold, bool) or not isinstance(hold, (int, float)) or not 0 <= hold <= MAX_HOLD_S:
             raise ValueError(f"thought: hold_s must be 0..{MAX_HOLD_S:g} seconds, got {str(hold)[:40]}")
         everywhere = bool(everywhere)
         held = WizardThought(text, now + float(hold), everywhere)
-        return held, [event(EventKind.INTERVENTION, now, Source.WEB, action="thought", text=text, hold_s=float(hold), everywhere=everywhere, by=BY)]
+        return held, [
+            event(
+                EventKind.INTERVENTION,
+                now,
+                Source.WEB,
+                action="thought",
+                text=text,
+                hold_s=float(hold),
+                everywhere=everywhere,
+                by=BY,
+            )
+        ]
 
     def skip_questionnaires(self, now: float) -> list[Event]:
         """The researcher ends the wait for questionnaire answers (`haven run` stops then)."""

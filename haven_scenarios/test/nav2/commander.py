@@ -43,7 +43,9 @@ class Commander(Node):
             "follow_path": ActionClient(self, FollowPath, "follow_path"),
             "compute_path_to_pose": ActionClient(self, ComputePathToPose, "compute_path_to_pose"),
         }
-        latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE)
+        latched = QoSProfile(
+            depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL, reliability=ReliabilityPolicy.RELIABLE
+        )
         self.create_subscription(PoseWithCovarianceStamped, "amcl_pose", self._on_amcl_pose, latched)
         self.initial_pose_pub = self.create_publisher(PoseWithCovarianceStamped, "initialpose", 10)
 
@@ -96,10 +98,15 @@ class Commander(Node):
         return self._send("follow_waypoints", FollowWaypoints.Goal(poses=poses))
 
     def followPath(self, path: Any, controller_id: str = "", goal_checker_id: str = "") -> bool:
-        return self._send("follow_path", FollowPath.Goal(path=path, controller_id=controller_id, goal_checker_id=goal_checker_id))
+        return self._send(
+            "follow_path", FollowPath.Goal(path=path, controller_id=controller_id, goal_checker_id=goal_checker_id)
+        )
 
     def getPath(self, start: PoseStamped, goal: PoseStamped, planner_id: str = "", use_start: bool = False) -> Any:
-        if not self._send("compute_path_to_pose", ComputePathToPose.Goal(start=start, goal=goal, planner_id=planner_id, use_start=use_start)):
+        if not self._send(
+            "compute_path_to_pose",
+            ComputePathToPose.Goal(start=start, goal=goal, planner_id=planner_id, use_start=use_start),
+        ):
             return None
         rclpy.spin_until_future_complete(self, self.result_future)
         self.status = self.result_future.result().status

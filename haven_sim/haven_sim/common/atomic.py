@@ -51,7 +51,9 @@ class SymlinkRefused(OSError):
 def refuse_link(target: Path) -> None:
     """SymlinkRefused if `target` is a symbolic link (a secret is never written through one)."""
     if target.is_symlink():
-        raise SymlinkRefused(f"{target} is a symbolic link: refusing to write a secret through it (remove the link, then try again)")
+        raise SymlinkRefused(
+            f"{target} is a symbolic link: refusing to write a secret through it (remove the link, then try again)"
+        )
 
 
 def write_secret(path: str | Path, data: bytes, mode: int = 0o600) -> None:
@@ -86,7 +88,9 @@ def open_secret_log(path: str | Path) -> int:
     target = Path(path)
     refuse_link(target)
     try:
-        fd = os.open(target, os.O_WRONLY | os.O_APPEND | os.O_CREAT | os.O_NOFOLLOW | getattr(os, "O_CLOEXEC", 0), 0o600)
+        fd = os.open(
+            target, os.O_WRONLY | os.O_APPEND | os.O_CREAT | os.O_NOFOLLOW | getattr(os, "O_CLOEXEC", 0), 0o600
+        )
     except OSError as e:
         if e.errno == errno.ELOOP:  # (a link put there meanwhile)
             raise SymlinkRefused(f"{target} is a symbolic link: refusing to write a secret through it") from None

@@ -42,12 +42,16 @@ _SIGNAL = signal.SIGRTMIN + 3 if hasattr(signal, "SIGRTMIN") else None  # (not o
 class PluginDeadlines:
     """How long one call into a plugin's code may take before its trial is ended not valid, per kind."""
 
-    plugin_deadline_participants_s: float = param(2.0, "a participant model's one call (made, or its command at a scenario tick)", POSITIVE)
+    plugin_deadline_participants_s: float = param(
+        2.0, "a participant model's one call (made, or its command at a scenario tick)", POSITIVE
+    )
     plugin_deadline_missions_s: float = param(2.0, "a mission behaviour's one call (arrange, pick)", POSITIVE)
     plugin_deadline_planners_s: float = param(10.0, "a planner plugin's one call (made for a map, plan)", POSITIVE)
     plugin_deadline_cues_s: float = param(1.0, "a cue's one call (made, show)", POSITIVE)
     plugin_deadline_metrics_s: float = param(60.0, "one metric over the whole trial", POSITIVE)
-    plugin_deadline_load_s: float = param(30.0, "importing one plugin of any kind (questionnaires and robots are data: only loaded)", POSITIVE)
+    plugin_deadline_load_s: float = param(
+        30.0, "importing one plugin of any kind (questionnaires and robots are data: only loaded)", POSITIVE
+    )
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -106,7 +110,9 @@ class PluginFailed(Exception):
 
 def failed_event(failed: PluginFailed, now: float, source: str) -> Event:
     """The `plugin_failed` event that says so on the study log."""
-    return Event(EventKind.PLUGIN_FAILED, now, source, {"kind": failed.kind, "name": failed.name, "error": failed.error})
+    return Event(
+        EventKind.PLUGIN_FAILED, now, source, {"kind": failed.kind, "name": failed.name, "error": failed.error}
+    )
 
 
 def failures(events: Iterable[Event]) -> list[str]:
@@ -136,7 +142,8 @@ class _Call:
 
 STUCK_SENDS = 5  # sent this often (a second apart) and still running: stuck where no exception lands (C code)
 STUCK_EXIT = 70  # the exit code of a process that ends itself for a stuck plugin (a batch worker, a node)
-on_stuck: Callable[[PluginFailed], None] | None = None  # then called once, from the watchdog (a batch worker: ends its process)
+# then called once, from the watchdog (a batch worker: ends its process)
+on_stuck: Callable[[PluginFailed], None] | None = None
 
 
 _active: dict[int, _Call] = {}
@@ -166,7 +173,8 @@ def call(kind: str, name: str, fn: Callable[..., T], *args: Any, expected: tuple
                 else:
                     _active.pop(tid, None)
                 if me.sent and tid != threading.main_thread().ident:
-                    ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(tid), None)  # (one sent but not yet raised: withdrawn)
+                    # (one sent but not yet raised: withdrawn)
+                    ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(tid), None)
     except Overrun:
         raise PluginFailed(kind, name, f"took longer than its deadline of {limit:g} s") from None
     except passing:
@@ -207,7 +215,10 @@ def _watch() -> None:
                     continue
                 c.sent, c.deadline = c.sent + 1, now + 1.0
                 if c.sent == STUCK_SENDS and on_stuck is not None:
-                    why = f"still running {c.sent - 1} s past its deadline of {_deadlines.of(c.kind):g} s, where it cannot be interrupted"
+                    why = (
+                        f"still running {c.sent - 1} s past its deadline of "
+                        f"{_deadlines.of(c.kind):g} s, where it cannot be interrupted"
+                    )
                     on_stuck(PluginFailed(c.kind, c.name, why))
                 if tid == main and _SIGNAL is not None and _handler_pid == os.getpid():
                     signal.pthread_kill(tid, _SIGNAL)

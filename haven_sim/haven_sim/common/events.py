@@ -31,7 +31,8 @@ class EventKind(StrEnum):
     RESET = "reset"
     TOOK_OFF = "took_off"  # an aerial robot left its pad (climbing to cruise height)
     LANDED = "landed"  # an aerial robot is down on its pad
-    CLOCK_HELD = "clock_held"  # real_time_factor, requested: the controller fell behind, sim time ran slower (free-running)
+    # real_time_factor, requested: the controller fell behind, sim time ran slower (free-running)
+    CLOCK_HELD = "clock_held"
     # velocity mux
     CMD_SOURCE = "cmd_source"  # from, to: nav | teleop | estop | idle
     # planner
@@ -47,7 +48,8 @@ class EventKind(StrEnum):
     GOAL_REACHED = "goal_reached"  # goal, pose
     # viz
     CUE_TOGGLED = "cue_toggled"  # cue, on
-    CUE_FAILED = "cue_failed"  # cue, error: what recordings before plugin_failed said of a cue that raised (read as plugin_failed)
+    # cue, error: what recordings before plugin_failed said of a cue that raised (read as plugin_failed)
+    CUE_FAILED = "cue_failed"
     # scenario and mission executive
     TRIAL_START = "trial_start"
     TARGET_SELECTED = "target_selected"
@@ -65,20 +67,25 @@ class EventKind(StrEnum):
     TASK_DONE = "task_done"  # by
     TRIAL_END = "trial_end"  # reason
     # any node
-    PLUGIN_FAILED = "plugin_failed"  # kind, name, error: a plugin raised or overran its deadline (common/contain.py): the trial ends, not valid
-    REQUEST_REFUSED = "request_refused"  # request (parameter | service), name, reason: somebody asked what a running trial does not allow
+    # kind, name, error: a plugin raised or overran its deadline (common/contain.py): the trial ends, not valid
+    PLUGIN_FAILED = "plugin_failed"
+    # request (parameter | service), name, reason: somebody asked what a running trial does not allow
+    REQUEST_REFUSED = "request_refused"
     # any node on the lockstep clock (nodes/lockstep.py)
-    OUTSIDE_INPUT = "outside_input"  # topic, ignored, taken, dropped: messages from outside the suite since the last one
+    # topic, ignored, taken, dropped: messages from outside the suite since the last one
+    OUTSIDE_INPUT = "outside_input"
     INPUT_LOST = "input_lost"  # topic, messages: announced by the suite, never arrived
     # researcher console (Wizard of Oz)
     INTERVENTION = "intervention"  # action: thought (text) | drive | drive_end | skip_questionnaires, by
     PARTICIPANT_READY = "participant_ready"  # by: a participant pressed Start on their page
-    PARTICIPANT_DISCONNECTED = "participant_disconnected"  # by, policy: their page's connection closed (a tab, the network)
+    # by, policy: their page's connection closed (a tab, the network)
+    PARTICIPANT_DISCONNECTED = "participant_disconnected"
     PARTICIPANT_RECONNECTED = "participant_reconnected"  # by, away_s (wall time)
     PARTICIPANT_LOST = "participant_lost"  # by, away_s: not back within the pause's timeout (the trial is aborted)
     TRIAL_PAUSED = "trial_paused"  # simulated time stands still (a participant away, on_disconnect: pause)
     TRIAL_RESUMED = "trial_resumed"  # paused_s (wall time)
-    QUESTIONNAIRE_ANSWERED = "questionnaire_answered"  # by, questionnaire, scores, answers: after the trial, on their page
+    # by, questionnaire, scores, answers: after the trial, on their page
+    QUESTIONNAIRE_ANSWERED = "questionnaire_answered"
 
 
 class Source(StrEnum):

@@ -192,6 +192,11 @@ def _segments_meet(p1: FloatArray, q1: FloatArray, p2: FloatArray, q2: FloatArra
     o1, o2 = _cross(p1, q1, p2), _cross(p1, q1, q2)
     o3, o4 = _cross(p2, q2, p1), _cross(p2, q2, q1)
     proper = (o1 * o2 < 0) & (o3 * o4 < 0)
-    touch = (o1 == 0) & _within(p1, q1, p2) | (o2 == 0) & _within(p1, q1, q2) | (o3 == 0) & _within(p2, q2, p1) | (o4 == 0) & _within(p2, q2, q1)
+    touch = (
+        (o1 == 0) & _within(p1, q1, p2)
+        | (o2 == 0) & _within(p1, q1, q2)
+        | (o3 == 0) & _within(p2, q2, p1)
+        | (o4 == 0) & _within(p2, q2, q1)
+    )
     meet: BoolArray = proper | touch
     return meet

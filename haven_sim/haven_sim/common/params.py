@@ -60,7 +60,9 @@ class Bounds:
             return f"must be {'less than' if self.high_open else 'at most'} {self.high:g}"
         if not self.low_open and not self.high_open:
             return f"must be within {self.low:g}..{self.high:g}"
-        return f"must be within {'(' if self.low_open else '['}{self.low:g}, {self.high:g}{')' if self.high_open else ']'}"
+        return (
+            f"must be within {'(' if self.low_open else '['}{self.low:g}, {self.high:g}{')' if self.high_open else ']'}"
+        )
 
 
 POSITIVE = Bounds(0.0, low_open=True)
@@ -71,7 +73,9 @@ FRACTION = Bounds(0.0, 1.0)
 def param(default: Any, doc: str, bounds: Bounds | None = None) -> Any:
     """A parameter field with its one-line documentation (written into haven.yaml) and, for a
     number, the values it may take."""
-    return dataclasses.field(default=default, metadata={"doc": doc, **({"bounds": bounds} if bounds is not None else {})})
+    return dataclasses.field(
+        default=default, metadata={"doc": doc, **({"bounds": bounds} if bounds is not None else {})}
+    )
 
 
 def check_bounds(config: Any) -> None:
@@ -250,12 +254,15 @@ def check_names(params: Mapping[str, Mapping[str, Any]], known: Mapping[str, Map
     every = {name: default for names in known.values() for name, default in names.items()}
     for node, values in params.items():
         if node != WILDCARD and node not in known:
-            raise ParamsError(f"{label}: {shown(node)}: no such node{_nearest(node, known)} (nodes: {', '.join(known)})")
+            raise ParamsError(
+                f"{label}: {shown(node)}: no such node{_nearest(node, known)} (nodes: {', '.join(known)})"
+            )
         names = every if node == WILDCARD else known[node]
         for name, value in values.items():
             if not isinstance(name, str) or name not in names:
                 raise ParamsError(f"{label}: {shown(node)}: {shown(name)}: no such parameter{_nearest(name, names)}")
-            bad = None if isinstance(names[name], bool) else _not_finite(value)  # (a boolean: build says "true or false")
+            # (a boolean: build says "true or false")
+            bad = None if isinstance(names[name], bool) else _not_finite(value)
             if bad is not None:
                 raise ParamsError(f"{label}: {shown(node)}: {name}: must be a finite number, got {bad}")
 

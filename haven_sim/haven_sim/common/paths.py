@@ -57,7 +57,8 @@ class Segment:
 class PathReading:
     segments: list[Segment]
     arcs: list[tuple[float, float]]  # where the path is an arc: (from, to) in arc length along it
-    headings: FloatArray  # per step (pose k to k+1): the travel heading (a step in place: the travel's before it, else after)
+    # per step (pose k to k+1): the travel heading (a step in place: the travel's before it, else after)
+    headings: FloatArray
 
 
 def read_path(poses: Sequence[Pose2D], rotate_above_rad: float, goal_tolerance_rad: float) -> PathReading:
@@ -129,11 +130,17 @@ def _in_our_convention(poses: Sequence[Pose2D], chords: FloatArray, long: np.nda
     only where it bends a straight by less than its straight tolerance does a yaw jump. (Steps
     shorter than SAMPLE_M have no reliable heading of their own.)"""
     steps = [int(k) for k in np.flatnonzero(long)]
-    agree = sum(abs(wrap_angle(float(chords[k]) - poses[k].yaw - 0.5 * wrap_angle(poses[k + 1].yaw - poses[k].yaw))) <= YAW_EPS_RAD for k in steps)
+    agree = sum(
+        abs(wrap_angle(float(chords[k]) - poses[k].yaw - 0.5 * wrap_angle(poses[k + 1].yaw - poses[k].yaw)))
+        <= YAW_EPS_RAD
+        for k in steps
+    )
     return agree >= CONVENTION_SHARE * len(steps)
 
 
-def _read_run(xy: FloatArray, offset: int, rotate_above: float, headings: FloatArray, corners: dict[int, float]) -> list[tuple[float, float]]:
+def _read_run(
+    xy: FloatArray, offset: int, rotate_above: float, headings: FloatArray, corners: dict[int, float]
+) -> list[tuple[float, float]]:
     """Steps offset .. offset+len(xy)-2 all move: their headings, the corners to rotate at, and the
     arcs (from, to along the run; a corner driven as an arc spans the chords around it)."""
     cum = np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(xy, axis=0).T))])
@@ -155,7 +162,9 @@ def _read_run(xy: FloatArray, offset: int, rotate_above: float, headings: FloatA
     heading = chord(i - w // 2, i + w // 2)  # the travel heading, averaged over a chord
     turn = np.array([wrap_angle(float(t)) for t in chord(i, i + w) - chord(i - w, i)])  # per sample
     step_mid = 0.5 * (cum[:-1] + cum[1:])
-    headings[offset : offset + len(step_mid)] = heading[np.clip(np.round(step_mid / (s[1] - s[0])).astype(int), 0, len(s) - 1)]
+    headings[offset : offset + len(step_mid)] = heading[
+        np.clip(np.round(step_mid / (s[1] - s[0])).astype(int), 0, len(s) - 1)
+    ]
     arcs: list[tuple[float, float]] = []
     threshold = MIN_ARC_CURVATURE * w * (s[1] - s[0])
     sign = np.where(np.abs(turn) > threshold, np.sign(turn), 0.0)
@@ -167,8 +176,19 @@ def _read_run(xy: FloatArray, offset: int, rotate_above: float, headings: FloatA
         j = k
         while j + 1 < len(s) and sign[j + 1] == sign[k]:
             j += 1
-        total = wrap_angle(float(chord(np.array([j]), np.array([j + w]))[0] - chord(np.array([k - w]), np.array([k]))[0]))
-        a, b = _turn_extent(s[k], s[j], k == 0, j == len(s) - 1, abs(total), float(np.max(np.abs(turn[k : j + 1]))), w * (s[1] - s[0]), threshold)
+        total = wrap_angle(
+            float(chord(np.array([j]), np.array([j + w]))[0] - chord(np.array([k - w]), np.array([k]))[0])
+        )
+        a, b = _turn_extent(
+            s[k],
+            s[j],
+            k == 0,
+            j == len(s) - 1,
+            abs(total),
+            float(np.max(np.abs(turn[k : j + 1]))),
+            w * (s[1] - s[0]),
+            threshold,
+        )
         if b - a < CORNER_RADIUS_M * abs(total) and abs(total) > rotate_above:
             at = int(np.argmin(np.abs(cum - 0.5 * (a + b))))
             corners[offset + at] = wrap_angle(float(chord(np.array([j]), np.array([j + w]))[0]))

@@ -106,7 +106,8 @@ class Registry:
         return f"unknown {singular(self.kind)} {name!r} (known: {', '.join(self.names()) or 'none'})"
 
 
-OURS = frozenset({"haven-sim", "haven-viz", "haven-scenarios"})  # HAVEN's packages (normalised names): their items come first
+# HAVEN's packages (normalised names): their items come first
+OURS = frozenset({"haven-sim", "haven-viz", "haven-scenarios"})
 
 
 def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registry:
@@ -125,7 +126,9 @@ def load(kind: str, entries: Iterable[importlib.metadata.EntryPoint]) -> Registr
             if isinstance(taken, Plugin):
                 reg.items[entry.name] = taken
             else:
-                reg.problems.append(f"{GROUP_PREFIX}{kind} {entry.name} ({entry.value}, from {_package(entry)}): {taken}")
+                reg.problems.append(
+                    f"{GROUP_PREFIX}{kind} {entry.name} ({entry.value}, from {_package(entry)}): {taken}"
+                )
                 reg.left_out.setdefault(entry.name, taken)
     finally:
         del _loading[kind]
@@ -149,7 +152,10 @@ def _take(entry: importlib.metadata.EntryPoint, reg: Registry, accept: Callable[
         return f"does not load: {e.error}"
     wanted = getattr(value, API_ATTRIBUTE, PLUGIN_API)
     if not isinstance(wanted, int) or isinstance(wanted, bool) or not 1 <= wanted <= PLUGIN_API:
-        return f"written for HAVEN's plugin API {str(wanted)[:20]}; this HAVEN has version {PLUGIN_API} (upgrade HAVEN, or the plugin)"
+        return (
+            f"written for HAVEN's plugin API {str(wanted)[:20]}; "
+            f"this HAVEN has version {PLUGIN_API} (upgrade HAVEN, or the plugin)"
+        )
     try:
         value = accept(entry.name, value)
     except ValueError as e:

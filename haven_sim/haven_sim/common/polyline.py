@@ -76,7 +76,10 @@ class Polyline:
             cx, cy = ax + dx * t, ay + dy * t
             found.append(((cx - x) ** 2 + (cy - y) ** 2, i, t, ln2, cx, cy))
         near = min(f[0] for f in found) * (1.0 + 1e-9) + 1e-300
-        return min(((float(np.hypot(cx - x, cy - y)), i, t, ln2, cx, cy) for q, i, t, ln2, cx, cy in found if q <= near), key=lambda c: c[0])
+        return min(
+            ((float(np.hypot(cx - x, cy - y)), i, t, ln2, cx, cy) for q, i, t, ln2, cx, cy in found if q <= near),
+            key=lambda c: c[0],
+        )
 
     def point_at(self, s: float) -> Point:
         """The point at arc length s (clamped to the ends); on a zero-length segment, its start."""

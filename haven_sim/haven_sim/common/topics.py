@@ -41,7 +41,8 @@ TRIAL_CONTROL = "haven/trial_control"
 # Hidden (a leading `_`): not recorded, not listed by `ros2 topic list` without --include-hidden-topics.
 PACE_NAV = "haven/_pace_nav"
 PACE = "haven/_pace"
-PACE_IDLE = float(2**31 - 1)  # said on them while the controller drives nothing (the latest time a Clock holds): hold nothing
+# said on them while the controller drives nothing (the latest time a Clock holds): hold nothing
+PACE_IDLE = float(2**31 - 1)
 
 
 # The simulator's state streams: a reader needs only the newest message (a node that handles them
@@ -73,5 +74,7 @@ class WireParams:
     """How the topics are typed, for every node (the shared section of haven.yaml)."""
 
     stamped_cmd_vel: bool = param(
-        False, "/cmd_vel, /cmd_vel_nav and /cmd_vel_teleop carry geometry_msgs/TwistStamped (Nav2 Jazzy's enable_stamped_cmd_vel)"
+        False,
+        "/cmd_vel, /cmd_vel_nav and /cmd_vel_teleop carry "
+        "geometry_msgs/TwistStamped (Nav2 Jazzy's enable_stamped_cmd_vel)",
     )

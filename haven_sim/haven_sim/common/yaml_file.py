@@ -114,7 +114,9 @@ def open_regular(path: str | Path, what: str, max_bytes: int) -> BinaryIO:
     except NotReadable:
         raise
     except (OSError, ValueError) as e:
-        raise NotReadable(name, what, one_line(e.strerror if isinstance(e, OSError) and e.strerror else str(e))) from None
+        raise NotReadable(
+            name, what, one_line(e.strerror if isinstance(e, OSError) and e.strerror else str(e))
+        ) from None
     return f
 
 
@@ -144,7 +146,8 @@ def _decode(data: bytes, name: str) -> str:
     try:
         return data.decode("utf-8")
     except UnicodeDecodeError as e:
-        utf16 = data[:2] in (b"\xff\xfe", b"\xfe\xff") or b"\x00\x00\x00" in (data[0:6:2], data[1:6:2])  # a BOM, or ASCII as UTF-16
+        # a BOM, or ASCII as UTF-16
+        utf16 = data[:2] in (b"\xff\xfe", b"\xfe\xff") or b"\x00\x00\x00" in (data[0:6:2], data[1:6:2])
         hint = " (it looks like UTF-16: save it as UTF-8)" if utf16 else ""
         raise YamlFileError(f"{name}: not UTF-8 text: byte 0x{data[e.start]:02x} at offset {e.start}{hint}") from None
 
@@ -158,7 +161,13 @@ def _parse(text: str, name: str) -> Any:
     except yaml.YAMLError as e:
         mark = getattr(e, "problem_mark", None)
         position = getattr(e, "position", None)  # a ReaderError (a character YAML does not allow) has no mark
-        line = mark.line + 1 if mark is not None else text.count("\n", 0, position) + 1 if isinstance(position, int) else None
+        line = (
+            mark.line + 1
+            if mark is not None
+            else text.count("\n", 0, position) + 1
+            if isinstance(position, int)
+            else None
+        )
         where = f" at line {line}" if line is not None else ""
         problem = getattr(e, "problem", None) or getattr(e, "reason", None) or "invalid YAML"
         raise YamlFileError(f"{name}: YAML syntax error{where}: {one_line(problem)}") from None
@@ -217,11 +226,16 @@ def _check_events(text: str, name: str) -> None:
             nodes, depth, anchor = done.nodes, done.depth, done.anchor
         elif isinstance(event, yaml.AliasEvent):
             if any(f.anchor == event.anchor for f in stack):
-                raise YamlFileError(f"{name}: {_path(stack)}: alias *{shown_key(event.anchor)} refers to itself (line {line})")
+                raise YamlFileError(
+                    f"{name}: {_path(stack)}: alias *{shown_key(event.anchor)} refers to itself (line {line})"
+                )
             nodes, depth = sizes.get(event.anchor or "", (1, 1))
             anchor = None
             if len(stack) + depth > MAX_DEPTH:
-                raise YamlFileError(f"{name}: {_path(stack)}: alias *{shown_key(event.anchor)} nests deeper than {MAX_DEPTH} levels (line {line})")
+                raise YamlFileError(
+                    f"{name}: {_path(stack)}: alias *{shown_key(event.anchor)} "
+                    f"nests deeper than {MAX_DEPTH} levels (line {line})"
+                )
             total += nodes
         elif isinstance(event, yaml.ScalarEvent):
             nodes, depth, anchor = 1, 1, event.anchor

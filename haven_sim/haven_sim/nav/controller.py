@@ -40,8 +40,8 @@ class ControllerConfig:
         check_bounds(self)
         if self.follower.yaw_goal_tolerance_rad < self.style.facing_tolerance_rad:
             raise ValueError(
-                f"follower.yaw_goal_tolerance_rad ({self.follower.yaw_goal_tolerance_rad:g}) must be at least the motion style's "
-                f"facing tolerance ({self.style.facing_tolerance_deg:g} deg), where a rotation ends"
+                f"follower.yaw_goal_tolerance_rad ({self.follower.yaw_goal_tolerance_rad:g}) must be at least the "
+                f"motion style's facing tolerance ({self.style.facing_tolerance_deg:g} deg), where a rotation ends"
             )
 
 
@@ -107,7 +107,11 @@ class ControllerComponent:
         goal = self.follower.goal
         if status is Status.ARRIVED and before is not Status.ARRIVED and goal is not None:
             self._arrived_at = now
-        if self._arrived_at is not None and goal is not None and (self._at_rest() or now - self._arrived_at >= REST_WAIT_S):
+        if (
+            self._arrived_at is not None
+            and goal is not None
+            and (self._at_rest() or now - self._arrived_at >= REST_WAIT_S)
+        ):
             self._arrived_at = None
             if not self.follower.at_goal(self.robot):
                 xy, yaw = self.follower.off_goal(self.robot)
@@ -116,7 +120,9 @@ class ControllerComponent:
                 self.follower.correct(self.robot)
                 return out
             pose = [round(v, 3) for v in self.robot]
-            reached = event(EventKind.GOAL_REACHED, now, Source.CONTROLLER, goal=[round(goal.x, 3), round(goal.y, 3)], pose=pose)
+            reached = event(
+                EventKind.GOAL_REACHED, now, Source.CONTROLLER, goal=[round(goal.x, 3), round(goal.y, 3)], pose=pose
+            )
             out.append(Message(topics.EVENTS, reached, now))
         return out
 

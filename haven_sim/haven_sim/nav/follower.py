@@ -36,12 +36,15 @@ class FollowerParams:
     linear_speed_mps: float = from_robot("motion.cruise_speed_mps")  # along arcs and straights
     min_linear_speed_mps: float = param(0.05, "slowest speed while still driving toward a stop", POSITIVE)
     goal_tolerance_m: float = param(
-        0.1, "the goal checker's xy tolerance: the goal counts as reached with the robot at rest this close (Nav2's default: 0.25)", POSITIVE
+        0.1,
+        "the goal checker's xy tolerance: the goal counts as reached "
+        "with the robot at rest this close (Nav2's default: 0.25)",
+        POSITIVE,
     )
     yaw_goal_tolerance_rad: float = param(
         0.1,
-        "the goal checker's yaw tolerance: at rest, the robot must face the path's last pose this closely (Nav2's default: 0.25); "
-        "at least the motion style's facing tolerance, where a rotation ends",
+        "the goal checker's yaw tolerance: at rest, the robot must face the path's last pose this closely "
+        "(Nav2's default: 0.25); at least the motion style's facing tolerance, where a rotation ends",
         POSITIVE,
     )
     lookahead_m: float = param(0.35, "pure-pursuit lookahead along the path", POSITIVE)
@@ -173,7 +176,9 @@ class PathFollower:
         p = self.params
         total = piece.length
         # Searched forward from the last progress, so a path that loops back is still followed in order.
-        self._progress = max(self._progress, piece.project(pose.x, pose.y, self._progress, self._progress + 2.0 * p.lookahead_m + 0.5).s)
+        self._progress = max(
+            self._progress, piece.project(pose.x, pose.y, self._progress, self._progress + 2.0 * p.lookahead_m + 0.5).s
+        )
         remaining = total - self._progress
         end = piece.point_at(total)
         to_end = math.hypot(end[0] - pose.x, end[1] - pose.y)

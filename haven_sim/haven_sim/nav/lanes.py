@@ -71,13 +71,21 @@ def _onto(route: list[Point], lane: Lane, visible: VisibleFn) -> list[Point]:
     if along[run].max() - along[run].min() < MIN_COVER * lane_len:
         return route
     centre = Polyline(lane.points if along[run[-1]] >= along[run[0]] else lane.points[::-1])
-    a_in, a_out = (along[run[0]], along[run[-1]]) if along[run[-1]] >= along[run[0]] else (lane_len - along[run[0]], lane_len - along[run[-1]])
+    a_in, a_out = (
+        (along[run[0]], along[run[-1]])
+        if along[run[-1]] >= along[run[0]]
+        else (lane_len - along[run[0]], lane_len - along[run[-1]])
+    )
     # Join at the hallway's end, or, for a route that starts (ends) inside it, a little ahead (behind).
     join = 0.0 if run[0] > 0 else min(a_in + JOIN_M, lane_len)
     leave = lane_len if run[-1] < len(s) - 1 else max(a_out - JOIN_M, join)
     middle = (
         [centre.point_at(join)]
-        + [(float(p[0]), float(p[1])) for p, c in zip(centre.points, centre.cumulative, strict=True) if join < c < leave]
+        + [
+            (float(p[0]), float(p[1]))
+            for p, c in zip(centre.points, centre.cumulative, strict=True)
+            if join < c < leave
+        ]
         + [centre.point_at(leave)]
     )
     s_in, s_out = s[run[0]], s[run[-1]]

@@ -20,10 +20,16 @@ from haven_sim.robots.fields import from_robot
 @dataclass(frozen=True)
 class MotionStyle:
     arc_max_angle_deg: float = param(
-        60.0, "HAVEN: heading changes beyond this stop the robot and rotate it in place", Bounds(0.0, 180.0, low_open=True)
+        60.0,
+        "HAVEN: heading changes beyond this stop the robot and rotate it in place",
+        Bounds(0.0, 180.0, low_open=True),
     )
-    too_close_distance_m: float = param(0.5, "HAVEN: a leg shorter than this also starts with a rotation in place", NOT_NEGATIVE)
-    facing_tolerance_deg: float = param(5.0, "HAVEN: a rotation in place ends within this", Bounds(0.0, 90.0, low_open=True, high_open=True))
+    too_close_distance_m: float = param(
+        0.5, "HAVEN: a leg shorter than this also starts with a rotation in place", NOT_NEGATIVE
+    )
+    facing_tolerance_deg: float = param(
+        5.0, "HAVEN: a rotation in place ends within this", Bounds(0.0, 90.0, low_open=True, high_open=True)
+    )
     rotate_speed_deg_s: float = param(50.0, "HAVEN's rate of rotating in place", POSITIVE)
     rotate_in_place: bool = from_robot("motion.rotate_in_place")  # a holonomic robot turns while it moves instead
 

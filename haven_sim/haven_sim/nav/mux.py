@@ -35,7 +35,9 @@ class MuxConfig:
     teleop_timeout_s: float = param(0.5, "teleop hands control back this long after its last command", POSITIVE)
     nav_timeout_s: float = param(0.5, "navigation commands older than this are stale", POSITIVE)
     rate_hz: float = param(20.0, "/cmd_vel is re-sent at this rate while a source is active", POSITIVE)
-    estop_hold_s: float = param(ESTOP_HOLD_S, "a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE)
+    estop_hold_s: float = param(
+        ESTOP_HOLD_S, "a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE
+    )
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -48,7 +50,9 @@ class MuxOutput:
 
 
 class VelocityMux:
-    def __init__(self, teleop_timeout_s: float = 0.5, nav_timeout_s: float = 0.5, estop_hold_s: float = ESTOP_HOLD_S) -> None:
+    def __init__(
+        self, teleop_timeout_s: float = 0.5, nav_timeout_s: float = 0.5, estop_hold_s: float = ESTOP_HOLD_S
+    ) -> None:
         self.teleop_timeout_s = teleop_timeout_s
         self.nav_timeout_s = nav_timeout_s
         self.latch = EStopLatch(estop_hold_s)

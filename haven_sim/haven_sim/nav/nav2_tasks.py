@@ -51,8 +51,9 @@ PROGRESS_RADIUS_M = 0.5
 class Nav2TaskParams:
     progress_timeout_s: float = param(
         30.0,
-        "a Nav2 task whose robot has not moved 0.5 m in this much sim time fails (FAILED_TO_MAKE_PROGRESS), as Nav2's does once "
-        "its progress checker (10 s) and recoveries are spent: a person who never leaves the way does not hold a client forever",
+        "a Nav2 task whose robot has not moved 0.5 m in this much sim time fails (FAILED_TO_MAKE_PROGRESS), "
+        "as Nav2's does once its progress checker (10 s) and recoveries are spent: "
+        "a person who never leaves the way does not hold a client forever",
         POSITIVE,
     )
 
@@ -134,7 +135,12 @@ class NavTask:
             elif self._planned:  # a plan for somebody else's goal: ours is preempted, as in Nav2
                 self._end(Outcome.ABORTED, "preempted by a plan for another goal")
             # (else a plan for an earlier goal, made before ours came: ours is still to come)
-        elif kind is EventKind.PLAN_REFUSED and self.kind is not TaskKind.FOLLOW_PATH and not self._planned and (goal is None or self._is_ours(goal)):
+        elif (
+            kind is EventKind.PLAN_REFUSED
+            and self.kind is not TaskKind.FOLLOW_PATH
+            and not self._planned
+            and (goal is None or self._is_ours(goal))
+        ):
             failure = PlanFailure(e.data.get("failure", PlanFailure.UNKNOWN))
             return self._failed(failure, str(e.data.get("reason", "")), now)
         elif kind is EventKind.GOAL_CANCELLED:
@@ -154,7 +160,12 @@ class NavTask:
         """The robot's pose; navigate_through_poses goes on to the next pose once the robot has
         come within VIAPOINT_RADIUS_M of one on the way (Nav2 passes them, it does not stop)."""
         self._robot = state
-        on_the_way = self.kind is TaskKind.NAVIGATE_THROUGH_POSES and self.outcome is None and self._planned and self.index + 1 < len(self.poses)
+        on_the_way = (
+            self.kind is TaskKind.NAVIGATE_THROUGH_POSES
+            and self.outcome is None
+            and self._planned
+            and self.index + 1 < len(self.poses)
+        )
         if not on_the_way or math.hypot(state.pose.x - self.target.x, state.pose.y - self.target.y) > VIAPOINT_RADIUS_M:
             return []
         self.index += 1
@@ -170,7 +181,10 @@ class NavTask:
         here = self._robot.pose if self._robot is not None else None
         if self.outcome is not None or here is None:
             return []
-        if self._anchor is None or math.hypot(here.x - self._anchor[0].x, here.y - self._anchor[0].y) > PROGRESS_RADIUS_M:
+        if (
+            self._anchor is None
+            or math.hypot(here.x - self._anchor[0].x, here.y - self._anchor[0].y) > PROGRESS_RADIUS_M
+        ):
             self._anchor = (here, now)
         if now - self._anchor[1] < timeout_s:
             return []

@@ -148,7 +148,9 @@ class Navigator:
         return goal.yaw if (goal is not None and self.params.use_goal_yaw and math.isfinite(goal.yaw)) else None
 
     def _shape(self, points: Sequence[Point], robot: Pose2D, planner: GridPlanner | None = None) -> list[Pose2D]:
-        return shape_path(points, robot.yaw, self.style, self.shape, (planner or self.planner).hard_clear, self._goal_yaw())
+        return shape_path(
+            points, robot.yaw, self.style, self.shape, (planner or self.planner).hard_clear, self._goal_yaw()
+        )
 
     def _event(self, kind: EventKind, now: float, **data: Any) -> Event:
         return event(kind, now, Source.PLANNER, **data)
@@ -162,7 +164,9 @@ class Navigator:
             plan = self._plan(self.search, (robot.x, robot.y), (goal.x, goal.y))
         except PlanningError as e:
             out = self.cancel()
-            out.events.append(self._event(EventKind.PLAN_REFUSED, now, goal=_xy((goal.x, goal.y)), reason=str(e), failure=e.failure))
+            out.events.append(
+                self._event(EventKind.PLAN_REFUSED, now, goal=_xy((goal.x, goal.y)), reason=str(e), failure=e.failure)
+            )
             return out
         self.goal = goal
         points = onto_lanes(plan.points, self.lanes, self._visible) if self.lanes else plan.points
@@ -172,7 +176,15 @@ class Navigator:
         self._follow(poses, NavState.FOLLOWING)
         self.original = poses
         out.path, out.waiting = poses, False
-        out.events.append(self._event(EventKind.PLAN_MADE, now, goal=_xy((goal.x, goal.y)), length_m=round(self.route.length, 3), poses=len(poses)))
+        out.events.append(
+            self._event(
+                EventKind.PLAN_MADE,
+                now,
+                goal=_xy((goal.x, goal.y)),
+                length_m=round(self.route.length, 3),
+                poses=len(poses),
+            )
+        )
         return out
 
     def cancel(self) -> NavOutput:
@@ -189,17 +201,27 @@ class Navigator:
     # -- watching ----------------------------------------------------------------------------------
     def _advance(self, robot: Pose2D) -> None:
         if len(self._line) >= 2:
-            self._progress = max(self._progress, self._line.project(robot.x, robot.y, self._progress, self._progress + 16.0).s)
+            self._progress = max(
+                self._progress, self._line.project(robot.x, robot.y, self._progress, self._progress + 16.0).s
+            )
         if len(self.route) >= 2:
-            self._route_s = max(self._route_s, self.route.project(robot.x, robot.y, self._route_s, self._route_s + 16.0).s)
+            self._route_s = max(
+                self._route_s, self.route.project(robot.x, robot.y, self._route_s, self._route_s + 16.0).s
+            )
 
-    def _on_path(self, line: Polyline, s_from: float, humans: Sequence[Point], within: float | None = None) -> _OnPath | None:
+    def _on_path(
+        self, line: Polyline, s_from: float, humans: Sequence[Point], within: float | None = None
+    ) -> _OnPath | None:
         """The person ahead on `line` (from arc length `s_from`; closer to it than `within`, by
         default the "on the path" distance) that the robot meets first."""
         best: _OnPath | None = None
         for h in humans:
             proj = line.project(h[0], h[1], s_from)
-            if proj.distance < (within or self.block_distance_m) and proj.s > s_from + 1e-6 and (best is None or proj.s < best.s):
+            if (
+                proj.distance < (within or self.block_distance_m)
+                and proj.s > s_from + 1e-6
+                and (best is None or proj.s < best.s)
+            ):
                 best = _OnPath(proj.s, offset_from(line, proj.s, h), h)
         return best
 
@@ -230,7 +252,8 @@ class Navigator:
         # standing at the robot's next stop cannot be passed (no way back onto the route after them).
         at_stop = self.route.length - self.route.project(*person.xy).s < self._past + 0.05
         passing = None if at_stop else self._pass(robot, person, humans, towards > ONCOMING_MPS)
-        if passing is None and not at_stop and gap > self._need(self.params.pass_gap_m):  # not round someone at arm's length
+        # not round someone at arm's length
+        if passing is None and not at_stop and gap > self._need(self.params.pass_gap_m):
             passing = self._replan_around(robot, person, humans, now)
         if passing is not None:
             if self.state is NavState.WAITING:
@@ -239,7 +262,12 @@ class Navigator:
             self._follow(passing.poses, NavState.DETOUR, passing.back_s)
             self.side = passing.side
             out.path = passing.poses
-            data = {"side": passing.side, "human": _xy(person.xy), "gap_m": round(gap, 2), "clearance_m": round(passing.clearance_m, 2)}
+            data = {
+                "side": passing.side,
+                "human": _xy(person.xy),
+                "gap_m": round(gap, 2),
+                "clearance_m": round(passing.clearance_m, 2),
+            }
             out.events.append(self._event(EventKind.REPLANNED, now, reason="human on the path", **data))
             return out
         wait_gap = self.params.wait_distance_m  # (beyond the arm's length below, where re-planning is not tried)
@@ -247,7 +275,9 @@ class Navigator:
             reason = "human at the robot's next stop" if at_stop else "human on the path and no room to pass"
             self.state = NavState.WAITING
             out.waiting = True
-            out.events.append(self._event(EventKind.WAITING, now, reason=f"{reason}, {gap:.1f} m ahead", human=_xy(person.xy)))
+            out.events.append(
+                self._event(EventKind.WAITING, now, reason=f"{reason}, {gap:.1f} m ahead", human=_xy(person.xy))
+            )
         return out
 
     def _speeds(self, person: _OnPath, robot: Pose2D, humans: Sequence[Point], now: float) -> tuple[float, float]:
@@ -287,7 +317,9 @@ class Navigator:
         s_h = route.project(*person.xy).s
         e = offset_from(route, s_h, person.xy)
         around = (s_h - self._past, s_h + self._past)
-        room = {side: room_beside(route, self.planner, *around, sign) for side, sign in (("left", 1.0), ("right", -1.0))}
+        room = {
+            side: room_beside(route, self.planner, *around, sign) for side, sign in (("left", 1.0), ("right", -1.0))
+        }
         lateral = {
             "left": min(room["left"], e + self._need(p.pass_gap_m)),
             "right": -min(room["right"], -e + self._need(p.pass_gap_m)),
@@ -335,7 +367,11 @@ class Navigator:
         """The route from arc length s (where a detour meets it again) to its end."""
         route, end = self.route, self.route.length - 0.05
         back = [route.point_at(s)] if s < end else []
-        return back + [(float(x), float(y)) for (x, y), c in zip(route.points, route.cumulative, strict=True) if c > min(s, end) + 1e-6]
+        return back + [
+            (float(x), float(y))
+            for (x, y), c in zip(route.points, route.cumulative, strict=True)
+            if c > min(s, end) + 1e-6
+        ]
 
     def _clear(self, pts: Sequence[Point], humans: Sequence[Point], by: float | None = None) -> bool:
         """Every leg free of walls, and every person further than `by` (default: the "on the path"
@@ -380,11 +416,19 @@ class Navigator:
         room_right = self.planner.free_run(human, (-n[0], -n[1]))
         side = "left" if room_left >= room_right else "right"
         closed = (-n[0], -n[1]) if side == "left" else n
-        if max(room_left, room_right) - self.planner_params.inflation_m < self._need(self.params.min_pass_gap_m) - HUMAN_BODY.radius_m:
+        if (
+            max(room_left, room_right) - self.planner_params.inflation_m
+            < self._need(self.params.min_pass_gap_m) - HUMAN_BODY.radius_m
+        ):
             return None
         radius = HUMAN_BODY.radius_m + self.params.path_gap_m  # as wide as the "on the path" test
         grid = with_people(
-            self.grid, humans, radius, human, closed, min(room_left if side == "right" else room_right, 10.0) + self.planner_params.inflation_m
+            self.grid,
+            humans,
+            radius,
+            human,
+            closed,
+            min(room_left if side == "right" else room_right, 10.0) + self.planner_params.inflation_m,
         )
         planner = GridPlanner(grid, self.planner_params)
         try:

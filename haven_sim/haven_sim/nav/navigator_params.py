@@ -16,22 +16,36 @@ WAIT_MARGIN_M = 0.3  # a wide robot brakes this far beyond arm's length (it rest
 class NavigatorParams:
     pass_start_m: float = param(
         4.0,
-        "start passing a person on the path this far ahead, along it (about the far edge of Hall's social zone, 3.6 m, plus the robot's reaction)",
+        "start passing a person on the path this far ahead, along it (about "
+        "the far edge of Hall's social zone, 3.6 m, plus the robot's reaction)",
         NOT_NEGATIVE,
     )
     pass_start_s: float = param(
-        6.0, "... or this long before meeting them, for a person coming toward the robot (closing speed estimated from /humans)"
+        6.0,
+        "... or this long before meeting them, for a person coming "
+        "toward the robot (closing speed estimated from /humans)",
     )
-    pass_clearance_m: float = param(0.3, "preferred gap between the robot's and the person's bodies when passing", NOT_NEGATIVE)
-    min_pass_clearance_m: float = param(0.15, "passing needs at least this gap; otherwise the robot waits", NOT_NEGATIVE)
-    pass_angle_deg: float = param(30.0, "heading change of the curve out to the passing line and back", Bounds(5.0, 60.0))
-    signal_lead_m: float = param(0.6, "straight driven before the curve so that the turn signal shows first", NOT_NEGATIVE)
+    pass_clearance_m: float = param(
+        0.3, "preferred gap between the robot's and the person's bodies when passing", NOT_NEGATIVE
+    )
+    min_pass_clearance_m: float = param(
+        0.15, "passing needs at least this gap; otherwise the robot waits", NOT_NEGATIVE
+    )
+    pass_angle_deg: float = param(
+        30.0, "heading change of the curve out to the passing line and back", Bounds(5.0, 60.0)
+    )
+    signal_lead_m: float = param(
+        0.6, "straight driven before the curve so that the turn signal shows first", NOT_NEGATIVE
+    )
     wait_gap_m: float = param(
         1.2,
-        "a person who cannot be passed makes the robot brake this close ahead along the path (Hall's personal zone; it rests a little nearer)",
+        "a person who cannot be passed makes the robot brake this close "
+        "ahead along the path (Hall's personal zone; it rests a little nearer)",
         NOT_NEGATIVE,
     )
-    path_clearance_m: float = param(0.1, "a person within body radii + this of the upcoming path blocks it", NOT_NEGATIVE)
+    path_clearance_m: float = param(
+        0.1, "a person within body radii + this of the upcoming path blocks it", NOT_NEGATIVE
+    )
     diverge_m: float = param(0.15, "off the route by more than this, the robot is on a detour", NOT_NEGATIVE)
     goal_tolerance_m: float = param(0.1, "the goal counts as reached this close", NOT_NEGATIVE)
     use_goal_yaw: bool = param(True, "rotate to the goal's orientation at the end")

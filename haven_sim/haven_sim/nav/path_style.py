@@ -28,8 +28,12 @@ class ShapeParams:
     marker_spacing_m: float = param(0.4, "pose spacing of /plan along straight parts and arcs", POSITIVE)
     rotate_step_deg: float = param(15.0, "pose spacing of /plan's rotations in place", POSITIVE)
     max_arc_radius_m: float = param(1.0, "corners become arcs of at most this radius", POSITIVE)
-    min_arc_radius_m: float = param(0.15, "an arc that must be tighter than this to clear obstacles becomes a rotation", POSITIVE)
-    straight_tolerance_deg: float = param(2.0, "heading changes smaller than this are not corners", Bounds(0.0, 90.0, high_open=True))
+    min_arc_radius_m: float = param(
+        0.15, "an arc that must be tighter than this to clear obstacles becomes a rotation", POSITIVE
+    )
+    straight_tolerance_deg: float = param(
+        2.0, "heading changes smaller than this are not corners", Bounds(0.0, 90.0, high_open=True)
+    )
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -128,7 +132,11 @@ def shape_path(
     p = params or ShapeParams()
     clear = is_clear or (lambda pts: True)
     pts = [points[0]] + [q for a, q in itertools.pairwise(points) if _dist(a, q) > 1e-9]
-    if len(pts) >= 2 and not m.rotate_in_place and abs(wrap_angle(_heading(pts[0], pts[1]) - start_yaw)) > m.arc_max_angle_rad:
+    if (
+        len(pts) >= 2
+        and not m.rotate_in_place
+        and abs(wrap_angle(_heading(pts[0], pts[1]) - start_yaw)) > m.arc_max_angle_rad
+    ):
         # A holonomic robot sets off straight where a differential drive would rotate first (an
         # arc from its heading would swing it away from the way, up to a loop).
         start_yaw = _heading(pts[0], pts[1])

@@ -13,7 +13,12 @@ from haven_sim.sim.occupancy import OCCUPIED, OccupancyGridData
 
 
 def with_people(
-    grid: OccupancyGridData, people: Sequence[Point], radius_m: float, blocker: Point, closed: Point, closed_len_m: float
+    grid: OccupancyGridData,
+    people: Sequence[Point],
+    radius_m: float,
+    blocker: Point,
+    closed: Point,
+    closed_len_m: float,
 ) -> OccupancyGridData:
     """`grid` with a disc of `radius_m` at every person and a wall `closed_len_m` long from the
     blocking person along `closed` (the side the robot must not take)."""

@@ -94,9 +94,10 @@ def graph_problem(nodes: int, grid: OccupancyGridData, params: PlannerParams) ->
     if nodes <= MAX_PLANNER_NODES and work <= MAX_SIGHT_WORK:
         return None
     return (
-        f"the map has {nodes:,} corners for the built-in planner (obstacles inflated by {params.inflation_m:.2f} m), more than it "
-        f"takes on a {grid.width * grid.resolution_m:g} m x {grid.height * grid.resolution_m:g} m map (at most {MAX_PLANNER_NODES:,}, "
-        f"and corner pairs x the map's diagonal in half cells at most {MAX_SIGHT_WORK:,}): merge small obstacles or use a coarser map"
+        f"the map has {nodes:,} corners for the built-in planner (obstacles inflated by {params.inflation_m:.2f} m), "
+        f"more than it takes on a {grid.width * grid.resolution_m:g} m x {grid.height * grid.resolution_m:g} m map "
+        f"(at most {MAX_PLANNER_NODES:,}, and corner pairs x the map's diagonal in half "
+        f"cells at most {MAX_SIGHT_WORK:,}): merge small obstacles or use a coarser map"
     )
 
 
@@ -190,7 +191,9 @@ class GridPlanner:
     # -- geometry helpers ------------------------------------------------------------------------
     def _centres(self, rc: npt.NDArray[np.intp]) -> FloatArray:
         g = self.grid
-        return np.column_stack([g.origin_x + (rc[:, 1] + 0.5) * g.resolution_m, g.origin_y + (rc[:, 0] + 0.5) * g.resolution_m]).astype(float)
+        return np.column_stack(
+            [g.origin_x + (rc[:, 1] + 0.5) * g.resolution_m, g.origin_y + (rc[:, 0] + 0.5) * g.resolution_m]
+        ).astype(float)
 
     def is_free(self, x: float, y: float) -> bool:
         r, c = self.grid.cell_of(x, y)
@@ -330,7 +333,9 @@ class GridPlanner:
         vs, vg = np.flatnonzero(vis[:n]), np.flatnonzero(vis[n:])
         if len(vs) == 0 or len(vg) == 0:
             who = "start" if len(vs) == 0 else "goal"
-            raise PlanningError(f"{who} ({(s if who == 'start' else g)[0]:.2f}, {(s if who == 'start' else g)[1]:.2f}) sees no way out")
+            raise PlanningError(
+                f"{who} ({(s if who == 'start' else g)[0]:.2f}, {(s if who == 'start' else g)[1]:.2f}) sees no way out"
+            )
         ds = np.hypot(*(self.nodes[vs] - sa).T)
         dg = np.hypot(*(self.nodes[vg] - ga).T)
         total = ds[:, None] + dist[np.ix_(vs, vg)] + dg[None, :]

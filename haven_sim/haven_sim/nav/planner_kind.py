@@ -71,7 +71,9 @@ class _Search:
         if self.inner is None:
             raise PlanningError("the planner could not be made", PlanFailure.UNKNOWN)
         try:
-            made: Plan = contain.call("planners", self.owner.name, self.inner.plan, start, goal, expected=(PlanningError,))
+            made: Plan = contain.call(
+                "planners", self.owner.name, self.inner.plan, start, goal, expected=(PlanningError,)
+            )
         except contain.PluginFailed as e:
             self.owner.failed.append(e)
             raise PlanningError(f"the planner failed: {e.error}", PlanFailure.UNKNOWN) from None

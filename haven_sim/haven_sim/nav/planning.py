@@ -50,16 +50,22 @@ class PlannerConfig:
     style: MotionStyle = group(MotionStyle)
     navigator: NavigatorParams = group(NavigatorParams)
     algorithm: str = param(
-        "visibility", "the path planner: a registered planner (haven plugins), whose points are shaped into arcs, straights and rotations"
+        "visibility",
+        "the path planner: a registered planner (haven plugins), "
+        "whose points are shaped into arcs, straights and rotations",
     )
     check_rate_hz: float = param(5.0, "how often the path is checked for people (sim time)", POSITIVE)
     goal_interval_s: float = param(
         0.1,
-        "goals closer together than this (sim time) are coalesced: the newest is planned once it has passed (a goal storm: one plan each)",
+        "goals closer together than this (sim time) are coalesced: "
+        "the newest is planned once it has passed (a goal storm: one plan each)",
         Bounds(0.0, 10.0),
     )
     map_frame: str = param("map", "frame of /plan and of accepted goals")
-    world: str = param("", "world file whose hallway centre lines the robot keeps to ('': plan on /map alone; haven run passes its world)")
+    world: str = param(
+        "",
+        "world file whose hallway centre lines the robot keeps to ('': plan on /map alone; haven run passes its world)",
+    )
 
     def __post_init__(self) -> None:
         check_bounds(self)
@@ -114,7 +120,9 @@ class PlannerComponent:
             self.nav = Navigator(grid, c.planner, c.shape, c.navigator, c.style, self.lanes, planner_class(c.algorithm))
         else:
             self.nav.set_map(grid)
-        self.notes.append(f"map {grid.width} x {grid.height} at {grid.resolution_m:g} m; path planner {self.config.algorithm}")
+        self.notes.append(
+            f"map {grid.width} x {grid.height} at {grid.resolution_m:g} m; path planner {self.config.algorithm}"
+        )
         return self._try_pending(now)
 
     def on_odom(self, state: RobotState, now: float) -> list[Message]:
@@ -134,10 +142,14 @@ class PlannerComponent:
         if self.last_goal is None or now - self.last_goal >= STORM_QUIET_S:
             self.burst, self.burst_start = 0, now  # goals since the last quiet spell
         self.burst, self.last_goal = self.burst + 1, now
-        if self.pending is not None and self.nav is not None and self.robot is not None:  # one not planned yet: the newest wins
+        # one not planned yet: the newest wins
+        if self.pending is not None and self.nav is not None and self.robot is not None:
             if self.storm is None:
                 self.storm = GoalStorm(self.burst_start, self.burst - 1)
-                self.warnings.append(f"goal storm: goals closer together than {self.config.goal_interval_s:g} s; planning only the newest (counted)")
+                self.warnings.append(
+                    "goal storm: goals closer together than "
+                    f"{self.config.goal_interval_s:g} s; planning only the newest (counted)"
+                )
             self.storm.superseded += 1
         if self.storm is not None:
             self.storm.goals += 1
@@ -169,7 +181,11 @@ class PlannerComponent:
             return []  # coalesced: planned once the interval has passed (at an /odom or the next check)
         goal, self.pending, self.planned_at = self.pending, None, now
         out = self.nav.set_goal(self.robot, goal, now)
-        self.warnings += [f"refused goal ({goal.x:.2f}, {goal.y:.2f}): {e['reason']}" for e in out.events if e.kind is EventKind.PLAN_REFUSED]
+        self.warnings += [
+            f"refused goal ({goal.x:.2f}, {goal.y:.2f}): {e['reason']}"
+            for e in out.events
+            if e.kind is EventKind.PLAN_REFUSED
+        ]
         return self._messages(out, now)
 
     def tick(self, now: float) -> list[Message]:
@@ -179,7 +195,8 @@ class PlannerComponent:
         return self._failures(now) + out + self._messages(self.nav.update(self.robot, self.humans, now), now)
 
     def _failures(self, now: float) -> list[Message]:
-        """A `plugin_failed` event for the lab's planner's first failure (common/contain.py): the trial ends, not valid."""
+        """A `plugin_failed` event for the lab's planner's first failure (common/contain.py): the trial ends, not
+        valid."""
         search = self.nav.search_class if self.nav is not None else None
         if not isinstance(search, Contained) or not search.failed or self.told_failure:
             return []
@@ -194,7 +211,9 @@ class PlannerComponent:
             return []
         self.storm, seconds = None, round(last - storm.start, 3)
         self.notes.append(f"goal storm over: {storm.goals} goals in {seconds:g} s, {storm.superseded} never planned")
-        e = event(EventKind.GOAL_STORM, now, Source.PLANNER, goals=storm.goals, superseded=storm.superseded, seconds=seconds)
+        e = event(
+            EventKind.GOAL_STORM, now, Source.PLANNER, goals=storm.goals, superseded=storm.superseded, seconds=seconds
+        )
         return [Message(topics.EVENTS, e, now)]
 
     @staticmethod

@@ -60,7 +60,9 @@ def declare_config(node: Node, cls: type[C], runtime: frozenset[str] = frozenset
         descriptor = ParameterDescriptor(description=described.get(name, ""), read_only=read_only)
         span = ros_range(bounded.get(name))
         if span is not None and isinstance(default, float):
-            descriptor.floating_point_range = [FloatingPointRange(from_value=float(span[0]), to_value=float(span[1]), step=0.0)]
+            descriptor.floating_point_range = [
+                FloatingPointRange(from_value=float(span[0]), to_value=float(span[1]), step=0.0)
+            ]
         elif span is not None and isinstance(default, int) and not isinstance(default, bool):
             descriptor.integer_range = [IntegerRange(from_value=int(span[0]), to_value=int(span[1]), step=0)]
         try:
@@ -92,7 +94,11 @@ class ComponentNode(Node):
         # A /clock message from another node can make time leap far ahead and back: a timer whose
         # next call was computed from the leap would then not fire again for years. Each leap
         # (either way) restarts the timers from the time it landed on.
-        leap = JumpThreshold(min_forward=Duration(seconds=CLOCK_LEAP_S), min_backward=Duration(seconds=-CLOCK_LEAP_S), on_clock_change=False)
+        leap = JumpThreshold(
+            min_forward=Duration(seconds=CLOCK_LEAP_S),
+            min_backward=Duration(seconds=-CLOCK_LEAP_S),
+            on_clock_change=False,
+        )
         self._leap_handle = self.get_clock().create_jump_callback(leap, post_callback=self._restart_timers)
 
     def _restart_timers(self, jump: TimeJump) -> None:
@@ -127,7 +133,11 @@ class ComponentNode(Node):
 
     def refused_request(self, what: str, name: str, reason: str) -> Message:
         now = self.now()
-        return Message(topics.EVENTS, event(EventKind.REQUEST_REFUSED, now, self.get_name(), request=what, name=name, reason=reason), now)
+        return Message(
+            topics.EVENTS,
+            event(EventKind.REQUEST_REFUSED, now, self.get_name(), request=what, name=name, reason=reason),
+            now,
+        )
 
     def emit(self, messages: Sequence[Message]) -> None:
         """What the node makes between its inputs (a toggled cue, a refused request): published now,
@@ -154,7 +164,9 @@ class ComponentNode(Node):
         self.lockstep_mode = self.lockstep_params.lockstep
         if self.lockstep_mode:  # (the simulator, which runs the clock, reads its inputs itself)
             if participant:
-                self.lockstep = LockstepParticipant(self, component, self._specs, self.publish, self._pubs, self.lockstep_params, self.deferred)
+                self.lockstep = LockstepParticipant(
+                    self, component, self._specs, self.publish, self._pubs, self.lockstep_params, self.deferred
+                )
             return
         for topic, handler in component.handlers().items():
             spec = self._specs[topic]
@@ -162,7 +174,10 @@ class ComponentNode(Node):
             def on_message(msg: Any, topic: str = topic, spec: TopicSpec = spec, handler: Any = handler) -> None:
                 if not self.limit.admit(topic, (msg,), self.now()):
                     n, name = self.limit.dropped[topic], self.resolve_topic_name(topic)
-                    self.get_logger().warning(f"{name}: more than {FLOOD_RATE_HZ:g} messages a second: {n} dropped so far", throttle_duration_sec=5.0)
+                    self.get_logger().warning(
+                        f"{name}: more than {FLOOD_RATE_HZ:g} messages a second: {n} dropped so far",
+                        throttle_duration_sec=5.0,
+                    )
                     return
                 try:
                     data = spec.decode(msg)
@@ -186,7 +201,9 @@ class ComponentNode(Node):
             heard, said = self._specs[topics.PACE_NAV], self._specs[topics.PACE]
             relay = self.create_publisher(said.msg_type, topics.PACE, said.pub_qos)
             ours = self.sole_writer(topics.PACE_NAV, nodes.CONTROLLER.name)
-            self.create_subscription(heard.msg_type, topics.PACE_NAV, lambda m: relay.publish(m) if ours() else None, heard.sub_qos)
+            self.create_subscription(
+                heard.msg_type, topics.PACE_NAV, lambda m: relay.publish(m) if ours() else None, heard.sub_qos
+            )
         self._warned: set[tuple[str, str]] = set()
         self.create_timer(2.0, self._check_types, clock=Clock(clock_type=ClockType.STEADY_TIME))
 
@@ -203,7 +220,15 @@ class ComponentNode(Node):
         suite's supervisor ends the trial; the recording has the reason)."""
         now = self.now()
         self.get_logger().error(f"{failed.reason}: this node ends")
-        self.publish([Message(topics.EVENTS, contain.failed_event(failed, now, getattr(self.component, "name", self.get_name())), now)])
+        self.publish(
+            [
+                Message(
+                    topics.EVENTS,
+                    contain.failed_event(failed, now, getattr(self.component, "name", self.get_name())),
+                    now,
+                )
+            ]
+        )
         time.sleep(STUCK_DELIVERY_S)
         os._exit(contain.STUCK_EXIT)
 
@@ -228,8 +253,14 @@ class ComponentNode(Node):
             for info in self.get_publishers_info_by_topic(name):
                 if info.topic_type != ours and (name, info.topic_type) not in self._warned:
                     self._warned.add((name, info.topic_type))
-                    hint = " (set the stamped_cmd_vel parameter to match)" if "Twist" in ours and "Twist" in info.topic_type else ""
-                    self.get_logger().warning(f"{name}: {info.node_name} publishes {info.topic_type}, this node reads {ours}; ignored{hint}")
+                    hint = (
+                        " (set the stamped_cmd_vel parameter to match)"
+                        if "Twist" in ours and "Twist" in info.topic_type
+                        else ""
+                    )
+                    self.get_logger().warning(
+                        f"{name}: {info.node_name} publishes {info.topic_type}, this node reads {ours}; ignored{hint}"
+                    )
 
     def _subscribe(self, topic: str, spec: TopicSpec, on_message: Callable[[Any], None]) -> Subscription:
         """A reader with the spec's QoS. With `best_effort_too`, also a best-effort one, which
@@ -266,8 +297,12 @@ class ComponentNode(Node):
         late: list[Subscription] = []  # the latched reader, while there is one
 
         def catch_up() -> None:
-            offered = [(i.qos_profile.durability, i.qos_profile.reliability) for i in self.get_publishers_info_by_topic(name)]
-            wanted = time.monotonic() - started < CATCH_UP_S and set(offered) == {(DurabilityPolicy.TRANSIENT_LOCAL, ReliabilityPolicy.RELIABLE)}
+            offered = [
+                (i.qos_profile.durability, i.qos_profile.reliability) for i in self.get_publishers_info_by_topic(name)
+            ]
+            wanted = time.monotonic() - started < CATCH_UP_S and set(offered) == {
+                (DurabilityPolicy.TRANSIENT_LOCAL, ReliabilityPolicy.RELIABLE)
+            }
             if wanted and not late:
                 late.append(self.create_subscription(spec.msg_type, topic, once, late_qos, event_callbacks=quiet))  # type: ignore[arg-type]
             elif not wanted and late:

@@ -86,7 +86,9 @@ def twist_stamped_msg(t: Twist2D, stamp: float, frame_id: str = "base_footprint"
     return msg
 
 
-def odometry_msg(stamp: float, state: RobotState, frame_id: str = "odom", child_frame_id: str = "base_footprint") -> Odometry:
+def odometry_msg(
+    stamp: float, state: RobotState, frame_id: str = "odom", child_frame_id: str = "base_footprint"
+) -> Odometry:
     msg = Odometry()
     msg.header.stamp = time_msg(stamp)
     msg.header.frame_id = frame_id

@@ -59,8 +59,15 @@ def tick_topic(participant: str) -> str:
 CONTROL = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=ReliabilityPolicy.RELIABLE)
 # Each participant keeps its last hello for late readers; the coordinator keeps every one it gets
 # (several writers' hellos arrive at once, and a reader of depth 1 would keep only the last).
-ANNOUNCE = QoSProfile(depth=1, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
-ANNOUNCED = QoSProfile(history=HistoryPolicy.KEEP_ALL, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+ANNOUNCE = QoSProfile(
+    depth=1,
+    history=HistoryPolicy.KEEP_LAST,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.TRANSIENT_LOCAL,
+)
+ANNOUNCED = QoSProfile(
+    history=HistoryPolicy.KEEP_ALL, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
+)
 STEADY = Clock(clock_type=ClockType.STEADY_TIME)
 
 
@@ -94,11 +101,19 @@ class LockstepParticipant:
         deferred: list[Message],
     ) -> None:
         """`deferred`: what the node made between ticks (sent with the next)."""
-        self.node, self.component, self.publish, self.outputs, self.deferred = node, component, publish, outputs, deferred
+        self.node, self.component, self.publish, self.outputs, self.deferred = (
+            node,
+            component,
+            publish,
+            outputs,
+            deferred,
+        )
         self.info = ParticipantInfo.of(component)
         self.handlers = dict(component.handlers())
         self.rank = {t: i for i, t in enumerate(self.handlers)}
-        self.inbox = Inbox(node, specs, list(self.handlers), settle=1, outside=OutsideInputs(opened=absolute(params.lockstep_open)))
+        self.inbox = Inbox(
+            node, specs, list(self.handlers), settle=1, outside=OutsideInputs(opened=absolute(params.lockstep_open))
+        )
         self.report = OutsideReport(component.name)
         self.ack_pub = node.create_publisher(String, ACK, CONTROL)
         self.hello_pub = node.create_publisher(String, HELLO, ANNOUNCE)
@@ -123,7 +138,9 @@ class LockstepParticipant:
         matched = {t: pub.get_subscription_count() for t, pub in self.outputs.items()}
         if (ready, matched) != self._said:
             self._said = (ready, matched)
-            hello = Hello(self.component.name, self.info.period_ns, sorted(self.info.inputs), sorted(self.outputs), ready, matched)
+            hello = Hello(
+                self.component.name, self.info.period_ns, sorted(self.info.inputs), sorted(self.outputs), ready, matched
+            )
             self.hello_pub.publish(String(data=hello.to_json()))
 
     def _on_tick(self, msg: String) -> None:
@@ -170,9 +187,16 @@ class LockstepCoordinator:
         clock the real-time factor is kept against (paused: no step)."""
         self.node, self.sim, self.specs, self.outputs, self.deferred = node, sim, specs, outputs, deferred
         self.sequencer = Sequencer()
-        self.expected_names, self.observers, self.wait_for, self.rtf = set(participants), set(observers), list(wait_for), real_time_factor
+        self.expected_names, self.observers, self.wait_for, self.rtf = (
+            set(participants),
+            set(observers),
+            list(wait_for),
+            real_time_factor,
+        )
         self.handlers = dict(sim.handlers())
-        self.inbox = Inbox(node, specs, list(self.handlers), settle=0, outside=OutsideInputs(opened=absolute(params.lockstep_open)))
+        self.inbox = Inbox(
+            node, specs, list(self.handlers), settle=0, outside=OutsideInputs(opened=absolute(params.lockstep_open))
+        )
         self.report = OutsideReport(sim.name)
         self.schedule = Schedule(sim.config.sim.step_ns)
         self.expected = Expected()  # what each participant is to receive
@@ -206,13 +230,24 @@ class LockstepCoordinator:
         (/odom, /humans, /goal_pose: their first messages are recorded) and each publisher has
         matched every reader this node sees there, and that has held for half a second of wall time."""
         missing = sorted(self.expected_names - set(self.ready)) + sorted(n for n, r in self.ready.items() if not r)
-        writers: dict[str, dict[str, int]] = {"": {t: p.get_subscription_count() for t, p in self.outputs.items()}, **self.matched}
+        writers: dict[str, dict[str, int]] = {
+            "": {t: p.get_subscription_count() for t, p in self.outputs.items()},
+            **self.matched,
+        }
         for node, matched in writers.items():
-            for topic in (t for t in matched if t in self.specs and self.specs[t].pub_qos.durability != DurabilityPolicy.TRANSIENT_LOCAL):
-                readers = [i.node_name for i in self.node.get_subscriptions_info_by_topic(self.node.resolve_topic_name(topic))]
+            for topic in (
+                t
+                for t in matched
+                if t in self.specs and self.specs[t].pub_qos.durability != DurabilityPolicy.TRANSIENT_LOCAL
+            ):
+                readers = [
+                    i.node_name for i in self.node.get_subscriptions_info_by_topic(self.node.resolve_topic_name(topic))
+                ]
                 missing += [f"{name} on {topic}" for name in self.wait_for if name not in readers]
                 missing += [f"{node} matching the readers of {topic}"] if matched[topic] < len(readers) else []
-        missing += unmatched(self.node, self.inbox.readers, {**self.outputs, **{tick_topic(n): p for n, p in self.tick_pubs.items()}})
+        missing += unmatched(
+            self.node, self.inbox.readers, {**self.outputs, **{tick_topic(n): p for n, p in self.tick_pubs.items()}}
+        )
         self._stable = 0 if missing else self._stable + 1
         if missing and time.monotonic() - self._since > 5.0:
             self._since = time.monotonic()
@@ -228,7 +263,9 @@ class LockstepCoordinator:
 
     def _watchdog(self) -> None:
         if self.waiting and time.monotonic() - self._since > 5.0:
-            self.node.get_logger().warning(f"lockstep: step {self.step} still waits for {', '.join(sorted(self.waiting))}")
+            self.node.get_logger().warning(
+                f"lockstep: step {self.step} still waits for {', '.join(sorted(self.waiting))}"
+            )
 
     def _publish(self, messages: list[Message]) -> None:
         """The simulator's messages; those a participant reads are named for its next tick."""

@@ -67,20 +67,29 @@ def take_all_with_info(sub: Subscription) -> list[tuple[bytes, dict[str, Any]]]:
 def unmatched(node: Node, subs: Mapping[str, Subscription], pubs: Mapping[str, Publisher]) -> list[str]:
     """Our topics where a writer (for our readers) or a reader (for our writers) that the graph
     shows has not matched ours yet; none means a message sent now reaches everyone who is there."""
-    out = [t for t, sub in subs.items() if sub.get_publisher_count() < node.count_publishers(node.resolve_topic_name(t))]
-    return out + [t for t, pub in pubs.items() if pub.get_subscription_count() < node.count_subscribers(node.resolve_topic_name(t))]
+    out = [
+        t for t, sub in subs.items() if sub.get_publisher_count() < node.count_publishers(node.resolve_topic_name(t))
+    ]
+    return out + [
+        t
+        for t, pub in pubs.items()
+        if pub.get_subscription_count() < node.count_subscribers(node.resolve_topic_name(t))
+    ]
 
 
 class Inbox:
     """A node's deferred readers: raw messages per topic, matched against what the ticks announce
     and decoded only when handed over; outside messages go by `outside`'s rule."""
 
-    def __init__(self, node: Node, specs: Mapping[str, TopicSpec], inputs: list[str], settle: int, outside: OutsideInputs) -> None:
+    def __init__(
+        self, node: Node, specs: Mapping[str, TopicSpec], inputs: list[str], settle: int, outside: OutsideInputs
+    ) -> None:
         self.node, self.specs, self.outside = node, specs, outside
         self.queues = {t: Queue(t, settle) for t in inputs}
         self.lost: Counter[str] = Counter()  # announced messages that never came, per topic
         group = Deferred()
-        quiet = SubscriptionEventCallbacks(incompatible_qos=lambda _: None)  # (a best-effort publisher: the second reader's)
+        # (a best-effort publisher: the second reader's)
+        quiet = SubscriptionEventCallbacks(incompatible_qos=lambda _: None)
         self.subs = {
             t: node.create_subscription(
                 specs[t].msg_type,
@@ -96,7 +105,9 @@ class Inbox:
         # A topic read best effort too (the e-stop) has a second reader; a reliable publisher's
         # message that both get is taken once (the publisher's timestamp and sequence number).
         self.best_effort = {
-            t: node.create_subscription(specs[t].msg_type, t, _never, keep_all(best_effort(specs[t].sub_qos)), callback_group=group, raw=True)
+            t: node.create_subscription(
+                specs[t].msg_type, t, _never, keep_all(best_effort(specs[t].sub_qos)), callback_group=group, raw=True
+            )
             for t in inputs
             if specs[t].best_effort_too
         }
@@ -133,7 +144,9 @@ class Inbox:
                     self.queues[t].give_up(m)
                     self.lost[t] += sum(m.values())
                 said = ", ".join(f"{sum(m.values())} on {t}" for t, m in missing.items())
-                self.node.get_logger().warning(f"lockstep: announced messages did not arrive within {WAIT_S:g} s ({said}); going on without them")
+                self.node.get_logger().warning(
+                    f"lockstep: announced messages did not arrive within {WAIT_S:g} s ({said}); going on without them"
+                )
                 return
             time.sleep(0.0001)
             self.take(list(missing))
@@ -165,10 +178,24 @@ class OutsideReport:
             when, *before = self.said.get(topic, (-OUTSIDE_REPORT_S, 0, 0, 0))
             if counts != tuple(before) and (topic not in self.said or now - when >= OUTSIDE_REPORT_S):
                 self.said[topic] = (now, *counts)
-                new = dict(zip(("ignored", "taken", "dropped"), (c - b for c, b in zip(counts, before, strict=True)), strict=True))
-                out.append(Message(topics.EVENTS, event(EventKind.OUTSIDE_INPUT, now, self.source, topic=topic, **new), now))
+                new = dict(
+                    zip(
+                        ("ignored", "taken", "dropped"),
+                        (c - b for c, b in zip(counts, before, strict=True)),
+                        strict=True,
+                    )
+                )
+                out.append(
+                    Message(topics.EVENTS, event(EventKind.OUTSIDE_INPUT, now, self.source, topic=topic, **new), now)
+                )
         for topic, n in (inbox.lost - self.lost_said).items():
-            out.append(Message(topics.EVENTS, event(EventKind.INPUT_LOST, now, self.source, topic="/" + topic.lstrip("/"), messages=n), now))
+            out.append(
+                Message(
+                    topics.EVENTS,
+                    event(EventKind.INPUT_LOST, now, self.source, topic="/" + topic.lstrip("/"), messages=n),
+                    now,
+                )
+            )
         self.lost_said = Counter(inbox.lost)
         return out
 

@@ -71,7 +71,13 @@ class Nav2Lifecycle(LifecycleNode):
             return GoalResponse.ACCEPT
 
         return ActionServer(
-            self, action, name, execute, goal_callback=goal, cancel_callback=lambda _: CancelResponse.ACCEPT, callback_group=self.group
+            self,
+            action,
+            name,
+            execute,
+            goal_callback=goal,
+            cancel_callback=lambda _: CancelResponse.ACCEPT,
+            callback_group=self.group,
         )
 
 
@@ -100,9 +106,16 @@ class BtNavigator(Nav2Lifecycle):
         poses = _poses(msgs, self.map_frame)
         assert not isinstance(poses, str)  # (checked when the goal came)
         task = NavTask(kind, poses, self.runner.now(), by=self.get_name())
-        outside = self.paths.first_outside(poses) if self.paths is not None and kind is TaskKind.NAVIGATE_THROUGH_POSES else None
+        outside = (
+            self.paths.first_outside(poses)
+            if self.paths is not None and kind is TaskKind.NAVIGATE_THROUGH_POSES
+            else None
+        )
         if outside is not None:  # (Nav2 plans through every pose first: fails before the robot moves)
-            task.fail(PlanFailure.GOAL_OUTSIDE_MAP, f"pose {outside} ({poses[outside].x:.2f}, {poses[outside].y:.2f}) is outside the map")
+            task.fail(
+                PlanFailure.GOAL_OUTSIDE_MAP,
+                f"pose {outside} ({poses[outside].x:.2f}, {poses[outside].y:.2f}) is outside the map",
+            )
         else:
             self.runner.run(handle, task, lambda p: self.runner.nav_feedback(action, p))
         result = action.Result()
@@ -132,7 +145,9 @@ class WaypointFollower(Nav2Lifecycle):
         request = handle.request
         poses = _poses(request.poses, self.map_frame)
         assert not isinstance(poses, str)
-        task = NavTask(TaskKind.FOLLOW_WAYPOINTS, poses, self.runner.now(), by=self.get_name(), index=request.goal_index)
+        task = NavTask(
+            TaskKind.FOLLOW_WAYPOINTS, poses, self.runner.now(), by=self.get_name(), index=request.goal_index
+        )
 
         def feedback(progress: Any) -> Any:
             return FollowWaypoints.Feedback(current_waypoint=progress.index)
@@ -152,7 +167,8 @@ class ControllerServer(Nav2Lifecycle):
         self.serve(FollowPath, "follow_path", self.follow, lambda r: self._why(r.path))
 
     def _why(self, path: Any) -> str | None:
-        return unusable("path", path, self.map_frame) if path.poses else None  # (an empty path: INVALID_PATH, as Nav2's)
+        # (an empty path: INVALID_PATH, as Nav2's)
+        return unusable("path", path, self.map_frame) if path.poses else None
 
     def follow(self, handle: Any) -> Any:
         poses = conv.path_from_msg(handle.request.path)
@@ -164,7 +180,9 @@ class ControllerServer(Nav2Lifecycle):
         task = NavTask(TaskKind.FOLLOW_PATH, poses, self.runner.now(), by=self.get_name())
 
         def feedback(progress: Any) -> Any:
-            return FollowPath.Feedback(distance_to_goal=float(progress.distance_remaining_m), speed=float(progress.speed_mps))
+            return FollowPath.Feedback(
+                distance_to_goal=float(progress.distance_remaining_m), speed=float(progress.speed_mps)
+            )
 
         self.runner.run(handle, task, feedback)
         result.error_code, result.error_msg = goal_error(task, FollowPath.Result.UNKNOWN)
@@ -205,7 +223,9 @@ class Amcl(Nav2Lifecycle):
         self.pub.publish(out)
 
     def on_initial(self, msg: Any) -> None:
-        self.get_logger().info("initialpose ignored: the simulator knows where the robot is", throttle_duration_sec=10.0)
+        self.get_logger().info(
+            "initialpose ignored: the simulator knows where the robot is", throttle_duration_sec=10.0
+        )
 
 
 def make_nodes() -> list[Nav2Lifecycle]:
@@ -225,7 +245,10 @@ def make_nodes() -> list[Nav2Lifecycle]:
             timer.cancel()
             for node in made:
                 node.trigger_activate()
-            bt.get_logger().info("Nav2 servers active: navigate_to_pose, navigate_through_poses, follow_waypoints, compute_path_to_pose, follow_path")
+            bt.get_logger().info(
+                "Nav2 servers active: navigate_to_pose, navigate_through_poses, "
+                "follow_waypoints, compute_path_to_pose, follow_path"
+            )
 
     timer = bt.create_timer(0.2, ready, clock=Clock(clock_type=ClockType.STEADY_TIME))
     return made

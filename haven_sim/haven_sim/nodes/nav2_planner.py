@@ -46,7 +46,9 @@ class PathPlanner:
     def _why(self, request: Any) -> str | None:
         """Why a request cannot be planned for, or None."""
         frame = self.config.map_frame
-        return unusable("goal", request.goal, frame) or (unusable("start", request.start, frame) if request.use_start else None)
+        return unusable("goal", request.goal, frame) or (
+            unusable("start", request.start, frame) if request.use_start else None
+        )
 
     def _on_map(self, msg: Any) -> None:
         grid = conv.occupancy_from_msg(msg)
@@ -82,10 +84,16 @@ class PathPlanner:
         with self.lock:
             nav = self._navigator(request.planner_id)
             robot = self.runner.robot
-            start = conv.pose_from_stamped(request.start) if request.use_start else (robot.pose if robot is not None else None)
+            start = (
+                conv.pose_from_stamped(request.start)
+                if request.use_start
+                else (robot.pose if robot is not None else None)
+            )
             if isinstance(nav, str) or start is None:
                 why = nav if isinstance(nav, str) else "no /odom yet (the robot's pose is the start)"
-                result.error_code = Result.INVALID_PLANNER if isinstance(nav, str) and self.grid is not None else Result.UNKNOWN
+                result.error_code = (
+                    Result.INVALID_PLANNER if isinstance(nav, str) and self.grid is not None else Result.UNKNOWN
+                )
                 result.error_msg = why
                 handle.abort()
                 return result

@@ -51,7 +51,10 @@ TF = QoSProfile(depth=100, history=HistoryPolicy.KEEP_LAST, reliability=Reliabil
 # nodes read only what happens from now on (EVENTS).
 EVENTS = QoSProfile(depth=100, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE)
 EVENTS_PUB = QoSProfile(
-    depth=1000, history=HistoryPolicy.KEEP_LAST, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL
+    depth=1000,
+    history=HistoryPolicy.KEEP_LAST,
+    reliability=ReliabilityPolicy.RELIABLE,
+    durability=DurabilityPolicy.TRANSIENT_LOCAL,
 )
 EVENTS_HISTORY = EVENTS_PUB
 # Publishers of /plan and /haven/cue_state: latched like LATCHED, but the recorder needs every

@@ -1,8 +1,8 @@
 """How every HAVEN node process runs: init, build, spin until asked to stop, clean up.
 
 A stop signal (SIGINT, SIGTERM, SIGHUP, and the other catchable ones that would end the process)
-only sets a flag that the spin loop checks between callbacks: no KeyboardInterrupt lands in the middle of a callback or of a message being
-deserialised, and `destroy_node` runs while the context still works, so a node can still read its
+only sets a flag that the spin loop checks between callbacks: no KeyboardInterrupt lands in the middle of a callback or
+of a message being deserialised, and `destroy_node` runs while the context still works, so a node can still read its
 subscriptions then (the recorder writes what its readers hold into the bag).
 """
 
@@ -51,15 +51,21 @@ def callback_failed(node: Node, e: BaseException) -> None:
     frame = traceback.extract_tb(e.__traceback__)[-1] if e.__traceback__ is not None else None
     where = f" ({Path(frame.filename).name}:{frame.lineno})" if frame is not None else ""
     text = str(e).splitlines()[0][:200] if str(e) else ""
-    node.get_logger().error(f"a callback failed and was skipped: {type(e).__name__}: {text}{where}", throttle_duration_sec=THROTTLE_S)
+    node.get_logger().error(
+        f"a callback failed and was skipped: {type(e).__name__}: {text}{where}", throttle_duration_sec=THROTTLE_S
+    )
 
 
 def refused(node: Node, topic: str, reason: object) -> None:
     """One throttled line for a message a node cannot use, naming the topic and why."""
-    node.get_logger().warning(f"ignored a message on {node.resolve_topic_name(topic)}: {reason}", throttle_duration_sec=THROTTLE_S)
+    node.get_logger().warning(
+        f"ignored a message on {node.resolve_topic_name(topic)}: {reason}", throttle_duration_sec=THROTTLE_S
+    )
 
 
-def handle(node: Node, topic: str, handler: Callable[[Any, float], Sequence[Message]], data: Any, now: float) -> Sequence[Message]:
+def handle(
+    node: Node, topic: str, handler: Callable[[Any, float], Sequence[Message]], data: Any, now: float
+) -> Sequence[Message]:
     """A component's handler on one input: a ValueError is the component refusing it (a warning
     naming the topic), anything else a failure of that message alone (`callback_failed`); either
     way the node, and a lockstep tick in progress, go on."""
@@ -72,7 +78,9 @@ def handle(node: Node, topic: str, handler: Callable[[Any, float], Sequence[Mess
     return []
 
 
-def start_up_only(node: Node, params: Sequence[Parameter], allowed: frozenset[str] = frozenset()) -> tuple[str, str] | None:
+def start_up_only(
+    node: Node, params: Sequence[Parameter], allowed: frozenset[str] = frozenset()
+) -> tuple[str, str] | None:
     """(the parameter, why) a change is refused, or None: once a node runs, only the `allowed`
     parameters change; any other it has (its own, and rclpy's use_sim_time: time must not switch
     clocks mid-trial) is read at start-up only. (A parameter being declared does not exist yet.)"""
@@ -107,7 +115,9 @@ def declare(node: Node, name: str, default: Any, descriptor: ParameterDescriptor
     listed = isinstance(default, list)
     d.dynamic_typing = not listed
     try:
-        value = node.declare_parameter(name, Parameter.Type.STRING_ARRAY if listed and not default else default, d).value
+        value = node.declare_parameter(
+            name, Parameter.Type.STRING_ARRAY if listed and not default else default, d
+        ).value
     except InvalidParameterTypeException:
         raise ParamsError(f"{node.get_name()}: parameter {name}: must be a list of strings") from None
     if listed and value is None:  # declared by its type (or `[]` on the command line): the empty string array

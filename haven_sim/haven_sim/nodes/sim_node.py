@@ -46,7 +46,9 @@ class SimNode(ComponentNode):
         frames = wire.Frames(config.map_frame, config.odom_frame, config.base_frame, config.scan_frame)
         specs = wire.specs(frames, [h.id for h in world.humans])
         if topics.TF not in specs:
-            self.get_logger().warning("tf2_msgs is not installed: no /tf or /tf_static (run scripts/build_interfaces.py)")
+            self.get_logger().warning(
+                "tf2_msgs is not installed: no /tf or /tf_static (run scripts/build_interfaces.py)"
+            )
         self.wire(self.sim, specs, participant=False)
         self.create_service(Trigger, "haven/reset", self._on_reset)
         self.clock = WallClock()
@@ -68,13 +70,19 @@ class SimNode(ComponentNode):
                 self.deferred,
                 self.clock,
             )
-            cap = "as fast as they go" if config.real_time_factor >= UNCAPPED_RTF else f"at most {config.real_time_factor:g}x real time"
+            cap = (
+                "as fast as they go"
+                if config.real_time_factor >= UNCAPPED_RTF
+                else f"at most {config.real_time_factor:g}x real time"
+            )
             pace = f"lockstep with {', '.join(config.lockstep_participants) or 'no participants'}, {cap}"
         else:
             self.pacer = Pacer(config.sim.step_s, config.real_time_factor)
             self.pace = ControlPace(config.control_lag_s)
             pace_spec, ours = self._specs[topics.PACE], self.sole_writer(topics.PACE, nodes.MUX.name)
-            self.create_subscription(pace_spec.msg_type, topics.PACE, lambda m: self._on_pace(pace_spec.decode(m), ours()), pace_spec.sub_qos)
+            self.create_subscription(
+                pace_spec.msg_type, topics.PACE, lambda m: self._on_pace(pace_spec.decode(m), ours()), pace_spec.sub_qos
+            )
             self.publish(self.sim.sense())
             self.create_timer(self.pacer.tick_period_s, self._tick, clock=Clock(clock_type=ClockType.STEADY_TIME))
             pace = f"{config.real_time_factor:g}x real time"
@@ -100,10 +108,12 @@ class SimNode(ComponentNode):
         if achieved is not None and achieved < 0.9 * requested:
             now = self.sim.sim.time
             self.get_logger().warning(
-                f"sim time ran at {achieved:.2f}x real time over the last {self.pace.REPORT_S:g} s (asked: {requested:g}x): "
-                "held for the controller, which fell behind (a busy machine)"
+                f"sim time ran at {achieved:.2f}x real time over the last {self.pace.REPORT_S:g} s (asked: "
+                f"{requested:g}x): held for the controller, which fell behind (a busy machine)"
             )
-            held = event(EventKind.CLOCK_HELD, now, Source.SIM, real_time_factor=round(achieved, 3), requested=requested)
+            held = event(
+                EventKind.CLOCK_HELD, now, Source.SIM, real_time_factor=round(achieved, 3), requested=requested
+            )
             self.publish([Message(topics.EVENTS, held, now)])
 
     def _on_pace(self, acted_at: float, ours: bool) -> None:
@@ -122,8 +132,9 @@ class SimNode(ComponentNode):
         for name in sorted(writers - {f"/{nodes.MUX.name}"} - self._bypassing):
             self._bypassing.add(name)
             self.get_logger().warning(
-                f"{name} publishes on {topic} beside the velocity mux: it bypasses the mux (teleop, navigation, e-stop); "
-                f"publish on /{topics.CMD_VEL_TELEOP} instead (teleop_twist_keyboard: --ros-args -r cmd_vel:={topics.CMD_VEL_TELEOP}). "
+                f"{name} publishes on {topic} beside the velocity mux: it bypasses the mux (teleop, "
+                f"navigation, e-stop); publish on /{topics.CMD_VEL_TELEOP} instead "
+                f"(teleop_twist_keyboard: --ros-args -r cmd_vel:={topics.CMD_VEL_TELEOP}). "
                 "The e-stop still holds: the simulator honours /haven/estop itself."
             )
 
@@ -140,7 +151,15 @@ class SimNode(ComponentNode):
             response.success = stood is not None
             response.message = f"resumed at t={now:.2f} s after {stood:.1f} s" if stood is not None else "not paused"
             if stood is not None:
-                self.emit([Message(topics.EVENTS, event(EventKind.TRIAL_RESUMED, now, Source.SIM, paused_s=round(stood, 2)), now)])
+                self.emit(
+                    [
+                        Message(
+                            topics.EVENTS,
+                            event(EventKind.TRIAL_RESUMED, now, Source.SIM, paused_s=round(stood, 2)),
+                            now,
+                        )
+                    ]
+                )
                 if self.coordinator is not None:
                     self.coordinator.resumed()
         self.get_logger().info(f"/haven/pause: {response.message}")
@@ -149,7 +168,9 @@ class SimNode(ComponentNode):
     def _on_reset(self, request: Trigger.Request, response: Trigger.Response) -> Trigger.Response:
         if not self.sim.config.reset_allowed:
             response.success = False
-            response.message = "refused: this simulator runs a recorded trial (haven run); /haven/reset is for haven sim"
+            response.message = (
+                "refused: this simulator runs a recorded trial (haven run); /haven/reset is for haven sim"
+            )
             self.get_logger().warning(f"/haven/reset {response.message}", throttle_duration_sec=2.0)
             self.emit([self.refused_request("service", "/haven/reset", response.message)])
             return response

@@ -83,8 +83,15 @@ class TaskRunner:
         self.robot: RobotState | None = None
         table = wire.specs(wire.Frames(map=map_frame))
         self.specs = {t: table[t] for t in (topics.GOAL, topics.CANCEL_GOAL, topics.PLAN, topics.EVENTS, topics.ODOM)}
-        self.pubs = {t: node.create_publisher(table[t].msg_type, t, table[t].pub_qos) for t in (topics.GOAL, topics.CANCEL_GOAL, topics.PLAN)}
-        handlers: dict[str, Callable[[Any], None]] = {topics.EVENTS: self._on_event, topics.ODOM: self._on_odom, topics.PLAN: self._on_plan}
+        self.pubs = {
+            t: node.create_publisher(table[t].msg_type, t, table[t].pub_qos)
+            for t in (topics.GOAL, topics.CANCEL_GOAL, topics.PLAN)
+        }
+        handlers: dict[str, Callable[[Any], None]] = {
+            topics.EVENTS: self._on_event,
+            topics.ODOM: self._on_odom,
+            topics.PLAN: self._on_plan,
+        }
         for topic, handler in handlers.items():
             spec = table[topic]
 

@@ -55,7 +55,11 @@ def _twist() -> TopicSpec:
 
 def _twist_stamped() -> TopicSpec:
     return TopicSpec(
-        TwistStamped, lambda t, stamp: conv.twist_stamped_msg(t, stamp), lambda m: conv.twist_from_msg(m.twist), qos.STREAM, qos.RELIABLE
+        TwistStamped,
+        lambda t, stamp: conv.twist_stamped_msg(t, stamp),
+        lambda m: conv.twist_from_msg(m.twist),
+        qos.STREAM,
+        qos.RELIABLE,
     )
 
 
@@ -74,36 +78,91 @@ def specs(frames: Frames = Frames(), human_ids: Sequence[str] = ()) -> dict[str,
     """The haven_sim topics; `human_ids` name the /humans poses and the per-human command topics."""
     f = frames
     table = {
-        topics.CLOCK: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.STREAM, qos.CLOCK),
-        topics.PACE_NAV: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.LATEST, qos.LATEST),
-        topics.PACE: TopicSpec(Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.LATEST, qos.LATEST),
-        topics.MAP: TopicSpec(OccupancyGrid, lambda g, t: conv.occupancy_msg(t, g, f.map), conv.occupancy_from_msg, qos.LATCHED, qos.LATCHED),
-        topics.ODOM: TopicSpec(Odometry, lambda s, t: conv.odometry_msg(t, s, f.odom, f.base), conv.odometry_from_msg, qos.STREAM, qos.LATEST),
-        topics.SCAN: TopicSpec(LaserScan, lambda s, t: conv.scan_msg(t, s, f.scan), _unsupported, qos.SENSOR, qos.SENSOR),
-        topics.BATTERY: TopicSpec(BatteryState, lambda r, t: conv.battery_msg(t, r), conv.battery_from_msg, qos.STREAM, qos.LATEST),
+        topics.CLOCK: TopicSpec(
+            Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.STREAM, qos.CLOCK
+        ),
+        topics.PACE_NAV: TopicSpec(
+            Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.LATEST, qos.LATEST
+        ),
+        topics.PACE: TopicSpec(
+            Clock, lambda t, _: conv.clock_msg(t), lambda m: conv.time_from_msg(m.clock), qos.LATEST, qos.LATEST
+        ),
+        topics.MAP: TopicSpec(
+            OccupancyGrid,
+            lambda g, t: conv.occupancy_msg(t, g, f.map),
+            conv.occupancy_from_msg,
+            qos.LATCHED,
+            qos.LATCHED,
+        ),
+        topics.ODOM: TopicSpec(
+            Odometry,
+            lambda s, t: conv.odometry_msg(t, s, f.odom, f.base),
+            conv.odometry_from_msg,
+            qos.STREAM,
+            qos.LATEST,
+        ),
+        topics.SCAN: TopicSpec(
+            LaserScan, lambda s, t: conv.scan_msg(t, s, f.scan), _unsupported, qos.SENSOR, qos.SENSOR
+        ),
+        topics.BATTERY: TopicSpec(
+            BatteryState, lambda r, t: conv.battery_msg(t, r), conv.battery_from_msg, qos.STREAM, qos.LATEST
+        ),
         topics.HUMANS: TopicSpec(
-            PoseArray, lambda h, t: conv.humans_msg(t, h, f.map), lambda m: conv.humans_from_msg(m, human_ids), qos.STREAM, qos.LATEST
+            PoseArray,
+            lambda h, t: conv.humans_msg(t, h, f.map),
+            lambda m: conv.humans_from_msg(m, human_ids),
+            qos.STREAM,
+            qos.LATEST,
         ),
         topics.CMD_VEL: _twist(),
         topics.CMD_VEL_NAV: _twist(),
         topics.CMD_VEL_TELEOP: _twist(),
         topics.ESTOP: TopicSpec(
-            Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.ANY_DURABILITY, qos.LATCHED, best_effort_too=True
+            Bool,
+            lambda b, _: Bool(data=b),
+            lambda m: bool(m.data),
+            qos.LATCHED,
+            qos.ANY_DURABILITY,
+            qos.LATCHED,
+            best_effort_too=True,
         ),
-        topics.GOAL: TopicSpec(PoseStamped, lambda g, t: conv.goal_msg(t, g), conv.goal_from_msg, qos.RELIABLE, qos.RELIABLE),
-        topics.PLAN: TopicSpec(Path, lambda p, t: conv.path_msg(t, p, f.map), conv.path_from_msg, qos.CHANGES, qos.ANY_DURABILITY, qos.LATCHED),
+        topics.GOAL: TopicSpec(
+            PoseStamped, lambda g, t: conv.goal_msg(t, g), conv.goal_from_msg, qos.RELIABLE, qos.RELIABLE
+        ),
+        topics.PLAN: TopicSpec(
+            Path,
+            lambda p, t: conv.path_msg(t, p, f.map),
+            conv.path_from_msg,
+            qos.CHANGES,
+            qos.ANY_DURABILITY,
+            qos.LATCHED,
+        ),
         topics.WAIT: TopicSpec(Bool, lambda b, _: Bool(data=b), lambda m: bool(m.data), qos.LATCHED, qos.LATCHED),
         topics.THOUGHT: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
-        topics.WIZARD_THOUGHT: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
-        topics.EVENTS: TopicSpec(String, lambda e, _: conv.event_msg(e), conv.event_from_msg, qos.EVENTS_PUB, qos.EVENTS),
-        topics.REMOVE_OBSTRUCTION: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
-        topics.CANCEL_GOAL: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
-        topics.TRIAL_STATUS: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED),
-        topics.TRIAL_CONTROL: TopicSpec(String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE),
+        topics.WIZARD_THOUGHT: TopicSpec(
+            String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED
+        ),
+        topics.EVENTS: TopicSpec(
+            String, lambda e, _: conv.event_msg(e), conv.event_from_msg, qos.EVENTS_PUB, qos.EVENTS
+        ),
+        topics.REMOVE_OBSTRUCTION: TopicSpec(
+            String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE
+        ),
+        topics.CANCEL_GOAL: TopicSpec(
+            String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE
+        ),
+        topics.TRIAL_STATUS: TopicSpec(
+            String, lambda s, _: String(data=s), lambda m: str(m.data), qos.LATCHED, qos.LATCHED
+        ),
+        topics.TRIAL_CONTROL: TopicSpec(
+            String, lambda s, _: String(data=s), lambda m: str(m.data), qos.RELIABLE, qos.RELIABLE
+        ),
     }
     if TFMessage is not None:
         table[topics.TF] = TopicSpec(TFMessage, lambda fr, t: conv.tf_msg(t, fr), _unsupported, qos.STREAM, qos.TF)
-        table[topics.TF_STATIC] = TopicSpec(TFMessage, lambda fr, t: conv.tf_msg(t, fr), _unsupported, qos.LATCHED, qos.LATCHED)
+        table[topics.TF_STATIC] = TopicSpec(
+            TFMessage, lambda fr, t: conv.tf_msg(t, fr), _unsupported, qos.LATCHED, qos.LATCHED
+        )
     for hid in human_ids:
         table[topics.human_cmd_vel(hid)] = _twist()
         table[topics.human_pose(hid)] = TopicSpec(

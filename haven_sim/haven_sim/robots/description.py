@@ -135,7 +135,8 @@ class Flight:
     cruise_height_m: float
     climb_rate_mps: float
     clearance_m: float  # flies over obstacles at least this much lower than itself
-    person_distance_m: float  # the gap it plans and passes people with (a person who walks up to it may come nearer; never under it)
+    # the gap it plans and passes people with (a person who walks up to it may come nearer; never under it)
+    person_distance_m: float
 
 
 @dataclass(frozen=True)
@@ -181,7 +182,9 @@ class RobotDescription:
     def body(self) -> BodySpec:
         """The body the physics simulates."""
         fp = self.footprint
-        return BodySpec(fp.circumradius_m, self.height_m, self.mass_kg, self.drive.max_force_n, self.drive.max_torque_nm, fp.polygon)
+        return BodySpec(
+            fp.circumradius_m, self.height_m, self.mass_kg, self.drive.max_force_n, self.drive.max_torque_nm, fp.polygon
+        )
 
     def contact_distance_m(self) -> float:
         """Centre-to-centre distance within which the robot may touch a person (the footprint's

@@ -35,7 +35,9 @@ def from_robot(path: str = "", bounds: Bounds | None = None) -> Any:
     """A config field set from the robot's description (not a parameter; `bounds` checked by the
     config's check_bounds, for a config made in code)."""
     default = DEFAULT if not path else DEFAULT.value_at(path)
-    return dataclasses.field(default=default, metadata={"internal": True, ROBOT_KEY: path, **({"bounds": bounds} if bounds else {})})
+    return dataclasses.field(
+        default=default, metadata={"internal": True, ROBOT_KEY: path, **({"bounds": bounds} if bounds else {})}
+    )
 
 
 def uses_robot(cls: Any) -> bool:
@@ -43,7 +45,11 @@ def uses_robot(cls: Any) -> bool:
     for f in dataclasses.fields(cls):
         if ROBOT_KEY in f.metadata:
             return True
-        if f.default_factory is not dataclasses.MISSING and dataclasses.is_dataclass(f.default_factory) and uses_robot(f.default_factory):
+        if (
+            f.default_factory is not dataclasses.MISSING
+            and dataclasses.is_dataclass(f.default_factory)
+            and uses_robot(f.default_factory)
+        ):
             return True
     return False
 

@@ -54,13 +54,17 @@ def _fraction(v: Any) -> float:
 
 
 def _xy(v: Any) -> Any:
-    if not (isinstance(v, list) and len(v) == 2 and all(finite(c) is not None and abs(finite(c) or 0) <= 10 for c in v)):
+    if not (
+        isinstance(v, list) and len(v) == 2 and all(finite(c) is not None and abs(finite(c) or 0) <= 10 for c in v)
+    ):
         raise ValueError(f"must be a point [x, y] within 10 m of the base frame, got {short(v)}")
     return tuple(float(c) for c in v)
 
 
 def _triple(v: Any) -> Any:
-    if not (isinstance(v, list) and len(v) == 3 and all(finite(c) is not None and abs(finite(c) or 0) <= 10 for c in v)):
+    if not (
+        isinstance(v, list) and len(v) == 3 and all(finite(c) is not None and abs(finite(c) or 0) <= 10 for c in v)
+    ):
         raise ValueError(f"must be three numbers [a, b, c] within ±10, got {short(v)}")
     return tuple(float(c) for c in v)
 
@@ -79,7 +83,12 @@ def _frame(v: Any) -> Any:
     """A tf2 frame id by the ROS 2 name rules (design.ros2.org, "Topic and Service name mapping to
     DDS": tokens of letters, digits and '_' not starting with a digit, separated by single '/', no
     '__', no trailing '/'), without the leading '/' tf2 refuses in a frame id."""
-    if isinstance(v, str) and len(v) <= MAX_FRAME_CHARS and "__" not in v and all(_FRAME_TOKEN.fullmatch(t) for t in v.split("/")):
+    if (
+        isinstance(v, str)
+        and len(v) <= MAX_FRAME_CHARS
+        and "__" not in v
+        and all(_FRAME_TOKEN.fullmatch(t) for t in v.split("/"))
+    ):
         return v
     raise ValueError(
         f"must be a ROS frame name (at most {MAX_FRAME_CHARS} characters): letters, digits and single '_' in parts "
@@ -216,14 +225,21 @@ class RobotFileModel(FileModel):
             raise ValueError("limits.max_lateral_speed_mps: a diff_drive robot cannot move sideways (0 or omit it)")
         if self.motion.cruise_speed_mps > self.limits.max_linear_speed_mps:
             raise ValueError(
-                f"motion.cruise_speed_mps: {self.motion.cruise_speed_mps:g} is above limits.max_linear_speed_mps {self.limits.max_linear_speed_mps:g}"
+                f"motion.cruise_speed_mps: {self.motion.cruise_speed_mps:g} is above "
+                f"limits.max_linear_speed_mps {self.limits.max_linear_speed_mps:g}"
             )
         if self.lidar.range_min_m >= self.lidar.range_max_m:
             raise ValueError("lidar.range_min_m: must be below range_max_m")
-        frames = {"frames.base": self.frames.base, "frames.base_link": self.frames.base_link, "lidar.frame": self.lidar.frame}
+        frames = {
+            "frames.base": self.frames.base,
+            "frames.base_link": self.frames.base_link,
+            "lidar.frame": self.lidar.frame,
+        }
         for key, name in frames.items():
             if name in WORLD_FRAMES:
-                raise ValueError(f"{key}: {name!r} is a frame of the world the simulator publishes (REP-105), not of the robot")
+                raise ValueError(
+                    f"{key}: {name!r} is a frame of the world the simulator publishes (REP-105), not of the robot"
+                )
             other = next((k for k, n in frames.items() if n == name and k != key), None)
             if other is not None:
                 raise ValueError(f"{key}: {name!r} is also {other} (each frame of the TF tree needs its own name)")
@@ -238,7 +254,9 @@ def _name(v: Any) -> Any:
         or not (v[0].isascii() and v[0].islower())
         or not all(c.isascii() and (c.islower() or c.isdigit() or c == "_") for c in v)
     ):
-        raise ValueError(f"must be lower-case letters, digits and _ (at most 40), starting with a letter, got {short(v)}")
+        raise ValueError(
+            f"must be lower-case letters, digits and _ (at most 40), starting with a letter, got {short(v)}"
+        )
     return v
 
 
@@ -277,7 +295,8 @@ def merged(path: Path, base: Any, depth: int) -> dict[str, Any]:
     changed = _paths(data)  # the parent's sources no longer cite what this file changes
     kept = {k: v for k, v in (under.get("sources") or {}).items() if not any(_related(k, p) for p in changed)}
     own = data.get("sources", {})
-    return {**_merge(under, data), "sources": {**kept, **own} if isinstance(own, dict) else own}  # (not a mapping: the schema says so)
+    # (not a mapping: the schema says so)
+    return {**_merge(under, data), "sources": {**kept, **own} if isinstance(own, dict) else own}
 
 
 def _paths(data: dict[str, Any], prefix: str = "") -> list[str]:
@@ -323,7 +342,9 @@ def description(m: RobotFileModel, path: Path) -> RobotDescription:
         if not found.is_file():
             raise RobotError(f"{file_label(path)}: look.model: no file {m.look.model!r} beside the robot file")
         if found.suffix.lower() not in (".glb", ".gltf"):
-            raise RobotError(f"{file_label(path)}: look.model: must be a glTF file (.glb or .gltf), got {m.look.model!r}")
+            raise RobotError(
+                f"{file_label(path)}: look.model: must be a glTF file (.glb or .gltf), got {m.look.model!r}"
+            )
         model = str(found)
     kin = Kinematics(m.kinematics)
     lateral = m.limits.max_lateral_speed_mps
@@ -337,18 +358,30 @@ def description(m: RobotFileModel, path: Path) -> RobotDescription:
         height_m=m.height_m,
         mass_kg=m.mass_kg,
         limits=Limits(
-            m.limits.max_linear_speed_mps, m.limits.max_angular_speed_rps, m.limits.max_linear_accel_mps2, m.limits.max_angular_accel_rps2, lateral
+            m.limits.max_linear_speed_mps,
+            m.limits.max_angular_speed_rps,
+            m.limits.max_linear_accel_mps2,
+            m.limits.max_angular_accel_rps2,
+            lateral,
         ),
-        motion=Motion(m.motion.cruise_speed_mps, m.motion.max_turn_rate_rps, rotate_in_place=kin is Kinematics.DIFF_DRIVE),
-        battery=Battery(m.battery.capacity_m, m.battery.idle_drain_per_s, m.battery.drain_per_rad, m.battery.charge_rate_per_s),
-        lidar=Lidar(m.lidar.beams, m.lidar.range_min_m, m.lidar.range_max_m, m.lidar.rate_hz, m.lidar.height_m, m.lidar.frame),
+        motion=Motion(
+            m.motion.cruise_speed_mps, m.motion.max_turn_rate_rps, rotate_in_place=kin is Kinematics.DIFF_DRIVE
+        ),
+        battery=Battery(
+            m.battery.capacity_m, m.battery.idle_drain_per_s, m.battery.drain_per_rad, m.battery.charge_rate_per_s
+        ),
+        lidar=Lidar(
+            m.lidar.beams, m.lidar.range_min_m, m.lidar.range_max_m, m.lidar.rate_hz, m.lidar.height_m, m.lidar.frame
+        ),
         cues=mounts,
         drive=DriveForce(m.drive.max_force_n, m.drive.max_torque_nm),
         frames=Frames(m.frames.base, m.frames.base_link, m.frames.base_link_height_m),
         look=Look(tuple(Primitive(p.shape, p.size, p.at, p.rpy, p.colour, p.spin) for p in m.look.primitives), model),
         flight=None
         if m.flight is None
-        else Flight(m.flight.cruise_height_m, m.flight.climb_rate_mps, m.flight.clearance_m, m.flight.person_distance_m),
+        else Flight(
+            m.flight.cruise_height_m, m.flight.climb_rate_mps, m.flight.clearance_m, m.flight.person_distance_m
+        ),
         sources=dict(m.sources),
         source_file=str(path),
     )

@@ -32,7 +32,9 @@ _STATUS_OF = {code: status for status, code in BATTERY_STATUS.items()}
 
 def _finite(value: float, name: str, bound: float = math.inf) -> float:
     if not math.isfinite(value) or abs(value) > bound:
-        raise ValueError(f"{name} must be finite{'' if bound == math.inf else f' and within +-{bound:g}'}, got {value!r}")
+        raise ValueError(
+            f"{name} must be finite{'' if bound == math.inf else f' and within +-{bound:g}'}, got {value!r}"
+        )
     return float(value)
 
 
@@ -62,7 +64,9 @@ def odometry_from_msg(msg: Any) -> RobotState:
 
 def battery_from_msg(msg: Any) -> BatteryReading:
     status = _STATUS_OF.get(msg.power_supply_status, PowerStatus.DISCHARGING)
-    return BatteryReading(checked_percentage(msg.percentage), status, float(msg.voltage), float(msg.charge), float(msg.capacity), math.nan)
+    return BatteryReading(
+        checked_percentage(msg.percentage), status, float(msg.voltage), float(msg.charge), float(msg.capacity), math.nan
+    )
 
 
 def humans_from_msg(msg: Any, ids: Sequence[str] = ()) -> HumanPoses:

@@ -35,9 +35,13 @@ MAX_DIGESTS = 100_000  # more messages announced in one tick or ack than any ste
 
 @dataclass(frozen=True)
 class LockstepParams:
-    lockstep: bool = param(False, "step with the simulator's lockstep clock (haven run sets it for simulated participants)")
+    lockstep: bool = param(
+        False, "step with the simulator's lockstep clock (haven run sets it for simulated participants)"
+    )
     lockstep_open: tuple[str, ...] = param(
-        (), "topics the suite writes on which messages from outside are still taken on the lockstep clock (haven run --allow)"
+        (),
+        "topics the suite writes on which messages from outside "
+        "are still taken on the lockstep clock (haven run --allow)",
     )
 
 
@@ -65,7 +69,9 @@ def _digests(d: Mapping[str, Any], key: str, what: str) -> dict[str, list[str]]:
     v = d.get(key)
     if (
         isinstance(v, dict)
-        and all(isinstance(t, str) and isinstance(ds, list) and all(isinstance(x, str) for x in ds) for t, ds in v.items())
+        and all(
+            isinstance(t, str) and isinstance(ds, list) and all(isinstance(x, str) for x in ds) for t, ds in v.items()
+        )
         and sum(len(ds) for ds in v.values()) <= MAX_DIGESTS
     ):
         return {t: list(ds) for t, ds in v.items()}
@@ -131,7 +137,9 @@ class Hello:
         if not isinstance(d.get("ready"), bool):
             raise ValueError(f"lockstep hello: ready must be true or false, got {str(d.get('ready'))[:40]}")
         matched = d.get("matched", {})
-        if not isinstance(matched, dict) or not all(isinstance(t, str) and type(n) is int and 0 <= n < 1 << 20 for t, n in matched.items()):
+        if not isinstance(matched, dict) or not all(
+            isinstance(t, str) and type(n) is int and 0 <= n < 1 << 20 for t, n in matched.items()
+        ):
             raise ValueError(f"lockstep hello: matched must map topics to reader counts, got {str(matched)[:40]}")
         name, inputs, outputs = _name(d, "hello"), _names(d, "inputs", "hello"), _names(d, "outputs", "hello")
         return Hello(name, None if period < 0 else max(1, period), inputs, outputs, d["ready"], dict(matched))

@@ -66,7 +66,8 @@ class InProcessLoop:
             if isinstance(data, Event):
                 data = self.sequencer.number(data)
             wired = on_the_wire(topic, data)
-            m = sent if wired is sent.data else Message(topic, wired, sent.stamp)  # unchanged: the same (frozen) message
+            # unchanged: the same (frozen) message
+            m = sent if wired is sent.data else Message(topic, wired, sent.stamp)
             late = delay(topic) if delay is not None else 0.0
             if late > 0.0:
                 heapq.heappush(self._held, (self.sim.sim.time + late, next(self._order), m, to_sim))

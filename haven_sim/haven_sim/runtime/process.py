@@ -15,7 +15,16 @@ from types import FrameType
 
 # Every signal whose default action ends a process and that a process can catch: each one stops
 # a node cleanly (the recorder closes its bag) and the supervisor with all its children.
-STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT, signal.SIGUSR1, signal.SIGUSR2, signal.SIGALRM, signal.SIGXCPU)
+STOP_SIGNALS = (
+    signal.SIGINT,
+    signal.SIGTERM,
+    signal.SIGHUP,
+    signal.SIGQUIT,
+    signal.SIGUSR1,
+    signal.SIGUSR2,
+    signal.SIGALRM,
+    signal.SIGXCPU,
+)
 PR_SET_PDEATHSIG = 1
 SIG_DFL = 0  # the C value of a default disposition (signal.h)
 

@@ -90,7 +90,8 @@ class Queue:
     settle: int = 1  # acts an unannounced message waits before it counts as outside (the coordinator: 0)
     entries: list[Queued] = field(default_factory=list)
     given_up: Counter[str] = field(default_factory=Counter)  # announced, waited for in vain: dropped if they come
-    have: Counter[str] = field(default_factory=Counter)  # the digests queued (kept with the entries: a flood makes many)
+    # the digests queued (kept with the entries: a flood makes many)
+    have: Counter[str] = field(default_factory=Counter)
 
     def add(self, raw: Iterable[bytes]) -> None:
         new = [Queued(digest(r), r) for r in raw]

@@ -38,7 +38,9 @@ def wire_pose(p: Pose2D) -> Pose2D:
 
 
 def _battery(r: BatteryReading) -> BatteryReading:
-    return replace(r, level=f32(r.level), voltage_v=f32(r.voltage_v), charge_ah=f32(r.charge_ah), capacity_ah=f32(r.capacity_ah))
+    return replace(
+        r, level=f32(r.level), voltage_v=f32(r.voltage_v), charge_ah=f32(r.charge_ah), capacity_ah=f32(r.capacity_ah)
+    )
 
 
 WIRE: dict[str, Callable[[Any], Any]] = {

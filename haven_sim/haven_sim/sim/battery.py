@@ -29,7 +29,9 @@ class BatteryParams:
     drain_per_rad: float = from_robot("battery.drain_per_rad", NOT_NEGATIVE)
     idle_drain_per_s: float = from_robot("battery.idle_drain_per_s", NOT_NEGATIVE)
     charge_rate_per_s: float = from_robot("battery.charge_rate_per_s", NOT_NEGATIVE)
-    pack_m: float = param(0.0, "the pack as metres of travel (0: the robot's own; haven run sets the scenario's)", NOT_NEGATIVE)
+    pack_m: float = param(
+        0.0, "the pack as metres of travel (0: the robot's own; haven run sets the scenario's)", NOT_NEGATIVE
+    )
     charge_max_speed_mps: float = param(0.02, "the robot charges only while (nearly) stopped on the base", NOT_NEGATIVE)
     initial_level: float = param(1.0, "level at start, 0..1", FRACTION)
     base_radius_m: float = field(default=0.5, metadata={"internal": True})  # from the world's charging base
@@ -77,12 +79,24 @@ class Battery:
     def range_m(self) -> float:
         return self.level * self.params.full_range_m
 
-    def update(self, dt: float, distance_m: float, rotation_rad: float, speed_mps: float, distance_to_base_m: float, idle: bool = True) -> None:
+    def update(
+        self,
+        dt: float,
+        distance_m: float,
+        rotation_rad: float,
+        speed_mps: float,
+        distance_to_base_m: float,
+        idle: bool = True,
+    ) -> None:
         """Account for one step: what the robot did during dt and where it is now; `idle` False
         leaves out the idle drain (an aerial robot on the ground)."""
         p = self.params
         on_base = distance_to_base_m <= p.base_radius_m and speed_mps <= p.charge_max_speed_mps
-        drain = distance_m / p.full_range_m + abs(rotation_rad) * p.drain_per_rad + (dt * p.idle_drain_per_s if idle else 0.0)
+        drain = (
+            distance_m / p.full_range_m
+            + abs(rotation_rad) * p.drain_per_rad
+            + (dt * p.idle_drain_per_s if idle else 0.0)
+        )
         self.charging = on_base and self.level < 1.0
         gain = p.charge_rate_per_s * dt if on_base else 0.0
         self.level = min(1.0, max(0.0, self.level - drain + gain))

@@ -19,7 +19,9 @@ class Frame(NamedTuple):
     yaw: float
 
 
-def static_frames(robot: RobotDescription, map_frame: str = "map", odom_frame: str = "odom", map_to_odom: bool = True) -> list[Frame]:
+def static_frames(
+    robot: RobotDescription, map_frame: str = "map", odom_frame: str = "odom", map_to_odom: bool = True
+) -> list[Frame]:
     """The fixed frames: the robot's base_link and laser where its robot file puts them (centred);
     map -> odom is the identity (odometry has no drift by default), unless `map_to_odom` is False,
     which leaves it to a localization node (AMCL, slam_toolbox)."""
@@ -31,7 +33,9 @@ def static_frames(robot: RobotDescription, map_frame: str = "map", odom_frame: s
     return ([Frame(map_frame, odom_frame, 0.0, 0.0, 0.0, 0.0)] if map_to_odom else []) + body
 
 
-def robot_frame(odom_pose: Pose2D, odom_frame: str = "odom", base_frame: str = "base_footprint", altitude_m: float = 0.0) -> Frame:
+def robot_frame(
+    odom_pose: Pose2D, odom_frame: str = "odom", base_frame: str = "base_footprint", altitude_m: float = 0.0
+) -> Frame:
     """odom -> base_footprint; an aerial robot's base frame is `altitude_m` above the floor."""
     return Frame(odom_frame, base_frame, odom_pose.x, odom_pose.y, altitude_m, odom_pose.yaw)
 

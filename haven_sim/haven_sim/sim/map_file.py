@@ -79,7 +79,10 @@ def load_map(value: Any, world_source: str) -> MapImage:
         except ValidationError as e:
             raise WorldError(f"{file_label(world_source)}: map.{problem(MapFile, e)}") from None
         return _read(inline, base, world_source, "map")
-    raise WorldError(f"{file_label(world_source)}: map: must be a map_server YAML file or a mapping (image, resolution, ...), got {short(value)}")
+    raise WorldError(
+        f"{file_label(world_source)}: map: must be a map_server YAML "
+        f"file or a mapping (image, resolution, ...), got {short(value)}"
+    )
 
 
 IMAGE_SUFFIXES = (".pgm", ".png", ".jpg", ".jpeg", ".bmp", ".gif", ".tif", ".tiff")
@@ -98,4 +101,6 @@ def _misspelt(data: dict[Any, Any]) -> str:
 
 def _read(m: MapFile, base: Path, source: str, key: str) -> MapImage:
     path = image_path(m.image, base, source, f"{key}.image" if key else "image")
-    return read_image(path, m.resolution, (m.origin[0], m.origin[1]), m.negate, m.occupied_thresh, m.free_thresh, m.mode, key)
+    return read_image(
+        path, m.resolution, (m.origin[0], m.origin[1]), m.negate, m.occupied_thresh, m.free_thresh, m.mode, key
+    )

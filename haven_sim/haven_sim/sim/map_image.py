@@ -48,7 +48,8 @@ OCCUPIED_THRESH, FREE_THRESH = 0.65, 0.25  # map_saver's defaults (map_io.cpp ch
 MAX_CELLS = 4000 * 4000  # 16 M cells: a 100 m world (MAX_EXTENT_M) at 0.025 m/cell
 UNKNOWN, FREE, OCCUPIED = -1, 0, 100
 IMAGE_SUFFIXES = (".pgm", ".png", ".jpg", ".jpeg", ".bmp")
-IMAGE_FORMATS = ("PNG", "JPEG", "PPM", "BMP")  # PIL's decoders for them (PPM reads PGM): no other decoder sees the bytes
+# PIL's decoders for them (PPM reads PGM): no other decoder sees the bytes
+IMAGE_FORMATS = ("PNG", "JPEG", "PPM", "BMP")
 MAX_IMAGE_FILE_BYTES = 100 << 20  # a 4000 x 4000 RGBA BMP, the largest map image, is 64 MB
 MAX_WALL_BOXES = 10_000  # see `wall_boxes`
 BAND_ROWS = 256  # rows converted at a time (about 30 MB of working arrays at 4,000 columns)
@@ -88,7 +89,12 @@ class MapImage:
     def bounds(self) -> tuple[float, float, float, float]:
         """xmin, ymin, xmax, ymax of the map."""
         height, width = self.cells.shape
-        return self.origin[0], self.origin[1], self.origin[0] + width * self.resolution, self.origin[1] + height * self.resolution
+        return (
+            self.origin[0],
+            self.origin[1],
+            self.origin[0] + width * self.resolution,
+            self.origin[1] + height * self.resolution,
+        )
 
     def contains(self, x: float, y: float) -> bool:
         x0, y0, x1, y1 = self.bounds()
@@ -98,7 +104,9 @@ class MapImage:
         """The map as /map publishes it (rows bottom-up, as nav_msgs/OccupancyGrid and map_io's
         `data[width * (height - y - 1) + x]`)."""
         height, width = self.cells.shape
-        return OccupancyGridData(self.resolution, width, height, self.origin[0], self.origin[1], np.ascontiguousarray(self.cells[::-1]))
+        return OccupancyGridData(
+            self.resolution, width, height, self.origin[0], self.origin[1], np.ascontiguousarray(self.cells[::-1])
+        )
 
 
 def _fail(source: str, key: str, message: str) -> WorldError:
@@ -130,9 +138,15 @@ def read_image(
     with data, open_image(data, source, image_key) as img:
         width, height = img.size
         if width * resolution > MAX_EXTENT_M or height * resolution > MAX_EXTENT_M:
-            raise _fail(source, _key(key, "resolution"), f"{width} x {height} cells of {resolution:g} m exceed the {MAX_EXTENT_M:g} m a world spans")
+            raise _fail(
+                source,
+                _key(key, "resolution"),
+                f"{width} x {height} cells of {resolution:g} m exceed the {MAX_EXTENT_M:g} m a world spans",
+            )
         try:
-            cells = _image_cells(img, partial(_cells, negate=negate, occupied_thresh=occupied_thresh, free_thresh=free_thresh, mode=mode))
+            cells = _image_cells(
+                img, partial(_cells, negate=negate, occupied_thresh=occupied_thresh, free_thresh=free_thresh, mode=mode)
+            )
         except (OSError, ValueError) as e:
             raise _fail(source, image_key, f"cannot be read as an image: {one_line(str(e))}") from None
     settings = {"resolution": resolution, "origin": [origin[0], origin[1], 0.0], "negate": int(negate)}
@@ -140,7 +154,9 @@ def read_image(
     return MapImage(cells, float(resolution), (float(origin[0]), float(origin[1])), source, settings)
 
 
-def _image_cells(img: Image.Image, cells_of: Callable[[npt.NDArray[np.uint8], bool], npt.NDArray[np.int8]]) -> npt.NDArray[np.int8]:
+def _image_cells(
+    img: Image.Image, cells_of: Callable[[npt.NDArray[np.uint8], bool], npt.NDArray[np.int8]]
+) -> npt.NDArray[np.int8]:
     """The decoded image's cells: an 8-bit grey image (a PGM, as map_saver writes) through a table
     of its 256 shades, anything else as RGBA `BAND_ROWS` rows at a time (the same arithmetic)."""
     width, height = img.size
@@ -154,7 +170,8 @@ def _image_cells(img: Image.Image, cells_of: Callable[[npt.NDArray[np.uint8], bo
         return grey
     cells = np.empty((height, width), dtype=np.int8)
     for r0 in range(0, height, BAND_ROWS):
-        band = np.asarray(img.crop((0, r0, width, min(height, r0 + BAND_ROWS))).convert("RGBA"))  # (8-bit, as map_saver writes)
+        # (8-bit, as map_saver writes)
+        band = np.asarray(img.crop((0, r0, width, min(height, r0 + BAND_ROWS))).convert("RGBA"))
         cells[r0 : r0 + BAND_ROWS] = cells_of(band, matte)
     return cells
 
@@ -179,7 +196,9 @@ def _cells(
         cells[occ < free_thresh] = FREE
         if mode == "scale":
             between = (occ >= free_thresh) & (occ <= occupied_thresh)
-            cells[between] = np.rint((occ[between] - free_thresh) / (occupied_thresh - free_thresh) * 100.0).astype(np.int8)
+            cells[between] = np.rint((occ[between] - free_thresh) / (occupied_thresh - free_thresh) * 100.0).astype(
+                np.int8
+            )
             cells[alpha < 1.0] = UNKNOWN
     return cells
 
@@ -188,14 +207,22 @@ def _key(prefix: str, name: str) -> str:
     return f"{prefix}.{name}" if prefix else name
 
 
-def check_settings(source: str, key: str, resolution: float, occupied_thresh: float, free_thresh: float, mode: str) -> None:
+def check_settings(
+    source: str, key: str, resolution: float, occupied_thresh: float, free_thresh: float, mode: str
+) -> None:
     """map_saver's rules for the thresholds (0 <= free < occupied <= 1), a positive resolution, a known mode."""
     if not (isinstance(resolution, (int, float)) and math.isfinite(resolution) and resolution > 0):
-        raise _fail(source, _key(key, "resolution"), f"must be a positive number of metres per cell, got {resolution!r}")
+        raise _fail(
+            source, _key(key, "resolution"), f"must be a positive number of metres per cell, got {resolution!r}"
+        )
     if mode not in MODES:
         raise _fail(source, _key(key, "mode"), f"must be one of {', '.join(MODES)}, got {mode!r}")
     if not 0.0 <= free_thresh < occupied_thresh <= 1.0:
-        raise _fail(source, _key(key, "free_thresh"), f"needs 0 <= free_thresh < occupied_thresh <= 1, got {free_thresh:g} and {occupied_thresh:g}")
+        raise _fail(
+            source,
+            _key(key, "free_thresh"),
+            f"needs 0 <= free_thresh < occupied_thresh <= 1, got {free_thresh:g} and {occupied_thresh:g}",
+        )
 
 
 @contextmanager
@@ -211,7 +238,10 @@ def open_image(data: BinaryIO, source: str, key: str) -> Iterator[Image.Image]:
             warnings.simplefilter("ignore", Image.DecompressionBombWarning)  # (the size is ours to judge, just below)
             img = Image.open(data, formats=IMAGE_FORMATS)
     except Image.DecompressionBombError:
-        bomb = f"has more than {2 * (Image.MAX_IMAGE_PIXELS or 0):,} pixels (a decompression bomb?); at most {MAX_CELLS:,} cells"
+        bomb = (
+            f"has more than {2 * (Image.MAX_IMAGE_PIXELS or 0):,} "
+            f"pixels (a decompression bomb?); at most {MAX_CELLS:,} cells"
+        )
         raise _fail(source, key, bomb) from None
     except (OSError, UnidentifiedImageError, ValueError) as e:
         raise _fail(source, key, f"cannot be read as an image: {one_line(str(e))}") from None
@@ -240,8 +270,8 @@ def wall_boxes(image: MapImage, limit: int = MAX_WALL_BOXES) -> list[tuple[Point
         raise _fail(
             image.source,
             "",
-            f"its occupied and unknown cells make more than {limit:,} wall boxes (by row {e.rows} of {height}): too fragmented "
-            "to simulate (a dithered or noisy image? clean it, or save it at a coarser resolution)",
+            f"its occupied and unknown cells make more than {limit:,} wall boxes (by row {e.rows} of {height}): "
+            "too fragmented to simulate (a dithered or noisy image? clean it, or save it at a coarser resolution)",
         ) from None
 
     def corner(row_edge: int, col: int) -> Point:

@@ -40,7 +40,11 @@ class OccupancyGridData:
 
 
 def rasterise(
-    world: World, resolution_m: float = 0.05, padding_m: float = 0.5, removed: frozenset[str] = frozenset(), below: float | None = None
+    world: World,
+    resolution_m: float = 0.05,
+    padding_m: float = 0.5,
+    removed: frozenset[str] = frozenset(),
+    below: float | None = None,
 ) -> OccupancyGridData:
     """The world's solid shapes as a grid; with `below`, without the obstacles lower than that
     (the map an aerial robot plans on: it flies over them). The grid's extent is the whole world's.

@@ -95,10 +95,10 @@ class ControlPace:
 
     The controller says after each of its ticks which sim time it has acted at (`report`); the
     clock goes at most `lag_s` (and never less than two of its periods, the shortest interval seen
-    between reports, so it can always tick again) beyond it. A loop that stays silent for `silence_s` of wall time (stopped, or left
-    out with `--without`) holds nothing. `factor` is the real-time factor achieved over each
-    REPORT_S of wall time in which the clock was held: the price of an exact trial on a busy
-    machine, which the simulator reports."""
+    between reports, so it can always tick again) beyond it. A loop that stays silent for `silence_s` of wall time
+    (stopped, or left out with `--without`) holds nothing. `factor` is the real-time factor achieved over each REPORT_S
+    of wall time in which the clock was held: the price of an exact trial on a busy machine, which the simulator
+    reports."""
 
     REPORT_S = 5.0
 
@@ -124,7 +124,9 @@ class ControlPace:
         """Steps the clock may take now; None: not held."""
         if self.lag_s <= 0 or self.acted_at is None or wall_now - self._heard > self.silence_s:
             return None
-        ahead = self.acted_at + max(self.lag_s, 2.0 * self._interval if math.isfinite(self._interval) else 0.0) - sim_now
+        ahead = (
+            self.acted_at + max(self.lag_s, 2.0 * self._interval if math.isfinite(self._interval) else 0.0) - sim_now
+        )
         return max(0, int(ahead / step_s + 1e-9))
 
     def factor(self, sim_now: float, wall_now: float, held: bool) -> float | None:

@@ -93,7 +93,9 @@ class _DrivenBody:
 
 
 class Physics:
-    def __init__(self, edges: FloatArray, robot_start: Pose2D, human_starts: dict[str, Pose2D], robot: BodySpec) -> None:
+    def __init__(
+        self, edges: FloatArray, robot_start: Pose2D, human_starts: dict[str, Pose2D], robot: BodySpec
+    ) -> None:
         self.space = pymunk.Space()
         self.space.gravity = (0.0, 0.0)
         self.space.iterations = 10

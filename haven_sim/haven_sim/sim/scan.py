@@ -31,7 +31,9 @@ class ScanParams:
     def __post_init__(self) -> None:
         check_bounds(self)
         if not self.range_min_m < self.range_max_m:
-            raise ValueError(f"scan_range_min_m must be less than scan_range_max_m, got {self.range_min_m} and {self.range_max_m}")
+            raise ValueError(
+                f"scan_range_min_m must be less than scan_range_max_m, got {self.range_min_m} and {self.range_max_m}"
+            )
 
     @property
     def angle_min(self) -> float:
@@ -92,7 +94,9 @@ class LaserScanner:
             self._cells[key] = cell
         return cell
 
-    def _runs(self, start: FloatArray, sweep: FloatArray, skip: npt.NDArray[np.bool_] | None) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
+    def _runs(
+        self, start: FloatArray, sweep: FloatArray, skip: npt.NDArray[np.bool_] | None
+    ) -> tuple[npt.NDArray[np.intp], npt.NDArray[np.intp]]:
         """(beam, object) pairs for every beam whose index (a float: beam steps from beam 0) lies in
         [start, start + sweep]; start >= 0. Beams index a doubled ring (0 .. 2 * beams) so a run
         crossing angle_max needs no wrap-around."""
@@ -104,7 +108,9 @@ class LaserScanner:
         owner, offset = np.nonzero(lanes < counts[:, None])
         return k0[owner] + offset, owner
 
-    def scan(self, pose: Pose2D, circles: Sequence[tuple[float, float, float]] | FloatArray | None = None) -> FloatArray:
+    def scan(
+        self, pose: Pose2D, circles: Sequence[tuple[float, float, float]] | FloatArray | None = None
+    ) -> FloatArray:
         """Ranges for a scanner at `pose`; circles are (x, y, radius) of other bodies."""
         p = self.params
         rmax = p.range_max_m

@@ -30,7 +30,9 @@ from haven_sim.sim.world import World
 
 @dataclass(frozen=True)
 class SimConfig:
-    physics_rate_hz: float = param(50.0, "physics steps per second of sim time (/odom is published every step)", POSITIVE)
+    physics_rate_hz: float = param(
+        50.0, "physics steps per second of sim time (/odom is published every step)", POSITIVE
+    )
     robot: RobotDescription = from_robot()  # the robot's body, limits and flight (its `robot` parameter names it)
     human_max_speed_mps: float = param(1.5, "a person's top walking speed", POSITIVE)
     cmd_timeout_s: float = param(0.5, "no command for this long (sim time) stops a body", POSITIVE)
@@ -42,7 +44,10 @@ class SimConfig:
     def __post_init__(self) -> None:
         check_bounds(self)
         if NS_PER_S % round(NS_PER_S / self.physics_rate_hz):
-            raise ValueError(f"physics_rate_hz must divide a second into whole nanoseconds (25, 50, 100, 200...), got {self.physics_rate_hz}")
+            raise ValueError(
+                "physics_rate_hz must divide a second into whole nanoseconds "
+                f"(25, 50, 100, 200...), got {self.physics_rate_hz}"
+            )
 
     @property
     def step_ns(self) -> int:
@@ -75,7 +80,9 @@ class Simulation:
         self.steps = 0
         self._step_ns, self._step_s = self.config.step_ns, self.config.step_s  # config is frozen: read per step
         self.robot_gate = CommandGate(self.config.robot_limits, self.config.cmd_timeout_s)
-        self.human_gates = {h.id: CommandGate(self.config.human_limits, self.config.cmd_timeout_s) for h in world.humans}
+        self.human_gates = {
+            h.id: CommandGate(self.config.human_limits, self.config.cmd_timeout_s) for h in world.humans
+        }
         self.battery = Battery(self.config.battery)
         robot = self.config.robot
         self.start = start_pose(world, robot)  # an aerial robot starts on its pad
@@ -90,7 +97,12 @@ class Simulation:
         w = self.world
         # An aerial robot: no low obstacles in its physics, its scan (the lidar at flight height) or
         # its map; walls, obstructions and people stay solid (at cruise height it is below a head).
-        self.physics = Physics(w.edges(obstructions=False, below=self.below), self.start, {h.id: h.start for h in w.humans}, self.config.robot.body())
+        self.physics = Physics(
+            w.edges(obstructions=False, below=self.below),
+            self.start,
+            {h.id: h.start for h in w.humans},
+            self.config.robot.body(),
+        )
         for o in w.obstructions:  # kept apart so that each can be removed
             self.physics.add_obstruction(o.id, o.shape.edges())
         self.scanner = LaserScanner(self.config.scan, w.edges(below=self.below), seed=self.config.seed)

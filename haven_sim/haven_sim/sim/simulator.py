@@ -42,20 +42,31 @@ class SimulatorConfig:
     map_resolution_m: float = param(0.05, "cell size of /map", POSITIVE)
     map_frame: str = param("map", "fixed frame")
     odom_frame: str = param("odom", "odometry frame")
-    publish_map_to_odom: bool = param(True, "the identity map -> odom on /tf_static; false leaves it to a localization node (AMCL, slam_toolbox)")
+    publish_map_to_odom: bool = param(
+        True, "the identity map -> odom on /tf_static; false leaves it to a localization node (AMCL, slam_toolbox)"
+    )
     base_frame: str = from_robot("frames.base")  # the robot's frames, from its robot file
     scan_frame: str = from_robot("lidar.frame")
     lockstep_participants: tuple[str, ...] = param((), "with lockstep: the nodes that act on the clock's ticks")
-    lockstep_observers: tuple[str, ...] = param((), "with lockstep: participants nobody reads during a tick, not waited for")
-    lockstep_wait_for: tuple[str, ...] = param((), "with lockstep: nodes that must listen before the first step (the recorder)")
-    reset_allowed: bool = param(True, "/haven/reset resets the world (haven run turns it off: a recorded trial refuses it, as an event)")
+    lockstep_observers: tuple[str, ...] = param(
+        (), "with lockstep: participants nobody reads during a tick, not waited for"
+    )
+    lockstep_wait_for: tuple[str, ...] = param(
+        (), "with lockstep: nodes that must listen before the first step (the recorder)"
+    )
+    reset_allowed: bool = param(
+        True, "/haven/reset resets the world (haven run turns it off: a recorded trial refuses it, as an event)"
+    )
     estop_hold_s: float = param(
-        ESTOP_HOLD_S, "as the mux's: a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE
+        ESTOP_HOLD_S,
+        "as the mux's: a false on /haven/estop releases the stop only when no true has come for this long",
+        POSITIVE,
     )
     control_lag_s: float = param(
         0.1,
-        "free-running clock: sim time runs at most this far (and two control ticks) ahead of the sim time the controller has "
-        "acted at, slowing below real_time_factor when it falls behind (a clock_held event says how much); 0: never held",
+        "free-running clock: sim time runs at most this far (and two control ticks) "
+        "ahead of the sim time the controller has acted at, slowing below real_time_factor "
+        "when it falls behind (a clock_held event says how much); 0: never held",
         NOT_NEGATIVE,
     )
 
@@ -81,7 +92,9 @@ class SimulatorComponent:
         self.config = c = config or SimulatorConfig()
         self.sim = Simulation(world, c.sim)
         self._step_ns = c.sim.step_ns
-        self._scan_ns, self._humans_ns, self._battery_ns = (period_ns(r) for r in (c.sim.scan.rate_hz, c.humans_rate_hz, c.battery_rate_hz))
+        self._scan_ns, self._humans_ns, self._battery_ns = (
+            period_ns(r) for r in (c.sim.scan.rate_hz, c.humans_rate_hz, c.battery_rate_hz)
+        )
         self._map_due = self._static_due = True  # both go out with the first sense()
         self.estop = EStopLatch(c.estop_hold_s)
         self.warnings: list[str] = []
@@ -102,7 +115,17 @@ class SimulatorComponent:
         return out
 
     def outputs(self) -> Sequence[str]:
-        fixed = (topics.CLOCK, topics.MAP, topics.ODOM, topics.TF, topics.TF_STATIC, topics.SCAN, topics.BATTERY, topics.HUMANS, topics.EVENTS)
+        fixed = (
+            topics.CLOCK,
+            topics.MAP,
+            topics.ODOM,
+            topics.TF,
+            topics.TF_STATIC,
+            topics.SCAN,
+            topics.BATTERY,
+            topics.HUMANS,
+            topics.EVENTS,
+        )
         return (*fixed, *(topics.human_pose(h.id) for h in self.world.humans))
 
     def on_cmd_vel(self, cmd: Twist2D, now: float) -> list[Message]:
@@ -150,7 +173,11 @@ class SimulatorComponent:
         events = sim.pop_events()
         if self._static_due:
             self._static_due = False
-            out.append(Message(topics.TF_STATIC, static_frames(c.sim.robot, c.map_frame, c.odom_frame, c.publish_map_to_odom), now))
+            out.append(
+                Message(
+                    topics.TF_STATIC, static_frames(c.sim.robot, c.map_frame, c.odom_frame, c.publish_map_to_odom), now
+                )
+            )
         if self._map_due or (events and any(e.kind is EventKind.OBSTRUCTION_REMOVED for e in events)):
             self._map_due = False
             out.append(Message(topics.MAP, sim.occupancy(c.map_resolution_m), now))

@@ -93,7 +93,8 @@ class World:
     gems: tuple[Gem, ...] = ()
     obstructions: tuple[Obstruction, ...] = ()
     source: str = field(default="", compare=False)
-    map: MapImage | None = field(default=None, compare=False, repr=False)  # the ROS map or floor plan its walls come from
+    # the ROS map or floor plan its walls come from
+    map: MapImage | None = field(default=None, compare=False, repr=False)
 
     def solid_shapes(self, removed: frozenset[str] = frozenset(), below: float | None = None) -> list[Shape]:
         """Walls, obstacles and the obstructions not in `removed`; with `below` (a flying robot's
@@ -106,7 +107,9 @@ class World:
         """The obstacles, less those lower than `below` (None: all)."""
         return [s for s in self.obstacles if not s.below(below)]
 
-    def edges(self, removed: frozenset[str] = frozenset(), obstructions: bool = True, below: float | None = None) -> FloatArray:
+    def edges(
+        self, removed: frozenset[str] = frozenset(), obstructions: bool = True, below: float | None = None
+    ) -> FloatArray:
         """Edges (N, 4) of every solid shape; without obstructions when `obstructions` is False,
         without obstacles lower than `below` (see `solid_shapes`)."""
         shapes = self.solid_shapes(removed, below) if obstructions else [*self.walls, *self.obstacles_at(below)]

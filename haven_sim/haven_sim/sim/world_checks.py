@@ -31,7 +31,11 @@ def span_problem(items: list[tuple[str, list[Point]]]) -> tuple[str, str] | None
             hi = [max(hi[0], x), max(hi[1], y)]
             if hi[0] - lo[0] > MAX_EXTENT_M or hi[1] - lo[1] > MAX_EXTENT_M:
                 span = f"{hi[0] - lo[0]:.0f} m x {hi[1] - lo[1]:.0f} m"
-                return key, f"({x:g}, {y:g}) makes the world span {span}; a world fits in {MAX_EXTENT_M:g} m x {MAX_EXTENT_M:g} m"
+                return (
+                    key,
+                    f"({x:g}, {y:g}) makes the world span {span}; "
+                    f"a world fits in {MAX_EXTENT_M:g} m x {MAX_EXTENT_M:g} m",
+                )
     return None
 
 

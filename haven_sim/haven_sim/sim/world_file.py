@@ -44,7 +44,14 @@ from typing import Annotated, Any, Literal
 import yaml
 
 from haven_sim.common.bodies import HUMAN_BODY
-from haven_sim.common.geometry import MAX_POLYGON_VERTICES, Point, Pose2D, polygon_area, polygon_problem, segment_to_polygon
+from haven_sim.common.geometry import (
+    MAX_POLYGON_VERTICES,
+    Point,
+    Pose2D,
+    polygon_area,
+    polygon_problem,
+    segment_to_polygon,
+)
 from haven_sim.common.schema import FileModel, Line, check, checked, listing
 from haven_sim.common.yaml_file import file_label, finite, open_regular, read_yaml, short
 from haven_sim.robots.fields import DEFAULT
@@ -85,7 +92,8 @@ def world_files(world: World, name: str) -> dict[str, bytes]:
         image = Path(world.map.source)
         image_name = f"{Path(name).stem}_map{image.suffix.lower()}"
         data["map"] = {"image": image_name, **world.map.settings}
-        with open_regular(image, "map image", MAX_IMAGE_FILE_BYTES) as f:  # (still a regular file, as when it was loaded)
+        # (still a regular file, as when it was loaded)
+        with open_regular(image, "map image", MAX_IMAGE_FILE_BYTES) as f:
             files[image_name] = f.read()
     header = f"# {world.source} as run (its starts as the scenario gave them; its map image beside it)\n"
     return {name: (header + yaml.safe_dump(data, sort_keys=False)).encode(), **files}
@@ -106,10 +114,14 @@ def load_world(path: str | Path) -> World:
 def parse_world(data: Any, source: str = "<world>") -> World:
     if data is None:
         raise WorldError(f"{file_label(source)}: name: the world file is empty")
-    if isinstance(data, dict) and {"image", "resolution"} <= data.keys() and not data.keys() & WorldFile.model_fields.keys():
+    if (
+        isinstance(data, dict)
+        and {"image", "resolution"} <= data.keys()
+        and not data.keys() & WorldFile.model_fields.keys()
+    ):
         raise WorldError(
-            f"{file_label(source)}: this is a map_server map (image, resolution, origin), not a world: write a world file "
-            f"with `map: {Path(source).name}`, rooms and starts (docs/howto/own-building.md)"
+            f"{file_label(source)}: this is a map_server map (image, resolution, origin), not a world: "
+            f"write a world file with `map: {Path(source).name}`, rooms and starts (docs/howto/own-building.md)"
         )
     return _Parser(source).world(check(WorldFile, data, source, WorldError, "world file"))
 
@@ -141,14 +153,18 @@ def _sized(what: str, sizes: tuple[int, ...]) -> Any:
 
 def _ident(value: Any) -> Any:
     if not isinstance(value, str) or not _ID_RE.fullmatch(value):
-        raise ValueError(f"must be a name of up to {MAX_NAME_CHARS} letters, digits and '_' starting with a letter, got {short(value)}")
+        raise ValueError(
+            f"must be a name of up to {MAX_NAME_CHARS} letters, "
+            f"digits and '_' starting with a letter, got {short(value)}"
+        )
     return value
 
 
 Coordinate = _number(MAX_COORDINATE_M)
 Length = _number(MAX_EXTENT_M, positive=True)
 PointT = Annotated[list[Coordinate], _sized("a point [x, y]", (2,))]  # type: ignore[valid-type]
-PoseT = Annotated[list[_number()], _sized("a pose [x, y, yaw]", (2, 3))]  # type: ignore[valid-type, misc]  # (x, y bounded by `pose`)
+# (x, y bounded by `pose`)
+PoseT = Annotated[list[_number()], _sized("a pose [x, y, yaw]", (2, 3))]  # type: ignore[valid-type, misc]
 Ident = Annotated[str, checked(_ident)]
 
 
@@ -272,7 +288,9 @@ class _Parser:
             walls = tuple(Shape(_ccw(list(box)), "wall", MAP_WALL_ID) for box in wall_boxes(grid)) + walls
         if not walls:
             raise self.fail(
-                "walls", "needs at least one wall" + (" (or a map: to make them from)" if grid is None else " (the map has no occupied cell)")
+                "walls",
+                "needs at least one wall"
+                + (" (or a map: to make them from)" if grid is None else " (the map has no occupied cell)"),
             )
         rooms = tuple(Room(r.name, (r.centre[0], r.centre[1])) for r in d.rooms or ())
         self.unique([r.name for r in rooms], "rooms", "name")
@@ -346,7 +364,9 @@ class _Parser:
         items: list[tuple[str, list[Point]]] = [(f"walls[{i}]", list(s.polygon)) for i, s in enumerate(world.walls)]
         items += [(f"obstacles[{i}]", list(s.polygon)) for i, s in enumerate(world.obstacles)]
         items += [(f"obstructions[{i}]", list(o.shape.polygon)) for i, o in enumerate(world.obstructions)]
-        items += [("robot.start", [world.robot_start[:2]])] + [(f"humans[{i}].start", [h.start[:2]]) for i, h in enumerate(world.humans)]
+        items += [("robot.start", [world.robot_start[:2]])] + [
+            (f"humans[{i}].start", [h.start[:2]]) for i, h in enumerate(world.humans)
+        ]
         items += [(f"gems[{i}].position", [g.position]) for i, g in enumerate(world.gems)]
         items += [(f"rooms[{i}].centre", [r.centre]) for i, r in enumerate(world.rooms)]
         items += [(f"hallways[{i}].centreline", list(h.centreline)) for i, h in enumerate(world.hallways)]
@@ -359,7 +379,9 @@ class _Parser:
         """On a world made from a map, the places the overlay names lie on the map."""
         if world.map is None:
             return
-        items = [("robot.start", world.robot_start[:2])] + [(f"humans[{i}].start", h.start[:2]) for i, h in enumerate(world.humans)]
+        items = [("robot.start", world.robot_start[:2])] + [
+            (f"humans[{i}].start", h.start[:2]) for i, h in enumerate(world.humans)
+        ]
         items += [(f"rooms[{i}].centre", r.centre) for i, r in enumerate(world.rooms)]
         items += [(f"gems[{i}].position", g.position) for i, g in enumerate(world.gems)]
         items += [("charging_base.position", world.charging_base.position)] if world.charging_base else []
@@ -378,7 +400,10 @@ class _Parser:
         checks = [("robot.start", world.robot_start.x, world.robot_start.y, *robot)]
         checks += [(f"humans[{i}].start", h.start.x, h.start.y, *person) for i, h in enumerate(world.humans)]
         checks += [(f"rooms[{i}].centre", *r.centre, *robot) for i, r in enumerate(world.rooms)]
-        checks += [(f"gems[{i}].position", *g.position, *(robot if g.owner == "robot" else person)) for i, g in enumerate(world.gems)]
+        checks += [
+            (f"gems[{i}].position", *g.position, *(robot if g.owner == "robot" else person))
+            for i, g in enumerate(world.gems)
+        ]
         checks += [("charging_base.position", *world.charging_base.position, *robot)] if world.charging_base else []
         for key, x, y, who, radius in checks:
             hit = overlapping_shape(shapes, x, y, radius)

@@ -74,9 +74,17 @@ def _no_reader(msg: Any) -> Any:
 def viz_specs(frame_id: str = "map") -> dict[str, TopicSpec]:
     """haven_viz's topics for the topic table (haven_sim.nodes.wire)."""
     return {
-        topics.AR_MARKERS: TopicSpec(MarkerArray, lambda u, t: marker_array(u, t, frame_id), _no_reader, qos.STREAM, qos.RELIABLE),
-        topics.WORLD_MARKERS: TopicSpec(MarkerArray, lambda u, t: marker_array(u, t, frame_id), _no_reader, qos.LATCHED, qos.LATCHED),
+        topics.AR_MARKERS: TopicSpec(
+            MarkerArray, lambda u, t: marker_array(u, t, frame_id), _no_reader, qos.STREAM, qos.RELIABLE
+        ),
+        topics.WORLD_MARKERS: TopicSpec(
+            MarkerArray, lambda u, t: marker_array(u, t, frame_id), _no_reader, qos.LATCHED, qos.LATCHED
+        ),
         topics.CUE_STATE: TopicSpec(
-            String, lambda c, t: String(data=c.to_json(t)), lambda m: CueState.from_json(m.data)[1], qos.CHANGES, qos.LATCHED
+            String,
+            lambda c, t: String(data=c.to_json(t)),
+            lambda m: CueState.from_json(m.data)[1],
+            qos.CHANGES,
+            qos.LATCHED,
         ),
     }

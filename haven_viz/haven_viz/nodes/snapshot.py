@@ -39,8 +39,9 @@ class Snapshot(Node):
     def _give_up(self) -> None:
         if not self.have_world:
             print(
-                f"snapshot: error: no HAVEN suite here: nothing on /haven/world_markers within {self.timeout_s:g} s "
-                f"(ROS_DOMAIN_ID {os.environ.get('ROS_DOMAIN_ID', '0')}; is `haven sim` or `haven run` running with the same --domain-id?)",
+                "snapshot: error: no HAVEN suite here: nothing on /haven/world_markers within "
+                f"{self.timeout_s:g} s (ROS_DOMAIN_ID {os.environ.get('ROS_DOMAIN_ID', '0')}; "
+                "is `haven sim` or `haven run` running with the same --domain-id?)",
                 file=sys.stderr,
                 flush=True,
             )

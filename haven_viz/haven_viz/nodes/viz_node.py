@@ -34,7 +34,10 @@ class VizNode(ComponentNode):
         world = load_world(resolve_world_path(config.world)) if config.world else None
         self.viz = VizComponent(config, world)
         frames = wire.Frames(map=config.map_frame)
-        self.wire(self.viz, {**wire.specs(frames, [h.id for h in world.humans] if world else []), **viz_specs(config.map_frame)})
+        self.wire(
+            self.viz,
+            {**wire.specs(frames, [h.id for h in world.humans] if world else []), **viz_specs(config.map_frame)},
+        )
         self._viewers = 0
         self.add_post_set_parameters_callback(self._toggles_set)
         self.create_timer(self.viz.period_s, self._count_viewers)

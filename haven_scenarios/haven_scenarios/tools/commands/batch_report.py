@@ -20,14 +20,16 @@ from haven_viz.cues import CUES
 
 MAX_WORKERS = 1024
 GRID_HELP = (
-    "an axis of the sweep (repeat for more): condition=all,none,path_projection (cues joined by +), model=walker,yielder,blocker, "
-    "robot=turtlebot2,my_bot.yaml (names or robot files), "
+    "an axis of the sweep (repeat for more): condition=all,none,path_projection (cues joined by +), "
+    "model=walker,yielder,blocker, robot=turtlebot2,my_bot.yaml (names or robot files), "
     f"speed_mps=0.8,1.2 or a participant parameter{' (' + ', '.join(param_keys()) + ')' if param_keys() else ''}"
 )
-CLUSTER_HELP = "run on Dask: local (a LocalCluster of --workers processes) or a running scheduler's address (tcp://host:8786)"
+CLUSTER_HELP = (
+    "run on Dask: local (a LocalCluster of --workers processes) or a running scheduler's address (tcp://host:8786)"
+)
 CONDITION_HELP = (
-    f"cues shown: all (each cue the robot has that is on by default), none, or any of the installed cues: {' '.join(CUES)} "
-    "(default: the scenario's condition)"
+    "cues shown: all (each cue the robot has that is on by default), none, "
+    f"or any of the installed cues: {' '.join(CUES)} (default: the scenario's condition)"
 )
 
 
@@ -36,18 +38,32 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     report.add_argument("paths", nargs="+", type=Path)
     report.add_argument("--out", type=Path, default=Path("report.csv"))
     report.set_defaults(func=report_cmd)
-    batch = sub.add_parser("batch", help="run many simulated trials without ROS, one CSV row per trial, on every core or a Dask cluster")
-    batch.add_argument("scenarios", nargs="+", metavar="scenario", help=f"shipped scenarios ({', '.join(scenario_names())}) or scenario YAMLs")
+    batch = sub.add_parser(
+        "batch", help="run many simulated trials without ROS, one CSV row per trial, on every core or a Dask cluster"
+    )
+    batch.add_argument(
+        "scenarios",
+        nargs="+",
+        metavar="scenario",
+        help=f"shipped scenarios ({', '.join(scenario_names())}) or scenario YAMLs",
+    )
     batch.add_argument("--trials", type=bounded_int(1), default=None, help="seeds --seed, --seed + 1, ... (default 10)")
     batch.add_argument("--seed", type=SEED, default=None, help="the first seed (default 0)")
     batch.add_argument("--seeds", default=None, help="the seeds, e.g. 0-9 or 1,4,7 (instead of --trials/--seed)")
     batch.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
     batch.add_argument("--grid", action="append", default=[], metavar="KEY=V1,V2", help=GRID_HELP)
     add_robot_option(batch)
-    batch.add_argument("--workers", type=bounded_int(1, MAX_WORKERS), default=None, help=f"worker processes (default: every core, {cores()} here)")
+    batch.add_argument(
+        "--workers",
+        type=bounded_int(1, MAX_WORKERS),
+        default=None,
+        help=f"worker processes (default: every core, {cores()} here)",
+    )
     batch.add_argument("--cluster", default=None, metavar="local|ADDRESS", help=CLUSTER_HELP)
     batch.add_argument("--out", default=None, help="CSV path (default: sessions/batch_<scenario>_<time>.csv)")
-    batch.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML (the same file `haven run` takes)")
+    batch.add_argument(
+        "--params-file", type=existing_file, default=None, help="ROS parameter YAML (the same file `haven run` takes)"
+    )
     batch.set_defaults(func=batch_cmd)
 
 
@@ -61,7 +77,10 @@ def report_cmd(args: argparse.Namespace) -> int:
         return fail(f"no session folders in {', '.join(map(str, args.paths))}")
     rows = report_csv([p for p in args.paths if p.exists()], args.out)
     flagged = sum(1 for r in rows if not r.get("valid"))
-    print(f"haven: {len(rows)} session(s) -> {args.out}" + (f" ({flagged} flagged not valid: see invalid_reasons)" if flagged else ""))
+    print(
+        f"haven: {len(rows)} session(s) -> {args.out}"
+        + (f" ({flagged} flagged not valid: see invalid_reasons)" if flagged else "")
+    )
     return 1 if missing else 0
 
 
@@ -105,7 +124,8 @@ def batch_cmd(args: argparse.Namespace) -> int:
     workers = args.workers or cores()
     progress = Progress(len(specs))
     try:
-        with on_stop_signals(interrupted):  # (SIGTERM, SIGHUP, ... as Ctrl-C: the workers stopped, the finished rows kept)
+        # (SIGTERM, SIGHUP, ... as Ctrl-C: the workers stopped, the finished rows kept)
+        with on_stop_signals(interrupted):
             rows = run_batch(specs, out, suite, workers, args.cluster, progress)
     except OSError as e:  # a cluster that cannot be reached, a CSV that cannot be written
         progress.close(finished=False)
@@ -113,7 +133,12 @@ def batch_cmd(args: argparse.Namespace) -> int:
     except KeyboardInterrupt:
         progress.close(finished=False)
         kept = journal_path(out)
-        print(f"haven: interrupted; the {progress.done} finished trial(s) are in {kept}" if kept.exists() else "haven: interrupted", file=sys.stderr)
+        print(
+            f"haven: interrupted; the {progress.done} finished trial(s) are in {kept}"
+            if kept.exists()
+            else "haven: interrupted",
+            file=sys.stderr,
+        )
         return 130
     progress.close()
     for line in group_summaries(specs, rows):

@@ -13,14 +13,24 @@ DEFAULT_DIR = Path("tls")
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    cert = sub.add_parser("cert", help="HTTPS for the pages: the lab's certificate authority and a certificate for this machine")
-    cert.add_argument("--dir", type=Path, default=DEFAULT_DIR, help=f"where the files go (default: ./{DEFAULT_DIR}; the authority is kept if there)")
+    cert = sub.add_parser(
+        "cert", help="HTTPS for the pages: the lab's certificate authority and a certificate for this machine"
+    )
+    cert.add_argument(
+        "--dir",
+        type=Path,
+        default=DEFAULT_DIR,
+        help=f"where the files go (default: ./{DEFAULT_DIR}; the authority is kept if there)",
+    )
     cert.add_argument(
         "--name",
         action="append",
         default=None,
         metavar="NAME",
-        help="one more host name or IP address the pages are opened by, beside this machine's names and addresses (repeat)",
+        help=(
+            "one more host name or IP address the pages are opened by, "
+            "beside this machine's names and addresses (repeat)"
+        ),
     )
     cert.set_defaults(func=cert_cmd)
 
@@ -34,7 +44,10 @@ def cert_cmd(args: argparse.Namespace) -> int:
     except (ValueError, OSError) as e:
         return fail(str(e))
     said = "made" if made.new_ca else "kept"
-    print(f"cert: the lab's certificate authority ({said}): {made.ca_cert}  <- trust this once on each headset and browser")
+    print(
+        f"cert: the lab's certificate authority ({said}): "
+        f"{made.ca_cert}  <- trust this once on each headset and browser"
+    )
     print(f"cert: a certificate for {', '.join(names)}: {made.cert} (key {made.key})")
     print(f"cert: serve with  --tls-cert {made.cert} --tls-key {made.key}")
     return 0

@@ -26,8 +26,10 @@ def add_dropout_options(group: argparse._ActionsContainer, default: str = "keep"
         "--on-disconnect",
         choices=[p.value for p in OnDisconnect],
         default=OnDisconnect(default).value,
-        help=f"a participant's page disconnects during the trial: keep running, pause simulated time until they are back, "
-        f"or abort the trial (default {default})",
+        help=(
+            "a participant's page disconnects during the trial: keep running, "
+            f"pause simulated time until they are back, or abort the trial (default {default})"
+        ),
     )
     group.add_argument(
         "--reconnect-timeout",
@@ -40,7 +42,12 @@ def add_dropout_options(group: argparse._ActionsContainer, default: str = "keep"
 
 def add_tls_options(group: argparse._ActionsContainer) -> None:
     """`--tls-cert FILE --tls-key FILE`: serve the pages over HTTPS (web/tls.py)."""
-    group.add_argument("--tls-cert", default=None, metavar="FILE", help="serve HTTPS with this certificate (PEM; `haven cert` makes one)")
+    group.add_argument(
+        "--tls-cert",
+        default=None,
+        metavar="FILE",
+        help="serve HTTPS with this certificate (PEM; `haven cert` makes one)",
+    )
     group.add_argument("--tls-key", default=None, metavar="FILE", help="the certificate's private key (PEM)")
 
 
@@ -76,7 +83,9 @@ def bounded_int(low: int, high: int = INT64_MAX) -> Callable[[str], int]:
         if value is None:
             raise argparse.ArgumentTypeError(f"expected an integer, got {text[:40]!r}")
         if value < low or value > high:
-            raise argparse.ArgumentTypeError(f"must be {'at least ' + str(low) if high == INT64_MAX else f'{low}..{high}'}, got {value}")
+            raise argparse.ArgumentTypeError(
+                f"must be {'at least ' + str(low) if high == INT64_MAX else f'{low}..{high}'}, got {value}"
+            )
         return value
 
     parse.__name__ = "integer"  # (argparse names the type in its messages)
@@ -92,7 +101,11 @@ def allowed_topic(text: str) -> str:
     if not watched(topic):
         known = [t for t in WRITERS if "*" not in t and allowable(t) is None]
         close = difflib.get_close_matches(topic, known, n=1)
-        why += f" (did you mean {close[0]}?)" if close else f" (one of {', '.join(sorted(known))}, or /humans/<id>/cmd_vel)"
+        why += (
+            f" (did you mean {close[0]}?)"
+            if close
+            else f" (one of {', '.join(sorted(known))}, or /humans/<id>/cmd_vel)"
+        )
     raise argparse.ArgumentTypeError(f"{text[:60]}: {why}")
 
 
@@ -109,7 +122,10 @@ SEED = bounded_int(0, SEED_MAX)
 
 def add_ros_options(p: argparse.ArgumentParser, suite: bool = False) -> None:
     """`suite`: the command starts a suite, which takes a domain of its own (run/domains.py)."""
-    own = "the inherited one if no other HAVEN suite runs there, else a free one (said); given: refused if another suite holds it"
+    own = (
+        "the inherited one if no other HAVEN suite runs there, "
+        "else a free one (said); given: refused if another suite holds it"
+    )
     help = f"ROS_DOMAIN_ID for the nodes (default: {own if suite else 'inherited'})"
     p.add_argument("--domain-id", type=bounded_int(0, MAX_DOMAIN_ID), default=None, help=help)
     if suite:
@@ -132,24 +148,36 @@ def add_domains_option(p: argparse.ArgumentParser) -> None:
         type=domain_range,
         default=None,
         metavar="A-B",
-        help=f"take a ROS domain only from A..B (0..{MAX_DOMAIN_ID}), never another; default: ${DOMAINS_ENV} if set, else any as above",
+        help=(
+            f"take a ROS domain only from A..B (0..{MAX_DOMAIN_ID}), "
+            f"never another; default: ${DOMAINS_ENV} if set, else any as above"
+        ),
     )
 
 
 def add_suite_options(p: argparse.ArgumentParser, sim: bool = False) -> None:
     """--params-file and --without (`haven sim` also runs Nav2's servers, which it may leave out)."""
-    p.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)")
+    p.add_argument(
+        "--params-file",
+        type=existing_file,
+        default=None,
+        help="ROS parameter YAML for every node (e.g. an edited copy of haven.yaml)",
+    )
     p.add_argument(
         "--without",
         nargs="+",
         default=[],
         choices=nodes.SIM_REPLACEABLE if sim else nodes.REPLACEABLE,
         metavar="NODE",
-        help="leave out our mux, planner, controller or viz" + (" or the Nav2 servers (nav2)" if sim else "") + " (to run your own in their place)",
+        help="leave out our mux, planner, controller or viz"
+        + (" or the Nav2 servers (nav2)" if sim else "")
+        + " (to run your own in their place)",
     )
 
 
-ROBOT_HELP = "the robot: a name from `haven robots` or a robot YAML file (default: the scenario's robot: model, else turtlebot2)"
+ROBOT_HELP = (
+    "the robot: a name from `haven robots` or a robot YAML file (default: the scenario's robot: model, else turtlebot2)"
+)
 
 
 def add_robot_option(p: argparse.ArgumentParser) -> None:
@@ -177,7 +205,9 @@ def params_file(args: argparse.Namespace) -> str | None:
     return str(Path(args.params_file).resolve()) if getattr(args, "params_file", None) else None
 
 
-def run_client(args: argparse.Namespace, name: str, module: str, params: dict[str, object], extra: Sequence[str] = ()) -> int:
+def run_client(
+    args: argparse.Namespace, name: str, module: str, params: dict[str, object], extra: Sequence[str] = ()
+) -> int:
     """Run one client node against a running suite until it exits (or Ctrl-C); its exit code is ours."""
     with Supervisor(environment(args)) as sup:
         sup.install_signal_handlers()
@@ -193,8 +223,11 @@ def add_questionnaire_option(group: argparse._ArgumentGroup) -> None:
         nargs="+",
         default=None,
         metavar="SPEC",
-        help=f"after the trial, each teleoperated participant's page asks these questionnaires in order: registered ones ({', '.join(registered())}) "
-        "or YAML files of Likert items; haven run waits for the answers (or the console's Skip questionnaires, or Ctrl-C)",
+        help=(
+            "after the trial, each teleoperated participant's page asks these questionnaires in order: "
+            f"registered ones ({', '.join(registered())}) or YAML files of Likert items; "
+            "haven run waits for the answers (or the console's Skip questionnaires, or Ctrl-C)"
+        ),
     )
 
 

@@ -23,10 +23,27 @@ NEW_WORLD: dict[str, Any] = {"name": "my_world", "walls": [], "robot": {"start":
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     edit = sub.add_parser("edit", help="the world editor in the browser: draw a world, save it with a scenario")
-    edit.add_argument("world", metavar="WORLD", nargs="?", default=None, help="a world file or a shipped world's name (default: a new, empty world)")
-    edit.add_argument("--out", type=Path, default=Path("."), help="the folder saved worlds and scenarios go to (default: here)")
-    edit.add_argument("--host", default=DEFAULT_HOST, help="the address to serve on (0.0.0.0: every interface; default this machine only)")
-    edit.add_argument("--port", type=bounded_int(0, 65535), default=DEFAULT_PORT, help=f"the port (default {DEFAULT_PORT}; 0: any free one)")
+    edit.add_argument(
+        "world",
+        metavar="WORLD",
+        nargs="?",
+        default=None,
+        help="a world file or a shipped world's name (default: a new, empty world)",
+    )
+    edit.add_argument(
+        "--out", type=Path, default=Path("."), help="the folder saved worlds and scenarios go to (default: here)"
+    )
+    edit.add_argument(
+        "--host",
+        default=DEFAULT_HOST,
+        help="the address to serve on (0.0.0.0: every interface; default this machine only)",
+    )
+    edit.add_argument(
+        "--port",
+        type=bounded_int(0, 65535),
+        default=DEFAULT_PORT,
+        help=f"the port (default {DEFAULT_PORT}; 0: any free one)",
+    )
     add_tls_options(edit)
     edit.set_defaults(func=edit_cmd)
 
@@ -40,7 +57,10 @@ def world_tree(spec: str | None) -> dict[str, Any]:
     if not isinstance(data, dict):
         raise WorldError(f"{file_label(path)}: name: must be a mapping of the world's keys")
     if data.get("map") is not None:
-        raise WorldError(f"{file_label(path)}: map: the editor draws walls itself: start a new world and import the map image as walls")
+        raise WorldError(
+            f"{file_label(path)}: map: the editor draws walls itself: "
+            "start a new world and import the map image as walls"
+        )
     return data
 
 
@@ -50,7 +70,9 @@ def edit_cmd(args: argparse.Namespace) -> int:
 
     try:
         files = tls_files(args.tls_cert, args.tls_key)
-        server = EditorServer(args.host, args.port, world_tree(args.world), args.out, server_context(*files) if files else None)
+        server = EditorServer(
+            args.host, args.port, world_tree(args.world), args.out, server_context(*files) if files else None
+        )
     except (WorldError, YamlFileError, ValueError) as e:
         return fail(str(e))
     server.start()

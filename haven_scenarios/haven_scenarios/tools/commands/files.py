@@ -28,33 +28,52 @@ from haven_sim.sim.world import WorldError
 from haven_sim.sim.world_file import WorldFile, parse_world
 
 # The file kinds whose shape is a model of the schema layer (haven_sim/common/schema.py).
-SCHEMAS: dict[str, Any] = {"world": WorldFile, "scenario": ScenarioFile, "study": StudyFile, "questionnaire": LikertFile, "robot": RobotFileModel}
+SCHEMAS: dict[str, Any] = {
+    "world": WorldFile,
+    "scenario": ScenarioFile,
+    "study": StudyFile,
+    "questionnaire": LikertFile,
+    "robot": RobotFileModel,
+}
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     validate = sub.add_parser(
-        "validate", help="check world, scenario, study, robot and parameter files (which is which: by their keys) without starting anything"
+        "validate",
+        help=(
+            "check world, scenario, study, robot and parameter files "
+            "(which is which: by their keys) without starting anything"
+        ),
     )
     validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
     validate.set_defaults(func=validate_cmd)
     said = "every registered plugin, one per line: KIND NAME PACKAGE; each one left out on stderr, and then exit code 1"
     listing = sub.add_parser(
-        "plugins", help=said, description=f"{said}. This HAVEN's plugin API is version {plugins.PLUGIN_API} (docs: Your own plugins)"
+        "plugins",
+        help=said,
+        description=f"{said}. This HAVEN's plugin API is version {plugins.PLUGIN_API} (docs: Your own plugins)",
     )
     listing.set_defaults(func=plugins_cmd)
     new = listing.add_subparsers(title="to start a plugin of your own", metavar="new").add_parser(
         "new",
         help="write a plugin package to start from (haven_NAME/ with its test: one batch trial with it)",
-        description="Write haven_NAME/, a package holding a working plugin of KIND named NAME, its entry point, and a test that "
-        "loads it as HAVEN does and runs one batch trial with it (haven_scenarios.testing's fixtures).",
+        description=(
+            "Write haven_NAME/, a package holding a working plugin of KIND named NAME, its entry point, and a test "
+            "that loads it as HAVEN does and runs one batch trial with it (haven_scenarios.testing's fixtures)."
+        ),
     )
     new.add_argument("kind", metavar="KIND", help=f"{', '.join(plugins.kinds())} (or the singular)")
     new.add_argument("name", metavar="NAME", help="the plugin's name: lower-case letters, digits and _")
-    new.add_argument("--into", type=Path, default=Path("."), metavar="DIR", help="where to write haven_NAME/ (default: here)")
+    new.add_argument(
+        "--into", type=Path, default=Path("."), metavar="DIR", help="where to write haven_NAME/ (default: here)"
+    )
     new.set_defaults(func=plugins_new_cmd)
     schema = sub.add_parser(
         "schema",
-        help="a file kind's JSON Schema (for YAML editors: `# yaml-language-server: $schema=scenario.schema.json` at a file's top)",
+        help=(
+            "a file kind's JSON Schema (for YAML editors: "
+            "`# yaml-language-server: $schema=scenario.schema.json` at a file's top)"
+        ),
     )
     schema.add_argument("kind", choices=sorted(SCHEMAS))
     schema.set_defaults(func=schema_cmd)
@@ -136,7 +155,7 @@ def describe(path: Path) -> str:
         checked_suite_config(params, file_label(path))
         return f"parameter file for {', '.join(params)}"
     kinds = (
-        "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' or 'map' key), a study (no 'scenarios' key), "
-        "a robot (no 'kinematics' or 'extends' key) nor a parameter file (no 'ros__parameters')"
+        "neither a scenario (no 'kind' or 'world' key), a world (no 'walls' or 'map' key), a study (no "
+        "'scenarios' key), a robot (no 'kinematics' or 'extends' key) nor a parameter file (no 'ros__parameters')"
     )
     raise YamlFileError(f"{file_label(path)}: {kinds}")

@@ -33,21 +33,52 @@ def add(steps: argparse._SubParsersAction, spec: str) -> argparse.ArgumentParser
     power: argparse.ArgumentParser = steps.add_parser("power", help=about)
     power.add_argument("study", help=spec)
     power.add_argument("--metric", required=True, help="the measure (as in study_long.csv), e.g. time_to_finish_s")
-    power.add_argument("--effect", type=float, required=True, help="the difference to detect, condition minus reference, in the metric's units")
-    power.add_argument("--participants", default=DEFAULT_COUNTS, help=f"participant counts to try (default {DEFAULT_COUNTS})")
-    power.add_argument("--reps", type=bounded_int(1, MAX_REPS), default=200, help="simulated studies per count (default 200)")
+    power.add_argument(
+        "--effect",
+        type=float,
+        required=True,
+        help="the difference to detect, condition minus reference, in the metric's units",
+    )
+    power.add_argument(
+        "--participants", default=DEFAULT_COUNTS, help=f"participant counts to try (default {DEFAULT_COUNTS})"
+    )
+    power.add_argument(
+        "--reps", type=bounded_int(1, MAX_REPS), default=200, help="simulated studies per count (default 200)"
+    )
     power.add_argument("--condition", default=None, help="the condition C (default: the study's last)")
     power.add_argument("--reference", default=None, help="the reference condition R (default: the study's first)")
-    power.add_argument("--scenario", default=None, help="only this scenario: its trials alone are simulated (default: every scenario)")
+    power.add_argument(
+        "--scenario", default=None, help="only this scenario: its trials alone are simulated (default: every scenario)"
+    )
     power.add_argument("--alpha", type=float, default=0.05, help="the test's level (default 0.05)")
     power.add_argument(
-        "--pool", type=bounded_int(2, MAX_PARTICIPANTS), default=None, help="simulated participants to draw from (default: the largest count)"
+        "--pool",
+        type=bounded_int(2, MAX_PARTICIPANTS),
+        default=None,
+        help="simulated participants to draw from (default: the largest count)",
     )
-    power.add_argument("--workers", type=bounded_int(1, 256), default=None, help=f"worker processes (default: every core, {cores()} here)")
-    power.add_argument("--cluster", default=None, metavar="local|ADDRESS", help="run on Dask: local, or a scheduler's address (tcp://host:8786)")
+    power.add_argument(
+        "--workers",
+        type=bounded_int(1, 256),
+        default=None,
+        help=f"worker processes (default: every core, {cores()} here)",
+    )
+    power.add_argument(
+        "--cluster",
+        default=None,
+        metavar="local|ADDRESS",
+        help="run on Dask: local, or a scheduler's address (tcp://host:8786)",
+    )
     power.add_argument("--seed", type=bounded_int(0, 2**31 - 1), default=0, help="seed of the resampling (default 0)")
-    power.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every pool trial")
-    power.add_argument("--out", type=Path, default=None, help="folder for the table, the plot and the pool (default: <study dir>/power)")
+    power.add_argument(
+        "--params-file", type=existing_file, default=None, help="ROS parameter YAML for every pool trial"
+    )
+    power.add_argument(
+        "--out",
+        type=Path,
+        default=None,
+        help="folder for the table, the plot and the pool (default: <study dir>/power)",
+    )
     power.set_defaults(func=power_cmd)
     return power
 
@@ -90,10 +121,14 @@ def power_cmd(args: argparse.Namespace) -> int:
         ns = counts(args.participants)
         size = args.pool or max(ns)
         out = args.out if args.out is not None else study_dir(args.dir, study) / "power"
-        results, ran = simulate_pool(study, size, out / "pool", args.scenario, args.params_file, args.workers, args.cluster)
+        results, ran = simulate_pool(
+            study, size, out / "pool", args.scenario, args.params_file, args.workers, args.cluster
+        )
         per_person = measured_per_person(results, args.metric)
         conditions = tuple(c.name for c in study.conditions)
-        q = Question(args.metric, per_person, condition, reference, args.effect, conditions, args.alpha, args.reps, args.seed)
+        q = Question(
+            args.metric, per_person, condition, reference, args.effect, conditions, args.alpha, args.reps, args.seed
+        )
         scenarios = [args.scenario] if args.scenario else [s.name for s in study.scenarios]
         cells: list[Cell] = []
         for scenario in scenarios:
@@ -102,8 +137,15 @@ def power_cmd(args: argparse.Namespace) -> int:
                 continue
             cells += [cell(q, scenario, n, orders(study, n, scenario), pool) for n in ns]
         if not cells:
-            raise ValueError(f"--scenario {args.scenario}: no valid trial of {args.metric} in it" if args.scenario else "no cell to estimate")
-        estimated = sorted(farm(cells, estimate, args.workers or cores(), args.cluster), key=lambda r: (r.cell.scenario, r.cell.participants))
+            raise ValueError(
+                f"--scenario {args.scenario}: no valid trial of {args.metric} in it"
+                if args.scenario
+                else "no cell to estimate"
+            )
+        estimated = sorted(
+            farm(cells, estimate, args.workers or cores(), args.cluster),
+            key=lambda r: (r.cell.scenario, r.cell.participants),
+        )
     except (StudyError, ScenarioError, ValueError) as e:
         return fail(str(e))
     except OSError as e:
@@ -119,7 +161,10 @@ def file_stem(q: Question) -> str:
 def _say(study: Study, q: Question, estimated: list[Power], out: Path, size: int, ran: int) -> int:
     name = file_stem(q)
     write_table(out / f"{name}.csv", [r.row() for r in estimated], POWER)
-    title = f"{study.name}: {q.metric}, {q.condition} - {q.reference} = {q.effect:g}, alpha {q.alpha:g}, {q.reps} simulated studies per count"
+    title = (
+        f"{study.name}: {q.metric}, {q.condition} - {q.reference} = {q.effect:g}, "
+        f"alpha {q.alpha:g}, {q.reps} simulated studies per count"
+    )
     draw(estimated, out / f"{name}.png", title.replace(", alpha", "\nalpha") + f", a pool of {size}")
     shifts = ", ".join(f"{s} {c.pool_effect:+.4g}" for s, c in {r.cell.scenario: r.cell for r in estimated}.items())
     print(f"haven study power: {title}")
@@ -133,21 +178,31 @@ def _say(study: Study, q: Question, estimated: list[Power], out: Path, size: int
     singular = sum(r.singular for r in estimated)
     if singular:
         print(f"note: {singular} fit(s) singular (participant variance 0): their p values ignore the pairing")
-    print(f"at E=0: the same studies with the pool's difference set to 0, the share with p < {q.alpha:g} (a calibrated test: about {q.alpha:g})")
+    print(
+        "at E=0: the same studies with the pool's difference set to 0, "
+        f"the share with p < {q.alpha:g} (a calibrated test: about {q.alpha:g})"
+    )
     rows = sequence_count(study)
     partial = sorted({r.cell.participants for r in estimated if r.cell.participants % rows})
     if partial:
         listed = ", ".join(map(str, partial))
-        print(f"note: {listed} participant(s) do not complete the study's {rows} sequences: those studies are unbalanced, as real ones would be")
+        print(
+            f"note: {listed} participant(s) do not complete the study's {rows} "
+            "sequences: those studies are unbalanced, as real ones would be"
+        )
     thin = sorted({(r.cell.scenario, r.cell.participants) for r in estimated if r.cell.thin()})
     if thin:
         cells = ", ".join(f"{s} at {n}" for s, n in thin)
-        print(f"warning: {cells}: an order needs more participants than the pool has who ran it, so studies repeat people: use a larger --pool")
+        print(
+            f"warning: {cells}: an order needs more participants than the pool "
+            "has who ran it, so studies repeat people: use a larger --pool"
+        )
     loose = sorted({r.cell.scenario for r in estimated if r.anticonservative()})
     if loose:
         print(
-            f"warning: {', '.join(loose)}: the test finds an effect that is not there more often than alpha (marked !), so its power is"
-            " overstated: do not plan on it (the effect may vary between people more than the model allows; docs/howto/power.md)"
+            f"warning: {', '.join(loose)}: the test finds an effect that is not there more "
+            "often than alpha (marked !), so its power is overstated: do not plan on it (the "
+            "effect may vary between people more than the model allows; docs/howto/power.md)"
         )
     print(f"haven study power: wrote {out / (name + '.csv')} and {name}.png")
     return 0

@@ -20,8 +20,12 @@ from haven_scenarios.tools.commands.common import fail
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    p = sub.add_parser("repair", help="rebuild the bags of sessions whose recorder died (metadata.yaml and footer from the MCAP data)")
-    p.add_argument("paths", nargs="+", type=Path, metavar="SESSION", help="session folders, folders of sessions, or bag folders")
+    p = sub.add_parser(
+        "repair", help="rebuild the bags of sessions whose recorder died (metadata.yaml and footer from the MCAP data)"
+    )
+    p.add_argument(
+        "paths", nargs="+", type=Path, metavar="SESSION", help="session folders, folders of sessions, or bag folders"
+    )
     p.set_defaults(func=repair_cmd)
 
 
@@ -72,6 +76,10 @@ def repair_cmd(args: argparse.Namespace) -> int:
             try:
                 _rescore(folder, done)
             except OSError as e:
-                print(f"haven: {folder}: the bag is repaired but the session files could not be updated: {e.strerror or e}", file=sys.stderr)
+                print(
+                    f"haven: {folder}: the bag is repaired but the "
+                    f"session files could not be updated: {e.strerror or e}",
+                    file=sys.stderr,
+                )
                 failed += 1
     return 1 if failed else 0

@@ -16,13 +16,31 @@ from haven_sim.robots.robot_file import RobotError
 from haven_sim.robots.robot_kind import resolve_robot
 
 # The description's parts that are figures (dotted paths under these are listed with `haven robots NAME`).
-FIGURES = ("kinematics", "footprint", "height_m", "mass_kg", "limits", "motion", "battery", "lidar", "flight", "cues", "frames", "drive")
+FIGURES = (
+    "kinematics",
+    "footprint",
+    "height_m",
+    "mass_kg",
+    "limits",
+    "motion",
+    "battery",
+    "lidar",
+    "flight",
+    "cues",
+    "frames",
+    "drive",
+)
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    said = "the robots to choose from (--robot NAME): one per line, its name then its key figures; with NAME or FILE, its figures and sources"
+    said = (
+        "the robots to choose from (--robot NAME): one per line, "
+        "its name then its key figures; with NAME or FILE, its figures and sources"
+    )
     robots = sub.add_parser("robots", help=said, description=said + " (docs: Robots)")
-    robots.add_argument("robot", nargs="?", metavar="NAME|FILE", help="a registered robot's name or a robot file (.yaml)")
+    robots.add_argument(
+        "robot", nargs="?", metavar="NAME|FILE", help="a registered robot's name or a robot file (.yaml)"
+    )
     robots.set_defaults(func=robots_cmd)
 
 

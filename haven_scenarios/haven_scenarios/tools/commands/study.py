@@ -22,7 +22,15 @@ from haven_scenarios.study.schedule import (
     trials_per_participant,
 )
 from haven_scenarios.tools.commands import power as power_step
-from haven_scenarios.tools.commands.common import PORT, add_dropout_options, add_ros_options, add_tls_options, existing_file, fail, table
+from haven_scenarios.tools.commands.common import (
+    PORT,
+    add_dropout_options,
+    add_ros_options,
+    add_tls_options,
+    existing_file,
+    fail,
+    table,
+)
 from haven_scenarios.web.online_runner import NEXT_URL_ENV
 from haven_sim.runtime.process import interrupted, on_stop_signals
 
@@ -30,19 +38,29 @@ SHOWN_SEQUENCES = 24  # `plan` lists the design's sequences up to this many
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    study = sub.add_parser("study", help="a whole study from a study file: plan, run a participant's trials, status, report, power")
+    study = sub.add_parser(
+        "study", help="a whole study from a study file: plan, run a participant's trials, status, report, power"
+    )
     steps = study.add_subparsers(dest="step", required=True)
     spec = f"a study file, or a shipped study ({', '.join(study_names())})"
     plan = steps.add_parser("plan", help="print the schedule: every participant's trials in order")
     plan.add_argument("study", help=spec)
     plan.add_argument("--participant", default=None, help="only this participant's trials")
     plan.set_defaults(func=plan_cmd)
-    run = steps.add_parser("run", help="run a participant's trials in order (resumable: a finished trial never runs twice)")
+    run = steps.add_parser(
+        "run", help="run a participant's trials in order (resumable: a finished trial never runs twice)"
+    )
     run.add_argument("study", help=spec)
     run.add_argument("--participant", required=True, help="the participant's id (one of the study's)")
-    run.add_argument("--batch", action="store_true", help="simulated participants in this process without ROS: a quick pilot (no bag)")
     run.add_argument(
-        "--web", action="store_true", help="the participant plays in the browser (haven run --web --teleop), questionnaires after each trial"
+        "--batch",
+        action="store_true",
+        help="simulated participants in this process without ROS: a quick pilot (no bag)",
+    )
+    run.add_argument(
+        "--web",
+        action="store_true",
+        help="the participant plays in the browser (haven run --web --teleop), questionnaires after each trial",
     )
     run.add_argument("--host", default="127.0.0.1", help="with --web: address the pages are served on")
     run.add_argument("--port", type=PORT, default=8088, help="with --web: port of the pages")
@@ -52,16 +70,32 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         "--next-url",
         default=os.environ.get(NEXT_URL_ENV),
         metavar="URL",
-        help=f"with --web: the participant's browser goes here after each page (default: ${NEXT_URL_ENV}, where haven serve puts it)",
+        help=(
+            "with --web: the participant's browser goes here after each "
+            f"page (default: ${NEXT_URL_ENV}, where haven serve puts it)"
+        ),
     )
-    run.add_argument("--teleop", nargs="*", default=None, metavar="HUMAN", help="these humans (default: all) are driven by the participant")
+    run.add_argument(
+        "--teleop",
+        nargs="*",
+        default=None,
+        metavar="HUMAN",
+        help="these humans (default: all) are driven by the participant",
+    )
     run.add_argument("--no-pause", action="store_true", help="with a person: do not wait for Enter between trials")
     run.add_argument("--params-file", type=existing_file, default=None, help="ROS parameter YAML for every trial")
-    run.add_argument("--replan", action="store_true", help="accept a study file changed since the first run (its new schedule is stored)")
+    run.add_argument(
+        "--replan",
+        action="store_true",
+        help="accept a study file changed since the first run (its new schedule is stored)",
+    )
     add_ros_options(run, suite=True)
     status = steps.add_parser("status", help="per participant: trials done, failed, and what comes next")
     status.add_argument("study", help=spec)
-    report = steps.add_parser("report", help="tidy long CSV, wide CSV, codebook, summary.csv, summary.png, order_effects.csv and mixed_models.csv")
+    report = steps.add_parser(
+        "report",
+        help="tidy long CSV, wide CSV, codebook, summary.csv, summary.png, order_effects.csv and mixed_models.csv",
+    )
     report.add_argument("study", help=spec)
     report.add_argument("--out", type=Path, default=None, help="folder for the report (default: <study dir>/report)")
     power = power_step.add(steps, spec)
@@ -89,7 +123,19 @@ def _run(args: argparse.Namespace) -> int:
 
 
 def plan_rows(trials: list[PlannedTrial]) -> list[list[str]]:
-    head = ["participant", "sequence", "position", "block", "in block", "trial id", "scenario", "condition", "after", "seed", "practice"]
+    head = [
+        "participant",
+        "sequence",
+        "position",
+        "block",
+        "in block",
+        "trial id",
+        "scenario",
+        "condition",
+        "after",
+        "seed",
+        "practice",
+    ]
     rows = [
         [
             t.participant,
@@ -119,14 +165,19 @@ def plan_cmd(args: argparse.Namespace) -> int:
     except StudyError as e:
         return fail(str(e))
     if args.participant is not None and args.participant not in study.participants:
-        return fail(f"--participant: {args.participant!r} is not a participant of study {study.name} ({_listing(study)})")
+        return fail(
+            f"--participant: {args.participant!r} is not a participant of study {study.name} ({_listing(study)})"
+        )
     trials = participant_schedule(study, args.participant) if args.participant else schedule(study)
     print(
         f"study {study.name}: {len(study.participants)} participant(s) x {trials_per_participant(study)} trial(s) "
         f"({len(study.practice)} practice); {len(study.scenarios)} scenario(s) x {len(study.conditions)} condition(s) "
         f"x {study.repetitions} repetition(s)"
     )
-    print(f"order: {design_note(study)} Each scenario is one block; every block shows the conditions in the participant's order.")
+    print(
+        f"order: {design_note(study)} Each scenario is one block; "
+        "every block shows the conditions in the participant's order."
+    )
     shown = sequence_orders(study)
     for s, (scenarios, conditions) in enumerate(shown[:SHOWN_SEQUENCES], 1):
         print(f"sequence {s}: blocks {', '.join(scenarios)}; conditions {', '.join(conditions)}")
@@ -135,7 +186,9 @@ def plan_cmd(args: argparse.Namespace) -> int:
     carry = practice_note(study)
     if carry:
         print(f"warning: {carry}")
-    print(f"seeds: {study.seed_policy}, base {study.seed_base}; questionnaires after each trial: {_questionnaires(study)}")
+    print(
+        f"seeds: {study.seed_policy}, base {study.seed_base}; questionnaires after each trial: {_questionnaires(study)}"
+    )
     if inst := study.instruments():
         before, after = (", ".join(q.name for q in qs) or "none" for qs in (inst.first, inst.after))
         print(f"before the first trial: {before}; after the last: {after} (once per participant)")
@@ -169,14 +222,25 @@ def status_cmd(args: argparse.Namespace) -> int:
         print(f"study {study.name}: not started in {root}")
     else:
         changed = differences(old["study"], study.describe())
-        note = f" (the study file changed since the first run: {', '.join(changed)}; `study run` needs --replan)" if changed else ""
+        note = (
+            f" (the study file changed since the first run: {', '.join(changed)}; `study run` needs --replan)"
+            if changed
+            else ""
+        )
         print(f"study {study.name} in {root}{note}")
     rows = [["participant", "done", "failed", "next"]]
     for p in study.participants:
         mine = [t for t in done if t.trial.participant == p]
         failed = [t for t in mine if t.status == "failed"]
         following = next((t for t in mine if t.status != "done"), None)
-        rows.append([p, f"{sum(t.status == 'done' for t in mine)}/{len(mine)}", ", ".join(_failed(t) for t in failed) or "-", _next(following)])
+        rows.append(
+            [
+                p,
+                f"{sum(t.status == 'done' for t in mine)}/{len(mine)}",
+                ", ".join(_failed(t) for t in failed) or "-",
+                _next(following),
+            ]
+        )
     print(table(rows))
     total = sum(t.status == "done" for t in done)
     print(f"{total}/{len(done)} trials done")
@@ -205,7 +269,10 @@ def report_cmd(args: argparse.Namespace) -> int:
     out = report.folder
     print(f"haven: study {study.name}: {report.trials_done}/{report.trials} trials done; {report.counts}")
     picture = f", {report.picture}" if report.picture else " (no measures to draw)"
-    print(f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), study_wide.csv, summary.csv, order_effects.csv{picture}")
+    print(
+        f"haven: wrote {out / 'study_long.csv'}, codebook.csv (and .json), "
+        f"study_wide.csv, summary.csv, order_effects.csv{picture}"
+    )
     if report.participants:
         print(f"haven: wrote {out / PARTICIPANTS_CSV}: {report.participants}")
     singular, unconverged, fitted = report.models

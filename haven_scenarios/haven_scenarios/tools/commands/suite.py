@@ -39,8 +39,12 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     sim = sub.add_parser("sim", help="run the simulator, velocity mux, planner, controller and viz until Ctrl-C")
     _suite_arguments(sim, rtf=1.0)
     sim.add_argument("--duration", type=positive, default=None, help="stop after this many wall seconds")
-    sim.add_argument("--record", action="store_true", help="record every topic into a session folder (bag, world.yaml, session.json)")
-    sim.add_argument("--sessions", default="sessions", help="folder for the session folder with --record (default: ./sessions)")
+    sim.add_argument(
+        "--record", action="store_true", help="record every topic into a session folder (bag, world.yaml, session.json)"
+    )
+    sim.add_argument(
+        "--sessions", default="sessions", help="folder for the session folder with --record (default: ./sessions)"
+    )
     sim.set_defaults(func=run_suite)
     demo = sub.add_parser("demo", help="simulator + mux + a node that drives a square through /cmd_vel_teleop")
     _suite_arguments(demo, rtf=4.0)
@@ -110,10 +114,16 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
             folder = _ad_hoc_session(Path(args.sessions), world, args)
         except (ValueError, OSError) as e:
             return fail(f"--sessions {args.sessions}: {getattr(e, 'strerror', None) or e}")
-        recorder = node_argv(nodes.RECORDER.module, {"use_sim_time": True, "session_dir": "."}, params_file=params_file(args))
+        recorder = node_argv(
+            nodes.RECORDER.module, {"use_sim_time": True, "session_dir": "."}, params_file=params_file(args)
+        )
         specs.insert(0, ProcessSpec(nodes.RECORDER.key, recorder, cwd=str(folder.resolve())))
     if args.command == "demo":
-        specs.append(ProcessSpec("demo_driver", node_argv("haven_scenarios.nodes.demo_driver", {"use_sim_time": True, "laps": args.laps})))
+        specs.append(
+            ProcessSpec(
+                "demo_driver", node_argv("haven_scenarios.nodes.demo_driver", {"use_sim_time": True, "laps": args.laps})
+            )
+        )
         until, timeout = "demo_driver", 300.0
     with Supervisor(environment(args)) as sup:
         sup.install_signal_handlers()
@@ -122,11 +132,14 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
         started = ", ".join(f"{n} (pid {p})" for n, p in sup.pids().items())
         print(f"haven: started {started} on ROS domain {args.domain_id}; Ctrl-C stops all", flush=True)
         exited = sup.wait(timeout_s=timeout, until_exit_of=until)
-        codes = sup.stop(first=tuple(n for n in sup.pids() if n != nodes.RECORDER.key))  # the recorder last: it gets everything
+        # the recorder last: it gets everything
+        codes = sup.stop(first=tuple(n for n in sup.pids() if n != nodes.RECORDER.key))
     if folder is not None:
         repair_bag(folder / "bag", how="haven sim --record")  # (a recorder that died leaves a bag to mend)
         if skipped := not_recorded(folder / "bag"):  # (said by the recorder as it saw them; kept with the session)
-            write_json(folder / SESSION_FILE, {**json.loads((folder / SESSION_FILE).read_text()), "not_recorded": skipped})
+            write_json(
+                folder / SESSION_FILE, {**json.loads((folder / SESSION_FILE).read_text()), "not_recorded": skipped}
+            )
         print(f"haven: recorded in {folder}")
     if exited is not None and not (exited.name == until and exited.code == 0):
         print(f"haven: {exited.name} exited with code {exited.code}; stopped the others", file=sys.stderr)
@@ -134,7 +147,8 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
     if until is not None and exited is None:
         print(f"haven: {until} did not finish; stopped everything", file=sys.stderr)
         return 1
-    bad = {n: c for n, c in codes.items() if c not in (0, -2, -15)}  # (-15: stopped by our SIGTERM before it could say so)
+    # (-15: stopped by our SIGTERM before it could say so)
+    bad = {n: c for n, c in codes.items() if c not in (0, -2, -15)}
     if bad and until is None:
         print(f"haven: unclean exit codes: {bad}", file=sys.stderr)
     return 0

@@ -7,7 +7,16 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
-from haven_scenarios.conduct.recorded_trial import RecordedTrial, RosOptions, TrialError, TrialRequest, WebRequest, plan_trial, record_trial, tell
+from haven_scenarios.conduct.recorded_trial import (
+    RecordedTrial,
+    RosOptions,
+    TrialError,
+    TrialRequest,
+    WebRequest,
+    plan_trial,
+    record_trial,
+    tell,
+)
 from haven_scenarios.conduct.session_plan import SessionPlan
 from haven_scenarios.record.session import PARAMS_FILE, SCENARIO_FILE, SESSION_FILE, session_info, session_scenario
 from haven_scenarios.run.suite import SuiteConfig, checked_suite_config, load_suite_config
@@ -37,8 +46,14 @@ from haven_viz.cues import CUES, Toggles
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     run = sub.add_parser("run", help="run one recorded trial of a scenario (default: hallway, simulated participant)")
-    run.add_argument("scenario", nargs="?", default="hallway", help=f"a shipped scenario ({', '.join(scenario_names())}) or a YAML")
-    run.add_argument("--participant", default=None, help="participant id for the session (default: sim, or the teleoperated humans' ids, e.g. h1-h2)")
+    run.add_argument(
+        "scenario", nargs="?", default="hallway", help=f"a shipped scenario ({', '.join(scenario_names())}) or a YAML"
+    )
+    run.add_argument(
+        "--participant",
+        default=None,
+        help="participant id for the session (default: sim, or the teleoperated humans' ids, e.g. h1-h2)",
+    )
     run.add_argument("--condition", nargs="+", default=None, metavar="CUE", help=CONDITION_HELP)
     run.add_argument(
         "--rtf",
@@ -48,7 +63,9 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         "the machine allows, or at most this fast)",
     )
     run.add_argument(
-        "--free-running", action="store_true", help="simulated participants on the free-running clock too (machine load then changes what happens)"
+        "--free-running",
+        action="store_true",
+        help="simulated participants on the free-running clock too (machine load then changes what happens)",
     )
     run.add_argument("--seed", type=SEED, default=0)
     run.add_argument(
@@ -56,17 +73,25 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         nargs="*",
         default=None,
         metavar="HUMAN",
-        help="these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`",
+        help=(
+            "these humans (default: all) are driven by a person through /humans/<id>/cmd_vel, e.g. with `haven teleop`"
+        ),
     )
     run.add_argument("--sessions", default="sessions", help="folder for session folders (default: ./sessions)")
     run.add_argument(
-        "--world", default=None, help="play the scenario in this world (a packaged world name or a YAML with the rooms, gems and humans it names)"
+        "--world",
+        default=None,
+        help=(
+            "play the scenario in this world (a packaged world name or a YAML with the rooms, gems and humans it names)"
+        ),
     )
     add_suite_options(run)
     add_robot_option(run)
     web = run.add_argument_group("in the browser")
     web.add_argument(
-        "--web", action="store_true", help="serve the participants' first-person pages and the researcher console (the URLs are printed)"
+        "--web",
+        action="store_true",
+        help="serve the participants' first-person pages and the researcher console (the URLs are printed)",
     )
     run.add_argument(
         "--allow",
@@ -74,19 +99,32 @@ def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
         default=[],
         type=allowed_topic,
         metavar="TOPIC",
-        help="topics nodes outside the suite may publish on during the trial (e.g. /cmd_vel_teleop for a teleop node, /goal_pose "
-        "for RViz goals); another outside publisher on a topic the trial rests on makes the session not valid",
+        help=(
+            "topics nodes outside the suite may publish on during the trial "
+            "(e.g. /cmd_vel_teleop for a teleop node, /goal_pose for RViz goals); "
+            "another outside publisher on a topic the trial rests on makes the session not valid"
+        ),
     )
-    web.add_argument("--host", default="127.0.0.1", help="address the pages are served on (0.0.0.0: the lab network; default: this machine)")
+    web.add_argument(
+        "--host",
+        default="127.0.0.1",
+        help="address the pages are served on (0.0.0.0: the lab network; default: this machine)",
+    )
     web.add_argument("--port", type=PORT, default=8088, help="port of the pages (default 8088)")
     add_tls_options(web)
     add_dropout_options(web)
-    web.add_argument("--researcher-start", action="store_true", help="the trial starts on the console's Start, not when the participants are ready")
+    web.add_argument(
+        "--researcher-start",
+        action="store_true",
+        help="the trial starts on the console's Start, not when the participants are ready",
+    )
     web.add_argument("--no-map-inset", action="store_true", help="no map inset on the participants' pages")
     add_questionnaire_option(web)
     add_ros_options(run, suite=True)
     run.set_defaults(func=run_cmd)
-    rerun = sub.add_parser("rerun", help="run a recorded session again from its folder (same scenario, world, parameters, seed, condition)")
+    rerun = sub.add_parser(
+        "rerun", help="run a recorded session again from its folder (same scenario, world, parameters, seed, condition)"
+    )
     rerun.add_argument("session", type=Path, help="a session folder")
     rerun.add_argument("--sessions", default=None, help="folder for the new session (default: beside the old one)")
     rerun.add_argument("--rtf", type=positive, default=None, help="real-time factor (default: as recorded)")
@@ -120,7 +158,15 @@ def request_of(args: argparse.Namespace) -> TrialRequest:
     web = None
     if args.web:
         tls = (args.tls_cert or "", args.tls_key or "")
-        web = WebRequest(args.host, args.port, args.researcher_start, not args.no_map_inset, *tls, args.on_disconnect, args.reconnect_timeout)
+        web = WebRequest(
+            args.host,
+            args.port,
+            args.researcher_start,
+            not args.no_map_inset,
+            *tls,
+            args.on_disconnect,
+            args.reconnect_timeout,
+        )
     return TrialRequest(
         args.scenario,
         args.participant,
@@ -185,6 +231,9 @@ def rerun_cmd(args: argparse.Namespace) -> int:
         check_name(scenario.name, f"{folder / SCENARIO_FILE}: name")
     except ValueError as e:
         return fail(str(e))
-    scenario = replace(scenario, robot_model=str(info.get("robot") or scenario.robot_model))  # (robot.yaml is the robot: the name as first given)
-    plan = SessionPlan(scenario, toggles, seed, participant, base, rtf, free, {"rerun_of": folder.name}, without=without, allow=allow)
+    # (robot.yaml is the robot: the name as first given)
+    scenario = replace(scenario, robot_model=str(info.get("robot") or scenario.robot_model))
+    plan = SessionPlan(
+        scenario, toggles, seed, participant, base, rtf, free, {"rerun_of": folder.name}, without=without, allow=allow
+    )
     return run_session(args, plan, Path(args.sessions) if args.sessions else folder.parent)

@@ -15,15 +15,29 @@ from haven_sim.nav.planner import check_plannable
 from haven_sim.sim.world import World, WorldError, summary
 from haven_sim.sim.world_file import load_world
 
-HALLWAY_COLOURS = ("tab:purple", "tab:green", "tab:orange", "tab:pink", "tab:olive", "tab:cyan", "tab:brown", "tab:gray")  # one each
+# one each
+HALLWAY_COLOURS = (
+    "tab:purple",
+    "tab:green",
+    "tab:orange",
+    "tab:pink",
+    "tab:olive",
+    "tab:cyan",
+    "tab:brown",
+    "tab:gray",
+)
 ROBOT_COLOUR, PERSON_COLOUR = "tab:blue", "tab:red"
 
 
 def add(sub: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
     world = sub.add_parser("world", help="a world file: `show` checks it and draws it from above as a PNG")
     verbs = world.add_subparsers(dest="verb", required=True)
-    show = verbs.add_parser("show", help="check a world file and write a PNG of it (walls, rooms, hallway centre lines, gems, starts)")
-    show.add_argument("world", metavar="WORLD", help="a world file, or a shipped world's name (hallway, shared_room, ...)")
+    show = verbs.add_parser(
+        "show", help="check a world file and write a PNG of it (walls, rooms, hallway centre lines, gems, starts)"
+    )
+    show.add_argument(
+        "world", metavar="WORLD", help="a world file, or a shipped world's name (hallway, shared_room, ...)"
+    )
     show.add_argument("--out", type=Path, default=None, help="the PNG to write (default: WORLD's name + .png, here)")
     show.set_defaults(func=show_cmd)
 
@@ -49,10 +63,16 @@ def draw(world: World, out: Path) -> Path:
     from haven_viz.world_markers import world_markers
 
     lines = {
-        f"hallway {h.name}": (np.array(h.centreline, dtype=float), HALLWAY_COLOURS[i % len(HALLWAY_COLOURS)]) for i, h in enumerate(world.hallways)
+        f"hallway {h.name}": (np.array(h.centreline, dtype=float), HALLWAY_COLOURS[i % len(HALLWAY_COLOURS)])
+        for i, h in enumerate(world.hallways)
     }
     starts = [(world.robot_start.x, world.robot_start.y, "robot start", ROBOT_COLOUR)]
     starts += [(h.start.x, h.start.y, f"{h.id} start", PERSON_COLOUR) for h in world.humans]
     return render_scene(
-        world, world_markers(world), out, title=f"world {world.name} ({file_label(Path(world.source).name)})", trails=lines, points=starts
+        world,
+        world_markers(world),
+        out,
+        title=f"world {world.name} ({file_label(Path(world.source).name)})",
+        trails=lines,
+        points=starts,
     )
