@@ -25,6 +25,8 @@ from rclpy.publisher import Publisher
 from rclpy.qos import QoSProfile
 from rclpy.subscription import Subscription
 
+from haven_sim.runtime.process import die_with_parent
+
 _counter = itertools.count()
 
 
@@ -93,7 +95,9 @@ class RosHarness:
             argv += ["-p", f"{k}:={v}"]
         argv += list(args)
         out = subprocess.PIPE if capture else None
-        proc = subprocess.Popen(argv, env=self.env, start_new_session=True, stdout=out, stderr=out, text=True)
+        proc = subprocess.Popen(
+            argv, env=self.env, start_new_session=True, stdout=out, stderr=out, text=True, preexec_fn=die_with_parent()
+        )
         self.procs.append(proc)
         return proc
 
