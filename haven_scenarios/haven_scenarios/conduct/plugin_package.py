@@ -25,7 +25,8 @@ class Template:
 
 
 CUE = Template(
-    '''"""{name}: an AR cue (docs: Your own plugins, A cue): an arrow on the floor 1 m ahead on the robot's path."""
+    '''"""{name}: an AR cue (docs: Your own plugins, A cue): an arrow on the floor 1 m ahead on the
+robot's path."""
 
 import math
 
@@ -48,8 +49,13 @@ class {cls}:
             return None  # nothing to show now
         x, y, h = ahead[0]
         arrow = MarkerSpec(
-            "{name}", 0, Shape.ARROW, (x - 0.175 * math.cos(h), y - 0.175 * math.sin(h), 0.01), h, \
-(0.35, 0.15, 0.02), SCHEMES[self.params.scheme]
+            "{name}",
+            0,
+            Shape.ARROW,
+            (x - 0.175 * math.cos(h), y - 0.175 * math.sin(h), 0.01),  # where its middle is
+            h,
+            (0.35, 0.15, 0.02),  # length, width, height (m)
+            SCHEMES[self.params.scheme],
         )
         return Shown(1, [arrow] if markers else [], way=((x, y),), on_robot=False)
 ''',
