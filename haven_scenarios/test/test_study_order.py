@@ -94,13 +94,13 @@ def test_random_assignment_is_seeded_reproducible_and_balanced_in_every_complete
             load_study(write(tmp_path, participants=participants, assignment={"policy": "random", "seed": seed}))
         )
 
-    assert drawn(5) == drawn(5)  # the same seed: the same assignment, every time
-    assert drawn(5) != drawn(6)
-    assert drawn(5, 14)[:12] == drawn(5)  # more participants later: the first ones keep theirs
-    for seed in range(20):
-        got = drawn(seed)
+    draws = {seed: drawn(seed) for seed in range(20)}  # (each study loaded once: the loads are this test's time)
+    assert drawn(5) == draws[5]  # the same seed: the same assignment, every time
+    assert draws[5] != draws[6]
+    assert drawn(5, 14)[:12] == draws[5]  # more participants later: the first ones keep theirs
+    for got in draws.values():
         assert all(sorted(got[i : i + 4]) == [0, 1, 2, 3] for i in range(0, 12, 4))  # permuted sets of 4
-    assert {tuple(drawn(seed)[:4]) for seed in range(20)} != {(0, 1, 2, 3)}  # it does shuffle
+    assert {tuple(got[:4]) for got in draws.values()} != {(0, 1, 2, 3)}  # it does shuffle
     by_id = sequences(load_study(write(tmp_path, participants=6)))
     assert by_id == [0, 1, 2, 3, 0, 1]
 
