@@ -262,6 +262,10 @@ def _run_claimed(plan: SessionPlan, sessions: Path, ros: RosOptions, say: Say) -
         f"haven: {scenario.name} trial, robot {scenario.robot.name}, participant {plan.participant}, "
         f"condition {condition_name(plan.toggles)}, seed {plan.seed}, {pace}, ROS domain {ros.domain_id} -> {folder}"
     )
+    # A person drives from the keyboard or a node of their own: say how (else the trial only times out).
+    if plan.web is None:
+        for human in (h.id for h in scenario.humans if h.teleoperated):
+            say(f"haven: {human} is yours to drive: `haven teleop {human} --domain-id {ros.domain_id}` in a terminal")
     started = time.monotonic()
     # a lockstep trial runs at least at 1x on this machine
     limit = scenario.timeout_s / (1.0 if lockstep else rtf) + 120.0
