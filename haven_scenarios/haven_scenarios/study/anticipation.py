@@ -170,9 +170,9 @@ def _give_way(
     robot = seen.percept.robot
     if robot is None:
         return None
-    ahead, _i = crossing
+    ahead, i = crossing
     along = math.hypot(points[0][0] - robot.x, points[0][1] - robot.y)
-    along += sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in itertools.pairwise(points))
+    along += sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in itertools.pairwise(points[: i + 1]))
     robot_speed = max(math.hypot(*seen.robot_v), ROBOT_MIN_MPS)
     mine = ahead / max(math.hypot(*task), 1e-9)
     theirs = along / robot_speed
