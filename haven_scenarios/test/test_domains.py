@@ -139,7 +139,7 @@ def test_serve_hands_the_range_to_every_participants_runner_and_refuses_one_smal
         # the session key is not on the command line (`ps` shows it to anyone)
         assert not any(seat.key in a for a in argv)
     finally:
-        server.httpd.server_close()
+        server.server.stop()
     with pytest.raises(
         ValueError,
         match=r"^--domains 30-30: fewer ROS domains than --capacity 2 \(each participant's trial takes one\)$",

@@ -79,7 +79,7 @@ def test_without_the_token_nothing_is_served_or_checked(server: EditorServer) ->
 
 
 def test_a_world_larger_than_a_world_file_may_be_is_refused_unread(server: EditorServer) -> None:
-    port = int(server.httpd.server_address[1])
+    port = server.server.port
     conn = http.client.HTTPConnection("127.0.0.1", port, timeout=30)
     conn.putrequest("POST", f"/edit/check?token={server.token}")
     conn.putheader("Content-Length", str(MAX_WORLD_BYTES + 1))  # (the body is never sent: the answer comes first)

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import json
 import stat
-import threading
 import urllib.error
 import urllib.parse
 import urllib.request
@@ -76,7 +75,7 @@ def server(tmp_path: Path, capacity: int = 2, text: str = STUDY) -> StudyServer:
     study = load_study(path)
     root = tmp_path / "studies" / study.name
     s = StudyServer(ServeOptions(str(path), root, port=0, capacity=capacity), study, bind(study, root))
-    threading.Thread(target=s.httpd.serve_forever, daemon=True).start()  # (the pages only: no runner is started here)
+    s.server.start()  # (the pages only: no runner is started here)
     return s
 
 
@@ -136,8 +135,7 @@ def test_two_servers_on_one_study_folder_share_the_places_and_refuse_strangers(t
         ]
     finally:
         for s in (one, two):
-            s.httpd.shutdown()
-            s.httpd.server_close()
+            s.server.stop()
 
 
 class LiveRunner:
@@ -167,8 +165,7 @@ def test_beyond_the_capacity_participants_wait_in_line_first_come_first_served(t
         del s.waiting["p02"]
         assert s.state(b, 2.0)["state"] == "failed"
     finally:
-        s.httpd.shutdown()
-        s.httpd.server_close()
+        s.server.stop()
 
 
 def test_a_runner_hands_out_the_page_it_opened_until_the_participant_has_finished_it(tmp_path):
@@ -235,16 +232,16 @@ def test_a_burst_of_get_and_post_joins_from_one_client_without_cookies_takes_at_
         assert join(server.base, "bot0c")[0] == 303  # an id that has a place is not limited: it takes no new one
         assert get(f"{server.base}/session/p01/state?key={json.loads(book.read_text())['bot0c']['key']}")[0] == 200
         assert server.sessions() and len(server.sessions()) == 2
-        # (the standard library's own error page)
+        # (the web framework's own answer)
         put = urllib.request.Request(f"{server.base}/", data=b"x", method="PUT")
         with pytest.raises(urllib.error.HTTPError) as unsupported:
             urllib.request.urlopen(put, timeout=10)
-        assert unsupported.value.code == 501
+        assert unsupported.value.code == 405
         more = [
             get(f"{server.base}/nothing"),
             get(server.console_url),
             get(f"{server.base}/static/haven.css"),
-            (501, "", unsupported.value.headers),
+            (405, "", unsupported.value.headers),
         ]
         for code, _, head in [*answers, *more]:
             assert all(h in head for h in HEADERS), (code, head)
@@ -291,8 +288,7 @@ def test_one_place_per_browser_signed_links_and_an_allow_list(tmp_path):
         assert get(f"{s.base}/join", {"participant": "BEN", "sig": sig["BEN"]}, {"Origin": ""})[0] == 403
         assert join(s.base, "BEN", sig=sig["BEN"])[2]["Location"].startswith("/session/p02?key=")
     finally:
-        s.httpd.shutdown()
-        s.httpd.server_close()
+        s.server.stop()
 
 
 def test_the_online_keys_files_are_checked_when_the_study_is_loaded(tmp_path):

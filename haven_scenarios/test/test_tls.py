@@ -5,10 +5,8 @@ bad files are one line."""
 
 from __future__ import annotations
 
-import socket
 import ssl
 import stat
-import threading
 import urllib.error
 import urllib.request
 from pathlib import Path
@@ -17,8 +15,7 @@ import pytest
 from cryptography import x509
 
 from haven_scenarios.tools.cli import main
-from haven_scenarios.web.access import door_key, role_token
-from haven_scenarios.web.door_hello import hello_frames
+from haven_scenarios.web.access import role_token
 from haven_scenarios.web.editor_server import EditorServer
 from haven_scenarios.web.front_door import FrontDoor
 from haven_scenarios.web.tls import (
@@ -126,60 +123,26 @@ def test_a_certificate_for_other_names_fails_the_host_name_check(certs: Path, tm
         server.stop()
 
 
-def _backend() -> tuple[socket.socket, threading.Thread]:
-    """A stand-in for a role's WebSocket server: answers the upgrade, then echoes every byte."""
-    listener = socket.create_server(("127.0.0.1", 0))
+def test_a_websocket_is_relayed_through_the_https_front_door(certs: Path) -> None:
+    from test_web import EchoBackend
+    from websockets.sync.client import connect
 
-    def serve() -> None:
-        conn, _ = listener.accept()
-        with conn:
-            head = b""
-            while b"\r\n\r\n" not in head:
-                head += conn.recv(4096)
-            conn.sendall(b"HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n\r\n")
-            while data := conn.recv(65536):
-                conn.sendall(data)
-
-    thread = threading.Thread(target=serve, daemon=True)
-    thread.start()
-    return listener, thread
-
-
-def test_a_websocket_passes_through_the_https_front_door_byte_for_byte(certs: Path) -> None:
-    listener, thread = _backend()
+    backend = EchoBackend()
     tls = server_context(certs / SERVER_CERT, certs / SERVER_KEY)
-    door = FrontDoor("127.0.0.1", 0, "secret", {"console": listener.getsockname()[1]}, lambda role: {}, tls=tls)
+    door = FrontDoor("127.0.0.1", 0, "secret", {"console": backend.port}, lambda role: {}, tls=tls)
     door.start()
     try:
         assert door.base_url("127.0.0.1").startswith("https://localhost:")
         context = ssl.create_default_context(cafile=certs / CA_CERT)
-        with (
-            socket.create_connection(("127.0.0.1", door.port), timeout=30) as raw,
-            context.wrap_socket(raw, server_hostname="localhost") as s,
-        ):
-            token = role_token("secret", "console")
-            s.sendall(
-                (
-                    f"GET /ws/console?token={token} HTTP/1.1\r\nHost: localhost\r\n"
-                    "Upgrade: websocket\r\nConnection: Upgrade\r\n\r\n"
-                ).encode()
-            )
-            answer = b""
-            while b"\r\n\r\n" not in answer:
-                answer += s.recv(4096)
-            assert answer.startswith(b"HTTP/1.1 101"), answer
-            payload = bytes(range(256)) * 1024  # 256 KiB: many TLS records, some held decrypted inside the socket
-            s.sendall(payload)
-            # (the stand-in echoes the door's hello too)
-            expected = len(hello_frames(door_key("secret", "console"))) + len(payload)
-            echoed = b""
-            while len(echoed) < expected:
-                echoed += s.recv(65536)
-            assert echoed.endswith(payload) and len(echoed) == expected
+        url = f"wss://localhost:{door.port}/ws/console?token={role_token('secret', 'console')}"
+        with connect(url, ssl=context, subprotocols=["foxglove.sdk.v1"], open_timeout=30, max_size=None) as page:
+            payload = bytes(range(256)) * 1024  # 256 KiB: many TLS records
+            page.send(payload)
+            assert page.recv(timeout=30) == payload.upper()
+        assert backend.received[-1] == payload
     finally:
         door.stop()
-        listener.close()
-        thread.join(timeout=10)
+        backend.close()
 
 
 def test_the_researcher_is_told_when_the_printed_address_will_not_work_for_a_headset(certs: Path) -> None:

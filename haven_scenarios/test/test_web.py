@@ -17,7 +17,7 @@ import pytest
 
 from haven_scenarios.study.scenario import load_scenario
 from haven_scenarios.web.access import CONSOLE, READY, door_key, role_token, roles, route, token_of, token_ok, urls
-from haven_scenarios.web.door_hello import DOOR_TOPIC
+from haven_scenarios.web.door_hello import DOOR_TOPIC, hello_messages
 from haven_scenarios.web.front_door import STATIC, FrontDoor
 from haven_scenarios.web.page_config import PageSettings, page_config, robot_view
 from haven_scenarios.web.wizard import DEFAULT_HOLD_S, MAX_THOUGHT_CHARS, StartGate, Wizard
@@ -69,9 +69,11 @@ def test_routes_and_tokens():
         and route("/static/.hidden").kind == ""
         and route("/etc/passwd").kind == ""
     )
-    assert token_of("/console?token=abc", None, CONSOLE) == "abc"
-    assert token_of("/console", "a=1; haven_token_console=abc", CONSOLE) == "abc"
-    assert token_of("/console", "a=1; haven_token_h1=abc", CONSOLE) == ""  # a participant's cookie is not the console's
+    assert token_of({"token": "abc"}, {}, CONSOLE) == "abc"
+    assert token_of({}, {"a": "1", "haven_token_console": "abc"}, CONSOLE) == "abc"
+    assert (
+        token_of({}, {"a": "1", "haven_token_h1": "abc"}, CONSOLE) == ""
+    )  # a participant's cookie is not the console's
     assert token_ok("abc", "abc") and not token_ok("", "abc") and not token_ok("abd", "abc")
     assert urls("http://h:1", "S", ["h1"]) == {
         "h1": f"http://h:1/participant/h1?token={role_token('S', 'h1')}",
@@ -116,42 +118,29 @@ def test_a_page_is_told_the_trials_robot_its_look_footprint_and_flight(tmp_path)
     assert drone["model_url"] == "/robot/model.glb" and abs(drone["radius_m"] - 0.2236) < 1e-3
 
 
-class _Backend:
-    """A stand-in for a role's Foxglove server: records the handshake, answers, then echoes."""
+class EchoBackend:
+    """A stand-in for a role's Foxglove server (a real WebSocket server, the `websockets` library's):
+    records the upgrade request and every message, and answers each after the door's hello (its
+    first three) with it upper-cased."""
 
-    def __init__(self) -> None:
-        self.sock = socket.socket()
-        self.sock.bind(("127.0.0.1", 0))
-        self.sock.listen()
-        self.port = self.sock.getsockname()[1]
-        self.handshake = b""
-        self.received = b""  # after the handshake
-        threading.Thread(target=self._serve, daemon=True).start()
+    def __init__(self, tls=None) -> None:
+        from websockets.sync.server import serve
 
-    def _serve(self) -> None:
-        conn, _ = self.sock.accept()
-        with conn:
-            while b"\r\n\r\n" not in self.handshake:
-                self.handshake += conn.recv(4096)
-            conn.sendall(b"HTTP/1.1 101 Switching Protocols\r\nUpgrade: websocket\r\nConnection: Upgrade\r\n\r\n")
-            while data := conn.recv(4096):
-                self.received += data
-                conn.sendall(data.upper())
+        self.request = None
+        self.received = []
+        self.server = serve(self._serve, "127.0.0.1", 0, subprotocols=["foxglove.sdk.v1"], max_size=None, ssl=tls)
+        self.port = self.server.socket.getsockname()[1]
+        threading.Thread(target=self.server.serve_forever, daemon=True).start()
 
+    def _serve(self, ws) -> None:
+        self.request = ws.request
+        for message in ws:
+            self.received.append(message)
+            if len(self.received) > len(hello_messages("")):
+                ws.send(message.upper())
 
-def client_frames(data):
-    """RFC 6455 client frames (masked) decoded: [(opcode, payload)], and the bytes after them."""
-    out = []
-    while len(data) >= 6 and data[0] & 0x80 and data[1] & 0x80:
-        n, at = data[1] & 0x7F, 2
-        if n == 126:
-            n, at = struct.unpack("!H", data[2:4])[0], 4
-        elif n == 127:
-            n, at = struct.unpack("!Q", data[2:10])[0], 10
-        mask, payload = data[at : at + 4], data[at + 4 : at + 4 + n]
-        out.append((data[0] & 0x0F, bytes(b ^ mask[i % 4] for i, b in enumerate(payload))))
-        data = data[at + 4 + n :]
-    return out, data
+    def close(self) -> None:
+        self.server.shutdown()
 
 
 SECRET = "secret"
@@ -160,7 +149,7 @@ H1, CON = role_token(SECRET, "h1"), role_token(SECRET, CONSOLE)
 
 @pytest.fixture
 def door():
-    backend = _Backend()
+    backend = EchoBackend()
     d = FrontDoor(
         "127.0.0.1",
         0,
@@ -171,6 +160,7 @@ def door():
     d.start()
     yield d, backend
     d.stop()
+    backend.close()
 
 
 def _get(door, path, headers=None):
@@ -217,38 +207,31 @@ def test_a_page_comes_with_its_settings_and_a_cookie_for_its_code(door):
     assert status == 200 and r.getheader("Content-Type") == "text/javascript" and len(js) > 100_000
 
 
-def test_a_socket_with_the_token_is_passed_through_byte_for_byte(door):
+def test_a_socket_with_the_token_is_relayed_message_for_message(door):
+    from websockets.sync.client import connect
+
     d, backend = door
-    with socket.create_connection(("127.0.0.1", d.port), timeout=5) as s:
-        s.sendall(
-            (
-                f"GET /ws/participant/h1?token={H1} HTTP/1.1\r\nHost: x\r\n"
-                "Upgrade: websocket\r\nConnection: Upgrade\r\n"
-            ).encode()
-            + f"Sec-WebSocket-Protocol: foxglove.sdk.v1\r\nCookie: haven_token_h1={H1}\r\n\r\n".encode()
-        )
-        reply = b""
-        while b"\r\n\r\n" not in reply:
-            reply += s.recv(4096)
-        assert reply.startswith(b"HTTP/1.1 101")
-        s.sendall(b"frame bytes")
-        echoed = b""
-        while not echoed.endswith(b"FRAME BYTES"):
-            echoed += s.recv(4096)
-    # The role's server heard the door's hello first (web/door_hello.py), then the page's bytes as sent.
-    (advertise, hello, unadvertise), rest = client_frames(backend.received)
-    assert rest == b"frame bytes"
-    channel = json.loads(advertise[1])["channels"][0]
-    assert advertise[0] == 1 and channel["topic"] == DOOR_TOPIC
-    assert hello == (2, struct.pack("<BI", 1, channel["id"]) + door_key(SECRET, "h1").encode())
-    assert json.loads(unadvertise[1]) == {"op": "unadvertise", "channelIds": [channel["id"]]}
-    assert backend.handshake.startswith(b"GET / HTTP/1.1\r\n")
-    assert b"Sec-WebSocket-Protocol: foxglove.sdk.v1" in backend.handshake and b"haven_token" not in backend.handshake
+    url = f"ws://127.0.0.1:{d.port}/ws/participant/h1?token={H1}"
+    cookie = {"Cookie": f"haven_token_h1={H1}"}
+    with connect(url, subprotocols=["foxglove.sdk.v1"], additional_headers=cookie, open_timeout=30) as page:
+        assert page.subprotocol == "foxglove.sdk.v1"  # the role server's choice, passed on
+        page.send(b"frame bytes")
+        assert page.recv(timeout=30) == b"FRAME BYTES"
+        page.send('{"op": "subscribe"}')
+        assert page.recv(timeout=30) == '{"OP": "SUBSCRIBE"}'
+    # The role's server heard the door's hello first (web/door_hello.py), then the page's messages as sent.
+    advertise, hello, unadvertise, *rest = backend.received
+    assert rest == [b"frame bytes", '{"op": "subscribe"}']
+    channel = json.loads(advertise)["channels"][0]
+    assert channel["topic"] == DOOR_TOPIC
+    assert hello == struct.pack("<BI", 1, channel["id"]) + door_key(SECRET, "h1").encode()
+    assert json.loads(unadvertise) == {"op": "unadvertise", "channelIds": [channel["id"]]}
+    assert backend.request.path == "/" and "Cookie" not in backend.request.headers
+    assert backend.request.headers["Sec-WebSocket-Protocol"] == "foxglove.sdk.v1"
 
 
 def test_clients_that_leave_mid_request_or_send_their_headers_slowly_cost_no_traceback(capfd):
-    backend = _Backend()
-    before = threading.active_count()
+    backend = EchoBackend()
     d = FrontDoor(
         "127.0.0.1", 0, SECRET, {"h1": backend.port, CONSOLE: backend.port}, lambda role: {}, request_timeout_s=0.3
     )
@@ -266,12 +249,9 @@ def test_clients_that_leave_mid_request_or_send_their_headers_slowly_cost_no_tra
         for s in slow:  # each is cut off once its headers are overdue
             assert s.recv(100) == b""
             s.close()
-        deadline = time.monotonic() + 30
-        # (every request's thread has ended)
-        while threading.active_count() > before + 2 and time.monotonic() < deadline:
-            time.sleep(0.01)
     finally:
-        d.stop()
+        d.stop()  # (returns once the server's thread has ended: all it would say is said)
+        backend.close()
     err = capfd.readouterr().err
     assert "Traceback" not in err and "Error" not in err, err[:2000]
 

@@ -10,14 +10,13 @@ import hashlib
 import os
 import shutil
 import subprocess
-import threading
-from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 
 import pytest
 from test_web_browser import PAGE_LOAD_MS, PAGE_TIMEOUT_MS, WEB_SOURCES, WebTrial, head_on_scenario, lan_address
 
 from conftest import CHROMIUM_ARGS, chromium_path
 from haven_scenarios.tools.cli import main as haven
+from haven_scenarios.web.serving import HTML, PageServer, Routes, reply
 
 pytestmark = [pytest.mark.ros, pytest.mark.browser]
 
@@ -33,15 +32,10 @@ def spki_hash(ca_pem: bytes) -> str:
     return base64.b64encode(hashlib.sha256(der).digest()).decode()
 
 
-class _Blank(BaseHTTPRequestHandler):
-    def do_GET(self) -> None:
-        self.send_response(200)
-        self.send_header("Content-Type", "text/html")
-        self.end_headers()
-        self.wfile.write(b"<!doctype html><title>lab</title>")
-
-    def log_message(self, format, *args):
-        pass
+def blank_page(host: str) -> PageServer:
+    """A page of the lab's over plain http (HAVEN's own page server, on any free port)."""
+    page = b"<!doctype html><title>lab</title>"
+    return PageServer("a lab page", host, 0, Routes(get={"/": lambda request: reply(request, 200, page, HTML)}))
 
 
 CONTEXT = "[isSecureContext, typeof navigator.xr]"
@@ -72,8 +66,8 @@ def test_over_https_a_browser_that_trusts_the_lab_authority_is_offered_enter_vr(
     trial = WebTrial(
         ros, [*argv, "--tls-cert", str(certs / "haven-server.pem"), "--tls-key", str(certs / "haven-server-key.pem")]
     )
-    plain = ThreadingHTTPServer((host, 0), _Blank)  # today's page over http from the same address, for contrast
-    threading.Thread(target=plain.serve_forever, daemon=True).start()
+    plain = blank_page(host)  # today's page over http from the same address, for contrast
+    plain.start()
     trusted = spki_hash((certs / "haven-ca.pem").read_bytes())
     headset = browser.browser_type.launch(
         executable_path=chromium_path(), args=[*CHROMIUM_ARGS, f"--ignore-certificate-errors-spki-list={trusted}"]
@@ -82,7 +76,7 @@ def test_over_https_a_browser_that_trusts_the_lab_authority_is_offered_enter_vr(
         url = trial.urls()["participant h1"]
         assert url.startswith(f"https://{address}:"), url
         page = headset.new_page()
-        page.goto(f"http://{address}:{plain.server_address[1]}/", timeout=PAGE_LOAD_MS)
+        page.goto(f"http://{address}:{plain.port}/", timeout=PAGE_LOAD_MS)
         if address != "127.0.0.1":  # (loopback counts as secure even over http)
             assert page.evaluate(CONTEXT) == [False, "undefined"]  # why a headset never offered Enter VR
         page.goto(url, timeout=PAGE_LOAD_MS)
@@ -105,4 +99,4 @@ def test_over_https_a_browser_that_trusts_the_lab_authority_is_offered_enter_vr(
         page.wait_for_function(f"() => havenState.frames > {frames + 3}", timeout=PAGE_TIMEOUT_MS)
     finally:
         headset.close()
-        plain.shutdown()
+        plain.stop()

@@ -18,7 +18,7 @@ import re
 import secrets
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
-from urllib.parse import parse_qs, urlsplit
+from urllib.parse import urlsplit
 
 from haven_sim.common import topics
 
@@ -148,25 +148,14 @@ def route(path: str) -> Request:
     return Request("", "", "")
 
 
-def token_of(path: str, cookie_header: str | None, role: str) -> str:
+def token_of(query: Mapping[str, str], cookies: Mapping[str, str], role: str) -> str:
     """The token a request carries for a role: in the query, else in that role's cookie."""
-    given = parse_qs(urlsplit(path).query).get(TOKEN_PARAM, [""])[0]
-    if given:
-        return given
-    for part in (cookie_header or "").split(";"):
-        name, _, value = part.strip().partition("=")
-        if name == TOKEN_COOKIE + role:
-            return value
-    return ""
+    return query.get(TOKEN_PARAM, "") or cookies.get(TOKEN_COOKIE + role, "")
 
 
-def cookie_tokens(cookie_header: str | None) -> list[str]:
+def cookie_tokens(cookies: Mapping[str, str]) -> list[str]:
     """Every role token in a request's cookies (the pages' code needs any one of them)."""
-    return [
-        v
-        for n, _, v in (p.strip().partition("=") for p in (cookie_header or "").split(";"))
-        if n.startswith(TOKEN_COOKIE)
-    ]
+    return [v for n, v in cookies.items() if n.startswith(TOKEN_COOKIE)]
 
 
 def token_ok(given: str, expected: str) -> bool:

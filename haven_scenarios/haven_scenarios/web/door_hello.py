@@ -3,11 +3,11 @@ connections it did not open cut.
 
 Each role's Foxglove WebSocket server listens on 127.0.0.1, where any process of any user could
 connect to it and skip the tokens. So:
-- the door opens every connection from a socket bound before it connects (`BackendGuard.connect`),
-  so the guard knows it by its port;
-- right after the WebSocket upgrade, before a byte of the page's, the door sends a hello: a client
+- the door opens every connection from a socket bound before it connects (`BackendGuard.socket_for`,
+  the door's WebSocket client's socket factory), so the guard knows it by its port;
+- right after the WebSocket upgrade, before a message of the page's, the door sends a hello: a client
   channel advertised on DOOR_TOPIC and one message carrying the role's door key (`access.door_key`,
-  from the session's secret; a page never sees it), as RFC 6455 client frames (masked). The relay
+  from the session's secret; a page never sees it). The relay
   (web/foxglove_relay.py) lets a client publish, subscribe or touch parameters only after that
   hello, so a connection that skipped the door can do nothing whatever its timing;
 - `BackendGuard.sweep` (on a stranger's first request, and every second) shuts every connection to
@@ -18,7 +18,6 @@ connect to it and skip the tokens. So:
 
 from __future__ import annotations
 
-import contextlib
 import json
 import os
 import socket
@@ -26,35 +25,22 @@ import struct
 import sys
 import threading
 from collections.abc import Iterable
+from typing import Any
 
 DOOR_TOPIC = "/haven/front_door"  # (a client channel only: never a ROS topic)
 DOOR_SCHEMA = "haven/front_door"
 DOOR_CHANNEL = 0xFFFF_FFF0  # a client channel id no page uses (the pages' count up from 1)
 MESSAGE_DATA = 0x01  # the Foxglove WebSocket protocol's client opcode for a message (ws-protocol spec)
-TEXT, BINARY = 0x1, 0x2  # RFC 6455 opcodes
 
 
-def client_frame(opcode: int, payload: bytes) -> bytes:
-    """One final RFC 6455 frame as a client sends it (masked, as servers require)."""
-    mask = os.urandom(4)
-    n = len(payload)
-    if n < 126:
-        head = struct.pack("!BB", 0x80 | opcode, 0x80 | n)
-    elif n < 1 << 16:
-        head = struct.pack("!BBH", 0x80 | opcode, 0x80 | 126, n)
-    else:
-        head = struct.pack("!BBQ", 0x80 | opcode, 0x80 | 127, n)
-    return head + mask + bytes(b ^ mask[i % 4] for i, b in enumerate(payload))
-
-
-def hello_frames(key: str) -> bytes:
-    """The door's hello: advertise DOOR_TOPIC, send the key on it, unadvertise it."""
+def hello_messages(key: str) -> list[str | bytes]:
+    """The door's hello, as WebSocket messages: advertise DOOR_TOPIC, send the key on it, unadvertise it."""
     channel = {"id": DOOR_CHANNEL, "topic": DOOR_TOPIC, "encoding": "cdr", "schemaName": DOOR_SCHEMA}
-    return (
-        client_frame(TEXT, json.dumps({"op": "advertise", "channels": [channel]}).encode())
-        + client_frame(BINARY, struct.pack("<BI", MESSAGE_DATA, DOOR_CHANNEL) + key.encode())
-        + client_frame(TEXT, json.dumps({"op": "unadvertise", "channelIds": [DOOR_CHANNEL]}).encode())
-    )
+    return [
+        json.dumps({"op": "advertise", "channels": [channel]}),
+        struct.pack("<BI", MESSAGE_DATA, DOOR_CHANNEL) + key.encode(),
+        json.dumps({"op": "unadvertise", "channelIds": [DOOR_CHANNEL]}),
+    ]
 
 
 class BackendGuard:
@@ -71,24 +57,25 @@ class BackendGuard:
         with self._lock:
             self.ports = self.ports | frozenset(ports)
 
-    def connect(self, port: int) -> socket.socket:
-        """A connection to a role server from a port the guard knows before it connects."""
-        s = socket.socket(socket.AF_INET, socket.SOCK_STREAM)
+    def socket_for(self, addr_info: tuple[Any, ...]) -> socket.socket:
+        """A socket to connect to a role server from, bound to a port the guard knows before it
+        connects (the door's client's socket factory: aiohttp's TCPConnector `socket_factory`)."""
+        family, kind, proto = addr_info[:3]
+        s = socket.socket(family, kind, proto)
         try:
             s.bind(("127.0.0.1", 0))
-            with self._lock:
-                self._door.add(s.getsockname()[1])
-            s.settimeout(5.0)
-            s.connect(("127.0.0.1", port))
         except OSError:
-            self.release(s)
+            s.close()
             raise
+        with self._lock:
+            self._door.add(s.getsockname()[1])
         return s
 
-    def release(self, s: socket.socket) -> None:
-        with self._lock, contextlib.suppress(OSError):
-            self._door.discard(s.getsockname()[1])
-        s.close()
+    def release(self, sockname: tuple[Any, ...] | None) -> None:
+        """A door's connection (by its local address) has closed."""
+        if sockname:
+            with self._lock:
+                self._door.discard(sockname[1])
 
     def sweep(self) -> int:
         """Shut every connection to a role server that the door did not open; how many were."""

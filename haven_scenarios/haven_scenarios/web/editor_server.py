@@ -1,10 +1,10 @@
 """The world editor's server (`haven edit`): the page, the real loader's verdict on what is drawn,
 walls from a map image, and saving a world with a scenario from a template.
 
-No ROS: a small threaded HTTP server (the standard library's), as the instruments page has
-(web/instrument_server.py). `/edit` is the page (editor.html, the world being edited embedded as
-JSON), `/static/editor.js` its bundle. The page POSTs, each with the token (in the printed address,
-then the cookie the page sets) and size-capped:
+No ROS: a page server (web/serving.py), as the instruments page has (web/instrument_server.py).
+`/edit` is the page (editor.html, the world being edited embedded as JSON), `/static/editor.js` its
+bundle. The page POSTs, each with the token (in the printed address, then the cookie the page sets)
+and size-capped:
 - `/edit/check`: a world as its YAML tree in JSON; the answer is the loader's own verdict
   (`parse_world`): `{"ok": true, "summary": ...}` or `{"ok": false, "error": line, "key": key}`;
 - `/edit/walls?resolution=R&x=X&y=Y&negate=0|1`: a PNG, JPEG or PGM (map_saver's own format; told
@@ -26,26 +26,17 @@ import ssl
 import tempfile
 import threading
 from collections.abc import Mapping
-from http.server import BaseHTTPRequestHandler
 from pathlib import Path
 from typing import Any
-from urllib.parse import parse_qs, urlsplit
 
 import yaml
+from aiohttp import web
 
 from haven_scenarios.study.scenario import ScenarioError, parse_scenario
 from haven_scenarios.study.scenario_template import TASKS, TemplateError, scenario_template
 from haven_scenarios.web.access import TOKEN_COOKIE, TOKEN_PARAM, new_token, role_token, token_of, token_ok
-from haven_scenarios.web.front_door import (
-    STATIC,
-    _Server,
-    address_for_others,
-    quiet_handler,
-    read_body,
-    reply,
-    reply_json,
-    token_cookie,
-)
+from haven_scenarios.web.front_door import STATIC, address_for_others
+from haven_scenarios.web.serving import HTML, PageServer, Routes, read_body, reply, reply_json, set_token_cookie
 from haven_sim.common import atomic
 from haven_sim.common.yaml_file import MAX_FILE_BYTES, YamlFileError, file_label, one_line
 from haven_sim.sim.map_image import open_image, read_image, wall_boxes
@@ -70,60 +61,54 @@ class EditorServer:
         self.world, self.out = dict(world), out
         self.token = role_token(new_token(), ROLE)
         self._lock = threading.Lock()
-        try:
-            self.httpd = _Server((host, port), quiet_handler(self.get, self.post), tls)
-        except OSError as e:
-            raise ValueError(f"cannot serve the editor on {host}:{port}: {e.strerror}") from None
+        routes = Routes(get={"/{path:.*}": self.get}, post={"/{path:.*}": self.post})
+        self.server = PageServer("the editor", host, port, routes, tls)
         self.host = host
-        self.thread = threading.Thread(target=self.httpd.serve_forever, name="editor", daemon=True)
 
     @property
     def url(self) -> str:
-        port = int(self.httpd.server_address[1])
-        return f"{self.httpd.scheme}://{address_for_others(self.host)}:{port}/{PAGE}?{TOKEN_PARAM}={self.token}"
+        where = f"{self.server.scheme}://{address_for_others(self.host)}:{self.server.port}"
+        return f"{where}/{PAGE}?{TOKEN_PARAM}={self.token}"
 
     def start(self) -> None:
-        self.thread.start()
+        self.server.start()
 
     def stop(self) -> None:
-        self.httpd.shutdown()
-        self.httpd.server_close()
+        self.server.stop()
 
-    def _allowed(self, h: BaseHTTPRequestHandler) -> bool:
-        return token_ok(token_of(h.path, h.headers.get("Cookie"), ROLE), self.token)
+    def _allowed(self, request: web.BaseRequest) -> bool:
+        return token_ok(token_of(request.query, request.cookies, ROLE), self.token)
 
-    def get(self, h: BaseHTTPRequestHandler) -> None:
-        parts = [p for p in urlsplit(h.path).path.split("/") if p]
+    def get(self, request: web.Request) -> web.Response:
+        parts = [p for p in request.path.split("/") if p]
         if parts == ["favicon.ico"]:
-            return reply(h, 204, b"")
-        if not self._allowed(h):
-            return reply(h, 403, b"this page needs its token: open the address `haven edit` printed")
+            return reply(request, 204, b"")
+        if not self._allowed(request):
+            return reply(request, 403, b"this page needs its token: open the address `haven edit` printed")
         if parts == [PAGE]:
             config = {"world": self.world, "tasks": list(TASKS), "out": str(self.out)}
             text = json.dumps(config).replace("<", "\\u003c")
             page = (STATIC / "editor.html").read_text().replace("{{CONFIG}}", text).encode()
-            cookie = token_cookie(h, TOKEN_COOKIE + ROLE, self.token)
-            return reply(h, 200, page, "text/html; charset=utf-8", cookie)
+            return set_token_cookie(reply(request, 200, page, HTML), request, TOKEN_COOKIE + ROLE, self.token)
         if len(parts) == 2 and parts[0] == "static" and parts[1] in SERVED:
             kind = "text/javascript" if parts[1].endswith(".js") else "text/css"
-            return reply(h, 200, (STATIC / parts[1]).read_bytes(), kind)
-        return reply(h, 404, b"no such page")
+            return reply(request, 200, (STATIC / parts[1]).read_bytes(), kind)
+        return reply(request, 404, b"no such page")
 
-    def post(self, h: BaseHTTPRequestHandler) -> None:
-        split = urlsplit(h.path)
-        parts = [p for p in split.path.split("/") if p]
+    def post(self, request: web.Request) -> web.Response:
+        parts = [p for p in request.path.split("/") if p]
         actions = {"check": self.check, "save": self.save}
         if len(parts) != 2 or parts[0] != PAGE or parts[1] not in (*actions, "walls", "image"):
-            return reply(h, 404, b"no such page")
-        if not self._allowed(h):
-            return reply_json(h, 403, {"error": "not the editor's page: open the address `haven edit` printed"})
+            return reply(request, 404, b"no such page")
+        if not self._allowed(request):
+            return reply_json(request, 403, {"error": "not the editor's page: open the address `haven edit` printed"})
         try:
             if parts[1] == "walls":
-                body = read_body(h, MAX_IMAGE_BYTES, "the image")
-                return reply_json(h, 200, image_walls(body, parse_qs(split.query)))
+                image = read_body(request, MAX_IMAGE_BYTES, "the image")
+                return reply_json(request, 200, image_walls(image, request.query))
             if parts[1] == "image":
-                return reply(h, 200, as_png(read_body(h, MAX_IMAGE_BYTES, "the image")), "image/png")
-            sent = read_body(h, MAX_WORLD_BYTES, "the world")
+                return reply(request, 200, as_png(read_body(request, MAX_IMAGE_BYTES, "the image")), "image/png")
+            sent = read_body(request, MAX_WORLD_BYTES, "the world")
             try:
                 message = json.loads(sent)
             except (json.JSONDecodeError, UnicodeDecodeError, RecursionError):
@@ -131,10 +116,10 @@ class EditorServer:
             with self._lock:
                 code, answer = actions[parts[1]](message)
         except ValueError as e:
-            return reply_json(h, 400, {"ok": False, "error": str(e)})
+            return reply_json(request, 400, {"ok": False, "error": str(e)})
         except OSError as e:  # (a full disk, a folder that cannot be written: the page can save again)
-            return reply_json(h, 500, {"ok": False, "error": f"cannot write {e.filename}: {e.strerror or e}"})
-        reply_json(h, code, answer)
+            return reply_json(request, 500, {"ok": False, "error": f"cannot write {e.filename}: {e.strerror or e}"})
+        return reply_json(request, code, answer)
 
     def target(self, world: Any) -> Path:
         name = world.get("name") if isinstance(world, dict) else None
@@ -236,12 +221,12 @@ def as_png(image: bytes) -> bytes:
     return out.getvalue()
 
 
-def image_walls(image: bytes, query: Mapping[str, list[str]]) -> dict[str, Any]:
+def image_walls(image: bytes, query: Mapping[str, str]) -> dict[str, Any]:
     """A map image's occupied and unknown cells as wall polygons, read as a world's `map:` is."""
     suffix = image_suffix(image)
 
     def number(key: str, default: str) -> float:
-        text = query.get(key, [default])[0]
+        text = query.get(key, default)
         try:
             return float(text)
         except ValueError:
@@ -255,7 +240,7 @@ def image_walls(image: bytes, query: Mapping[str, list[str]]) -> dict[str, Any]:
                 f.name,
                 number("resolution", "0.05"),
                 (number("x", "0"), number("y", "0")),
-                negate=query.get("negate", ["0"])[0] == "1",
+                negate=query.get("negate", "0") == "1",
             )
             boxes = wall_boxes(grid)
         except WorldError as e:

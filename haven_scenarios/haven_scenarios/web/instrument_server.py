@@ -1,14 +1,13 @@
 """The page a participant answers the study's instruments on, before the first trial and after the
 last (`haven study run --web`; study/instruments.py says which).
 
-No ROS and no trial: a small threaded HTTP server (the standard library's) on the study's web
-address serves `/instruments/<participant>` (instruments.html, its settings embedded) and its
-bundle, and takes each instrument's answers as a POST of `{"questionnaire": name, "answers":
-{...}}` to `/instruments/<participant>/answers`: checked and stored in the participant's
-instruments.json (record/participants.py), or refused with one line the page shows. Every request
-needs the participant's token (in the address `haven study run` prints, then the cookie the page
-sets), as the trial pages do (web/access.py). It is stopped before the first trial's web node
-takes the same port.
+No ROS and no trial: a page server (web/serving.py) on the study's web address serves
+`/instruments/<participant>` (instruments.html, its settings embedded) and its bundle, and takes
+each instrument's answers as a POST of `{"questionnaire": name, "answers": {...}}` to
+`/instruments/<participant>/answers`: checked and stored in the participant's instruments.json
+(record/participants.py), or refused with one line the page shows. Every request needs the
+participant's token (in the address `haven study run` prints, then the cookie the page sets), as the
+trial pages do (web/access.py). It is stopped before the first trial's web node takes the same port.
 """
 
 from __future__ import annotations
@@ -18,24 +17,16 @@ import ssl
 import threading
 from collections.abc import Sequence
 from datetime import UTC, datetime
-from http.server import BaseHTTPRequestHandler
 from typing import Any
-from urllib.parse import urlsplit
+
+from aiohttp import web
 
 from haven_scenarios.record.answers import MAX_MESSAGE_BYTES
 from haven_scenarios.record.participants import InstrumentBook
 from haven_scenarios.study.questionnaires import Questionnaire, in_order, item_order
-from haven_scenarios.web.access import TOKEN_PARAM, new_token, role_token, token_of, token_ok
-from haven_scenarios.web.front_door import (
-    STATIC,
-    _Server,
-    address_for_others,
-    quiet_handler,
-    read_body,
-    reply,
-    reply_json,
-    token_cookie,
-)
+from haven_scenarios.web.access import TOKEN_PARAM, new_token, role_token, token_ok
+from haven_scenarios.web.front_door import STATIC, address_for_others
+from haven_scenarios.web.serving import HTML, PageServer, Routes, read_body, reply, reply_json, set_token_cookie
 
 PAGE, COOKIE = "instruments", "haven_instruments_"  # the page's path and its token cookie (+ participant)
 SERVED = ("instruments.js", "haven.css")
@@ -62,25 +53,21 @@ class InstrumentServer:
         self.token = role_token(new_token(), self.participant)
         self.finished = threading.Event()
         self._lock = threading.Lock()
-        try:
-            self.httpd = _Server((host, port), quiet_handler(self.get, self.post), tls)
-        except OSError as e:
-            raise ValueError(f"cannot serve the instruments page on {host}:{port}: {e.strerror}") from None
+        routes = Routes(get={"/{path:.*}": self.get}, post={"/{path:.*}": self.post})
+        self.server = PageServer("the instruments page", host, port, routes, tls)
         self.host = host
-        self.thread = threading.Thread(target=self.httpd.serve_forever, name="instruments", daemon=True)
         self._check_done()
 
     @property
     def url(self) -> str:
-        port = int(self.httpd.server_address[1])
-        return f"{self.httpd.scheme}://{address_for_others(self.host)}:{port}/{PAGE}/{self.participant}?{TOKEN_PARAM}={self.token}"
+        where = f"{self.server.scheme}://{address_for_others(self.host)}:{self.server.port}"
+        return f"{where}/{PAGE}/{self.participant}?{TOKEN_PARAM}={self.token}"
 
     def start(self) -> None:
-        self.thread.start()
+        self.server.start()
 
     def stop(self) -> None:
-        self.httpd.shutdown()
-        self.httpd.server_close()
+        self.server.stop()
 
     def config(self) -> dict[str, Any]:
         return {
@@ -97,37 +84,35 @@ class InstrumentServer:
         if self.book.declined() or not self.book.pending(list(self.qs.values())):
             self.finished.set()
 
-    def get(self, h: BaseHTTPRequestHandler) -> None:
-        parts = [p for p in urlsplit(h.path).path.split("/") if p]
+    def get(self, request: web.Request) -> web.Response:
+        parts = [p for p in request.path.split("/") if p]
         if parts == ["favicon.ico"]:
-            return reply(h, 204, b"")
-        if not self._cookie_ok(h):
-            return reply(h, 403, b"this page needs its token: open the address `haven study run` printed for it")
+            return reply(request, 204, b"")
+        if not self._token_ok(request):
+            return reply(request, 403, b"this page needs its token: open the address `haven study run` printed for it")
         if parts == [PAGE, self.participant]:
             with self._lock:
                 text = json.dumps(self.config()).replace("<", "\\u003c")
             page = (STATIC / "instruments.html").read_text().replace("{{CONFIG}}", text).encode()
-            cookie = token_cookie(h, COOKIE + self.participant, self.token)
-            return reply(h, 200, page, "text/html; charset=utf-8", cookie)
+            return set_token_cookie(reply(request, 200, page, HTML), request, COOKIE + self.participant, self.token)
         if len(parts) == 2 and parts[0] == "static" and parts[1] in SERVED:
             kind = "text/javascript" if parts[1].endswith(".js") else "text/css"
-            return reply(h, 200, (STATIC / parts[1]).read_bytes(), kind)
-        return reply(h, 404, b"no such page")
+            return reply(request, 200, (STATIC / parts[1]).read_bytes(), kind)
+        return reply(request, 404, b"no such page")
 
-    def _cookie_ok(self, h: BaseHTTPRequestHandler) -> bool:
-        given = token_of(h.path, None, "")
-        cookies = dict(p.strip().partition("=")[::2] for p in (h.headers.get("Cookie") or "").split(";") if "=" in p)
-        return token_ok(given or cookies.get(COOKIE + self.participant, ""), self.token)
+    def _token_ok(self, request: web.BaseRequest) -> bool:
+        given = request.query.get(TOKEN_PARAM) or request.cookies.get(COOKIE + self.participant, "")
+        return token_ok(given, self.token)
 
-    def post(self, h: BaseHTTPRequestHandler) -> None:
-        if [p for p in urlsplit(h.path).path.split("/") if p] != [PAGE, self.participant, "answers"]:
-            return reply(h, 404, b"no such page")
-        if not self._cookie_ok(h):
+    def post(self, request: web.Request) -> web.Response:
+        if [p for p in request.path.split("/") if p] != [PAGE, self.participant, "answers"]:
+            return reply(request, 404, b"no such page")
+        if not self._token_ok(request):
             return reply_json(
-                h, 403, {"error": "not this participant's page: open the address `haven study run` printed"}
+                request, 403, {"error": "not this participant's page: open the address `haven study run` printed"}
             )
         try:
-            msg = json.loads(read_body(h, MAX_MESSAGE_BYTES, "answers"))
+            msg = json.loads(read_body(request, MAX_MESSAGE_BYTES, "answers"))
             if (
                 not isinstance(msg, dict)
                 or set(msg) != {"questionnaire", "answers"}
@@ -143,8 +128,8 @@ class InstrumentServer:
                 answer = {"answered": [n for n in self.qs if n in self.book.data], "declined": self.book.declined()}
         except (ValueError, RecursionError) as e:
             return reply_json(
-                h, 400, {"error": str(e) if not isinstance(e, json.JSONDecodeError) else "answers: not JSON"}
+                request, 400, {"error": str(e) if not isinstance(e, json.JSONDecodeError) else "answers: not JSON"}
             )
         except OSError as e:  # (a full disk: the page can send them again)
-            return reply_json(h, 500, {"error": f"cannot write {e.filename}: {e.strerror or e}"})
-        reply_json(h, 200, answer)
+            return reply_json(request, 500, {"error": f"cannot write {e.filename}: {e.strerror or e}"})
+        return reply_json(request, 200, answer)

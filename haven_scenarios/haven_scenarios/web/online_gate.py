@@ -20,9 +20,11 @@ import hmac
 import ipaddress
 from collections import deque
 from dataclasses import dataclass
-from http.server import BaseHTTPRequestHandler
+
+from aiohttp import web
 
 from haven_scenarios.study.online import Online, read_ids, read_secret
+from haven_scenarios.web.serving import secure
 
 SIG_PARAM = "sig"  # the signed link's query key: /?participant=ID&sig=HEX
 PLACE_COOKIE = "haven_place"  # a browser's place: "<participant>.<key>"
@@ -128,28 +130,29 @@ class Gate:
             del self.taken[next(iter(self.taken))]
 
 
-def place_cookie(h: BaseHTTPRequestHandler, participant: str, key: str) -> str:
-    """The Set-Cookie value of a browser's place: not for scripts, sent on top-level visits from the
-    panel's site too (Lax: the landing page says "welcome back"), over HTTPS never in clear."""
-    secure = "; Secure" if getattr(h.server, "tls", None) is not None else ""
-    return (
-        f"{PLACE_COOKIE}={participant}.{key}; Path=/; "
-        f"Max-Age={PLACE_COOKIE_DAYS * 86400}; HttpOnly; SameSite=Lax{secure}"
+def set_place_cookie(response: web.Response, request: web.BaseRequest, participant: str, key: str) -> web.Response:
+    """Keep a browser's place: not for scripts, sent on top-level visits from the panel's site too
+    (Lax: the landing page says "welcome back"), over HTTPS never in clear."""
+    response.set_cookie(
+        PLACE_COOKIE,
+        f"{participant}.{key}",
+        path="/",
+        max_age=PLACE_COOKIE_DAYS * 86400,
+        httponly=True,
+        samesite="Lax",
+        secure=secure(request) or None,
     )
+    return response
 
 
-def cookie_place(h: BaseHTTPRequestHandler) -> tuple[str, str]:
+def cookie_place(request: web.BaseRequest) -> tuple[str, str]:
     """The (participant, key) a browser's place cookie names, ("", "") if none."""
-    for part in (h.headers.get("Cookie") or "").split(";"):
-        name, _, value = part.strip().partition("=")
-        if name == PLACE_COOKIE:
-            participant, _, key = value.rpartition(".")
-            return participant, key
-    return "", ""
+    participant, _, key = request.cookies.get(PLACE_COOKIE, "").rpartition(".")
+    return participant, key
 
 
-def same_origin(h: BaseHTTPRequestHandler) -> bool:
+def same_origin(request: web.BaseRequest) -> bool:
     """A POST from our own page: its Origin (which browsers send with every POST form) names the
     host it was sent to; a request without one is not from a page of ours, and takes no place."""
-    origin = h.headers.get("Origin")
-    return origin is not None and origin.split("://", 1)[-1].rstrip("/") == (h.headers.get("Host") or "")
+    origin = request.headers.get("Origin")
+    return origin is not None and origin.split("://", 1)[-1].rstrip("/") == (request.headers.get("Host") or "")

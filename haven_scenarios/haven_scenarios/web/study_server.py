@@ -22,31 +22,40 @@ import time
 from collections import Counter
 from collections.abc import Sequence
 from dataclasses import dataclass
-from http.server import BaseHTTPRequestHandler
 from pathlib import Path
 from typing import Any
-from urllib.parse import parse_qs, quote, urlsplit
+from urllib.parse import parse_qs, quote
+
+from aiohttp import web
 
 from haven_scenarios.run.domains import DomainRange
 from haven_scenarios.study.presence import OnDisconnect
 from haven_scenarios.study.protocol import Study
 from haven_scenarios.study.schedule import PlannedTrial
 from haven_scenarios.web import online_pages as pages
-from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_of, token_ok
-from haven_scenarios.web.front_door import (
-    STATIC,
-    _Server,
-    address_for_others,
-    quiet_handler,
+from haven_scenarios.web.access import TOKEN_PARAM, new_token, token_ok
+from haven_scenarios.web.front_door import STATIC, address_for_others
+from haven_scenarios.web.online_gate import (
+    SIG_PARAM,
+    TOO_MANY,
+    Gate,
+    Refusal,
+    cookie_place,
+    same_origin,
+    set_place_cookie,
+)
+from haven_scenarios.web.online_runner import LOG, NEXT_URL_ENV, Runner
+from haven_scenarios.web.online_seats import LIVE, Full, Seat, Seats, Standing, standing
+from haven_scenarios.web.serving import (
+    HTML,
+    PageServer,
+    Routes,
     read_body,
     redirect,
     reply,
     reply_json,
-    token_cookie,
+    set_token_cookie,
 )
-from haven_scenarios.web.online_gate import SIG_PARAM, TOO_MANY, Gate, Refusal, cookie_place, place_cookie, same_origin
-from haven_scenarios.web.online_runner import LOG, NEXT_URL_ENV, Runner
-from haven_scenarios.web.online_seats import LIVE, Full, Seat, Seats, Standing, standing
 
 DEFAULT_CAPACITY = 2  # live trials at once: what a 2-core machine holds at a 100 ms p95 (bench/RESULTS.md)
 MAX_STARTS = 5  # a participant's runner starts again this often at most (their trial did not finish)
@@ -55,7 +64,6 @@ TICK_S = 0.5
 STOP_S = 4.5  # `haven serve` ends within 5 s of Ctrl-C or SIGTERM: what its runners have to end their trials cleanly
 CONSOLE_COOKIE = "haven_serve_console"
 MAX_JOIN_BODY = 4096  # a join's form: the panel id and its signature
-HTML = "text/html; charset=utf-8"
 
 
 @dataclass(frozen=True)
@@ -94,18 +102,13 @@ class StudyServer:
         self._lock = threading.Lock()
         self._stopping = threading.Event()
         tls = server_context(*options.tls) if options.tls else None
-        try:
-            self.httpd = _Server((options.host, options.port), quiet_handler(self.get, self.post), tls)
-        except OSError as e:
-            raise ValueError(f"cannot serve on {options.host}:{options.port}: {e.strerror}") from None
-        self.threads = [
-            threading.Thread(target=self.httpd.serve_forever, name="serve http", daemon=True),
-            threading.Thread(target=self._tick_loop, name="serve runners", daemon=True),
-        ]
+        routes = Routes(get={"/{path:.*}": self.get}, post={"/{path:.*}": self.post})
+        self.server = PageServer("the study", options.host, options.port, routes, tls)
+        self.ticker = threading.Thread(target=self._tick_loop, name="serve runners", daemon=True)
 
     @property
     def base(self) -> str:
-        return f"{self.httpd.scheme}://{address_for_others(self.o.host)}:{self.httpd.server_address[1]}"
+        return f"{self.server.scheme}://{address_for_others(self.o.host)}:{self.server.port}"
 
     @property
     def join_url(self) -> str:
@@ -118,8 +121,8 @@ class StudyServer:
         return f"{self.base}/console?{TOKEN_PARAM}={self.token}"
 
     def start(self) -> None:
-        for t in self.threads:
-            t.start()
+        self.server.start()
+        self.ticker.start()
 
     def stop(self, wait_s: float = STOP_S) -> None:
         """Every runner at once as Ctrl-C (their trials end cleanly, to run again), then the pages,
@@ -138,9 +141,8 @@ class StudyServer:
                     runner.interrupt()
 
         tell()
-        self.httpd.shutdown()
-        self.httpd.server_close()
-        self.threads[1].join()
+        self.server.stop()
+        self.ticker.join()
         tell()  # (one the last tick started)
         for runner in list(self.runners.values()):
             runner.finish(deadline)
@@ -304,74 +306,65 @@ class StudyServer:
         return sorted(rows, key=lambda r: (r["state"] not in (*LIVE, Standing.WAITING), r["participant"]))
 
     # -- HTTP ---------------------------------------------------------------------------------
-    def get(self, h: BaseHTTPRequestHandler) -> None:
-        url = urlsplit(h.path)
-        parts, query = [p for p in url.path.split("/") if p], {k: v[0] for k, v in parse_qs(url.query).items()}
+    def get(self, request: web.Request) -> web.Response:
+        parts, query = [p for p in request.path.split("/") if p], request.query
         if parts in ([], ["join"]):  # (a GET only shows the way in: a link preview takes no place)
-            return self._landing(h, query.get(self.o.id_param, "").strip(), query.get(SIG_PARAM, ""))
+            return self._landing(request, query.get(self.o.id_param, "").strip(), query.get(SIG_PARAM, ""))
         if parts == ["static", "haven.css"]:
-            return reply(h, 200, (STATIC / "haven.css").read_bytes(), "text/css")
+            return reply(request, 200, (STATIC / "haven.css").read_bytes(), "text/css")
         if parts and parts[0] == "console":
-            return self._console(h, parts)
+            return self._console(request, parts)
         if len(parts) in (2, 3) and parts[0] == "session" and parts[2:] in ([], ["state"]):
             seat = self.seats.by_participant(parts[1])
             if seat is None or not token_ok(query.get("key", ""), seat.key):
                 wrong = pages.message("Not found", "This session address is not right: open the study's link again.")
-                return reply(h, 403, wrong, "text/html; charset=utf-8")
+                return reply(request, 403, wrong, HTML)
             if parts[2:]:
-                return reply_json(h, 200, self.state(seat, time.monotonic()))
+                return reply_json(request, 200, self.state(seat, time.monotonic()))
             if "left" in query:  # back from a page they finished
                 with self._lock:
                     runner = self.runners.get(seat.participant)
                 if runner is not None:
                     runner.finished_page(query["left"])
-            return reply(
-                h,
-                200,
-                pages.session(f"/session/{seat.participant}/state?key={quote(seat.key)}"),
-                "text/html; charset=utf-8",
-            )
+            return reply(request, 200, pages.session(f"/session/{seat.participant}/state?key={quote(seat.key)}"), HTML)
         if parts == ["favicon.ico"]:
-            return reply(h, 204, b"")
-        return reply(h, 404, b"no such page")
+            return reply(request, 204, b"")
+        return reply(request, 404, b"no such page")
 
-    def post(self, h: BaseHTTPRequestHandler) -> None:
+    def post(self, request: web.Request) -> web.Response:
         """A join: the landing page's form (the panel id and any signature), from this server's page."""
-        if [p for p in urlsplit(h.path).path.split("/") if p] != ["join"]:
-            return reply(h, 404, b"no such page")
-        if not same_origin(h):
-            return reply(h, 403, b"a join comes from the study's own page")
+        if [p for p in request.path.split("/") if p] != ["join"]:
+            return reply(request, 404, b"no such page")
+        if not same_origin(request):
+            return reply(request, 403, b"a join comes from the study's own page")
         try:
-            form = {k: v[0] for k, v in parse_qs(read_body(h, MAX_JOIN_BODY, "a join").decode("latin-1")).items()}
+            form = {k: v[0] for k, v in parse_qs(read_body(request, MAX_JOIN_BODY, "a join").decode("latin-1")).items()}
         except ValueError as e:
-            return reply(h, 400, str(e).encode())
-        self._join(h, form.get(self.o.id_param, "").strip(), form.get(SIG_PARAM, ""))
+            return reply(request, 400, str(e).encode())
+        return self._join(request, form.get(self.o.id_param, "").strip(), form.get(SIG_PARAM, ""))
 
-    def _mine(self, h: BaseHTTPRequestHandler) -> Seat | None:
+    def _mine(self, request: web.BaseRequest) -> Seat | None:
         """The place this browser took (its cookie), if any."""
-        participant, key = cookie_place(h)
+        participant, key = cookie_place(request)
         seat = self.seats.by_participant(participant) if participant else None
         return seat if seat is not None and token_ok(key, seat.key) else None
 
-    def _landing(self, h: BaseHTTPRequestHandler, panel_id: str, sig: str) -> None:
-        mine = self._mine(h)
+    def _landing(self, request: web.BaseRequest, panel_id: str, sig: str) -> web.Response:
+        mine = self._mine(request)
         if mine is None and (panel_id or self.gate.secret is not None):  # (a typed id cannot be signed)
             refused = self.gate.refusal(panel_id, sig)
             if refused is not None:
-                return reply(h, refused.code, pages.message(refused.title, refused.text), HTML)
+                return reply(request, refused.code, pages.message(refused.title, refused.text), HTML)
         returning = mine is not None or (bool(panel_id) and self.seats.by_panel_id(panel_id) is not None)
-        return reply(h, 200, pages.landing(self.study, panel_id, self.o.id_param, returning, sig), HTML)
+        return reply(request, 200, pages.landing(self.study, panel_id, self.o.id_param, returning, sig), HTML)
 
-    def _join(self, h: BaseHTTPRequestHandler, panel_id: str, sig: str) -> None:
-        seat = self._mine(h)  # (one place per browser: whatever id it sends now)
-        outcome = seat or self.gate.refusal(panel_id, sig) or self._take(panel_id, h.client_address[0])
+    def _join(self, request: web.BaseRequest, panel_id: str, sig: str) -> web.Response:
+        seat = self._mine(request)  # (one place per browser: whatever id it sends now)
+        outcome = seat or self.gate.refusal(panel_id, sig) or self._take(panel_id, request.remote or "")
         if isinstance(outcome, Refusal):
-            return reply(h, outcome.code, pages.message(outcome.title, outcome.text), HTML)
-        redirect(
-            h,
-            f"/session/{outcome.participant}?key={quote(outcome.key)}",
-            place_cookie(h, outcome.participant, outcome.key),
-        )
+            return reply(request, outcome.code, pages.message(outcome.title, outcome.text), HTML)
+        there = redirect(request, f"/session/{outcome.participant}?key={quote(outcome.key)}")
+        return set_place_cookie(there, request, outcome.participant, outcome.key)
 
     def _take(self, panel_id: str, address: str) -> Seat | Refusal:
         """This id's place (the one it had, else a new one if `address` may take one more)."""
@@ -392,16 +385,11 @@ class StudyServer:
                 self.gate.took(address, now)
             return seat
 
-    def _console(self, h: BaseHTTPRequestHandler, parts: list[str]) -> None:
-        given = token_of(h.path, None, "") or _cookie(h, CONSOLE_COOKIE)
+    def _console(self, request: web.BaseRequest, parts: list[str]) -> web.Response:
+        given = request.query.get(TOKEN_PARAM) or request.cookies.get(CONSOLE_COOKIE, "")
         if not token_ok(given, self.token):
-            return reply(h, 403, b"this page needs its token: open the address `haven serve` printed")
+            return reply(request, 403, b"this page needs its token: open the address `haven serve` printed")
         if parts == ["console", "sessions.json"]:
-            return reply_json(h, 200, {"capacity": self.o.capacity, "sessions": self.sessions()})
-        page = pages.researcher_list(self.study, self.sessions(), self.o.capacity)
-        return reply(h, 200, page, "text/html; charset=utf-8", token_cookie(h, CONSOLE_COOKIE, self.token))
-
-
-def _cookie(h: BaseHTTPRequestHandler, name: str) -> str:
-    cookies = dict(p.strip().partition("=")[::2] for p in (h.headers.get("Cookie") or "").split(";") if "=" in p)
-    return cookies.get(name, "")
+            return reply_json(request, 200, {"capacity": self.o.capacity, "sessions": self.sessions()})
+        page = reply(request, 200, pages.researcher_list(self.study, self.sessions(), self.o.capacity), HTML)
+        return set_token_cookie(page, request, CONSOLE_COOKIE, self.token)

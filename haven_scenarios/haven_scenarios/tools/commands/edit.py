@@ -79,7 +79,7 @@ def edit_cmd(args: argparse.Namespace) -> int:
     try:
         with on_stop_signals(interrupted):
             print(f"edit: the world editor (saves into {args.out}): {server.url}", flush=True)
-            server.thread.join()
+            server.server.wait()
     except KeyboardInterrupt:
         print("edit: stopped", flush=True)
     finally:

@@ -127,7 +127,7 @@ def serve_cmd(args: argparse.Namespace) -> int:
                 flush=True,
             )
             print(f"serve: researcher's list: {server.console_url}", flush=True)
-            server.threads[0].join()
+            server.server.wait()
     except KeyboardInterrupt:
         print("serve: stopping every participant's trial (each runs again when they come back)", flush=True)
     finally:
