@@ -12,11 +12,12 @@ The tiers (markers; `make test-unit` and the others select one):
 Where rclpy cannot be imported, a test file that imports ROS at its top is not collected (one line
 says how many), so the unit tier runs in a venv without ROS.
 
-The docs' Python examples run as tests too (Sybil): each ```python block of a page, in order, in one
-namespace per page, in a folder of its own. Hidden check blocks (`% invisible-code-block: python`,
-a MyST comment) hold each plugin example to its kind's contract; an example that needs what a test
-here cannot have (a ROS suite, a lab's own scenario file, a finished study) is marked `% skip: next`
-where it stands. They are integration tests.
+The docs' examples run as tests too (Sybil): each ```python block of a page, in order, in one
+namespace per page, in a folder of its own; and each ```bash block's commands (doc_commands.py).
+Hidden check blocks (`% invisible-code-block: python`, a MyST comment) hold each plugin example to
+its kind's contract; an example that needs what a test here cannot have (a ROS suite, a lab's own
+scenario file, a finished study) is marked `% skip: next` where it stands. They are integration
+tests.
 """
 
 import ast
@@ -31,6 +32,8 @@ from sybil import Sybil
 from sybil.parsers.myst import PythonCodeBlockParser, SkipParser
 
 sys.path.insert(0, str(Path(__file__).resolve().parent / "haven_sim" / "test"))
+sys.path.insert(0, str(Path(__file__).resolve().parent / "haven_scenarios" / "test"))
+from doc_commands import page_folder, parse_files, parse_shell
 
 TIERS = ("integration", "ros", "browser")
 ROS_AVAILABLE = importlib.util.find_spec("rclpy") is not None
@@ -71,14 +74,16 @@ def pytest_ignore_collect(collection_path: Path) -> bool | None:
 
 
 @pytest.fixture
-def in_tmp(tmp_path, monkeypatch):  # type: ignore[no-untyped-def]
-    """A docs page's examples run in an empty folder of their own (a picture they draw lands there)."""
-    monkeypatch.chdir(tmp_path)
-    return tmp_path
+def in_tmp(request, tmp_path_factory, monkeypatch):  # type: ignore[no-untyped-def]
+    """A docs page's examples run in order in a folder of the page's own, empty at first (a picture
+    they draw, a file a command writes, lands there for the next)."""
+    folder = page_folder(request.node.example, tmp_path_factory)
+    monkeypatch.chdir(folder)
+    return folder
 
 
 pytest_collect_file = Sybil(
-    parsers=[PythonCodeBlockParser(), SkipParser()],
+    parsers=[PythonCodeBlockParser(), SkipParser(), parse_shell, parse_files],
     path=str(Path(__file__).resolve().parent / "docs"),
     patterns=["*.md"],
     excludes=["_build/*", "_generated/*"],
