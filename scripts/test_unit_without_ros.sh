@@ -16,7 +16,7 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   install=("$VENV/bin/python" -m pip install --quiet)  # (uv, where setup.sh installed it: seconds)
   [ -x .venv/bin/uv ] && install=(.venv/bin/uv pip install --quiet --python "$VENV/bin/python")
   "${install[@]}" -c "$VENV/constraints.txt" \
-    setuptools numpy pymunk PyYAML pydantic pillow matplotlib rosbags mcap foxglove-sdk cryptography filelock tqdm statsmodels pytest pytest-timeout pytest-xdist sybil
+    setuptools numpy pymunk PyYAML pydantic pillow matplotlib rosbags mcap foxglove-sdk cryptography filelock aiohttp tqdm statsmodels pytest pytest-timeout pytest-xdist sybil
   "${install[@]}" --no-deps --no-build-isolation --config-settings editable_mode=compat \
     -e haven_sim -e haven_viz -e haven_scenarios
   echo "$want" > "$stamp"
