@@ -24,6 +24,7 @@ from rosgraph_msgs.msg import Clock
 from haven_scenarios.run.trial import run_trial
 from haven_scenarios.study.conditions import parse_condition
 from haven_scenarios.study.scenario import load_scenario
+from haven_sim.nodes.sim_node import HELD_SAID_BELOW
 from haven_sim.robots.robot_kind import resolve_robot
 
 pytestmark = pytest.mark.ros
@@ -212,15 +213,13 @@ def test_free_running_recordings_are_complete_and_score_independently(ros, tmp_p
     # When the trial ran by the wall clock, to align it with other recordings of the study.
     start, end = (datetime.fromisoformat(session["wall_clock"][k]).timestamp() for k in ("trial_start", "trial_end"))
     assert before < start < end < time.time()
-    if rtf == "1":  # real time, unless the machine was too busy for it: then the clock was held, and says so
+    if rtf == "1":  # real time, never faster; slower only as far as the simulator says (a busy machine)
         held = [
             e for e in map(json.loads, (folder / "events.jsonl").read_text().splitlines()) if e["type"] == "clock_held"
         ]
         assert end - start > session["duration_s"] - 0.5
-        assert held or end - start == pytest.approx(session["duration_s"], abs=0.5), (
-            end - start,
-            session["duration_s"],
-        )
+        wall, sim = end - start, session["duration_s"]
+        assert held or wall <= sim / HELD_SAID_BELOW + 0.5, (wall, sim)
 
 
 def test_ctrl_c_mid_trial_leaves_a_readable_bag(ros, tmp_path):

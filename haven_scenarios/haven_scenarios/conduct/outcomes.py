@@ -63,7 +63,7 @@ class Ended:
     def died(self) -> Exited | None:
         """The node that ended the trial by exiting when it should not have."""
         e = self.exited
-        return e if e is not None and (e.name != nodes.SCENARIO.key or e.code != 0) else None
+        return e if e is not None and (e.name not in nodes.ENDS_TRIAL or e.code != 0) else None
 
 
 def outcome(ended: Ended | None, end_reason: str | None, repaired: Repaired | None, limit_s: float) -> str:

@@ -165,6 +165,7 @@ class TrialRequest:
     # simulated people as a study participant: (person seed, position in the session)
     person: tuple[int, int] | None = None
     robot: str | None = None  # a robot's name or a robot file (None: the scenario's robot: model, else turtlebot2)
+    processes: str = "one"  # the suite's nodes in one process, or "separate" (one each: to debug a node)
 
 
 def plan_trial(request: TrialRequest) -> SessionPlan:
@@ -220,8 +221,21 @@ def plan_trial(request: TrialRequest) -> SessionPlan:
     except (ScenarioError, ParamsError, ValueError) as e:
         raise TrialError(str(e)) from None
     extra = {**r.extra, **({"questionnaires": after_trial.names(questionnaires)} if questionnaires else {})}
+    if r.processes not in nodes.PROCESS_LAYOUTS:
+        raise TrialError(f"processes: must be one of {', '.join(nodes.PROCESS_LAYOUTS)}, got {str(r.processes)[:40]!r}")
     return SessionPlan(
-        scenario, toggles, seed, participant, base, r.rtf, r.free_running, extra, web, tuple(r.without), tuple(r.allow)
+        scenario,
+        toggles,
+        seed,
+        participant,
+        base,
+        r.rtf,
+        r.free_running,
+        extra,
+        web,
+        tuple(r.without),
+        tuple(r.allow),
+        r.processes,
     )
 
 
@@ -346,14 +360,15 @@ def _supervise(
                 sup.start(spec)
         finally:
             os.close(end[1])  # (the recorder's alone now: a recorder that ends closes the pipe)
-        exited = sup.wait(timeout_s=timeout_s, until_exit_of=nodes.SCENARIO.key)
+        ender = next(s.name for s in specs if s.name in nodes.ENDS_TRIAL)  # (the suite process, or the scenario's own)
+        exited = sup.wait(timeout_s=timeout_s, until_exit_of=ender)
         timed_out = exited is None and timeout_s is not None and time.monotonic() - started >= timeout_s
         questionnaires = None
-        if asked is not None and exited is not None and exited.name == nodes.SCENARIO.key and exited.code == 0:
+        if asked is not None and exited is not None and exited.name == ender and exited.code == 0:
             _wait_for_recorded_end(folder, end[0], 10.0)  # (the trial's nodes still run: its end is recorded)
             questionnaires = after_trial.wait_for_answers(sup, folder, *asked)
         # the others run on (a scenario stopped mid-trial still publishes trial_end, interrupted)
-        sup.stop_some((nodes.SCENARIO.key,))
+        sup.stop_some((ender,))
         # (a dead recorder says no end)
         if questionnaires is None and (exited is None or exited.name != nodes.RECORDER.key):
             _wait_for_recorded_end(

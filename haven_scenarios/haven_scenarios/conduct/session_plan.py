@@ -43,6 +43,7 @@ class SessionPlan:
     web: WebOptions | None = None  # the pages, with `haven run --web`
     without: tuple[str, ...] = ()  # our nodes left out: the user runs their own in their place
     allow: tuple[str, ...] = ()  # topics outside nodes may publish on during the trial (record/outsiders.py)
+    processes: str = "one"  # the suite's nodes in one process, or "separate" (nodes.PROCESS_LAYOUTS)
 
     @property
     def lockstep(self) -> bool:
@@ -91,11 +92,14 @@ class SessionPlan:
 
 
 def specs_of(folder: Path, plan: SessionPlan) -> list[ProcessSpec]:
-    """The nodes, run in the session folder, each reading its params.yaml (node sections there win
-    over `-p`, so the file holds everything); on the command line only which clock they read."""
+    """The recorder and the suite's nodes (in one process unless `plan.processes` says separate), run
+    in the session folder, each reading its params.yaml (node sections there win over `-p`, so the
+    file holds everything); on the command line only which clock they read."""
     # On the lockstep clock the ticks carry the time: the participants need no /clock.
     stepped: dict[str, object] = {"use_sim_time": False} if plan.lockstep else {}
-    suite = suite_specs({n.key: stepped for n in nodes.COMPONENTS if n is not nodes.SIM}, PARAMS_FILE, plan.without)
+    own = {n.key: stepped for n in nodes.COMPONENTS if n is not nodes.SIM} | {nodes.SCENARIO.key: stepped}
+    members = (*nodes.COMPONENTS, nodes.SCENARIO)
+    suite = suite_specs(own, PARAMS_FILE, plan.without, plan.processes, members)
     declared = plan.declared
     recorder_params = {
         "use_sim_time": True,
@@ -104,9 +108,7 @@ def specs_of(folder: Path, plan: SessionPlan) -> list[ProcessSpec]:
         "open_topics": list(declared.open),
         "suite_lockstep": plan.lockstep,
     }
-    recorder = node_argv(nodes.RECORDER.module, recorder_params)
-    scenario_node = node_argv(nodes.SCENARIO.module, {"use_sim_time": True, **stepped}, params_file=PARAMS_FILE)
-    specs = [ProcessSpec(nodes.RECORDER.key, recorder), *suite, ProcessSpec(nodes.SCENARIO.key, scenario_node)]
+    specs = [ProcessSpec(nodes.RECORDER.key, node_argv(nodes.RECORDER.module, recorder_params)), *suite]
     return [replace(spec, cwd=str(folder.resolve())) for spec in specs]
 
 

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import importlib.util
+import json
 import socket
+import sys
 from collections.abc import Callable, Mapping, Sequence
 
 from haven_scenarios.run.domains import Claim, DomainRange, claim_domain
@@ -44,19 +46,28 @@ def claim_ros_domain(
 
 
 def suite_specs(
-    params: Mapping[str, Mapping[str, object]], pfile: str | None, without: Sequence[str] = ()
+    params: Mapping[str, Mapping[str, object]],
+    pfile: str | None,
+    without: Sequence[str] = (),
+    processes: str = "one",
+    members: Sequence[nodes.SuiteNode] = nodes.COMPONENTS,
 ) -> list[ProcessSpec]:
-    """Our nodes (less `without`), each with the parameter file and its own -p overrides; every node
-    but the simulator runs on sim time."""
-    specs = []
-    for node in nodes.COMPONENTS:
-        if node.key in without:
-            continue
-        own = dict(params.get(node.key, {}))
-        if node is not nodes.SIM:
-            own = {"use_sim_time": True, **own}
-        specs.append(ProcessSpec(node.key, node_argv(node.module, own, params_file=pfile)))
-    return specs
+    """Our nodes (`members` less `without`), each with the parameter file and its own -p overrides;
+    every node but the simulator runs on sim time unless its overrides say otherwise. `processes`:
+    "one" holds them in one process (nodes.SUITE_PROCESS), "separate" runs a process each."""
+    own = {
+        n.key: ({} if n is nodes.SIM else {"use_sim_time": True}) | dict(params.get(n.key, {}))
+        for n in members
+        if n.key not in without
+    }
+    if processes not in nodes.PROCESS_LAYOUTS:
+        raise ValueError(f"--processes: {processes!r} is not one of {', '.join(nodes.PROCESS_LAYOUTS)}")
+    if processes == "separate":
+        return [ProcessSpec(k, node_argv(nodes.BY_KEY[k].module, p, params_file=pfile)) for k, p in own.items()]
+    argv = [sys.executable, "-m", nodes.SUITE_PROCESS.module]
+    for key, p in own.items():
+        argv += ["--node", f"{key}={json.dumps(p)}"]
+    return [ProcessSpec(nodes.SUITE_PROCESS.key, argv + ["--ros-args"] + (["--params-file", pfile] if pfile else []))]
 
 
 def nav2_specs(params: Mapping[str, Mapping[str, object]], pfile: str | None) -> list[ProcessSpec]:

@@ -10,6 +10,7 @@ with code 0, which is how `haven run` knows the trial is over.
 from __future__ import annotations
 
 import sys
+from collections.abc import Sequence
 
 from rclpy.duration import Duration
 
@@ -26,8 +27,8 @@ END_ACK_TIMEOUT_S = 10.0
 
 
 class ScenarioNode(ComponentNode):
-    def __init__(self) -> None:
-        super().__init__(nodes.SCENARIO.name)
+    def __init__(self, cli_args: Sequence[str] | None = None) -> None:
+        super().__init__(nodes.SCENARIO.name, cli_args)
         config = self.declare_config(ScenarioNodeConfig)
         c = config.director
         # The robot of the `robot` parameter (params.yaml's "/**": what the whole suite runs).

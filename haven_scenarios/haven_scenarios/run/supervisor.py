@@ -46,13 +46,19 @@ def node_argv(
     argv = [sys.executable, "-m", module, "--ros-args"]
     if params_file is not None:
         argv += ["--params-file", params_file]
-    for k, v in (params or {}).items():
+    return argv + param_args(params or {}) + list(ros_args)
+
+
+def param_args(params: Mapping[str, object]) -> list[str]:
+    """`-p name:=value` for each parameter, as rcl reads them from a command line."""
+    out = []
+    for k, v in params.items():
         if isinstance(v, bool):
             v = "true" if v else "false"
         elif isinstance(v, (list, tuple)):
             v = "[" + ",".join(str(x) for x in v) + "]"
-        argv += ["-p", f"{k}:={v}"]
-    return argv + list(ros_args)
+        out += ["-p", f"{k}:={v}"]
+    return out
 
 
 # Settings that would take discovery beyond this machine (an inherited discovery range is overridden).

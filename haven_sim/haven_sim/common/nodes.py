@@ -14,14 +14,17 @@ class SuiteNode:
     module: str  # `python -m MODULE` runs it
     replaceable: bool = False  # may be left out for the user's own (`--without`)
     observer: bool = False  # reads what the suite publishes, acts on none of it
+    node_class: str = ""  # its class in `module`, for the nodes one suite process holds together (SUITE_PROCESS)
 
 
-SIM = SuiteNode("sim", "sim_node", "haven_sim.nodes.sim_node")
-MUX = SuiteNode("mux", "velocity_mux", "haven_sim.nodes.mux_node", replaceable=True)
-PLANNER = SuiteNode("planner", "planner", "haven_sim.nodes.planner_node", replaceable=True)
-CONTROLLER = SuiteNode("controller", "controller", "haven_sim.nodes.controller_node", replaceable=True)
-VIZ = SuiteNode("viz", "viz", "haven_viz.nodes.viz_node", replaceable=True, observer=True)
-SCENARIO = SuiteNode("scenario", "scenario", "haven_scenarios.nodes.scenario_node")
+SIM = SuiteNode("sim", "sim_node", "haven_sim.nodes.sim_node", node_class="SimNode")
+MUX = SuiteNode("mux", "velocity_mux", "haven_sim.nodes.mux_node", replaceable=True, node_class="MuxNode")
+PLANNER = SuiteNode("planner", "planner", "haven_sim.nodes.planner_node", replaceable=True, node_class="PlannerNode")
+CONTROLLER = SuiteNode(
+    "controller", "controller", "haven_sim.nodes.controller_node", replaceable=True, node_class="ControllerNode"
+)
+VIZ = SuiteNode("viz", "viz", "haven_viz.nodes.viz_node", replaceable=True, observer=True, node_class="VizNode")
+SCENARIO = SuiteNode("scenario", "scenario", "haven_scenarios.nodes.scenario_node", node_class="ScenarioNode")
 RECORDER = SuiteNode("recorder", "recorder", "haven_scenarios.nodes.recorder", observer=True)
 WEB = SuiteNode("web", "web", "haven_scenarios.nodes.web_node", observer=True)
 BRIDGE = SuiteNode("bridge", "haven_bridge", "haven_scenarios.nodes.bridge", observer=True)
@@ -35,5 +38,9 @@ LOCKSTEP_PARTICIPANTS = (MUX, PLANNER, CONTROLLER, VIZ, SCENARIO)  # on the lock
 REPLACEABLE = tuple(n.key for n in COMPONENTS if n.replaceable)  # `haven run --without`
 SIM_REPLACEABLE = (*REPLACEABLE, NAV2.key)  # `haven sim --without`
 OBSERVERS = frozenset(n.name for n in (VIZ, RECORDER, WEB, BRIDGE))
+# One process that holds the suite's nodes (those with a node_class), each with its own arguments.
+SUITE_PROCESS = SuiteNode("suite", "", "haven_scenarios.nodes.suite_process")
+PROCESS_LAYOUTS = ("one", "separate")  # `--processes`: the suite's nodes in one process (default) or one each
+ENDS_TRIAL = frozenset({SCENARIO.key, SUITE_PROCESS.key})  # the process whose clean exit is the trial's end
 BY_KEY = {n.key: n for n in (*TRIAL, WEB, BRIDGE, NAV2)}
 UNNAMED = "_NODE_NAME_UNKNOWN_"  # rmw's name for a node whose name discovery has not brought yet

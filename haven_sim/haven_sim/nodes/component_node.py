@@ -76,8 +76,10 @@ class ComponentNode(Node):
     # Parameters that may change while the node runs (the rest are read at start-up only).
     runtime_parameters: frozenset[str] = frozenset()
 
-    def __init__(self, name: str) -> None:
-        super().__init__(name)
+    def __init__(self, name: str, cli_args: Sequence[str] | None = None) -> None:
+        """`cli_args`: this node's own ROS arguments (`--ros-args -p use_sim_time:=true`), beside
+        the process's (one process may hold several nodes: nodes/suite_process)."""
+        super().__init__(name, cli_args=list(cli_args) if cli_args is not None else None)
         self._pubs: dict[str, Publisher] = {}
         self._subs: dict[str, Subscription] = {}
         self._specs: dict[str, TopicSpec] = {}

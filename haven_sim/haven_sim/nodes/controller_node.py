@@ -7,6 +7,7 @@ path as a `goal_reached` event. The behaviour is `haven_sim.nav.controller.Contr
 from __future__ import annotations
 
 import sys
+from collections.abc import Sequence
 
 from haven_sim.common import nodes
 from haven_sim.nav.controller import ControllerComponent, ControllerConfig
@@ -16,8 +17,8 @@ from haven_sim.nodes.runner import run_node
 
 
 class ControllerNode(ComponentNode):
-    def __init__(self) -> None:
-        super().__init__(nodes.CONTROLLER.name)
+    def __init__(self, cli_args: Sequence[str] | None = None) -> None:
+        super().__init__(nodes.CONTROLLER.name, cli_args)
         self.wire(ControllerComponent(self.declare_config(ControllerConfig)), wire.specs())
 
 

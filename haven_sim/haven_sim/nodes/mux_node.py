@@ -6,6 +6,7 @@ The behaviour is `haven_sim.nav.mux.MuxComponent`; this node only wires it to to
 from __future__ import annotations
 
 import sys
+from collections.abc import Sequence
 
 from haven_sim.common import nodes
 from haven_sim.nav.mux import MuxComponent, MuxConfig
@@ -15,8 +16,8 @@ from haven_sim.nodes.runner import run_node
 
 
 class MuxNode(ComponentNode):
-    def __init__(self) -> None:
-        super().__init__(nodes.MUX.name)
+    def __init__(self, cli_args: Sequence[str] | None = None) -> None:
+        super().__init__(nodes.MUX.name, cli_args)
         self.wire(MuxComponent(self.declare_config(MuxConfig)), wire.specs())
 
 

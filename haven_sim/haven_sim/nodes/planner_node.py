@@ -8,6 +8,7 @@ The behaviour is `haven_sim.nav.planning.PlannerComponent`.
 from __future__ import annotations
 
 import sys
+from collections.abc import Sequence
 
 from haven_sim.common import nodes
 from haven_sim.nav.planning import PlannerComponent, PlannerConfig, world_lanes
@@ -19,8 +20,8 @@ from haven_sim.sim.world_file import load_world
 
 
 class PlannerNode(ComponentNode):
-    def __init__(self) -> None:
-        super().__init__(nodes.PLANNER.name)
+    def __init__(self, cli_args: Sequence[str] | None = None) -> None:
+        super().__init__(nodes.PLANNER.name, cli_args)
         config = self.declare_config(PlannerConfig)
         lanes = world_lanes(load_world(resolve_world_path(config.world))) if config.world else ()
         component = PlannerComponent(config, lanes)

@@ -10,6 +10,7 @@ false`, Foxglove's Parameters panel, or any SetParameters client); every change 
 from __future__ import annotations
 
 import sys
+from collections.abc import Sequence
 
 from rcl_interfaces.msg import SetParametersResult
 from rclpy.parameter import Parameter
@@ -28,8 +29,8 @@ from haven_viz.viz import VizComponent, VizConfig
 class VizNode(ComponentNode):
     runtime_parameters = frozenset(CUES)
 
-    def __init__(self) -> None:
-        super().__init__(nodes.VIZ.name)
+    def __init__(self, cli_args: Sequence[str] | None = None) -> None:
+        super().__init__(nodes.VIZ.name, cli_args)
         config = self.declare_config(VizConfig)
         world = load_world(resolve_world_path(config.world)) if config.world else None
         self.viz = VizComponent(config, world)

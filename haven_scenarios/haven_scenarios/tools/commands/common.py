@@ -173,6 +173,12 @@ def add_suite_options(p: argparse.ArgumentParser, sim: bool = False) -> None:
         + (" or the Nav2 servers (nav2)" if sim else "")
         + " (to run your own in their place)",
     )
+    p.add_argument(
+        "--processes",
+        choices=nodes.PROCESS_LAYOUTS,
+        default="one",
+        help="the suite's nodes in one process (default), or each in its own (separate: to debug one node)",
+    )
 
 
 ROBOT_HELP = (

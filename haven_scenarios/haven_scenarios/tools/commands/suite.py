@@ -104,7 +104,7 @@ def _run_claimed(args: argparse.Namespace, world: str) -> int:
     }
     if args.robot is not None:  # (every node that has the `robot` parameter; the others ignore it)
         own = {n.key: {**own.get(n.key, {}), "robot": args.robot} for n in nodes.COMPONENTS}
-    specs = suite_specs(own, params_file(args), args.without)
+    specs = suite_specs(own, params_file(args), args.without, args.processes)
     if nodes.NAV2.key not in args.without:
         specs += nav2_specs(own, params_file(args))
     until, timeout = None, getattr(args, "duration", None)

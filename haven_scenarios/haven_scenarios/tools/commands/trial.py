@@ -182,6 +182,7 @@ def request_of(args: argparse.Namespace) -> TrialRequest:
         web,
         tuple(args.questionnaire or ()),
         robot=args.robot,
+        processes=args.processes,
     )
 
 
