@@ -34,11 +34,13 @@ def start_haven(ros, *args):
     return proc
 
 
-def test_sim_runs_and_ctrl_c_stops_every_process(ros):
-    """With the packaged parameter file, which every node must accept."""
+@pytest.mark.parametrize(("processes", "suite"), [("one", 1), ("separate", 5)])
+def test_sim_runs_and_ctrl_c_stops_every_process(ros, processes, suite):
+    """With the packaged parameter file, which every node must accept; the suite's nodes in one
+    process (the default) or in one each (sim, mux, planner, controller, viz)."""
     odom = ros.collect(Odometry, "/odom", qos.RELIABLE)
     params = resources.files("haven_sim") / "config" / "haven.yaml"
-    proc = start_haven(ros, "sim", "--rtf", "2", "--params-file", str(params))
+    proc = start_haven(ros, "sim", "--rtf", "2", "--params-file", str(params), "--processes", processes)
     ros.wait_for_messages(odom, 10)
     # Every node up: viz (markers), planner (plan) and controller (cmd_vel_nav), each discovered in its own time.
     assert ros.spin_until(
@@ -47,7 +49,7 @@ def test_sim_runs_and_ctrl_c_stops_every_process(ros):
     assert ros.node.count_publishers("/cmd_vel_nav") == 1  # one controller
     kids = children_of(proc.pid)
     nav2 = importlib.util.find_spec("nav2_msgs") is not None  # (Nav2's servers where nav2_msgs is built)
-    assert len(kids) == 5 + nav2  # sim, mux, planner, controller, viz, nav2
+    assert len(kids) == suite + nav2  # (and Nav2's servers)
     os.killpg(proc.pid, signal.SIGINT)  # what a terminal's Ctrl-C does
     assert proc.wait(timeout=20) == 0
     assert not [k for k in kids if alive(k)]
@@ -59,11 +61,11 @@ def test_a_node_that_dies_takes_the_suite_down_with_a_message(ros):
     proc = start_haven(ros, "sim")
     ros.wait_for_messages(odom, 1)
     kids = children_of(proc.pid)
-    sim_pid = max(kids, key=lambda k: "sim_node" in Path(f"/proc/{k}/cmdline").read_text())
-    os.kill(sim_pid, signal.SIGKILL)
+    suite_pid = max(kids, key=lambda k: "suite_process" in Path(f"/proc/{k}/cmdline").read_text())
+    os.kill(suite_pid, signal.SIGKILL)
     code = proc.wait(timeout=20)
     assert code != 0
-    assert "sim exited with code -9; stopped the others" in proc.stderr.read()
+    assert "suite exited with code -9; stopped the others" in proc.stderr.read()
     deadline = time.monotonic() + 5
     while time.monotonic() < deadline and any(alive(k) for k in kids):
         time.sleep(0.05)
