@@ -17,9 +17,9 @@ echo "== mypy (core and nodes, strict)"
 .venv/bin/mypy haven_sim/haven_sim haven_viz/haven_viz haven_scenarios/haven_scenarios
 echo "== docs (Sphinx, warnings as errors)"
 .venv/bin/sphinx-build -W --keep-going -q -b html docs docs/_build/html
-# Each test runs once: the unit tier only in the venv without ROS 2. The unit and integration tiers
-# run on every core (pytest-xdist; each test has its own tmp_path, ports and ROS domain); the ros and
-# browser tiers one test at a time, since each starts a whole suite of processes.
+# Each test runs once: the unit tier only in the venv without ROS 2. Every tier runs on every core
+# (pytest-xdist; each test has its own tmp_path, ports and ROS domain, and the ROS tests of each
+# worker keep to a slice of the domains of their own: haven_sim/test/ros_harness.py).
 # Every tier runs even when one before it failed; the suite fails if any did. (With arguments, say a
 # test file, a tier with none of those tests in it is no failure: pytest's exit code 5.)
 failed=()
@@ -36,7 +36,7 @@ tier ./scripts/test_unit_without_ros.sh --timeout 60 -n auto --durations=10 "$@"
 echo "== integration tier (parallel)"
 tier .venv/bin/pytest -q --timeout 300 -n auto --dist loadfile --durations=25 -m "integration and not ros and not browser" "$@" || failed+=(integration)
 echo "== ros and browser tiers"
-tier .venv/bin/pytest -q --timeout 300 --durations=25 -m "ros or browser" "$@" || failed+=("ros and browser")
+tier .venv/bin/pytest -q --timeout 300 -n auto --dist worksteal --durations=25 -m "ros or browser" "$@" || failed+=("ros and browser")
 if [ ${#failed[@]} -gt 0 ]; then
   echo "test: failed in the tier(s): ${failed[*]}" >&2
   exit 1

@@ -36,11 +36,22 @@ class Collected(list[Any]):
     subscription: Subscription
 
 
+def worker_domains() -> range:
+    """This test worker's domains: under pytest-xdist each worker has a slice of 1..100 of its own,
+    and the suites its tests start are held to that slice (HAVEN_DOMAINS, `RosHarness.env`), so a
+    suite that moves to a free domain (run/domains.py) never lands on another worker's test."""
+    count = int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1"))
+    worker = int(os.environ.get("PYTEST_XDIST_WORKER", "gw0").removeprefix("gw") or 0)
+    size = 100 // max(count, 1)
+    return range(1 + worker * size, 1 + (worker + 1) * size)
+
+
 def next_domain_id() -> int:
-    """A domain id in 1..100 unlikely to collide with parallel test workers, and not one a HAVEN
-    suite holds now (its lock, run/domains.py: a `haven run` the user started on this machine)."""
-    for _ in range(100):
-        candidate = 1 + (os.getpid() * 13 + next(_counter)) % 100
+    """A domain id of this worker's (`worker_domains`), and not one a HAVEN suite holds now (its
+    lock, run/domains.py: a `haven run` the user started on this machine)."""
+    ids = worker_domains()
+    for _ in range(len(ids)):
+        candidate = ids[(os.getpid() * 13 + next(_counter)) % len(ids)]
         if not _held(candidate):
             return candidate
     return candidate
@@ -73,6 +84,9 @@ class RosHarness:
             FASTRTPS_DEFAULT_PROFILES_FILE=str(resources.files("haven_sim") / "config" / "fastdds.xml"),
             PYTHONUNBUFFERED="1",
         )
+        ids = worker_domains()
+        if int(os.environ.get("PYTEST_XDIST_WORKER_COUNT", "1")) > 1 and self.domain_id in ids:
+            self.env.setdefault("HAVEN_DOMAINS", f"{ids[0]}-{ids[-1]}")  # (run/domains.py's DOMAINS_ENV)
         self._saved = {
             k: os.environ.get(k)
             for k in ("ROS_DOMAIN_ID", "ROS_AUTOMATIC_DISCOVERY_RANGE", "FASTRTPS_DEFAULT_PROFILES_FILE")
