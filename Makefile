@@ -1,6 +1,6 @@
 # HAVEN for ROS 2. `make demo` sets everything up and runs the main job (one recorded hallway trial);
 # `make test` runs every test; `make docs` builds the documentation site.
-.PHONY: setup demo docs test test-core test-unit test-integration test-ros test-browser bench lock clean
+.PHONY: setup demo docs test test-core test-unit test-integration test-ros test-browser coverage bench lock clean
 
 setup:
 	@./scripts/setup.sh
@@ -29,6 +29,11 @@ test-ros: setup
 
 test-browser: setup
 	.venv/bin/pytest -q -m browser
+
+# Line coverage of the unit and integration tiers, every process they start included (.coveragerc);
+# HAVEN_COVERAGE_ALL=1 adds the ros and browser tiers.
+coverage: setup
+	./scripts/coverage.sh
 
 bench: setup
 	.venv/bin/python bench/sim_speed.py

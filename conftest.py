@@ -162,7 +162,7 @@ class _PatientBrowser:
         self.opened: list = []  # type: ignore[type-arg]
 
     def new_page(self, **options):  # type: ignore[no-untyped-def]
-        page = self._browser.new_page(**options)
+        page = _explained(self._browser.new_page(**options))
         page.set_default_timeout(ACTION_TIMEOUT_MS)
         self.opened.append(page)
         return page
@@ -170,8 +170,36 @@ class _PatientBrowser:
     def new_context(self, **options):  # type: ignore[no-untyped-def]
         context = self._browser.new_context(**options)
         context.set_default_timeout(ACTION_TIMEOUT_MS)
+        opens = context.new_page
+        context.new_page = lambda: _explained(opens())
         self.opened.append(context)
         return context
+
+
+# What a page that never got where a test waited for shows of itself: its havenState, short.
+PAGE_STATE = """() => JSON.stringify(window.havenState ?? null, (key, value) =>
+    Array.isArray(value) && value.length > 8 ? `[${value.length} items]` : value).slice(0, 3000)"""
+
+
+def _explained(page):  # type: ignore[no-untyped-def]
+    """A page whose `wait_for_function` that times out says what the page held instead (a test that
+    failed on a busy machine can then be read from its log)."""
+    wait = page.wait_for_function
+
+    def explained(expression, *args, **kwargs):  # type: ignore[no-untyped-def]
+        try:
+            return wait(expression, *args, **kwargs)
+        except Exception as e:
+            if type(e).__name__ != "TimeoutError":
+                raise
+            try:
+                state = page.evaluate(PAGE_STATE)
+            except Exception as unread:
+                state = f"(unreadable: {type(unread).__name__})"
+            raise AssertionError(f"the page never held {expression!r}; its havenState: {state}") from e
+
+    page.wait_for_function = explained
+    return page
 
     def __getattr__(self, name):  # type: ignore[no-untyped-def]
         return getattr(self._browser, name)
