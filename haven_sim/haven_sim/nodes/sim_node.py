@@ -40,6 +40,7 @@ WRITERS_CHECK_S = 2.0  # wall seconds between looks at who publishes the robot's
 
 HELD_SAID_BELOW = 0.9  # a free-running clock held below this share of the asked factor (over REPORT_S) is said
 
+
 class SimNode(ComponentNode):
     def __init__(self, cli_args: Sequence[str] | None = None) -> None:
         super().__init__(nodes.SIM.name, cli_args)
