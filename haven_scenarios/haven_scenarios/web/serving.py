@@ -191,10 +191,6 @@ class PageServer:
             self.thread.join()
         self.sock.close()
 
-    def call(self, coroutine: Awaitable[object]) -> None:
-        """Run a coroutine on the server's loop, from any thread."""
-        asyncio.run_coroutine_threadsafe(coroutine, self.loop)  # type: ignore[arg-type]
-
     # -- the loop's thread -------------------------------------------------------------------
     def _serve(self) -> None:
         asyncio.set_event_loop(self.loop)
@@ -235,10 +231,7 @@ class PageServer:
             if self.tls is not None:
                 first = await asyncio.wait_for(_peek(loop, conn), self.timeout_s)
                 if first not in (TLS_HANDSHAKE, b""):
-                    head = b"HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n"
-                    await loop.sock_sendall(
-                        conn, head + b"Content-Length: %d\r\n\r\n%s" % (len(PLAIN_TO_TLS), PLAIN_TO_TLS)
-                    )
+                    await loop.sock_sendall(conn, PLAIN_ANSWER)
                     conn.close()
                     return
             await loop.connect_accepted_socket(
@@ -310,3 +303,9 @@ def _quiet_aiohttp() -> None:
 
 
 _quiet_aiohttp()
+# (written by hand: no HTTP parser has seen the request; the common headers as every answer has them)
+PLAIN_ANSWER = (
+    b"HTTP/1.1 400 Bad Request\r\nContent-Type: text/plain\r\nConnection: close\r\n"
+    + "".join(f"{k}: {v}\r\n" for k, v in common_headers("", PLAIN_TO_TLS).items()).encode()
+    + b"Content-Length: %d\r\n\r\n%s" % (len(PLAIN_TO_TLS), PLAIN_TO_TLS)
+)
