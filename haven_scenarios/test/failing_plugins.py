@@ -3,7 +3,9 @@ into a folder put on PYTHONPATH: nothing is built or pip-installed), for the tes
 plugin call is contained (haven_sim/common/contain.py).
 
 Participant models `raiser`, `hanger` and `stuck` walk as HAVEN's walker for FAIL_AFTER_S of their
-trial, then raise, hang for good, or hang where no exception can reach them (as C code would); the
+trial, then raise, hang for good, or hang where no exception can reach them (as C code would);
+`dawdler` walks as the walker but takes DAWDLE_S of wall time over each step, so a batch trial lasts
+seconds on any machine (a test can stop one while it runs); the
 metric `flaky` raises or hangs as LAB_METRIC says (`raise`, `hang`; anything else: a column of its
 own), so one installation serves every case."""
 
@@ -13,6 +15,7 @@ import os
 from pathlib import Path
 
 FAIL_AFTER_S = 1.0
+DAWDLE_S = 0.01
 MODULE = """
 import os
 import signal
@@ -21,6 +24,7 @@ import time
 from haven_scenarios.study.participants import Walker
 
 FAIL_AFTER_S = {fail_after}
+DAWDLE_S = {dawdle}
 
 
 class _Failing(Walker):
@@ -36,6 +40,12 @@ class _Failing(Walker):
 class Raiser(_Failing):
     def fail(self):
         raise RuntimeError("the lab's model broke\\nsecond line")
+
+
+class Dawdler(Walker):
+    def command(self, *args, **kwargs):
+        time.sleep(DAWDLE_S)
+        return super().command(*args, **kwargs)
 
 
 class Hanger(_Failing):
@@ -68,6 +78,7 @@ ENTRY_POINTS = """\
 raiser = lab_failing:Raiser
 hanger = lab_failing:Hanger
 stuck = lab_failing:Stuck
+dawdler = lab_failing:Dawdler
 
 [haven.metrics]
 flaky = lab_failing:flaky
@@ -97,7 +108,7 @@ PARAMS = """\
 def install(folder: Path) -> dict[str, str]:
     """The failing plugins in `folder` (created); the environment that sees them."""
     folder.mkdir(parents=True, exist_ok=True)
-    (folder / "lab_failing.py").write_text(MODULE.format(fail_after=FAIL_AFTER_S))
+    (folder / "lab_failing.py").write_text(MODULE.format(fail_after=FAIL_AFTER_S, dawdle=DAWDLE_S))
     info = folder / "lab_failing-0.1.dist-info"
     info.mkdir(exist_ok=True)
     (info / "METADATA").write_text("Metadata-Version: 2.1\nName: lab-failing\nVersion: 0.1\n")

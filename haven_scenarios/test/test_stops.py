@@ -17,8 +17,7 @@ from pathlib import Path
 
 import pytest
 import yaml
-
-from haven_scenarios import api
+from failing_plugins import SCENARIO, install
 
 pytestmark = pytest.mark.integration
 
@@ -39,12 +38,18 @@ def wait_until(condition, timeout_s, what):
         time.sleep(0.05)
 
 
-def start(argv, tmp_path, ignore_sigint=False):
+def start(argv, tmp_path, ignore_sigint=False, env=None):
     """`haven ...` in a session of its own; `ignore_sigint`: as a shell starts a background job (`cmd &`)."""
     out = (tmp_path / "out.txt").open("w")
     pre = (lambda: signal.signal(signal.SIGINT, signal.SIG_IGN)) if ignore_sigint else None
     return subprocess.Popen(
-        [*HAVEN, *argv], stdout=out, stderr=subprocess.STDOUT, start_new_session=True, preexec_fn=pre, cwd=tmp_path
+        [*HAVEN, *argv],
+        stdout=out,
+        stderr=subprocess.STDOUT,
+        start_new_session=True,
+        preexec_fn=pre,
+        cwd=tmp_path,
+        env=env,
     )
 
 
@@ -68,9 +73,13 @@ def children(pid):
     "sig, ignored", [(signal.SIGTERM, False), (signal.SIGINT, True)], ids=["SIGTERM", "SIGINT-in-background"]
 )
 def test_a_batch_study_run_ends_within_5_s_and_runs_the_interrupted_trial_again(tmp_path, sig, ignored):
-    (tmp_path / "study.yaml").write_text(yaml.safe_dump(STUDY))
+    """The participant dawdles (failing_plugins.py), so each trial lasts seconds on any machine: the
+    signal lands while the second runs, however fast the machine runs the first."""
+    (tmp_path / "dawdling.yaml").write_text(SCENARIO.format(model="dawdler"))
+    (tmp_path / "study.yaml").write_text(yaml.safe_dump({**STUDY, "scenarios": ["dawdling.yaml"]}))
     argv = ["study", "run", "study.yaml", "--participant", "p01", "--batch", "--dir", "st"]
-    proc = start(argv, tmp_path, ignore_sigint=ignored)
+    env = install(tmp_path / "lab")
+    proc = start(argv, tmp_path, ignore_sigint=ignored, env=env)
     sessions = lambda n: list((tmp_path / "st" / "p01").glob(f"0{n}_*/*/session.json"))  # noqa: E731
     wait_until(lambda: sessions(2) or proc.poll() is not None, 180, "the second trial never started")
     took = stop(proc, sig)
@@ -80,12 +89,15 @@ def test_a_batch_study_run_ends_within_5_s_and_runs_the_interrupted_trial_again(
     (done,), (cut,) = sessions(1), sessions(2)
     assert json.loads(done.read_text())["outcome"] == "completed"
     assert json.loads(cut.read_text())["outcome"] == "interrupted (stopped by a signal)"
-    status = api.study_status(str(tmp_path / "study.yaml"), tmp_path / "st")
-    assert [p.status for p in status] == ["done", "failed"]  # (not done: the same command runs it again)
+    # (not done: the same command runs it again; read where the dawdler is installed)
+    ask = "from haven_scenarios import api; print([p.status for p in api.study_status('study.yaml', 'st')])"
+    status = subprocess.run([sys.executable, "-c", ask], cwd=tmp_path, env=env, capture_output=True, text=True)
+    assert status.stdout.strip() == "['done', 'failed']", status.stderr[-2000:]
 
 
 def test_a_sweep_ends_within_5_s_of_sigterm_its_workers_gone_and_its_finished_rows_kept(tmp_path):
-    proc = start(["batch", "shared_room", "--trials", "8", "--workers", "2", "--out", "sweep.csv"], tmp_path)
+    # (more trials than a fast machine finishes between the first row and the signal)
+    proc = start(["batch", "shared_room", "--trials", "60", "--workers", "2", "--out", "sweep.csv"], tmp_path)
     journal = tmp_path / "sweep.csv.rows.jsonl"
     wait_until(lambda: journal.exists() and journal.read_text().count("\n") >= 1, 240, "no trial finished")
     workers = children(proc.pid)
