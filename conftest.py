@@ -175,6 +175,9 @@ class _PatientBrowser:
         self.opened.append(context)
         return context
 
+    def __getattr__(self, name):  # type: ignore[no-untyped-def]
+        return getattr(self._browser, name)
+
 
 # What a page that never got where a test waited for shows of itself: its havenState, short.
 PAGE_STATE = """() => JSON.stringify(window.havenState ?? null, (key, value) =>
@@ -200,6 +203,3 @@ def _explained(page):  # type: ignore[no-untyped-def]
 
     page.wait_for_function = explained
     return page
-
-    def __getattr__(self, name):  # type: ignore[no-untyped-def]
-        return getattr(self._browser, name)

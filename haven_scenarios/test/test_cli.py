@@ -87,13 +87,16 @@ def test_bad_arguments_get_one_line(tmp_path):
 
 
 def test_demo_drives_a_square_and_reports(ros):
-    proc = start_haven(ros, "demo", "--rtf", "4")
-    out, err = proc.communicate(timeout=120)
+    # At 1x: the driver is a teleop client in a process of its own, which the clock does not wait
+    # for; at 4x a busy machine starved it for long enough that the robot ran on into a wall (twice
+    # in three runs with another suite's test beside it).
+    proc = start_haven(ros, "demo", "--rtf", "1")
+    out, err = proc.communicate(timeout=180)
     assert proc.returncode == 0, err
     summary = json.loads(out.strip().splitlines()[-1])
-    # Only what does not depend on how promptly the driver's commands arrive (the loop runs across
-    # processes, so overshoot at the corners varies with the machine's load):
-    assert summary["legs"] == 4 and summary["contacts"] == 0
+    # Only what does not depend on how promptly the driver's commands arrive (overshoot at the
+    # corners varies with the machine's load):
+    assert summary["legs"] == 4 and summary["contacts"] == 0, summary
     assert summary["distance_m"] >= 4 * 1.49  # every leg is driven to its full length
     assert summary["battery"] == pytest.approx(1.0 - summary["distance_m"] / 100.0, abs=0.005)  # drains per metre
     assert summary["odom_rate_hz_sim"] == pytest.approx(50.0, rel=0.01)  # one /odom per physics step

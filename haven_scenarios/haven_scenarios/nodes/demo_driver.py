@@ -34,6 +34,7 @@ class DemoDriver(Node):
         self.odom_gaps: list[float] = []  # sim time between consecutive /odom stamps
         self.battery = None
         self.contacts = 0
+        self.touched: list[str] = []  # what each contact was with ("wall", "human:h1")
         self.pub = self.create_publisher(Twist, "cmd_vel_teleop", qos.RELIABLE)
         self.create_subscription(Odometry, "odom", self._on_odom, qos.RELIABLE)
         self.create_subscription(BatteryState, "battery_state", self._on_battery, qos.RELIABLE)
@@ -52,8 +53,10 @@ class DemoDriver(Node):
 
     def _on_event(self, msg: String) -> None:
         try:
-            if conv.event_from_msg(msg).kind is EventKind.CONTACT_BEGIN:
+            e = conv.event_from_msg(msg)
+            if e.kind is EventKind.CONTACT_BEGIN:
                 self.contacts += 1
+                self.touched.append(str(e["other"]))
         except ValueError:
             pass
 
@@ -69,6 +72,7 @@ class DemoDriver(Node):
                 "final_pose": [round(v, 3) for v in self.pose],
                 "battery": None if self.battery is None else round(self.battery, 4),
                 "contacts": self.contacts,
+                "contacts_with": self.touched,
                 "odom_rate_hz_sim": round(1.0 / gap, 2) if gap > 0 else None,  # from the stamps: one per physics step
             }
             battery = "n/a" if self.battery is None else f"{100 * self.battery:.1f} %"
