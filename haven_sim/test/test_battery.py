@@ -42,9 +42,9 @@ def test_charges_only_on_base_and_nearly_stopped_until_full():
 @pytest.mark.parametrize(
     "bad, said",
     [
-        (dict(capacity_m=0.0), "capacity_m must be positive, got 0.0"),
-        (dict(initial_level=1.5), r"initial_level must be within 0\.\.1, got 1\.5"),
-        (dict(charge_rate_per_s=-1.0), "charge_rate_per_s must not be negative, got -1.0"),
+        (dict(capacity_m=0.0), "capacity_m: must be positive, got 0.0"),
+        (dict(initial_level=1.5), r"initial_level: must be within 0\.\.1, got 1\.5"),
+        (dict(charge_rate_per_s=-1.0), "charge_rate_per_s: must not be negative, got -1.0"),
     ],
 )
 def test_invalid_params_are_refused(bad, said):

@@ -88,7 +88,7 @@ def test_the_deadlines_are_parameters_with_bounds_one_per_kind():
     # (data: only loaded)
     assert contain.PluginDeadlines().of("robots") == contain.PluginDeadlines().plugin_deadline_load_s
     assert set(contain.kinds()) == {"participants", "missions", "planners", "cues", "metrics", "load"}
-    with pytest.raises(ParamsError, match="plugin_deadline_metrics_s must be positive"):
+    with pytest.raises(ParamsError, match="plugin_deadline_metrics_s: must be positive"):
         build_config(contain.PluginDeadlines, {"plugin_deadline_metrics_s": 0.0}, where="/**: ")
 
 

@@ -1,7 +1,6 @@
-"""One source of parameters: config dataclasses flattened to ROS parameters and built back."""
+"""One source of parameters: pydantic config dataclasses flattened to ROS parameters and built back."""
 
 import math
-from dataclasses import dataclass
 
 import pytest
 
@@ -11,14 +10,17 @@ from haven_sim.common.params import (
     Bounds,
     ParamsError,
     build,
+    config,
     defaults,
     docs,
     flatten,
     group,
+    leaves,
     load_params_file,
     node_values,
     param,
     render_params_file,
+    ros_range,
 )
 from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.planning import PlannerConfig
@@ -26,13 +28,13 @@ from haven_sim.robots.fields import build_config
 from haven_sim.sim.simulator import SimulatorConfig
 
 
-@dataclass(frozen=True)
+@config
 class Inner:
     capacity_m: float = param(10.0, "size")
     on: bool = param(True, "switch")
 
 
-@dataclass(frozen=True)
+@config
 class Outer:
     inner: Inner = group(Inner, prefix="battery_")
     name: str = param("x", "a name")
@@ -57,15 +59,15 @@ def test_flatten_prefixes_groups_and_build_reads_them_back():
     ],
 )
 def test_wrong_types_are_refused_in_one_line(name, value, expected):
-    with pytest.raises(ParamsError, match=f"node: {name}: {expected}") as info:
+    with pytest.raises(ParamsError, match=f"node: {name}: {expected}, got ") as info:
         build(Outer, {name: value}, where="node: ")
     assert "\n" not in str(info.value)
 
 
 def test_validation_of_the_core_configs_names_the_parameter():
-    with pytest.raises(ParamsError, match="rate_hz must be positive"):
+    with pytest.raises(ParamsError, match="rate_hz: must be positive"):
         build_config(ControllerConfig, {"rate_hz": 0.0})
-    with pytest.raises(ParamsError, match="battery_pack_m must not be negative"):
+    with pytest.raises(ParamsError, match="battery_pack_m: must not be negative"):
         build_config(SimulatorConfig, {"battery_pack_m": -1.0})
     with pytest.raises(ParamsError, match="unknown robot 'no_such_bot'"):
         build_config(SimulatorConfig, {"robot": "no_such_bot"})
@@ -99,12 +101,45 @@ def test_rendered_file_has_every_parameter_once_and_reads_back(tmp_path):
     assert build(Outer, node_values(load_params_file(f), "outer")) == Outer()
 
 
+@config
+class Bounded:
+    rate: float = param(1.0, "r", POSITIVE)
+    share: float = param(0.5, "s", FRACTION)
+    angle: float = param(90.0, "a", Bounds(0.0, 360.0, low_open=True))
+    cap: int = param(1, "c", Bounds(high=5))
+    toggle: bool = param(True, "t", runtime=True)
+
+    def __post_init__(self) -> None:
+        if self.share == 0.25:
+            raise ValueError("share must not be a quarter")
+
+
+@pytest.mark.parametrize(
+    "given,said",
+    [
+        ({"rate": 0.0}, "rate: must be positive, got 0.0"),
+        ({"rate": math.nan}, "rate: must be a finite number, got nan"),
+        ({"share": 1.5}, r"share: must be within 0\.\.1, got 1\.5"),
+        ({"angle": 0.0}, r"angle: must be within \(0, 360\], got 0\.0"),
+        ({"cap": 6}, "cap: must be at most 5, got 6"),
+        ({"cap": 1.0}, "cap: must be an integer, got 1.0"),
+        ({"share": 0.25}, "share must not be a quarter"),  # (the config's own check, as it said it)
+    ],
+)
+def test_pydantic_checks_a_config_made_in_code_in_one_line(given, said):
+    with pytest.raises(ParamsError, match=f"^{said}$"):
+        Bounded(**given)
+
+
 def test_bounds_are_declared_with_the_parameter_and_say_what_is_allowed():
-    assert POSITIVE.problem(0.0) == "must be positive" and POSITIVE.problem(1e-9) is None
-    assert FRACTION.problem(1.5) == "must be within 0..1" and FRACTION.problem(1.0) is None
-    assert Bounds(0.0, 360.0, low_open=True).problem(0.0) == "must be within (0, 360]"
-    assert (
-        Bounds(high=5.0).problem(6) == "must be at most 5" and POSITIVE.problem(math.nan) == "must be a finite number"
-    )
-    with pytest.raises(ParamsError, match=r"^sim: battery_initial_level must be within 0\.\.1, got 2\.0$"):
+    by_name = {leaf.name: leaf for leaf in leaves(Bounded)}
+    assert by_name["share"].bounds == FRACTION and ros_range(by_name["share"].bounds) == (0.0, 1.0)
+    assert ros_range(by_name["rate"].bounds) is None  # (ROS ranges have two closed ends)
+    assert by_name["rate"].doc == "r" and by_name["toggle"].runtime and not by_name["rate"].runtime
+    with pytest.raises(ParamsError, match=r"^sim: battery_initial_level: must be within 0\.\.1, got 2\.0$"):
         build_config(SimulatorConfig, {"battery_initial_level": 2.0}, where="sim: ")
+
+
+def test_ros_spellings_of_values_become_the_declared_type():
+    made = build(Outer, {"ids": ["", "b"], "battery_capacity_m": "1e-3"})  # (an empty string array is [''] in ROS)
+    assert made.ids == ("b",) and made.inner.capacity_m == 0.001

@@ -329,7 +329,7 @@ def test_declared_bounds_are_the_parameters_ros_ranges_and_out_of_range_is_one_l
 
     proc = ros.start(SIM, {"battery_initial_level": 1.5}, capture=True)
     assert proc.wait(timeout=30) == 2
-    assert proc.stderr.read().strip() == "error: sim_node: parameter battery_initial_level must be within 0..1"
+    assert proc.stderr.read().strip() == "error: sim_node: parameter battery_initial_level: must be within 0..1"
     ros.start(SIM)
     client = AsyncParameterClient(ros.node, "sim_node")
     assert client.wait_for_services(timeout_sec=30)

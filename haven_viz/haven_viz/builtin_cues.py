@@ -23,12 +23,11 @@ scheme and marker size from them too).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from haven_sim.common.geometry import Pose2D, wrap_angle
-from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, check_bounds, param
+from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, config, param
 from haven_viz.cue_kind import NO_MANOEUVRE, CueContext, Manoeuvre, Shown, TrackedPath
 from haven_viz.markers import Color, MarkerSpec, Shape
 
@@ -50,7 +49,7 @@ BATTERY_BANDS: tuple[tuple[float, Color], ...] = (  # HAVEN's indicator: level a
 BATTERY_LOW: Color = (0.9, 0.0, 0.0, 1.0)  # red
 
 
-@dataclass(frozen=True)
+@config
 class CueParams:
     marker_spacing_m: float = param(0.4, "HAVEN: 1 m at its 2.6x robot scale", POSITIVE)
     steps_ahead: int = param(0, "projected markers shown ahead; 0 = the whole remaining path", NOT_NEGATIVE)
@@ -96,7 +95,6 @@ class CueParams:
     )
 
     def __post_init__(self) -> None:
-        check_bounds(self)
         if self.turn_signal_rule not in SIGNAL_RULES:
             raise ValueError(
                 f"turn_signal_rule must be one of {', '.join(SIGNAL_RULES)}, got {self.turn_signal_rule!r}"

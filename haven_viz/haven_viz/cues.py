@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Any
 
 from haven_sim.common import contain, plugins
 from haven_sim.common.geometry import Point, Pose2D
-from haven_sim.common.params import param
+from haven_sim.common.params import config, param
 from haven_sim.robots.description import Kinematics, RobotDescription
 from haven_sim.robots.fields import DEFAULT
 from haven_viz.builtin_cues import (
@@ -131,12 +131,14 @@ class CueToggles:
         return cls(**{c: False for c in CUES})
 
 
-Toggles: type[CueToggles] = dataclasses.make_dataclass(
-    "Toggles",
-    [(c, bool, param(CUE_SPECS[c].default_on, "cue toggle (study condition), settable at run time")) for c in CUES],
-    bases=(CueToggles,),
-    frozen=True,
-    module=__name__,
+Toggles: type[CueToggles] = config(
+    dataclasses.make_dataclass(
+        "Toggles",
+        [(c, bool, param(CUE_SPECS[c].default_on, "cue toggle (study condition)", runtime=True)) for c in CUES],
+        bases=(CueToggles,),
+        frozen=True,
+        module=__name__,
+    )
 )
 
 

@@ -13,16 +13,15 @@ event.
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from haven_sim.common import contain, nodes, topics
 from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
-from haven_sim.common.params import POSITIVE, check_bounds, group, param
+from haven_sim.common.params import POSITIVE, config, group, param
 from haven_sim.common.state import HumanPoses, RobotState
-from haven_sim.robots.description import RobotDescription
-from haven_sim.robots.fields import RobotChoice, from_robot
+from haven_sim.robots.fields import Robot, RobotChoice, from_robot
 from haven_sim.sim.battery import BatteryReading
 from haven_sim.sim.world import World
 from haven_viz.cue_kind import NO_MANOEUVRE, Manoeuvre
@@ -34,10 +33,10 @@ from haven_viz.world_markers import body_markers, world_markers
 PASS_SIDES = {"left": 1, "right": -1}  # the navigator's `replanned` event's side
 
 
-@dataclass(frozen=True)
+@config
 class VizConfig:
     robot: RobotChoice = group(RobotChoice)
-    description: RobotDescription = from_robot()  # where the cues sit on it, how the world markers draw it
+    description: Robot = from_robot()  # where the cues sit on it, how the world markers draw it
     toggles: CueToggles = group(Toggles)
     cues: CueParams = group(CueParams)
     world: str = param("", "world file for the world markers (haven sim passes its world)")
@@ -46,9 +45,6 @@ class VizConfig:
         2.0, "everything is re-sent this often (late viewers, bag replay from the middle)", POSITIVE
     )
     map_frame: str = param("map", "frame of the markers")
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
 
 class VizComponent:

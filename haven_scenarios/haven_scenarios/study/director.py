@@ -14,7 +14,6 @@ from __future__ import annotations
 import json
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 from typing import Any
 
 from haven_scenarios.study.cast import make_participants, robot_targets
@@ -35,7 +34,7 @@ from haven_sim.common import contain, topics
 from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import GOAL_POSE, Event, EventKind, Source, event
 from haven_sim.common.geometry import Point, Pose2D
-from haven_sim.common.params import POSITIVE, check_bounds, group, param
+from haven_sim.common.params import POSITIVE, config, group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.nav.planner import GridPlanner, PlanningError
 from haven_sim.robots.fields import RobotChoice
@@ -54,17 +53,14 @@ def any_reader(topic: str) -> str:
     return "/" + topic.lstrip("/")  # how `wait_for` says "whichever node reads this topic" (somebody's own planner)
 
 
-@dataclass(frozen=True)
+@config
 class DirectorConfig:
     scenario: str = param("hallway", "a shipped scenario name or a scenario YAML")
     seed: int = param(0, "seed of the simulated participants and the random gem order")
     rate_hz: float = param(10.0, "rules, participants and mission (sim time)", POSITIVE)
 
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
-
-@dataclass(frozen=True)
+@config
 class ScenarioNodeConfig:
     robot: RobotChoice = group(RobotChoice)
     director: DirectorConfig = group(DirectorConfig)

@@ -31,14 +31,14 @@ from dataclasses import dataclass, fields
 from typing import Any, TypeVar
 
 from haven_sim.common.events import Event, EventKind
-from haven_sim.common.params import POSITIVE, check_bounds, param
+from haven_sim.common.params import POSITIVE, config, param
 
 T = TypeVar("T")
 WATCH_S = 0.05  # how often the watchdog looks (an overrun is interrupted at most this late)
 _SIGNAL = signal.SIGRTMIN + 3 if hasattr(signal, "SIGRTMIN") else None  # (not one of the suite's stop signals)
 
 
-@dataclass(frozen=True)
+@config
 class PluginDeadlines:
     """How long one call into a plugin's code may take before its trial is ended not valid, per kind."""
 
@@ -52,9 +52,6 @@ class PluginDeadlines:
     plugin_deadline_load_s: float = param(
         30.0, "importing one plugin of any kind (questionnaires and robots are data: only loaded)", POSITIVE
     )
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
     def of(self, kind: str) -> float:
         value: float = getattr(self, f"plugin_deadline_{kind}_s", self.plugin_deadline_load_s)

@@ -1,11 +1,13 @@
-"""One source of parameters: the core's frozen config dataclasses.
+"""One source of parameters: the core's frozen configs, declared as pydantic dataclasses.
 
-Each node's configuration is a dataclass whose leaf fields are its ROS parameters (name = field name,
-default = field default, `doc` in the field metadata); a field holding another config dataclass is
-flattened into the same namespace (so shared pieces such as the motion style appear once in each
-node that uses them, under the same names). Nodes declare their parameters from these classes,
-batch mode builds the same classes from the same parameter file, and the shipped haven.yaml is
-generated from them (`render_params_file`), so a default is written in exactly one place.
+Each node's configuration is a `config` class whose leaf fields are its ROS parameters: name =
+field name; default, description and bounds in the field's pydantic `Field` (`param`); read-only
+unless declared `runtime`. A field holding another config is flattened into the same namespace
+(`group`), so shared pieces such as the motion style appear once in each node that uses them,
+under the same names. pydantic checks every value (type, bounds, finiteness) whether the config
+is made in code, from a parameter file or from a node's declared parameters; nodes declare their
+parameters and descriptors from the same fields (nodes/component_node.declare_config), and the
+shipped haven.yaml is generated from them (`render_params_file`), so a default is written once.
 """
 
 from __future__ import annotations
@@ -13,12 +15,15 @@ from __future__ import annotations
 import dataclasses
 import difflib
 import math
-from collections.abc import Iterable, Mapping, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, TypeVar
+from typing import Any, NamedTuple, TypeVar, dataclass_transform
 
+import pydantic
+import pydantic.dataclasses
 import yaml
+from pydantic.fields import FieldInfo
 
 from haven_sim.common.yaml_file import file_label, read_yaml
 
@@ -26,15 +31,32 @@ T = TypeVar("T")
 ParamValue = bool | int | float | str | list[str]
 WILDCARD = "/**"  # a ROS parameter-file section that applies to every node
 
+# Strict: a parameter's type is its declared one (an integer is no boolean, a string no number;
+# an integer is a float, as in ROS). Values that are not configs (a robot description) are taken as given.
+CONFIG = pydantic.ConfigDict(strict=True, allow_inf_nan=False, arbitrary_types_allowed=True)
+
 
 class ParamsError(ValueError):
     """A parameter value or a parameter file is invalid; the message is one line for the user."""
 
 
+class FieldError(ParamsError):
+    """A config field's value was refused: `field` (the field's name), `rule` (what it must be),
+    `value`; said "name: rule, got value" (as the files' schema says it), with the parameter's name
+    when a node's config is built."""
+
+    def __init__(self, field: str, rule: str, value: Any) -> None:
+        self.field, self.rule, self.value = field, rule, value
+        super().__init__(self.said(field))
+
+    def said(self, name: str) -> str:
+        return f"{name}: {self.rule}, got {_short(self.value)}"
+
+
 @dataclass(frozen=True)
 class Bounds:
-    """A number parameter's allowed values, declared with it (`param(..., bounds=...)`): checked when
-    a config is made (`check_bounds`) and given to ROS as the parameter's range where both ends
+    """A number parameter's allowed values, declared with it (`param(..., bounds=...)`): pydantic
+    checks them (`constraints`), and ROS is given them as the parameter's range where both ends
     are set (`ros_range`)."""
 
     low: float | None = None
@@ -42,13 +64,29 @@ class Bounds:
     low_open: bool = False  # low itself is not allowed
     high_open: bool = False
 
-    def problem(self, value: float) -> str | None:
-        """None if `value` is allowed, else what it must be ("must be positive", "must be within 0..1")."""
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            return "must be a finite number"
-        low_ok = self.low is None or (value > self.low if self.low_open else value >= self.low)
-        high_ok = self.high is None or (value < self.high if self.high_open else value <= self.high)
-        return None if low_ok and high_ok else self.rule()
+    def constraints(self) -> dict[str, Any]:
+        """The bounds as pydantic `Field` constraints (gt/ge/lt/le)."""
+        out: dict[str, Any] = {}
+        if self.low is not None:
+            out["gt" if self.low_open else "ge"] = self.low
+        if self.high is not None:
+            out["lt" if self.high_open else "le"] = self.high
+        return out
+
+    @classmethod
+    def of(cls, info: FieldInfo) -> Bounds | None:
+        """The bounds a field was declared with (None: none)."""
+        ends: dict[str, Any] = {}
+        for m in info.metadata:  # (annotated_types' Gt, Ge, Lt, Le: one constraint each)
+            for key, end, is_open in (
+                ("gt", "low", True),
+                ("ge", "low", False),
+                ("lt", "high", True),
+                ("le", "high", False),
+            ):
+                if getattr(m, key, None) is not None:
+                    ends.update({end: float(getattr(m, key)), f"{end}_open": is_open})
+        return cls(**ends) if ends else None
 
     def rule(self) -> str:
         """What an allowed value is, in words."""
@@ -69,64 +107,120 @@ POSITIVE = Bounds(0.0, low_open=True)
 NOT_NEGATIVE = Bounds(0.0)
 FRACTION = Bounds(0.0, 1.0)
 
-
-def param(default: Any, doc: str, bounds: Bounds | None = None) -> Any:
-    """A parameter field with its one-line documentation (written into haven.yaml) and, for a
-    number, the values it may take."""
-    return dataclasses.field(
-        default=default, metadata={"doc": doc, **({"bounds": bounds} if bounds is not None else {})}
-    )
+RUNTIME = "runtime"  # field metadata: the parameter may change while the node runs (else read-only)
+INTERNAL = "internal"  # field metadata: set by code, not a parameter
+PREFIX = "prefix"  # field metadata of a group: the prefix of its parameters' names
 
 
-def check_bounds(config: Any) -> None:
-    """ValueError (one line, naming the field) for a field outside its declared bounds: called by
-    each config's __post_init__, so a config made in code is checked like one from a parameter file."""
-    for f in dataclasses.fields(config):
-        bounds = f.metadata.get("bounds")
-        if bounds is not None:
-            value = getattr(config, f.name)
-            problem = bounds.problem(value)
-            if problem is not None:
-                raise ValueError(f"{f.name} {problem}, got {value!r}")
+def param(default: Any, doc: str, bounds: Bounds | None = None, runtime: bool = False) -> Any:
+    """A parameter field: its default, its one-line documentation (the ROS descriptor's and
+    haven.yaml's), for a number the values it may take, and whether it may change while the node
+    runs (`runtime`; the rest are read at start-up only, read-only in ROS)."""
+    field = pydantic.Field(default, description=doc, **(bounds.constraints() if bounds else {}))
+    return dataclasses.field(default=field, metadata={RUNTIME: runtime})
 
 
-def ros_range(bounds: Bounds | None) -> tuple[float, float] | None:
-    """The (from, to) of the ROS parameter descriptor's range: only where both ends are declared
-    (ROS ranges are closed; an open end is checked by `Bounds.problem`, the range only shows it)."""
-    if bounds is None or bounds.low is None or bounds.high is None:
-        return None
-    return bounds.low, bounds.high
-
-
-def bounds_of(cls: type[Any]) -> dict[str, Bounds]:
-    """Parameter name -> its declared bounds, for the parameters that have some."""
-    return {name: f.metadata["bounds"] for name, f in _leaves(cls) if "bounds" in f.metadata}
+def internal(default: Any, bounds: Bounds | None = None, **metadata: Any) -> Any:
+    """A config field set by code, not a parameter (still checked against `bounds`). Its default is
+    handed out as it is (pydantic would deep-copy a default it does not know to be immutable)."""
+    field = pydantic.Field(default_factory=lambda: default, **(bounds.constraints() if bounds else {}))
+    return dataclasses.field(default=field, metadata={INTERNAL: True, **metadata})
 
 
 def group(cls: type[T], prefix: str = "") -> Any:
-    """A field holding a nested config dataclass: its fields join the node's parameters, their
-    names prefixed with `prefix` (e.g. the battery's `capacity_m` is the sim's `battery_capacity_m`)."""
-    return dataclasses.field(default_factory=cls, metadata={"prefix": prefix})
+    """A field holding a nested config: its fields join the node's parameters, their names
+    prefixed with `prefix` (e.g. the battery's `capacity_m` is the sim's `battery_capacity_m`)."""
+    return dataclasses.field(default_factory=cls, metadata={PREFIX: prefix})
 
 
-def _is_group(f: dataclasses.Field[Any]) -> bool:
-    return f.default_factory is not dataclasses.MISSING and dataclasses.is_dataclass(f.default_factory)
+_TYPE_RULES = {
+    "bool_type": "must be true or false",
+    "int_type": "must be an integer",
+    "float_type": "must be a finite number",
+    "finite_number": "must be a finite number",
+    "string_type": "must be a string",
+}
 
 
-def _is_param(f: dataclasses.Field[Any]) -> bool:
-    """Fields marked `internal` are set by code, not by a parameter."""
-    return not f.metadata.get("internal", False)
+@dataclass_transform(frozen_default=True, field_specifiers=(dataclasses.field, pydantic.Field))
+def config(cls: type[T]) -> type[T]:
+    """A config class: a frozen pydantic dataclass (`CONFIG`) whose refusals are one line
+    (`FieldError` naming the field; a `__post_init__`'s own ValueError as it said it)."""
+    made = pydantic.dataclasses.dataclass(frozen=True, config=CONFIG)(cls)
+    validated: Callable[..., None] = made.__init__
+
+    def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
+        try:
+            validated(self, *args, **kwargs)
+        except pydantic.ValidationError as e:
+            raise _one_line(made, e) from None
+
+    __init__.__doc__ = validated.__doc__
+    made.__init__ = __init__  # type: ignore[method-assign]
+    return made  # type: ignore[return-value]
 
 
-def _leaves(cls: type[Any], prefix: str = "") -> list[tuple[str, dataclasses.Field[Any]]]:
-    """(parameter name, field) of every leaf; names must be unique within a node."""
-    out: list[tuple[str, dataclasses.Field[Any]]] = []
+def _one_line(cls: type[Any], error: pydantic.ValidationError) -> ParamsError:
+    first = error.errors(include_url=False)[0]
+    if first["type"] == "value_error" and first.get("ctx", {}).get("error") is not None:  # (a __post_init__ said it)
+        cause = first["ctx"]["error"]
+        return cause if isinstance(cause, ParamsError) else ParamsError(str(cause))
+    name = str(first["loc"][0]) if first["loc"] else cls.__name__
+    info = fields_info(cls).get(name)
+    value = first["input"]
+    if info is not None and isinstance(info.default, tuple):
+        return FieldError(name, "must be a list of strings", value)
+    bounds = Bounds.of(info) if info is not None else None
+    rule = _TYPE_RULES.get(first["type"]) or (bounds.rule() if bounds is not None else first["msg"].lower())
+    return FieldError(name, rule, value)
+
+
+def _short(value: Any) -> str:
+    shown = repr(value)
+    return shown if len(shown) < 60 else shown[:57] + "..."
+
+
+def fields_info(cls: type[Any]) -> dict[str, FieldInfo]:
+    """A config class's fields as pydantic sees them (default, description, constraints)."""
+    return dict(getattr(cls, "__pydantic_fields__", {}))
+
+
+def is_config(cls: Any) -> bool:
+    return isinstance(cls, type) and pydantic.dataclasses.is_pydantic_dataclass(cls)
+
+
+class Leaf(NamedTuple):
+    """One parameter of a config class: its name in the node's namespace and its declaration."""
+
+    name: str
+    info: FieldInfo
+    runtime: bool
+
+    @property
+    def doc(self) -> str:
+        return self.info.description or ""
+
+    @property
+    def bounds(self) -> Bounds | None:
+        return Bounds.of(self.info)
+
+
+def _group_of(f: dataclasses.Field[Any]) -> type[Any] | None:
+    factory = f.default_factory
+    return factory if factory is not dataclasses.MISSING and is_config(factory) else None  # type: ignore[return-value]
+
+
+def leaves(cls: type[Any], prefix: str = "") -> list[Leaf]:
+    """Every parameter of a config class (groups flattened); names must be unique within a node."""
+    out: list[Leaf] = []
+    infos = fields_info(cls)
     for f in dataclasses.fields(cls):
-        if _is_group(f):
-            out += _leaves(f.default_factory, prefix + f.metadata.get("prefix", ""))  # type: ignore[arg-type]
-        elif _is_param(f):
-            out.append((prefix + f.name, f))
-    names = [n for n, _ in out]
+        inner = _group_of(f)
+        if inner is not None:
+            out += leaves(inner, prefix + f.metadata.get(PREFIX, ""))
+        elif not f.metadata.get(INTERNAL, False):
+            out.append(Leaf(prefix + f.name, infos[f.name], bool(f.metadata.get(RUNTIME, False))))
+    names = [leaf.name for leaf in out]
     if len(set(names)) != len(names):
         raise ParamsError(f"{cls.__name__}: parameter names repeat: {sorted({n for n in names if names.count(n) > 1})}")
     return out
@@ -137,78 +231,61 @@ def flatten(config: Any, prefix: str = "") -> dict[str, ParamValue]:
     out: dict[str, ParamValue] = {}
     for f in dataclasses.fields(config):
         value = getattr(config, f.name)
-        if _is_group(f):
-            out.update(flatten(value, prefix + f.metadata.get("prefix", "")))
-        elif _is_param(f):
+        if _group_of(f) is not None:
+            out.update(flatten(value, prefix + f.metadata.get(PREFIX, "")))
+        elif not f.metadata.get(INTERNAL, False):
             out[prefix + f.name] = list(value) if isinstance(value, tuple) else value
     return out
 
 
 def docs(cls: type[Any]) -> dict[str, str]:
-    return {name: str(f.metadata.get("doc", "")) for name, f in _leaves(cls)}
+    return {leaf.name: leaf.doc for leaf in leaves(cls)}
+
+
+def ros_range(bounds: Bounds | None) -> tuple[float, float] | None:
+    """The (from, to) of the ROS parameter descriptor's range: only where both ends are declared
+    (ROS ranges are closed; an open end is checked by pydantic, the range only shows it)."""
+    if bounds is None or bounds.low is None or bounds.high is None:
+        return None
+    return bounds.low, bounds.high
 
 
 def defaults(cls: type[Any]) -> dict[str, ParamValue]:
     return flatten(cls())
 
 
-def _coerce(name: str, value: Any, default: Any, where: str) -> Any:
-    def fail(expected: str) -> ParamsError:
-        shown = repr(value) if len(repr(value)) < 60 else repr(value)[:57] + "..."
-        return ParamsError(f"{where}{name}: must be {expected}, got {shown}")
-
-    if isinstance(default, bool):
-        if not isinstance(value, bool):
-            raise fail("true or false")
-        return value
-    if isinstance(default, int):
-        if isinstance(value, bool) or not isinstance(value, int):
-            raise fail("an integer")
-        return value
-    if isinstance(default, float):
-        if isinstance(value, str):  # ROS reads `1e-3` (YAML 1.1 has no such float) as a double: so does this
-            value = _ros_double(value)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
-            raise fail("a finite number")
-        return float(value)
-    if isinstance(default, str):
-        if not isinstance(value, str):
-            raise fail("a string")
-        return value
-    if isinstance(default, (tuple, list)):
-        if not isinstance(value, (list, tuple)) or not all(isinstance(v, str) for v in value):
-            raise fail("a list of strings")
+def _as_declared(value: Any, default: Any) -> Any:
+    """A parameter value as ROS hands it to a field of `default`'s type: a list (a string array) as
+    the field's tuple, without the empty strings ROS needs for an empty array; a string that is
+    wholly a number, for a float, as rcl's parameter-file parser reads an unquoted `1e-3` (YAML 1.1
+    has no such float): a double."""
+    if isinstance(default, tuple) and isinstance(value, list) and all(isinstance(v, str) for v in value):
         return tuple(v for v in value if v)
-    raise fail(type(default).__name__)  # pragma: no cover - configs use the types above
-
-
-def _ros_double(text: str) -> float | str:
-    """A string as rcl's parameter-file parser reads an unquoted scalar it could not type otherwise:
-    a double when the whole of it is one (`1e-3`, `1E9`), else the string."""
-    try:
-        return float(text) if text.strip() == text and text else text
-    except ValueError:
-        return text
+    if isinstance(default, float) and isinstance(value, str) and value.strip() == value and value:
+        try:
+            return float(value)
+        except ValueError:
+            return value
+    return value
 
 
 def build(cls: type[T], values: Mapping[str, Any], where: str = "", prefix: str = "") -> T:
     """An instance of `cls` with `values` (parameter name -> value) replacing defaults; unknown
-    names are ignored (a parameter file serves several nodes), wrong types refused in one line."""
+    names are ignored (a parameter file serves several nodes), wrong values refused in one line
+    naming the parameter (`where` before it)."""
     kwargs: dict[str, Any] = {}
+    infos = fields_info(cls)
     for f in dataclasses.fields(cls):  # type: ignore[arg-type]
         name = prefix + f.name
-        if _is_group(f):
-            kwargs[f.name] = build(f.default_factory, values, where, prefix + f.metadata.get("prefix", ""))  # type: ignore[arg-type]
-        elif name in values and _is_param(f):
-            kwargs[f.name] = _coerce(name, values[name], f.default, where)
-            bounds = f.metadata.get("bounds")
-            problem = bounds.problem(kwargs[f.name]) if bounds is not None else None
-            if problem is not None:
-                raise ParamsError(f"{where}{name} {problem}, got {kwargs[f.name]!r}")
+        inner = _group_of(f)
+        if inner is not None:
+            kwargs[f.name] = build(inner, values, where, prefix + f.metadata.get(PREFIX, ""))
+        elif name in values and not f.metadata.get(INTERNAL, False):
+            kwargs[f.name] = _as_declared(values[name], infos[f.name].default)
     try:
         return cls(**kwargs)
-    except ParamsError:
-        raise
+    except FieldError as e:
+        raise ParamsError(where + e.said(prefix + e.field)) from None
     except ValueError as e:
         raise ParamsError(f"{where}{e}") from None
 
@@ -311,23 +388,23 @@ def render_params_file(
     """A ROS 2 parameter file with every node's parameters, their docs, and their defaults (or the
     `values` given per node name, the shared ones under WILDCARD). Groups in `shared` go once under
     the wildcard section; a node whose shared value differs repeats it in its own section."""
-    shared_names = {n for cls in shared for n, _ in _leaves(cls)}
+    shared_names = {leaf.name for cls in shared for leaf in leaves(cls)}
     given = values or {}
     common = {k: v for cls in shared for k, v in defaults(cls).items()} | dict(given.get(WILDCARD, {}))
     lines = [f"# {h}".rstrip() for h in header.splitlines()] if header else []
 
-    def section(node: str, leaves: list[tuple[str, dataclasses.Field[Any]]], values: Mapping[str, Any]) -> None:
+    def section(node: str, params: list[Leaf], values: Mapping[str, Any]) -> None:
         lines.append(f"{node}:" if node != WILDCARD else f'"{WILDCARD}":')
         lines.append("  ros__parameters:")
-        for name, f in leaves:
-            doc = f.metadata.get("doc", "")
-            entry = f"    {name}: {_yaml_value(values[name])}"
+        for leaf in params:
+            entry = f"    {leaf.name}: {_yaml_value(values[leaf.name])}"
+            doc = f"{leaf.doc}, settable at run time" if leaf.runtime else leaf.doc
             lines.append(f"{entry:<44} # {doc}" if doc else entry)
         lines.append("")
 
     if shared:
-        section(WILDCARD, [leaf for cls in shared for leaf in _leaves(cls)], common)
+        section(WILDCARD, [leaf for cls in shared for leaf in leaves(cls)], common)
     for node, cls in nodes:
         own = defaults(cls) | dict(given.get(node, {}))
-        section(node, [(n, f) for n, f in _leaves(cls) if n not in shared_names or own[n] != common[n]], own)
+        section(node, [p for p in leaves(cls) if p.name not in shared_names or own[p.name] != common[p.name]], own)
     return "\n".join(lines).rstrip() + "\n"

@@ -6,9 +6,7 @@ message type and QoS (haven_sim.nodes.wire), batch mode routes them in-process.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
-from haven_sim.common.params import param
+from haven_sim.common.params import config, param
 
 CLOCK = "/clock"
 TF = "/tf"
@@ -69,7 +67,7 @@ def human_of_cmd_vel(topic: str) -> str | None:
 ROBOT_CMD_VEL = (CMD_VEL, CMD_VEL_NAV, CMD_VEL_TELEOP)  # the robot's velocity commands
 
 
-@dataclass(frozen=True)
+@config
 class WireParams:
     """How the topics are typed, for every node (the shared section of haven.yaml)."""
 

@@ -13,13 +13,12 @@ check or timeout. A "reached" is therefore a measured pose, whatever the machine
 from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 
 from haven_sim.common import nodes, topics
 from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import ZERO_TWIST, Pose2D, Twist2D
-from haven_sim.common.params import POSITIVE, check_bounds, group, param
+from haven_sim.common.params import POSITIVE, config, group, param
 from haven_sim.common.state import RobotState
 from haven_sim.nav.follower import FollowerParams, PathFollower, Status
 from haven_sim.nav.motion_style import MotionStyle
@@ -29,7 +28,7 @@ AT_REST_MPS, AT_REST_RPS = 0.01, 0.02  # the robot is at rest below these (odome
 REST_WAIT_S = 3.0  # arrived but not at rest after this long (odometry gone quiet): checked all the same
 
 
-@dataclass(frozen=True)
+@config
 class ControllerConfig:
     robot: RobotChoice = group(RobotChoice)
     follower: FollowerParams = group(FollowerParams)
@@ -37,7 +36,6 @@ class ControllerConfig:
     rate_hz: float = param(20.0, "control rate (sim time)", POSITIVE)
 
     def __post_init__(self) -> None:
-        check_bounds(self)
         if self.follower.yaw_goal_tolerance_rad < self.style.facing_tolerance_rad:
             raise ValueError(
                 f"follower.yaw_goal_tolerance_rad ({self.follower.yaw_goal_tolerance_rad:g}) must be at least the "

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from enum import Enum
 
 from haven_sim.common.geometry import Pose2D, Twist2D, wrap_angle
-from haven_sim.common.params import POSITIVE, check_bounds, param
+from haven_sim.common.params import POSITIVE, config, param
 from haven_sim.common.paths import SegmentKind, read_path
 from haven_sim.common.polyline import Polyline
 from haven_sim.nav.motion_style import MotionStyle
@@ -31,7 +31,7 @@ HEADING_GAIN = 2.0  # a holonomic robot turns to face its way at this rate per r
 CORRECTION_GAIN = 1.0
 
 
-@dataclass(frozen=True)
+@config
 class FollowerParams:
     linear_speed_mps: float = from_robot("motion.cruise_speed_mps")  # along arcs and straights
     min_linear_speed_mps: float = param(0.05, "slowest speed while still driving toward a stop", POSITIVE)
@@ -52,9 +52,6 @@ class FollowerParams:
     angular_decel_rps2: float = param(3.0, "planned angular deceleration at the end of a rotation", POSITIVE)
     max_angular_speed_rps: float = from_robot("motion.max_turn_rate_rps")  # while driving
     holonomic: bool = from_robot("holonomic")  # moves in any direction: straight at the lookahead point
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
 
 class Status(Enum):

@@ -11,13 +11,12 @@ paths with this rule and the controller follows them with it; both nodes take th
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
-from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, check_bounds, param
+from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, Bounds, config, param
 from haven_sim.robots.fields import from_robot
 
 
-@dataclass(frozen=True)
+@config
 class MotionStyle:
     arc_max_angle_deg: float = param(
         60.0,
@@ -32,9 +31,6 @@ class MotionStyle:
     )
     rotate_speed_deg_s: float = param(50.0, "HAVEN's rate of rotating in place", POSITIVE)
     rotate_in_place: bool = from_robot("motion.rotate_in_place")  # a holonomic robot turns while it moves instead
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
     @property
     def arc_max_angle_rad(self) -> float:

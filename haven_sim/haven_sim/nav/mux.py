@@ -24,13 +24,13 @@ from haven_sim.common import nodes, topics
 from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import EventKind, Source, event
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
-from haven_sim.common.params import POSITIVE, check_bounds, param
+from haven_sim.common.params import POSITIVE, config, param
 from haven_sim.sim.estop import ESTOP_HOLD_S, EStopLatch
 
 NAV, TELEOP, ESTOP, IDLE = "nav", "teleop", "estop", "idle"
 
 
-@dataclass(frozen=True)
+@config
 class MuxConfig:
     teleop_timeout_s: float = param(0.5, "teleop hands control back this long after its last command", POSITIVE)
     nav_timeout_s: float = param(0.5, "navigation commands older than this are stale", POSITIVE)
@@ -38,9 +38,6 @@ class MuxConfig:
     estop_hold_s: float = param(
         ESTOP_HOLD_S, "a false on /haven/estop releases the stop only when no true has come for this long", POSITIVE
     )
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
 
 @dataclass(frozen=True)

@@ -26,7 +26,7 @@ from haven_sim.common import topics
 from haven_sim.common.component import Message
 from haven_sim.common.events import Event, EventKind
 from haven_sim.common.geometry import Pose2D
-from haven_sim.common.params import POSITIVE, check_bounds, param
+from haven_sim.common.params import POSITIVE, config, param
 from haven_sim.common.polyline import Polyline
 from haven_sim.common.state import Goal, RobotState
 from haven_sim.nav.planner import PlanFailure
@@ -47,7 +47,7 @@ VIAPOINT_RADIUS_M = 0.7
 PROGRESS_RADIUS_M = 0.5
 
 
-@dataclass(frozen=True)
+@config
 class Nav2TaskParams:
     progress_timeout_s: float = param(
         30.0,
@@ -56,9 +56,6 @@ class Nav2TaskParams:
         "a person who never leaves the way does not hold a client forever",
         POSITIVE,
     )
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
 
 class TaskKind(StrEnum):

@@ -2,17 +2,14 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from haven_sim.common.bodies import HUMAN_BODY
-from haven_sim.common.params import NOT_NEGATIVE, Bounds, check_bounds, param
-from haven_sim.robots.description import RobotDescription
-from haven_sim.robots.fields import from_robot
+from haven_sim.common.params import NOT_NEGATIVE, Bounds, config, param
+from haven_sim.robots.fields import Robot, from_robot
 
 WAIT_MARGIN_M = 0.3  # a wide robot brakes this far beyond arm's length (it rests a little nearer)
 
 
-@dataclass(frozen=True)
+@config
 class NavigatorParams:
     pass_start_m: float = param(
         4.0,
@@ -49,7 +46,7 @@ class NavigatorParams:
     diverge_m: float = param(0.15, "off the route by more than this, the robot is on a detour", NOT_NEGATIVE)
     goal_tolerance_m: float = param(0.1, "the goal counts as reached this close", NOT_NEGATIVE)
     use_goal_yaw: bool = param(True, "rotate to the goal's orientation at the end")
-    robot: RobotDescription = from_robot()  # an aerial robot keeps its flight's distance from people
+    robot: Robot = from_robot()  # an aerial robot keeps its flight's distance from people
 
     @property
     def person_distance_m(self) -> float:
@@ -80,7 +77,5 @@ class NavigatorParams:
         within which the navigator does not re-plan round a person, else it would wait for ever."""
         return max(self.wait_gap_m, HUMAN_BODY.radius_m + self.robot.radius_m + self.pass_gap_m + WAIT_MARGIN_M)
 
-    def __post_init__(self) -> None:
-        check_bounds(self)  # (pass_angle_deg: beyond 60 the robot rotates in place)
         if self.min_pass_clearance_m > self.pass_clearance_m:
             raise ValueError("min_pass_clearance_m must not exceed pass_clearance_m")

@@ -12,18 +12,17 @@ from __future__ import annotations
 import itertools
 import math
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 
 import numpy as np
 
 from haven_sim.common.geometry import FloatArray, Point, Pose2D, wrap_angle
-from haven_sim.common.params import POSITIVE, Bounds, check_bounds, param
+from haven_sim.common.params import POSITIVE, Bounds, config, param
 from haven_sim.nav.motion_style import MotionStyle
 
 ClearFn = Callable[[FloatArray], bool]  # are all these (N, 2) points safe for the robot?
 
 
-@dataclass(frozen=True)
+@config
 class ShapeParams:
     marker_spacing_m: float = param(0.4, "pose spacing of /plan along straight parts and arcs", POSITIVE)
     rotate_step_deg: float = param(15.0, "pose spacing of /plan's rotations in place", POSITIVE)
@@ -34,9 +33,6 @@ class ShapeParams:
     straight_tolerance_deg: float = param(
         2.0, "heading changes smaller than this are not corners", Bounds(0.0, 90.0, high_open=True)
     )
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
     @property
     def rotate_step_rad(self) -> float:

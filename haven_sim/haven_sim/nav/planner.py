@@ -32,7 +32,7 @@ import numpy.typing as npt
 
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.geometry import FloatArray, Point
-from haven_sim.common.params import NOT_NEGATIVE, Bounds, check_bounds, param
+from haven_sim.common.params import NOT_NEGATIVE, Bounds, config, param
 from haven_sim.robots.fields import from_robot
 from haven_sim.sim.occupancy import OccupancyGridData, rasterise
 from haven_sim.sim.world import World, WorldError
@@ -44,7 +44,7 @@ MAX_SIGHT_WORK = 60_000_000  # corner pairs x the map's diagonal in half cells (
 MAX_SIGHT_SAMPLES = 2_000_000  # grid samples tested at a time for line of sight (~100 MB of temporaries)
 
 
-@dataclass(frozen=True)
+@config
 class PlannerParams:
     safety_margin_m: float = param(0.05, "added to the body radius when inflating the map", NOT_NEGATIVE)
     snap_radius_m: float = param(0.3, "a start or goal this close to free space is moved onto it", NOT_NEGATIVE)
@@ -52,9 +52,6 @@ class PlannerParams:
     unknown_is_obstacle: bool = param(True, "map cells of -1 (unknown) are obstacles")
     # The body to plan for (not a parameter: the robot's footprint, or a participant for their walks).
     body_radius_m: float = from_robot("radius_m")
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
     @property
     def inflation_m(self) -> float:

@@ -18,7 +18,7 @@ from haven_sim.common import contain, nodes, plugins, topics
 from haven_sim.common.component import Handler, Message
 from haven_sim.common.events import PLAN_POSES, EventKind, Source, event
 from haven_sim.common.geometry import Pose2D
-from haven_sim.common.params import POSITIVE, Bounds, check_bounds, group, param
+from haven_sim.common.params import POSITIVE, Bounds, config, group, param
 from haven_sim.common.state import Goal, HumanPoses, RobotState
 from haven_sim.nav.lanes import Lane
 from haven_sim.nav.motion_style import MotionStyle
@@ -42,7 +42,7 @@ class GoalStorm:
     superseded: int = 0  # replaced before they were planned
 
 
-@dataclass(frozen=True)
+@config
 class PlannerConfig:
     robot: RobotChoice = group(RobotChoice)
     planner: PlannerParams = group(PlannerParams)
@@ -68,7 +68,6 @@ class PlannerConfig:
     )
 
     def __post_init__(self) -> None:
-        check_bounds(self)
         registered = plugins.registry("planners")
         if self.algorithm not in registered:
             raise ValueError(f"algorithm: {registered.unknown(self.algorithm)}")

@@ -30,7 +30,7 @@ from rclpy.subscription import Subscription
 from haven_sim.common import contain, nodes, topics
 from haven_sim.common.component import Component, Message
 from haven_sim.common.events import Event, EventKind, Sequencer, event
-from haven_sim.common.params import ParamsError, bounds_of, defaults, docs, ros_range
+from haven_sim.common.params import ParamsError, defaults, leaves, ros_range
 from haven_sim.common.topics import WireParams
 from haven_sim.nodes import qos, wire
 from haven_sim.nodes.lockstep import LockstepParticipant
@@ -48,17 +48,17 @@ CLOCK_LEAP_S = 60.0  # a jump of the clock this large either way is no simulator
 FLOOD_RATE_HZ, FLOOD_BURST = 200.0, 200  # per input topic, sim time: 4x the fastest the suite sends (/odom: 50 Hz)
 
 
-def declare_config(node: Node, cls: type[C], runtime: frozenset[str] = frozenset()) -> C:
-    """Declare every parameter of a config dataclass on `node` and build the config from their
-    values. Its descriptor has the declaration's range and doc, and is read-only unless the
-    parameter is one of `runtime` (`ros2 param describe` shows both). A list is a string array,
-    also when empty (rclpy would type an empty list as a byte array)."""
+def declare_config(node: Node, cls: type[C]) -> C:
+    """Declare every parameter of a config class on `node` and build the config from their values.
+    Each descriptor comes from the field's declaration (`params.param`): its description, its range
+    where both ends are bounded, and read-only unless the field is `runtime` (`ros2 param describe`
+    shows them). A list is a string array, also when empty (rclpy would type an empty list as a byte array)."""
     values: dict[str, Any] = {}
-    described, bounded = docs(cls), bounds_of(cls)
-    for name, default in defaults(cls).items():
-        read_only = name not in runtime
-        descriptor = ParameterDescriptor(description=described.get(name, ""), read_only=read_only)
-        span = ros_range(bounded.get(name))
+    own_defaults = defaults(cls)
+    for leaf in leaves(cls):
+        default = own_defaults[leaf.name]
+        descriptor = ParameterDescriptor(description=leaf.doc, read_only=not leaf.runtime)
+        span = ros_range(leaf.bounds)
         if span is not None and isinstance(default, float):
             descriptor.floating_point_range = [
                 FloatingPointRange(from_value=float(span[0]), to_value=float(span[1]), step=0.0)
@@ -66,16 +66,13 @@ def declare_config(node: Node, cls: type[C], runtime: frozenset[str] = frozenset
         elif span is not None and isinstance(default, int) and not isinstance(default, bool):
             descriptor.integer_range = [IntegerRange(from_value=int(span[0]), to_value=int(span[1]), step=0)]
         try:
-            values[name] = declare(node, name, default, descriptor)
+            values[leaf.name] = declare(node, leaf.name, default, descriptor)
         except InvalidParameterValueException:  # (out of its range: said as build_config() says it)
-            raise ParamsError(f"{node.get_name()}: parameter {name} {bounded[name].rule()}") from None
+            raise ParamsError(f"{node.get_name()}: parameter {leaf.name}: {leaf.bounds.rule()}") from None  # type: ignore[union-attr]
     return build_config(cls, values, where=f"{node.get_name()}: parameter ")
 
 
 class ComponentNode(Node):
-    # Parameters that may change while the node runs (the rest are read at start-up only).
-    runtime_parameters: frozenset[str] = frozenset()
-
     def __init__(self, name: str, cli_args: Sequence[str] | None = None) -> None:
         """`cli_args`: this node's own ROS arguments (`--ros-args -p use_sim_time:=true`), beside
         the process's (one process may hold several nodes: nodes/suite_process)."""
@@ -91,6 +88,7 @@ class ComponentNode(Node):
         self.limit = InputLimit(FLOOD_RATE_HZ, FLOOD_BURST)
         self.sequencer = Sequencer()
         self.component: Component | None = None
+        self.runtime_parameters: set[str] = set()  # declared `runtime`: they may change while the node runs
         self.add_on_set_parameters_callback(self._check_parameters)
         self.add_pre_set_parameters_callback(self._note_read_only)
         # A /clock message from another node can make time leap far ahead and back: a timer whose
@@ -110,8 +108,9 @@ class ComponentNode(Node):
 
     # -- declare and configure -------------------------------------------------------------------
     def declare_config(self, cls: type[C]) -> C:
-        """`declare_config` with this node's `runtime_parameters`."""
-        return declare_config(self, cls, self.runtime_parameters)
+        """`declare_config`, noting the parameters that may change while the node runs."""
+        self.runtime_parameters |= {leaf.name for leaf in leaves(cls) if leaf.runtime}
+        return declare_config(self, cls)
 
     def _note_read_only(self, params: list[Parameter]) -> list[Parameter]:
         """An attempt to set a read-only parameter (which rclpy then refuses, "Trying to set a
@@ -127,7 +126,7 @@ class ComponentNode(Node):
         """Only `runtime_parameters` (the cue toggles: the study condition) change while a node runs;
         any other change is refused, said in the log and in a `request_refused` event (the study log
         shows that somebody tried)."""
-        refused = start_up_only(self, params, self.runtime_parameters)
+        refused = start_up_only(self, params, frozenset(self.runtime_parameters))
         if refused is not None:
             self.emit([self.refused_request("parameter", *refused)])
             return SetParametersResult(successful=False, reason=refused[1])

@@ -12,32 +12,34 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Mapping
-from typing import Any, TypeVar
+from typing import Annotated, Any, TypeVar
 
-from haven_sim.common.params import Bounds, ParamsError, build, param
+import pydantic
+
+from haven_sim.common.params import Bounds, ParamsError, build, config, internal, is_config, param
 from haven_sim.robots.catalogue import path_of
 from haven_sim.robots.description import RobotDescription
 from haven_sim.robots.robot_file import read_robot_file
 from haven_sim.robots.robot_kind import DEFAULT_ROBOT, resolve_robot
 
 T = TypeVar("T")
+# A config field holding a whole robot description: taken as it is (it was checked when its robot
+# file was read; pydantic would copy it to validate it again).
+Robot = Annotated[RobotDescription, pydantic.InstanceOf]
 
 DEFAULT = read_robot_file(path_of(DEFAULT_ROBOT))  # the defaults' robot, read once at import
 ROBOT_KEY = "robot"  # field metadata: the figure's path in the description ("" = the whole)
 
 
-@dataclasses.dataclass(frozen=True)
+@config
 class RobotChoice:
     robot: str = param(DEFAULT_ROBOT, "the robot: a name from `haven robots` or a robot YAML file (haven run --robot)")
 
 
 def from_robot(path: str = "", bounds: Bounds | None = None) -> Any:
-    """A config field set from the robot's description (not a parameter; `bounds` checked by the
-    config's check_bounds, for a config made in code)."""
-    default = DEFAULT if not path else DEFAULT.value_at(path)
-    return dataclasses.field(
-        default=default, metadata={"internal": True, ROBOT_KEY: path, **({"bounds": bounds} if bounds else {})}
-    )
+    """A config field set from the robot's description (not a parameter; still checked against
+    `bounds`, as for a config made in code)."""
+    return internal(DEFAULT if not path else DEFAULT.value_at(path), bounds, **{ROBOT_KEY: path})
 
 
 def uses_robot(cls: Any) -> bool:
@@ -45,11 +47,7 @@ def uses_robot(cls: Any) -> bool:
     for f in dataclasses.fields(cls):
         if ROBOT_KEY in f.metadata:
             return True
-        if (
-            f.default_factory is not dataclasses.MISSING
-            and dataclasses.is_dataclass(f.default_factory)
-            and uses_robot(f.default_factory)
-        ):
+        if is_config(f.default_factory) and uses_robot(f.default_factory):
             return True
     return False
 

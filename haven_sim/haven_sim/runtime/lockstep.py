@@ -27,13 +27,13 @@ from typing import Any
 from haven_sim.common import topics
 from haven_sim.common.component import Component, Message, due, period_ns
 from haven_sim.common.events import Event
-from haven_sim.common.params import param
+from haven_sim.common.params import config, param
 
 UNCAPPED_RTF = 1e6  # a lockstep real-time factor this high means "as fast as the participants go"
 MAX_DIGESTS = 100_000  # more messages announced in one tick or ack than any step makes: refused as forged
 
 
-@dataclass(frozen=True)
+@config
 class LockstepParams:
     lockstep: bool = param(
         False, "step with the simulator's lockstep clock (haven run sets it for simulated participants)"

@@ -8,10 +8,10 @@ the level so the published sensor_msgs/BatteryState is self-consistent.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from enum import Enum
 
-from haven_sim.common.params import FRACTION, NOT_NEGATIVE, POSITIVE, check_bounds, param
+from haven_sim.common.params import FRACTION, NOT_NEGATIVE, POSITIVE, config, internal, param
 from haven_sim.robots.fields import from_robot
 
 # Kobuki 4S Li-ion pack: 2.2 Ah, 16.8 V full, 13.2 V empty (kobuki_node's thresholds).
@@ -20,7 +20,7 @@ VOLTAGE_FULL_V = 16.8
 VOLTAGE_EMPTY_V = 13.2
 
 
-@dataclass(frozen=True)
+@config
 class BatteryParams:
     # The robot's battery (robot file: battery; a scenario's robot.battery.capacity_m sets the pack):
     # metres of travel on a full charge, fractions of full per radian turned, per second switched on
@@ -34,10 +34,7 @@ class BatteryParams:
     )
     charge_max_speed_mps: float = param(0.02, "the robot charges only while (nearly) stopped on the base", NOT_NEGATIVE)
     initial_level: float = param(1.0, "level at start, 0..1", FRACTION)
-    base_radius_m: float = field(default=0.5, metadata={"internal": True})  # from the world's charging base
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
+    base_radius_m: float = internal(0.5, POSITIVE)  # from the world's charging base
 
     @property
     def full_range_m(self) -> float:

@@ -6,15 +6,14 @@ Time is always an argument (`now`, `dt`), so every rule here is unit-tested with
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 from enum import Enum
 
 from haven_sim.common.geometry import ZERO_TWIST, Twist2D
-from haven_sim.common.params import POSITIVE, check_bounds, param
+from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, config, internal, param
 from haven_sim.robots.description import Limits
 
 
-@dataclass(frozen=True)
+@config
 class VelocityLimits:
     """Speed and acceleration limits (a robot's from its robot file: `VelocityLimits.of(robot)`)."""
 
@@ -22,12 +21,7 @@ class VelocityLimits:
     max_angular_speed_rps: float = param(math.pi, "top turn rate", POSITIVE)
     max_linear_accel_mps2: float = param(0.5, "acceleration limit", POSITIVE)
     max_angular_accel_rps2: float = param(3.5, "angular acceleration limit", POSITIVE)
-    max_lateral_speed_mps: float = field(default=0.0, metadata={"internal": True})  # 0: differential drive
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
-        if self.max_lateral_speed_mps < 0:
-            raise ValueError(f"max_lateral_speed_mps must not be negative, got {self.max_lateral_speed_mps}")
+    max_lateral_speed_mps: float = internal(0.0, NOT_NEGATIVE)  # 0: differential drive
 
     @staticmethod
     def of(limits: Limits) -> VelocityLimits:

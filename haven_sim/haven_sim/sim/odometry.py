@@ -8,21 +8,17 @@ wheel slip does.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
 from haven_sim.common.geometry import Pose2D, wrap_angle
-from haven_sim.common.params import NOT_NEGATIVE, check_bounds, param
+from haven_sim.common.params import NOT_NEGATIVE, config, param
 
 
-@dataclass(frozen=True)
+@config
 class OdometryNoise:
     linear: float = param(0.0, "relative std of each step's distance (wheel slip)", NOT_NEGATIVE)
     angular: float = param(0.0, "relative std of each step's rotation", NOT_NEGATIVE)
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
 
 class Odometry:

@@ -7,18 +7,17 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 
 from haven_sim.common.geometry import FloatArray, Pose2D
-from haven_sim.common.params import NOT_NEGATIVE, check_bounds, param
+from haven_sim.common.params import NOT_NEGATIVE, config, param
 from haven_sim.robots.fields import from_robot
 
 
-@dataclass(frozen=True)
+@config
 class ScanParams:
     # The robot's lidar (robot file: lidar): beams over 360 degrees, nearer than range_min reads -inf
     # and nothing within range_max +inf (REP-117), at rate_hz of sim time.
@@ -29,7 +28,6 @@ class ScanParams:
     noise_std_m: float = param(0.0, "Gaussian range noise", NOT_NEGATIVE)
 
     def __post_init__(self) -> None:
-        check_bounds(self)
         if not self.range_min_m < self.range_max_m:
             raise ValueError(
                 f"scan_range_min_m must be less than scan_range_max_m, got {self.range_min_m} and {self.range_max_m}"

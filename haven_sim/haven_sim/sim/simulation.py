@@ -8,16 +8,15 @@ it, so the 0.5 s watchdog is in sim time too.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from typing import Any
 
 from haven_sim.common.bodies import HUMAN_BODY
 from haven_sim.common.component import NS_PER_S
 from haven_sim.common.events import Event, EventKind, Source, event
 from haven_sim.common.geometry import FloatArray, Pose2D, Twist2D, wrap_angle
-from haven_sim.common.params import POSITIVE, check_bounds, group, param
-from haven_sim.robots.description import RobotDescription
-from haven_sim.robots.fields import from_robot
+from haven_sim.common.params import POSITIVE, config, group, param
+from haven_sim.robots.fields import Robot, from_robot
 from haven_sim.sim.battery import Battery, BatteryParams, BatteryReading
 from haven_sim.sim.commands import CommandGate, CommandStatus, VelocityLimits
 from haven_sim.sim.flight import Altitude, FlightPhase, clear_height, pad_of, start_pose
@@ -28,12 +27,12 @@ from haven_sim.sim.scan import LaserScanner, ScanParams
 from haven_sim.sim.world import World
 
 
-@dataclass(frozen=True)
+@config
 class SimConfig:
     physics_rate_hz: float = param(
         50.0, "physics steps per second of sim time (/odom is published every step)", POSITIVE
     )
-    robot: RobotDescription = from_robot()  # the robot's body, limits and flight (its `robot` parameter names it)
+    robot: Robot = from_robot()  # the robot's body, limits and flight (its `robot` parameter names it)
     human_max_speed_mps: float = param(1.5, "a person's top walking speed", POSITIVE)
     cmd_timeout_s: float = param(0.5, "no command for this long (sim time) stops a body", POSITIVE)
     scan: ScanParams = group(ScanParams, prefix="scan_")
@@ -42,7 +41,6 @@ class SimConfig:
     seed: int = param(0, "seed of the scan and odometry noise")
 
     def __post_init__(self) -> None:
-        check_bounds(self)
         if NS_PER_S % round(NS_PER_S / self.physics_rate_hz):
             raise ValueError(
                 "physics_rate_hz must divide a second into whole nanoseconds "

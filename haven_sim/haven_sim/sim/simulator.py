@@ -20,7 +20,7 @@ from haven_sim.common import nodes, topics
 from haven_sim.common.component import Handler, Message, due, period_ns
 from haven_sim.common.events import EventKind
 from haven_sim.common.geometry import ZERO_TWIST, FloatArray, Twist2D
-from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, check_bounds, group, param
+from haven_sim.common.params import NOT_NEGATIVE, POSITIVE, config, group, param
 from haven_sim.common.state import RobotState
 from haven_sim.robots.fields import RobotChoice, from_robot
 from haven_sim.sim.commands import CommandStatus
@@ -31,7 +31,7 @@ from haven_sim.sim.simulation import SimConfig, Simulation
 from haven_sim.sim.world import World
 
 
-@dataclass(frozen=True)
+@config
 class SimulatorConfig:
     robot: RobotChoice = group(RobotChoice)
     sim: SimConfig = group(SimConfig)
@@ -69,9 +69,6 @@ class SimulatorConfig:
         "when it falls behind (a clock_held event says how much); 0: never held",
         NOT_NEGATIVE,
     )
-
-    def __post_init__(self) -> None:
-        check_bounds(self)
 
 
 @dataclass(frozen=True)

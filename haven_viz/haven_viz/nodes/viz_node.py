@@ -27,8 +27,6 @@ from haven_viz.viz import VizComponent, VizConfig
 
 
 class VizNode(ComponentNode):
-    runtime_parameters = frozenset(CUES)
-
     def __init__(self, cli_args: Sequence[str] | None = None) -> None:
         super().__init__(nodes.VIZ.name, cli_args)
         config = self.declare_config(VizConfig)
