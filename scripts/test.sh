@@ -13,10 +13,12 @@ echo "== ruff"
 .venv/bin/ruff format --check .
 echo "== import layers (import-linter: .importlinter)"
 .venv/bin/lint-imports
-echo "== mypy (core and nodes, strict)"
-.venv/bin/mypy haven_sim/haven_sim haven_viz/haven_viz haven_scenarios/haven_scenarios
-echo "== docs (Sphinx, warnings as errors)"
-.venv/bin/sphinx-build -W --keep-going -q -b html docs docs/_build/html
+# mypy and the docs site (one core each) run beside each other and beside the unit tier.
+mkdir -p .test-logs
+.venv/bin/mypy haven_sim/haven_sim haven_viz/haven_viz haven_scenarios/haven_scenarios >.test-logs/mypy.log 2>&1 &
+mypy_pid=$!
+.venv/bin/sphinx-build -W --keep-going -q -b html docs docs/_build/html >.test-logs/docs.log 2>&1 &
+docs_pid=$!
 # Each test runs once: the unit tier only in the venv without ROS 2. Every tier runs on every core
 # (pytest-xdist; each test has its own tmp_path, ports and ROS domain, and the ROS tests of each
 # worker keep to a slice of the domains of their own: haven_sim/test/ros_harness.py).
@@ -31,12 +33,16 @@ tier() {
 ARGS=$#
 echo "== unit tier in a venv without ROS 2 (parallel)"
 tier ./scripts/test_unit_without_ros.sh --timeout 60 -n auto --durations=10 "$@" || failed+=(unit)
-# The integration tier is spread by file (--dist loadfile): a docs page's examples share one
-# namespace and its `% skip: next` marks, so they must run in order on one worker.
-echo "== integration tier (parallel)"
-tier .venv/bin/pytest -q --timeout 300 -n auto --dist loadfile --durations=25 -m "integration and not ros and not browser" "$@" || failed+=(integration)
-echo "== ros and browser tiers"
-tier .venv/bin/pytest -q --timeout 300 -n auto --dist worksteal --durations=25 -m "ros or browser" "$@" || failed+=("ros and browser")
+echo "== mypy (core and nodes, strict)"
+wait "$mypy_pid" && tail -1 .test-logs/mypy.log || { cat .test-logs/mypy.log; failed+=(mypy); }
+echo "== docs (Sphinx, warnings as errors)"
+wait "$docs_pid" && echo "docs built: docs/_build/html" || { cat .test-logs/docs.log; failed+=(docs); }
+# The other tiers run as one session, so no tier waits for another's last test: the tests that
+# start ROS or a browser go first, the short integration tests fill the workers' ends (conftest.py).
+# A docs page's examples stay on one worker, in order (--dist loadgroup: their xdist_group).
+echo "== integration, ros and browser tiers (parallel)"
+tier .venv/bin/pytest -q --timeout 300 -n auto --dist loadgroup --durations=25 -m "integration or ros or browser" "$@" ||
+  failed+=("integration, ros and browser")
 if [ ${#failed[@]} -gt 0 ]; then
   echo "test: failed in the tier(s): ${failed[*]}" >&2
   exit 1

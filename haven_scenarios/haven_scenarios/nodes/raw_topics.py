@@ -23,7 +23,6 @@ from typing import Any
 
 from rclpy.callback_groups import CallbackGroup
 from rclpy.clock import Clock, ClockType
-from rclpy.event_handler import SubscriptionEventCallbacks
 from rclpy.node import Node
 from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from rclpy.subscription import Subscription
@@ -267,7 +266,7 @@ class RawTopics:
             callbacks["message_lost"] = lambda info: on_lost(topic, int(info.total_count_change), best_effort)
         if self.on_matched is not None or topic in self.late_qos:
             callbacks["matched"] = lambda info: self._matched(topic)
-        events = SubscriptionEventCallbacks(**callbacks) if callbacks else None
+        events = qos.quiet_reader(**callbacks)  # (the reader takes the publishers' own QoS)
         sub = self.node.create_subscription(
             cls,
             topic,

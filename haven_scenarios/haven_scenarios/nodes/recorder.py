@@ -50,7 +50,6 @@ from pathlib import Path
 
 import rclpy
 from rclpy.clock import Clock, ClockType
-from rclpy.node import Node
 from rclpy.qos import QoSProfile
 from rclpy.serialization import deserialize_message
 from rosbags.interfaces import Qos, QosDurability, QosHistory, QosLiveliness, QosReliability, QosTime
@@ -64,7 +63,7 @@ from haven_sim.common import nodes, topics
 from haven_sim.common.events import EventKind
 from haven_sim.common.params import build, defaults
 from haven_sim.common.topics import WireParams
-from haven_sim.nodes import conversions as conv
+from haven_sim.nodes import conversions as conv, qos
 from haven_sim.nodes.runner import declare, refuse_changes, run_node
 
 EVENTS = "/" + topics.EVENTS
@@ -102,7 +101,7 @@ def bag_qos(p: QoSProfile) -> Qos:
     )
 
 
-class Recorder(Node):
+class Recorder(qos.QuietNode):
     def __init__(self) -> None:
         super().__init__(nodes.RECORDER.name)
         folder = Path(declare(self, "session_dir", "session"))

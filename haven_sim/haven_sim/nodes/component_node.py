@@ -72,7 +72,7 @@ def declare_config(node: Node, cls: type[C]) -> C:
     return build_config(cls, values, where=f"{node.get_name()}: parameter ")
 
 
-class ComponentNode(Node):
+class ComponentNode(qos.QuietNode):
     def __init__(self, name: str, cli_args: Sequence[str] | None = None) -> None:
         """`cli_args`: this node's own ROS arguments (`--ros-args -p use_sim_time:=true`), beside
         the process's (one process may hold several nodes: nodes/suite_process)."""

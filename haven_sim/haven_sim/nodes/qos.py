@@ -1,5 +1,10 @@
 """QoS profiles by topic role (DESIGN.md topic table), defined once for every node."""
 
+from typing import Any
+
+from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
+from rclpy.node import Node
+from rclpy.publisher import Publisher
 from rclpy.qos import (
     DurabilityPolicy,
     HistoryPolicy,
@@ -61,3 +66,23 @@ EVENTS_HISTORY = EVENTS_PUB
 # change and two can come within moments (a re-plan right after a plan, a condition toggled as the
 # thought text changes). A late joiner's depth-1 reader still keeps only the newest.
 CHANGES = EVENTS_PUB
+
+# No middleware event handlers. rclpy gives every publisher and subscription two by default (a
+# warning on an incompatible QoS or type), and its Python executor walks every handler on every
+# wait: 146 in the suite process, about a fifth of a lockstep trial's CPU (bench/RESULTS.md).
+# The suite's publishers go without them: the reader's side says it (rclpy's, rclcpp's, ros2 topic
+# echo's and our own subscriptions keep theirs). The recorder's readers take each publisher's own QoS.
+QUIET_PUBLISHER = PublisherEventCallbacks(use_default_callbacks=False)
+
+
+def quiet_reader(**callbacks: object) -> SubscriptionEventCallbacks:
+    """A reader's event callbacks: only those given (`message_lost=`, `matched=`, ...), no default ones."""
+    return SubscriptionEventCallbacks(**callbacks, use_default_callbacks=False)  # type: ignore[arg-type]
+
+
+class QuietNode(Node):
+    """A node whose publishers have no default event handlers (`QUIET_PUBLISHER`), /parameter_events too."""
+
+    def create_publisher(self, *args: Any, **kwargs: Any) -> Publisher:
+        kwargs.setdefault("event_callbacks", QUIET_PUBLISHER)
+        return super().create_publisher(*args, **kwargs)
