@@ -22,7 +22,7 @@ test-core test-unit: setup
 	.venv/bin/pytest -q -n auto -m unit
 
 test-integration: setup
-	.venv/bin/pytest -q -n auto --dist loadgroup -m "integration and not ros and not browser"
+	.venv/bin/pytest -q -n auto --dist loadfile -m "integration and not ros and not browser"
 
 test-ros: setup
 	.venv/bin/pytest -q -m "ros and not browser"

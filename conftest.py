@@ -91,15 +91,13 @@ pytest_collect_file = Sybil(
 ).pytest()
 
 
-@pytest.hookimpl(tryfirst=True)  # (before pytest-xdist reads the xdist_group marks)
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """The tiers' marks; a docs page's examples kept together on one xdist worker (`--dist loadgroup`:
-    they share a namespace, a folder and their `% skip: next` marks, in order); and the tests that
-    start ROS or a browser first, so the short ones fill the workers' ends when the tiers run as one."""
+    """The tiers' marks (the docs' examples: integration and docs); and the tests that start ROS or
+    a browser first, so that the short ones fill the workers' ends when the tiers run as one session."""
     for item in items:
         if item.path.suffix == ".md":  # the docs' examples: they run trials
             item.add_marker(pytest.mark.integration)
-            item.add_marker(pytest.mark.xdist_group(f"docs/{item.path.name}"))
+            item.add_marker(pytest.mark.docs)
         if not any(item.get_closest_marker(t) for t in TIERS):
             item.add_marker(pytest.mark.unit)
     items.sort(key=lambda item: not (item.get_closest_marker("ros") or item.get_closest_marker("browser")))

@@ -9,7 +9,7 @@ export COVERAGE_FILE="$PWD/.coverage" COVERAGE_RCFILE="$PWD/.coveragerc"
 rm -f .coverage .coverage.*
 tiers="unit or (integration and not ros and not browser)"
 [ -n "${HAVEN_COVERAGE_ALL:-}" ] && tiers="unit or integration or ros or browser"
-.venv/bin/pytest -q -p no:cacheprovider -n auto --dist loadgroup --timeout 600 --cov --cov-report= -m "$tiers" "$@" || true
+.venv/bin/pytest -q -p no:cacheprovider -n auto --dist loadfile --timeout 600 --cov --cov-report= -m "$tiers" "$@" || true
 .venv/bin/coverage combine -q --append 2>/dev/null || true  # (the processes the tests started; pytest-cov combined its workers')
 .venv/bin/coverage report --format=total | sed 's/^/coverage: line coverage (%): /'
 .venv/bin/coverage xml -q -o coverage.xml

@@ -39,10 +39,13 @@ echo "== docs (Sphinx, warnings as errors)"
 wait "$docs_pid" && echo "docs built: docs/_build/html" || { cat .test-logs/docs.log; failed+=(docs); }
 # The other tiers run as one session, so no tier waits for another's last test: the tests that
 # start ROS or a browser go first, the short integration tests fill the workers' ends (conftest.py).
-# A docs page's examples stay on one worker, in order (--dist loadgroup: their xdist_group).
+# The docs' examples then run by page (--dist loadfile: a page's examples share a namespace, a folder
+# and their `% skip: next` marks, in order, on one worker).
 echo "== integration, ros and browser tiers (parallel)"
-tier .venv/bin/pytest -q --timeout 300 -n auto --dist loadgroup --durations=25 -m "integration or ros or browser" "$@" ||
+tier .venv/bin/pytest -q --timeout 300 -n auto --dist worksteal --durations=25 -m "(integration or ros or browser) and not docs" "$@" ||
   failed+=("integration, ros and browser")
+echo "== the docs' examples (integration, parallel by page)"
+tier .venv/bin/pytest -q --timeout 300 -n auto --dist loadfile --durations=10 -m docs "$@" || failed+=("docs' examples")
 if [ ${#failed[@]} -gt 0 ]; then
   echo "test: failed in the tier(s): ${failed[*]}" >&2
   exit 1
