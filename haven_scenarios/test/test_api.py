@@ -128,6 +128,9 @@ def test_a_simulation_stepped_by_hand_is_the_batch_trial(tmp_path):
     assert sim.result().end_reason == "interrupted"  # (scored so far: not ended yet)
     stepped = sim.run()
     assert stepped.end_reason == "completed" and sim.step(10).ended == "completed"  # (nothing past the end)
+    for bad in (-5, 2.5):
+        with pytest.raises(ValueError, match=f"steps must be a whole number of at least 0, got {bad}"):
+            sim.step(bad)
     assert stepped.metrics == api.batch_trial("hallway", seed=3).metrics  # the very trial `haven batch` runs
 
 

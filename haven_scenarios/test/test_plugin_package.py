@@ -43,7 +43,7 @@ def test_a_cue_package_registers_the_cue_by_its_entry_point(kind):
     [
         ("widget", "x", "unknown plugin kind 'widget' (known: "),
         ("cue", "My_Cue", "plugin name 'My_Cue': lower-case letters"),
-        ("cue", "gaze", "cue 'gaze' is HAVEN's own (taken: arrow, "),
+        ("cue", "gaze", "cue 'gaze' is HAVEN's own (HAVEN's cues: arrow, "),
         ("participant", "walker", "participant model 'walker' is HAVEN's own"),
     ],
 )

@@ -98,6 +98,10 @@ def test_booleans_in_a_parameter_file_are_booleans_not_numbers(tmp_path):
             "viz:\n  ros__parameters:\n    turn_signal: true\n",
             "viz: turn_signal: no such parameter (did you mean turn_signals?)",
         ),
+        (  # (a robot's figure: not the nearest parameter's name, min_linear_speed_mps)
+            '"/**":\n  ros__parameters:\n    max_linear_speed_mps: 2.0\n',
+            "/**: max_linear_speed_mps: no such parameter: it is the robot's, limits.max_linear_speed_mps in a robot",
+        ),
     ],
 )
 def test_a_typo_or_a_non_finite_value_in_a_parameter_file_is_refused_naming_file_node_and_key(tmp_path, text, problem):

@@ -290,7 +290,8 @@ def package_files(kind: str, name: str, python: str = "python") -> dict[str, str
         raise ValueError(f"plugin name {name!r}: lower-case letters, digits and _ (at most 40), starting with a letter")
     reg = plugins.registry(kind)
     if name in reg and reg.items[name].package.replace("_", "-").lower() in plugins.OURS:
-        raise ValueError(f"{singular(kind)} {name!r} is HAVEN's own (taken: {', '.join(reg.names())})")
+        ours = [n for n in reg.names() if reg.items[n].package.replace("_", "-").lower() in plugins.OURS]
+        raise ValueError(f"{singular(kind)} {name!r} is HAVEN's own (HAVEN's {kind}: {', '.join(ours)})")
     t = TEMPLATES[kind]
     package = f"haven_{name}"
     fill = {"name": name, "cls": "".join(p.capitalize() for p in name.split("_")), "upper": name.upper()}

@@ -78,7 +78,10 @@ class Simulation:
             self.markers.update({spec.key: spec for spec in m.data.upsert})
 
     def step(self, steps: int = 1) -> SimState:
-        """Advance `steps` physics steps (fewer once the trial has ended or run past its timeout)."""
+        """Advance `steps` physics steps (fewer once the trial has ended or run past its timeout);
+        ValueError (one line) for a count that is not a whole number of at least 0."""
+        if isinstance(steps, bool) or not isinstance(steps, int) or steps < 0:
+            raise ValueError(f"step: steps must be a whole number of at least 0, got {steps!r}")
         for _ in range(steps):
             if self.trial.director.ended is not None or self.trial.sim.sim.steps >= self.trial.limit:
                 break

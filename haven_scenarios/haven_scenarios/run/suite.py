@@ -29,7 +29,7 @@ from haven_sim.nav.controller import ControllerConfig
 from haven_sim.nav.motion_style import MotionStyle
 from haven_sim.nav.mux import MuxConfig
 from haven_sim.nav.planning import PlannerConfig
-from haven_sim.robots.fields import RobotChoice, build_config
+from haven_sim.robots.fields import RobotChoice, build_config, robot_figures
 from haven_sim.runtime.lockstep import LockstepParams
 from haven_sim.sim.simulator import SimulatorConfig
 from haven_viz.cues import CUES
@@ -157,7 +157,7 @@ def checked_suite_config(
     type, and one the command sets itself are refused in one line naming file (`label`), node and
     key: the nodes themselves would silently ignore a misspelt name and run on the default."""
     known = known_parameters()
-    check_names(params, known, label)
+    check_names(params, known, label, elsewhere=robot_figures())
     for (node, name), option in (sets or {}).items():
         for section in dict.fromkeys((node, WILDCARD)):
             value = params.get(section, {}).get(name)

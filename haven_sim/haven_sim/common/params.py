@@ -322,12 +322,18 @@ def params_of(data: Any, label: str) -> dict[str, dict[str, Any]]:
     return out
 
 
-def check_names(params: Mapping[str, Mapping[str, Any]], known: Mapping[str, Mapping[str, Any]], label: str) -> None:
+def check_names(
+    params: Mapping[str, Mapping[str, Any]],
+    known: Mapping[str, Mapping[str, Any]],
+    label: str,
+    elsewhere: Mapping[str, str] | None = None,
+) -> None:
     """Refuse what no node would read: a node section of no known node, a parameter a node does not
     have (both with the nearest known name), and any number that is not finite (NaN, inf, or an
     integer beyond a float's range), each in one line naming file, node and key. `known` maps each
     node name to its parameters' defaults (the wildcard section may hold any node's parameter);
-    a value of the wrong type is left to `build`, which names the node and key."""
+    a value of the wrong type is left to `build`, which names the node and key. `elsewhere`: names
+    that are no parameter but are set in another file (name -> where), said instead of a near name."""
     every = {name: default for names in known.values() for name, default in names.items()}
     for node, values in params.items():
         if node != WILDCARD and node not in known:
@@ -336,6 +342,8 @@ def check_names(params: Mapping[str, Mapping[str, Any]], known: Mapping[str, Map
             )
         names = every if node == WILDCARD else known[node]
         for name, value in values.items():
+            if isinstance(name, str) and name not in names and name in (elsewhere or {}):
+                raise ParamsError(f"{label}: {shown(node)}: {name}: no such parameter: {elsewhere[name]}")  # type: ignore[index]
             if not isinstance(name, str) or name not in names:
                 raise ParamsError(f"{label}: {shown(node)}: {shown(name)}: no such parameter{_nearest(name, names)}")
             # (a boolean: build says "true or false")

@@ -95,3 +95,12 @@ def build_config(cls: type[T], values: Mapping[str, Any], where: str = "") -> T:
         raise
     except ValueError as e:
         raise ParamsError(f"{where}{e}") from None
+
+
+def robot_figures() -> dict[str, str]:
+    """Each figure a robot file sets, by its last name, as a parameter file's reader says it: a
+    figure like `max_linear_speed_mps` is the robot's, not a node parameter."""
+    return {
+        path.rsplit(".", 1)[-1]: f"it is the robot's, {path} in a robot file (haven run --robot FILE)"
+        for path in DEFAULT.sources
+    }
