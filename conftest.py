@@ -92,8 +92,8 @@ pytest_collect_file = Sybil(
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
-    """The tiers' marks (the docs' examples: integration and docs); and the tests that start ROS or
-    a browser first, so that the short ones fill the workers' ends when the tiers run as one session."""
+    """The tiers' marks (the docs' examples: integration and docs); the tests that start ROS or a
+    browser first (the longest: short ones then fill the workers' ends)."""
     for item in items:
         if item.path.suffix == ".md":  # the docs' examples: they run trials
             item.add_marker(pytest.mark.integration)
